@@ -1,0 +1,1 @@
+"""Benchmarks behind `txt2sce bench NAME`: one module per name, each with DESCRIPTION and run(args)."""

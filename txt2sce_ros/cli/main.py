@@ -1,0 +1,75 @@
+"""`txt2sce` entry point: finds the subcommand modules and runs the chosen one.
+
+Each module `txt2sce_ros/cli/cmd_<name>.py` defines:
+
+    HELP = "one line shown in `txt2sce --help`"
+    def register(parser: argparse.ArgumentParser) -> None   # add the subcommand's arguments
+    def run(args: argparse.Namespace) -> int                # do the work, return the exit code
+
+so each stage owns its own command without touching a central file. Errors raised on purpose (`Txt2SceError`)
+print as one line naming the file and element, without a traceback, and exit with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import pkgutil
+import sys
+from types import ModuleType
+
+from .. import __version__
+from ..errors import Txt2SceError
+
+PREFIX = "cmd_"
+
+
+def _commands() -> dict[str, ModuleType]:
+    import txt2sce_ros.cli as pkg
+
+    found: dict[str, ModuleType] = {}
+    for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda i: i.name):
+        if info.name.startswith(PREFIX):
+            name = info.name[len(PREFIX):].replace("_", "-")
+            found[name] = importlib.import_module(f"{pkg.__name__}.{info.name}")
+    return found
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="txt2sce",
+        description=(
+            "Turn AV collision reports into OpenSCENARIO scenarios and test a driving stack with them.\n"
+            "Pipeline: extract (report -> sketch) -> seed (sketch -> .xosc) -> tree (mutations) -> run/campaign\n"
+            "(closed loop: player + planner + oracle) -> judge/analysis. `txt2sce demo` runs it on bundled data."
+        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"txt2sce {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, module in _commands().items():
+        p = sub.add_parser(name, help=getattr(module, "HELP", ""), description=getattr(module, "HELP", ""),
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
+        module.register(p)
+        p.set_defaults(_run=module.run)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "_run", None):
+        parser.print_help()
+        return 1
+    try:
+        return int(args._run(args) or 0)
+    except Txt2SceError as exc:
+        print(f"txt2sce {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"txt2sce {args.command}: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())
