@@ -1,0 +1,149 @@
+"""Start the txt2sce node graph as separate processes (no `ros2 launch` is installable from PyPI).
+
+    txt2sce_launch --scenarios DIR_OR_FILES... [--bag-dir DIR] [--fault NAME]... [--planner none]
+
+starts the oracle monitor, the stand-in planner (unless `--planner none`, for a real ADS already running on the
+same domain), the scenario player and the generator, each as its own process with the DDS settings of
+`txt2sce_ros.ros_env`. It waits for the generator to finish the scenario list, then stops the others with SIGINT
+(so the monitor closes its recording), escalating to SIGTERM/SIGKILL after a grace period. The same graph is
+described for real ROS installs in `launch/txt2sce.launch.py`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .ros_env import pick_domain_id, ros_environment
+
+
+def _executable(name: str) -> list[str]:
+    """The node's console script beside this interpreter (a venv or a colcon install), else `python -m`."""
+    here = Path(sys.executable).parent / name
+    if here.exists():
+        return [str(here)]
+    found = shutil.which(name)
+    if found:
+        return [found]
+    raise FileNotFoundError(f"node executable {name!r} not found next to {sys.executable} or on PATH")
+
+
+def _param(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (list, tuple)):
+        return "[" + ",".join(f"'{v}'" if isinstance(v, str) else str(v) for v in value) + "]"
+    return str(value)
+
+
+def node_command(executable: str, params: dict[str, Any]) -> list[str]:
+    cmd = _executable(executable)
+    if params:
+        cmd += ["--ros-args"]
+        for key, value in params.items():
+            cmd += ["-p", f"{key}:={_param(value)}"]
+    return cmd
+
+
+@dataclass
+class GraphConfig:
+    scenarios: list[str]
+    bag_dir: str
+    planner: str = "standin"            # 'standin' or 'none' (an external stack serves the topics)
+    faults: list[str] = field(default_factory=list)
+    lock_step: bool = True
+    planner_timeout: float = 5.0        # wall-clock seconds the player waits for a command before 'error'
+    run_timeout: float = 300.0          # wall-clock seconds per run
+    domain_id: int | None = None
+    log_dir: str | None = None
+
+
+def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
+    """The command line of every node of the graph, in start order (consumers before producers)."""
+    cmds = {
+        "oracle": node_command("oracle_monitor_node", {"bag_dir": cfg.bag_dir}),
+    }
+    if cfg.planner == "standin":
+        cmds["planner"] = node_command("planner_node", {"faults": cfg.faults or [""]})
+    cmds["player"] = node_command("scenario_player_node", {
+        "lock_step": cfg.lock_step, "planner_timeout": cfg.planner_timeout, "run_timeout": cfg.run_timeout,
+    })
+    cmds["generator"] = node_command("generator_node", {"scenarios": cfg.scenarios, "wait_for_result": True})
+    return cmds
+
+
+def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) -> dict[str, int]:
+    """Run the graph until the generator exits (or `timeout`), stop the rest, return each process's exit code."""
+    log_dir = Path(cfg.log_dir or tempfile.mkdtemp(prefix="txt2sce_ros_log_"))
+    domain = cfg.domain_id if cfg.domain_id is not None else pick_domain_id(f"{log_dir}:{os.getpid()}")
+    env = ros_environment(domain_id=domain, log_dir=log_dir)
+    procs: dict[str, subprocess.Popen[bytes]] = {}
+    codes: dict[str, int] = {}
+    try:
+        for name, cmd in graph_commands(cfg).items():
+            out = open(log_dir / f"{name}.log", "wb")
+            procs[name] = subprocess.Popen(cmd, env=env, stdout=out, stderr=subprocess.STDOUT,
+                                           start_new_session=True)
+            if not quiet:
+                print(f"[launch] {name}: pid {procs[name].pid}, log {log_dir / (name + '.log')}", file=sys.stderr)
+        deadline = time.monotonic() + timeout
+        gen = procs["generator"]
+        while gen.poll() is None and time.monotonic() < deadline:
+            dead = [n for n, p in procs.items() if n != "generator" and p.poll() is not None]
+            if dead:
+                print(f"[launch] {', '.join(dead)} exited early; stopping the graph", file=sys.stderr)
+                break
+            time.sleep(0.1)
+    finally:
+        for name in reversed(list(procs)):
+            codes[name] = _stop(procs[name])
+    return codes
+
+
+def _stop(proc: subprocess.Popen[bytes], grace: float = 10.0) -> int:
+    """SIGINT first so nodes shut down cleanly (the monitor finalises its bag), then harder."""
+    if proc.poll() is not None:
+        return proc.returncode
+    for sig, wait in ((signal.SIGINT, grace), (signal.SIGTERM, 3.0), (signal.SIGKILL, 3.0)):
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            break
+        try:
+            return proc.wait(timeout=wait)
+        except subprocess.TimeoutExpired:
+            continue
+    return proc.wait()
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="txt2sce_launch", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scenarios", nargs="+", required=True, help=".xosc files, directories, or tree directories")
+    ap.add_argument("--bag-dir", default="txt2sce_bags", help="where the monitor writes its recordings")
+    ap.add_argument("--planner", choices=("standin", "none"), default="standin",
+                    help="'none' leaves /control/command to your own stack")
+    ap.add_argument("--fault", action="append", default=[], help="stand-in planner fault mode (repeatable)")
+    ap.add_argument("--real-time", action="store_true", help="real-time mode instead of lock-step")
+    ap.add_argument("--timeout", type=float, default=600.0, help="wall-clock limit for the whole graph (s)")
+    ap.add_argument("--domain-id", type=int, default=None)
+    ap.add_argument("--log-dir", default=None)
+    a = ap.parse_args(argv)
+    cfg = GraphConfig(scenarios=a.scenarios, bag_dir=a.bag_dir, planner=a.planner, faults=a.fault,
+                      lock_step=not a.real_time, domain_id=a.domain_id, log_dir=a.log_dir)
+    codes = run_graph(cfg, timeout=a.timeout)
+    print("[launch] exit codes: " + ", ".join(f"{k}={v}" for k, v in codes.items()), file=sys.stderr)
+    return 0 if codes.get("generator") == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Thin rclpy adapters of the txt2sce_ros cores."""

@@ -1,0 +1,96 @@
+"""Generator node: publishes scenario files on /txt2sce/scenario, one at a time.
+
+Parameters:
+- `scenarios` (string[]): .xosc files, directories of them, or scenario-tree directories (with manifest.json).
+- `wait_for_result` (bool, default true): publish the next scenario only after the player reports the current
+  one `finished` on /txt2sce/run_status; false publishes all at once (the player queues them).
+- `subscriber_timeout` (float s, default 30): how long to wait for a player to subscribe before giving up.
+- `exit_when_done` (bool, default true): shut down after the last scenario finished.
+
+The envelope is published reliable + transient-local so a player that subscribes late still gets it.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from std_msgs.msg import String
+
+from ..contract import TOPIC_RUN_STATUS, TOPIC_SCENARIO, RunStatus
+from ..scenario_source import iter_envelopes
+
+SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+
+
+class GeneratorNode(Node):
+    def __init__(self) -> None:
+        super().__init__("txt2sce_generator")
+        self.declare_parameter("scenarios", [""])
+        self.declare_parameter("wait_for_result", True)
+        self.declare_parameter("subscriber_timeout", 30.0)
+        self.declare_parameter("exit_when_done", True)
+        inputs = [s for s in self.get_parameter("scenarios").value if s]
+        self.wait = bool(self.get_parameter("wait_for_result").value)
+        self.timeout = float(self.get_parameter("subscriber_timeout").value)
+        self.exit_when_done = bool(self.get_parameter("exit_when_done").value)
+        self.pub = self.create_publisher(String, TOPIC_SCENARIO, SCENARIO_QOS)
+        # Volatile: compatible with whatever durability the player offers.
+        self.create_subscription(String, TOPIC_RUN_STATUS, self._on_status,
+                                 QoSProfile(depth=50, reliability=ReliabilityPolicy.RELIABLE))
+        self.pending = list(iter_envelopes(inputs))
+        self.in_flight: str | None = None
+        self.finished: list[str] = []
+        self.done = not self.pending
+        self.started = time.monotonic()
+        self.get_logger().info(f"{len(self.pending)} scenario(s) to publish")
+        self.timer = self.create_timer(0.05, self._tick)
+
+    def _tick(self) -> None:
+        if self.done or (self.wait and self.in_flight):
+            return
+        if self.pub.get_subscription_count() == 0:
+            if time.monotonic() - self.started > self.timeout:
+                self.get_logger().error(f"no subscriber on {TOPIC_SCENARIO} after {self.timeout:.0f} s")
+                self.done = True
+            return
+        while self.pending:
+            env = self.pending.pop(0)
+            self.pub.publish(String(data=env.to_json()))
+            self.get_logger().info(f"published scenario {env.id}")
+            self.in_flight = env.id
+            if self.wait:
+                return
+        if not self.wait:
+            self.done = True
+
+    def _on_status(self, msg: String) -> None:
+        status = RunStatus.from_json(msg.data)
+        if status.state == "finished" and status.scenario_id == self.in_flight:
+            self.finished.append(status.scenario_id)
+            self.in_flight = None
+            if not self.pending:
+                self.done = True
+
+
+def main(args: list[str] | None = None) -> int:
+    rclpy.init(args=args)
+    node = GeneratorNode()
+    try:
+        while rclpy.ok() and not (node.done and node.exit_when_done):
+            rclpy.spin_once(node, timeout_sec=0.1)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        node.destroy_node()
+        if rclpy.ok():
+            rclpy.shutdown()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

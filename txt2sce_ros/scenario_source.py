@@ -1,0 +1,77 @@
+"""Scenario files -> ScenarioEnvelopes: what the generator node publishes (core, no rclpy).
+
+Accepts `.xosc` files, directories of them (sorted, recursive), and scenario-tree directories holding a
+`manifest.json` (nodes listed with their file, parent and tree). The OpenDRIVE map named by the scenario's
+`RoadNetwork/LogicFile` is resolved relative to the scenario file and shipped in the envelope, so a player on
+another machine needs no shared disk.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Iterator
+
+from lxml import etree
+
+from .contract import ScenarioEnvelope
+from .errors import InputError
+
+_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=False)
+
+
+def logic_file(xosc_path: Path, xosc_text: bytes) -> Path | None:
+    """The map a scenario names, resolved like esmini does: relative to the scenario's directory."""
+    try:
+        root = etree.fromstring(xosc_text, _PARSER)
+    except etree.XMLSyntaxError as exc:
+        raise InputError(f"malformed XML: {exc}", source=str(xosc_path), line=exc.lineno) from exc
+    node = root.find("RoadNetwork/LogicFile")
+    if node is None or not node.get("filepath"):
+        return None
+    return (xosc_path.parent / node.get("filepath")).resolve()
+
+
+def envelope_for(path: Path, *, scenario_id: str | None = None, parent: str | None = None,
+                 tree: str | None = None) -> ScenarioEnvelope:
+    """Read one scenario file and its map into an envelope."""
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read scenario: {exc.strerror}", source=str(path)) from exc
+    map_path = logic_file(path, data)
+    map_text = ""
+    if map_path is not None:
+        try:
+            map_text = map_path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise InputError(f"map {map_path} named by RoadNetwork/LogicFile cannot be read",
+                             source=str(path), element="LogicFile") from exc
+    return ScenarioEnvelope(id=scenario_id or path.stem, xosc=data.decode("utf-8"),
+                            map_path=str(map_path or ""), map_xodr=map_text, parent=parent, tree=tree,
+                            meta={"file": str(path)})
+
+
+def iter_scenario_files(inputs: list[str | Path]) -> Iterator[tuple[Path, str, str | None, str | None]]:
+    """(file, id, parent, tree) for every scenario the inputs name, in a stable order."""
+    for item in inputs:
+        p = Path(item)
+        manifest = p / "manifest.json" if p.is_dir() else None
+        if manifest is not None and manifest.is_file():
+            data = json.loads(manifest.read_text())
+            tree = data.get("tree") or data.get("id") or p.name
+            for node in data.get("nodes", []):
+                if node.get("file"):
+                    yield p / node["file"], str(node.get("id", Path(node["file"]).stem)), node.get("parent"), tree
+        elif p.is_dir():
+            for f in sorted(p.rglob("*.xosc")):
+                yield f, f.stem, None, None
+        elif p.is_file():
+            yield p, p.stem, None, None
+        else:
+            raise InputError("no such scenario file or directory", source=str(p))
+
+
+def iter_envelopes(inputs: list[str | Path]) -> Iterator[ScenarioEnvelope]:
+    for f, sid, parent, tree in iter_scenario_files(inputs):
+        yield envelope_for(f, scenario_id=sid, parent=parent, tree=tree)
