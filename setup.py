@@ -46,6 +46,5 @@ setup(
     maintainer_email="dev@txt2sce.invalid",
     description="Accident reports to OpenSCENARIO scenario trees, closed-loop ADS testing on ROS 2.",
     license="Apache-2.0",
-    tests_require=["pytest"],
     entry_points={"console_scripts": [f"{name} = {target}" for name, target in NODES.items()]},
 )
