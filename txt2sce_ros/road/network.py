@@ -1,0 +1,368 @@
+"""`RoadNetwork`: the one OpenDRIVE road model (geometry, lanes, lookup, topology) every stage uses.
+
+Coordinates: s along a road's reference line, t to its left; headings radians CCW from +x. Lane ids follow
+OpenDRIVE; in right-hand traffic (RHT) lanes with negative ids drive along +s, in left-hand traffic (LHT) the
+positive ones do (an OpenDRIVE 1.7 lane `direction="reversed"` flips that).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import threading
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Iterable
+
+import numpy as np
+
+from ..errors import InputError
+from .lanes import LaneSection, eval_cubics
+from .model import Controller, Junction, LaneRef, Road, Signal
+from .parse import parse_network
+
+if TYPE_CHECKING:   # pragma: no cover
+    import networkx as nx
+
+    from .lookup import LaneIndex, LaneMatch, LanePoint
+
+DRIVING_TYPES = ("driving",)
+
+
+class RoadNetwork:
+    """An OpenDRIVE network loaded into memory. Build with `load_network(path)` or `RoadNetwork.from_string`."""
+
+    def __init__(self, data: bytes, source: str) -> None:
+        parsed = parse_network(data, source)
+        self.source = source
+        self.header = parsed.header
+        self.geo_reference = parsed.geo_reference
+        self.roads: dict[str, Road] = parsed.roads
+        self.junctions: dict[str, Junction] = parsed.junctions
+        self.controllers: dict[str, Controller] = parsed.controllers
+        self._section_starts = {rid: np.array([sec.s for sec in r.sections]) for rid, r in self.roads.items()}
+        self.signals: dict[str, Signal] = self._place_signals()
+        self._index_lock = threading.Lock()
+        self._indices: dict[tuple[str, ...], "LaneIndex"] = {}
+
+    @classmethod
+    def from_string(cls, text: str | bytes, source: str = "<string>") -> "RoadNetwork":
+        data = text.encode("utf-8") if isinstance(text, str) else text
+        return cls(data, source)
+
+    @classmethod
+    def from_file(cls, path: str | Path) -> "RoadNetwork":
+        p = Path(path)
+        try:
+            data = p.read_bytes()
+        except OSError as exc:
+            raise InputError(f"cannot read map: {exc.strerror}", source=str(p)) from exc
+        return cls(data, str(p))
+
+    def __repr__(self) -> str:
+        return f"RoadNetwork({self.source!r}, roads={len(self.roads)}, junctions={len(self.junctions)})"
+
+    # --- lookups of records ----------------------------------------------------------------------------------------
+
+    def road(self, road_id: str | int) -> Road:
+        try:
+            return self.roads[str(road_id)]
+        except KeyError:
+            raise InputError(f"no road with id {road_id!r}", source=self.source, element="road") from None
+
+    def section_index(self, road_id: str | int, s: float) -> int:
+        starts = self._section_starts[self.road(road_id).id]
+        return int(max(0, np.searchsorted(starts, s + 1e-9, side="right") - 1))
+
+    def section(self, road_id: str | int, s: float) -> LaneSection:
+        road = self.road(road_id)
+        return road.sections[self.section_index(road.id, s)]
+
+    def _lane(self, road: Road, lane_id: int, s: float) -> tuple[int, LaneSection]:
+        si = self.section_index(road.id, s)
+        sec = road.sections[si]
+        if int(lane_id) not in sec.lanes:
+            raise InputError(f"road {road.id} has no lane {lane_id} at s={s:.3f} (lanes {sorted(sec.lanes)})",
+                             source=self.source, element="lane")
+        return si, sec
+
+    def lane_forward(self, road_id: str | int, lane_id: int, s: float | None = None) -> bool:
+        """True if traffic in the lane drives along +s."""
+        road = self.road(road_id)
+        forward = (lane_id < 0) if road.rule == "RHT" else (lane_id > 0)
+        if s is not None:
+            lane = self.section(road.id, s).lanes.get(int(lane_id))
+            if lane is not None and lane.direction == "reversed":
+                forward = not forward
+        return forward
+
+    # --- vectorised geometry ---------------------------------------------------------------------------------------
+
+    def reference(self, road_id: str | int, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Reference line (x, y, heading) at road s (array)."""
+        return self.road(road_id).plan_view.evaluate(s)
+
+    def lane_offset(self, road_id: str | int, s: np.ndarray) -> np.ndarray:
+        return eval_cubics(self.road(road_id).lane_offsets, np.asarray(s, dtype=float))
+
+    def lane_bounds(self, road_id: str | int, lane_id: int, s: np.ndarray, section: int | None = None
+                    ) -> tuple[np.ndarray, np.ndarray]:
+        """(inner t, outer t) of a lane at road s (array), inner = nearer the centre lane."""
+        road = self.road(road_id)
+        s_arr = np.atleast_1d(np.asarray(s, dtype=float))
+        si = section if section is not None else self.section_index(road.id, float(s_arr[0]))
+        sec = road.sections[si]
+        if int(lane_id) not in sec.lanes:
+            raise InputError(f"road {road.id} has no lane {lane_id} in section {si}", source=self.source,
+                             element="lane")
+        borders = sec.borders_t(s_arr, self.lane_offset(road.id, s_arr))
+        outer = borders[int(lane_id)]
+        inner = borders[int(lane_id) - (1 if lane_id > 0 else -1)] if lane_id != 0 else outer
+        return inner, outer
+
+    def road_to_world_array(self, road_id: str | int, s: np.ndarray, t: np.ndarray | float = 0.0
+                            ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        x, y, h = self.reference(road_id, s)
+        t = np.asarray(t, dtype=float)
+        return x - t * np.sin(h), y + t * np.cos(h), h
+
+    def lane_to_world_array(self, road_id: str | int, lane_id: int, s: np.ndarray, offset: np.ndarray | float = 0.0,
+                            *, section: int | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Lane centre + offset (toward +t) at road s (array, all in one lane section); heading = driving
+        direction of the lane, including the lane centre's slope relative to the reference line."""
+        road = self.road(road_id)
+        s_arr = np.atleast_1d(np.asarray(s, dtype=float))
+        inner, outer = self.lane_bounds(road.id, lane_id, s_arr, section)
+        t = 0.5 * (inner + outer) + np.asarray(offset, dtype=float)
+        x, y, h = self.road_to_world_array(road.id, s_arr, t)
+        # Slope of the lane centre: dt/ds over (1 - k t) is the angle between lane centre and reference line.
+        eps = 0.05
+        i2, o2 = self.lane_bounds(road.id, lane_id, s_arr + eps, section)
+        dt = (0.5 * (i2 + o2) - 0.5 * (inner + outer)) / eps
+        k = road.plan_view.curvature(s_arr)
+        h = h + np.arctan2(dt, np.maximum(1.0 - k * t, 1e-3))
+        if not self.lane_forward(road.id, lane_id, float(s_arr[0])):
+            h = h + math.pi
+        return x, y, h
+
+    # --- scalar API ------------------------------------------------------------------------------------------------
+
+    def road_to_world(self, road_id: str | int, s: float, t: float = 0.0) -> tuple[float, float, float]:
+        """World (x, y, h) of road coordinates (s, t); h = reference-line heading at s."""
+        x, y, h = self.road_to_world_array(road_id, np.array([float(s)]), float(t))
+        return float(x[0]), float(y[0]), float(h[0])
+
+    def road_heading(self, road_id: str | int, s: float) -> float:
+        return float(self.reference(road_id, np.array([float(s)]))[2][0])
+
+    def lane_center_t(self, road_id: str | int, lane_id: int, s: float) -> float:
+        road = self.road(road_id)
+        si, _ = self._lane(road, lane_id, s)
+        inner, outer = self.lane_bounds(road.id, lane_id, np.array([float(s)]), si)
+        return float(0.5 * (inner[0] + outer[0]))
+
+    def lane_width(self, road_id: str | int, lane_id: int, s: float) -> float:
+        road = self.road(road_id)
+        si, _ = self._lane(road, lane_id, s)
+        inner, outer = self.lane_bounds(road.id, lane_id, np.array([float(s)]), si)
+        return float(abs(outer[0] - inner[0]))
+
+    def lane_type(self, road_id: str | int, lane_id: int, s: float) -> str:
+        road = self.road(road_id)
+        _, sec = self._lane(road, lane_id, s)
+        return sec.lanes[int(lane_id)].type
+
+    def lane_ids(self, road_id: str | int, s: float, *, types: Iterable[str] | None = DRIVING_TYPES) -> list[int]:
+        """Lane ids at s (centre lane excluded), left to right across the road (descending id); `types=None`
+        returns every lane."""
+        sec = self.section(road_id, s)
+        wanted = None if types is None else set(types)
+        return sorted((i for i, ln in sec.lanes.items() if i != 0 and (wanted is None or ln.type in wanted)),
+                      reverse=True)
+
+    def lane_to_world(self, road_id: str | int, lane_id: int, s: float, offset: float = 0.0
+                      ) -> tuple[float, float, float]:
+        """World (x, y, h) of a lane position: lane centre at road s shifted by `offset` toward +t of the road
+        (OpenSCENARIO LanePosition/@offset, as esmini reads it); h = driving direction of the lane."""
+        road = self.road(road_id)
+        si, _ = self._lane(road, lane_id, s)
+        x, y, h = self.lane_to_world_array(road.id, lane_id, np.array([float(s)]), float(offset), section=si)
+        return float(x[0]), float(y[0]), float(h[0])
+
+    # --- lanes as polylines ----------------------------------------------------------------------------------------
+
+    def _lane_s_samples(self, road: Road, si: int, ds: float) -> np.ndarray:
+        sec = road.sections[si]
+        end = min(sec.end, road.length)
+        n = max(2, int(math.ceil((end - sec.s) / ds)) + 1)
+        s = np.linspace(sec.s, end, n)
+        s[-1] = end - 1e-9 if end > sec.s else end   # stay inside this section at its end
+        return s
+
+    def lane_centerline(self, road_id: str | int, lane_id: int, ds: float = 0.5, *, section: int | None = None
+                        ) -> np.ndarray:
+        """Lane centre line as an (N, 3) array of x, y, s in the lane's driving direction. Without `section`,
+        all sections holding the lane id are concatenated."""
+        road = self.road(road_id)
+        sections = [section] if section is not None else [
+            i for i, sec in enumerate(road.sections) if int(lane_id) in sec.lanes]
+        if not sections:
+            raise InputError(f"road {road.id} has no lane {lane_id}", source=self.source, element="lane")
+        parts = []
+        for si in sections:
+            s = self._lane_s_samples(road, si, ds)
+            x, y, _ = self.lane_to_world_array(road.id, lane_id, s, section=si)
+            parts.append(np.column_stack([x, y, s]))
+        out = np.vstack(parts)
+        return out if self.lane_forward(road.id, lane_id) else out[::-1].copy()
+
+    def lane_borders(self, road_id: str | int, lane_id: int, ds: float = 0.5, *, section: int | None = None
+                     ) -> tuple[np.ndarray, np.ndarray]:
+        """(left, right) borders of a lane, (N, 2) each, ordered along and sided by its driving direction."""
+        road = self.road(road_id)
+        sections = [section] if section is not None else [
+            i for i, sec in enumerate(road.sections) if int(lane_id) in sec.lanes]
+        if not sections:
+            raise InputError(f"road {road.id} has no lane {lane_id}", source=self.source, element="lane")
+        plus, minus = [], []
+        for si in sections:
+            s = self._lane_s_samples(road, si, ds)
+            inner, outer = self.lane_bounds(road.id, lane_id, s, si)
+            hi = np.maximum(inner, outer)
+            lo = np.minimum(inner, outer)
+            xh, yh, _ = self.road_to_world_array(road.id, s, hi)
+            xl, yl, _ = self.road_to_world_array(road.id, s, lo)
+            plus.append(np.column_stack([xh, yh]))
+            minus.append(np.column_stack([xl, yl]))
+        hi_pts, lo_pts = np.vstack(plus), np.vstack(minus)
+        if self.lane_forward(road.id, lane_id):
+            return hi_pts, lo_pts            # +t is left when driving along +s
+        return lo_pts[::-1].copy(), hi_pts[::-1].copy()
+
+    # --- signals ---------------------------------------------------------------------------------------------------
+
+    def _place_signals(self) -> dict[str, Signal]:
+        from dataclasses import replace
+
+        out: dict[str, Signal] = {}
+        for road in self.roads.values():
+            placed = []
+            for sig in road.signals:
+                s = min(max(sig.s, 0.0), road.length)
+                x, y, h = self.road_to_world(road.id, s, sig.t)
+                if sig.orientation == "-":
+                    h += math.pi
+                lanes = self._signal_lanes(road, sig, s)
+                new = replace(sig, x=x, y=y, heading=math.atan2(math.sin(h), math.cos(h)), controlled_lanes=lanes)
+                placed.append(new)
+                if not sig.is_reference:
+                    out[sig.id] = new
+            road.signals[:] = placed
+        return out
+
+    def _signal_lanes(self, road: Road, sig: Signal, s: float) -> tuple[int, ...]:
+        sec = road.sections[self.section_index(road.id, s)]
+        ids = [i for i, ln in sec.lanes.items() if i != 0 and ln.type == "driving"]
+        if sig.validity:
+            keep = set()
+            for v in sig.validity:
+                lo, hi = sorted((v.from_lane, v.to_lane))
+                keep.update(i for i in ids if lo <= i <= hi)
+            ids = sorted(keep)
+        if sig.orientation in ("+", "-"):
+            along = sig.orientation == "+"
+            ids = [i for i in ids if self.lane_forward(road.id, i) == along]
+        return tuple(sorted(ids, reverse=True))
+
+    def signals_of_controller(self, controller_id: str) -> list[Signal]:
+        ctrl = self.controllers.get(str(controller_id))
+        return [self.signals[sid] for sid in ctrl.signal_ids if sid in self.signals] if ctrl else []
+
+    # --- lookup, topology and routing live in their own modules -----------------------------------------------------
+
+    def lane_index(self, lane_types: Iterable[str] | None = DRIVING_TYPES) -> "LaneIndex":
+        """The spatial index over sampled lane centres of the given types (built once, then cached)."""
+        from .lookup import LaneIndex
+
+        key = tuple(sorted(lane_types)) if lane_types is not None else ("*",)
+        with self._index_lock:
+            idx = self._indices.get(key)
+            if idx is None:
+                idx = LaneIndex(self, None if lane_types is None else key)
+                self._indices[key] = idx
+        return idx
+
+    def world_to_lane(self, xs: np.ndarray | Iterable[float], ys: np.ndarray | Iterable[float], *,
+                      lane_types: Iterable[str] | None = DRIVING_TYPES) -> "LaneMatch":
+        """Nearest lane (of `lane_types`) of each point, with road s, t, offset from the lane centre, distance and
+        whether the point lies within the lane's borders. Vectorised over points."""
+        return self.lane_index(lane_types).query(np.asarray(xs, dtype=float), np.asarray(ys, dtype=float))
+
+    def locate(self, x: float, y: float, heading: float | None = None, *,
+               lane_types: Iterable[str] | None = DRIVING_TYPES) -> "LanePoint | None":
+        """The lane at (x, y), preferring lanes whose driving direction matches `heading` (radians)."""
+        return self.lane_index(lane_types).locate(float(x), float(y), heading)
+
+    def lane_ref(self, road_id: str | int, lane_id: int, s: float) -> LaneRef:
+        road = self.road(road_id)
+        si, _ = self._lane(road, lane_id, s)
+        return LaneRef(road.id, si, int(lane_id))
+
+    def lane_length(self, ref: LaneRef) -> float:
+        """Length of a lane's centre line within its section (m)."""
+        from .topology import lane_length
+
+        return lane_length(self, ref)
+
+    def neighbour(self, ref: LaneRef, side: str) -> LaneRef | None:
+        from .topology import neighbour
+
+        return neighbour(self, ref, side)
+
+    def successors(self, ref: LaneRef) -> list[LaneRef]:
+        from .topology import successors
+
+        return successors(self, ref)
+
+    def predecessors(self, ref: LaneRef) -> list[LaneRef]:
+        from .topology import predecessors
+
+        return predecessors(self, ref)
+
+    @cached_property
+    def routing_graph(self) -> "nx.DiGraph":
+        from .topology import build_routing_graph
+
+        return build_routing_graph(self)
+
+    def route(self, start: LaneRef, goal: LaneRef) -> list[LaneRef]:
+        from .topology import route
+
+        return route(self, start, goal)
+
+    def turn_type(self, incoming: LaneRef, connecting: LaneRef) -> str:
+        from .topology import turn_type
+
+        return turn_type(self, incoming, connecting)
+
+
+_CACHE: dict[str, tuple[float, int, RoadNetwork]] = {}
+_CACHE_LOCK = threading.Lock()
+
+
+def load_network(path: str | os.PathLike[str]) -> RoadNetwork:
+    """Load an OpenDRIVE file, cached per absolute path + mtime + size (safe to call from every stage)."""
+    p = Path(path).resolve()
+    try:
+        st = p.stat()
+    except OSError as exc:
+        raise InputError(f"cannot read map: {exc.strerror}", source=str(path)) from exc
+    key = str(p)
+    with _CACHE_LOCK:
+        hit = _CACHE.get(key)
+        if hit and hit[0] == st.st_mtime and hit[1] == st.st_size:
+            return hit[2]
+    net = RoadNetwork.from_file(p)
+    with _CACHE_LOCK:
+        _CACHE[key] = (st.st_mtime, st.st_size, net)
+    return net
