@@ -1,0 +1,1 @@
+"""Trigger analysis of campaign results: behaviour table, derivation triggers, lift ranking, reports."""
