@@ -1,0 +1,1 @@
+"""Campaigns: reports -> seeds -> trees -> closed-loop runs -> verdicts -> analysis, resumable and parallel."""
