@@ -1,0 +1,88 @@
+"""The closed-loop stage of a campaign: scenario files -> stored verdicts, resumable, on any executor."""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterable, Sequence
+
+from tqdm import tqdm
+
+from ..scenario_source import iter_scenario_files
+from .executors import run_tasks
+from .store import ResultStore, StoredRun, run_key
+
+
+@dataclass(frozen=True)
+class RunTask:
+    """One closed-loop run to do: picklable, so any executor can ship it to a worker."""
+
+    key: str
+    scenario_path: str
+    scenario_id: str
+    tree: str | None
+    parent: str | None
+    faults: tuple[str, ...]
+    seed: int
+    ros: bool = False
+
+
+def execute(task: RunTask) -> StoredRun:
+    """Worker entry point (module level so process pools and Ray can pickle it)."""
+    if task.ros:
+        from .ros_runs import run_over_ros
+
+        record = run_over_ros(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults)
+    else:
+        from ..closed_loop import run_closed_loop
+
+        record, _ = run_closed_loop(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults,
+                                    seed=task.seed)
+    return StoredRun(task.key, task.scenario_id, task.tree, task.parent, record.verdict.value,
+                     tuple(record.categories), record.to_dict())
+
+
+def make_tasks(inputs: Sequence[str | Path], *, faults: tuple[str, ...] = (), seed: int = 0,
+               ros: bool = False) -> list[RunTask]:
+    """One task per scenario file under `inputs` (files, directories, tree directories), keyed by content."""
+    tasks = []
+    config = {"planner": "standin", "faults": sorted(faults), "ros": ros}
+    for path, sid, parent, tree in iter_scenario_files(list(inputs)):
+        key = run_key(Path(path).read_bytes(), config, seed)
+        tasks.append(RunTask(key, str(path), sid, tree, parent, tuple(sorted(faults)), seed, ros))
+    return tasks
+
+
+@dataclass(frozen=True)
+class RunsSummary:
+    total: int
+    skipped: int
+    ran: int
+    verdicts: dict[str, int]
+
+
+def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "pool", workers: int | None = None,
+            progress: bool = True, limit: int | None = None) -> RunsSummary:
+    """Run every task whose key the store does not hold yet; each result is committed as it arrives, so a killed
+    campaign resumes where it stopped (`limit` stops after that many new runs: used to test exactly that)."""
+    tasks = list(tasks)
+    done = store.done_keys()
+    todo = [t for t in tasks if t.key not in done]
+    # A task listed twice (identical scenario bytes) runs once.
+    seen: set[str] = set()
+    todo = [t for t in todo if not (t.key in seen or seen.add(t.key))]
+    if limit is not None:
+        todo = todo[:limit]
+    verdicts: dict[str, int] = {}
+    bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, file=sys.stderr, dynamic_ncols=True)
+    try:
+        for run in run_tasks(execute, todo, executor=executor, workers=workers):
+            store.add(run)
+            verdicts[run.verdict] = verdicts.get(run.verdict, 0) + 1
+            bar.update(1)
+            bar.set_postfix(verdicts, refresh=False)
+    finally:
+        bar.close()
+    skipped = sum(1 for t in tasks if t.key in done)
+    return RunsSummary(total=len(tasks), skipped=skipped, ran=sum(verdicts.values()), verdicts=verdicts)
