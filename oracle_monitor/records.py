@@ -1,0 +1,139 @@
+"""Typed records the oracles produce: violations (online events) and the run verdict (after `finish`)."""
+
+from __future__ import annotations
+
+import enum
+import json
+from dataclasses import asdict, dataclass
+from typing import Any
+
+from txt2sce_ros.contract import Verdict
+
+
+class Category(str, enum.Enum):
+    """The paper's five behaviour categories (Table VI). The first three are mutually exclusive with everything
+    else; PlanFail and Smooth may overlap (see `verdict.py`)."""
+
+    START_FAIL = "StartFail"
+    MISINTERP = "Misinterp"
+    COLLISIONS = "Collisions"
+    PLAN_FAIL = "PlanFail"
+    SMOOTH = "Smooth"
+
+
+#: The exclusive categories, in the order that breaks a tie between events at the same instant.
+EXCLUSIVE = (Category.COLLISIONS, Category.MISINTERP, Category.START_FAIL)
+
+
+class Rule(str, enum.Enum):
+    """Which oracle rule raised a violation (finer than the category)."""
+
+    CONTACT = "contact"                          # footprints overlap (safety)
+    JERK_COLLISION = "jerk_collision"            # |jerk| > T_cj (safety, the paper's rule, reported beside)
+    SMOOTH_JERK = "smooth_jerk"                  # 1 s average jerk outside I_sj
+    SMOOTH_YAW_RATE = "smooth_yaw_rate"          # 1 s average yaw rate outside I_yr
+    NO_START = "no_start"                        # still too long at the start with a clear path / never moved
+    STOPPED_MID_ROUTE = "stopped_mid_route"      # still too long after starting, path clear, goal not reached
+    PARKED_OUTSIDE_LANE = "parked_outside_lane"  # standing with part of the footprint outside the allowed lanes
+    GOAL_NOT_REACHED = "goal_not_reached"        # run over (time out or end of story) with the goal not reached
+    RED_LIGHT = "red_light"                      # crossed a stop line whose signal showed red
+    STATIC_OBSTACLE_HIT = "static_obstacle_hit"  # contact with a static object that had been in view
+
+
+@dataclass(frozen=True, slots=True)
+class Violation:
+    """One oracle event, raised online at its onset.
+
+    `category` is None for events reported beside the verdict without deciding it (the jerk rule when collisions
+    come from contact, and vice versa)."""
+
+    rule: Rule
+    category: Category | None
+    t: float                                  # s, sim time of onset (contact time refined between frames)
+    observed: float
+    threshold: float
+    units: str
+    entities: tuple[str, ...] = ()
+    detail: str = ""
+
+    def to_dict(self) -> dict[str, Any]:
+        d = asdict(self)
+        d["rule"] = self.rule.value
+        d["category"] = self.category.value if self.category else None
+        d["entities"] = list(self.entities)
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> "Violation":
+        return cls(rule=Rule(d["rule"]), category=Category(d["category"]) if d.get("category") else None,
+                   t=float(d["t"]), observed=float(d["observed"]), threshold=float(d["threshold"]),
+                   units=str(d["units"]), entities=tuple(d.get("entities", ())), detail=str(d.get("detail", "")))
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """One category of a failed run: its first event and how many the run had."""
+
+    category: Category
+    t: float                                  # first event, s
+    rule: Rule
+    observed: float
+    threshold: float
+    units: str
+    entities: tuple[str, ...]
+    detail: str
+    count: int
+
+    def to_dict(self) -> dict[str, Any]:
+        d = asdict(self)
+        d["category"] = self.category.value
+        d["rule"] = self.rule.value
+        d["entities"] = list(self.entities)
+        return d
+
+
+@dataclass(frozen=True, slots=True)
+class RunVerdict:
+    """The verdict of one run. Never mixed: `error` runs carry no categories, `pass` runs carry none either."""
+
+    verdict: Verdict
+    categories: tuple[Finding, ...] = ()
+    error: str = ""                           # why the run is an error (empty otherwise)
+    scenario_id: str = ""
+    end_reason: str = ""
+    t_end: float = 0.0
+    frames: int = 0
+    violations: tuple[Violation, ...] = ()    # every event, in order (including those reported beside)
+    suppressed: tuple[Finding, ...] = ()      # categories that fired but are excluded by Table VI's exclusivity
+    notes: tuple[str, ...] = ()
+
+    @property
+    def category_names(self) -> tuple[str, ...]:
+        return tuple(f.category.value for f in self.categories)
+
+    def finding(self, category: Category) -> Finding | None:
+        return next((f for f in self.categories if f.category == category), None)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "verdict": self.verdict.value, "categories": [f.to_dict() for f in self.categories],
+            "error": self.error, "scenario_id": self.scenario_id, "end_reason": self.end_reason,
+            "t_end": self.t_end, "frames": self.frames, "violations": [v.to_dict() for v in self.violations],
+            "suppressed": [f.to_dict() for f in self.suppressed], "notes": list(self.notes),
+        }
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict(), sort_keys=True)
+
+    def summary(self) -> str:
+        """One line: `fail Collisions@3.42s(npc1) Smooth@1.00s` / `pass` / `error: planner not responding`."""
+        if self.verdict is Verdict.ERROR:
+            return f"error: {self.error}"
+        if self.verdict is Verdict.PASS:
+            return "pass"
+        parts = []
+        for f in self.categories:
+            who = f"({','.join(f.entities)})" if f.entities else ""
+            parts.append(f"{f.category.value}@{f.t:.2f}s{who} [{f.rule.value} {f.observed:.3g} vs {f.threshold:.3g}"
+                         f" {f.units}]")
+        return "fail " + " ".join(parts)

@@ -1,0 +1,121 @@
+"""Safety oracles: exact contact between the ego's footprint and every other entity's, and the paper's jerk rule.
+
+Contact is the ground truth a simulator can offer: two oriented rectangles overlap or they do not. The time of
+contact is placed between the last frame apart and the first frame in contact by bisection on poses interpolated
+linearly between the two frames, so it does not depend on the step size.
+
+The jerk rule is the paper's (§III-D.2, after Sequeira et al.): a collision is flagged when |jerk| exceeds
+T_cj = 300 m/s³ over a short interval (5–15 ms there). Here the interval is the frame period (50 ms for the
+player's default step): the finest a recording offers. The rule is kept beside the contact oracle so the two can be
+compared run by run; `collision_rule` in the configuration chooses which one decides the Collisions category.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from txt2sce_ros.contract import EntityState, Frame
+
+from .geometry import Box, box_at, footprint, interpolate, overlaps, penetration
+from .params import SafetyParams
+from .records import Category, Rule, Violation
+from .signals import Sample
+
+
+class ContactOracle:
+    """Ego vs every entity. Reports each contact once, at its start; a new contact after separation is new."""
+
+    def __init__(self, params: SafetyParams) -> None:
+        self.params = params
+        self._prev: Frame | None = None
+        self._in_contact: set[str] = set()
+        self.contacts: list[tuple[float, EntityState, float]] = []   # (t, entity at first contact frame, depth)
+
+    def observe(self, frame: Frame) -> list[tuple[float, EntityState, float]]:
+        """New contacts in this frame: (contact time, the entity hit, overlap depth in m)."""
+        ego_box = footprint(frame.ego)
+        new: list[tuple[float, EntityState, float]] = []
+        touching: set[str] = set()
+        for obj in frame.objects:
+            box = footprint(obj)
+            if not overlaps(ego_box, box):
+                continue
+            touching.add(obj.name)
+            if obj.name in self._in_contact:
+                continue
+            t = self._contact_time(frame, obj)
+            item = (t, obj, penetration(ego_box, box))
+            new.append(item)
+            self.contacts.append(item)
+        self._in_contact = touching
+        self._prev = frame
+        return new
+
+    def _contact_time(self, frame: Frame, obj: EntityState) -> float:
+        prev = self._prev
+        if prev is None:
+            return frame.t
+        before = next((o for o in prev.objects if o.name == obj.name), None)
+        if before is None:                        # appeared already overlapping (spawned, teleported)
+            return frame.t
+        e0, e1 = prev.ego, frame.ego
+
+        def touching(u: float) -> bool:
+            return overlaps(_box_between(e0, e1, u), _box_between(before, obj, u))
+
+        if touching(0.0):                         # was already touching at the previous frame
+            return frame.t
+        return _bisect(touching, prev.t, frame.t, self.params.contact_refine_steps)
+
+
+def _box_between(e0: EntityState, e1: EntityState, u: float) -> Box:
+    x, y, h = interpolate(e0, e1, u)
+    return box_at(x, y, h, e1.center_x, e1.length, e1.width)
+
+
+def _bisect(touching: Callable[[float], bool], t0: float, t1: float, steps: int) -> float:
+    """Earliest time in (t0, t1] with `touching` true, to (t1 - t0) / 2**steps; touching(1) is known true."""
+    lo, hi = 0.0, 1.0
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        if touching(mid):
+            hi = mid
+        else:
+            lo = mid
+    return t0 + hi * (t1 - t0)
+
+
+class JerkCollisionOracle:
+    """|jerk| > T_cj over one frame interval; one event per run of consecutive samples above the threshold."""
+
+    def __init__(self, params: SafetyParams, category: Category | None) -> None:
+        self.params = params
+        self.category = category
+        self._above = False
+        self.coarse_interval: float | None = None     # largest frame period seen above the paper's 15 ms
+
+    def observe(self, sample: Sample, frame: Frame) -> Violation | None:
+        if sample.jerk is None:
+            return None
+        if sample.dt > self.params.jerk_max_interval:
+            self.coarse_interval = max(sample.dt, self.coarse_interval or 0.0)
+        above = abs(sample.jerk) > self.params.jerk_threshold
+        fire = above and not self._above
+        self._above = above
+        if not fire:
+            return None
+        near = _nearest(frame)
+        return Violation(Rule.JERK_COLLISION, self.category, sample.t, abs(sample.jerk), self.params.jerk_threshold,
+                         "m/s³", (near,) if near else (),
+                         f"jerk {sample.jerk:+.1f} m/s³ over {sample.dt * 1000:.0f} ms")
+
+
+def _nearest(frame: Frame, within: float = 5.0) -> str:
+    """The entity whose footprint is closest to the ego's (within `within` m), to name beside a jerk event."""
+    ego = footprint(frame.ego)
+    best, best_gap = "", within
+    for obj in frame.objects:
+        gap = -penetration(ego, footprint(obj))
+        if gap < best_gap:
+            best, best_gap = obj.name, gap
+    return best

@@ -1,0 +1,210 @@
+"""Smartness oracles (paper §III-D.2): failure to start, failure to reach the goal, misinterpretation.
+
+- Failure to start (StartFail): the ego has not left its start (by `start_distance`) after standing still for
+  `start_timeout` seconds *with a clear path*; or it never moved at all in a run at least that long and its path
+  is clear at the end (a blocker that stays to the end makes it a failure to reach the goal instead).
+- Failure to reach the goal (PlanFail): it stands still mid-route with a clear path for `stop_timeout`; it stands
+  (`park_time`) with part of its footprint outside the allowed lanes; or the run ends (time out, end of the story)
+  with the goal not reached.
+- Misinterpretation (Misinterp): its front bumper crosses a stop line whose signal shows red (the state of the
+  last frame before the crossing: what the stack saw when it decided); it hits a static object that had been in
+  view (within `sensor_range`) for `visible_time` seconds. Occlusion is not modelled.
+
+"Clear path": no entity's footprint in the corridor `clear_distance` metres ahead of the front bumper (ego width
+plus `clear_margin` each side), and no red/yellow signal governing the ego whose stop line lies in that corridor.
+Waiting behind a car or at a red light is therefore never a failure to start.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from txt2sce_ros.contract import EntityState, Frame, Goal, SignalState, TrafficLightState
+
+from .geometry import Box, footprint, overlaps
+from .params import SmartnessParams
+from .records import Category, Rule, Violation
+from .signals import Sample
+
+
+def front_point(e: EntityState) -> tuple[float, float]:
+    """Centre of the front bumper."""
+    d = e.center_x + 0.5 * e.length
+    return e.x + d * math.cos(e.heading), e.y + d * math.sin(e.heading)
+
+
+class SmartnessOracle:
+    def __init__(self, params: SmartnessParams, goal: Goal | None, network: Any | None = None) -> None:
+        self.params = params
+        self.goal = goal
+        self.network = network
+        self._start: tuple[float, float] | None = None
+        self._t0 = 0.0
+        self.moved = False
+        self.goal_reached = False
+        self.min_goal_distance = math.inf
+        self._still = 0.0                    # s standing still in the current stop
+        self._still_clear = 0.0              # s of it with a clear path
+        self._stop_reported = False
+        self._park_reported = False
+        self._start_reported = False
+        self._prev_front: tuple[float, float] | None = None
+        self._prev_lights: dict[str, TrafficLightState] = {}
+        self._in_view_since: dict[str, float] = {}
+        self.last_frame: Frame | None = None
+        self._cos_tol = math.cos(math.radians(params.light_heading_tolerance_deg))
+
+    # --- per frame ---------------------------------------------------------------------------------------------
+
+    def observe(self, frame: Frame, s: Sample) -> list[Violation]:
+        p = self.params
+        ego = frame.ego
+        out: list[Violation] = []
+        if self._start is None:
+            self._start, self._t0 = (ego.x, ego.y), frame.t
+        self._track_view(frame)
+        if self.goal is not None:
+            d = math.hypot(ego.x - self.goal.x, ego.y - self.goal.y)
+            self.min_goal_distance = min(self.min_goal_distance, d)
+            if d <= self.goal.tolerance:
+                self.goal_reached = True
+        if not self.moved and math.hypot(ego.x - self._start[0], ego.y - self._start[1]) > p.start_distance:
+            self.moved = True
+            self._still = self._still_clear = 0.0
+        v = self._red_light(frame)
+        if v:
+            out.append(v)
+        out.extend(self._standing(frame, s))
+        self.last_frame = frame
+        return out
+
+    def _standing(self, frame: Frame, s: Sample) -> list[Violation]:
+        p = self.params
+        ego = frame.ego
+        if abs(ego.speed) >= p.stop_speed:
+            self._still = self._still_clear = 0.0
+            self._stop_reported = self._park_reported = False
+            return []
+        self._still += s.dt
+        if self.path_clear(frame):
+            self._still_clear += s.dt
+        out = []
+        if not self.moved:
+            if self._still_clear >= p.start_timeout and not self._start_reported:
+                self._start_reported = True
+                out.append(Violation(Rule.NO_START, Category.START_FAIL, frame.t, self._still_clear, p.start_timeout,
+                                     "s", (), "standing at the start with a clear path"))
+            return out
+        at_goal = self.goal is not None and math.hypot(ego.x - self.goal.x, ego.y - self.goal.y) <= self.goal.tolerance
+        if self._still_clear >= p.stop_timeout and not at_goal and not self._stop_reported:
+            self._stop_reported = True
+            out.append(Violation(Rule.STOPPED_MID_ROUTE, Category.PLAN_FAIL, frame.t, self._still_clear,
+                                 p.stop_timeout, "s", (), "standing mid-route with a clear path"))
+        if self._still >= p.park_time and not self._park_reported and self.network is not None:
+            outside = self.outside_lane(ego)
+            if outside:
+                self._park_reported = True
+                out.append(Violation(Rule.PARKED_OUTSIDE_LANE, Category.PLAN_FAIL, frame.t, outside, 0.0,
+                                     "corners", (), f"{outside:.0f} of 4 footprint corners outside "
+                                                    f"{'/'.join(p.lane_types)} lanes"))
+        return out
+
+    # --- red lights ----------------------------------------------------------------------------------------------
+
+    def governs(self, light: TrafficLightState, ego: EntityState, point: tuple[float, float]) -> tuple[float, float]:
+        """(longitudinal, lateral) position of `point` relative to the light's stop line, or (nan, nan) when the
+        signal does not govern the ego (heading too different or the point beside its stop line)."""
+        c, s = math.cos(light.heading), math.sin(light.heading)
+        if math.cos(ego.heading) * c + math.sin(ego.heading) * s < self._cos_tol:
+            return math.nan, math.nan
+        dx, dy = point[0] - light.stop_x, point[1] - light.stop_y
+        lon, lat = dx * c + dy * s, -dx * s + dy * c
+        if abs(lat) > self.params.light_half_width:
+            return math.nan, math.nan
+        return lon, lat
+
+    def _red_light(self, frame: Frame) -> Violation | None:
+        front = front_point(frame.ego)
+        prev_front, prev_lights = self._prev_front, self._prev_lights
+        self._prev_front = front
+        self._prev_lights = {light.id: light for light in frame.lights}
+        if prev_front is None:
+            return None
+        for light in frame.lights:
+            before = prev_lights.get(light.id, light)
+            lon0, _ = self.governs(before, frame.ego, prev_front)
+            lon1, lat1 = self.governs(light, frame.ego, front)
+            if not (lon0 < 0.0 <= lon1):          # nan compares false: not governed, no crossing
+                continue
+            red = before.state is SignalState.RED or (
+                self.params.yellow_is_violation and before.state is SignalState.YELLOW)
+            if red:
+                return Violation(Rule.RED_LIGHT, Category.MISINTERP, frame.t, frame.ego.speed, 0.0, "m/s",
+                                 (light.id,), f"crossed the stop line of signal {light.id} on {before.state.value} "
+                                              f"at {frame.ego.speed:.2f} m/s (lateral {lat1:+.2f} m)")
+        return None
+
+    # --- clear path, visibility, lanes ---------------------------------------------------------------------------
+
+    def path_clear(self, frame: Frame) -> bool:
+        p = self.params
+        ego = frame.ego
+        c, s = math.cos(ego.heading), math.sin(ego.heading)
+        fx, fy = front_point(ego)
+        half = 0.5 * p.clear_distance
+        corridor = Box(fx + half * c, fy + half * s, c, s, half, 0.5 * ego.width + p.clear_margin)
+        for obj in frame.objects:
+            if overlaps(corridor, footprint(obj)):
+                return False
+        for light in frame.lights:
+            if light.state is SignalState.RED or light.state is SignalState.YELLOW:
+                lon, _ = self.governs(light, ego, (fx, fy))
+                if -1.0 <= lon <= p.clear_distance:
+                    return False
+        return True
+
+    def _track_view(self, frame: Frame) -> None:
+        ex, ey = frame.ego.x, frame.ego.y
+        r2 = self.params.sensor_range ** 2
+        seen = self._in_view_since
+        for obj in frame.objects:
+            if (obj.x - ex) ** 2 + (obj.y - ey) ** 2 <= r2:
+                seen.setdefault(obj.name, frame.t)
+            else:
+                seen.pop(obj.name, None)
+
+    def visible_for(self, name: str, t: float) -> float:
+        """Seconds the entity has been in view (continuously) up to `t`; 0 if it is not in view."""
+        since = self._in_view_since.get(name)
+        return 0.0 if since is None else t - since
+
+    def outside_lane(self, ego: EntityState) -> int:
+        """How many of the footprint's corners lie outside every lane of the allowed types (0 when inside)."""
+        corners = footprint(ego).corners()
+        xs = [c[0] for c in corners]
+        ys = [c[1] for c in corners]
+        match = self.network.world_to_lane(xs, ys, lane_types=tuple(self.params.lane_types))
+        return int(sum(1 for inside in match.inside if not bool(inside)))
+
+    # --- end of run ----------------------------------------------------------------------------------------------
+
+    def finish(self, t_end: float, end_reason: str) -> list[Violation]:
+        p = self.params
+        out: list[Violation] = []
+        frame = self.last_frame
+        if frame is None:
+            return out
+        # Never moved over a run long enough to have started, and nothing blocks it at the end: the blocker (if
+        # any) went away and the ego still did not go. A blocker present to the end is a planning matter instead.
+        if (not self.moved and not self._start_reported and t_end - self._t0 >= p.start_timeout
+                and self.path_clear(frame)):
+            d = math.hypot(frame.ego.x - self._start[0], frame.ego.y - self._start[1])  # type: ignore[index]
+            out.append(Violation(Rule.NO_START, Category.START_FAIL, t_end, d, p.start_distance, "m", (),
+                                 f"never moved in {t_end - self._t0:.1f} s"))
+        if self.goal is not None and not self.goal_reached:
+            d = math.hypot(frame.ego.x - self.goal.x, frame.ego.y - self.goal.y)
+            why = "time out" if end_reason == "time_limit" else f"run ended ({end_reason or 'no reason given'})"
+            out.append(Violation(Rule.GOAL_NOT_REACHED, Category.PLAN_FAIL, t_end, d, self.goal.tolerance, "m", (),
+                                 f"{why} {d:.1f} m from the goal (closest {self.min_goal_distance:.1f} m)"))
+        return out

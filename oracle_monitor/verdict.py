@@ -1,0 +1,74 @@
+"""From a run's violations and its end status to one verdict: pass, fail (with categories) or error — never mixed.
+
+Rules (paper §IV RQ2, Table VI: "only the last two behaviour types may overlap, while others are mutually
+exclusive"):
+- error: the run itself broke (the player reports `verdict_hint: error`, e.g. planner not responding or an invalid
+  scenario), the run never reported its end, or no frame was observed. "Nothing observed" is never a pass.
+- StartFail, Misinterp and Collisions exclude every other category: when one of them fired, the run gets exactly
+  one — the one whose first event came first (a red light run at 5 s that ends in a crash at 6 s is Misinterp:
+  the earliest misbehaviour is the cause). Ties break in the order Collisions, Misinterp, StartFail.
+- Otherwise PlanFail and Smooth, either or both.
+Categories that fired but are excluded stay visible in `RunVerdict.suppressed`; every event in `violations`.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from typing import Iterable
+
+from txt2sce_ros.contract import RunStatus, Verdict
+
+from .records import EXCLUSIVE, Category, Finding, RunVerdict, Violation
+
+#: end reasons that mean the harness, not the system under test, ended the run
+ERROR_END_REASONS = frozenset({"planner_not_responding", "invalid_scenario", "simulation_fault", "player_error",
+                               "aborted"})
+
+
+def error_reason(status: RunStatus | None, frames: int) -> str:
+    """Why this run is an error, or '' when it can be judged."""
+    if frames == 0:
+        return "nothing observed: no frame of the run was received"
+    if status is None:
+        return "the run never reported its end (no final run status): recording incomplete"
+    if status.verdict_hint == "error" or status.end_reason in ERROR_END_REASONS:
+        return f"run broke: {status.end_reason or 'player reported an error'}"
+    if status.state != "finished":
+        return f"the run did not finish (last status {status.state!r})"
+    return ""
+
+
+def findings(violations: Iterable[Violation]) -> dict[Category, Finding]:
+    by_cat: dict[Category, list[Violation]] = defaultdict(list)
+    for v in violations:
+        if v.category is not None:
+            by_cat[v.category].append(v)
+    out = {}
+    for cat, events in by_cat.items():
+        first = min(events, key=lambda v: v.t)
+        entities = tuple(dict.fromkeys(e for v in events for e in v.entities))
+        out[cat] = Finding(cat, first.t, first.rule, first.observed, first.threshold, first.units, entities,
+                           first.detail, len(events))
+    return out
+
+
+def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frames: int, t_end: float,
+           scenario_id: str = "", notes: tuple[str, ...] = ()) -> RunVerdict:
+    common = dict(scenario_id=scenario_id or (status.scenario_id if status else ""),
+                  end_reason=status.end_reason if status else "", t_end=t_end, frames=frames,
+                  violations=violations, notes=notes)
+    why = error_reason(status, frames)
+    if why:
+        return RunVerdict(Verdict.ERROR, error=why, **common)
+    found = findings(violations)
+    exclusive = [found[c] for c in EXCLUSIVE if c in found]
+    if exclusive:
+        # min() keeps the first of equal times, and EXCLUSIVE lists the tie order.
+        chosen = min(exclusive, key=lambda f: f.t)
+        kept = (chosen,)
+    else:
+        kept = tuple(found[c] for c in (Category.PLAN_FAIL, Category.SMOOTH) if c in found)
+    suppressed = tuple(f for c, f in sorted(found.items(), key=lambda kv: kv[1].t) if f not in kept)
+    if not kept:
+        return RunVerdict(Verdict.PASS, **common)
+    return RunVerdict(Verdict.FAIL, categories=kept, suppressed=suppressed, **common)
