@@ -1,0 +1,163 @@
+"""Campaign report: Markdown and a self-contained HTML page (plots inlined as PNG data URIs)."""
+
+from __future__ import annotations
+
+import base64
+import html
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Mapping, Sequence
+
+from .behaviours import BehaviourRow, behaviour_table
+from .derivation import TriggerCandidate, aggregate, trigger_candidates
+from .features import elements_of_file
+from .lift import LiftRow, lift_table
+from . import plots
+
+
+@dataclass
+class CampaignResults:
+    """What the report is made of: one entry per run plus the trees' manifests."""
+
+    runs: list[dict[str, Any]]                       # scenario_id, tree, parent, verdict, categories, file, record
+    trees: dict[str, dict[str, Mapping[str, Any]]] = field(default_factory=dict)   # tree -> node id -> node
+    diversity: list[tuple[str, int, int]] = field(default_factory=list)            # level, abstract, variants
+    unique_categories: int | None = None
+    failure_plots: list[tuple[str, bytes]] = field(default_factory=list)           # caption, PNG
+
+
+@dataclass
+class Analysis:
+    behaviours: list[BehaviourRow]
+    verdicts: dict[str, int]
+    lift: dict[str, list[LiftRow]]
+    triggers: list[TriggerCandidate]
+    derivation: dict[str, list[tuple[str, int]]]
+
+
+def analyse(res: CampaignResults, *, min_support: int = 3) -> Analysis:
+    rows, verdicts = behaviour_table((r["verdict"], tuple(r["categories"])) for r in res.runs)
+    judged = [r for r in res.runs if r["verdict"] in ("pass", "fail") and r.get("file")]
+    lift = lift_table(((elements_of_file(r["file"]), frozenset(r["categories"])) for r in judged),
+                      min_support=min_support)
+    triggers: list[TriggerCandidate] = []
+    for tree, nodes in sorted(res.trees.items()):
+        results = {r["scenario_id"]: (r["verdict"], tuple(r["categories"])) for r in res.runs if r.get("tree") == tree}
+        triggers.extend(trigger_candidates(nodes, results))
+    return Analysis(rows, verdicts, lift, triggers, aggregate(triggers))
+
+
+def _md_table(header: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out)
+
+
+def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campaign report",
+             images: Mapping[str, str] | None = None) -> str:
+    images = images or {}
+    parts = [f"# {title}", ""]
+    total = sum(an.verdicts.values())
+    parts.append(f"{total} runs: " + ", ".join(f"{an.verdicts.get(v, 0)} {v}" for v in ("pass", "fail", "error")))
+    parts += ["", "## Unexpected behaviours (paper Table VI)", ""]
+    top = {c: ", ".join(f"{r.element} ({r.lift:.2f}×, n={r.support})" for r in an.lift.get(c, [])[:3])
+           for c in (b.category for b in an.behaviours)}
+    parts.append(_md_table(
+        ["category", "count", "share of behaviours", "share of runs", "top triggers (lift, support)"],
+        [(b.category, b.count, f"{100 * b.share_of_behaviours:.1f}%", f"{100 * b.share_of_runs:.1f}%",
+          top.get(b.category) or "–") for b in an.behaviours]))
+    if "categories" in images:
+        parts += ["", f"![categories]({images['categories']})"]
+    parts += ["", "## Trigger conditions by lift", "",
+              "lift = P(category | element) / P(category); support = runs with both."]
+    for cat, rows in an.lift.items():
+        parts += ["", f"### {cat}", ""]
+        parts.append(_md_table(["element", "lift", "support", "runs with element", "P(cat | element)"],
+                               [(r.element, f"{r.lift:.2f}", r.support, r.with_element, f"{r.confidence:.2f}")
+                                for r in rows[:10]]))
+    if "lift" in images:
+        parts += ["", f"![lift]({images['lift']})"]
+    parts += ["", "## Derivation triggers", "",
+              "A failing node whose parent passed: the block its derivation added is the trigger candidate.", ""]
+    if an.derivation:
+        parts.append(_md_table(["category", "block kind / operator", "count"],
+                               [(c, k, n) for c, kv in an.derivation.items() for k, n in kv[:5]]))
+    else:
+        parts.append("No parent-passed / child-failed pair in this campaign.")
+    if res.diversity:
+        parts += ["", "## Diversity (paper Table V)", ""]
+        parts.append(_md_table(["abstraction level", "abstract representations", "variants generated"],
+                               res.diversity))
+        if res.unique_categories is not None:
+            parts += ["", f"Unique scenario categories: {res.unique_categories}"]
+    for key in sorted(k for k in images if k.startswith("tree:")):
+        parts += ["", f"![{key}]({images[key]})"]
+    for key in sorted(k for k in images if k.startswith("failure:")):
+        parts += ["", f"![{key}]({images[key]})"]
+    return "\n".join(parts) + "\n"
+
+
+def write_report(res: CampaignResults, out_dir: str | Path, *, title: str = "txt2sce campaign report",
+                 min_support: int = 3) -> tuple[Path, Path]:
+    """Write report.md (+ PNG files beside it) and a self-contained report.html; returns both paths."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    an = analyse(res, min_support=min_support)
+    figs: dict[str, bytes] = {"categories": plots.category_bars(an.behaviours), "lift": plots.lift_bars(an.lift)}
+    for tree, nodes in sorted(res.trees.items())[:3]:
+        verdicts = {r["scenario_id"]: r["verdict"] for r in res.runs if r.get("tree") == tree}
+        figs[f"tree:{tree}"] = plots.tree_view(nodes, verdicts, f"tree {tree} (red = fail, green = pass)")
+    for i, (caption, png) in enumerate(res.failure_plots):
+        figs[f"failure:{i:02d} {caption}"] = png
+    names = {}
+    for key, png in figs.items():
+        fname = "fig_" + "".join(ch if ch.isalnum() else "_" for ch in key)[:60] + ".png"
+        (out / fname).write_bytes(png)
+        names[key] = fname
+    md = markdown(res, an, title=title, images=names)
+    (out / "report.md").write_text(md, encoding="utf-8")
+    data_uris = {k: "data:image/png;base64," + base64.b64encode(v).decode() for k, v in figs.items()}
+    page = _html(markdown(res, an, title=title, images=data_uris), title)
+    (out / "report.html").write_text(page, encoding="utf-8")
+    (out / "analysis.json").write_text(json.dumps({
+        "verdicts": an.verdicts,
+        "behaviours": [b.__dict__ for b in an.behaviours],
+        "lift": {c: [r.__dict__ for r in rows[:20]] for c, rows in an.lift.items()},
+        "derivation": an.derivation,
+    }, indent=1, sort_keys=True), encoding="utf-8")
+    return out / "report.md", out / "report.html"
+
+
+def _html(md: str, title: str) -> str:
+    """A minimal Markdown-to-HTML rendering of what `markdown()` emits (headings, tables, images, paragraphs)."""
+    body: list[str] = []
+    lines = md.splitlines()
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith("#"):
+            level = len(line) - len(line.lstrip("#"))
+            body.append(f"<h{level}>{html.escape(line[level:].strip())}</h{level}>")
+        elif line.startswith("| "):
+            rows = []
+            while i < len(lines) and lines[i].startswith("|"):
+                if not lines[i].startswith("|---"):
+                    rows.append([c.strip() for c in lines[i].strip("|").split("|")])
+                i += 1
+            i -= 1
+            head, *rest = rows
+            body.append("<table><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in head) + "</tr>"
+                        + "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rest)
+                        + "</table>")
+        elif line.startswith("!["):
+            alt, src = line[2:].split("](", 1)
+            body.append(f'<figure><img src="{src[:-1]}" alt="{html.escape(alt)}"/></figure>')
+        elif line.strip():
+            body.append(f"<p>{html.escape(line)}</p>")
+        i += 1
+    style = ("body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
+             "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}"
+             "th{background:#f0f0f0}img{max-width:100%}")
+    return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
+            f"<style>{style}</style></head><body>{''.join(body)}</body></html>\n")
