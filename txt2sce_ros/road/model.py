@@ -57,9 +57,9 @@ class Signal:
 
     @property
     def is_traffic_light(self) -> bool:
-        # OpenDRIVE country code "OpenDRIVE" uses types 1000001-1000099 for traffic lights (1000001: 3-light);
-        # German StVO types 1000xxx likewise; any dynamic signal is treated as a light.
-        return self.dynamic or self.type.startswith("10000")
+        # Type codes are country-specific (in esmini's maps 1000001 is a vehicle light but 1000003 a crosswalk
+        # marking), so the one portable mark of a light is a signal whose state changes: dynamic="yes".
+        return self.dynamic
 
 
 @dataclass(frozen=True, slots=True)
