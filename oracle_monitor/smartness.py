@@ -160,7 +160,8 @@ class SmartnessOracle:
         for light in frame.lights:
             if light.state is SignalState.RED or light.state is SignalState.YELLOW:
                 lon, _ = self.governs(light, ego, (fx, fy))
-                if -1.0 <= lon <= p.clear_distance:
+                # lon < 0: the line is ahead of the bumper; a bumper just over it (1 m) still waits for it.
+                if -p.clear_distance <= lon <= 1.0:
                     return False
         return True
 

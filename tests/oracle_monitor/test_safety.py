@@ -1,0 +1,99 @@
+"""Safety oracles: exact contact from oriented footprints, the paper's jerk rule beside it."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from oracle_monitor import Category, Oracle, OracleParams, Rule
+from oracle_monitor.geometry import box_at, footprint, overlaps, penetration
+from txt2sce_ros.contract import Verdict
+
+from .oracle_runs import car, ego, esmini_frames, judge, straight_run
+
+PARAMS = OracleParams.from_config()
+
+
+def test_rear_end_contact_time_and_entity() -> None:
+    # Ego at 10 m/s from x=0 towards a stopped car: contact when its front bumper reaches the car's rear bumper,
+    # at t = 2.5522 s, between the frames at 2.55 and 2.60 s.
+    lead = lambda t: [car("lead", t, 30.022)]
+    frames = straight_run(lambda t: 10.0, 4.0, objects=lead)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    contacts = [v for v in online if v.rule is Rule.CONTACT]
+    assert len(contacts) == 1, "a lasting overlap is one contact, not one per frame"
+    c = contacts[0]
+    gap = (30.022 + 1.4 - 2.25) - (0.0 + 1.4 + 2.25)      # rear bumper of lead - front bumper of ego
+    assert c.t == pytest.approx(gap / 10.0, abs=1e-4)      # refined between frames, not rounded to 0.05 s
+    assert c.entities == ("lead",) and c.category is Category.COLLISIONS
+    assert verdict.verdict is Verdict.FAIL and verdict.category_names == ("Collisions",)
+    assert verdict.categories[0].entities == ("lead",)
+
+
+def test_car_in_the_next_lane_is_not_hit() -> None:
+    frames = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("beside", t, 30.0, y=3.5)])
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    assert not [v for v in online if v.rule is Rule.CONTACT]
+    assert "Collisions" not in verdict.category_names
+
+
+def test_oriented_boxes_are_exact_where_axis_aligned_boxes_overlap() -> None:
+    # Two 4.5 × 1.8 boxes rotated 45° whose axis-aligned bounding boxes overlap but whose shapes do not.
+    a = box_at(0.0, 0.0, math.pi / 4, 0.0, 4.5, 1.8)
+    b = box_at(2.4, -2.4, math.pi / 4, 0.0, 4.5, 1.8)
+    assert not overlaps(a, b) and penetration(a, b) < 0
+    c = box_at(1.0, -1.0, math.pi / 4, 0.0, 4.5, 1.8)       # 1.41 m apart across their width of 1.8 m: overlap
+    assert overlaps(a, c) and penetration(a, c) == pytest.approx(1.8 - math.sqrt(2), abs=1e-9)
+
+
+def test_side_swipe_by_a_crossing_car() -> None:
+    # A car crossing the ego's path from the right at 8 m/s; ego at 10 m/s: their paths cross at x = 40.
+    cross = lambda t: [car("crosser", t, 40.0 - 1.4, -33.0 + 8.0 * t, heading=math.pi / 2, speed=8.0)]
+    frames = straight_run(lambda t: 10.0, 6.0, objects=cross)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    hit = next(v for v in online if v.rule is Rule.CONTACT)
+    assert hit.entities == ("crosser",)
+    # Check the refined time against a brute-force scan of the same motion at 0.1 ms resolution.
+    t = 2.0
+    while not overlaps(footprint(ego(t, 10.0 * t, speed=10.0)), footprint(cross(t)[0])):
+        t += 1e-4
+    assert hit.t == pytest.approx(t, abs=2e-4)
+
+
+def test_jerk_rule_fires_on_a_hard_stop_and_not_on_braking() -> None:
+    hard = straight_run(lambda t: 10.0 if t < 2.0 else 0.0, 4.0)        # 10 -> 0 m/s in one 50 ms step
+    verdict, online = judge(Oracle(None, None, PARAMS), hard)
+    jerks = [v for v in online if v.rule is Rule.JERK_COLLISION]
+    assert jerks and jerks[0].t == pytest.approx(2.0) and jerks[0].observed > 300.0
+    assert jerks[0].category is None, "with collision_rule=contact the jerk rule is reported beside, not counted"
+    assert "Collisions" not in verdict.category_names
+    assert any("1 jerk event" in n or "jerk event(s)" in n for n in verdict.notes)
+
+    soft = straight_run(lambda t: max(0.0, 10.0 - 3.0 * max(0.0, t - 1.0)), 6.0)   # 3 m/s² braking
+    _, online = judge(Oracle(None, None, PARAMS), soft)
+    assert not [v for v in online if v.rule is Rule.JERK_COLLISION]
+
+
+def test_collision_rule_jerk_makes_the_jerk_event_the_collision() -> None:
+    params = PARAMS.with_overrides(safety={"collision_rule": "jerk"})
+    hard = straight_run(lambda t: 10.0 if t < 2.0 else 0.0, 4.0, objects=lambda t: [car("lead", t, 80.0)])
+    verdict, _ = judge(Oracle(None, None, params), hard)
+    assert verdict.category_names == ("Collisions",)
+    assert verdict.categories[0].rule is Rule.JERK_COLLISION
+
+
+def test_esmini_pedestrian_collision_reference_run() -> None:
+    # esmini's own trajectory of its pedestrian_collision example: the ego at 9 m/s meets a crossing pedestrian.
+    frames = esmini_frames("pedestrian_collision", categories={"pedestrian_adult": "pedestrian"})
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    hit = next(v for v in online if v.rule is Rule.CONTACT)
+    assert hit.entities == ("pedestrian_adult",)
+    assert 5.0 < hit.t < 6.0
+    assert verdict.category_names == ("Collisions",)
+
+
+def test_esmini_slow_lead_vehicle_has_no_contact() -> None:
+    frames = esmini_frames("slow-lead-vehicle")
+    _, online = judge(Oracle(None, None, PARAMS), frames)
+    assert not [v for v in online if v.rule in (Rule.CONTACT, Rule.JERK_COLLISION)]

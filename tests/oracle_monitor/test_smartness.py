@@ -1,0 +1,168 @@
+"""Smartness: failure to start, failure to reach the goal, misinterpretation of signals and obstacles."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from oracle_monitor import Category, Oracle, OracleParams, Rule
+from txt2sce_ros.contract import EntityState, Frame, Goal, SignalState, TrafficLightState, Verdict
+from txt2sce_ros.road import load_network
+
+from .oracle_runs import DT, car, ego, esmini_map, finished, judge, straight_run
+
+PARAMS = OracleParams.from_config()
+
+
+def light(state: SignalState, x: float = 50.0, heading: float = 0.0, y: float = 0.0) -> TrafficLightState:
+    return TrafficLightState("sig1", state, x, y, heading, road_id="1", lane_ids=(-1,))
+
+
+def stop_at(t_stop: float, v0: float = 10.0, decel: float = 2.5, t_go: float | None = None, a_go: float = 1.0):
+    """Cruise at v0, brake at `decel` from t_stop to standstill, go again at `t_go`."""
+    def v(t: float) -> float:
+        if t_go is not None and t >= t_go:
+            return min(v0, a_go * (t - t_go))
+        return max(0.0, v0 - decel * max(0.0, t - t_stop))
+    return v
+
+
+# --- failure to start -------------------------------------------------------------------------------------------
+
+def test_standing_at_the_start_with_a_clear_path_is_startfail() -> None:
+    frames = straight_run(lambda t: 0.0, 8.0)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.NO_START]
+    assert len(ev) == 1 and ev[0].t == pytest.approx(5.0) and ev[0].units == "s"
+    assert verdict.category_names == ("StartFail",)
+
+
+def test_waiting_behind_a_car_that_then_leaves_is_not_startfail() -> None:
+    lead = lambda t: [car("lead", t, 8.0 + max(0.0, t - 7.0) * 8.0, speed=8.0 if t > 7.0 else 0.0)]
+    frames = straight_run(lambda t: 0.0 if t < 7.5 else min(6.0, 1.0 * (t - 7.5)), 12.0, objects=lead)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    assert not [v for v in online if v.category is Category.START_FAIL]
+    assert verdict.finding(Category.START_FAIL) is None
+
+
+def test_waiting_at_red_is_not_startfail_but_staying_after_green_is() -> None:
+    lights = lambda t: [light(SignalState.RED if t < 6.0 else SignalState.GREEN, x=10.0)]
+    frames = straight_run(lambda t: 0.0, 14.0, lights=lights)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.NO_START]
+    assert len(ev) == 1 and ev[0].t == pytest.approx(11.0)        # 5 s of clear path after the green at 6 s
+
+
+def test_never_moving_behind_a_blocker_that_stays_is_not_startfail() -> None:
+    frames = straight_run(lambda t: 0.0, 10.0, objects=lambda t: [car("lead", t, 9.0)])
+    verdict, _ = judge(Oracle(None, Goal(200.0, 0.0, 0.0), PARAMS), frames, finished(10.0, "time_limit"))
+    assert verdict.category_names == ("PlanFail",)                 # the goal is not reached: a planning failure
+    assert verdict.categories[0].rule is Rule.GOAL_NOT_REACHED
+    assert "time out" in verdict.categories[0].detail
+
+
+# --- failure to reach the goal ----------------------------------------------------------------------------------
+
+def test_stopping_mid_route_on_a_clear_road_is_planfail() -> None:
+    frames = straight_run(stop_at(3.0), 16.0)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.STOPPED_MID_ROUTE]
+    assert len(ev) == 1 and ev[0].t == pytest.approx(7.0 + 5.0, abs=2 * DT)   # standstill at 7 s, + 5 s
+    assert verdict.finding(Category.PLAN_FAIL) is not None
+
+
+def test_stopping_behind_a_stopped_car_is_not_planfail() -> None:
+    frames = straight_run(stop_at(3.0), 16.0, objects=lambda t: [car("lead", t, 58.0)])
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    assert not [v for v in online if v.rule is Rule.STOPPED_MID_ROUTE]
+    assert not [v for v in online if v.rule is Rule.CONTACT]
+
+
+def test_goal_reached_passes_and_time_out_fails() -> None:
+    frames = straight_run(lambda t: 10.0, 10.0)                     # ends at x = 100
+    verdict, _ = judge(Oracle(None, Goal(99.0, 0.0, 0.0), PARAMS), frames, finished(10.0, "goal_reached"))
+    assert verdict.verdict is Verdict.PASS and verdict.categories == ()
+    verdict, _ = judge(Oracle(None, Goal(150.0, 0.0, 0.0), PARAMS), frames, finished(10.0, "time_limit"))
+    f = verdict.finding(Category.PLAN_FAIL)
+    assert f is not None and f.rule is Rule.GOAL_NOT_REACHED and f.observed == pytest.approx(50.0)
+    assert f.threshold == 3.0 and f.units == "m"
+
+
+def test_parking_outside_the_lane_on_a_real_map() -> None:
+    net = load_network(esmini_map("straight_500m.xodr"))           # road "1": lanes 1 / -1 each ~3 m wide
+    # Drive along lane -1 (y = -1.5), pull over to y = -5.5 (beyond the driving lanes) and stop there.
+    frames = []
+    for k in range(int(12.0 / DT) + 1):
+        t = round(k * DT, 9)
+        x = 50.0 + min(t, 4.0) * 8.0
+        y = -1.5 - 4.0 * min(1.0, max(0.0, (t - 2.0) / 2.0))
+        frames.append(Frame(t, ego(t, x, y, 0.0, 8.0 if t < 4.0 else 0.0)))
+    verdict, online = judge(Oracle(net, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.PARKED_OUTSIDE_LANE]
+    assert len(ev) == 1 and ev[0].observed >= 2 and ev[0].t == pytest.approx(6.0, abs=2 * DT)
+    # The same stop inside lane -1 is not parking outside it.
+    inside = [replace(f, ego=replace(f.ego, y=-1.5)) for f in frames]
+    _, online = judge(Oracle(net, None, PARAMS), inside)
+    assert not [v for v in online if v.rule is Rule.PARKED_OUTSIDE_LANE]
+
+
+# --- misinterpretation ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("state, fires", [(SignalState.RED, True), (SignalState.GREEN, False),
+                                          (SignalState.YELLOW, False)])
+def test_crossing_a_stop_line(state: SignalState, fires: bool) -> None:
+    frames = straight_run(lambda t: 10.0, 8.0, lights=lambda t: [light(state)])
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.RED_LIGHT]
+    assert bool(ev) is fires
+    if fires:
+        # front bumper (3.65 m ahead of the rear axle) reaches x = 50 at t = 4.635 s: the first frame past it.
+        assert ev[0].t == pytest.approx(4.65) and ev[0].entities == ("sig1",)
+        assert verdict.category_names == ("Misinterp",)
+
+
+def test_red_after_crossing_and_oncoming_signals_are_not_violations() -> None:
+    late = lambda t: [light(SignalState.RED if t > 4.7 else SignalState.GREEN)]
+    _, online = judge(Oracle(None, None, PARAMS), straight_run(lambda t: 10.0, 8.0, lights=late))
+    assert not [v for v in online if v.rule is Rule.RED_LIGHT]
+    oncoming = lambda t: [light(SignalState.RED, heading=math.pi)]
+    _, online = judge(Oracle(None, None, PARAMS), straight_run(lambda t: 10.0, 8.0, lights=oncoming))
+    assert not [v for v in online if v.rule is Rule.RED_LIGHT]
+    beside = lambda t: [light(SignalState.RED, y=12.0)]                  # a signal for a parallel road
+    _, online = judge(Oracle(None, None, PARAMS), straight_run(lambda t: 10.0, 8.0, lights=beside))
+    assert not [v for v in online if v.rule is Rule.RED_LIGHT]
+
+
+def test_stopping_at_red_then_going_on_green_passes() -> None:
+    lights = lambda t: [light(SignalState.RED if t < 9.0 else SignalState.GREEN)]
+    # 10 m/s braking at 2.5 m/s² from t = 2.3 s stops 20 m on, at x = 43: front bumper 3.35 m before the line.
+    frames = straight_run(stop_at(2.3, t_go=9.5), 16.0, lights=lights)
+    x_stop = max(f.ego.x for f in frames if f.t < 9.0)
+    assert x_stop + 3.65 < 50.0, "the constructed run must stop before the line"
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    assert online == [] or all(v.category is Category.SMOOTH for v in online)
+    assert verdict.finding(Category.MISINTERP) is None and verdict.finding(Category.START_FAIL) is None
+
+
+def _obstacle(t: float, appear_at: float = 0.0) -> list[EntityState]:
+    if t < appear_at:
+        return []
+    return [EntityState("box1", "debris", t, 40.0, 0.0, 0.0, 0.0, length=1.0, width=1.0, center_x=0.0,
+                        is_static=True)]
+
+
+def test_hitting_a_visible_static_obstacle_is_misinterp() -> None:
+    frames = straight_run(lambda t: 10.0, 5.0, objects=_obstacle)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.STATIC_OBSTACLE_HIT]
+    assert len(ev) == 1 and ev[0].entities == ("box1",) and ev[0].observed > 3.0
+    assert verdict.category_names == ("Misinterp",)
+
+
+def test_an_obstacle_dropped_in_front_of_the_ego_is_a_collision() -> None:
+    frames = straight_run(lambda t: 10.0, 5.0, objects=lambda t: _obstacle(t, appear_at=3.6))
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    assert [v.rule for v in online if v.entities == ("box1",)] == [Rule.CONTACT]
+    assert verdict.category_names == ("Collisions",)
