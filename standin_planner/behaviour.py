@@ -1,0 +1,239 @@
+"""Behaviour layer: what constrains the ego's speed and lateral position this step, from the perceived objects,
+traffic lights and the goal, all measured along the route's reference line.
+
+Each rule returns `Constraint`s (an acceleration it asks for and why); the planner takes the most restrictive.
+Rules: follow the nearest in-path mover (IDM); stop for / pass a static obstacle in the lane; yield to a party whose
+predicted path crosses the ego's ahead (constant turn rate and velocity prediction, so objects on curved lanes and
+turning in junctions follow their lane); stop at red, and at yellow when the stop is comfortable (else clear); stop
+at the goal.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from txt2sce_ros.contract import EntityState, SignalState, TrafficLightState
+
+from .idm import idm_accel, stop_accel
+from .params import BehaviourParams, LongitudinalParams
+from .refline import RefLine, wrap_angle
+
+
+class Reason(str, enum.Enum):
+    CRUISE = "cruise"
+    CURVE = "curve"
+    LEAD = "lead"
+    OBSTACLE = "obstacle"
+    YIELD = "yield"
+    RED = "red_light"
+    YELLOW = "yellow_light"
+    GOAL = "goal"
+    HOLD = "hold"          # refuses to move (fault no_start_when_close)
+
+
+@dataclass(frozen=True, slots=True)
+class Constraint:
+    reason: Reason
+    accel: float                 # m/s² asked for
+    entity: str = ""
+    distance: float = math.inf   # m from the ego's front to what it reacts to
+    urgent: bool = False         # needs more than comfortable braking: the jerk limit may be exceeded
+
+
+@dataclass(frozen=True, slots=True)
+class StopPlan:
+    """How stops are planned this step: the deceleration allowed for by the road, the acceleration wanted
+    otherwise, and the distance (m) the jerk-limited braking build-up still costs."""
+
+    decel: float
+    cruise: float
+    lag: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class PathObject:
+    """An object measured against the reference line."""
+
+    state: EntityState
+    s_min: float                 # rear-most and front-most arc length of its footprint
+    s_max: float
+    offset: float                # lateral offset of its footprint centre, m (left positive)
+    half_lat: float              # half of its lateral extent across the line, m
+    v_along: float               # speed component along the line, m/s
+    rel_heading: float           # its heading minus the line's, rad
+
+
+@dataclass(frozen=True, slots=True)
+class EgoOnPath:
+    s: float                     # rear axle arc length
+    s_front: float
+    offset: float
+    speed: float
+    half_width: float
+
+
+def measure(obj: EntityState, line: RefLine, near_s: float) -> PathObject:
+    cx = obj.x + obj.center_x * math.cos(obj.heading)
+    cy = obj.y + obj.center_x * math.sin(obj.heading)
+    pp = line.project(cx, cy, near_s=near_s, window=150.0)
+    rel = wrap_angle(obj.heading - pp.heading)
+    c, s = abs(math.cos(rel)), abs(math.sin(rel))
+    half_long = 0.5 * (c * obj.length + s * obj.width)
+    half_lat = 0.5 * (s * obj.length + c * obj.width)
+    return PathObject(state=obj, s_min=pp.s - half_long, s_max=pp.s + half_long, offset=pp.offset,
+                      half_lat=half_lat, v_along=obj.speed * math.cos(rel), rel_heading=rel)
+
+
+def in_path(po: PathObject, ego: EgoOnPath, ego_offset: float, p: BehaviourParams) -> bool:
+    return abs(po.offset - ego_offset) < ego.half_width + po.half_lat + p.path_half_width_margin
+
+
+def lead_constraint(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, v0: float,
+                    lp: LongitudinalParams, bp: BehaviourParams, decel: float) -> Constraint | None:
+    """IDM on the nearest moving in-path object ahead travelling roughly our way."""
+    best: PathObject | None = None
+    for po in objs:
+        if po.s_max <= ego.s_front - 0.5 or not in_path(po, ego, ego_offset, bp):
+            continue
+        if po.state.is_static or abs(po.rel_heading) > bp.lead_heading_tolerance or po.v_along < 0.3:
+            continue
+        if best is None or po.s_min < best.s_min:
+            best = po
+    if best is None:
+        return None
+    gap = best.s_min - ego.s_front
+    a = idm_accel(ego.speed, v0, gap, max(best.v_along, 0.0), lp, decel=decel)
+    return Constraint(Reason.LEAD, a, best.state.name, gap, urgent=a < -decel)
+
+
+def stop_constraint(reason: Reason, distance: float, ego: EgoOnPath, lp: LongitudinalParams, sp: StopPlan,
+                    entity: str = "") -> Constraint:
+    """A planned stop with the front bumper `stop_margin` metres before `distance`."""
+    d = distance - lp.stop_margin
+    a = stop_accel(ego.speed, d, lp, plan_decel=sp.decel, cruise=sp.cruise, lag=sp.lag)
+    return Constraint(reason, a, entity, distance, urgent=-a > sp.decel * 1.05)
+
+
+def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourParams) -> float | None:
+    """Lateral offset of the ego's centre (left positive) at which it passes the static object with
+    `pass_lateral_margin` clearance while its whole body stays inside its lane; None when neither side has room."""
+    half_room = 0.5 * line.width_at(0.5 * (po.s_min + po.s_max)) - ego.half_width
+    left = po.offset + po.half_lat + bp.pass_lateral_margin + ego.half_width
+    right = po.offset - po.half_lat - bp.pass_lateral_margin - ego.half_width
+    options = [o for o in (left, right) if abs(o) <= half_room + 1e-9]
+    return min(options, key=abs) if options else None
+
+
+def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: LongitudinalParams,
+                   bp: BehaviourParams, sp: StopPlan) -> tuple[list[Constraint], float]:
+    """Static (or standing, not-following) objects in the lane: pass within the lane when there is room, else
+    stop before them. Returns the stop constraints and the lateral offset to drive at (0 = lane centre)."""
+    out: list[Constraint] = []
+    offset = 0.0
+    ahead = sorted((po for po in objs if po.s_max > ego.s_front - 0.5), key=lambda po: po.s_min)
+    for po in ahead:
+        moving_lead = (not po.state.is_static and abs(po.rel_heading) <= bp.lead_heading_tolerance
+                       and po.v_along >= 0.3)
+        if moving_lead or not in_path(po, ego, offset, bp):
+            continue
+        if po.state.is_static and po.s_min - ego.s_front < 60.0:
+            shift = pass_offset(po, ego, line, bp)
+            if shift is not None:
+                offset = shift
+                continue
+        out.append(stop_constraint(Reason.OBSTACLE, po.s_min - ego.s_front, ego, lp, sp, po.state.name))
+        break
+    return out, offset
+
+
+def predict(obj: EntityState, horizon: float, step: float) -> np.ndarray:
+    """Constant turn rate and velocity prediction of the footprint centre: rows (tau, x, y)."""
+    taus = np.arange(0.0, horizon + 1e-9, step)
+    h0, v, w = obj.heading, max(obj.speed, 0.0), obj.yaw_rate
+    if abs(w) < 1e-3:
+        hs = np.full_like(taus, h0)
+        xs = obj.x + v * taus * math.cos(h0)
+        ys = obj.y + v * taus * math.sin(h0)
+    else:
+        hs = h0 + w * taus
+        xs = obj.x + v / w * (np.sin(hs) - math.sin(h0))
+        ys = obj.y - v / w * (np.cos(hs) - math.cos(h0))
+    xs = xs + obj.center_x * np.cos(hs)
+    ys = ys + obj.center_x * np.sin(hs)
+    return np.stack([taus, xs, ys], axis=1)
+
+
+def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: LongitudinalParams,
+                      bp: BehaviourParams, sp: StopPlan, v0: float) -> list[Constraint]:
+    """Yield to movers whose predicted path crosses the ego's path ahead unless the ego clearly passes first."""
+    out: list[Constraint] = []
+    for po in objs:
+        o = po.state
+        if o.is_static or o.speed < 0.3:
+            continue
+        if in_path(po, ego, 0.0, bp) and abs(po.rel_heading) <= bp.lead_heading_tolerance:
+            continue                                     # a lead or a follower: IDM's business, not a crossing
+        traj = predict(o, bp.prediction_horizon, bp.prediction_step)
+        s, off = line.project_many(traj[:, 1], traj[:, 2])
+        radius = 0.5 * max(o.length, o.width)
+        hit = (np.abs(off) < ego.half_width + radius + bp.conflict_margin) & (s > ego.s_front - 1.0) \
+            & (s < ego.s_front + 80.0)
+        idx = np.flatnonzero(hit)
+        if len(idx) == 0:
+            continue
+        k = idx[0]
+        tau, s_conf = float(traj[k, 0]), float(s[k])
+        d = max(s_conf - radius - ego.s_front, 0.0)
+        t_ego = _time_to_cover(d + 2.0 * radius + 2.0 * ego.half_width, ego.speed, v0, lp.max_accel)
+        if t_ego + bp.conflict_time_gap < tau:
+            continue                                     # the ego is through well before the other arrives
+        stop_at = s_conf - radius
+        entry = line.next_junction_entry(ego.s, stop_at - ego.s + 0.1)
+        if entry is not None and entry < stop_at:
+            stop_at = entry                              # wait at the junction entry, not inside it
+        dist = stop_at - ego.s_front
+        if dist < -0.5:
+            continue                                     # already committed past the conflict point
+        out.append(stop_constraint(Reason.YIELD, dist, ego, lp, sp, o.name))
+    return out
+
+
+def _time_to_cover(d: float, v: float, v_max: float, a: float) -> float:
+    """Time to drive `d` metres from speed v accelerating at a up to v_max (s)."""
+    v = max(v, 0.0)
+    v_max = max(v_max, v, 0.1)
+    d_acc = (v_max * v_max - v * v) / (2.0 * a)
+    if d <= d_acc:
+        return (-v + math.sqrt(v * v + 2.0 * a * d)) / a
+    return (v_max - v) / a + (d - d_acc) / v_max
+
+
+def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, line: RefLine,
+                       lp: LongitudinalParams, bp: BehaviourParams, sp: StopPlan, emergency_decel: float, *,
+                       misread_yellow: bool) -> list[Constraint]:
+    out: list[Constraint] = []
+    for light in lights:
+        state = light.state
+        if misread_yellow and state is SignalState.YELLOW:
+            state = SignalState.GREEN                    # fault red_light_misread
+        if state not in (SignalState.RED, SignalState.YELLOW):
+            continue
+        pp = line.project(light.stop_x, light.stop_y, near_s=ego.s, window=bp.signal_lookahead + 20.0)
+        if abs(pp.offset) > bp.signal_lateral_tolerance or abs(wrap_angle(light.heading - pp.heading)) > 0.8:
+            continue
+        dist = pp.s - ego.s_front
+        if dist < -0.5 or dist > bp.signal_lookahead:
+            continue
+        d_stop = max(dist - lp.stop_margin, 0.01)
+        need = ego.speed * ego.speed / (2.0 * d_stop)
+        if state is SignalState.YELLOW and need > bp.yellow_clear_decel:
+            continue                                     # cannot stop comfortably: clear the junction
+        if state is SignalState.RED and need > emergency_decel and dist < 0.0:
+            continue                                     # front already over the line: clear it
+        out.append(stop_constraint(Reason.RED if state is SignalState.RED else Reason.YELLOW, dist, ego, lp, sp,
+                                   light.id))
+    return out

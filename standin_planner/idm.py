@@ -1,0 +1,74 @@
+"""Longitudinal laws: IDM/ACC on the nearest in-path object, and a planned stop at a point (stop line, static
+obstacle, yield point, goal).
+
+IDM (Treiber, Hennecke & Helbing 2000): a = a_max·[1 − (v/v0)^δ − (s*/s)²],
+s* = s0 + v·T + v·Δv / (2·√(a_max·b)), Δv = v − v_lead. The planned stop is kept separate from IDM because IDM's
+approach to a standing target brakes harder than `b` at the end; a stop line wants a predictable constant
+deceleration that starts where the braking distance (at the deceleration the road allows) says it must.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .params import LongitudinalParams
+
+
+def free_road_accel(v: float, v0: float, p: LongitudinalParams) -> float:
+    """IDM's free-road term: accelerate towards the desired speed v0 (m/s²)."""
+    if v0 <= 0.0:
+        return -p.comfort_decel if v > 0.0 else 0.0
+    ratio = max(v, 0.0) / v0
+    return p.max_accel * (1.0 - ratio ** p.accel_exponent)
+
+
+def idm_accel(v: float, v0: float, gap: float, v_lead: float, p: LongitudinalParams, *,
+              decel: float | None = None) -> float:
+    """IDM acceleration (m/s²) behind a lead at bumper-to-bumper `gap` (m) moving at `v_lead` (m/s, along the
+    path). `decel` replaces the comfortable deceleration b (the friction-aware stack lowers it on slippery roads)."""
+    b = p.comfort_decel if decel is None else decel
+    dv = v - v_lead
+    s_star = p.min_gap + max(0.0, v * p.time_headway + v * dv / (2.0 * math.sqrt(p.max_accel * b)))
+    gap = max(gap, 0.1)
+    return free_road_accel(v, v0, p) - p.max_accel * (s_star / gap) ** 2
+
+
+def braking_decel(p: LongitudinalParams, friction: float) -> float:
+    """The deceleration (m/s², positive) the planner plans stops with on a road of `friction` coefficient:
+    its planned stop deceleration, capped by a safety share of what the tyres can transmit."""
+    return min(p.planned_stop_decel, p.friction_safety * friction * p.gravity)
+
+
+def stop_accel(v: float, distance: float, p: LongitudinalParams, *, plan_decel: float,
+               cruise: float, lag: float = 0.0) -> float:
+    """Acceleration (m/s²) to stop with the front bumper `distance` metres ahead (already net of the stop
+    margin). `plan_decel` is the deceleration the stop is planned with; `cruise` is the acceleration wanted
+    otherwise; `lag` metres are taken off the distance for the jerk-limited build-up of the braking. Braking starts
+    once the required deceleration v²/2d reaches `stop_onset_ratio`·plan_decel, and never asks for less than that requirement afterwards, so the ego stops at the point whatever the jerk ramp cost.
+    """
+    if distance <= 0.05:
+        return -p.max_decel if v > 0.0 else min(0.0, cruise)
+    need = v * v / (2.0 * max(distance - lag, 0.05))
+    if need >= p.stop_onset_ratio * plan_decel:
+        return -need
+    # Approaching a far stop point from low speed: go, but never faster than the plan can still stop from.
+    v_cap = math.sqrt(2.0 * p.stop_onset_ratio * plan_decel * distance)
+    if v >= v_cap:
+        return min(cruise, 0.0)
+    return cruise
+
+
+def slow_down_accel(v: float, v_target: float, distance: float, p: LongitudinalParams, *, plan_decel: float,
+                    lag: float, cruise: float) -> float:
+    """Acceleration (m/s²) to be at `v_target` or slower `distance` metres ahead (a curve). Brakes at the required
+    constant deceleration once it reaches `stop_onset_ratio`·plan_decel; `lag` metres are taken off the distance
+    for the jerk-limited build-up of the braking. Inside the curve (distance ~0) it holds the curve's speed."""
+    if distance <= 0.5:
+        return min(cruise, free_road_accel(v, v_target, p))
+    if v <= v_target:
+        return cruise
+    need = (v * v - v_target * v_target) / (2.0 * max(distance - lag, 0.1))
+    if need >= p.stop_onset_ratio * plan_decel:
+        return -need
+    # Close to the onset: stop accelerating so the braking starts from a steady speed.
+    return cruise if need < 0.5 * p.stop_onset_ratio * plan_decel else min(cruise, 0.0)

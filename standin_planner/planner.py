@@ -1,0 +1,201 @@
+"""The stand-in planner: route + perception + behaviour rules + IDM / stop control + pure pursuit + comfort
+limits, composed (no inheritance), one `step(frame) -> ControlCommand` per lock-step frame.
+
+Command encoding (contract.ControlCommand): speed to reach by the next step, v + a·dt, and a yaw rate; the stamp is
+the frame's time. The step is a deterministic function of the frames seen so far.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from txt2sce_ros.contract import ControlCommand, EntityState, Frame, Goal
+from txt2sce_ros.errors import InputError
+from txt2sce_ros.road import RoadNetwork
+
+from .behaviour import (Constraint, EgoOnPath, PathObject, Reason, StopPlan, lead_constraint, measure,
+                        obstacle_rules, signal_constraints, yield_constraints)
+from .faults import Faults
+from .idm import braking_decel, free_road_accel, slow_down_accel, stop_accel
+from .params import PlannerParams
+from .perception import Perception
+from .pure_pursuit import curve_targets, pursuit_curvature
+from .route import Route, off_route, plan_route
+
+#: Time step assumed for the first frame (the player's default lock-step dt), s.
+DEFAULT_DT = 0.05
+#: Objects farther than this from the ego are not considered at all (m).
+PERCEPTION_RANGE = 150.0
+#: Lateral speed at which the lane offset for passing an obstacle is taken up or given back (m/s).
+OFFSET_RATE = 0.6
+
+
+@dataclass(frozen=True, slots=True)
+class Decision:
+    """Why the planner commanded what it did at time t (for tests, logs and the planner-check table)."""
+
+    t: float
+    accel: float
+    yaw_rate: float
+    reason: Reason
+    entity: str
+    offset: float
+    constraints: tuple[Constraint, ...]
+    route_ok: bool
+
+
+class Planner:
+    """The system under test. `road_friction` is the road's friction coefficient as the stack knows it (a real
+    stack gets it from its road-condition / weather input; in our runs from the scenario's EnvironmentAction, see
+    `friction_from_xosc`); None means dry (1.0)."""
+
+    def __init__(self, network: RoadNetwork, goal: Goal | None, params: PlannerParams | None = None, *,
+                 faults: Faults | None = None, road_friction: float | None = None) -> None:
+        self.network = network
+        self.goal = goal
+        self.params = params or PlannerParams.from_config()
+        self.faults = faults or Faults()
+        self.road_friction = 1.0 if road_friction is None else float(road_friction)
+        self.perception = Perception(self.params.perception, self.faults, self.params.faults)
+        self.route: Route | None = None
+        self.route_error: str = ""
+        self.replans = 0
+        self.decision: Decision | None = None
+        self._s = 0.0
+        self._accel = 0.0
+        self._offset = 0.0
+        self._last_t: float | None = None
+        self._started = False
+
+    # --- public -------------------------------------------------------------------------------------------------
+
+    def set_goal(self, goal: Goal) -> None:
+        if goal != self.goal:
+            self.goal = goal
+            self.route = None
+
+    def step(self, frame: Frame) -> ControlCommand:
+        ego = frame.ego
+        dt = DEFAULT_DT if self._last_t is None else max(frame.t - self._last_t, 1e-3)
+        self._last_t = frame.t
+        objects = self.perception.objects(frame)      # every frame, so latency buffers stay filled
+        if self.goal is None or not self._ensure_route(ego):
+            accel = self._hold(ego, dt)
+            return self._command(frame, accel, 0.0, Reason.HOLD, "", (), speed=max(0.0, ego.speed + accel * dt))
+        assert self.route is not None
+        line = self.route.line
+        pp = line.project(ego.x, ego.y, near_s=self._s)
+        self._s = pp.s
+        v = max(ego.speed, 0.0)
+        lp, bp, fp = self.params.longitudinal, self.params.behaviour, self.params.faults
+        friction = fp.dry_friction if self.faults.late_braking_low_friction else self.road_friction
+        plan_decel = braking_decel(lp, friction)
+        idm_decel = min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity)
+        max_decel = min(lp.max_decel, friction * lp.gravity)
+        me = EgoOnPath(s=pp.s, s_front=pp.s + ego.center_x + 0.5 * ego.length, offset=pp.offset, speed=v,
+                       half_width=0.5 * ego.width)
+
+        v0 = lp.desired_speed
+        cruise = free_road_accel(v, v0, lp)
+        # Distance the jerk-limited build-up of braking to the planned deceleration still costs.
+        lag = 0.5 * v * max(0.0, plan_decel + min(self._accel, 0.0)) / self.params.comfort.max_jerk
+        sp = StopPlan(decel=plan_decel, cruise=cruise, lag=lag)
+        constraints: list[Constraint] = [Constraint(Reason.CRUISE, cruise)]
+        for dist, v_curve in curve_targets(line, pp.s, v, self.params.lateral, plan_decel):
+            a = slow_down_accel(v, v_curve, dist, lp, plan_decel=plan_decel, lag=lag, cruise=cruise)
+            constraints.append(Constraint(Reason.CURVE, a, "", dist))
+        near = [o for o in objects if math.hypot(o.x - ego.x, o.y - ego.y) < PERCEPTION_RANGE]
+        measured = [measure(o, line, pp.s) for o in near]
+        obstacle_stops, target_offset = obstacle_rules(measured, me, line, lp, bp, sp)
+        constraints += obstacle_stops
+        lead = lead_constraint(measured, me, self._offset, v0, lp, bp, idm_decel)
+        if lead is not None:
+            constraints.append(lead)
+        constraints += yield_constraints(measured, me, line, lp, bp, sp, v0)
+        constraints += signal_constraints(frame.lights, me, line, lp, bp, sp, max_decel,
+                                          misread_yellow=self.faults.red_light_misread)
+        goal_d = self.route.goal_s + bp.goal_overshoot - pp.s
+        constraints.append(Constraint(Reason.GOAL, stop_accel(v, goal_d, lp, plan_decel=plan_decel, cruise=cruise,
+                                                              lag=lag), "goal", goal_d))
+        if self.faults.no_start_when_close and v < 0.1 and self._npc_close(measured, me):
+            constraints.append(Constraint(Reason.HOLD, -lp.max_decel, "npc_close"))
+
+        binding = min(constraints, key=lambda c: c.accel)
+        accel = self._limit(binding.accel, v, dt, urgent=binding.urgent, max_decel=max_decel)
+        self._offset = _approach(self._offset, target_offset, OFFSET_RATE * dt)
+        kappa = pursuit_curvature(ego.x, ego.y, ego.heading, pp.s, v, line, self.params.lateral,
+                                  offset=self._offset)
+        speed_cmd = max(self.params.comfort.min_speed_command, v + accel * dt)
+        yaw = kappa * speed_cmd
+        if self.faults.aggressive_start and v < fp.aggressive_start_speed and binding.accel > 0.0:
+            # Autoware's start on low adhesion: full throttle with a large steering input (paper §V-C).
+            accel = fp.aggressive_start_accel
+            speed_cmd = v + accel * dt
+            yaw = math.copysign(fp.aggressive_start_yaw_rate, kappa if kappa != 0.0 else 1.0)
+        else:
+            wmax = self.params.lateral.max_yaw_rate
+            yaw = max(-wmax, min(wmax, yaw))
+        if v > 0.2:
+            self._started = True
+        return self._command(frame, accel, yaw, binding.reason, binding.entity, tuple(constraints),
+                             speed=speed_cmd)
+
+    # --- internals ----------------------------------------------------------------------------------------------
+
+    def _ensure_route(self, ego: EntityState) -> bool:
+        assert self.goal is not None
+        if self.route is not None and not off_route(self.route.line, ego.x, ego.y, ego.heading, self._s,
+                                                    self.params.lateral.replan_offset):
+            return True
+        try:
+            self.route = plan_route(self.network, ego.x, ego.y, ego.heading, self.goal)
+        except InputError as exc:
+            self.route, self.route_error = None, str(exc)
+            return False
+        self.replans += 1
+        self._s = self.route.line.project(ego.x, ego.y).s
+        self.route_error = ""
+        return True
+
+    def _npc_close(self, measured: list[PathObject], me: EgoOnPath) -> bool:
+        radius = self.params.faults.close_start_radius
+        for po in measured:
+            if po.state.is_static:
+                continue
+            ahead = po.s_min - me.s_front
+            behind = me.s - po.s_max
+            if max(ahead, behind) < radius and abs(po.offset - me.offset) < 2.5:
+                return True
+        return False
+
+    def _limit(self, a_des: float, v: float, dt: float, *, urgent: bool, max_decel: float) -> float:
+        """Comfort limits: acceleration bounds, jerk (emergency jerk only when urgent), and a decel taper to zero
+        at the moment of stopping so a stop does not end with a jolt."""
+        c, lp = self.params.comfort, self.params.longitudinal
+        if v < 0.05 and self._accel < 0.0:
+            self._accel = 0.0                          # standing: the brake force is not an acceleration
+        jerk = c.emergency_jerk if urgent else c.max_jerk
+        a = min(max(a_des, self._accel - jerk * dt), self._accel + c.max_jerk * dt)
+        a = min(max(a, -max_decel), lp.max_accel)
+        if a < 0.0 and not urgent:
+            a = max(a, -math.sqrt(2.0 * c.max_jerk * max(v, 0.0)) - c.max_jerk * dt)
+        if v + a * dt < 0.0:
+            a = -v / dt
+        self._accel = a
+        return a
+
+    def _hold(self, ego: EntityState, dt: float) -> float:
+        """No route or no goal: stop as comfortably as possible."""
+        return self._limit(-self.params.longitudinal.comfort_decel, max(ego.speed, 0.0), dt, urgent=False,
+                           max_decel=self.params.longitudinal.max_decel)
+
+    def _command(self, frame: Frame, accel: float, yaw: float, reason: Reason, entity: str,
+                 constraints: tuple[Constraint, ...], *, speed: float) -> ControlCommand:
+        self.decision = Decision(t=frame.t, accel=accel, yaw_rate=yaw, reason=reason, entity=entity,
+                                 offset=self._offset, constraints=constraints, route_ok=self.route is not None)
+        return ControlCommand(t=frame.t, speed=speed, yaw_rate=yaw)
+
+
+def _approach(x: float, target: float, step: float) -> float:
+    return target if abs(target - x) <= step else x + math.copysign(step, target - x)

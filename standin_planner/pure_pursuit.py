@@ -1,0 +1,52 @@
+"""Lateral control: pure pursuit on the route's centre line (Coulter 1992), for a vehicle that takes a yaw rate.
+
+The look-ahead point lies L = lookahead_min + lookahead_gain·v metres ahead of the ego's projection on the line
+(shifted sideways by the behaviour layer's lane offset when passing an obstacle). The arc through the rear axle and
+that point has curvature κ = 2·sin(α)/L, α being the bearing of the point in the vehicle frame; the yaw rate is v·κ.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .params import LateralParams
+from .refline import RefLine, wrap_angle
+
+
+def lookahead_distance(v: float, p: LateralParams) -> float:
+    return p.lookahead_min + p.lookahead_gain * max(v, 0.0)
+
+
+def pursuit_curvature(x: float, y: float, heading: float, s_ego: float, v: float, line: RefLine,
+                      p: LateralParams, *, offset: float = 0.0) -> float:
+    """Curvature (1/m, positive = left) of the arc that takes the rear axle at (x, y, heading) to the look-ahead
+    point of `line` at `offset` metres left of it."""
+    L = lookahead_distance(v, p)
+    tx, ty, _ = line.position(s_ego + L, offset)
+    dx, dy = tx - x, ty - y
+    dist = math.hypot(dx, dy)
+    if dist < 1e-6:
+        return 0.0
+    alpha = wrap_angle(math.atan2(dy, dx) - heading)
+    return 2.0 * math.sin(alpha) / dist
+
+
+def curve_speed(kappa: float, p: LateralParams) -> float:
+    """Highest speed (m/s) on a curve of curvature `kappa`: min(√(a_lat/κ), ω_max/κ); the second keeps the yaw
+    rate inside the smoothness band (±10 °/s), and is the binding one on urban junction turns."""
+    k = abs(kappa)
+    if k < 1e-4:
+        return math.inf
+    return min(math.sqrt(p.max_lateral_accel / k), 0.95 * p.max_yaw_rate / k)
+
+
+def curve_targets(line: RefLine, s_ego: float, v: float, p: LateralParams, decel: float) -> list[tuple[float, float]]:
+    """(distance ahead, speed limit) of the curve samples ahead that are slower than the ego now, far enough ahead
+    to cover the braking distance at `decel`."""
+    horizon = max(p.curve_preview, v * v / (2.0 * decel) + 3.0 * v + 5.0)
+    out = []
+    for s, k in line.max_abs_curvature(s_ego - 1.0, s_ego + horizon):
+        vc = curve_speed(k, p)
+        if vc < max(v, 0.5):
+            out.append((max(s - s_ego, 0.0), vc))
+    return out

@@ -1,0 +1,159 @@
+"""The route's centre line as a dense polyline: what lane following, path-relative object checks and stop points
+work on. Built once per (re)plan from the road model's `LanePath`, so the per-step geometry is plain numpy and the
+controllers can be exercised on any polyline.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+
+def wrap_angle(a: float) -> float:
+    """Angle in (-pi, pi]."""
+    return (a + math.pi) % (2.0 * math.pi) - math.pi
+
+
+@dataclass(frozen=True, slots=True)
+class PathPoint:
+    s: float
+    offset: float        # signed distance to the left of the line, m
+    heading: float       # line heading at s, rad
+
+
+class RefLine:
+    """A polyline with arc length `s`, heading and curvature per vertex, and per-vertex lane facts
+    (`in_junction`, `lane_width`) that the behaviour layer needs."""
+
+    def __init__(self, xy: np.ndarray, *, in_junction: np.ndarray | None = None,
+                 lane_width: np.ndarray | None = None, lanes: tuple = ()) -> None:
+        xy = np.asarray(xy, dtype=float)
+        if xy.ndim != 2 or xy.shape[1] != 2 or len(xy) < 2:
+            raise ValueError("a reference line needs at least two (x, y) points")
+        # Drop repeated vertices (lane joins) so headings are defined everywhere.
+        keep = np.ones(len(xy), dtype=bool)
+        keep[1:] = np.hypot(*np.diff(xy, axis=0).T) > 1e-6
+        self.xy = xy[keep]
+        n = len(self.xy)
+        self.in_junction = (np.zeros(n, dtype=bool) if in_junction is None
+                            else np.asarray(in_junction, dtype=bool)[keep])
+        self.lane_width = (np.full(n, 3.5) if lane_width is None else np.asarray(lane_width, dtype=float)[keep])
+        self.lanes = lanes
+        seg = np.diff(self.xy, axis=0)
+        seg_len = np.hypot(seg[:, 0], seg[:, 1])
+        self.s = np.concatenate([[0.0], np.cumsum(seg_len)])
+        self._seg = seg
+        self._seg_len = seg_len
+        seg_h = np.arctan2(seg[:, 1], seg[:, 0])
+        self._seg_heading = seg_h
+        # Curvature from heading change over arc length, smoothed over ~3 m to damp sampling noise at lane joins.
+        dh = np.array([wrap_angle(b - a) for a, b in zip(seg_h[:-1], seg_h[1:])])
+        ds = 0.5 * (seg_len[:-1] + seg_len[1:])
+        k = np.concatenate([[0.0], dh / np.maximum(ds, 1e-6), [0.0]])
+        if n > 2:
+            k[0], k[-1] = k[1], k[-2]
+        step = max(float(np.median(seg_len)), 1e-3)
+        win = max(1, int(round(3.0 / step)))
+        if win > 1 and n > win:
+            k = np.convolve(k, np.ones(win) / win, mode="same")
+        self.curvature = k
+
+    @property
+    def length(self) -> float:
+        return float(self.s[-1])
+
+    def _index(self, s: float) -> int:
+        return int(np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, len(self._seg) - 1))
+
+    def position(self, s: float, offset: float = 0.0) -> tuple[float, float, float]:
+        """(x, y, heading) at arc length `s` (extrapolated straight beyond both ends), `offset` to the left."""
+        i = self._index(s)
+        h = float(self._seg_heading[i])
+        u = s - self.s[i]
+        x = self.xy[i, 0] + u * math.cos(h) - offset * math.sin(h)
+        y = self.xy[i, 1] + u * math.sin(h) + offset * math.cos(h)
+        return float(x), float(y), h
+
+    def heading(self, s: float) -> float:
+        return float(self._seg_heading[self._index(s)])
+
+    def curvature_at(self, s: float) -> float:
+        return float(np.interp(s, self.s, self.curvature))
+
+    def max_abs_curvature(self, s0: float, s1: float) -> np.ndarray:
+        """(s, |curvature|) samples of the vertices between s0 and s1, for curve speed limiting."""
+        mask = (self.s >= s0) & (self.s <= s1)
+        return np.stack([self.s[mask], np.abs(self.curvature[mask])], axis=1)
+
+    def width_at(self, s: float) -> float:
+        return float(np.interp(s, self.s, self.lane_width))
+
+    def junction_at(self, s: float) -> bool:
+        return bool(self.in_junction[min(self._index(s) + 1, len(self.s) - 1)])
+
+    def next_junction_entry(self, s: float, horizon: float) -> float | None:
+        """Arc length where the line next enters a junction within `horizon` metres after `s` (None if none or
+        already inside one)."""
+        if self.junction_at(s):
+            return None
+        mask = (self.s > s) & (self.s <= s + horizon) & self.in_junction
+        idx = np.flatnonzero(mask)
+        if len(idx) == 0:
+            return None
+        return float(self.s[max(idx[0] - 1, 0)])
+
+    def junction_exit(self, s: float) -> float:
+        """Arc length where the junction stretch containing or following `s` ends."""
+        idx = np.flatnonzero((self.s >= s) & ~self.in_junction)
+        inside = np.flatnonzero((self.s >= s) & self.in_junction)
+        if len(inside) == 0:
+            return s
+        after = idx[idx > inside[0]]
+        return float(self.s[after[0]]) if len(after) else self.length
+
+    def project(self, x: float, y: float, *, near_s: float | None = None, window: float = 60.0) -> PathPoint:
+        """Nearest point of the line to (x, y): arc length, signed left offset, heading. With `near_s`, only the
+        stretch within `window` metres of it is searched, so a route that passes the same place twice (loops,
+        U-turns) projects onto the right pass."""
+        lo, hi = 0, len(self._seg)
+        if near_s is not None:
+            lo = max(0, self._index(near_s - window))
+            hi = min(len(self._seg), self._index(near_s + window) + 1)
+        p0 = self.xy[lo:hi]
+        d = self._seg[lo:hi]
+        L2 = np.maximum(self._seg_len[lo:hi] ** 2, 1e-12)
+        u = np.clip(((x - p0[:, 0]) * d[:, 0] + (y - p0[:, 1]) * d[:, 1]) / L2, 0.0, 1.0)
+        px = p0[:, 0] + u * d[:, 0]
+        py = p0[:, 1] + u * d[:, 1]
+        dist2 = (x - px) ** 2 + (y - py) ** 2
+        j = int(np.argmin(dist2))
+        i = lo + j
+        h = float(self._seg_heading[i])
+        s = float(self.s[i] + u[j] * self._seg_len[i])
+        # Beyond the ends, extend straight so objects ahead of the goal still get a sensible s.
+        if i == len(self._seg) - 1 and u[j] >= 1.0 or i == 0 and u[j] <= 0.0:
+            ref_x, ref_y = self.xy[i] if u[j] <= 0.0 else self.xy[i + 1]
+            along = (x - ref_x) * math.cos(h) + (y - ref_y) * math.sin(h)
+            s = float(self.s[i] if u[j] <= 0.0 else self.s[i + 1]) + along
+        cross = -(x - px[j]) * math.sin(h) + (y - py[j]) * math.cos(h)
+        return PathPoint(s=s, offset=float(cross), heading=h)
+
+    def project_many(self, xs: np.ndarray, ys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Vectorised (s, offset) of many points (used for predicted object positions)."""
+        xs = np.asarray(xs, dtype=float)[:, None]
+        ys = np.asarray(ys, dtype=float)[:, None]
+        p0 = self.xy[:-1][None, :, :]
+        d = self._seg[None, :, :]
+        L2 = np.maximum(self._seg_len ** 2, 1e-12)[None, :]
+        u = np.clip(((xs - p0[..., 0]) * d[..., 0] + (ys - p0[..., 1]) * d[..., 1]) / L2, 0.0, 1.0)
+        px = p0[..., 0] + u * d[..., 0]
+        py = p0[..., 1] + u * d[..., 1]
+        dist2 = (xs - px) ** 2 + (ys - py) ** 2
+        j = np.argmin(dist2, axis=1)
+        rows = np.arange(len(j))
+        h = self._seg_heading[j]
+        s = self.s[j] + u[rows, j] * self._seg_len[j]
+        off = -(xs[:, 0] - px[rows, j]) * np.sin(h) + (ys[:, 0] - py[rows, j]) * np.cos(h)
+        return s, off
