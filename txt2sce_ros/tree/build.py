@@ -1,0 +1,238 @@
+"""Tree building (paper §III-D.1): blocks inserted in a fixed order, each child extends its parent by one block
+version, layer by layer, with diversity-aware pruning per layer and every node streamed to disk as it is made.
+
+Without pruning the node count is the paper's Sum = M(b1) + M(b1)M(b2) + … + ∏M(bi) (the seed itself, written as
+`nodes/root.xosc`, is not counted). A node at depth d holds versions of blocks 1..d; the blocks not yet inserted
+keep the seed's own content, so every node is a complete, runnable scenario.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import os
+import time
+import zlib
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..config import load_config
+from ..errors import InputError, Txt2SceError
+from ..xosc.validate import validate_xosc
+from .assembly import assemble
+from .blocks import Disassembly, Variant
+from .context import build_context
+from .disassembly import disassemble
+from .export import write_dot, write_graphml
+from .mutate import block_variants, original_features
+from .prune import prune
+from .xml import parse_bytes
+
+MANIFEST_SCHEMA = "txt2sce.tree/1"
+
+
+def tree_config(path: str | Path | None = None, *, mutations: int | None = None, prune_share: float | None = None,
+                validate: bool | None = None) -> dict[str, Any]:
+    """`config/mutation.yaml` (or `path`) with CLI overrides applied; a private copy the caller may change."""
+    cfg = copy.deepcopy(load_config("mutation", path))
+    if mutations is not None:
+        cfg["tree"]["mutations_per_block"] = int(mutations)
+    if prune_share is not None:
+        cfg["tree"]["prune_share"] = float(prune_share)
+    if validate is not None:
+        cfg["tree"]["validate"] = bool(validate)
+    if not 0.0 < float(cfg["tree"]["prune_share"]) <= 1.0:
+        raise InputError("prune share must be in (0, 1]", element="tree.prune_share")
+    return cfg
+
+
+def expected_nodes(counts: Sequence[int]) -> int:
+    """Sum = M(b1) + M(b1)M(b2) + … + ∏ M(bi)."""
+    total, prod = 0, 1
+    for m in counts:
+        prod *= m
+        total += prod
+    return total
+
+
+def seed_key(name: str) -> int:
+    """Stable per-seed RNG key from the seed's file name (not its path: moving a seed keeps its tree)."""
+    return zlib.crc32(name.encode("utf-8"))
+
+
+@dataclass(frozen=True)
+class TreeResult:
+    """What one tree build did. `nodes` excludes the root; `expected` is the unpruned Sum formula."""
+
+    seed: str
+    out_dir: Path
+    block_counts: tuple[int, ...]
+    expected: int
+    nodes: int
+    pruned: int
+    invalid: int
+    truncated: bool
+    seconds: float
+    errors: tuple[str, ...] = field(default=())
+
+
+@dataclass
+class _Node:
+    id: str
+    parent: str | None
+    path: tuple[int, ...]
+
+
+def _node_id(path: tuple[int, ...]) -> str:
+    return "n" + "_".join(str(j) for j in path) if path else "root"
+
+
+def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None,
+               ) -> TreeResult:
+    """Build the scenario tree of one seed under `out_dir` (`nodes/*.xosc`, `manifest.json`, `tree.graphml`,
+    `tree.dot`). Deterministic: same seed file, config and `seed` give byte-identical output."""
+    t0 = time.perf_counter()
+    cfg = cfg or tree_config()
+    seed_path = Path(seed_path)
+    out = Path(out_dir)
+    nodes_dir = out / "nodes"
+    nodes_dir.mkdir(parents=True, exist_ok=True)
+    try:
+        data = seed_path.read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read seed: {exc.strerror}", source=str(seed_path)) from exc
+    root = parse_bytes(data, str(seed_path))
+    ctx = build_context(root, source=str(seed_path), seed_path=seed_path)
+    logic = root.find("RoadNetwork/LogicFile")
+    if logic is not None and ctx.map_path is not None:
+        # Generated files live elsewhere: point them at the same map, relative to where they are written.
+        logic.set("filepath", os.path.relpath(ctx.map_path, nodes_dir.resolve()))
+    from lxml import etree
+
+    rebased = etree.tostring(root, encoding="unicode")
+    order = tuple(cfg["tree"]["order"])
+    dis = disassemble(rebased, source=str(seed_path), order=order,
+                      new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]))
+    key = seed_key(seed_path.name)
+    variants: list[list[Variant]] = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
+    used = [i for i, v in enumerate(variants) if v]  # a block with no possible version is left as in the seed
+    counts = tuple(len(variants[i]) for i in used)
+
+    originals = dis.originals()
+    validate = bool(cfg["tree"]["validate"])
+    share = float(cfg["tree"]["prune_share"])
+    cap = int(cfg["tree"]["max_nodes_per_tree"])
+    prune_rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
+
+    manifest_nodes: list[dict[str, Any]] = []
+    errors: list[str] = []
+    root_text = assemble(dis.template, originals)
+    (nodes_dir / "root.xosc").write_text(root_text, encoding="utf-8")
+    manifest_nodes.append({"id": "root", "parent": None, "depth": 0, "file": "nodes/root.xosc", "path": [],
+                           "block": None, "block_kind": None, "block_key": None, "variant": None,
+                           "operator": "seed", "changes": [], "rng_seed": int(seed)})
+    frontier = [_Node("root", None, ())]
+    written = pruned = invalid = 0
+    truncated = False
+    for depth, bi in enumerate(used, start=1):
+        block = dis.blocks[bi]
+        vs = variants[bi]
+        cands = [(p, j) for p in frontier for j in range(len(vs))]
+        vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(p.path)) + (vs[j].features,)
+                   for p, j in cands]
+        keep = prune(vectors, share, prune_rng)
+        pruned += len(cands) - len(keep)
+        if written + len(keep) > cap:
+            keep = keep[:max(0, cap - written)]
+            truncated = True
+        frontier = []
+        for ci in keep:
+            parent, j = cands[ci]
+            path = parent.path + (j,)
+            node_id = _node_id(path)
+            frags = list(originals)
+            for k, vi in enumerate(path):
+                b = dis.blocks[used[k]]
+                for slot, frag in zip(b.slots, variants[used[k]][vi].fragments):
+                    frags[slot] = frag
+            text = assemble(dis.template, frags)
+            if validate:
+                problems = validate_xosc(text, source=node_id)
+                if problems:
+                    invalid += 1
+                    errors.append(f"{node_id}: {problems[0]}")
+                    continue
+            rel = f"nodes/{node_id}.xosc"
+            with open(out / rel, "wb") as fh:
+                fh.write(text.encode("utf-8"))
+            written += 1
+            v = vs[j]
+            manifest_nodes.append({
+                "id": node_id, "parent": parent.id, "depth": depth, "file": rel, "path": list(path),
+                "block": block.index, "block_kind": block.kind.value, "block_key": block.key, "variant": j,
+                "operator": v.operator, "changes": [[c.path, c.old, c.new] for c in v.changes],
+                "rng_seed": v.rng_seed})
+            frontier.append(_Node(node_id, parent.id, path))
+        if truncated or not frontier:
+            break
+
+    manifest = {
+        "schema": MANIFEST_SCHEMA, "tree": seed_path.stem, "id": seed_path.stem, "seed_file": seed_path.name,
+        "map": ctx.map_path.name if ctx.map_path else None, "rng_seed": int(seed),
+        "settings": {"order": list(order), "mutations_per_block": cfg["tree"]["mutations_per_block"],
+                     "enumerate": list(cfg["tree"]["enumerate"]), "prune_share": share, "bins": cfg["bins"]},
+        "blocks": [_block_entry(dis, i, variants[i], ctx, cfg) for i in range(len(dis.blocks))],
+        "insertion": [dis.blocks[i].index for i in used],
+        "block_counts": list(counts), "expected_nodes": expected_nodes(counts), "nodes_written": written,
+        "pruned": pruned, "invalid": invalid, "truncated": truncated, "errors": errors[:50],
+        "nodes": manifest_nodes,
+    }
+    (out / "manifest.json").write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+    write_graphml(manifest, out / "tree.graphml")
+    write_dot(manifest, out / "tree.dot")
+    return TreeResult(seed=str(seed_path), out_dir=out, block_counts=counts, expected=expected_nodes(counts),
+                      nodes=written, pruned=pruned, invalid=invalid, truncated=truncated,
+                      seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))
+
+
+def _block_entry(dis: Disassembly, i: int, vs: list[Variant], ctx, cfg) -> dict[str, Any]:
+    b = dis.blocks[i]
+    return {"index": b.index, "kind": b.kind.value, "key": b.key,
+            "original_features": list(original_features(b, ctx, cfg)),
+            "variants": [{"index": v.index, "operator": v.operator, "features": list(v.features),
+                          "rng_seed": v.rng_seed} for v in vs]}
+
+
+def _build_one(args: tuple[str, str, int, dict[str, Any]]) -> TreeResult:
+    seed_path, out_dir, seed, cfg = args
+    try:
+        return build_tree(seed_path, out_dir, seed=seed, cfg=cfg)
+    except Txt2SceError as exc:  # a batch records the failure and carries on with the other seeds
+        return TreeResult(seed=seed_path, out_dir=Path(out_dir), block_counts=(), expected=0, nodes=0, pruned=0,
+                          invalid=0, truncated=False, seconds=0.0, errors=(str(exc),))
+
+
+def tree_dir_name(seed_path: Path) -> str:
+    return seed_path.stem
+
+
+def build_trees(seed_paths: Sequence[str | Path], out_dir: str | Path, *, seed: int = 0,
+                cfg: dict[str, Any] | None = None, jobs: int = 1) -> list[TreeResult]:
+    """One tree per seed under `out_dir/<seed stem>/`, `jobs` processes; results in the order of `seed_paths`."""
+    cfg = cfg or tree_config()
+    paths = [Path(p) for p in seed_paths]
+    stems = [tree_dir_name(p) for p in paths]
+    if len(set(stems)) != len(stems):
+        dup = sorted({s for s in stems if stems.count(s) > 1})
+        raise InputError(f"two seeds share the file name {dup[0]}: their trees would collide", source=str(out_dir))
+    work = [(str(p), str(Path(out_dir) / s), seed, cfg) for p, s in zip(paths, stems)]
+    if jobs <= 1 or len(work) <= 1:
+        return [_build_one(w) for w in work]
+    import multiprocessing as mp
+
+    with mp.get_context("fork").Pool(jobs) as pool:
+        return pool.map(_build_one, work, chunksize=1)

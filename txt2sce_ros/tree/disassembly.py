@@ -1,0 +1,157 @@
+"""δ: split a seed into a template T with insertion points and the set of mutable blocks B (paper §III-C).
+
+Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_format.md` fixes them:
+
+| block | elements |
+|---|---|
+| weather | `Storyboard/Init/Actions/GlobalAction/EnvironmentAction/Environment` |
+| ego | `Init/Actions/Private[@entityRef='ego']` (its ScenarioObject stays in T: the AV is not mutated) |
+| npc | `Entities/ScenarioObject[@name=X]` + `Init/Actions/Private[@entityRef=X]` for each party X |
+| signal | each `RoadNetwork/TrafficSignals/TrafficSignalController` |
+| event | each `Story/Act/ManeuverGroup/Maneuver/Event` |
+| obstacle | `ScenarioObject[@name='obs…']` + its Private |
+| new_obstacle | an empty ScenarioObject slot after the last entity and an empty Private slot after the last Private |
+
+Each block element is replaced in the tree by a comment marker (keeping the element's tail whitespace), the tree is
+serialised once, and the text is cut at the markers. Assembly is then a string join (fast: no tree per node).
+"""
+
+from __future__ import annotations
+
+import re
+
+from lxml import etree
+
+from ..errors import InputError
+from .blocks import Block, BlockKind, Disassembly, Template
+from .xml import parse_bytes, to_text
+
+_MARK = "@txt2sce-slot:"
+_MARK_RE = re.compile(r"<!--@txt2sce-slot:(\d+)-->")
+DEFAULT_ORDER = ("weather", "ego", "npc", "signal", "event", "obstacle", "new_obstacle")
+
+
+def entity_kind(name: str) -> BlockKind:
+    """Which block kind an entity belongs to, by its name (seed_format.md: ego, npc<k>/sketch ids, obs<k>)."""
+    if name == "ego":
+        return BlockKind.EGO
+    if name.startswith("obs"):
+        return BlockKind.OBSTACLE
+    return BlockKind.NPC
+
+
+class _Cutter:
+    """Replaces elements by numbered markers and remembers what each slot held."""
+
+    def __init__(self) -> None:
+        self.fragments: list[str] = []
+
+    def cut(self, el: etree._Element) -> int:
+        slot = len(self.fragments)
+        self.fragments.append(to_text(el))
+        marker = etree.Comment(f"{_MARK}{slot}")
+        marker.tail = el.tail
+        el.getparent().replace(el, marker)
+        return slot
+
+    def empty_after(self, parent: etree._Element, after: etree._Element | None) -> int:
+        """An empty insertion point after `after` (or first in `parent`): where OIM puts a new obstacle."""
+        slot = len(self.fragments)
+        self.fragments.append("")
+        marker = etree.Comment(f"{_MARK}{slot}")
+        if after is None:
+            marker.tail = parent.text
+            parent.insert(0, marker)
+        else:
+            marker.tail = after.tail
+            after.addnext(marker)
+        return slot
+
+
+def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, ...] = DEFAULT_ORDER,
+                new_obstacle_slots: int = 0) -> Disassembly:
+    """δ(seed) -> (T, B). `order` lists block kinds in insertion order; kinds left out stay in the template.
+    `new_obstacle_slots` empty slots are added for obstacle insertion (OIM)."""
+    root = parse_bytes(seed, source)
+    if root.tag != "OpenSCENARIO":
+        raise InputError(f"root element is <{root.tag}>, not <OpenSCENARIO>", source=source, element=root.tag)
+    entities = root.find("Entities")
+    actions = root.find("Storyboard/Init/Actions")
+    if entities is None or actions is None:
+        raise InputError("seed lacks Entities or Storyboard/Init/Actions", source=source,
+                         element="Entities" if entities is None else "Storyboard/Init/Actions")
+    wanted = {BlockKind(k) for k in order}
+    taken = {o.get("name") for o in entities.iter("ScenarioObject")}
+    # Find all block elements first (on the intact tree), then cut, so XPaths are not disturbed by the markers.
+    found: dict[BlockKind, list[tuple[str, list[etree._Element]]]] = {k: [] for k in BlockKind}
+    env = actions.find("GlobalAction/EnvironmentAction/Environment")
+    if env is not None:
+        found[BlockKind.WEATHER].append((env.get("name", "environment"), [env]))
+    privates = {p.get("entityRef"): p for p in actions.findall("Private")}
+    for obj in entities.findall("ScenarioObject"):
+        name = obj.get("name", "")
+        kind = entity_kind(name)
+        if kind is BlockKind.EGO:
+            if "ego" in privates:
+                found[kind].append(("ego", [privates["ego"]]))
+            continue
+        parts = [obj] + ([privates[name]] if name in privates else [])
+        found[kind].append((name, parts))
+    for ctrl in root.findall("RoadNetwork/TrafficSignals/TrafficSignalController"):
+        found[BlockKind.SIGNAL].append((ctrl.get("name", ""), [ctrl]))
+    for ev in root.iterfind("Storyboard/Story/Act/ManeuverGroup/Maneuver/Event"):
+        found[BlockKind.EVENT].append((ev.get("name", ""), [ev]))
+
+    cutter = _Cutter()
+    cut: dict[BlockKind, list[tuple[str, tuple[int, ...]]]] = {k: [] for k in BlockKind}
+    for kind in BlockKind:
+        if kind is BlockKind.NEW_OBSTACLE or kind not in wanted:
+            continue
+        for key, parts in found[kind]:
+            cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
+    if BlockKind.NEW_OBSTACLE in wanted:
+        for k in range(new_obstacle_slots):
+            last_obj = _last_element(entities)
+            last_priv = _last_element(actions)
+            s_obj = cutter.empty_after(entities, last_obj)
+            s_priv = cutter.empty_after(actions, last_priv)
+            cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken, k), (s_obj, s_priv)))
+
+    text = etree.tostring(root, encoding="unicode")
+    pieces: list[str] = []
+    slot_at: list[int] = []
+    pos = 0
+    for m in _MARK_RE.finditer(text):
+        pieces.append(text[pos:m.start()])
+        slot_at.append(int(m.group(1)))
+        pos = m.end()
+    pieces.append(text[pos:])
+    header = '<?xml version="1.0" encoding="UTF-8"?>\n'
+    pieces[0] = header + pieces[0]
+    template = Template(pieces=tuple(pieces), slot_at=tuple(slot_at))
+
+    blocks: list[Block] = []
+    for name in order:
+        for key, slots in cut[BlockKind(name)]:
+            blocks.append(Block(index=len(blocks), kind=BlockKind(name), key=key, slots=slots,
+                                fragments=tuple(cutter.fragments[s] for s in slots)))
+    return Disassembly(source=source, template=template, blocks=tuple(blocks))
+
+
+def _last_element(parent: etree._Element) -> etree._Element | None:
+    """Last child that is an element or one of our markers (new slots go after everything else)."""
+    kids = [c for c in parent if isinstance(c.tag, str) or (c.tag is etree.Comment and _MARK in (c.text or ""))]
+    return kids[-1] if kids else None
+
+
+def _free_obstacle_name(taken: set[str | None], k: int) -> str:
+    n = 1
+    found = 0
+    while True:
+        name = f"obs{n}"
+        if name not in taken:
+            if found == k:
+                taken.add(name)
+                return name
+            found += 1
+        n += 1

@@ -1,0 +1,157 @@
+"""Feature vectors for pruning and diversity (paper §IV-C): numeric attributes in uniform bins, enumerations by
+value, events by driving semantics. Each block version (original or mutated) gets one feature tuple, read from its
+XML, so originals and variants are encoded the same way; a node's vector is the tuple of its blocks' features.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Any
+
+from lxml import etree
+
+from .blocks import BlockKind
+from .context import SeedContext, lane_pos
+from .environment import signal_state_name, weather_type
+from .physical import entity_element
+
+_EVENT_RE = re.compile(r"^(?P<entity>.+?)_e(?P<k>\d+)_(?P<action>.+)$")
+
+
+def split_event_name(name: str) -> tuple[str, str]:
+    """(entity, action) from `<entity>_e<k>_<action>`; ('', name) when the name does not follow the format."""
+    m = _EVENT_RE.match(name)
+    return (m.group("entity"), m.group("action")) if m else ("", name)
+
+
+def bin_of(value: float, lo: float, hi: float, n: int) -> int:
+    """Uniform bin index of `value` in [lo, hi] split into n bins (values outside go to the end bins)."""
+    if not math.isfinite(value) or hi <= lo:
+        return 0
+    return int(min(n - 1, max(0, math.floor((value - lo) / (hi - lo) * n))))
+
+
+def _f(el: etree._Element | None, attr: str, default: float = 0.0) -> float:
+    if el is None:
+        return default
+    try:
+        return float(el.get(attr, default))
+    except ValueError:
+        return default
+
+
+def weather_features(env: etree._Element, cfg: dict[str, Any], n: int) -> tuple:
+    kind = weather_type(env)
+    spec = cfg["environment"]["weather"][kind]
+    w = env.find("Weather")
+    sun, fog, prec = (w.find("Sun"), w.find("Fog"), w.find("Precipitation")) if w is not None else (None,) * 3
+    return ("weather", kind,
+            bin_of(_f(fog, "visualRange"), *spec["visibility"], n),
+            bin_of(_f(sun, "azimuth"), *cfg["environment"]["azimuth"], n),
+            bin_of(_f(sun, "elevation"), *cfg["environment"]["elevation"], n),
+            bin_of(_f(prec, "intensity"), *spec["precipitation"], n),
+            bin_of(_f(env.find("RoadCondition"), "frictionScaleFactor", 1.0), *spec["friction"], n))
+
+
+def _shift_bin(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any], n: int) -> int:
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition") if private is not None else None
+    start = ctx.starts.get(entity)
+    if tele is None or start is None:
+        return n // 2
+    m = cfg["trajectory"]["init_location"]["max_shift"]
+    return bin_of(lane_pos(tele).s - start.s, -m, m, n)
+
+
+def entity_category(obj: etree._Element) -> str:
+    ent = entity_element(obj)
+    if ent is None:
+        return "unknown"
+    prop = ent.find("Properties/Property[@name='txt2sce:category']")
+    if prop is not None and prop.get("value"):
+        return prop.get("value", "")
+    return ent.get("vehicleCategory") or ent.get("pedestrianCategory") or ent.get("miscObjectCategory") or ent.tag
+
+
+def npc_features(obj: etree._Element, private: etree._Element | None, ctx: SeedContext, cfg: dict[str, Any],
+                 n: int) -> tuple:
+    cat = entity_category(obj)
+    cats = cfg["physical"]["categories"]
+    spec = cats.get(cat, cats["car"])
+    ent = entity_element(obj)
+    dims = ent.find("BoundingBox/Dimensions") if ent is not None else None
+    perf = ent.find("Performance") if ent is not None else None
+    lo_s, hi_s = cfg["dynamics"]["vpm"]["clip_share"]
+    return ("npc", cat,
+            *(bin_of(_f(dims, a), lo, hi, n) for a, lo, hi in zip(("width", "length", "height"), spec["lo"],
+                                                                  spec["hi"])),
+            bin_of(_f(perf, "maxSpeed", spec["perf"][0]), lo_s * spec["perf"][0], hi_s * spec["perf"][0], n),
+            _shift_bin(private, obj.get("name", ""), ctx, cfg, n))
+
+
+def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, Any], n: int) -> tuple:
+    """Driving semantics of one event: its action, how its target speed compares with the seed's (accelerating,
+    decelerating, keeping), the speed ratio's bin, the transition shape and value bin, the lateral offset bin."""
+    _, action = split_event_name(ev.get("name", ""))
+    new_t = next(ev.iter("AbsoluteTargetSpeed"), None)
+    old_t = next(original.iter("AbsoluteTargetSpeed"), None)
+    ratio = 1.0
+    if new_t is not None and old_t is not None and _f(old_t, "value") > 0:
+        ratio = _f(new_t, "value") / _f(old_t, "value")
+    style = "acc" if ratio > 1.001 else ("dec" if ratio < 0.999 else "keep")
+    dyn = next((d for tag in ("SpeedActionDynamics", "LaneChangeActionDynamics") for d in ev.iter(tag)), None)
+    shape = dyn.get("dynamicsShape", "") if dyn is not None else ""
+    dim = dyn.get("dynamicsDimension", "time") if dyn is not None else "time"
+    vlo, vhi = cfg["dynamics"]["dtm"]["value"].get(dim, cfg["dynamics"]["dtm"]["value"]["time"])
+    lc = next(ev.iter("LaneChangeAction"), None)
+    half = cfg["trajectory"]["wpm"]["default_lane_width"] / 2
+    return ("event", action, style, bin_of(ratio, 0.5, 1.5, n), shape,
+            bin_of(_f(dyn, "value"), vlo, vhi, n) if dyn is not None else -1,
+            bin_of(_f(lc, "targetLaneOffset"), -half, half, n) if lc is not None else -1)
+
+
+def signal_features(ctrl: etree._Element) -> tuple:
+    phase = ctrl.find("Phase")
+    states = [signal_state_name(s.get("state", "")) for s in phase.iterfind("TrafficSignalState")] if phase is not None else []
+    return ("signal", *states)
+
+
+def obstacle_features(obj: etree._Element | None, private: etree._Element | None, ctx: SeedContext,
+                      cfg: dict[str, Any], n: int) -> tuple:
+    if obj is None:
+        return ("obstacle", "none")
+    spec = cfg["environment"]["obstacle"]
+    ent = entity_element(obj)
+    dims = ent.find("BoundingBox/Dimensions") if ent is not None else None
+    where = "off_path"
+    dist_bin = -1
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition") if private is not None else None
+    ego = ctx.starts.get("ego")
+    if tele is not None and ego is not None:
+        pos = lane_pos(tele)
+        if pos.road == ego.road and ctx.map is not None and ctx.map.has_road(ego.road):
+            ahead = ctx.map.direction(ego.road, ego.lane) * (pos.s - ego.s)
+            where = "ego_lane" if pos.lane == ego.lane else "other_lane"
+            dist_bin = bin_of(ahead, *spec["ahead"], n)
+        else:
+            where = "route"
+    return ("obstacle", entity_category(obj), where, dist_bin,
+            *(bin_of(_f(dims, a), lo, hi, n) for a, lo, hi in zip(("width", "length", "height"), spec["dims_lo"],
+                                                                  spec["dims_hi"])))
+
+
+def block_features(kind: BlockKind, elements: list[etree._Element | None], originals: list[etree._Element | None],
+                   ctx: SeedContext, cfg: dict[str, Any]) -> tuple:
+    """The feature tuple of one version of a block, from its parsed fragments (None for an empty slot)."""
+    n = int(cfg["bins"])
+    if kind is BlockKind.WEATHER:
+        return weather_features(elements[0], cfg, n)
+    if kind is BlockKind.EGO:
+        return ("ego", _shift_bin(elements[0], "ego", ctx, cfg, n))
+    if kind is BlockKind.NPC:
+        return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
+    if kind is BlockKind.SIGNAL:
+        return signal_features(elements[0])
+    if kind is BlockKind.EVENT:
+        return event_features(elements[0], originals[0], cfg, n)
+    return obstacle_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)

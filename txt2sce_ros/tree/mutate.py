@@ -1,0 +1,146 @@
+"""Block mutation: the M(b) versions of every block, each made by the operators of its kind (Table III).
+
+| block | operators | versions (paper defaults) |
+|---|---|---|
+| weather | WM | enumerate every weather type, parameters drawn per type |
+| ego | WPM (initial location, context-aware) | `mutations_per_block` |
+| npc | NCM (+ DM, VPM follow the category) + WPM initial location | enumerate every category |
+| signal | TLS | enumerate green / yellow / red |
+| event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
+| obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
+| new_obstacle | OIM (inserted on the AV's path, random dimensions) | `mutations_per_block` |
+
+Each block's versions draw from their own Generator seeded by (RNG seed, seed-file key, block index), so the
+versions of a block do not depend on how many other blocks the seed has or on the order they are mutated in.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from lxml import etree
+
+from ..errors import InputError
+from .blocks import Block, BlockKind, Variant
+from .context import SeedContext
+from .dynamics import dtm, tsm
+from .environment import obstacle_fragments, oim_position, tls, wm
+from .features import block_features, split_event_name
+from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
+from .trajectory import shift_init_location, wpm_lane_change
+from .values import Recorder, uniform
+from .xml import parse_fragment, to_text
+
+
+def _parse(fragments: tuple[str, ...]) -> list[etree._Element | None]:
+    return [parse_fragment(f) if f else None for f in fragments]
+
+
+def _choices(kind: str, values: list[str], cfg: dict[str, Any], rng: np.random.Generator) -> list[str]:
+    """All values when the kind is enumerated, else `mutations_per_block` draws without replacement."""
+    if kind in cfg["tree"]["enumerate"]:
+        return list(values)
+    m = min(int(cfg["tree"]["mutations_per_block"]), len(values))
+    idx = sorted(rng.choice(len(values), size=m, replace=False).tolist())
+    return [values[i] for i in idx]
+
+
+def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed: int, seed_key: int) -> list[Variant]:
+    """The mutated versions of one block, in a fixed order."""
+    ss = np.random.SeedSequence([int(seed), int(seed_key), int(block.index)])
+    rng = np.random.default_rng(ss)
+    rng_seed = int(ss.generate_state(1, dtype=np.uint32)[0])
+    originals = _parse(block.fragments)
+    m = int(cfg["tree"]["mutations_per_block"])
+    out: list[Variant] = []
+
+    def emit(elements: list[etree._Element | None], operator: str, rec: Recorder) -> None:
+        feats = block_features(block.kind, elements, originals, ctx, cfg)
+        frags = tuple(to_text(e) if e is not None else "" for e in elements)
+        out.append(Variant(block=block.index, index=len(out), operator=operator, fragments=frags,
+                           changes=tuple(rec.changes), features=feats, rng_seed=rng_seed))
+
+    try:
+        if block.kind is BlockKind.WEATHER:
+            for wtype in _choices("weather", list(cfg["environment"]["weather"]), cfg, rng):
+                els, rec = _parse(block.fragments), Recorder()
+                wm(els[0], wtype, rng, cfg["environment"], rec)
+                emit(els, "WM", rec)
+        elif block.kind is BlockKind.EGO:
+            for _ in range(m):
+                els, rec = _parse(block.fragments), Recorder()
+                shift_init_location(els[0], "ego", rng, cfg["trajectory"]["init_location"], ctx, rec)
+                emit(els, "WPM-init", rec)
+        elif block.kind is BlockKind.NPC:
+            for cat in _choices("npc", list(cfg["physical"]["categories"]), cfg, rng):
+                els, rec = _parse(block.fragments), Recorder()
+                old = ncm(els[0], cat, rng, cfg, rec)
+                priv = els[1] if len(els) > 1 else None
+                if old != cat:
+                    init_speed_follow(priv, cat, cfg, rec)
+                ops = "NCM+DM" + ("+VPM" if cfg["physical"]["categories"][cat]["element"] == "Vehicle" else "")
+                if priv is not None and shift_init_location(priv, block.key, rng,
+                                                            cfg["trajectory"]["init_location"], ctx, rec):
+                    ops += "+WPM-init"
+                emit(els, ops, rec)
+        elif block.kind is BlockKind.SIGNAL:
+            for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):
+                els, rec = _parse(block.fragments), Recorder()
+                tls(els[0], state, rec)
+                emit(els, "TLS", rec)
+        elif block.kind is BlockKind.EVENT:
+            entity, action = split_event_name(block.key)
+            cat = ctx.categories.get(entity, "car")
+            width = cfg["physical"]["categories"].get(cat, cfg["physical"]["categories"]["car"])["dims"][0]
+            for _ in range(m):
+                els, rec = _parse(block.fragments), Recorder()
+                ops = []
+                if tsm(els[0], action, rng, cfg["dynamics"]["tsm"], rec):
+                    ops.append("TSM")
+                if dtm(els[0], rng, cfg["dynamics"]["dtm"], rec):
+                    ops.append("DTM")
+                if wpm_lane_change(els[0], action, entity, width, rng, cfg["trajectory"]["wpm"], ctx, rec):
+                    ops.append("WPM")
+                emit(els, "+".join(ops) or "none", rec)
+        elif block.kind is BlockKind.OBSTACLE:
+            spec = cfg["environment"]["obstacle"]
+            for _ in range(m):
+                els, rec = _parse(block.fragments), Recorder()
+                ent = entity_element(els[0])
+                dims = ent.find("BoundingBox/Dimensions") if ent is not None else None
+                if dims is not None:
+                    mean = tuple(float(dims.get(a, "1")) for a in DIM_ATTRS)
+                    lo = tuple(min(a, b) for a, b in zip(spec["dims_lo"], mean))
+                    hi = tuple(max(a, b) for a, b in zip(spec["dims_hi"], mean))
+                    dm(dims, mean, lo, hi, rng, cfg["physical"]["dm"], rec)
+                ops = "DM"
+                tele = els[1].find("PrivateAction/TeleportAction/Position/LanePosition") if len(els) > 1 else None
+                width = float(dims.get("width", "1")) if dims is not None else 1.0
+                pos = oim_position(ctx, width, rng, spec) if tele is not None else None
+                if pos is not None:
+                    for attr, val in (("roadId", pos.road), ("laneId", str(pos.lane))):
+                        rec.set(tele, attr, val)
+                    rec.set(tele, "s", pos.s, digits=3)
+                    rec.set(tele, "offset", pos.offset, digits=3)
+                    ops += "+OIM"
+                emit(els, ops, rec)
+        elif block.kind is BlockKind.NEW_OBSTACLE:
+            spec = cfg["environment"]["obstacle"]
+            for _ in range(m):
+                rec = Recorder()
+                dims3 = tuple(uniform(rng, lo, hi) for lo, hi in zip(spec["dims_lo"], spec["dims_hi"]))
+                pos = oim_position(ctx, dims3[0], rng, spec)
+                if pos is None:
+                    break  # no map or no ego start: nothing to place the obstacle relative to
+                obj, priv = obstacle_fragments(block.key, pos, dims3, spec, rec)
+                emit([obj, priv], "OIM", rec)
+    except InputError as exc:
+        raise InputError(f"mutating block {block.key}: {exc.message}", source=ctx.source,
+                         element=exc.element or block.key) from exc
+    return out
+
+
+def original_features(block: Block, ctx: SeedContext, cfg: dict[str, Any]) -> tuple:
+    els = _parse(block.fragments)
+    return block_features(block.kind, els, els, ctx, cfg)

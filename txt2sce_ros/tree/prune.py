@@ -1,0 +1,39 @@
+"""Diversity-aware pruning (paper §III-D.1, §IV-C): cluster the nodes of one tree layer by identical feature
+vectors and keep a configurable share of every cluster, chosen by a seeded Generator. Pruned nodes are neither
+written nor expanded, so pruning also bounds the tree's growth."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Hashable, Sequence
+
+import numpy as np
+
+
+def clusters(vectors: Sequence[Hashable]) -> list[list[int]]:
+    """Indices grouped by identical vector, clusters in order of first appearance (deterministic)."""
+    groups: dict[Hashable, list[int]] = {}
+    for i, v in enumerate(vectors):
+        groups.setdefault(v, []).append(i)
+    return list(groups.values())
+
+
+def keep_count(size: int, share: float) -> int:
+    """How many of a cluster of `size` survive: ceil(share·size), at least one (a cluster is never emptied: it is
+    a distinct scenario category)."""
+    return max(1, min(size, math.ceil(share * size - 1e-9)))
+
+
+def prune(vectors: Sequence[Hashable], share: float, rng: np.random.Generator) -> list[int]:
+    """Sorted indices of the nodes kept. share >= 1 keeps everything without drawing from `rng`."""
+    if share >= 1.0:
+        return list(range(len(vectors)))
+    kept: list[int] = []
+    for group in clusters(vectors):
+        k = keep_count(len(group), share)
+        if k == len(group):
+            kept.extend(group)
+        else:
+            pick = rng.choice(len(group), size=k, replace=False)
+            kept.extend(group[int(i)] for i in pick)
+    return sorted(kept)

@@ -1,0 +1,95 @@
+"""Trajectory mutation family (Table III): WPM lateral offsets in lane changes and context-aware initial locations.
+
+Initial locations move along the entity's own lane (so its route to the conflict is unchanged), stay on a lane of
+the same type on the same road (per the road model), and stay upstream of every position the entity must still
+reach (its route waypoints and the ReachPosition triggers it fires), so the scenario still leads to the conflict.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from lxml import etree
+
+from .context import LanePos, SeedContext, lane_pos
+from .values import Recorder, gaussian, uniform
+
+_LANE_CHANGE_ACTIONS = ("lane_change_left", "lane_change_right")
+
+
+def wpm_lane_change(event: etree._Element, action: str, entity: str, entity_width: float,
+                    rng: np.random.Generator, cfg: dict[str, Any], ctx: SeedContext, rec: Recorder) -> bool:
+    """Lateral offset of the target in lane changes: LaneChangeAction/@targetLaneOffset and, in lane-change
+    events, the waypoints' LanePosition/@offset. Uniform in ±share·(lane width − entity width)/2, so the entity
+    stays inside its target lane. Returns False when the event holds no lane change."""
+    changes = list(event.iter("LaneChangeAction"))
+    waypoints = list(event.iterfind(".//Waypoint/Position/LanePosition")) if action in _LANE_CHANGE_ACTIONS else []
+    if not changes and not waypoints:
+        return False
+    width = _lane_width_at(ctx, ctx.starts.get(entity), cfg)
+    half = max(0.0, cfg["offset_share"] * (width - entity_width) / 2.0)
+    for lc in changes:
+        rec.set(lc, "targetLaneOffset", uniform(rng, -half, half), digits=3)
+    for lp in waypoints:
+        pos = lane_pos(lp)
+        w = _lane_width_at(ctx, pos, cfg)
+        h = max(0.0, cfg["offset_share"] * (w - entity_width) / 2.0)
+        rec.set(lp, "offset", uniform(rng, -h, h), digits=3)
+    return True
+
+
+def _lane_width_at(ctx: SeedContext, pos: LanePos | None, cfg: dict[str, Any]) -> float:
+    if pos is None or ctx.map is None or not ctx.map.has_road(pos.road):
+        return float(cfg["default_lane_width"])
+    try:
+        w = ctx.map.lane_width(pos.road, pos.lane, pos.s)
+    except (KeyError, IndexError):
+        return float(cfg["default_lane_width"])
+    return w if w > 0.5 else float(cfg["default_lane_width"])
+
+
+def feasible_s(ctx: SeedContext, entity: str, start: LanePos, new_s: float, margin: float) -> bool:
+    """Context check for a new start s on the same road and lane: inside the road, on a lane of the original type,
+    and still upstream (by `margin`) of every position on that lane the entity had ahead of it."""
+    m = ctx.map
+    if m is None or not m.has_road(start.road):
+        return False
+    length = m.road_length(start.road)
+    if not 0.5 <= new_s <= length - 0.5:
+        return False
+    if m.lane_type(start.road, start.lane, new_s) != m.lane_type(start.road, start.lane, start.s):
+        return False
+    sign = m.direction(start.road, start.lane)
+    for target in ctx.must_reach.get(entity, []):
+        if target.road != start.road:
+            continue
+        ahead_before = sign * (target.s - start.s)
+        if ahead_before >= 0 and sign * (target.s - new_s) < min(margin, ahead_before):
+            return False
+    return True
+
+
+def shift_init_location(private: etree._Element, entity: str, rng: np.random.Generator, cfg: dict[str, Any],
+                        ctx: SeedContext, rec: Recorder, *, tries: int = 20) -> float:
+    """Context-aware initial location: Gaussian shift of the start along its lane, retried until `feasible_s`
+    holds. The ego's route starts where the ego does, so its first waypoint moves with it. Returns the shift (m);
+    0 when no feasible shift was found or the start is not a LanePosition."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
+    if tele is None:
+        return 0.0
+    start = lane_pos(tele)
+    for _ in range(tries):
+        shift = gaussian(rng, 0.0, cfg["sigma"], -cfg["max_shift"], cfg["max_shift"])
+        if abs(shift) < 0.05:
+            continue
+        new_s = start.s + shift
+        if feasible_s(ctx, entity, start, new_s, cfg["margin"]):
+            text = rec.set(tele, "s", new_s, digits=3)
+            for wp in private.iterfind("PrivateAction/RoutingAction/AssignRouteAction/Route/Waypoint[1]/Position/"
+                                       "LanePosition"):
+                wpp = lane_pos(wp)
+                if (wpp.road, wpp.lane, wpp.s) == (start.road, start.lane, start.s):
+                    rec.set(wp, "s", text)
+            return float(text) - start.s
+    return 0.0
