@@ -41,6 +41,11 @@ class Oracle:
         self.t_last = 0.0
         self._finished: RunVerdict | None = None
 
+    def set_goal(self, goal: Goal) -> None:
+        """The goal arrived after the first frame (topics are not ordered across each other)."""
+        self.goal = goal
+        self.smart.goal = goal
+
     def observe(self, frame: Frame) -> list[Violation]:
         """Judge one frame; returns the violations that start at it (often none). Frames not later than the last
         one are ignored (duplicates delivered twice)."""

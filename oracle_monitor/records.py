@@ -107,7 +107,6 @@ class RunVerdict:
     suppressed: tuple[Finding, ...] = ()      # categories that fired but are excluded by Table VI's exclusivity
     notes: tuple[str, ...] = ()
 
-    @property
     def category_names(self) -> tuple[str, ...]:
         return tuple(f.category.value for f in self.categories)
 

@@ -27,7 +27,7 @@ def test_rear_end_contact_time_and_entity() -> None:
     gap = (30.022 + 1.4 - 2.25) - (0.0 + 1.4 + 2.25)      # rear bumper of lead - front bumper of ego
     assert c.t == pytest.approx(gap / 10.0, abs=1e-4)      # refined between frames, not rounded to 0.05 s
     assert c.entities == ("lead",) and c.category is Category.COLLISIONS
-    assert verdict.verdict is Verdict.FAIL and verdict.category_names == ("Collisions",)
+    assert verdict.verdict is Verdict.FAIL and verdict.category_names() == ("Collisions",)
     assert verdict.categories[0].entities == ("lead",)
 
 
@@ -35,7 +35,7 @@ def test_car_in_the_next_lane_is_not_hit() -> None:
     frames = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("beside", t, 30.0, y=3.5)])
     verdict, online = judge(Oracle(None, None, PARAMS), frames)
     assert not [v for v in online if v.rule is Rule.CONTACT]
-    assert "Collisions" not in verdict.category_names
+    assert "Collisions" not in verdict.category_names()
 
 
 def test_oriented_boxes_are_exact_where_axis_aligned_boxes_overlap() -> None:
@@ -67,7 +67,7 @@ def test_jerk_rule_fires_on_a_hard_stop_and_not_on_braking() -> None:
     jerks = [v for v in online if v.rule is Rule.JERK_COLLISION]
     assert jerks and jerks[0].t == pytest.approx(2.0) and jerks[0].observed > 300.0
     assert jerks[0].category is None, "with collision_rule=contact the jerk rule is reported beside, not counted"
-    assert "Collisions" not in verdict.category_names
+    assert "Collisions" not in verdict.category_names()
     assert any("1 jerk event" in n or "jerk event(s)" in n for n in verdict.notes)
 
     soft = straight_run(lambda t: max(0.0, 10.0 - 3.0 * max(0.0, t - 1.0)), 6.0)   # 3 m/s² braking
@@ -79,7 +79,7 @@ def test_collision_rule_jerk_makes_the_jerk_event_the_collision() -> None:
     params = PARAMS.with_overrides(safety={"collision_rule": "jerk"})
     hard = straight_run(lambda t: 10.0 if t < 2.0 else 0.0, 4.0, objects=lambda t: [car("lead", t, 80.0)])
     verdict, _ = judge(Oracle(None, None, params), hard)
-    assert verdict.category_names == ("Collisions",)
+    assert verdict.category_names() == ("Collisions",)
     assert verdict.categories[0].rule is Rule.JERK_COLLISION
 
 
@@ -90,7 +90,7 @@ def test_esmini_pedestrian_collision_reference_run() -> None:
     hit = next(v for v in online if v.rule is Rule.CONTACT)
     assert hit.entities == ("pedestrian_adult",)
     assert 5.0 < hit.t < 6.0
-    assert verdict.category_names == ("Collisions",)
+    assert verdict.category_names() == ("Collisions",)
 
 
 def test_esmini_slow_lead_vehicle_has_no_contact() -> None:

@@ -36,7 +36,7 @@ def test_standing_at_the_start_with_a_clear_path_is_startfail() -> None:
     verdict, online = judge(Oracle(None, None, PARAMS), frames)
     ev = [v for v in online if v.rule is Rule.NO_START]
     assert len(ev) == 1 and ev[0].t == pytest.approx(5.0) and ev[0].units == "s"
-    assert verdict.category_names == ("StartFail",)
+    assert verdict.category_names() == ("StartFail",)
 
 
 def test_waiting_behind_a_car_that_then_leaves_is_not_startfail() -> None:
@@ -58,7 +58,7 @@ def test_waiting_at_red_is_not_startfail_but_staying_after_green_is() -> None:
 def test_never_moving_behind_a_blocker_that_stays_is_not_startfail() -> None:
     frames = straight_run(lambda t: 0.0, 10.0, objects=lambda t: [car("lead", t, 9.0)])
     verdict, _ = judge(Oracle(None, Goal(200.0, 0.0, 0.0), PARAMS), frames, finished(10.0, "time_limit"))
-    assert verdict.category_names == ("PlanFail",)                 # the goal is not reached: a planning failure
+    assert verdict.category_names() == ("PlanFail",)                 # the goal is not reached: a planning failure
     assert verdict.categories[0].rule is Rule.GOAL_NOT_REACHED
     assert "time out" in verdict.categories[0].detail
 
@@ -120,7 +120,7 @@ def test_crossing_a_stop_line(state: SignalState, fires: bool) -> None:
     if fires:
         # front bumper (3.65 m ahead of the rear axle) reaches x = 50 at t = 4.635 s: the first frame past it.
         assert ev[0].t == pytest.approx(4.65) and ev[0].entities == ("sig1",)
-        assert verdict.category_names == ("Misinterp",)
+        assert verdict.category_names() == ("Misinterp",)
 
 
 def test_red_after_crossing_and_oncoming_signals_are_not_violations() -> None:
@@ -158,11 +158,11 @@ def test_hitting_a_visible_static_obstacle_is_misinterp() -> None:
     verdict, online = judge(Oracle(None, None, PARAMS), frames)
     ev = [v for v in online if v.rule is Rule.STATIC_OBSTACLE_HIT]
     assert len(ev) == 1 and ev[0].entities == ("box1",) and ev[0].observed > 3.0
-    assert verdict.category_names == ("Misinterp",)
+    assert verdict.category_names() == ("Misinterp",)
 
 
 def test_an_obstacle_dropped_in_front_of_the_ego_is_a_collision() -> None:
     frames = straight_run(lambda t: 10.0, 5.0, objects=lambda t: _obstacle(t, appear_at=3.6))
     verdict, online = judge(Oracle(None, None, PARAMS), frames)
     assert [v.rule for v in online if v.entities == ("box1",)] == [Rule.CONTACT]
-    assert verdict.category_names == ("Collisions",)
+    assert verdict.category_names() == ("Collisions",)

@@ -46,7 +46,7 @@ def test_jerk_band_fires_only_outside_0_9(jerk: float, fires: bool) -> None:
         # the window fills with the ramp's samples), with the ramp's sign.
         assert 0.9 < abs(e.observed) < 1.0 and math.copysign(1.0, e.observed) == math.copysign(1.0, jerk)
         assert e.t == pytest.approx(1.0 + 0.9 / abs(jerk), abs=0.06)
-        assert verdict.category_names == ("Smooth",)
+        assert verdict.category_names() == ("Smooth",)
 
 
 def test_signed_reading_flags_gentle_braking_the_magnitude_reading_accepts() -> None:

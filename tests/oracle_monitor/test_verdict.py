@@ -23,7 +23,7 @@ def test_red_light_then_crash_is_misinterp_only() -> None:
     frames = straight_run(lambda t: 10.0, 8.0, lights=red, objects=lambda t: [car("crossing", t, 65.0)])
     verdict, online = judge(Oracle(None, Goal(200.0, 0.0, 0.0), PARAMS), frames, finished(8.0, "collision"))
     assert [v.rule for v in online][:2] == [Rule.RED_LIGHT, Rule.CONTACT]
-    assert verdict.verdict is Verdict.FAIL and verdict.category_names == ("Misinterp",)
+    assert verdict.verdict is Verdict.FAIL and verdict.category_names() == ("Misinterp",)
     suppressed = {f.category for f in verdict.suppressed}
     assert suppressed == {Category.COLLISIONS, Category.PLAN_FAIL}
     assert next(f for f in verdict.suppressed if f.category is Category.COLLISIONS).entities == ("crossing",)
@@ -32,14 +32,14 @@ def test_red_light_then_crash_is_misinterp_only() -> None:
 def test_crash_first_then_red_is_collisions() -> None:
     frames = straight_run(lambda t: 10.0, 8.0, lights=red, objects=lambda t: [car("lead", t, 30.0)])
     verdict, _ = judge(Oracle(None, None, PARAMS), frames)
-    assert verdict.category_names == ("Collisions",)
+    assert verdict.category_names() == ("Collisions",)
 
 
 def test_planfail_and_smooth_overlap() -> None:
     # A jerky start (0 -> 2 m/s² at once) and a time out short of the goal.
     frames = straight_run(lambda t: 1.0 * t * t if t < 1.0 else 1.0 + 2.0 * (t - 1.0), 6.0)
     verdict, _ = judge(Oracle(None, Goal(500.0, 0.0, 0.0), PARAMS), frames, finished(6.0, "time_limit"))
-    assert verdict.category_names == ("PlanFail", "Smooth")
+    assert verdict.category_names() == ("PlanFail", "Smooth")
 
 
 def test_error_runs_carry_no_categories() -> None:

@@ -1,0 +1,210 @@
+"""Reading a rosbag2 recording (metadata.yaml + MCAP), whole or cut short.
+
+A finished bag is read with rosbags' `Reader` (index, summary, time order). When that is impossible — no
+`metadata.yaml` (the recorder was killed), a file without footer or with a damaged tail — the MCAP file is read
+record by record from its start, keeping every complete message up to the first damaged byte, including the
+complete messages of a chunk whose end is missing (uncompressed chunks; a compressed chunk needs all its bytes).
+What went wrong is collected in `BagReading.issues` so callers can print a clear error *and* judge what was read.
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterator, NamedTuple
+
+from txt2sce_ros.errors import InputError
+
+MAGIC = b"\x89MCAP0\r\n"
+
+
+class RawMessage(NamedTuple):
+    topic: str
+    msgtype: str
+    log_time_ns: int
+    data: bytes | memoryview
+
+
+@dataclass
+class BagReading:
+    """Iterate `messages()` once; afterwards `issues` says what could not be read and `complete` whether the
+    recording was whole."""
+
+    path: Path
+    issues: list[str] = field(default_factory=list)
+    count: int = 0
+    method: str = ""
+
+    @property
+    def complete(self) -> bool:
+        return not self.issues
+
+    def messages(self, topics: frozenset[str] | None = None) -> Iterator[RawMessage]:
+        mcaps = _mcap_files(self.path)
+        if (self.path / "metadata.yaml").is_file() if self.path.is_dir() else False:
+            try:
+                yield from self._rosbags(topics)
+                return
+            except _Fallback as exc:
+                self.issues.append(str(exc))
+        elif self.path.is_dir():
+            self.issues.append("no metadata.yaml: the recording was not closed (crash or kill); "
+                               "reading the MCAP file record by record")
+        self.method = "scan"
+        for f in mcaps:
+            for msg in scan_mcap(f, self.issues):
+                if topics is None or msg.topic in topics:
+                    self.count += 1
+                    yield msg
+
+    def _rosbags(self, topics: frozenset[str] | None) -> Iterator[RawMessage]:
+        from rosbags.rosbag2 import Reader
+
+        try:
+            reader = Reader(self.path)
+            reader.open()
+        except Exception as exc:          # rosbags raises several types for damaged files; all mean "fall back"
+            raise _Fallback(f"rosbags cannot open it ({type(exc).__name__}: {exc}); reading the MCAP file record "
+                            f"by record") from exc
+        self.method = "rosbags"
+        conns = [c for c in reader.connections if topics is None or c.topic in topics]
+        try:
+            for conn, ts, data in reader.messages(connections=conns):
+                self.count += 1
+                yield RawMessage(conn.topic, conn.msgtype, ts, data)
+        except Exception as exc:
+            self.issues.append(f"damaged after {self.count} message(s) ({type(exc).__name__}: {exc})")
+        finally:
+            reader.close()
+
+
+class _Fallback(Exception):
+    pass
+
+
+def read_bag(path: str | Path) -> BagReading:
+    """A recording: a rosbag2 directory or a bare `.mcap` file. Raises InputError if there is nothing to read."""
+    p = Path(path)
+    if not p.exists():
+        raise InputError("no such bag", source=str(p))
+    if p.is_dir() and not _mcap_files(p):
+        raise InputError("not a rosbag2 MCAP recording (no .mcap file in it)", source=str(p))
+    return BagReading(p)
+
+
+def _mcap_files(p: Path) -> list[Path]:
+    if p.is_file():
+        return [p]
+    return sorted(p.glob("*.mcap"))
+
+
+# --- record-by-record MCAP scan ------------------------------------------------------------------------------------
+
+_U16 = struct.Struct("<H")
+_U32 = struct.Struct("<I")
+_U64 = struct.Struct("<Q")
+_MSG_HEAD = struct.Struct("<HIQQ")
+
+
+def _string(buf: memoryview, pos: int) -> tuple[str, int]:
+    (n,) = _U32.unpack_from(buf, pos)
+    return bytes(buf[pos + 4:pos + 4 + n]).decode(), pos + 4 + n
+
+
+def scan_mcap(path: Path, issues: list[str]) -> Iterator[RawMessage]:
+    """Every complete message of an MCAP file in file order; stops at the first damaged record (noted in
+    `issues`)."""
+    data = memoryview(path.read_bytes())
+    if bytes(data[:8]) != MAGIC:
+        issues.append(f"{path.name}: not an MCAP file (bad magic)")
+        return
+    schemas: dict[int, str] = {}
+    channels: dict[int, tuple[str, str]] = {}
+    yield from _records(data, 8, len(data), schemas, channels, issues, path.name, top=True)
+
+
+def _records(buf: memoryview, pos: int, end: int, schemas: dict[int, str], channels: dict[int, tuple[str, str]],
+             issues: list[str], name: str, *, top: bool) -> Iterator[RawMessage]:
+    while pos < end:
+        if end - pos < 9:
+            issues.append(f"{name}: truncated at byte {pos} (partial record header)")
+            return
+        op = buf[pos]
+        (length,) = _U64.unpack_from(buf, pos + 1)
+        body = pos + 9
+        if body + length > end:
+            if op == 0x06 and top:
+                # A chunk cut short: read its complete inner records if it is uncompressed.
+                yield from _partial_chunk(buf, body, end, schemas, channels, issues, name)
+            else:
+                issues.append(f"{name}: truncated at byte {pos} (record 0x{op:02x} of {length} bytes, "
+                              f"{end - body} present)")
+            return
+        try:
+            if op == 0x05:
+                cid, _seq, log_time, _pub = _MSG_HEAD.unpack_from(buf, body)
+                ch = channels.get(cid)
+                if ch is not None:
+                    yield RawMessage(ch[0], ch[1], log_time, buf[body + 22:body + length])
+            elif op == 0x03:
+                (sid,) = _U16.unpack_from(buf, body)
+                sname, _ = _string(buf, body + 2)
+                schemas[sid] = sname
+            elif op == 0x04:
+                cid, sid = struct.unpack_from("<HH", buf, body)
+                topic, _ = _string(buf, body + 4)
+                channels[cid] = (topic, schemas.get(sid, ""))
+            elif op == 0x06:
+                yield from _chunk(buf, body, body + length, schemas, channels, issues, name)
+            elif op == 0x02:                 # footer: the end
+                return
+        except (struct.error, UnicodeDecodeError, ValueError) as exc:
+            issues.append(f"{name}: damaged record 0x{op:02x} at byte {pos} ({exc})")
+            return
+        pos = body + length
+
+
+def _chunk_head(buf: memoryview, body: int) -> tuple[str, int, int]:
+    """(compression, start of the records, their stored length) of a chunk record."""
+    compression, p = _string(buf, body + 28)
+    (size,) = _U64.unpack_from(buf, p)
+    return compression, p + 8, size
+
+
+def _chunk(buf: memoryview, body: int, end: int, schemas: dict[int, str], channels: dict[int, tuple[str, str]],
+           issues: list[str], name: str) -> Iterator[RawMessage]:
+    compression, start, size = _chunk_head(buf, body)
+    if compression:
+        inner = memoryview(_decompress(compression, bytes(buf[start:start + size]),
+                                       _U64.unpack_from(buf, body + 16)[0]))
+        yield from _records(inner, 0, len(inner), schemas, channels, issues, name, top=False)
+    else:
+        yield from _records(buf, start, start + size, schemas, channels, issues, name, top=False)
+
+
+def _partial_chunk(buf: memoryview, body: int, end: int, schemas: dict[int, str],
+                   channels: dict[int, tuple[str, str]], issues: list[str], name: str) -> Iterator[RawMessage]:
+    try:
+        compression, start, _size = _chunk_head(buf, body)
+    except (struct.error, UnicodeDecodeError):
+        issues.append(f"{name}: truncated inside a chunk header at byte {body - 9}")
+        return
+    if compression:
+        issues.append(f"{name}: truncated inside a {compression} chunk at byte {body - 9}: its messages are lost")
+        return
+    inner: list[str] = []
+    yield from _records(buf, start, end, schemas, channels, inner, name, top=False)
+    issues.append(f"{name}: truncated inside the last chunk (at byte {end}); its complete messages were kept")
+
+
+def _decompress(kind: str, data: bytes, size: int) -> bytes:
+    if kind == "zstd":
+        import zstandard
+
+        return zstandard.ZstdDecompressor().decompress(data, max_output_size=size)
+    if kind == "lz4":
+        import lz4.frame
+
+        return lz4.frame.decompress(data)
+    raise ValueError(f"unknown chunk compression {kind!r}")

@@ -1,0 +1,77 @@
+"""Offline judging: read a recording, decode it to contract records, run the same `JudgeSession` the live monitor
+runs, and compare with the verdicts the live monitor recorded (if any).
+
+Works on any bag with the contract topics (ours, or one made with `ros2 bag record`). Messages are decoded with
+rosbags' CDR deserialiser (its classes carry the same field names as rclpy's, which is all `ros_io` reads), only
+for the topics the oracle needs: /clock and /control/command are counted but not decoded.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from txt2sce_ros import contract as c
+from txt2sce_ros.errors import InputError
+
+from .bagread import read_bag
+from .messages import verdicts_in
+from .params import OracleParams
+from .recorder import typestore
+from .records import RunVerdict
+from .session import JudgeSession
+from .topics import JUDGED_TOPICS
+
+
+@dataclass
+class JudgeResult:
+    path: Path
+    verdicts: list[RunVerdict]
+    live: list[dict[str, Any]] = field(default_factory=list)    # verdicts the live monitor recorded
+    issues: list[str] = field(default_factory=list)             # why the recording is not whole
+    messages: int = 0
+    decode_errors: int = 0
+
+    @property
+    def complete(self) -> bool:
+        return not self.issues
+
+    def agrees_with_live(self) -> bool | None:
+        """True/False when the recording holds live verdicts for every run, None when it holds none."""
+        if not self.live:
+            return None
+        return [v.to_dict() for v in self.verdicts] == self.live
+
+
+def judge_bag(path: str | Path, params: OracleParams | None = None) -> JudgeResult:
+    """Judge every run in a recording. A damaged or unfinished recording is judged up to where it is readable;
+    `issues` says what was lost. Raises InputError when nothing can be read at all."""
+    reading = read_bag(path)
+    ts = typestore()
+    session = JudgeSession(params)
+    live: list[dict[str, Any]] = []
+    decode_errors = 0
+    wanted = JUDGED_TOPICS | {c.TOPIC_VIOLATIONS}
+    for msg in reading.messages():
+        if msg.topic not in wanted:
+            continue
+        try:
+            decoded = ts.deserialize_cdr(msg.data, msg.msgtype)
+        except Exception:                 # a damaged message: count it, judge the rest
+            decode_errors += 1
+            continue
+        if msg.topic == c.TOPIC_VIOLATIONS:
+            live.extend(verdicts_in(decoded))
+            continue
+        try:
+            session.on_message(msg.topic, decoded)
+        except InputError:
+            decode_errors += 1
+    session.close()
+    if reading.count == 0 and reading.issues:
+        raise InputError("nothing readable: " + "; ".join(reading.issues), source=str(path))
+    issues = list(reading.issues)
+    if decode_errors:
+        issues.append(f"{decode_errors} message(s) could not be decoded and were skipped")
+    return JudgeResult(Path(path), session.verdicts, live, issues, reading.count, decode_errors)
