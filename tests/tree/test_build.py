@@ -1,0 +1,114 @@
+"""Tree building: the Sum formula, one block per child, determinism, validity of every file."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+
+from txt2sce_ros.tree import canonical, disassemble
+from txt2sce_ros.tree.build import build_tree, build_trees, expected_nodes, tree_config
+from txt2sce_ros.xosc.validate import qc_errors, validate_xosc
+
+from .conftest import CUT_IN, JUNCTION
+
+
+def _digest(root: Path) -> str:
+    h = hashlib.sha256()
+    for f in sorted(root.rglob("*")):
+        if f.is_file():
+            h.update(str(f.relative_to(root)).encode())
+            h.update(f.read_bytes())
+    return h.hexdigest()
+
+
+def test_expected_nodes_is_the_papers_sum():
+    assert expected_nodes([2, 2, 2]) == 2 + 4 + 8
+    assert expected_nodes([5, 7, 3]) == 5 + 35 + 105
+    assert expected_nodes([]) == 0
+
+
+def test_unpruned_node_count_equals_sum_formula(tmp_path):
+    cfg = tree_config(prune_share=1.0, mutations=2)
+    res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=cfg)
+    # weather 5 types, ego 2, npc1 7 categories, 2 events x 2, new obstacle 2
+    assert res.block_counts == (5, 2, 7, 2, 2, 2)
+    assert res.expected == 5 + 10 + 70 + 140 + 280 + 560
+    assert res.nodes == res.expected and res.invalid == 0 and not res.truncated
+    files = list((tmp_path / "t" / "nodes").glob("n*.xosc"))
+    assert len(files) == res.expected
+    manifest = json.loads((tmp_path / "t" / "manifest.json").read_text())
+    assert len(manifest["nodes"]) == res.expected + 1  # + the root (the seed itself)
+    by_depth = {}
+    for n in manifest["nodes"]:
+        by_depth[n["depth"]] = by_depth.get(n["depth"], 0) + 1
+    assert [by_depth[d] for d in range(1, 7)] == [5, 10, 70, 140, 280, 560]
+
+
+def test_mutation_count_changes_the_tree(tmp_path):
+    res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=tree_config(prune_share=1.0, mutations=1))
+    assert res.block_counts == (5, 1, 7, 1, 1, 1)
+    assert res.nodes == expected_nodes(res.block_counts)
+
+
+def test_each_child_adds_exactly_one_block(tmp_path):
+    """Disassemble parent and child files: they differ in the fragments of the block the child added, nowhere
+    else; and the manifest records the operator and the old -> new values of that block."""
+    out = tmp_path / "t"
+    build_tree(JUNCTION, out, seed=1, cfg=tree_config(prune_share=1.0))
+    manifest = json.loads((out / "manifest.json").read_text())
+    nodes = {n["id"]: n for n in manifest["nodes"]}
+    checked = 0
+    for n in manifest["nodes"][1::97]:  # a spread sample across all depths
+        parent = nodes[n["parent"]]
+        def blocks(node):
+            d = disassemble((out / node["file"]).read_bytes())
+            return {b.key: [canonical(f) for f in b.fragments if f] for b in d.blocks}
+
+        bp, bc = blocks(parent), blocks(n)
+        differing = sorted(k for k in set(bp) | set(bc) if bp.get(k) != bc.get(k))
+        assert set(differing) <= {n["block_key"]}
+        if n["changes"]:
+            assert differing == [n["block_key"]]
+        assert n["path"][:-1] == parent["path"] and n["depth"] == parent["depth"] + 1
+        assert n["operator"] and isinstance(n["rng_seed"], int)
+        checked += 1
+    assert checked > 50
+
+
+def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path):
+    cfg = tree_config()
+    build_trees([JUNCTION, CUT_IN], tmp_path / "a", seed=7, cfg=cfg, jobs=1)
+    build_trees([JUNCTION, CUT_IN], tmp_path / "b", seed=7, cfg=cfg, jobs=2)  # process count must not matter
+    build_trees([JUNCTION, CUT_IN], tmp_path / "c", seed=8, cfg=cfg, jobs=1)
+    assert _digest(tmp_path / "a") == _digest(tmp_path / "b")
+    assert _digest(tmp_path / "a") != _digest(tmp_path / "c")
+
+
+def test_every_generated_file_is_schema_valid_and_a_sample_is_qc_clean(tmp_path):
+    out = tmp_path / "t"
+    res = build_tree(JUNCTION, out, seed=5, cfg=tree_config(validate=False))  # write everything, check here
+    files = sorted((out / "nodes").glob("*.xosc"))
+    assert len(files) == res.nodes + 1
+    for f in files:
+        assert validate_xosc(f.read_bytes(), source=str(f)) == [], f.name
+    for f in files[:: max(1, len(files) // 12)]:
+        assert qc_errors(f) == [], f.name
+
+
+def test_generated_files_point_at_the_seeds_map(tmp_path):
+    out = tmp_path / "deep" / "t"
+    build_tree(CUT_IN, out, seed=0, cfg=tree_config(mutations=1))
+    f = out / "nodes" / "n0.xosc"
+    from lxml import etree
+
+    logic = etree.parse(str(f)).find("RoadNetwork/LogicFile").get("filepath")
+    assert (f.parent / logic).resolve().name == "e6mini.xodr"
+    assert (f.parent / logic).resolve().is_file()
+
+
+def test_pruning_keeps_at_least_half_of_each_cluster(tmp_path):
+    full = build_tree(JUNCTION, tmp_path / "full", seed=2, cfg=tree_config(prune_share=1.0))
+    half = build_tree(JUNCTION, tmp_path / "half", seed=2, cfg=tree_config(prune_share=0.5))
+    assert half.pruned > 0 and half.nodes < full.nodes
+    assert half.nodes >= full.nodes // 2 ** len(full.block_counts)
