@@ -93,7 +93,7 @@ class LanePath:
             n = max(2, int(np.ceil(abs(b - a) / PATH_DS)) + 1)
             rs = np.linspace(a, b, n)
             # Evaluate strictly inside the section so a boundary s picks this section's lanes.
-            rs_eval = np.clip(rs, lo, hi - 1e-9 if hi > lo else hi)
+            rs_eval = np.clip(rs, lo, hi - 1e-6 if hi > lo else hi)
             x, y, h = net.lane_to_world_array(ref.road_id, ref.lane_id, rs_eval, section=ref.section)
             if chunks:
                 prev = chunks[-1][-1]

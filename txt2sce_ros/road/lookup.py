@@ -239,19 +239,44 @@ class LaneIndex:
         return best
 
     def locate(self, x: float, y: float, heading: float | None = None, *, k: int = 12) -> LanePoint | None:
-        """The lane at one point; among lanes that contain it, the one whose driving direction is closest to
-        `heading`; None if the index is empty."""
+        """The lane at one point. Every lane (of the index's types) of every road among the k nearest samples is
+        a candidate: lanes containing the point beat the others, then the driving direction closest to `heading`
+        (so a point on a centre line picks the lane going its way), then the smaller offset from the centre."""
         k = max(1, min(k, self.tree.n))
         _, idx = self.tree.query([x, y], k=k)
         idx = np.atleast_1d(idx)
+        road_of = self.sample_road[idx]
+        _, first = np.unique(road_of, return_index=True)
+        idx = idx[np.sort(first)]                       # one sample per road, nearest first
         m = self._match(np.full(len(idx), x), np.full(len(idx), y), idx)
-        best_i, best_score = -1, math.inf
+        best: tuple[float, LanePoint] | None = None
+        net = self.net
         for i in range(len(idx)):
-            score = (0.0 if m.inside[i] else 100.0) + float(m.distance[i])
-            if heading is not None:
-                diff = abs(math.atan2(math.sin(m.heading[i] - heading), math.cos(m.heading[i] - heading)))
-                score += 0.0 if diff <= math.pi / 2 else 50.0
-                score += diff * 0.1
-            if score < best_score:
-                best_i, best_score = i, score
-        return m[best_i] if best_i >= 0 else None
+            rid, s, t = str(m.road_id[i]), float(m.s[i]), float(m.t[i])
+            # how far the projection overshoots the road's ends (0 inside the road's s range)
+            overshoot = math.sqrt(max(float(m.distance[i]) ** 2 - float(m.offset[i]) ** 2, 0.0))
+            road = net.roads[rid]
+            si = net.section_index(rid, s)
+            sec = road.sections[si]
+            href = net.road_heading(rid, s)
+            for lid, ln in sec.lanes.items():
+                if lid == 0 or not self._wanted(ln.type):
+                    continue
+                inner, outer = net.lane_bounds(rid, lid, np.array([s]), si)
+                lo, hi = sorted((float(inner[0]), float(outer[0])))
+                if hi - lo <= 1e-6:
+                    continue
+                centre = 0.5 * (lo + hi)
+                gap = max(lo - t, 0.0, t - hi)
+                inside = gap <= 1e-9 and overshoot <= 1e-3
+                h = href if net.lane_forward(rid, lid, sec.s) else href + math.pi
+                h = math.atan2(math.sin(h), math.cos(h))
+                score = (0.0 if inside else 100.0 + gap + overshoot) + 0.01 * abs(t - centre)
+                if heading is not None:
+                    diff = abs(math.atan2(math.sin(h - heading), math.cos(h - heading)))
+                    score += (0.0 if diff <= math.pi / 2 else 50.0) + 0.1 * diff
+                if best is None or score < best[0]:
+                    point = LanePoint(LaneRef(rid, si, int(lid)), s, t, t - centre, h,
+                                      math.hypot(t - centre, overshoot), inside)
+                    best = (score, point)
+        return best[1] if best else None

@@ -196,7 +196,7 @@ class RoadNetwork:
         end = min(sec.end, road.length)
         n = max(2, int(math.ceil((end - sec.s) / ds)) + 1)
         s = np.linspace(sec.s, end, n)
-        s[-1] = end - 1e-9 if end > sec.s else end   # stay inside this section at its end
+        s[-1] = end - 1e-6 if end > sec.s else end   # stay inside this section at its end (section_index tolerates 1e-9)
         return s
 
     def lane_centerline(self, road_id: str | int, lane_id: int, ds: float = 0.5, *, section: int | None = None

@@ -106,6 +106,10 @@ def parse_xml(data: bytes, source: str) -> etree._Element:
         root = etree.fromstring(data, parser)
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if getattr(exc, "lineno", None) else None
+        if "entit" in str(exc.msg).lower():
+            # libxml2 itself stops external entities in attributes and entity amplification (billion laughs).
+            raise InputError(f"entity declarations/references refused (XXE / entity expansion): {exc.msg}",
+                             source=source, element="!DOCTYPE", line=line) from exc
         raise InputError(f"malformed XML: {exc.msg}", source=source, element="OpenDRIVE", line=line) from exc
     except ValueError as exc:   # e.g. str with an encoding declaration
         raise InputError(f"malformed XML: {exc}", source=source, element="OpenDRIVE") from exc
