@@ -1,0 +1,173 @@
+"""Manoeuvre phrases -> the 13 action codes, and who did them.
+
+Each phrase is a regex tagged with a code. A phrase is attributed to the clause's subject: the latest mention in
+subject position (sentence start, after a comma or a conjunction, before a relative "that/which/who" or a
+participle such as "traveling"), or, for an opening subordinate clause ("While reversing, the car ..."), the first
+subject that follows. Intentions are not actions: "preparing to turn" or "waiting to make a left turn" add nothing,
+while "began to", "attempted to" and "proceeded to" do.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .lexicon import CARDINALS
+from .mentions import Mention
+
+_DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
+
+#: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
+PHRASES: tuple[tuple[str, str], ...] = (
+    ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
+    ("k", r"\brevers(?:ed|ing|es|e)\b|\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
+          r"\bbacking\b"),
+    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|\bparallel\s+park(?:ing|ed)?\b|\binto\s+a\s+(?:parallel\s+)?parking\s+"
+          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb"),
+    ("h", r"\b(?:came|come|comes|coming|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|slow(?:ed|ing|s)?\s+"
+          r"to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
+          r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\b|\bstops\b|\byield(?:ed|ing|s)?\b"),
+    ("i", r"\b(?:began|begin|begins|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
+          r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
+          r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
+          r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
+          r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again"),
+    ("f", r"\b(?:left|leftward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
+          r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
+          r"into\s+the\s+(?:left|center|middle)\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
+          r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered)\s+(?:into\s+)?the\s+(?:oncoming|"
+          r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
+          r"(?:to\s+the\s+)?left\b"),
+    ("g", r"\b(?:right|rightward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
+          r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
+          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
+          r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
+          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b"),
+    ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
+          r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
+          r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b"),
+    ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
+          r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
+    ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
+          r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
+    ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
+    ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)?|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
+          r"|across\s+|in\s+front\s+of\s+)?(?:the\s+)?(?:street|road|roadway|crosswalk)|\b(?:pull(?:ed|ing)\s+"
+          r"out\s+of|exit(?:ed|ing)|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+(?:\w+\s+)?(?:driveway|"
+          r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
+          r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)"),
+    ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b"),
+    ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:to|speed))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
+          r"\bbrake\b|\bapplied\s+the\s+brakes?|\bhard\s+brak"),
+    ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
+          r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
+          r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|riding|rode|cruising|"
+          r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
+          r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
+)
+_PHRASE_RES = [(c, re.compile(p, re.I)) for c, p in PHRASES]
+_INTENT = re.compile(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
+                     r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+)?$", re.I)
+_INTENT_OK = re.compile(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
+                        r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+)?$", re.I)
+_STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+)?(?:stopped|stationary|"
+                         r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
+                         r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
+                         r"parked)\b", re.I)
+_HEADING = re.compile(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
+                      rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
+                      rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
+
+
+_RELATIVE = re.compile(r"\s*,?\s*(?:(?:that|which|who)\s+)?(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
+                       r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
+                       re.I)
+
+
+@dataclass(frozen=True)
+class Act:
+    sent: int
+    pos: int
+    code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state)
+    who: int  # entity index, -1 = ego
+    text: str
+
+
+def heading_of(s: str) -> int | None:
+    """The first compass heading in `s`, in degrees (north 0, clockwise)."""
+    m = _HEADING.search(s)
+    if not m:
+        return None
+    word = (m.group(1) or m.group(2) or m.group(3)).lower()
+    return CARDINALS.get(word)
+
+
+def turn_from_headings(s: str) -> str | None:
+    """"from southbound X to westbound Y" / "southbound ... onto westbound": the turn's side by the heading change."""
+    found = [CARDINALS[w.lower()] for w in re.findall(rf"\b({_DIR})bound\b", s, re.I)]
+    if len(found) < 2:
+        return None
+    diff = (found[1] - found[0]) % 360
+    return {90: "e", 270: "d", 180: "j"}.get(diff)
+
+
+def _who_for(pos: int, ments: list[Mention], fallback: int | None) -> int | None:
+    """Entity index (-1 ego) whose clause covers `pos`: latest subject mention before it, else the first after."""
+    best: Mention | None = None
+    for m in ments:
+        if m.start <= pos and m.subject:
+            best = m
+    if best is None:
+        for m in ments:
+            if m.start > pos and m.subject:
+                best = m
+                break
+    if best is None:
+        return fallback
+    return -1 if best.kind in ("ego", "egod") else (best.entity if best.entity >= 0 else fallback)
+
+
+def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None) -> list[Act]:
+    """The manoeuvres in one sentence, each attributed to its doer."""
+    spans: list[tuple[int, int, str]] = []
+    for code, rx in _PHRASE_RES:
+        for m in rx.finditer(s):
+            if any(m.start() < e and m.end() > b for b, e, _ in spans):
+                continue  # an earlier (more specific) phrase already covers this text
+            spans.append((m.start(), m.end(), code))
+    for m in _STATE_STOP.finditer(s):
+        if not any(m.start() < e and m.end() > b for b, e, _ in spans) or "stop" in m.group(0).lower():
+            spans.append((m.start(), m.end(), "S"))
+    out: list[Act] = []
+    for b, e, code in sorted(spans):
+        before = s[max(0, b - 40):b]
+        if _INTENT.search(before) and not _INTENT_OK.search(before):
+            continue
+        if code == "h" and re.search(r"\b(?:without|not)\s+$", before):
+            continue
+        inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
+        # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
+        # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
+        left = [m for m in ments if m.end <= b]
+        rel = left[-1] if left and _RELATIVE.fullmatch(s[left[-1].end:b]) else None
+        if inside:
+            who = inside[0].entity
+        elif rel is not None and rel.kind in ("party", "obstacle") and rel.entity >= 0:
+            who = rel.entity
+        elif rel is not None and rel.kind in ("ego", "egod"):
+            who = -1
+        else:
+            who = _who_for(b, ments, fallback)
+        if who is None:
+            continue
+        out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))
+    # A state "was stopped" and the "stopped" inside it are one fact.
+    dedup: list[Act] = []
+    for a in out:
+        if dedup and a.who == dedup[-1].who and a.sent == dedup[-1].sent and {a.code, dedup[-1].code} == {"S", "h"} \
+                and abs(a.pos - dedup[-1].pos) < 25:
+            if dedup[-1].code == "h":
+                dedup[-1] = a
+            continue
+        dedup.append(a)
+    return dedup

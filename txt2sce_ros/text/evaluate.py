@@ -1,0 +1,184 @@
+"""Slot-by-slot comparison of predicted sketches with gold ones (the paper's Table IV, measured as sketch.md says).
+
+Pairing: the collision parties are paired first (when both sides name an NPC), then the remaining NPCs are paired to
+maximise agreement (category, then position). An NPC left unpaired on either side counts wrong in every per-NPC
+slot, so the per-NPC denominators are `max(len(gold), len(pred))` summed over reports.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections import Counter, defaultdict
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+
+from ..sketch import LANED_POSITIONS, Obstacle, Party, Sketch
+
+#: Table IV rows, then the extra slots, in print order.
+TABLE_IV = ("npc_quantity", "npc_type", "npc_position", "npc_events",
+            "obstacle_quantity", "obstacle_type", "obstacle_position")
+EXTRA = ("weather", "lighting", "surface", "layout", "control", "one_way", "lanes", "signal_state",
+         "ego_start", "ego_actions", "collision_type", "collision_with", "completeness")
+
+#: The issue's targets on dev_gold.jsonl (fractions).
+TARGETS: dict[str, float] = {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.85, "npc_events": 0.80,
+                             "obstacle_quantity": 0.95, "completeness": 0.90}
+
+
+@dataclass
+class SlotTally:
+    correct: int = 0
+    total: int = 0
+    # (gold value, predicted value, report id) for each miss: the confusion listing.
+    misses: list[tuple[str, str, str]] = field(default_factory=list)
+
+    @property
+    def accuracy(self) -> float:
+        return self.correct / self.total if self.total else float("nan")
+
+    def add(self, ok: bool, gold: object, pred: object, rid: str) -> None:
+        self.total += 1
+        if ok:
+            self.correct += 1
+        else:
+            self.misses.append((str(gold), str(pred), rid))
+
+
+@dataclass
+class Evaluation:
+    slots: dict[str, SlotTally] = field(default_factory=lambda: defaultdict(SlotTally))
+    reports: int = 0
+    unmatched_gold: list[str] = field(default_factory=list)  # gold ids with no prediction (an error record)
+
+    def accuracy(self, slot: str) -> float:
+        return self.slots[slot].accuracy
+
+
+def _pos(p: Party | Obstacle) -> str:
+    return f"{p.position}/{p.lane}" if p.position in LANED_POSITIONS or isinstance(p, Obstacle) else p.position
+
+
+def _pair_score(g: Party | Obstacle, p: Party | Obstacle) -> int:
+    return 4 * (g.category == p.category) + 2 * (_pos(g) == _pos(p)) + (getattr(g, "actions", None)
+                                                                       == getattr(p, "actions", None))
+
+
+def pair(gold: Sequence[Party | Obstacle], pred: Sequence[Party | Obstacle],
+         fixed: tuple[str, str] | None = None) -> list[tuple[Party | Obstacle | None, Party | Obstacle | None]]:
+    """Pairs (gold, pred), None where one side has no partner; `fixed` = (gold id, pred id) paired first."""
+    pairs: list[tuple[Party | Obstacle | None, Party | Obstacle | None]] = []
+    g_left, p_left = list(gold), list(pred)
+    if fixed:
+        g0 = next((x for x in g_left if x.id == fixed[0]), None)
+        p0 = next((x for x in p_left if x.id == fixed[1]), None)
+        if g0 is not None and p0 is not None:
+            pairs.append((g0, p0))
+            g_left.remove(g0)
+            p_left.remove(p0)
+    # Exhaustive search is fine: narratives name at most a handful of parties.
+    best: tuple[int, list[tuple[int, int]]] = (-1, [])
+    small, large = (g_left, p_left) if len(g_left) <= len(p_left) else (p_left, g_left)
+    for perm in itertools.permutations(range(len(large)), len(small)):
+        idx = list(enumerate(perm))
+        score = sum(_pair_score(small[i], large[j]) for i, j in idx)
+        if score > best[0]:
+            best = (score, idx)
+    used_large = set()
+    for i, j in best[1]:
+        used_large.add(j)
+        pairs.append((small[i], large[j]) if small is g_left else (large[j], small[i]))
+    for j, x in enumerate(large):
+        if j not in used_large:
+            pairs.append((x, None) if large is g_left else (None, x))
+    return pairs
+
+
+def compare(gold: Sketch, pred: Sketch, ev: Evaluation) -> None:
+    """Add one report's slots to `ev`."""
+    rid = gold.report_id
+    ev.reports += 1
+    s = ev.slots
+    s["npc_quantity"].add(len(gold.npcs) == len(pred.npcs), len(gold.npcs), len(pred.npcs), rid)
+    gw, pw = gold.collision.with_, pred.collision.with_
+    fixed = (gw, pw) if gw and pw and gw[:3] == pw[:3] == "npc" else None
+    npc_pairs = pair(gold.npcs, pred.npcs, fixed)
+    mapping: dict[str, str] = {}
+    for g, p in npc_pairs:
+        if g is not None and p is not None:
+            mapping[p.id] = g.id
+        gc, pc = (g.category if g else "-"), (p.category if p else "-")
+        s["npc_type"].add(g is not None and p is not None and gc == pc, gc, pc, rid)
+        gp, pp = (_pos(g) if g else "-"), (_pos(p) if p else "-")
+        s["npc_position"].add(g is not None and p is not None and gp == pp, gp, pp, rid)
+        ga = getattr(g, "actions", "-") if g else "-"
+        pa = getattr(p, "actions", "-") if p else "-"
+        s["npc_events"].add(g is not None and p is not None and ga == pa, ga or "''", pa or "''", rid)
+    s["obstacle_quantity"].add(len(gold.obstacles) == len(pred.obstacles), len(gold.obstacles),
+                               len(pred.obstacles), rid)
+    fixed_o = (gw, pw) if gw and pw and gw[:3] == pw[:3] == "obs" else None
+    for g, p in pair(gold.obstacles, pred.obstacles, fixed_o):
+        if g is not None and p is not None:
+            mapping[p.id] = g.id
+        gc, pc = (g.category if g else "-"), (p.category if p else "-")
+        s["obstacle_type"].add(g is not None and p is not None and gc == pc, gc, pc, rid)
+        gp, pp = (_pos(g) if g else "-"), (_pos(p) if p else "-")
+        s["obstacle_position"].add(g is not None and p is not None and gp == pp, gp, pp, rid)
+    for name, gv, pv in (
+        ("weather", gold.environment.weather, pred.environment.weather),
+        ("lighting", gold.environment.lighting, pred.environment.lighting),
+        ("surface", gold.environment.surface, pred.environment.surface),
+        ("layout", gold.road.layout, pred.road.layout),
+        ("control", gold.road.control, pred.road.control),
+        ("one_way", gold.road.one_way, pred.road.one_way),
+        ("lanes", gold.road.lanes, pred.road.lanes),
+        ("signal_state", gold.signal_state, pred.signal_state),
+        ("ego_start", gold.ego.start, pred.ego.start),
+        ("ego_actions", gold.ego.actions or "''", pred.ego.actions or "''"),
+        ("collision_type", gold.collision.type, pred.collision.type),
+        ("collision_with", gw, mapping.get(pw, pw) if pw else None),
+    ):
+        s[name].add(gv == pv, gv, pv, rid)
+    s["completeness"].add(bool(gold.missing) == bool(pred.missing), sorted(gold.missing) or "[]",
+                          sorted(pred.missing) or "[]", rid)
+
+
+def evaluate(gold: Iterable[Sketch], predicted: dict[str, Sketch]) -> Evaluation:
+    """Compare every gold sketch with the prediction of the same report id (a missing prediction scores as an
+    empty sketch, so errors cost accuracy rather than vanish from the denominator)."""
+    ev = Evaluation()
+    for g in gold:
+        p = predicted.get(g.report_id)
+        if p is None:
+            ev.unmatched_gold.append(g.report_id)
+            p = Sketch(report_id=g.report_id, missing=("npcs",))
+        compare(g, p, ev)
+    return ev
+
+
+def format_table(ev: Evaluation, *, worst: int = 4, examples: int = 6) -> str:
+    """Table IV, the extra slots and a confusion listing of the `worst` slots."""
+    lines = [f"Extraction accuracy over {ev.reports} gold reports"
+             + (f" ({len(ev.unmatched_gold)} without a prediction)" if ev.unmatched_gold else ""), "",
+             f"{'slot':<20}{'accuracy':>9}{'correct':>9}{'total':>7}  target", "-" * 54]
+
+    def row(name: str) -> str:
+        t = ev.slots[name]
+        tgt = TARGETS.get(name)
+        mark = "" if tgt is None else f"  >= {tgt:.0%} " + ("ok" if t.accuracy >= tgt else "BELOW")
+        return f"{name:<20}{t.accuracy:>9.1%}{t.correct:>9}{t.total:>7}{mark}"
+
+    lines.append("Table IV (NPCs, obstacles)")
+    lines += [row(n) for n in TABLE_IV]
+    lines.append("Extra slots")
+    lines += [row(n) for n in EXTRA]
+    ranked = sorted((n for n in (*TABLE_IV, *EXTRA) if ev.slots[n].misses),
+                    key=lambda n: (ev.slots[n].accuracy, n))[:worst]
+    if ranked:
+        lines += ["", "Worst slots: gold -> predicted (count; report ids)"]
+    for n in ranked:
+        lines.append(f"  {n} ({ev.slots[n].accuracy:.1%})")
+        conf = Counter((g, p) for g, p, _ in ev.slots[n].misses)
+        for (g, p), k in conf.most_common(examples):
+            ids = [r for gg, pp, r in ev.slots[n].misses if (gg, pp) == (g, p)][:3]
+            lines.append(f"    {g:>12} -> {p:<12} x{k}  {', '.join(ids)}")
+    return "\n".join(lines)

@@ -1,0 +1,108 @@
+"""Vocabularies of the offline extractor: how collision narratives name the AV, other parties, objects and moves.
+
+Built from the writing patterns of the companies' reports (DMV OL 316 section 5, NHTSA SGO narratives) as word
+classes, never from single reports: a rule here must read every narrative that uses the same phrasing.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: Operators of AV fleets that write narratives; "<company> AV/vehicle/car/truck/shuttle" names the AV.
+COMPANIES = (
+    "waymo", "cruise", "zoox", "apple", "pony\\.ai", "pony", "nuro", "ghost", "beep", "aurora", "apollo", "baidu",
+    "weride", "may mobility", "argo", "lyft", "uber", "motional", "aptiv", "drive\\.ai", "toyota research",
+    "mercedes-benz", "kodiak", "tusimple", "navya", "autox", "deeproute", "didi", "gatik", "plus", "jingchi",
+    "imagry", "mobileye", "qcraft", "vay", "valeo", "nvidia", "wayve", "woven planet", "tesla autopilot",
+)
+_CO = "|".join(COMPANIES)
+_AV_NOUN = r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|robotaxi|suv)"
+
+#: Ways the narratives name the AV (the ego). Order matters: longest first, applied to normalised text.
+EGO_PATTERNS: tuple[str, ...] = (
+    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
+    rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:\s*\((?:vehicle|car)?\s*1\))?",
+    rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
+    rf"reporting|vehicle operators))",
+    r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
+    r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
+    r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
+    r"\b(?:the\s+)?subject\s+vehicle\b",
+    r"\b(?:our|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",
+    r"\ba\s+test\s+vehicle\b",
+    r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)",
+    r"\bthis\s+vehicle\b",
+)
+
+#: People who drive the AV: their manoeuvres are the AV's.
+EGO_DRIVER = re.compile(
+    r"\b(?:the\s+|our\s+|an?\s+)?(?:(?:av|ego)\s+)?(?:(?:test|safety|vehicle|av|shuttle|remote)\s+)?"
+    r"(?:driver|operator|attendant|specialist)s?\b(?!'s\s+(?:side|door|seat|seating|window|mirror))"
+    r"(?!\s*-?\s*(?:side|door|seat|seating|window|mirror|'s\s+side))(?:\s+of\s+EGO)?|"
+    r"\bEGO(?:'s)?\s+(?:test\s+|safety\s+)?(?:driver|operator)s?\b(?!\s*-?\s*(?:'s\s+)?(?:side|door|seat))", re.I)
+
+#: Head nouns of other parties -> category (sketch.md's mapping: SUVs/pickups/taxis are cars, ...).
+PARTY_HEADS: dict[str, str] = {
+    "pickup truck": "car", "pick-up truck": "car", "pickup": "car", "passenger vehicle": "car",
+    "passenger car": "car", "police car": "car", "police vehicle": "car", "patrol car": "car", "suv": "car",
+    "sedan": "car", "coupe": "car", "hatchback": "car", "taxi": "car", "cab": "car", "car": "car",
+    "vehicle": "car", "jeep": "car", "crossover": "car", "automobile": "car", "wagon": "car",
+    "minivan": "van", "mini-van": "van", "van": "van", "sprinter": "van",
+    "tractor-trailer": "truck", "tractor trailer": "truck", "semi-trailer truck": "truck", "semi-truck": "truck",
+    "semi truck": "truck", "semi": "truck", "box truck": "truck", "fire engine": "truck", "fire truck": "truck",
+    "garbage truck": "truck", "tow truck": "truck", "dump truck": "truck", "cargo truck": "truck",
+    "heavy truck": "truck", "delivery truck": "truck", "truck": "truck", "big rig": "truck", "18-wheeler": "truck",
+    "bus": "bus", "shuttle": "bus", "trolley": "bus", "streetcar": "bus", "light rail": "bus",
+    "motorcyclist": "motorcycle", "motorcycle": "motorcycle", "motorbike": "motorcycle", "moped": "motorcycle",
+    "motorcycle rider": "motorcycle",
+    "bicyclist": "bicycle", "cyclist": "bicycle", "bicycle": "bicycle", "bike": "bicycle", "e-bike": "bicycle",
+    "scooterist": "scooter", "scooter": "scooter", "e-scooter": "scooter", "skateboarder": "scooter",
+    "pedestrian": "pedestrian", "jogger": "pedestrian", "person": "pedestrian", "individual": "pedestrian",
+    "man": "pedestrian", "woman": "pedestrian", "child": "pedestrian", "walker": "pedestrian",
+}
+#: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
+GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
+               "motorists", "riders", "road users", "others", "scooters")
+
+#: Makes and models: "a 2014 Audi", "the Toyota Sienna". Models that are vans are vans.
+VAN_MODELS = ("sienna", "odyssey", "pacifica", "voyager", "caravan", "sedona", "quest", "promaster",
+              "sprinter", "express", "savana", "carnival", "metris")
+MAKES = ("toyota", "honda", "nissan", "ford", "chevrolet", "chevy", "tesla", "lexus", "audi", "bmw", "mercedes",
+         "hyundai", "kia", "subaru", "mazda", "jeep", "dodge", "volkswagen", "vw", "volvo", "acura", "infiniti",
+         "cadillac", "buick", "gmc", "chrysler", "plymouth", "ram", "mini", "fiat", "porsche", "jaguar", "lincoln",
+         "mitsubishi", "genesis", "land rover", "range rover", "prius", "corolla", "camry", "civic", "accord",
+         "silverado", "elantra", "altima", "sentra", "juke", "grand cherokee", "cherokee", "rav4", "model 3",
+         "model y", "model s", "model x", "f-150", "tacoma", "tundra", "highlander", "matrix", "mustang")
+
+#: Static objects -> obstacle category.
+OBSTACLE_HEADS: dict[str, str] = {
+    "debris": "debris", "sheet metal": "debris", "metal": "debris", "rod": "debris",
+    "object": "debris", "rock": "debris", "ladder": "debris", "pallet": "debris", "lumber": "debris",
+    "traffic cone": "cone", "cone": "cone", "pylon": "cone", "delineator": "cone",
+    "curb": "barrier", "kerb": "barrier", "median": "barrier", "divider": "barrier", "traffic island": "barrier",
+    "island": "barrier", "guardrail": "barrier", "guard rail": "barrier", "barrier": "barrier", "gate": "barrier",
+    "wall": "barrier", "fence": "barrier", "k-rail": "barrier", "barricade": "barrier", "railing": "barrier",
+    "pole": "pole", "post": "pole", "bollard": "pole", "hydrant": "pole", "sign": "pole", "signpost": "pole",
+    "parking meter": "pole", "light pole": "pole", "utility pole": "pole", "column": "pole", "pillar": "pole",
+    "animal": "animal", "dog": "animal", "deer": "animal", "cat": "animal", "bird": "animal", "coyote": "animal",
+    "raccoon": "animal", "squirrel": "animal", "goose": "animal",
+    "tree": "other", "branch": "other", "cable": "other", "wire": "other", "bin": "other", "trash can": "other",
+    "dumpster": "other", "cart": "other", "shopping cart": "other", "skateboard": "other", "box": "other",
+    "bag": "other", "basketball hoop": "other",
+}
+#: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
+PARKED_WORDS = re.compile(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
+
+#: Contact between two parties.
+CONTACT = re.compile(
+    r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes\s+contact|"
+    r"came\s+into\s+contact|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
+    r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
+    r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
+    r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
+    r"was\s+hit|was\s+struck|were\s+struck)\b", re.I)
+NEGATION = re.compile(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
+
+CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,
+             "west": 270, "northwest": 315}
+NUMBER_WORDS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "single": 1}

@@ -1,0 +1,284 @@
+"""Narrative -> sentences -> mentions of the AV, other parties and objects, grouped into entities (coreference).
+
+The narratives name the AV in a dozen ways ("the Waymo AV", "our vehicle", "the Zoox vehicle", "SV"): they are all
+rewritten to the token `EGO` (its drivers and operators to `EGOD`) before anything else, so later rules see one name.
+Other parties are noun phrases around a head noun (`PARTY_HEADS`, makes and models); an indefinite article opens a
+new entity, a definite one refers back to the latest compatible entity.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from .lexicon import (EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS, PARKED_WORDS, PARTY_HEADS,
+                      VAN_MODELS)
+
+_QUOTES = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
+_EGO_RES = [re.compile(p, re.I) for p in EGO_PATTERNS]
+_PAREN_DEF = re.compile(r"\s*\((?:[^()]{0,40})\)")  # ("Waymo AV"), (Vehicle 2), (car 1): definitions, not text
+# Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
+_ABBREV = re.compile(r"\b(?:Mt|Jr|Sr|No|approx|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
+                     r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])",
+                     re.I)
+_SENT_SPLIT = re.compile(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
+_STREET_SUFFIX = re.compile(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
+                            r"Dr\b|Way|Lane|Ln\b|Parkway|Pkwy|Highway|Hwy|Place|Pl\b|Court|Ct\b|Terrace|Circle|"
+                            r"Expressway|Alley|Plaza|Park\b|Center)")
+
+_HEADS = sorted(set(PARTY_HEADS) | set(OBSTACLE_HEADS) | set(MAKES) | set(VAN_MODELS) | set(GROUP_HEADS),
+                key=len, reverse=True)
+_HEAD_RE = re.compile(r"\b(EGOD|EGO|" + "|".join(re.escape(h) for h in _HEADS) + r")(?:'s|s')?\b", re.I)
+# Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
+_NOT_HEAD_AFTER = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
+                             r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
+                             r"occupants?|passengers?)\b", re.I)
+DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
+        "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
+_STOP_BACK = re.compile(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
+                        r"when|as|while|was|were|is|had|has|then|that|which|who|EGO|EGOD|,|;|:)$", re.I)
+_SUBJ_BEFORE = re.compile(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
+                          r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
+
+
+@dataclass
+class Mention:
+    sent: int
+    start: int
+    end: int
+    kind: str  # "ego", "egod", "party", "obstacle", "group"
+    head: str
+    category: str
+    det: str  # "a", "the" or ""
+    mods: str
+    subject: bool
+    entity: int = -1
+
+
+@dataclass
+class Entity:
+    idx: int
+    kind: str  # "party" or "obstacle"
+    category: str
+    heads: set[str]
+    mentions: list[Mention] = field(default_factory=list)
+    parked: bool = False
+    merged_into: int | None = None
+    door_of: int | None = None
+
+    @property
+    def first(self) -> Mention:
+        return self.mentions[0]
+
+
+def normalise(text: str) -> str:
+    """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
+    t = text.translate(_QUOTES)
+    t = re.sub(r"\s+", " ", t).strip()
+    if t.isupper() or sum(c.isupper() for c in t) > 0.6 * sum(c.isalpha() for c in t):
+        t = t.lower()  # all-caps narratives: case carries no information there
+    t = _PAREN_DEF.sub("", t)
+    for rx in _EGO_RES:
+        t = rx.sub(" EGO", t)
+    t = re.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
+    t = EGO_DRIVER.sub(" EGOD", t)
+    t = re.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
+    t = re.sub(r"\bEGO\s+EGOD\b", "EGOD", t)
+    return re.sub(r"\s+", " ", t).strip()
+
+
+def sentences(text: str) -> list[str]:
+    """Split on sentence ends, keeping abbreviations ("St.", "approx.") inside their sentence."""
+    protected = _ABBREV.sub(lambda m: m.group(0).replace(".", "\x00"), text)
+    parts = _SENT_SPLIT.split(protected)
+    return [p.replace("\x00", ".").strip() for p in parts if p and p.strip()]
+
+
+def _category(head: str, mods: str) -> tuple[str, str]:
+    h = head.lower()
+    if h in ("ego",):
+        return "ego", "ego"
+    if h == "egod":
+        return "egod", "ego"
+    if h in GROUP_HEADS:
+        return "group", "group"
+    if h in PARTY_HEADS:
+        cat = PARTY_HEADS[h]
+        if any(v in mods.lower().split() for v in VAN_MODELS):
+            cat = "van"
+        return "party", cat
+    if h in VAN_MODELS:
+        return "party", "van"
+    if h in MAKES:
+        return "party", "car"
+    return "obstacle", OBSTACLE_HEADS.get(h, "other")
+
+
+def find_mentions(sent_idx: int, s: str) -> list[Mention]:
+    """The mentions in one sentence, in order; a make directly before a head noun joins that noun phrase."""
+    out: list[Mention] = []
+    for m in _HEAD_RE.finditer(s):
+        head = m.group(1)
+        if m.start() > 0 and s[m.start() - 1] == "-" and head not in ("EGO", "EGOD"):
+            continue  # "single-car collision", "multi-vehicle": a compound adjective, not a party
+        after = s[m.end():]
+        hl = head.lower()
+        if hl not in ("ego", "egod"):
+            if _NOT_HEAD_AFTER.match(after) and not m.group(0).lower().endswith(("'s", "s'")):
+                if hl not in MAKES:
+                    continue
+            # Street names ("Van Ness Avenue", "Post Street"): a capitalised head followed by a street word.
+            if head[0].isupper() and m.start() > 0 and _STREET_SUFFIX.match(after) and hl not in MAKES:
+                continue
+            if head[0].isupper() and hl in ("van", "post", "mission", "gate", "church") and m.start() > 0:
+                continue
+        back = s[:m.start()].split() if hl not in ("ego", "egod") else []
+        mods: list[str] = []
+        det = ""
+        for w in reversed(back[-5:]):
+            wl = w.lower().strip(",;:")
+            if w.endswith((",", ";", ":")) or _STOP_BACK.match(wl):
+                if wl in DETS:
+                    det = DETS[wl]
+                break
+            if wl in DETS:
+                det = DETS[wl]
+                if wl in ("other", "second", "third"):
+                    mods.insert(0, wl)
+                    continue
+                break
+            mods.insert(0, wl)
+        mod_text = " ".join(mods)
+        kind, cat = _category(head, mod_text)
+        # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
+        if out and out[-1].kind in ("party",) and kind == "party" and s[out[-1].end:m.start()].strip() == "":
+            prev = out.pop()
+            if prev.category == "van" and cat == "car":
+                cat = "van"
+            det, mod_text = prev.det, (prev.mods + " " + prev.head).strip()
+            start = prev.start
+        else:
+            start = m.start() - sum(len(w) + 1 for w in mods)
+        pre = s[:max(0, start)]
+        pre_wo_det = re.sub(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", "", pre, flags=re.I)
+        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or pre_wo_det.strip() == ""
+        out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
+                           det=det, mods=mod_text, subject=subject))
+    return out
+
+
+_RIDE = re.compile(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
+                   r"\s*(?:[\w-]+\s+){0,2}$", re.I)
+_AFTER_PARKED = re.compile(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is)?\s*(?:double[- ])?parked\b", re.I)
+_GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
+_LOCATIVE_AFTER = re.compile(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
+                             r"following|traveling|that|which|in\s+the)", re.I)
+
+
+def _compatible(e: Entity, m: Mention) -> bool:
+    if e.kind == "obstacle" or m.kind == "obstacle":
+        return e.kind == m.kind and (m.head in e.heads or e.category == m.category)
+    if m.head in e.heads:
+        return True
+    mod_words = set(m.mods.split())
+    if any(h in mod_words or any(w in h.split() for w in mod_words) for h in e.heads if h in MAKES or
+           h in VAN_MODELS):
+        return True
+    if m.head in MAKES or m.head in VAN_MODELS:
+        return any(m.head in h or h in MAKES for h in e.heads)
+    if m.head in _GENERIC or m.mods.startswith("other"):
+        return e.category in ("car", "van", "truck", "bus")
+    return e.category == m.category and m.category not in ("car",)
+
+
+def _between(sents: list[str], a: Mention, b: Mention) -> str:
+    """Text between two mentions of one sentence (`b.start` already includes its modifiers)."""
+    return sents[a.sent][a.end:b.start] if a.sent < len(sents) else ""
+
+
+def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) -> list[Entity]:
+    """Group party/obstacle mentions into entities (coreference), in order of first mention."""
+    ents: list[Entity] = []
+    by_sent: dict[int, list[Mention]] = {}
+    for m in mentions:
+        by_sent.setdefault(m.sent, []).append(m)
+    prev: Mention | None = None
+    for m in mentions:
+        if m.kind not in ("party", "obstacle"):
+            prev = m
+            continue
+        # "an individual riding a motorized scooter": the rider and the ride are one party of the ride's category.
+        if (prev is not None and prev.sent == m.sent and prev.kind == "party" and prev.category == "pedestrian"
+                and m.kind in ("party", "obstacle") and m.category in ("bicycle", "scooter", "motorcycle", "other")
+                and prev.entity >= 0 and m.head in ("scooter", "bicycle", "bike", "motorcycle", "skateboard",
+                                                    "e-scooter", "e-bike", "moped")):
+            gap = ""
+            e = ents[prev.entity]
+            m.entity = e.idx
+            e.heads.add(m.head)
+            e.category = {"skateboard": "scooter"}.get(m.head, PARTY_HEADS.get(m.head, "scooter"))
+            e.mentions.append(m)
+            del gap
+            prev = m
+            continue
+        target: Entity | None = None
+        live = [e for e in ents if e.merged_into is None]
+        # "The trailing vehicle is a bus": a predicate noun names the same party more precisely.
+        if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
+                and prev.entity >= 0 and re.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)):
+            m.det = "the"
+            target = ents[prev.entity]
+            target.category = m.category if m.category != "car" else target.category
+        # "the curb of a traffic island median": one object named twice.
+        if m.kind == "obstacle" and prev is not None and prev.kind == "obstacle" and prev.sent == m.sent and \
+                prev.entity >= 0 and re.fullmatch(r"\s*(?:of|on)\s+(?:a|an|the)?\s*", _between(sents, prev, m)):
+            target = ents[prev.entity]
+            target.heads.add(m.head)
+            if m.category == "barrier":
+                target.category = "barrier"
+            m.entity = target.idx
+            target.mentions.append(m)
+            prev = m
+            continue
+        if target is not None:
+            pass
+        elif m.det != "a":
+            for e in reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))):
+                if _compatible(e, m):
+                    target = e
+                    break
+        else:
+            # Opening sentences summarise ("was in a collision involving an SUV"); the same indefinite noun later
+            # is the same party, told in detail.
+            for e in live:
+                if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and (
+                        m.head in e.heads or (e.kind == m.kind and e.category == m.category)):
+                    target = e
+                    break
+        if target is None and m.det != "a" and m.kind == "party" and m.head in _GENERIC and \
+                not _LOCATIVE_AFTER.match(sents[m.sent][m.end:]) and not m.mods:
+            # "the vehicle" with nothing before it to refer to: these narratives mean the AV.
+            m.kind, m.category = "ego", "ego"
+            prev = m
+            continue
+        if target is None:
+            target = Entity(idx=len(ents), kind=m.kind, category=m.category, heads={m.head})
+            ents.append(target)
+        else:
+            target.heads.add(m.head)
+            if target.kind == "party" and m.kind == "party" and target.category == "car" and m.category != "car":
+                target.category = m.category  # "the vehicle" then "the Toyota Sienna": the specific noun wins
+        m.entity = target.idx
+        target.mentions.append(m)
+        prev = m
+    return ents
+
+
+def mark_parked(ents: list[Entity], sents: list[str]) -> None:
+    for e in ents:
+        if e.kind != "party" or e.category not in ("car", "van", "truck", "bus"):
+            continue
+        for m in e.mentions:
+            s = sents[m.sent]
+            if PARKED_WORDS.search(m.mods) or _AFTER_PARKED.match(s[m.end:]):
+                e.parked = True

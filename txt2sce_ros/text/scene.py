@@ -1,0 +1,163 @@
+"""Road, environment and signal fields read from the whole narrative (sketch.md's rules for hard cases)."""
+
+from __future__ import annotations
+
+import re
+
+from ..sketch import Environment, RoadInfo
+from .lexicon import NUMBER_WORDS
+
+_JUNCTION = re.compile(r"\bintersection\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
+                       r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
+                       r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
+                       r"\bthe\s+light\s+turned\b", re.I)
+_NOT_JUNCTION = re.compile(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
+                           r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
+_T_JUNCTION = re.compile(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
+                         r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
+_TURN_ONTO = re.compile(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^.,]{1,40}?\s+)?onto\b|\b(?:left|right)"
+                        r"\s+turn\s+(?:from\s+[^.,]{1,40}?\s+)?onto\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
+                        r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b", re.I)
+_PRIOR_TURN = re.compile(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
+                         r"\bonto\b|\bafter\s+turning\b", re.I)
+_ROUNDABOUT = re.compile(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
+_PARKING = re.compile(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:\w+\s+)?(?:parking\s+(?:lot|"
+                      r"structure|garage|facility)|garage|parking\s+area|depot|lot)\b|\bparking\s+(?:structure|"
+                      r"garage)\b", re.I)
+_CURVE = re.compile(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
+_ROADWAY = re.compile(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
+                      r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
+                      r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
+                      r"road|curb|driveway)", re.I)
+_SIGNAL = re.compile(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
+                     r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b", re.I)
+_STOP_SIGN = re.compile(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
+_ONE_WAY = re.compile(r"\bone[- ]way\b", re.I)
+_TWO_WAY = re.compile(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\s+(?:lane|traffic|direction)\b|"
+                      r"\bon-?coming\b|\bopposite\s+lane\b|\btraveling\s+the\s+wrong\s+way\b", re.I)
+_LANES_N = re.compile(r"\b(one|two|three|four|five|six|\d)[- ]lanes?\b|\b(one|two|three|four|five|six|\d)\s+"
+                      r"(?:\w+\s+)?lanes\b", re.I)
+_LANE_ORD = re.compile(r"\b(second|third|fourth|2nd|3rd|4th)\s+lane\s+from\s+the\s+(?:left|right)", re.I)
+_LANE_MIDDLE = re.compile(r"\b(?:middle|center|centre)\s+lane\b", re.I)
+_LANE_SIDE = re.compile(r"\b(?:left|right)most\b|\bfar\s+(?:left|right)\s+lane\b|\b(?:left|right)\s+lane\b|"
+                        r"\b(?:left|right)\s+(?:adjacent\s+)?lane\b|\badjacent\s+lane\b|\blane\s+to\s+the\s+(?:left|"
+                        r"right)\b|\b(?:left|right)\s+turn\s+lane\b|\bturn\s+lane\b|\bbus\s+(?:only\s+)?lane\b|"
+                        r"\bthe\s+(?:left|right)\s+lane\b", re.I)
+_OPPOSING_LANE = re.compile(r"\b(?:oncoming|opposing|opposite)\s+(?:\w+\s+)?lane", re.I)
+
+_WEATHER = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
+            ("snow", r"\bsnow(?:ing|y)?\b|\bsleet\b"), ("cloudy", r"\bcloudy\b|\bovercast\b"),
+            ("clear", r"\bsunny\b|\bclear\s+(?:weather|skies|day|conditions)\b|\bweather:?\s+clear\b|"
+                      r"\bweather\s+was\s+clear\b"))
+_SURFACE = (("wet", r"\bwet\b|\bslick\b|\bpuddl"), ("snow_ice", r"\bic(?:y|e)\b|\bsnow[- ]covered\b"),
+            ("dry", r"\bdry\s+(?:road|pavement|surface|roadway)\b|\bsurface:?\s+dry\b"))
+_CLOCK = re.compile(r"\b(\d{1,2})(?::(\d{2}))?\s*(a\.?m\.?|p\.?m\.?)(?![a-z])", re.I)
+
+
+def lighting_from_text(t: str) -> str:
+    if re.search(r"\b(?:dusk|dawn|twilight|sunset|sunrise)\b", t, re.I):
+        return "dusk_dawn"
+    if re.search(r"\b(?:daylight|daytime|sunny\s+day)\b", t, re.I):
+        return "day"
+    if re.search(r"\bdark\b[^.]{0,30}\b(?:no|without)\s+street\s*lights?|\bunlit\b|\bpitch\s+dark", t, re.I):
+        return "night_dark"
+    if re.search(r"\bstreet\s*lights?\b|\bdark\b|\bnight(?:time)?\b", t, re.I):
+        return "night_lit"
+    m = _CLOCK.search(t)
+    if m:
+        hour = int(m.group(1)) % 12 + (12 if m.group(3).lower().startswith("p") else 0)
+        if 8 <= hour <= 16:
+            return "day"
+    return "unknown"
+
+
+def environment(t: str) -> Environment:
+    weather = next((w for w, p in _WEATHER if re.search(p, t, re.I)), "unknown")
+    surface = next((w for w, p in _SURFACE if re.search(p, t, re.I)), "unknown")
+    if weather == "rain" and surface == "unknown":
+        surface = "wet"
+    return Environment(weather=weather, lighting=lighting_from_text(t), surface=surface)  # type: ignore[arg-type]
+
+
+_LOT_EXIT = re.compile(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+                       r"(?:parking\s+(?:lot|garage|structure|space|spot)|driveway|garage|alley|lot)\b[^.]*?"
+                       r"(?:\bonto\b|$)", re.I)
+_ONGOING_TURN = re.compile(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)
+
+
+def is_junction(sents: list[str], first_sent: int) -> bool:
+    """Did the interaction happen at a junction? Turns finished before the interaction began ("after turning right
+    onto X", a turn told in a sentence before the other party appears), turns out of a driveway or lot, and
+    intersections the AV was only near do not count."""
+    for i, s in enumerate(sents):
+        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", s)))
+        if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
+            return True
+        if _TURN_ONTO.search(cleaned) and (i >= first_sent or _ONGOING_TURN.search(cleaned)):
+            return True
+    return False
+
+
+def road(t: str, *, junction: bool) -> RoadInfo:
+    if _ROUNDABOUT.search(t):
+        layout = "roundabout"
+    elif _PARKING.search(t) and not re.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+                                              r"parking", t, re.I):
+        layout = "parking"
+    elif junction:
+        layout = "junction3" if _T_JUNCTION.search(t) else "junction4"
+    elif _CURVE.search(t):
+        layout = "curve"
+    elif _ROADWAY.search(t):
+        layout = "straight"
+    else:
+        layout = "unknown"
+    if _STOP_SIGN.search(t):
+        control = "stop_sign"
+    elif _SIGNAL.search(t) and layout.startswith("junction"):
+        control = "signal"
+    elif layout.startswith("junction") or layout == "roundabout":
+        control = "unknown"
+    else:
+        control = "none" if layout != "unknown" else "unknown"
+    one_way: bool | None = None
+    if _ONE_WAY.search(t):
+        one_way = True
+    elif _TWO_WAY.search(t):
+        one_way = False
+    return RoadInfo(layout=layout, control=control, one_way=one_way, lanes=lane_count(t))  # type: ignore[arg-type]
+
+
+def lane_count(t: str) -> int | None:
+    """The least lane count the text states or implies for the AV's direction."""
+    t2 = _OPPOSING_LANE.sub(" ", t)
+    n = 0
+    for m in _LANES_N.finditer(t2):
+        w = (m.group(1) or m.group(2)).lower()
+        n = max(n, NUMBER_WORDS.get(w, int(w) if w.isdigit() else 0))
+    for m in _LANE_ORD.finditer(t2):
+        n = max(n, {"second": 2, "2nd": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4}[m.group(1).lower()])
+    if _LANE_MIDDLE.search(t2):
+        n = max(n, 3)
+    if _LANE_SIDE.search(t2):
+        n = max(n, 2)
+    return n or None
+
+
+def signal_state(t: str, *, layout: str, control: str) -> str:
+    """The AV's light when its actions begin."""
+    if not layout.startswith("junction") and layout != "roundabout":
+        return "none"
+    if control == "stop_sign":
+        return "none"
+    if control != "signal":
+        return "unknown"
+    if re.search(r"\bEGO(?:D)?\b[^.]{0,60}\b(?:stopped|waiting|stop)\b[^.]{0,30}\bred\b|\bred\s+light\b[^.]{0,40}"
+                 r"\bEGO\b[^.]{0,20}\b(?:stopped|waiting)|\bstopped\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
+        return "red"
+    if re.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
+        return "green"
+    for colour in ("green", "yellow", "red"):
+        if re.search(rf"\b{colour}\b", t, re.I):
+            return colour
+    return "unknown"
