@@ -42,12 +42,14 @@ class BagReading:
 
     def messages(self, topics: frozenset[str] | None = None) -> Iterator[RawMessage]:
         mcaps = _mcap_files(self.path)
+        skip = 0
         if (self.path / "metadata.yaml").is_file() if self.path.is_dir() else False:
             try:
                 yield from self._rosbags(topics)
                 return
             except _Fallback as exc:
                 self.issues.append(str(exc))
+                skip = self.count             # already delivered (file order = time order for our recordings)
         elif self.path.is_dir():
             self.issues.append("no metadata.yaml: the recording was not closed (crash or kill); "
                                "reading the MCAP file record by record")
@@ -55,6 +57,9 @@ class BagReading:
         for f in mcaps:
             for msg in scan_mcap(f, self.issues):
                 if topics is None or msg.topic in topics:
+                    if skip:
+                        skip -= 1
+                        continue
                     self.count += 1
                     yield msg
 
@@ -74,7 +79,8 @@ class BagReading:
                 self.count += 1
                 yield RawMessage(conn.topic, conn.msgtype, ts, data)
         except Exception as exc:
-            self.issues.append(f"damaged after {self.count} message(s) ({type(exc).__name__}: {exc})")
+            raise _Fallback(f"damaged after {self.count} message(s) ({type(exc).__name__}: {exc}); reading the "
+                            f"rest record by record") from exc
         finally:
             reader.close()
 

@@ -3,7 +3,9 @@
 Rules (paper §IV RQ2, Table VI: "only the last two behaviour types may overlap, while others are mutually
 exclusive"):
 - error: the run itself broke (the player reports `verdict_hint: error`, e.g. planner not responding or an invalid
-  scenario), the run never reported its end, or no frame was observed. "Nothing observed" is never a pass.
+  scenario), or no frame was observed. "Nothing observed" is never a pass.
+- a run that never reported its end (killed, recording cut short) is a fail if a category fired in the part
+  observed (that misbehaviour happened whatever came next), else an error — never a pass.
 - StartFail, Misinterp and Collisions exclude every other category: when one of them fired, the run gets exactly
   one — the one whose first event came first (a red light run at 5 s that ends in a crash at 6 s is Misinterp:
   the earliest misbehaviour is the cause). Ties break in the order Collisions, Misinterp, StartFail.
@@ -58,9 +60,14 @@ def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frame
                   end_reason=status.end_reason if status else "", t_end=t_end, frames=frames,
                   violations=violations, notes=notes)
     why = error_reason(status, frames)
-    if why:
-        return RunVerdict(Verdict.ERROR, error=why, **common)
     found = findings(violations)
+    incomplete = status is None and frames > 0
+    if why and not (incomplete and found):
+        return RunVerdict(Verdict.ERROR, error=why, **common)
+    if incomplete:
+        # Cut short (crash, kill, damaged recording) after a misbehaviour: that failure is certain whatever
+        # came next, so the verdict is fail for the part observed. Without one it stays an error.
+        common["notes"] = ("run incomplete (no final run status): judged on the part observed",) + notes
     exclusive = [found[c] for c in EXCLUSIVE if c in found]
     if exclusive:
         # min() keeps the first of equal times, and EXCLUSIVE lists the tie order.

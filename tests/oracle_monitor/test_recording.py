@@ -1,0 +1,171 @@
+"""Recording round trips (rosbags reader and the mcap reader), offline judging of recordings, damaged bags."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+from mcap.reader import make_reader
+from mcap_ros2.decoder import DecoderFactory
+
+from oracle_monitor import Oracle, OracleParams
+from oracle_monitor.bagread import read_bag
+from oracle_monitor.judge import judge_bag
+from oracle_monitor.runwriter import RunWriter
+from txt2sce_ros import contract as c
+from txt2sce_ros.contract import Goal, RunStatus, ScenarioEnvelope, SignalState, TrafficLightState, Verdict
+from txt2sce_ros.errors import InputError
+
+from .oracle_runs import car, esmini_map, straight_run
+
+PARAMS = OracleParams.from_config()
+GOAL = Goal(120.0, 0.0, 0.0)
+
+
+def _frames():
+    lights = lambda t: [TrafficLightState("sig1", SignalState.RED if t < 9 else SignalState.GREEN, 50.0, 0.0,
+                                          0.0, "1", (-1,))]
+    return straight_run(lambda t: 10.0, 8.0, lights=lights, objects=lambda t: [car("npc1", t, 80.0, y=-3.5)])
+
+
+def _envelope() -> ScenarioEnvelope:
+    path = esmini_map("straight_500m.xodr")
+    return ScenarioEnvelope(id="rt1", xosc="<OpenSCENARIO/>", map_path=str(path), map_xodr=path.read_text())
+
+
+def _record(path: Path, frames, status: RunStatus | None, *, live: bool = True):
+    """Write a run as the graph would, with the live oracle's violations and verdict; returns that verdict."""
+    from txt2sce_ros.road import RoadNetwork
+
+    env = _envelope()
+    oracle = Oracle(RoadNetwork.from_string(env.map_xodr, source=env.map_path), GOAL, PARAMS, scenario_id=env.id)
+    with RunWriter(path, time_base_ns=1_700_000_000_000_000_000) as w:
+        w.begin(env, GOAL)
+        for f in frames:
+            w.frame(f)
+            if live:
+                w.violations(f.t, oracle.observe(f))
+        verdict = oracle.finish(status)
+        w.end(status, verdict if live else None)
+    return verdict
+
+
+def test_round_trip_with_rosbags_and_mcap_readers(tmp_path: Path) -> None:
+    frames = _frames()
+    live = _record(tmp_path / "bag", frames, RunStatus("rt1", "finished", 8.0, "time_limit"))
+    assert (tmp_path / "bag" / "metadata.yaml").is_file()
+    reading = read_bag(tmp_path / "bag")
+    msgs = list(reading.messages())
+    assert reading.method == "rosbags" and reading.complete
+    per_topic = {t: sum(1 for m in msgs if m.topic == t) for t in {m.topic for m in msgs}}
+    assert per_topic[c.TOPIC_EGO_ODOM] == len(frames) == per_topic[c.TOPIC_OBJECTS_ODOM]
+    assert per_topic[c.TOPIC_SCENARIO] == 1 and per_topic[c.TOPIC_RUN_STATUS] == 2
+    # The mcap library's own reader with its ROS 2 decoder (what Foxglove uses) sees the same messages.
+    with open(tmp_path / "bag" / "bag.mcap", "rb") as fh:
+        reader = make_reader(fh, decoder_factories=[DecoderFactory()])
+        decoded = list(reader.iter_decoded_messages(topics=[c.TOPIC_EGO_ODOM, c.TOPIC_OBJECTS_MARKERS]))
+    odoms = [m for _, ch, _, m in decoded if ch.topic == c.TOPIC_EGO_ODOM]
+    assert len(odoms) == len(frames)
+    assert odoms[37].pose.pose.position.x == pytest.approx(frames[37].ego.x)
+    markers = [m for _, ch, _, m in decoded if ch.topic == c.TOPIC_OBJECTS_MARKERS]
+    assert [mk.text for mk in markers[0].markers] == ["ego", "npc1"]
+    assert live.verdict is Verdict.FAIL and live.category_names() == ("Misinterp",)
+
+
+def test_offline_verdict_equals_live_verdict(tmp_path: Path) -> None:
+    live = _record(tmp_path / "bag", _frames(), RunStatus("rt1", "finished", 8.0, "time_limit"))
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    assert result.complete and len(result.verdicts) == 1
+    assert result.verdicts[0] == live                           # every field: categories, times, violations
+    assert result.live == [live.to_dict()] and result.agrees_with_live() is True
+
+
+def test_truncated_bag_gives_clear_issue_and_verdict_for_readable_part(tmp_path: Path) -> None:
+    _record(tmp_path / "bag", _frames(), RunStatus("rt1", "finished", 8.0, "time_limit"))
+    mcap = tmp_path / "bag" / "bag.mcap"
+    data = mcap.read_bytes()
+    mcap.write_bytes(data[: int(len(data) * 0.8)])              # the tail (summary, last chunk's end) is gone
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    assert not result.complete
+    assert any("truncated" in i for i in result.issues) and any("rosbags cannot open" in i for i in result.issues)
+    (verdict,) = result.verdicts
+    # The red light (at 4.65 s) lies in the readable part, so the run is known to have failed.
+    assert verdict.verdict is Verdict.FAIL and verdict.category_names() == ("Misinterp",)
+    # Cut before the red light: no final status, nothing failed yet -> error (incomplete), never pass.
+    mcap.write_bytes(data[: int(len(data) * 0.3)])
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    (verdict,) = result.verdicts
+    assert verdict.verdict is Verdict.ERROR and "no final run status" in verdict.error
+
+
+def test_corrupted_bytes_and_garbage_are_reported(tmp_path: Path) -> None:
+    _record(tmp_path / "bag", _frames(), RunStatus("rt1", "finished", 8.0, "time_limit"))
+    mcap = tmp_path / "bag" / "bag.mcap"
+    data = bytearray(mcap.read_bytes())
+    mid = len(data) // 2
+    # A 4 KiB burst of damage in the middle: it spans several record headers, so the structure breaks. (Flipped
+    # payload bytes alone are undetectable: rosbags writes chunks without CRCs.)
+    data[mid:mid + 4096] = b"\xff" * 4096
+    mcap.write_bytes(bytes(data))
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    assert not result.complete and result.verdicts
+    assert any("damaged" in i or "truncated" in i for i in result.issues), result.issues
+    assert result.verdicts[0].frames < 161
+    junk = tmp_path / "junk"
+    junk.mkdir()
+    (junk / "junk.mcap").write_bytes(b"not an mcap at all")
+    with pytest.raises(InputError, match="nothing readable"):
+        judge_bag(junk, PARAMS)
+
+
+def test_killed_recorder_leaves_a_readable_bag(tmp_path: Path) -> None:
+    # A child process records frames with the default 0.5 s flush and is killed with SIGKILL mid-run: no
+    # metadata.yaml, no MCAP footer. The flushed prefix must still read and judge.
+    script = textwrap.dedent(f"""
+        import sys, time
+        sys.path.insert(0, {str(Path(__file__).resolve().parents[2])!r})
+        from oracle_monitor.runwriter import RunWriter
+        from tests.oracle_monitor.oracle_runs import straight_run, car
+        from txt2sce_ros.contract import Goal
+        frames = straight_run(lambda t: 10.0, 60.0, objects=lambda t: [car("lead", t, 30.0)])
+        w = RunWriter({str(tmp_path / 'bag')!r})
+        w.begin(None, Goal(500.0, 0.0, 0.0), scenario_id="killed")
+        for k, f in enumerate(frames):
+            w.frame(f)
+            if k == 100:
+                print("recorded", flush=True)
+            time.sleep(0.002)
+        time.sleep(60)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, env=dict(os.environ))
+    try:
+        assert proc.stdout.readline().strip() == b"recorded"
+        time.sleep(1.2)                                         # past at least one flush
+    finally:
+        proc.send_signal(signal.SIGKILL)
+        proc.wait(timeout=10)
+    assert not (tmp_path / "bag" / "metadata.yaml").exists()
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    assert any("no metadata.yaml" in i for i in result.issues)
+    (verdict,) = result.verdicts
+    assert verdict.frames > 100
+    # The contact with the lead car at ~2.5 s was recorded before the kill: a known failure despite the crash.
+    assert verdict.verdict is Verdict.FAIL and verdict.category_names() == ("Collisions",)
+    with open(tmp_path / "bag" / "bag.mcap", "rb") as fh:      # the mcap stream reader reads the prefix too
+        from mcap.stream_reader import StreamReader
+        from mcap.records import Message
+
+        n = 0
+        try:
+            for rec in StreamReader(fh, skip_magic=False).records:
+                n += isinstance(rec, Message)
+        except Exception:
+            pass
+    assert n > 100 * 4
