@@ -83,3 +83,14 @@ def test_planview_is_continuous_across_geometries_of_real_maps() -> None:
                 xa, ya, ha = a.evaluate(np.array([a.length]))
                 xb, yb, hb = b.evaluate(np.array([0.0]))
                 assert math.hypot(xa[0] - xb[0], ya[0] - yb[0]) < 0.02, (name, road.id, b.s)
+
+
+def test_scalar_fast_path_equals_vectorised_evaluation() -> None:
+    from .conftest import esmini_map
+
+    for name in ("curves", "e6mini", "fabriksgatan", "multi_intersections"):
+        for road in esmini_map(name).roads.values():
+            s = np.linspace(-1.0, road.length + 1.0, 37)
+            x, y, h = road.plan_view.evaluate(s)
+            for i, si in enumerate(s):
+                assert road.plan_view.at(float(si)) == pytest.approx((x[i], y[i], h[i]), abs=1e-9)

@@ -10,6 +10,7 @@ polynomial is in the local u coordinate, not in s), which is tabulated once at c
 
 from __future__ import annotations
 
+import bisect
 import math
 from dataclasses import dataclass, field
 
@@ -47,9 +48,23 @@ class Geometry:
         c, s = math.cos(self.hdg), math.sin(self.hdg)
         return self.x + c * u - s * v, self.y + s * u + c * v, self.hdg + dh
 
+    def local_at(self, ds: float) -> tuple[float, float, float]:
+        """Scalar `local` (subclasses with a closed form override it to skip numpy's per-call overhead)."""
+        u, v, dh = self.local(np.array([ds]))
+        return float(u[0]), float(v[0]), float(dh[0])
+
+    def at(self, ds: float) -> tuple[float, float, float]:
+        """Scalar world (x, y, heading) at local arc length `ds`."""
+        u, v, dh = self.local_at(ds)
+        c, s = math.cos(self.hdg), math.sin(self.hdg)
+        return self.x + c * u - s * v, self.y + s * u + c * v, self.hdg + dh
+
 
 @dataclass(frozen=True, slots=True)
 class Line(Geometry):
+    def local_at(self, ds: float) -> tuple[float, float, float]:
+        return ds, 0.0, 0.0
+
     def local(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         return ds, np.zeros_like(ds), np.zeros_like(ds)
 
@@ -68,6 +83,13 @@ def _arc_local(ds: np.ndarray, k: float) -> tuple[np.ndarray, np.ndarray, np.nda
 @dataclass(frozen=True, slots=True)
 class Arc(Geometry):
     k: float = 0.0
+
+    def local_at(self, ds: float) -> tuple[float, float, float]:
+        k = self.k
+        if abs(k) < _MIN_CURV:
+            return ds, 0.0, 0.0
+        dh = k * ds
+        return math.sin(dh) / k, 2.0 * math.sin(dh / 2.0) ** 2 / k, dh
 
     def local(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         return _arc_local(ds, self.k)
@@ -132,6 +154,14 @@ class ParamPoly3(Geometry):
     def _p(self, ds: np.ndarray) -> np.ndarray:
         return ds / self.length if (self.normalized and self.length > 0) else ds
 
+    def local_at(self, ds: float) -> tuple[float, float, float]:
+        p = ds / self.length if (self.normalized and self.length > 0) else ds
+        u = self.au + p * (self.bu + p * (self.cu + p * self.du))
+        v = self.av + p * (self.bv + p * (self.cv + p * self.dv))
+        du = self.bu + p * (2 * self.cu + 3 * self.du * p)
+        dv = self.bv + p * (2 * self.cv + 3 * self.dv * p)
+        return u, v, math.atan2(dv, du)
+
     def local(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         p = self._p(ds)
         u = self.au + p * (self.bu + p * (self.cu + p * self.du))
@@ -194,6 +224,7 @@ class PlanView:
     def __init__(self, geometries: list[Geometry]) -> None:
         self.geometries = sorted(geometries, key=lambda g: g.s)
         self._starts = np.array([g.s for g in self.geometries], dtype=float)
+        self._start_list = [g.s for g in self.geometries]
 
     @property
     def length(self) -> float:
@@ -201,6 +232,20 @@ class PlanView:
             return 0.0
         last = self.geometries[-1]
         return last.s + last.length
+
+    def geometry_at(self, s: float) -> Geometry:
+        """The geometry holding road s (the first/last one outside the road)."""
+        i = bisect.bisect_right(self._start_list, s) - 1
+        return self.geometries[min(max(i, 0), len(self.geometries) - 1)]
+
+    def at(self, s: float) -> tuple[float, float, float]:
+        """Scalar world (x, y, heading) of the reference line at road s."""
+        g = self.geometry_at(s)
+        return g.at(s - g.s)
+
+    def curvature_at(self, s: float) -> float:
+        g = self.geometry_at(s)
+        return float(g.curvature(np.array([s - g.s]))[0])
 
     def _groups(self, s: np.ndarray) -> np.ndarray:
         idx = np.searchsorted(self._starts, s, side="right") - 1

@@ -7,6 +7,7 @@ cubic polynomials in ds = s - section start - sOffset, each valid from its sOffs
 
 from __future__ import annotations
 
+import bisect
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,6 +39,20 @@ def eval_cubics(records: tuple[Cubic, ...], s: np.ndarray, *, default: float = 0
     coef = np.array([[r.start, r.a, r.b, r.c, r.d] for r in records])[idx]
     ds = s - coef[..., 0]
     return coef[..., 1] + ds * (coef[..., 2] + ds * (coef[..., 3] + ds * coef[..., 4]))
+
+
+def cubic_at(records: tuple[Cubic, ...], s: float) -> tuple[float, float]:
+    """Scalar value and slope d/ds of a piecewise cubic (same validity rule as `eval_cubics`), without numpy:
+    the per-entity, per-step calls of players and planners are dominated by array overhead otherwise."""
+    if not records:
+        return 0.0, 0.0
+    if len(records) == 1:
+        r = records[0]
+    else:
+        i = bisect.bisect_right([c.start for c in records], s) - 1
+        r = records[i if i > 0 else 0]
+    ds = s - r.start
+    return r.a + ds * (r.b + ds * (r.c + ds * r.d)), r.b + ds * (2.0 * r.c + 3.0 * ds * r.d)
 
 
 @dataclass(frozen=True, slots=True)
@@ -81,6 +96,31 @@ class LaneSection:
     @property
     def length(self) -> float:
         return self.end - self.s
+
+    def lane_bounds_at(self, lane_id: int, s: float, offset: tuple[float, float]) -> tuple[float, float, float, float]:
+        """Scalar (inner t, outer t, d inner/ds, d outer/ds) of one lane at road s, given laneOffset value and
+        slope there."""
+        ds = s - self.s
+        base, dbase = offset
+        if lane_id == 0:
+            return base, base, dbase, dbase
+        side = 1.0 if lane_id > 0 else -1.0
+        inner, dinner = base, dbase
+        step = 1 if lane_id > 0 else -1
+        for lid in range(step, lane_id + step, step):
+            lane = self.lanes[lid]
+            if lane.widths or not lane.borders:
+                w, dw = cubic_at(lane.widths, ds)
+                if w < 0.0:
+                    w, dw = 0.0, 0.0
+                outer, douter = inner + side * w, dinner + side * dw
+            else:
+                b, db = cubic_at(lane.borders, ds)
+                outer, douter = base + b, dbase + db
+            if lid == lane_id:
+                return inner, outer, dinner, douter
+            inner, dinner = outer, douter
+        raise KeyError(lane_id)
 
     def borders_t(self, s: np.ndarray, lane_offset: np.ndarray) -> dict[int, np.ndarray]:
         """Outer border t of every lane (and 0: the centre line, at laneOffset) at road s (array).

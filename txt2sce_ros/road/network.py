@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Iterable
 import numpy as np
 
 from ..errors import InputError
-from .lanes import LaneSection, eval_cubics
+from .lanes import LaneSection, cubic_at, eval_cubics
 from .model import Controller, Junction, LaneRef, Road, Signal
 from .parse import parse_network
 
@@ -149,23 +149,27 @@ class RoadNetwork:
 
     def road_to_world(self, road_id: str | int, s: float, t: float = 0.0) -> tuple[float, float, float]:
         """World (x, y, h) of road coordinates (s, t); h = reference-line heading at s."""
-        x, y, h = self.road_to_world_array(road_id, np.array([float(s)]), float(t))
-        return float(x[0]), float(y[0]), float(h[0])
+        xr, yr, hr = self._ref_scalar(self.road(road_id), float(s))
+        return xr - t * math.sin(hr), yr + t * math.cos(hr), hr
+
+    def _ref_scalar(self, road: Road, s: float) -> tuple[float, float, float]:
+        return road.plan_view.at(s)
 
     def road_heading(self, road_id: str | int, s: float) -> float:
-        return float(self.reference(road_id, np.array([float(s)]))[2][0])
+        return self._ref_scalar(self.road(road_id), float(s))[2]
+
+    def _bounds_scalar(self, road: Road, lane_id: int, s: float) -> tuple[int, float, float, float, float]:
+        si, sec = self._lane(road, lane_id, s)
+        inner, outer, di, do = sec.lane_bounds_at(int(lane_id), s, cubic_at(road.lane_offsets, s))
+        return si, inner, outer, di, do
 
     def lane_center_t(self, road_id: str | int, lane_id: int, s: float) -> float:
-        road = self.road(road_id)
-        si, _ = self._lane(road, lane_id, s)
-        inner, outer = self.lane_bounds(road.id, lane_id, np.array([float(s)]), si)
-        return float(0.5 * (inner[0] + outer[0]))
+        _, inner, outer, _, _ = self._bounds_scalar(self.road(road_id), lane_id, float(s))
+        return 0.5 * (inner + outer)
 
     def lane_width(self, road_id: str | int, lane_id: int, s: float) -> float:
-        road = self.road(road_id)
-        si, _ = self._lane(road, lane_id, s)
-        inner, outer = self.lane_bounds(road.id, lane_id, np.array([float(s)]), si)
-        return float(abs(outer[0] - inner[0]))
+        _, inner, outer, _, _ = self._bounds_scalar(self.road(road_id), lane_id, float(s))
+        return abs(outer - inner)
 
     def lane_type(self, road_id: str | int, lane_id: int, s: float) -> str:
         road = self.road(road_id)
@@ -183,11 +187,18 @@ class RoadNetwork:
     def lane_to_world(self, road_id: str | int, lane_id: int, s: float, offset: float = 0.0
                       ) -> tuple[float, float, float]:
         """World (x, y, h) of a lane position: lane centre at road s shifted by `offset` toward +t of the road
-        (OpenSCENARIO LanePosition/@offset, as esmini reads it); h = driving direction of the lane."""
+        (OpenSCENARIO LanePosition/@offset, as esmini reads it); h = driving direction of the lane, including the
+        lane centre's slope relative to the reference line (widening lanes, laneOffset)."""
         road = self.road(road_id)
-        si, _ = self._lane(road, lane_id, s)
-        x, y, h = self.lane_to_world_array(road.id, lane_id, np.array([float(s)]), float(offset), section=si)
-        return float(x[0]), float(y[0]), float(h[0])
+        s = float(s)
+        si, inner, outer, di, do = self._bounds_scalar(road, lane_id, s)
+        t = 0.5 * (inner + outer) + offset
+        xr, yr, hr = self._ref_scalar(road, s)
+        k = road.plan_view.curvature_at(s)
+        h = hr + math.atan2(0.5 * (di + do), max(1.0 - k * t, 1e-3))
+        if not self.lane_forward(road.id, lane_id, road.sections[si].s):
+            h += math.pi
+        return xr - t * math.sin(hr), yr + t * math.cos(hr), math.atan2(math.sin(h), math.cos(h))
 
     # --- lanes as polylines ----------------------------------------------------------------------------------------
 
