@@ -238,13 +238,15 @@ def roundabout_map() -> MapSpec:
         entry_start = leg.end_pose()
         entry = RoadSpec(str(base + 2), f"entry_{k + 1}", entry_start,
                          (Hermite(entry_start.local(ring_out.start)),),
-                         right=(LaneSpec(-1, "driving", DRIVING_W, NO_MARK, predecessor=-1, successor=-1),),
+                         right=(LaneSpec(-1, "driving", DRIVING_W, NO_MARK, predecessor=-1, successor=-1,
+                                         width_end=RING_W),),
                          junction=jid, predecessor=RoadLink("road", leg.id, "end"),
                          successor=RoadLink("road", ring_out.id, "start"), speed_kmh=30.0)
         exit_end = leg.end_pose()
         exit_end = Pose(exit_end.x, exit_end.y, exit_end.h + math.pi)
         exit_ = RoadSpec(str(base + 3), f"exit_{k + 1}", through_start, (Hermite(through_start.local(exit_end)),),
-                         right=(LaneSpec(-1, "driving", DRIVING_W, NO_MARK, predecessor=-1, successor=1),),
+                         right=(LaneSpec(-1, "driving", RING_W, NO_MARK, predecessor=-1, successor=1,
+                                         width_end=DRIVING_W),),
                          junction=jid, predecessor=RoadLink("road", ring_in.id, "end"),
                          successor=RoadLink("road", leg.id, "end"), speed_kmh=30.0)
         conn_roads += [through, entry, exit_]

@@ -108,27 +108,10 @@ def _segment(net: RoadNetwork, road: Road, marks: MarkTable) -> tuple[Segment, f
 # --------------------------------------------------------------------------------------------- connections
 
 
-def _heading_turn(net: RoadNetwork, road: Road, lane_id: int, section: int, enter_at_start: bool) -> Turn:
-    """Turn type from the heading change along a connecting lane (used only if the road model cannot tell)."""
-    sec = road.sections[section]
-    s0, s1 = (sec.s, min(sec.end, road.length) - 1e-6) if enter_at_start else (min(sec.end, road.length) - 1e-6,
-                                                                                  sec.s)
-    _, _, h0 = net.road_to_world(road.id, s0)
-    _, _, h1 = net.road_to_world(road.id, s1)
-    dh = math.atan2(math.sin(h1 - h0), math.cos(h1 - h0))
-    if abs(dh) > math.radians(150):
-        return Turn.UTURN
-    if abs(dh) < math.radians(30):
-        return Turn.STRAIGHT
-    return Turn.LEFT if dh > 0 else Turn.RIGHT
-
-
-def _turn(net: RoadNetwork, inc: LaneRef, conn: LaneRef, enter_at_start: bool) -> Turn:
-    try:
-        return Turn(net.turn_type(inc, conn))
-    except (ImportError, AttributeError):
-        # The road model's topology module is newer than this database; geometry gives the same answer.
-        return _heading_turn(net, net.roads[conn.road_id], conn.lane_id, conn.section, enter_at_start)
+def _turn(net: RoadNetwork, inc: LaneRef, conn: LaneRef) -> Turn:
+    """Turn type from geometry: the road model compares the incoming lane's and the connecting lane's exit
+    headings."""
+    return Turn(net.turn_type(inc, conn))
 
 
 def _follow(road: Road, lane_id: int, from_start: bool) -> tuple[int | None, int, int | None]:
@@ -217,7 +200,7 @@ class _EdgeBuilder:
         far = net.roads[far_link.element_id]
         far_lane, far_sec, far_con_lane = _follow(con, con_lane, contact_start)
         if into:
-            turn = _turn(net, LaneRef(inc.id, sec_inc, from_lane), LaneRef(con.id, sec_con, con_lane), contact_start)
+            turn = _turn(net, LaneRef(inc.id, sec_inc, from_lane), LaneRef(con.id, sec_con, con_lane))
             edge = ConnectionEdge(inc.id, far.id, int(from_lane), None if far_lane is None else int(far_lane),
                                   con.id, int(con_lane), jid, turn, *self._light(inc, from_lane, sec_inc, con,
                                                                                    con_lane, not contact_start))
@@ -230,8 +213,7 @@ class _EdgeBuilder:
             far_sec_idx = len(far.sections) - 1 if far_at_end else 0
             if far_lane not in far.sections[far_sec_idx].lanes or not _is_driving(far, far_sec_idx, far_lane):
                 return
-            turn = _turn(net, LaneRef(far.id, far_sec_idx, far_lane), LaneRef(con.id, far_sec, far_con_lane),
-                         not contact_start)
+            turn = _turn(net, LaneRef(far.id, far_sec_idx, far_lane), LaneRef(con.id, far_sec, far_con_lane))
             edge = ConnectionEdge(far.id, inc.id, int(far_lane), int(from_lane), con.id, int(far_con_lane), jid,
                                   turn, *self._light(far, far_lane, far_sec_idx, con, far_con_lane, contact_start))
         if edge.from_road == edge.to_road and edge.turn is not Turn.UTURN:
@@ -309,7 +291,8 @@ def _approaches(net: RoadNetwork, segments: dict[str, Segment], edges: list[Conn
             lanes.append(ApproachLane(lane.id, k, frozenset(e.turn for e in mine), mine, k > 0, k < len(drive) - 1))
         s_stop = road.length if at_end else 0.0
         x, y, h = net.road_to_world(rid, s_stop)
-        heading = h if at_end else math.atan2(math.sin(h + math.pi), math.cos(h + math.pi))
+        heading = h if at_end else h + math.pi
+        heading = math.atan2(math.sin(heading), math.cos(heading))
         sigs = classify.approach_signals(net, road, at_end, [ln.id for ln in drive])
         control = Control.SIGNAL if any(e.traffic_light for e in group) else classify.signal_control(sigs)
         ids = sorted({s.id for s in sigs} | {e.signal_id for e in group if e.signal_id})

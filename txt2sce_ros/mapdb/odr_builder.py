@@ -171,7 +171,11 @@ NO_MARK = RoadMark()
 
 @dataclass(frozen=True)
 class LaneSpec:
-    """One lane: id (OpenDRIVE sign convention), type, constant width, the mark on its outer border, lane links."""
+    """One lane: id (OpenDRIVE sign convention), type, width, the mark on its outer border, lane links.
+
+    With `width_end` the width eases from `width` at s=0 to `width_end` at the road's end along a cubic with zero
+    slope at both ends (where a roundabout's entry lane widens into the ring lane).
+    """
 
     id: int
     type: str
@@ -179,6 +183,7 @@ class LaneSpec:
     mark: RoadMark = NO_MARK
     predecessor: int | None = None
     successor: int | None = None
+    width_end: float | None = None
 
 
 @dataclass(frozen=True)
@@ -309,7 +314,7 @@ def _write_mark(lane_el: etree._Element, mark: RoadMark) -> None:
          width=float(mark.width if mark.type != "none" else 0.0), laneChange=mark.lane_change)
 
 
-def _write_lane(parent: etree._Element, lane: LaneSpec) -> None:
+def _write_lane(parent: etree._Element, lane: LaneSpec, length: float) -> None:
     el = _sub(parent, "lane", id=lane.id, type=lane.type, level="false")
     if lane.predecessor is not None or lane.successor is not None:
         link = _sub(el, "link")
@@ -317,7 +322,11 @@ def _write_lane(parent: etree._Element, lane: LaneSpec) -> None:
             _sub(link, "predecessor", id=lane.predecessor)
         if lane.successor is not None:
             _sub(link, "successor", id=lane.successor)
-    _sub(el, "width", sOffset=0.0, a=float(lane.width), b=0.0, c=0.0, d=0.0)
+    c = d = 0.0
+    if lane.width_end is not None:
+        delta = lane.width_end - lane.width
+        c, d = 3.0 * delta / length ** 2, -2.0 * delta / length ** 3
+    _sub(el, "width", sOffset=0.0, a=float(lane.width), b=0.0, c=float(c), d=float(d))
     _write_mark(el, lane.mark)
 
 
@@ -339,13 +348,13 @@ def _write_road(root: etree._Element, road: RoadSpec) -> None:
     if road.left:
         left = _sub(section, "left")
         for lane in sorted(road.left, key=lambda ln: -ln.id):  # the schema wants descending ids
-            _write_lane(left, lane)
+            _write_lane(left, lane, road.length)
     center = _sub(_sub(section, "center"), "lane", id=0, type="none", level="false")
     _write_mark(center, road.center_mark)
     if road.right:
         right = _sub(section, "right")
         for lane in sorted(road.right, key=lambda ln: -ln.id):
-            _write_lane(right, lane)
+            _write_lane(right, lane, road.length)
     if road.signals:
         sigs = _sub(el, "signals")
         for sig in road.signals:
