@@ -1,0 +1,94 @@
+"""`txt2sce tree`: build scenario trees from seeds, or draw one.
+
+    txt2sce tree SEEDS... --out DIR [--seed N] [--mutations 2] [--prune 0.5] [--jobs 2]
+    txt2sce tree show TREE_DIR [--png FILE] [--depth 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from ..errors import InputError
+
+HELP = "build scenario trees from seeds (δ, Table III mutations, α, pruning) — or `tree show DIR` to draw one"
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    parser.epilog = __doc__
+    parser.add_argument("inputs", nargs="+", metavar="SEEDS",
+                        help="seed .xosc files or directories of them; or `show TREE_DIR`")
+    parser.add_argument("--out", help="output directory: one tree per seed in OUT/<seed name>/")
+    parser.add_argument("--seed", type=int, default=0, help="RNG seed (default 0)")
+    parser.add_argument("--mutations", type=int, default=None, help="M(b) for non-enumerated blocks (default 2)")
+    parser.add_argument("--prune", type=float, default=None, help="share kept per cluster, 1 = no pruning (0.5)")
+    parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
+    parser.add_argument("--config", help="mutation config YAML (default config/mutation.yaml)")
+    parser.add_argument("--no-validate", action="store_true", help="skip XSD validation of generated files")
+    parser.add_argument("--png", help="show: PNG path (default TREE_DIR/tree.png)")
+    parser.add_argument("--depth", type=int, default=3, help="show: outline depth (default 3)")
+
+
+def _seed_files(items: list[str]) -> list[Path]:
+    out: list[Path] = []
+    for item in items:
+        p = Path(item)
+        if p.is_dir():
+            out.extend(sorted(p.rglob("*.xosc")))
+        elif p.is_file():
+            out.append(p)
+        else:
+            raise InputError("no such seed file or directory", source=item)
+    if not out:
+        raise InputError("no .xosc seeds found", source=" ".join(items))
+    return out
+
+
+def _show(args: argparse.Namespace) -> int:
+    from ..tree.diversity import find_trees, load_manifest
+    from ..tree.draw import draw_png, layer_summary, outline
+
+    if len(args.inputs) < 2:
+        raise InputError("usage: txt2sce tree show TREE_DIR", element="show")
+    for d in find_trees(args.inputs[1:]):
+        m = load_manifest(d)
+        print("\n".join(layer_summary(m)))
+        print("\n".join(outline(m, max_depth=args.depth)))
+        png = Path(args.png) if args.png and len(args.inputs) == 2 else d / "tree.png"
+        print(f"drawn: {draw_png(m, png)}")
+        print(f"exports: {d / 'tree.graphml'}  {d / 'tree.dot'}  {d / 'manifest.json'}\n")
+    return 0
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.inputs[0] == "show":
+        return _show(args)
+    from ..tree.build import build_trees, tree_config
+
+    if not args.out:
+        raise InputError("--out DIR is required to build trees", element="--out")
+    cfg = tree_config(args.config, mutations=args.mutations, prune_share=args.prune,
+                      validate=False if args.no_validate else None)
+    seeds = _seed_files(args.inputs)
+    t0 = time.perf_counter()
+    results = build_trees(seeds, args.out, seed=args.seed, cfg=cfg, jobs=args.jobs)
+    wall = time.perf_counter() - t0
+    total = failed = 0
+    print(f"{'seed':<48} {'M(b) per layer':<30} {'Sum':>7} {'written':>8} {'pruned':>7} {'invalid':>7}")
+    for r in results:
+        name = Path(r.seed).stem
+        if not r.block_counts and r.errors:
+            failed += 1
+            print(f"{name:<48} FAILED: {r.errors[0]}", file=sys.stderr)
+            continue
+        total += r.nodes
+        counts = "x".join(str(c) for c in r.block_counts)
+        print(f"{name:<48} {counts:<30} {r.expected:>7} {r.nodes:>8} {r.pruned:>7} {r.invalid:>7}"
+              + ("  TRUNCATED" if r.truncated else ""))
+    print(f"\n{len(results) - failed} trees, {total} generated files in {wall:.1f} s "
+          f"({total / wall if wall else 0:.0f} files/s, {args.jobs} jobs); "
+          f"prune share {cfg['tree']['prune_share']}, M(b) = {cfg['tree']['mutations_per_block']}, "
+          f"RNG seed {args.seed} -> {args.out}")
+    return 1 if failed and failed == len(results) else 0
