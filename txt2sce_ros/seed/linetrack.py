@@ -1,0 +1,56 @@
+"""A straight path off the lane network (a pedestrian crossing the road, a car leaving a driveway)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .model import WorldPose
+
+
+class LineTrack:
+    """Polyline through world points; same interface as `Track` for timing (world, world_array, length)."""
+
+    reverse = False
+
+    def __init__(self, points: list[tuple[float, float]]) -> None:
+        p = np.asarray(points, dtype=float)
+        self.x, self.y = p[:, 0], p[:, 1]
+        seg = np.hypot(np.diff(self.x), np.diff(self.y))
+        self.d = np.concatenate([[0.0], np.cumsum(seg)])
+        hs = np.arctan2(np.diff(self.y), np.diff(self.x))
+        self.h = np.concatenate([hs, hs[-1:]])
+
+    @property
+    def length(self) -> float:
+        return float(self.d[-1])
+
+    def world(self, d: float, lateral: float = 0.0) -> WorldPose:
+        arr = self.world_array(np.array([d]), lateral)
+        return WorldPose(float(arr[0, 0]), float(arr[0, 1]), float(arr[0, 2]))
+
+    def world_array(self, d: np.ndarray, lateral: np.ndarray | float = 0.0) -> np.ndarray:
+        d = np.clip(d, 0.0, self.length)
+        x = np.interp(d, self.d, self.x)
+        y = np.interp(d, self.d, self.y)
+        idx = np.clip(np.searchsorted(self.d, d, side="right") - 1, 0, len(self.h) - 1)
+        h = self.h[idx]
+        lat = np.broadcast_to(np.asarray(lateral, dtype=float), d.shape)
+        return np.column_stack([x - lat * np.sin(h), y + lat * np.cos(h), h])
+
+    def lane_pose(self, d: float, lateral: float = 0.0) -> WorldPose:
+        return self.world(d, lateral)
+
+    def vertices(self) -> tuple[WorldPose, ...]:
+        return tuple(WorldPose(float(x), float(y), float(h)) for x, y, h in zip(self.x, self.y, self.h))
+
+
+def perpendicular(px: float, py: float, heading: float, side: str, before: float, after: float) -> LineTrack:
+    """A crossing through (px, py) perpendicular to `heading`, starting `before` m on `side` ('right'|'left' of
+    the heading) and ending `after` m beyond."""
+    sign = -1.0 if side == "right" else 1.0
+    nx, ny = -math.sin(heading) * sign, math.cos(heading) * sign   # unit normal toward the start side
+    start = (px + nx * before, py + ny * before)
+    end = (px - nx * after, py - ny * after)
+    return LineTrack([start, (px, py), end])

@@ -1,0 +1,643 @@
+"""Placement and timing (paper §III-B.2 step 2 and §III-B.3): a sketch on a matched site becomes a ScenarioPlan.
+
+The rule that makes the reported interaction happen: every party gets a path on the map (`Track`), an event
+schedule from its action string, and the speed/lateral profiles those events produce; then its start offset is
+solved so that it reaches its conflict point with the AV at the moment the AV does:
+
+- paths that cross (junction legs, turns across a lane, crossings): the conflict point is where the two paths
+  meet; the AV's time to it comes from its own profile, the party starts `D_party(T)` before it;
+- parallel paths (same road, R5–R7): the party is placed so that, at the conflict time, its box touches the AV's
+  box (front to rear for rear-ends, side by side for lane changes and passes, front to front head-on);
+- a party that cannot start early enough waits and is released by a distance-to-AV trigger.
+
+Everything random is drawn from the caller's numpy Generator (the site pick); the placement is deterministic.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError
+from ..sketch import Party, Sketch, action_names
+from .constraints import first_turn
+from .defaults import SeedDefaults
+from .kinematics import LateralStep, SpeedStep, box_corners, boxes_gap, lateral_profile, speed_profile, \
+    time_to_reach, transition_time
+from .lanes import CURB, case1_lane, ego_lane, party_lane
+from .linetrack import LineTrack, perpendicular
+from .model import (
+    EntityPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger,
+    WorldPose,
+)
+from .sites import JunctionSite, RoadSite, _net
+from .track import Track
+
+TURN_CODES = {"d": "left", "e": "right", "j": "uturn"}
+EGO_ROUTE_PLACEHOLDER = "__ego_route__"
+LATERAL_CODES = set("fgl")
+
+
+def center_x(kind: str, length: float) -> float:
+    return round(0.311 * length, 2) if kind == "vehicle" else 0.0
+
+
+@dataclass
+class Actor:
+    """One moving or standing entity while it is being planned (mutable builder, frozen into an EntityPlan)."""
+
+    name: str
+    kind: str
+    category: str
+    xosc_category: str
+    dims: tuple[float, float, float]
+    track: Track | LineTrack
+    d0: float = 0.0
+    lat0: float = 0.0
+    v0: float = 0.0
+    speed_steps: list[SpeedStep] = field(default_factory=list)
+    lat_steps: list[LateralStep] = field(default_factory=list)
+    events: list[EventPlan] = field(default_factory=list)
+    route: RouteAct | None = None
+    external: bool = False
+    world_start: bool = False         # start written as WorldPosition (off-lane paths, wrong-way driving)
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def length(self) -> float:
+        return self.dims[1]
+
+    @property
+    def width(self) -> float:
+        return self.dims[0]
+
+    @property
+    def cx(self) -> float:
+        return center_x(self.kind, self.length)
+
+    def profile(self, horizon: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return speed_profile(self.v0, self.speed_steps, horizon)
+
+    def states(self, horizon: float) -> tuple[np.ndarray, np.ndarray]:
+        """(t, poses (N,3)) of the planned motion."""
+        t, _, d = self.profile(horizon)
+        lat = lateral_profile(self.lat0, self.lat_steps, t)
+        return t, self.track.world_array(self.d0 + d, lat)
+
+    def start_pose(self) -> LanePose | WorldPose:
+        if self.world_start or isinstance(self.track, LineTrack):
+            return self.track.world(self.d0, self.lat0)
+        return self.track.lane_pose(self.d0, self.lat0)
+
+    def freeze(self) -> EntityPlan:
+        return EntityPlan(self.name, self.kind, self.category, self.xosc_category, self.dims, self.start_pose(),
+                          round(self.v0, 3), tuple(self.events), self.route, self.external)
+
+
+class Planner:
+    """Plans one sketch on one site. Use `plan()`; read `actors`, `choices` afterwards."""
+
+    def __init__(self, sketch: Sketch, site: JunctionSite | RoadSite, defaults: SeedDefaults) -> None:
+        self.sketch = sketch
+        self.site = site
+        self.D = defaults
+        self.net = _net(site.map_path)
+        self.T = defaults.timing.time_to_conflict
+        self.horizon = defaults.timing.time_limit
+        self.choices: dict = {"site": site.describe(), "parties": {}}
+        self.actors: list[Actor] = []
+        self.lane_w = 3.5
+
+    # ------------------------------------------------------------------------------------------ entity basics
+    def _actor(self, name: str, category: str, track: Track | LineTrack) -> Actor:
+        raw = self.D.raw
+        if category in raw["pedestrian_category"]:
+            kind, xcat = "pedestrian", raw["pedestrian_category"][category]
+        elif category in raw["vehicle_category"]:
+            kind, xcat = "vehicle", raw["vehicle_category"][category]
+        else:
+            kind, xcat = "misc", raw["misc_category"][category]
+        return Actor(name, kind, category, xcat, self.D.dims(category), track)
+
+    # ------------------------------------------------------------------------------------------ schedules
+    def _schedule(self, actor: Actor, codes: str, *, t_first: float, t_critical: float, speed: float,
+                  moving: bool) -> list[tuple[str, float]]:
+        """Event times: the first action at `t_first`; the last lateral/speed action so that it bites at
+        `t_critical`; the ones between spread evenly. Turns (route assignments) go with the event before them."""
+        n = len(codes)
+        if n == 0:
+            return []
+        lead = {"f": 0.5 * self.D.lane_change_time, "g": 0.5 * self.D.lane_change_time, "h": 3.0, "c": 2.5,
+                "k": 2.5, "l": 3.0, "i": 3.0, "b": 2.0, "m": 0.0}
+        times = [t_first]
+        if n > 1:
+            last = max(t_critical - lead.get(codes[-1], 0.0), t_first + 0.5 * (n - 1))
+            for k in range(1, n):
+                times.append(t_first + (last - t_first) * k / (n - 1))
+        # route assignments early: the path through the junction must be known before the junction
+        for k, c in enumerate(codes):
+            if c in TURN_CODES and k > 0:
+                times[k] = times[k - 1] + 0.1 if times[k - 1] + 0.1 < times[k] else times[k]
+        return [(c, round(t, 2)) for c, t in zip(codes, times)]
+
+    def _apply_actions(self, actor: Actor, schedule: list[tuple[str, float]], *, cruise: float,
+                       route_for: dict[str, RouteAct] | None = None, crossing: TrajectoryAct | None = None,
+                       lane_change_ref: str | None = None) -> None:
+        """Turn (code, time) pairs into events and the matching speed/lateral steps."""
+        v = actor.v0
+        names = action_names("".join(c for c, _ in schedule))
+        shape, dim = self.D.shape, self.D.dimension
+        for k, ((code, t), name) in enumerate(zip(schedule, names)):
+            acts: list = []
+            if code in "ai":
+                target = cruise if code == "i" or v == 0.0 else v if v > 0 else cruise
+            elif code == "b":
+                target = max(v, cruise) * self.D.accelerate_factor
+            elif code == "c":
+                target = max(v, cruise) * self.D.decelerate_factor
+            elif code == "h":
+                target = 0.0
+            elif code == "k":
+                target = self.D.reverse_speed if actor.kind != "pedestrian" else -0.8
+            elif code == "l":
+                target = 0.0
+            elif code == "m":
+                target = cruise
+            else:  # d e j f g: keep the speed (or start moving if standing)
+                target = v if v != 0 else cruise
+            dur = transition_time(v, target)
+            if code == "l":
+                dur = max(dur, 3.0)
+            if code in TURN_CODES:
+                # the AV's turn reuses its mission route (filled in by _ego_mission); a party's its own route
+                acts.append(route_for[code] if route_for and code in route_for else
+                            RouteAct(EGO_ROUTE_PLACEHOLDER, ()) if actor.name == "ego" else None)
+                if acts[-1] is None:
+                    acts.pop()
+            if code == "m" and crossing is not None:
+                acts.append(crossing)
+            if code in "fg":
+                rel = 1 if code == "f" else -1
+                acts.append(LaneChangeAct(rel, self.D.lane_change_time, lane_change_ref or actor.name))
+                actor.lat_steps.append(LateralStep(t, rel * self.lane_w, self.D.lane_change_time))
+            if code == "l":
+                off = -(self.lane_w / 2 - actor.width / 2 - 0.2)
+                acts.append(LaneOffsetAct(round(self._offset_t(actor, off), 3), self.D.lane_offset_max_lat_acc))
+                actor.lat_steps.append(LateralStep(t, off - actor.lat0, 3.0))
+            if target != v or not acts:
+                acts.insert(0, SpeedAct(round(target, 3), shape, dim, dur))
+                actor.speed_steps.append(SpeedStep(t, target, dur))
+            v = target
+            ev_name = f"{actor.name}_e{k + 1}_{name}"
+            actor.events.append(EventPlan(ev_name, code, tuple(acts), Trigger("time", t), t))
+
+    def _offset_t(self, actor: Actor, lateral: float) -> float:
+        """Lateral (left of travel) -> OpenSCENARIO lane offset sign (toward +t) at the actor's start lane."""
+        if isinstance(actor.track, LineTrack):
+            return lateral
+        pose = actor.track.lane_pose(actor.d0)
+        forward = self.net.lane_forward(pose.road_id, pose.lane_id, pose.s)
+        return lateral if forward != actor.track.reverse else -lateral
+
+    # ------------------------------------------------------------------------------------------ ego
+    def _ego_lane_index(self, n: int, allowed: list[int]) -> tuple[int, str]:
+        try:
+            idx, why = ego_lane(self.sketch, n)
+        except InputError:
+            idx, why = 0, "lane relations exceed the lanes; leftmost"
+        if allowed and idx not in allowed:
+            idx = min(allowed, key=lambda a: (abs(a - idx), a))
+            why += f"; moved to lane {idx} which allows the AV's turn"
+        return idx, why
+
+    def _ego_track(self) -> tuple[Track, int, float, float]:
+        """(track, lane index, d of the junction entry (or None-like inf), lane width)."""
+        site = self.site
+        if isinstance(site, JunctionSite):
+            turn = first_turn(self.sketch.ego.actions)
+            allowed = site.ego.lanes_turning(turn) or site.ego.lanes_turning("straight") or \
+                list(range(len(site.ego.lanes)))
+            if not site.ego.lanes_turning(turn):
+                self.choices["ego_turn_relaxed"] = f"{turn} -> not available here"
+                turn = "straight" if site.ego.lanes_turning("straight") else next(
+                    t for t in ("right", "left", "uturn") if site.ego.lanes_turning(t))
+            idx, why = self._ego_lane_index(len(site.ego.lanes), allowed)
+            refs = self._through(site.ego.lanes[idx], turn)
+            track = Track(self.net, refs)
+            d_entry = float(track.d[np.nonzero(track.seg == 1)[0][0]]) if len(refs) > 1 else track.length
+            self.choices["ego_lane"] = {"index": idx, "lane_id": site.ego.lanes[idx].lane_id, "why": why,
+                                        "turn": turn}
+            ref = site.ego.lanes[idx]
+        else:
+            idx, why = self._ego_lane_index(len(site.lanes), [])
+            ref = site.lanes[idx]
+            track = Track(self.net, [ref])
+            d_entry = math.inf
+            self.choices["ego_lane"] = {"index": idx, "lane_id": ref.lane_id, "why": why}
+        s = self.net.roads[ref.road_id].length / 2
+        self.lane_w = self.net.lane_width(ref.road_id, ref.lane_id, min(s, 10.0))
+        return track, idx, d_entry, self.lane_w
+
+    def _through(self, ref, turn: str, *, extra: int = 1) -> list:
+        """Lane refs: `ref`, the connecting lane making `turn` (or any), then `extra` successors beyond."""
+        refs = [ref]
+        conns = [(self.net.turn_type(ref, c), c) for c in self.net.successors(ref)]
+        pick = next((c for t, c in conns if t == turn), conns[0][1] if conns else None)
+        if pick is None:
+            return refs
+        refs.append(pick)
+        cur = pick
+        for _ in range(extra):
+            nxt = self.net.successors(cur)
+            if not nxt:
+                break
+            cur = nxt[0]
+            refs.append(cur)
+        return refs
+
+    # ------------------------------------------------------------------------------------------ the plan
+    def plan(self) -> list[Actor]:
+        sk, D = self.sketch, self.D
+        track, idx, d_entry, lane_w = self._ego_track()
+        ego = self._actor("ego", "car", track)
+        ego.category, ego.external = "ego", True
+        ego.dims = D.dims("ego")
+        ego.v0 = D.speed("ego") if sk.ego.start == "moving" else 0.0
+        self.ego, self.ego_idx, self.d_entry = ego, idx, d_entry
+        t_first = 0.0
+        if sk.ego.start == "stopped" and sk.ego.actions[:1] == "i":
+            # moved off from a standstill: after the reported red phase when there was one
+            t_first = D.timing.signal_phase_before if sk.signal_state == "red" else 1.0
+        self.ego_t_first = t_first
+        sched = self._schedule(ego, sk.ego.actions, t_first=t_first, t_critical=self.T, speed=D.speed("ego"),
+                               moving=sk.ego.start == "moving")
+        ego_routes = {}
+        self._apply_actions(ego, sched, cruise=D.speed("ego"), route_for=ego_routes)
+        self.actors = [ego]
+        t, _, de = ego.profile(self.horizon)
+        self.ego_t, self.ego_d = t, de
+        # ---- ego start: where the collision (or first) party's conflict needs it
+        collision = sk.collision.with_
+        order = sorted(sk.npcs, key=lambda p: (p.id != collision, p.id))
+        first = True
+        for p in order:
+            self._plan_party(p, primary=first)
+            first = False
+        if not sk.npcs:
+            self._place_ego_default()
+        for o in sk.obstacles:
+            self._plan_obstacle(o)
+        # the ego's mission: route through its path, goal beyond the conflict
+        self._ego_mission(ego_routes)
+        return self.actors
+
+    def _place_ego_default(self) -> None:
+        ego = self.ego
+        if ego.d0:
+            return
+        run = float(np.max(self.ego_d[self.ego_t <= self.T + 1e-9])) if len(self.ego_d) else 0.0
+        back = -float(np.min(self.ego_d))
+        if math.isfinite(self.d_entry):
+            ego.d0 = max(back + 2.0, self.d_entry - run - 8.0) if ego.v0 > 0 or run > 0 else max(self.d_entry - 2.0, 0)
+        else:
+            ego.d0 = min(max(40.0, back + 15.0), max(ego.track.length - run - 40.0, 5.0))
+        self.choices["ego_start_d"] = round(ego.d0, 2)
+
+    # ---- parties
+    def _party_track(self, p: Party) -> tuple[Track | LineTrack | None, float, str]:
+        """(track, lateral offset, mode) where mode says how the meeting is computed: 'cross' (paths meet) or
+        'parallel' (same road) or 'line' (off-lane crossing, built later)."""
+        site, ego = self.site, self.ego
+        turn = first_turn(p.actions)
+        rider = p.category in ("bicycle", "scooter", "pedestrian")
+        if "m" in p.actions and p.actions.index("m") == 0:
+            return None, 0.0, "line"
+        if p.position in ("R1", "R2", "R3") and isinstance(site, JunctionSite):
+            leg = {"R1": "left", "R2": "opposite", "R3": "right"}[p.position]
+            ap = site.legs.get(leg)
+            if ap is None:
+                raise InputError(f"site has no {leg} leg for {p.id}", source=self.sketch.report_id,
+                                 element=f"npcs.{p.id}.position")
+            can = {t: ap.lanes_turning(t) for t in ("left", "right", "uturn", "straight")}
+            idx = case1_lane(p.actions, len(ap.lanes), can_turn=can)
+            if turn in can and can[turn] and idx not in can[turn]:
+                idx = can[turn][0] if turn in ("left", "uturn") else can[turn][-1]
+            if not can.get(turn):
+                turn = "straight" if can["straight"] else next(t for t in ("right", "left", "uturn") if can[t])
+            self.choices["parties"].setdefault(p.id, {})["lane"] = {"leg": leg, "road": ap.road_id, "index": idx,
+                                                                   "lane_id": ap.lanes[idx].lane_id, "turn": turn}
+            return Track(self.net, self._through(ap.lanes[idx], turn)), 0.0, "cross"
+        if p.position == "R4" and isinstance(site, JunctionSite):
+            return ego.track, 0.0, "exit"
+        if p.position == "R7":
+            return self._oncoming_track(p)
+        # R5 / R6 (and R1–R4 on a road site: treated as ahead on the AV's road)
+        n = len(site.ego.lanes) if isinstance(site, JunctionSite) else len(site.lanes)
+        lanes = site.ego.lanes if isinstance(site, JunctionSite) else site.lanes
+        pidx = party_lane(p, self.ego_idx, n) if p.position in ("R5", "R6") else self.ego_idx
+        lat = 0.0
+        if pidx == CURB or (rider and p.lane == "right" and pidx == n - 1 and pidx != self.ego_idx):
+            pidx, lat = n - 1, -(self.lane_w / 2 + 0.9)
+        elif rider and p.lane == "left" and self.ego_idx == 0:
+            pidx, lat = 0, (self.lane_w / 2 + 0.6)
+        elif p.lane == "left" and self.ego_idx == 0:
+            lat = self.lane_w  # no lane to the left: ride the lane line / the oncoming lane's edge
+        self.choices["parties"].setdefault(p.id, {})["lane"] = {"index": pidx, "lane_id": lanes[pidx].lane_id,
+                                                               "lateral": round(lat, 2)}
+        if isinstance(site, JunctionSite):
+            ego_turn = self.choices["ego_lane"].get("turn", "straight")
+            want = turn if turn != "straight" else ego_turn if pidx == self.ego_idx else "straight"
+            refs = self._through(lanes[pidx], want)
+            return Track(self.net, refs), lat, "cross" if (turn != "straight" or ego_turn != "straight") and \
+                pidx != self.ego_idx else "parallel"
+        return Track(self.net, [lanes[pidx]]), lat, "parallel"
+
+    def _oncoming_track(self, p: Party) -> tuple[Track, float, str]:
+        site = self.site
+        if isinstance(site, RoadSite):
+            onc = site.oncoming
+            ego_ref = site.lanes[self.ego_idx]
+        else:
+            ego_ref = site.ego.lanes[self.ego_idx]
+            road = ego_ref.road_id
+            s = 1.0
+            ids = [lid for lid in self.net.lane_ids(road, s)
+                   if self.net.lane_forward(road, lid, s) != self.net.lane_forward(road, ego_ref.lane_id, s)]
+            from ..road import LaneRef
+
+            onc = tuple(sorted((LaneRef(road, ego_ref.section, lid) for lid in ids), key=lambda r: abs(r.lane_id)))
+        if p.lane == "same" or not onc:
+            self.choices["parties"].setdefault(p.id, {})["lane"] = {"lane_id": ego_ref.lane_id, "wrong_way": True}
+            return Track(self.net, [ego_ref], reverse=True), 0.0, "parallel"
+        self.choices["parties"].setdefault(p.id, {})["lane"] = {"lane_id": onc[0].lane_id}
+        return Track(self.net, [onc[0]]), 0.0, "parallel"
+
+    def _plan_party(self, p: Party, *, primary: bool) -> None:
+        D, ego = self.D, self.ego
+        track, lat, mode = self._party_track(p)
+        cruise = D.speed(p.category)
+        is_collision = self.sketch.collision.with_ == p.id
+        T = self.T if primary or is_collision else self.T * 0.7
+        if mode == "line":
+            self._plan_crossing(p, T, cruise, primary)
+            return
+        actor = self._actor(p.id, p.category, track)
+        actor.lat0 = lat
+        actor.v0 = cruise if p.start == "moving" else 0.0
+        # Parallel rear-end: the faster one must close the gap.
+        ego_v_T = float(np.interp(T, self.ego_t, speed_profile(ego.v0, ego.speed_steps, self.horizon)[1]))
+        if mode in ("parallel", "exit") and p.position in ("R6",) and p.lane == "same" and actor.v0 > 0 and \
+                not set(p.actions) & set("hck"):
+            if actor.v0 < ego_v_T + 2.0:
+                actor.v0 = cruise = round(ego_v_T + 3.0, 2)
+                actor.notes.append("speed raised so that it closes on the AV")
+        if mode in ("parallel", "exit") and p.position in ("R5", "R4") and p.lane in ("same", None) and \
+                actor.v0 > 0 and not set(p.actions) & set("hckfg") and ego_v_T > 0:
+            if actor.v0 > 0.6 * ego_v_T:
+                actor.v0 = cruise = round(0.5 * ego_v_T, 2)
+                actor.notes.append("speed lowered so that the AV closes on it")
+        routes = self._party_routes(p, actor)
+        sched = self._schedule(actor, p.actions, t_first=0.0, t_critical=T, speed=cruise,
+                               moving=p.start == "moving")
+        self._apply_actions(actor, sched, cruise=cruise, route_for=routes)
+        t, _, dn = actor.profile(self.horizon)
+        # ---- the meeting
+        if mode == "cross":
+            self._meet_crossing(actor, T, primary, t, dn)
+        else:
+            self._meet_parallel(p, actor, T, t, dn, mode)
+        self._release_if_needed(actor)
+        self.actors.append(actor)
+        self.choices["parties"].setdefault(p.id, {}).update({
+            "mode": mode, "start_d": round(actor.d0, 2), "speed": actor.v0, "conflict_time": round(T, 2),
+            "notes": actor.notes})
+
+    def _party_routes(self, p: Party, actor: Actor) -> dict[str, RouteAct]:
+        if not isinstance(actor.track, Track) or len(actor.track.refs) < 2:
+            return {}
+        out = {}
+        for c in p.actions:
+            if c in TURN_CODES:
+                mid_ref = actor.track.refs[1]
+                mid = self.net.lane_centerline(mid_ref.road_id, mid_ref.lane_id, 0.5, section=mid_ref.section)
+                s_mid = float(mid[len(mid) // 2, 2])
+                end = actor.track.lane_pose(actor.track.length - 5.0)
+                out[c] = RouteAct(f"{actor.name}_route", (
+                    LanePose(mid_ref.road_id, mid_ref.lane_id, round(s_mid, 3)),
+                    LanePose(end.road_id, end.lane_id, end.s)))
+        return out
+
+    def _ego_d_at(self, T: float) -> float:
+        return float(np.interp(T, self.ego_t, self.ego_d))
+
+    def _meet_crossing(self, actor: Actor, T: float, primary: bool, t: np.ndarray, dn: np.ndarray) -> None:
+        ego = self.ego
+        pts = actor.track.world_array(actor.track.d, actor.lat0)
+        # first meeting of the two paths beyond the ego's earliest possible start
+        e = ego.track
+        dist = np.hypot(e.x[:, None] - pts[None, ::2, 0], e.y[:, None] - pts[None, ::2, 1])
+        i, j = np.unravel_index(np.argmin(dist), dist.shape)
+        close = np.argwhere(dist < 1.0)
+        if close.size:
+            k = close[np.argmin(e.d[close[:, 0]])]
+            i, j = int(k[0]), int(k[1])
+        d_e_star, d_n_star = float(e.d[i]), float(actor.track.d[::2][j])
+        if dist[i, j] >= 1.0:
+            actor.notes.append(f"paths do not cross; nearest approach {dist[i, j]:.1f} m")
+        # the conflict point on the ego's path: its front reaches it; on the party's, its centre
+        front = ego.cx + ego.length / 2
+        if primary:
+            travelled = self._ego_d_at(T)
+            if travelled > 1.0:
+                ego.d0 = max(d_e_star - front - travelled, 0.0)
+                if ego.d0 == 0.0:
+                    actor.notes.append("AV run-up shortened by the map")
+            else:  # the AV stands: the party comes to it
+                ego.d0 = max(min(self.d_entry - 2.0 - front, d_e_star - front - 1.0), 0.0)
+            self.choices["ego_start_d"] = round(ego.d0, 2)
+        t_e = time_to_reach(self.ego_t, self.ego_d, d_e_star - front - ego.d0)
+        if t_e is None:
+            # the AV never gets there: meet at the AV itself (it stands at/ before the point)
+            stand = ego.d0 + float(self.ego_d[-1]) + front
+            wp = ego.track.world(stand)
+            d_n_star = float(actor.track.project(wp.x, wp.y)) if isinstance(actor.track, Track) else d_n_star
+            t_e = T
+        reach = float(np.interp(t_e, t, dn))
+        actor.d0 = d_n_star - reach - actor.cx
+        if actor.d0 < 0:
+            actor.notes.append(f"party start clamped ({actor.d0:.1f} m before its path)")
+            actor.d0 = 0.0
+        self._conflict_times = getattr(self, "_conflict_times", {})
+        self._conflict_times[actor.name] = t_e
+
+    def _meet_parallel(self, p: Party, actor: Actor, T: float, t: np.ndarray, dn: np.ndarray, mode: str) -> None:
+        ego = self.ego
+        if self.ego.d0 == 0.0 and not getattr(self, "_ego_placed", False):
+            self._place_ego_default()
+            self._ego_placed = True
+        de_T = ego.d0 + self._ego_d_at(T)
+        lat_conflict = bool(set(p.actions) & set("fg")) or p.lane in ("left", "right") or p.position == "R7"
+        ego_front, ego_rear = ego.cx + ego.length / 2, ego.cx - ego.length / 2
+        p_front, p_rear = actor.cx + actor.length / 2, actor.cx - actor.length / 2
+        reversing = actor.track.reverse or p.position == "R7"
+        if p.position == "R7":
+            # front to front (oncoming): party reference point ahead of the ego's front by both front overhangs
+            target = de_T + ego_front + p_front
+        elif lat_conflict:
+            target = de_T + (1.0 if p.position == "R5" else -1.0)
+        elif p.position == "R6":
+            target = de_T + ego_rear - p_front           # its front at the AV's rear
+        else:
+            target = de_T + ego_front - p_rear           # its rear at the AV's front
+        wp = ego.track.world(target)
+        d_target = actor.track.project(wp.x, wp.y)
+        travelled = float(np.interp(T, t, dn))
+        actor.d0 = d_target - travelled
+        if actor.d0 < 0 or actor.d0 > actor.track.length:
+            actor.notes.append(f"start {actor.d0:.1f} m outside its lane; clamped")
+            actor.d0 = float(np.clip(actor.d0, 0.0, actor.track.length))
+        if lat_conflict and self.sketch.collision.with_ == p.id and not set(p.actions) & set("fgm"):
+            # a pass or graze without a lane change: drive close enough to touch (side-swipe reported)
+            side = 1.0 if (p.lane == "right") else -1.0
+            if p.position == "R7":
+                side = 1.0  # oncoming lane is to the AV's left == to the party's left as well
+            if p.lane == "same" and p.position != "R7":
+                return
+            gap = self.lane_w - ego.width / 2 - actor.width / 2 - 0.3
+            shift = side * max(gap, 0.0)
+            if abs(actor.lat0) < 1e-6 or abs(actor.lat0) >= self.lane_w:
+                actor.lat0 = (actor.lat0 - math.copysign(self.lane_w, actor.lat0)) if abs(actor.lat0) >= \
+                    self.lane_w else 0.0
+                actor.lat0 += shift if p.position != "R7" else shift
+            actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+
+    def _release_if_needed(self, actor: Actor) -> None:
+        """Keep a start on the map; nothing else to do: events are timed from the plan."""
+        actor.d0 = round(float(np.clip(actor.d0, 0.0, actor.track.length)), 3)
+
+    def _plan_crossing(self, p: Party, T: float, cruise: float, primary: bool) -> None:
+        """`m` first: a path perpendicular to the AV's lane through the point the AV's front reaches at T."""
+        ego = self.ego
+        if not getattr(self, "_ego_placed", False) and ego.d0 == 0.0:
+            self._place_ego_default()
+            self._ego_placed = True
+        front = ego.cx + ego.length / 2
+        travelled = self._ego_d_at(T)
+        if travelled < 0.5:  # the AV stands: cross right in front of it
+            travelled = 0.0
+        dims = self.D.dims(p.category)
+        d_p = ego.d0 + travelled + front + dims[1] / 2 * 0.5
+        if p.position in ("R4",) and math.isfinite(self.d_entry):
+            d_p = max(d_p, self.d_entry + 4.0)
+        px = ego.track.world(d_p)
+        side = "left" if (p.lane == "left" or p.position in ("R1", "R2")) else "right"
+        v = cruise
+        before_needed = v * T
+        max_before = 12.0 if p.category in ("pedestrian", "bicycle", "scooter") else 20.0
+        before = min(before_needed, max_before)
+        line = perpendicular(px.x, px.y, px.h, side, before, 12.0)
+        actor = self._actor(p.id, p.category, line)
+        actor.world_start = True
+        delay = max(0.0, T - before / v) if v > 0 else 0.0
+        moving = p.start == "moving" and delay == 0.0
+        actor.v0 = v if moving else 0.0
+        traj = TrajectoryAct(f"{p.id}_crossing", line.vertices())
+        sched = self._schedule(actor, p.actions, t_first=round(delay, 2), t_critical=T + 2.0, speed=v,
+                               moving=moving)
+        self._apply_actions(actor, sched, cruise=v, crossing=traj)
+        if delay > 0 and actor.events:
+            # released by the AV's approach: the distance at the planned release time (+0.5 m so it fires)
+            first = actor.events[0]
+            ego_pose = ego.track.world(ego.d0 + self._ego_d_at(delay))
+            dist = math.hypot(ego_pose.x - line.x[0], ego_pose.y - line.y[0])
+            ego_pose_before = ego.track.world(ego.d0 + self._ego_d_at(max(delay - 0.5, 0.0)))
+            dist_before = math.hypot(ego_pose_before.x - line.x[0], ego_pose_before.y - line.y[0])
+            if dist_before > dist + 0.05:
+                actor.events[0] = EventPlan(first.name, first.code, first.actions,
+                                            Trigger("distance", round(dist + 0.5, 2), actor.name, "ego"), delay)
+        self.actors.append(actor)
+        self.choices["parties"].setdefault(p.id, {}).update({
+            "mode": "crossing", "side": side, "run_up": round(before, 2), "release_time": round(delay, 2),
+            "speed": v, "conflict_time": round(T, 2)})
+
+    # ---- obstacles
+    def _plan_obstacle(self, o) -> None:
+        ego = self.ego
+        if not getattr(self, "_ego_placed", False) and ego.d0 == 0.0 and not self.sketch.npcs:
+            self._place_ego_default()
+        is_collision = self.sketch.collision.with_ == o.id
+        front = ego.cx + ego.length / 2
+        dims = self.D.dims(o.category)
+        travelled_T = self._ego_d_at(self.T)
+        final = float(self.ego_d[-1])
+        kind_vehicle = o.category == "parked_vehicle"
+        cx = center_x("vehicle", dims[1]) if kind_vehicle else 0.0
+        if o.position == "R6":
+            back = min(float(np.min(self.ego_d)), 0.0)
+            rear = ego.cx - ego.length / 2
+            d = ego.d0 + back + rear - (cx + dims[1] / 2) - (0.3 if is_collision else 3.0)
+        else:
+            reach = travelled_T if travelled_T > 1.0 else max(final, 0.0)
+            if not is_collision:
+                reach = max(reach, 20.0) if self.sketch.collision.with_ else reach
+            d = ego.d0 + reach + front + (dims[1] / 2 - cx) + (-0.3 if is_collision else 4.0)
+            if o.position == "R4" and math.isfinite(self.d_entry):
+                d = max(d, self.d_entry + 15.0)
+        lat = 0.0
+        edge = self.lane_w / 2
+        if o.lane in ("left", "right", "shoulder") or (o.position == "R7"):
+            sign = 1.0 if (o.lane == "left" or o.position == "R7") else -1.0
+            if is_collision:
+                lat = sign * (ego.width / 2 + dims[0] / 2 - 0.3)   # overlapping the AV's path by 0.3 m
+            else:
+                lat = sign * (edge + dims[0] / 2 + 0.3)
+            if o.position == "R7":
+                lat = sign * (self.lane_w + edge + dims[0] / 2) if not is_collision else lat
+        actor = self._actor(o.id, o.category, ego.track)
+        actor.d0, actor.lat0, actor.v0 = float(np.clip(d, 0.0, ego.track.length)), lat, 0.0
+        self.actors.append(actor)
+        self.choices.setdefault("obstacles", {})[o.id] = {"d": round(actor.d0, 2), "lateral": round(lat, 2)}
+
+    # ---- mission
+    def _ego_mission(self, routes: dict) -> None:
+        ego = self.ego
+        final = ego.d0 + max(float(np.max(self.ego_d)), 0.0)
+        goal_d = min(max(final, ego.d0 + self._ego_d_at(self.T)) + self.D.timing.ego_goal_beyond_conflict,
+                     ego.track.length - 2.0)
+        if math.isfinite(self.d_entry):
+            goal_d = max(goal_d, min(self.d_entry + 40.0, ego.track.length - 2.0))
+        start = ego.track.lane_pose(ego.d0)
+        wps: list = [LanePose(start.road_id, start.lane_id, start.s)]
+        if isinstance(ego.track, Track) and len(ego.track.refs) > 1:
+            mid_ref = ego.track.refs[1]
+            mid = self.net.lane_centerline(mid_ref.road_id, mid_ref.lane_id, 0.5, section=mid_ref.section)
+            wps.append(LanePose(mid_ref.road_id, mid_ref.lane_id, round(float(mid[len(mid) // 2, 2]), 3)))
+        goal = ego.track.lane_pose(goal_d)
+        wps.append(LanePose(goal.road_id, goal.lane_id, goal.s, 0.0, goal.x, goal.y, goal.h))
+        ego.route = RouteAct("ego_route", tuple(wps))
+        self.goal = LanePose(goal.road_id, goal.lane_id, goal.s, 0.0, goal.x, goal.y, goal.h)
+        # the ego's own turn events reuse its mission route
+        ego.events = [EventPlan(ev.name, ev.code, tuple(ego.route if isinstance(a, RouteAct) and
+                                                        a.name == EGO_ROUTE_PLACEHOLDER else a for a in ev.actions),
+                                ev.trigger, ev.planned_time) for ev in ego.events]
+        self.choices["goal"] = {"road": goal.road_id, "lane": goal.lane_id, "s": goal.s}
+
+
+def predicted_gap(actors: list[Actor], target: str, horizon: float) -> tuple[float, float]:
+    """(smallest box gap in m between the ego and `target` over the planned motion, time of it)."""
+    ego = next(a for a in actors if a.name == "ego")
+    other = next(a for a in actors if a.name == target)
+    t, pe = ego.states(horizon)
+    _, po = other.states(horizon)
+    best, when = math.inf, 0.0
+    for k in range(0, len(t), 2):
+        a = box_corners(pe[k, 0], pe[k, 1], pe[k, 2], ego.length, ego.width, ego.cx)
+        b = box_corners(po[k, 0], po[k, 1], po[k, 2], other.length, other.width, other.cx)
+        g = boxes_gap(a, b)
+        if g < best:
+            best, when = g, float(t[k])
+        if g <= 0:
+            break
+    return best, when
