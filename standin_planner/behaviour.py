@@ -93,7 +93,8 @@ def in_path(po: PathObject, ego: EgoOnPath, ego_offset: float, p: BehaviourParam
 
 
 def lead_constraint(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, v0: float,
-                    lp: LongitudinalParams, bp: BehaviourParams, decel: float) -> Constraint | None:
+                    lp: LongitudinalParams, bp: BehaviourParams, decel: float, own_brake: float
+                    ) -> Constraint | None:
     """IDM on the nearest moving in-path object ahead travelling roughly our way."""
     best: PathObject | None = None
     for po in objs:
@@ -106,7 +107,7 @@ def lead_constraint(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, v
     if best is None:
         return None
     gap = best.s_min - ego.s_front
-    a = idm_accel(ego.speed, v0, gap, max(best.v_along, 0.0), lp, decel=decel)
+    a = idm_accel(ego.speed, v0, gap, max(best.v_along, 0.0), lp, decel=decel, own_brake=own_brake)
     return Constraint(Reason.LEAD, a, best.state.name, gap, urgent=a < -decel)
 
 

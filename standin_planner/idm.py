@@ -23,12 +23,17 @@ def free_road_accel(v: float, v0: float, p: LongitudinalParams) -> float:
 
 
 def idm_accel(v: float, v0: float, gap: float, v_lead: float, p: LongitudinalParams, *,
-              decel: float | None = None) -> float:
+              decel: float | None = None, own_brake: float | None = None) -> float:
     """IDM acceleration (m/s²) behind a lead at bumper-to-bumper `gap` (m) moving at `v_lead` (m/s, along the
-    path). `decel` replaces the comfortable deceleration b (the friction-aware stack lowers it on slippery roads)."""
+    path). `decel` replaces the comfortable deceleration b (the friction-aware stack lowers it on slippery roads).
+    `own_brake` (m/s²) is the hardest braking the ego can count on; when it is below what a lead can do on a dry
+    road (`max_decel`), the desired gap grows by the difference of the two braking distances (Gipps' safe-distance
+    idea), so that on a slippery road the ego still stops behind a lead that brakes as hard as it can."""
     b = p.comfort_decel if decel is None else decel
     dv = v - v_lead
     s_star = p.min_gap + max(0.0, v * p.time_headway + v * dv / (2.0 * math.sqrt(p.max_accel * b)))
+    if own_brake is not None and own_brake < p.max_decel:
+        s_star += max(0.0, v * v / (2.0 * own_brake) - v_lead * v_lead / (2.0 * p.max_decel))
     gap = max(gap, 0.1)
     return free_road_accel(v, v0, p) - p.max_accel * (s_star / gap) ** 2
 

@@ -109,7 +109,7 @@ class Planner:
         measured = [measure(o, line, pp.s) for o in near]
         obstacle_stops, target_offset = obstacle_rules(measured, me, line, lp, bp, sp)
         constraints += obstacle_stops
-        lead = lead_constraint(measured, me, self._offset, v0, lp, bp, idm_decel)
+        lead = lead_constraint(measured, me, self._offset, v0, lp, bp, idm_decel, max_decel)
         if lead is not None:
             constraints.append(lead)
         constraints += yield_constraints(measured, me, line, lp, bp, sp, v0)

@@ -78,9 +78,9 @@ def _extend(net: RoadNetwork, last: LaneRef, length: float) -> list[LaneRef]:
     return out
 
 
-def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str]) -> RefLine:
+def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str]) -> tuple[RefLine, list[float]]:
     """Concatenate the lanes' centre lines (driving direction) into one reference line; `kinds[i]` is the edge
-    from lanes[i] to lanes[i+1]."""
+    from lanes[i] to lanes[i+1]. Also returns the arc length at which each lane starts on the line."""
     xy_parts, junction_parts, width_parts = [], [], []
     cut_start = 0.0                                    # fraction of the lane skipped at its start
     for i, ref in enumerate(lanes):
@@ -95,8 +95,13 @@ def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str]) -> RefL
         xy_parts.append(pts[lo:hi, :2])
         junction_parts.append(np.full(hi - lo, junction))
         width_parts.append(widths[lo:hi])
-    return RefLine(np.vstack(xy_parts), in_junction=np.concatenate(junction_parts),
-                   lane_width=np.concatenate(width_parts), lanes=tuple(lanes))
+    xy = np.vstack(xy_parts)
+    starts = np.cumsum([0] + [len(p) for p in xy_parts[:-1]])
+    seg = np.hypot(*np.diff(xy, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)])
+    line = RefLine(xy, in_junction=np.concatenate(junction_parts), lane_width=np.concatenate(width_parts),
+                   lanes=tuple(lanes))
+    return line, [float(s[i]) for i in starts]
 
 
 def _locate(net: RoadNetwork, x: float, y: float, heading: float, what: str) -> LaneRef:
@@ -118,17 +123,16 @@ def plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal)
     tail = _extend(net, lanes[-1], GOAL_EXTENSION)
     full = list(lanes) + tail
     kinds += ["follow"] * len(tail)
-    line = build_line(net, full, kinds)
-    ego_s = line.project(x, y).s
-    goal_s = line.project(goal.x, goal.y, near_s=_goal_hint(line, lanes, net)).s
+    line, starts = build_line(net, full, kinds)
+    # Each pose is projected onto its own lane's stretch of the line, so a route crossing itself (or passing the
+    # goal's neighbourhood earlier) cannot confuse the two.
+    first_end = starts[1] if len(starts) > 1 else line.length
+    ego_s = line.project(x, y, near_s=0.5 * first_end, window=0.5 * first_end + 1.0).s
+    g0 = starts[len(lanes) - 1]
+    g1 = starts[len(lanes)] if len(starts) > len(lanes) else line.length
+    goal_s = line.project(goal.x, goal.y, near_s=0.5 * (g0 + g1), window=0.5 * (g1 - g0) + 1.0).s
     trimmed, shift = _trim(line, max(0.0, ego_s - START_BACKOFF), min(line.length, goal_s + GOAL_EXTENSION))
     return Route(lanes=tuple(lanes), line=trimmed, goal_s=goal_s - shift)
-
-
-def _goal_hint(line: RefLine, lanes: list[LaneRef], net: RoadNetwork) -> float:
-    """Arc length near which the goal lies: within the goal lane, i.e. after all the lanes before it."""
-    before = sum(net.lane_length(ref) for ref in lanes[:-1])
-    return min(before + 0.5 * net.lane_length(lanes[-1]), line.length)
 
 
 def _trim(line: RefLine, s0: float, s1: float) -> tuple[RefLine, float]:
