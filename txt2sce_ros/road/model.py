@@ -94,9 +94,9 @@ class Junction:
     controllers: tuple[str, ...] = ()
 
 
-@dataclass(slots=True)
+@dataclass(frozen=True, slots=True)
 class Road:
-    """One `<road>`. Mutable only while the parser fills it; treat as read-only afterwards."""
+    """One `<road>`. Frozen; only its `signals` list is filled in place once, when the network places them."""
 
     id: str
     name: str

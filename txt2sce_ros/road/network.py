@@ -256,6 +256,7 @@ class RoadNetwork:
         from dataclasses import replace
 
         out: dict[str, Signal] = {}
+        self.signal_references: list[Signal] = []   # <signalReference>: a signal reused on another road
         for road in self.roads.values():
             placed = []
             for sig in road.signals:
@@ -266,7 +267,9 @@ class RoadNetwork:
                 lanes = self._signal_lanes(road, sig, s)
                 new = replace(sig, x=x, y=y, heading=math.atan2(math.sin(h), math.cos(h)), controlled_lanes=lanes)
                 placed.append(new)
-                if not sig.is_reference:
+                if sig.is_reference:
+                    self.signal_references.append(new)
+                else:
                     out[sig.id] = new
             road.signals[:] = placed
         return out
@@ -282,7 +285,7 @@ class RoadNetwork:
             ids = sorted(keep)
         if sig.orientation in ("+", "-"):
             along = sig.orientation == "+"
-            ids = [i for i in ids if self.lane_forward(road.id, i) == along]
+            ids = [i for i in ids if self.lane_forward(road.id, i, s) == along]
         return tuple(sorted(ids, reverse=True))
 
     def signals_of_controller(self, controller_id: str) -> list[Signal]:

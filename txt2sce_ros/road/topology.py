@@ -90,9 +90,16 @@ def _raw_successors(net: "RoadNetwork", ref: LaneRef) -> list[LaneRef]:
     # 1. next section of the same road
     nxt = ref.section + (1 if forward else -1)
     if 0 <= nxt < len(road.sections):
-        target = linked_id if linked_id is not None else (ref.lane_id if no_link else None)
-        hit = _lane_if_exists(net, road.id, nxt, target)
-        return [hit] if hit else []
+        # Links may be declared on either side of the boundary: this lane's successor, or the next lane's
+        # predecessor pointing back at it.
+        back_side = "predecessor" if forward else "successor"
+        targets = {linked_id} if linked_id is not None else set()
+        targets |= {lid for lid, ln in road.sections[nxt].lanes.items()
+                    if lid != 0 and getattr(ln.link, back_side) == ref.lane_id}
+        if not targets and no_link:
+            targets = {ref.lane_id}
+        hits = [_lane_if_exists(net, road.id, nxt, t) for t in sorted(targets)]
+        return [h for h in hits if h is not None]
     # 2. the linked road or junction at this end of the road
     link = road.successor if forward else road.predecessor
     if link is None:
@@ -102,9 +109,20 @@ def _raw_successors(net: "RoadNetwork", ref: LaneRef) -> list[LaneRef]:
         if other is None:
             return []
         contact = _contact_of(link, other, road.id)
-        target = linked_id if linked_id is not None else (ref.lane_id if no_link else None)
-        hit = _drives_away(net, _lane_if_exists(net, other.id, _entry_section(other, contact), target), contact)
-        return [hit] if hit else []
+        entry = _entry_section(other, contact)
+        targets = {linked_id} if linked_id is not None else set()
+        other_link = other.predecessor if contact == "start" else other.successor
+        if other_link is not None and other_link.element_type == "road" and other_link.element_id == road.id:
+            back_side = "predecessor" if contact == "start" else "successor"
+            targets |= {lid for lid, ln in other.sections[entry].lanes.items()
+                        if lid != 0 and getattr(ln.link, back_side) == ref.lane_id}
+        if not targets and no_link:
+            # No lane links anywhere: keep the lane's side of the road; roads meeting end to end (or start to
+            # start) run in opposite directions, so the side's sign flips.
+            same_way = (contact == "start") == (link is road.successor)
+            targets = {ref.lane_id if same_way else -ref.lane_id}
+        hits = [_drives_away(net, _lane_if_exists(net, other.id, entry, t), contact) for t in sorted(targets)]
+        return [h for h in hits if h is not None]
     junction = net.junctions.get(link.element_id)
     if junction is None:
         return []
