@@ -1,5 +1,6 @@
 import importlib.util
 import math
+import sys
 
 import pytest
 
@@ -7,6 +8,7 @@ from txt2sce_ros.paths import REPO_ROOT
 
 _spec = importlib.util.spec_from_file_location("autoware_adapter", REPO_ROOT / "examples" / "autoware_adapter.py")
 adapter = importlib.util.module_from_spec(_spec)
+sys.modules["autoware_adapter"] = adapter        # dataclasses look their module up there
 _spec.loader.exec_module(adapter)
 
 
