@@ -76,7 +76,8 @@ def _connector_ends_meet_lanes(net: RoadNetwork) -> list[float]:
     return gaps
 
 
-@pytest.mark.parametrize("name", ["junction4_signal.xodr", "junction3_stop.xodr", "roundabout.xodr"])
+@pytest.mark.parametrize("name", ["junction4_signal.xodr", "junction3_stop.xodr", "junction4_stop.xodr",
+                                  "roundabout.xodr"])
 def test_connecting_lanes_join_the_lanes_they_link(name: str) -> None:
     gaps = _connector_ends_meet_lanes(load_network(bundled(name)))
     assert gaps and max(gaps) < 0.01

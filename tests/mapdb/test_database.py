@@ -81,17 +81,24 @@ def test_junction4_approaches(dbs: dict[str, MapDatabase]) -> None:
 
 def test_relative_approaches_agree_with_turn_geometry(dbs: dict[str, MapDatabase]) -> None:
     """A left turn leaves on the road the R1 traffic (crossing from the left) comes from; right on R3's; straight
-    on R2's. Two independent computations: turn types from connecting-lane geometry, R1-R3 from approach headings."""
-    for name in ("junction4_signal.xodr", "junction3_stop.xodr"):
+    on R2's. Two independent computations: turn types from connecting-lane geometry, R1-R3 from leg headings."""
+    for name in ("junction4_signal.xodr", "junction3_stop.xodr", "junction4_stop.xodr"):
         db = dbs[name]
         for jid in db.junction_infos:
             for app in db.approaches(jid):
-                rel = db.relative_approaches(jid, app.road_id)
+                rel = db.relative_roads(jid, app.road_id)
                 for lane in app.lanes:
                     for e in lane.edges:
                         key = {Turn.LEFT: "left", Turn.RIGHT: "right", Turn.STRAIGHT: "opposite"}.get(e.turn)
                         if key:
-                            assert rel[key] is not None and rel[key].road_id == e.to_road, (name, e)
+                            assert rel[key] == e.to_road, (name, e)
+
+
+def test_relative_approaches_skip_exit_only_legs(dbs: dict[str, MapDatabase]) -> None:
+    db = dbs["junction4_stop.xodr"]
+    assert db.relative_roads("400", "1") == {"left": "4", "opposite": "2", "right": "3"}
+    rel = db.relative_approaches("400", "1")
+    assert rel["opposite"] is None and rel["left"].road_id == "4" and rel["right"].road_id == "3"
 
 
 def test_t_junction_stop_control_on_the_minor_road_only(dbs: dict[str, MapDatabase]) -> None:

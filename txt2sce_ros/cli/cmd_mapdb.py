@@ -100,12 +100,12 @@ def _query(db, args: argparse.Namespace) -> int:  # noqa: ANN001 - MapDatabase, 
         if road_needs:
             raise InputError(f"road needs {road_needs} do not apply to junction approaches", element="--need")
         count = 0
-        for info in db.junctions(args.layout, control=args.control, min_lanes=args.lanes, turns=args.turn,
-                                 needs=args.need):
+        for info in db.junctions(args.layout, control=args.control, min_lanes=args.lanes, one_way=args.one_way,
+                                 turns=args.turn, needs=args.need):
             print(f"junction {info.id} {info.name!r}: {info.layout.value}, {info.legs} legs, control "
                   f"{info.control.value}")
-            for app in db.approaches(info.id, control=args.control, min_lanes=args.lanes, turns=args.turn,
-                                     needs=args.need):
+            for app in db.approaches(info.id, control=args.control, min_lanes=args.lanes, one_way=args.one_way,
+                                     turns=args.turn, needs=args.need):
                 count += 1
                 lanes = ", ".join(f"lane {ln.lane_id}: {'/'.join(sorted(t.value for t in ln.turns)) or '-'}"
                                   for ln in app.lanes)

@@ -2,7 +2,8 @@
 
 One map per sketch layout (`../shared/spec/sketch.md`): a long straight two-way road with bike and parking lanes,
 a one-way street, a curve (clothoid-arc-clothoid both ways), a signalised 4-way junction with left-turn lanes, a
-stop-controlled T junction, a single-lane roundabout and a parking aisle. Right-hand traffic throughout; lanes with
+stop-controlled T junction, an all-way-stop 4-way junction of a one-way and a two-way street, a single-lane
+roundabout and a parking aisle. Right-hand traffic throughout; lanes with
 negative ids drive along +s. `txt2sce mapdb build-maps` rewrites them; the output is byte-for-byte deterministic.
 """
 
@@ -201,6 +202,40 @@ def junction3_map() -> MapSpec:
                    description="T junction, stop sign on the minor road")
 
 
+def junction4_stop_map() -> MapSpec:
+    """(h) All-way-stop 4-way junction of a one-way street (2 lanes, westbound) and a two-way street (1 lane each
+    way, north-south): stop signs on the three approaches. Covers the dev set's 4-way stops and one-way approaches.
+    """
+    jid, length = "400", 200.0
+    lanes2 = [("driving", DRIVING_W, BROKEN_WHITE), ("driving", DRIVING_W, SOLID_WHITE),
+              ("sidewalk", SIDEWALK_W, NO_MARK)]
+    walk = [("sidewalk", SIDEWALK_W, NO_MARK)]
+    two_way = [("driving", DRIVING_W, SOLID_WHITE), ("sidewalk", SIDEWALK_W, NO_MARK)]
+
+    def stop(sid: str, name: str, lanes: tuple[int, int], t: float) -> SignalSpec:
+        return SignalSpec(sid, name, length - 1.0, t, False, "+", STOP_SIGN, valid_lanes=lanes, height=0.9,
+                          z_offset=1.5)
+
+    # One-way legs end 8 m from the centre (north-south half width 5.5 m); the two-way legs 11 m (the one-way
+    # street spans y = -2 .. 9 m).
+    east = _approach("1", "one_way_east", 0.0, 8.0, length, _side(1, walk), _side(-1, lanes2), jid,
+                     signals=(stop("4001", "east_stop", (-2, -1), -(2 * DRIVING_W + SIDEWALK_W / 2)),),
+                     center=SOLID_WHITE)
+    west = _approach("2", "one_way_west", math.pi, 8.0, length, _side(1, lanes2), _side(-1, walk), jid,
+                     center=SOLID_WHITE)
+    north = _approach("3", "two_way_north", math.pi / 2, 11.0, length, _side(1, two_way), _side(-1, two_way), jid,
+                      signals=(stop("4003", "north_stop", (-1, -1), -(DRIVING_W + SIDEWALK_W / 2)),))
+    south = _approach("4", "two_way_south", 3 * math.pi / 2, 11.0, length, _side(1, two_way), _side(-1, two_way),
+                      jid, signals=(stop("4004", "south_stop", (-1, -1), -(DRIVING_W + SIDEWALK_W / 2)),))
+    plan = [(east, -1, west, 1), (east, -2, west, 2), (east, -1, south, 1), (east, -2, north, 1),
+            (south, -1, north, 1), (south, -1, west, 1),
+            (north, -1, south, 1), (north, -1, west, 2)]
+    conn_roads, conns = _connect_all(jid, 401, plan)
+    junction = JunctionSpec(jid, "all_way_stop", tuple(conns))
+    return MapSpec("txt2sce_junction4_stop", (east, west, north, south) + tuple(conn_roads), (junction,),
+                   description="all-way stop: one-way 2-lane street crossing a two-way street")
+
+
 def roundabout_map() -> MapSpec:
     """(f) Single-lane roundabout (ring radius 25 m to the lane's inner edge, counter-clockwise) with 4 two-way legs.
 
@@ -266,6 +301,7 @@ BUNDLED: dict[str, callable] = {  # type: ignore[valid-type]
     "curve.xodr": curve_map,
     "junction4_signal.xodr": junction4_map,
     "junction3_stop.xodr": junction3_map,
+    "junction4_stop.xodr": junction4_stop_map,
     "roundabout.xodr": roundabout_map,
     "parking_lot.xodr": parking_map,
 }

@@ -308,12 +308,15 @@ def _junction_infos(net: RoadNetwork, segments: dict[str, Segment], edges: list[
         legs = sorted({rid for rid, seg in segments.items() if not seg.is_connecting
                        and jid in (seg.predecessor_junction, seg.successor_junction)},
                       key=lambda r: (len(r), r))
-        points = []
+        points, headings = [], []
         for rid in legs:
             seg = segments[rid]
-            s = seg.length if seg.successor_junction == jid else 0.0
-            x, y, _ = net.road_to_world(rid, s)
+            at_end = seg.successor_junction == jid
+            s = seg.length if at_end else 0.0
+            x, y, h = net.road_to_world(rid, s)
             points.append((x, y))
+            h = h if at_end else h + math.pi  # the direction of travel toward the junction along this road
+            headings.append((rid, round(math.atan2(math.sin(h), math.cos(h)), 6)))
         cx, cy = (float(np.mean([p[0] for p in points])), float(np.mean([p[1] for p in points]))) if points \
             else (0.0, 0.0)
         bearings = [math.atan2(py - cy, px - cx) for px, py in points if math.hypot(px - cx, py - cy) > 0.5]
@@ -326,7 +329,7 @@ def _junction_infos(net: RoadNetwork, segments: dict[str, Segment], edges: list[
         approaches = approach_map.get(jid, ())
         controls = {a.control for a in approaches}
         control = next((c for c in (Control.SIGNAL, Control.STOP_SIGN) if c in controls), Control.NONE)
-        infos[jid] = JunctionInfo(jid, junction.name, layout, control, n_legs, tuple(legs),
+        infos[jid] = JunctionInfo(jid, junction.name, layout, control, n_legs, tuple(legs), tuple(headings),
                                   tuple(a.road_id for a in approaches),
                                   tuple(sorted({c.connecting_road for c in junction.connections},
                                                key=lambda r: (len(r), r))),

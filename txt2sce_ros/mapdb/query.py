@@ -123,10 +123,10 @@ class MapQueries:
     # ----------------------------------------------------------------------------------------- junctions
 
     def junctions(self, layout: str | Layout | None = None, *, control: str | Control | None = None,
-                  min_lanes: int | None = None, turns: Iterable[str | Turn] = (),
+                  min_lanes: int | None = None, one_way: bool | None = None, turns: Iterable[str | Turn] = (),
                   needs: Iterable[str] = ()) -> list[JunctionInfo]:
-        """Junctions with at least one approach that fits: see `approaches` for `control`, `min_lanes`, `turns`
-        and `needs`. `layout`: 'junction4', 'junction3', 'roundabout' or 'junction' (other leg counts).
+        """Junctions with at least one approach that fits: see `approaches` for `control`, `min_lanes`,
+        `one_way`, `turns` and `needs`. `layout`: 'junction4', 'junction3', 'roundabout' or 'junction' (other leg counts).
 
         Example: `db.junctions("junction4", control="signal", turns={"left"}, needs={"dedicated_left"})`.
         """
@@ -136,17 +136,19 @@ class MapQueries:
             info = self.junction_infos[jid]
             if want_layout and info.layout is not want_layout:
                 continue
-            if self.approaches(jid, control=control, min_lanes=min_lanes, turns=turns, needs=needs):
+            if self.approaches(jid, control=control, min_lanes=min_lanes, one_way=one_way, turns=turns,
+                               needs=needs):
                 out.append(info)
         return out
 
     def approaches(self, junction_id: str | int, *, control: str | Control | None = None,
-                   min_lanes: int | None = None, turns: Iterable[str | Turn] = (),
+                   min_lanes: int | None = None, one_way: bool | None = None, turns: Iterable[str | Turn] = (),
                    needs: Iterable[str] = ()) -> tuple[Approach, ...]:
         """Incoming roads of a junction: per road its driving lanes (left to right), and per lane the connections
         (with turn types) that start from it, the approach's control and its signals.
 
-        Filters: `control` ('signal', 'stop_sign', 'none'); `min_lanes` driving lanes into the junction; `turns`
+        Filters: `control` ('signal', 'stop_sign', 'none'); `min_lanes` driving lanes into the junction;
+        `one_way` True for one-way approach roads (no lanes leave the junction on them), False for two-way; `turns`
         the approach must offer (any of 'straight', 'left', 'right', 'uturn'); `needs` any of 'dedicated_left'
         (a lane that only turns left), 'left_with_left_neighbour' (a left turn from a lane that has a
         same-direction lane on its left, i.e. a lane change may precede the turn — paper's "afd"),
@@ -163,6 +165,8 @@ class MapQueries:
             if want_control and app.control is not want_control:
                 continue
             if min_lanes is not None and len(app.lanes) < min_lanes:
+                continue
+            if one_way is not None and (app.exit_lanes == 0) != one_way:
                 continue
             if not want_turns <= app.turns:
                 continue
@@ -186,22 +190,36 @@ class MapQueries:
         raise InputError(f"road {road_id!r} is no approach of junction {junction_id!r}", source=self.source,
                          element="junction")
 
-    def relative_approaches(self, junction_id: str | int, road_id: str | int) -> dict[str, Approach | None]:
-        """The other approaches as the sketch's R1–R3 see them from `road_id`'s approach: 'left' (traffic from
-        the crossing road on the left, R1), 'opposite' (oncoming, R2), 'right' (R3); None where there is none."""
-        me = self.approach(junction_id, road_id)
+    def relative_roads(self, junction_id: str | int, road_id: str | int) -> dict[str, str | None]:
+        """The junction's other legs as the sketch's R1–R4 see them from `road_id`: 'left' (the crossing road on
+        the left, R1; a left turn leaves on it), 'opposite' (R2; straight on), 'right' (R3); None where the
+        junction has no such leg. One-way legs count: a leg is a road, whichever way it may be driven."""
+        info = self.junction_infos.get(str(junction_id))
+        if info is None:
+            raise InputError(f"no junction {junction_id!r} in the map database", source=self.source,
+                             element="junction")
+        heads = dict(info.leg_headings)
+        if str(road_id) not in heads:
+            raise InputError(f"road {road_id!r} is no leg of junction {junction_id!r}", source=self.source,
+                             element="junction")
+        mine = heads[str(road_id)]
+        # Traffic arriving from the leg on my left drives to my right: its heading is mine minus 90 degrees.
         wanted = {"left": -math.pi / 2, "opposite": math.pi, "right": math.pi / 2}
-        best: dict[str, tuple[float, Approach | None]] = {k: (math.radians(50), None) for k in wanted}
-        for app in self.approach_map.get(str(junction_id), ()):
-            if app.road_id == me.road_id:
+        best: dict[str, tuple[float, str | None]] = {k: (math.radians(50), None) for k in wanted}
+        for rid, heading in info.leg_headings:
+            if rid == str(road_id):
                 continue
-            d = app.heading - me.heading
-            d = math.atan2(math.sin(d), math.cos(d))
+            d = heading - mine
             for name, target in wanted.items():
                 err = abs(math.atan2(math.sin(d - target), math.cos(d - target)))
                 if err < best[name][0]:
-                    best[name] = (err, app)
+                    best[name] = (err, rid)
         return {k: v[1] for k, v in best.items()}
+
+    def relative_approaches(self, junction_id: str | int, road_id: str | int) -> dict[str, Approach | None]:
+        """Like `relative_roads`, as approaches (None for a leg no lane drives into the junction on)."""
+        by_road = {a.road_id: a for a in self.approach_map.get(str(junction_id), ())}
+        return {k: by_road.get(r) if r else None for k, r in self.relative_roads(junction_id, road_id).items()}
 
     def edges_from(self, road_id: str | int, *, junction_id: str | None = None) -> list[ConnectionEdge]:
         """Connections leaving a road (optionally only through one junction)."""

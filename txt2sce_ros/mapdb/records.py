@@ -194,6 +194,7 @@ class JunctionInfo:
     control: Control                 # strongest control over its approaches (signal > stop sign > none)
     legs: int                        # distinct directions roads leave it in
     leg_roads: tuple[str, ...]       # non-junction roads touching it
+    leg_headings: tuple[tuple[str, float], ...]  # (road id, heading of travel toward the junction along it)
     approaches: tuple[str, ...]      # road ids with lanes driving into it
     connecting_roads: tuple[str, ...]
     controllers: tuple[str, ...]
