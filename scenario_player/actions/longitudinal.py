@@ -1,0 +1,269 @@
+"""LongitudinalAction family: SpeedAction, SpeedProfileAction, LongitudinalDistanceAction."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from lxml import etree
+
+from ..syntax.xml import ParseContext
+from .base import LONGITUDINAL, SHAPE_PEAK, ActionRun, TransitionDynamics, shape_value
+
+if TYPE_CHECKING:
+    from ..world.entity import Entity
+    from ..world.world import World
+
+
+@dataclass(frozen=True, slots=True)
+class SpeedTarget:
+    absolute: float | None
+    ref: str | None = None
+    value: float = 0.0
+    value_type: str = "delta"      # delta | factor
+    continuous: bool = False
+
+    @classmethod
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "SpeedTarget":
+        choice = ctx.only_child(el)
+        if choice.tag == "AbsoluteTargetSpeed":
+            return cls(ctx.float(choice, "value"))
+        if choice.tag == "RelativeTargetSpeed":
+            return cls(None, ctx.req(choice, "entityRef"), ctx.float(choice, "value"),
+                       ctx.req(choice, "speedTargetValueType"), ctx.bool(choice, "continuous", False))
+        raise ctx.error(choice, f"unknown speed target <{choice.tag}>")
+
+    def speed(self, world: "World") -> float:
+        if self.absolute is not None:
+            return self.absolute
+        ref = world.entity(self.ref or "").speed
+        return ref * self.value if self.value_type == "factor" else ref + self.value
+
+
+def transition_time(dyn: TransitionDynamics, v0: float, v1: float, ent: "Entity") -> float:
+    """Duration of a speed transition, stretched so its peak acceleration respects the entity's Performance."""
+    dv = v1 - v0
+    limit = ent.spec.max_accel if dv > 0 else ent.spec.max_decel
+    peak = SHAPE_PEAK[dyn.shape]
+    if dyn.dimension == "rate":
+        rate = abs(dyn.value)
+        if limit > 0:
+            rate = min(rate, limit)
+        return peak * abs(dv) / rate if rate > 0 else 0.0
+    if dyn.dimension == "distance":
+        mean = 0.5 * (abs(v0) + abs(v1))
+        duration = dyn.value / mean if mean > 1e-9 else 0.0
+    else:
+        duration = dyn.value
+    if limit > 0 and duration > 0 and peak * abs(dv) / duration > limit:
+        duration = peak * abs(dv) / limit
+    return duration
+
+
+@dataclass(frozen=True, slots=True)
+class SpeedAction:
+    dynamics: TransitionDynamics
+    target: SpeedTarget
+    is_private = True
+
+    @classmethod
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "SpeedAction":
+        return cls(TransitionDynamics.from_xml(ctx, ctx.child(el, "SpeedActionDynamics")),
+                   SpeedTarget.from_xml(ctx, ctx.child(el, "SpeedActionTarget")))
+
+    def start(self, world: "World", ent: "Entity | None") -> ActionRun | None:
+        assert ent is not None
+        run = SpeedRun(ent, self, world)
+        return run
+
+
+class SpeedRun(ActionRun):
+    domains = frozenset({LONGITUDINAL})
+
+    def __init__(self, ent: "Entity", spec: SpeedAction, world: "World") -> None:
+        super().__init__(ent)
+        self.spec = spec
+        self.v0 = ent.speed
+        self.v1 = spec.target.speed(world)
+        self.elapsed = 0.0
+        self.duration = 0.0 if spec.dynamics.shape == "step" else transition_time(spec.dynamics, self.v0, self.v1, ent)
+        if self.duration <= 0.0:
+            # A step takes effect at once (also in Init, so t=0 already shows the speed).
+            ent.speed = self.v1
+            self.done = not spec.target.continuous
+
+    def step(self, world: "World", dt: float) -> None:
+        ent = self.entity
+        target = self.spec.target.speed(world) if self.spec.target.continuous else self.v1
+        self.elapsed += dt
+        if self.duration <= 0.0 or self.elapsed >= self.duration - 1e-9:
+            ent.speed = target
+            if not self.spec.target.continuous:
+                self.done = True
+            return
+        f = shape_value(self.spec.dynamics.shape, self.elapsed / self.duration)
+        ent.speed = self.v0 + (target - self.v0) * f
+
+
+@dataclass(frozen=True, slots=True)
+class SpeedProfileAction:
+    """Speed through a list of (duration, speed) entries: 'position' mode interpolates linearly between them,
+    'follow' mode chases that profile within the DynamicConstraints (acceleration and its rate)."""
+
+    entries: tuple[tuple[float | None, float], ...]
+    following_mode: str
+    max_accel: float | None
+    max_decel: float | None
+    max_accel_rate: float | None
+    max_decel_rate: float | None
+    max_speed: float | None
+    ref: str | None
+    is_private = True
+
+    @classmethod
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "SpeedProfileAction":
+        entries = tuple((None if e.get("time") is None else ctx.float(e, "time"), ctx.float(e, "speed"))
+                        for e in el.findall("SpeedProfileEntry"))
+        dc = el.find("DynamicConstraints")
+        get = (lambda n: None if dc is None or dc.get(n) is None else ctx.float(dc, n))  # noqa: E731
+        return cls(entries, el.get("followingMode", "follow"), get("maxAcceleration"), get("maxDeceleration"),
+                   get("maxAccelerationRate"), get("maxDecelerationRate"), get("maxSpeed"), el.get("entityRef"))
+
+    def start(self, world: "World", ent: "Entity | None") -> ActionRun | None:
+        assert ent is not None
+        return SpeedProfileRun(ent, self)
+
+
+class SpeedProfileRun(ActionRun):
+    domains = frozenset({LONGITUDINAL})
+
+    def __init__(self, ent: "Entity", spec: SpeedProfileAction) -> None:
+        super().__init__(ent)
+        self.spec = spec
+        times, speeds = [0.0], [ent.speed]
+        acc = ent.spec.max_accel if spec.max_accel is None else spec.max_accel
+        dec = ent.spec.max_decel if spec.max_decel is None else spec.max_decel
+        for dur, v in spec.entries:
+            if dur is None:   # no time: reach it at the limit acceleration
+                dv = v - speeds[-1]
+                dur = abs(dv) / (acc if dv > 0 else dec) if (acc if dv > 0 else dec) > 0 else 0.0
+            times.append(times[-1] + max(dur, 0.0))
+            speeds.append(v)
+        self.times, self.speeds = times, speeds
+        self.elapsed = 0.0
+        self.acc = 0.0
+
+    def _profile(self, t: float) -> float:
+        ts, vs = self.times, self.speeds
+        if t >= ts[-1]:
+            return vs[-1]
+        for i in range(len(ts) - 1):
+            if ts[i] <= t < ts[i + 1]:
+                span = ts[i + 1] - ts[i]
+                return vs[i + 1] if span <= 0 else vs[i] + (vs[i + 1] - vs[i]) * (t - ts[i]) / span
+        return vs[-1]
+
+    def step(self, world: "World", dt: float) -> None:
+        ent, sp = self.entity, self.spec
+        self.elapsed += dt
+        target = self._profile(self.elapsed)
+        if sp.following_mode == "position":
+            ent.speed = target
+        else:
+            acc_lim = sp.max_accel if sp.max_accel is not None else ent.spec.max_accel
+            dec_lim = sp.max_decel if sp.max_decel is not None else ent.spec.max_decel
+            want = (target - ent.speed) / dt
+            want = min(max(want, -dec_lim), acc_lim)
+            jerk_up = sp.max_accel_rate if sp.max_accel_rate else math.inf
+            jerk_dn = sp.max_decel_rate if sp.max_decel_rate else math.inf
+            want = min(max(want, self.acc - jerk_dn * dt), self.acc + jerk_up * dt)
+            self.acc = want
+            ent.speed += want * dt
+        if sp.max_speed is not None:
+            ent.speed = min(ent.speed, sp.max_speed)
+        if self.elapsed >= self.times[-1] - 1e-9 and abs(ent.speed - self.speeds[-1]) < 1e-3:
+            ent.speed = self.speeds[-1]
+            self.done = True
+
+
+@dataclass(frozen=True, slots=True)
+class LongitudinalDistanceAction:
+    """Keep a distance (or time gap) to `ref`. Without DynamicConstraints the actor is placed at the distance at
+    once every step (as esmini does); with them a critically damped gap controller within the limits is used."""
+
+    ref: str
+    distance: float | None
+    time_gap: float | None
+    freespace: bool
+    continuous: bool
+    displacement: str
+    cs: str
+    max_accel: float | None
+    max_decel: float | None
+    max_speed: float | None
+    is_private = True
+
+    @classmethod
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "LongitudinalDistanceAction":
+        dc = el.find("DynamicConstraints")
+        get = (lambda n: None if dc is None or dc.get(n) is None else ctx.float(dc, n))  # noqa: E731
+        dist = None if el.get("distance") is None else ctx.float(el, "distance")
+        gap = None if el.get("timeGap") is None else ctx.float(el, "timeGap")
+        if dist is None and gap is None:
+            raise ctx.error(el, "LongitudinalDistanceAction needs distance or timeGap")
+        return cls(ctx.req(el, "entityRef"), dist, gap, ctx.bool(el, "freespace", False),
+                   ctx.bool(el, "continuous", False), el.get("displacement", "trailingReferencedEntity"),
+                   el.get("coordinateSystem", "entity"), get("maxAcceleration"), get("maxDeceleration"),
+                   get("maxSpeed"))
+
+    def start(self, world: "World", ent: "Entity | None") -> ActionRun | None:
+        assert ent is not None
+        return LongitudinalDistanceRun(ent, self, world)
+
+
+class LongitudinalDistanceRun(ActionRun):
+    domains = frozenset({LONGITUDINAL})
+
+    def __init__(self, ent: "Entity", spec: LongitudinalDistanceAction, world: "World") -> None:
+        super().__init__(ent)
+        self.spec = spec
+        self.ref = world.entity(spec.ref)
+        self.has_dynamics = spec.max_accel is not None or spec.max_decel is not None or spec.max_speed is not None
+
+    def _wanted(self) -> float:
+        sp = self.spec
+        if sp.distance is not None:
+            return sp.distance
+        return (sp.time_gap or 0.0) * max(self.entity.speed, 0.0)
+
+    def step(self, world: "World", dt: float) -> None:
+        ent, ref, sp = self.entity, self.ref, self.spec
+        cs = "road" if sp.cs in ("road", "lane") else "entity"
+        # Gap measured from the actor to the referenced entity (positive: the reference is ahead).
+        gap = world.measure.between(ent, ref, "longitudinal", cs, sp.freespace)
+        behind = sp.displacement != "leadingReferencedEntity"
+        if sp.displacement == "any":
+            behind = gap >= 0
+        wanted = self._wanted()
+        error = (gap - wanted) if behind else (-gap - wanted)     # >0: too far from the wanted spot
+        if not self.has_dynamics:
+            if ent.track is not None:
+                shift = error if behind else -error
+                s, _ = ent.track.travel(ent.s, shift)
+                ent.s = s
+                ent.x, ent.y, ent.h = ent.track.pose(s, ent.offset)
+                ent._sync_road()
+            ent.speed = ref.speed
+        else:
+            rel_v = ref.speed - ent.speed if behind else ent.speed - ref.speed
+            # Critically damped spring on the gap error (natural frequency 1 rad/s keeps it gentle).
+            acc = error * 1.0 + 2.0 * rel_v if behind else -(error * 1.0 + 2.0 * rel_v)
+            acc_lim = sp.max_accel if sp.max_accel is not None else ent.spec.max_accel
+            dec_lim = sp.max_decel if sp.max_decel is not None else ent.spec.max_decel
+            acc = min(max(acc, -dec_lim), acc_lim)
+            ent.speed = max(0.0, ent.speed + acc * dt)
+            if sp.max_speed is not None:
+                ent.speed = min(ent.speed, sp.max_speed)
+        if not sp.continuous and abs(error) < 0.1:
+            self.done = True

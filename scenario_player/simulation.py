@@ -1,0 +1,274 @@
+"""The Simulation: one run of a Scenario in the deterministic 2D world.
+
+One documented step function (`Simulation.step`), in this order:
+
+1. triggers   — the storyboard is evaluated on the state at t_k (StopTrigger, Acts, Events); actions that start
+                take effect (teleports, step speeds) and take their control domains;
+2. actions    — every running action advances one step (longitudinal first, then lateral/trajectory);
+3. command    — the planner's ControlCommand for t_k is applied to the ego (planner mode);
+4. kinematics — every entity moves dt (lane following, free motion, bicycle model for the ego);
+5. derived    — t_{k+1}; accelerations, yaw rates, odometers, stand-still/end-of-road/off-road timers, signals;
+6. collisions — oriented-box overlap of every pair of footprints;
+7. record     — the trajectory row of t_{k+1} and the Frame returned.
+
+An action triggered at step k therefore first shows at t_{k+1}, as in esmini's recordings.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from txt2sce_ros.contract import EGO_NAME, ControlCommand, Frame, Goal, RunStatus
+from txt2sce_ros.road import RoadNetwork
+
+from .actions.longitudinal import SpeedAction
+from .actions.routing import AssignRouteAction
+from .actions.teleport import TeleportAction
+from .conditions.by_entity import ByEntityCondition, ReachPositionCondition
+from .storyboard.build import build_storyboard
+from .storyboard.element import State
+from .storyboard.tree import index_elements
+from .syntax.scenario import Scenario
+from .syntax.xml import ParseContext
+from .world import collision
+from .world.entity import Entity
+from .world.motion import derive, move_planner, move_storyboard
+from .world.world import World
+
+
+@dataclass(frozen=True, slots=True)
+class SimulationConfig:
+    dt: float = 0.05
+    ego_mode: str = "planner"              # 'planner': the ego follows ControlCommands; 'storyboard': its actions
+    seed: int = 0
+    time_limit: float | None = None        # s of simulation time; None: config/player.yaml default
+    ego_name: str | None = None            # default: 'ego' (contract), else 'Ego', else the first entity
+    stop_on_ego_collision: bool = True     # planner mode: a crash ends the run (the oracle judges it)
+    default_time_limit: float = 120.0
+    scenario_id: str = ""
+    locate_free: bool = True               # road coordinates for free-moving entities every step
+
+    @classmethod
+    def from_config(cls, **overrides: object) -> "SimulationConfig":
+        from txt2sce_ros.config import load_config
+
+        cfg = dict(load_config("player").get("simulation", {}))
+        cfg.update({k: v for k, v in overrides.items() if v is not None})
+        return cls(**cfg)  # type: ignore[arg-type]
+
+
+@dataclass
+class _Recorder:
+    rows: dict[str, list[tuple[float, float, float, float, float]]] = field(default_factory=dict)
+
+    def add(self, t: float, entities: list[Entity]) -> None:
+        for e in entities:
+            if e.present:
+                self.rows.setdefault(e.name, []).append((t, e.x, e.y, e.h, e.speed))
+
+
+def _pick_ego(names: list[str], wanted: str | None) -> str:
+    if wanted:
+        return wanted
+    for cand in (EGO_NAME, "Ego", "EGO", "hero"):
+        if cand in names:
+            return cand
+    return names[0]
+
+
+class Simulation:
+    """One run. `reset()` executes Init; `step(command)` advances one dt; see the module docstring."""
+
+    def __init__(self, scenario: Scenario, config: SimulationConfig | None = None) -> None:
+        self.scenario = scenario
+        self.config = config or SimulationConfig()
+        if self.config.ego_mode not in ("planner", "storyboard"):
+            raise ValueError("ego_mode must be 'planner' or 'storyboard'")
+        self.network: RoadNetwork = scenario.network
+        self.ego_name = _pick_ego(scenario.entity_names, self.config.ego_name)
+        self.goal: Goal | None = None
+        self.done = False
+        self.end_reason = ""
+        self.verdict_hint = ""
+        self.slip_steps = 0
+        self._build()
+
+    # -- life cycle -----------------------------------------------------------------------------------------------
+    def _build(self) -> None:
+        sc = self.scenario
+        ctx = ParseContext(sc.source)
+        self.storyboard = build_storyboard(ctx, sc.root)
+        entities = {spec.name: Entity(spec) for spec in sc.entities}
+        self.world = World(sc.network, entities, dt=self.config.dt, seed=self.config.seed,
+                           parameters=sc.doc.parameters, source=sc.source)
+        for ctrl in sc.controllers:
+            self.world.signals.add_controller(ctrl)
+        self.world.elements = index_elements(self.storyboard.stories)
+        self.ego = entities[self.ego_name]
+        self.ego.planner = self.config.ego_mode == "planner"
+        self.recorder = _Recorder()
+        self.done = False
+        self.end_reason = self.verdict_hint = ""
+        self._started = False
+
+    def reset(self) -> Frame:
+        """Build a fresh world and storyboard, execute Init (t = 0) and return the first frame."""
+        self._build()
+        w = self.world
+        planner = self.ego.planner
+        for ent_name, spec, _line in self.storyboard.init:
+            if ent_name is None:
+                run = spec.start(w, None)
+                if run is not None and not run.done:
+                    w.global_runs.append(run)
+                continue
+            ent = w.entity(ent_name)
+            if planner and ent is self.ego and not isinstance(spec, (TeleportAction, SpeedAction, AssignRouteAction)):
+                w.note(f"ignored: Init action {type(spec).__name__} on planner-driven '{ent.name}'")
+                continue
+            if planner and ent is self.ego and isinstance(spec, SpeedAction):
+                ent.speed = spec.target.speed(w)      # the initial speed only; the planner drives from here
+                continue
+            run = spec.start(w, ent)
+            if run is not None and not run.done:
+                w.take(ent, run)
+            if planner and ent is self.ego and isinstance(spec, AssignRouteAction):
+                self.goal = self._goal_from_route(spec)
+        if planner:
+            self.ego.track = None
+            self.ego.lane_locked = False
+        for ent in w.order:
+            ent._prev_speed, ent._prev_h = ent.speed, ent.h
+            if ent.track is None:
+                derive(w, ent, self.config.dt, ent.x, ent.y, self.config.locate_free)
+                ent.accel = ent.yaw_rate = 0.0
+        for story in self.storyboard.stories:
+            story.start(w)
+        self._started = True
+        self.recorder.add(0.0, w.order)
+        return self.frame()
+
+    def _goal_from_route(self, spec: AssignRouteAction) -> Goal:
+        pose = self.world.resolve_cached(spec.route.waypoints[-1].position)
+        tol = 3.0
+        stop = self.storyboard.stop_trigger
+        if stop is not None:
+            for group in stop.groups:
+                for cond in group.conditions:
+                    chk = cond.check
+                    if isinstance(chk, ByEntityCondition) and isinstance(chk.check, ReachPositionCondition):
+                        tol = chk.check.tolerance
+        return Goal(x=pose.x, y=pose.y, heading=pose.h, tolerance=tol)
+
+    @property
+    def time_limit(self) -> float:
+        return self.config.time_limit if self.config.time_limit is not None else self.config.default_time_limit
+
+    # -- the step -------------------------------------------------------------------------------------------------
+    def step(self, command: ControlCommand | None = None) -> Frame:
+        if not self._started:
+            self.reset()
+        if self.done:
+            return self.frame()
+        w, dt = self.world, self.config.dt
+        # 1. triggers
+        stop = self.storyboard.stop_trigger
+        if stop is not None and stop.evaluate(w):
+            fired = [c.name for g in stop.groups for c in g.conditions if c.last_value]
+            self._finish("goal_reached" if any("goal" in n for n in fired) else "stop_trigger")
+            return self.frame()
+        for story in self.storyboard.stories:
+            story.tick(w)
+        # 2. actions
+        before = [(e.x, e.y, e.road_t, e.road_id) for e in w.order]
+        w.step_runs(dt)
+        # 3 + 4. planner command and kinematics
+        for ent, (px, py, pt, proad) in zip(w.order, before):
+            if not ent.present:
+                continue
+            if ent.planner:
+                if move_planner(w, ent, command, dt):
+                    self.slip_steps += 1
+            else:
+                move_storyboard(w, ent, dt, pt, proad)
+        # 5. derived states
+        w.t = round((w.step_index + 1) * dt, 9)
+        w.step_index += 1
+        w.signals.step(w.t)
+        for ent, (px, py, _pt, _pr) in zip(w.order, before):
+            if ent.present:
+                derive(w, ent, dt, px, py, self.config.locate_free)
+                ent._prev_speed, ent._prev_h = ent.speed, ent.h
+        # 6. collisions
+        for ent in w.order:
+            ent.colliding.clear()
+        for a, b in collision.detect(w.order):
+            w.entities[a].colliding.add(b)
+            w.entities[b].colliding.add(a)
+        # 7. record
+        self.recorder.add(w.t, w.order)
+        if all(s.state is State.COMPLETE for s in self.storyboard.stories) and stop is None and self.storyboard.stories:
+            self._finish("storyboard_complete")
+        elif self.ego.planner and self.config.stop_on_ego_collision and self.ego.colliding:
+            self._finish("collision")
+        elif self.ego.planner and self.goal is not None and math.hypot(
+                self.ego.x - self.goal.x, self.ego.y - self.goal.y) <= self.goal.tolerance:
+            self._finish("goal_reached")
+        elif w.t >= self.time_limit - 1e-9:
+            self._finish("time_limit")
+        return self.frame()
+
+    def _finish(self, reason: str, verdict_hint: str = "") -> None:
+        self.done = True
+        self.end_reason = reason
+        self.verdict_hint = verdict_hint
+
+    def abort(self, reason: str) -> None:
+        """End the run from outside (e.g. the node: planner not responding) as an error of the run itself."""
+        self._finish(reason, "error")
+
+    # -- outputs --------------------------------------------------------------------------------------------------
+    def frame(self) -> Frame:
+        w = self.world
+        t = w.t
+        objects = tuple(e.state(t) for e in w.order if e.present and e is not self.ego)
+        return Frame(t=t, ego=self.ego.state(t), objects=objects, lights=w.signals.lights())
+
+    @property
+    def t(self) -> float:
+        return self.world.t
+
+    @property
+    def unsupported(self) -> list[str]:
+        return list(self.scenario.unsupported)
+
+    @property
+    def notes(self) -> list[str]:
+        return list(self.world.notes)
+
+    @property
+    def status(self) -> RunStatus:
+        notes = list(self.scenario.unsupported) + [n for n in self.world.notes if n not in self.scenario.unsupported]
+        if self.slip_steps:
+            notes.append(f"note: ego wheels slipped in {self.slip_steps} steps (friction {self.world.friction:g})")
+        return RunStatus(scenario_id=self.config.scenario_id or self.scenario.source,
+                         state="finished" if self.done else ("started" if self._started else "pending"),
+                         t=self.world.t, end_reason=self.end_reason, verdict_hint=self.verdict_hint,
+                         unsupported=tuple(notes))
+
+    @property
+    def trajectory(self) -> dict[str, np.ndarray]:
+        """Per entity: rows of t, x, y, heading, speed (float64)."""
+        return {name: np.array(rows, dtype=float) for name, rows in self.recorder.rows.items()}
+
+    def run(self, *, max_steps: int | None = None) -> RunStatus:
+        """Batch: run to the end with no planner commands (storyboard mode, or a planner-less smoke run)."""
+        self.reset()
+        n = 0
+        while not self.done and (max_steps is None or n < max_steps):
+            self.step(None)
+            n += 1
+        return self.status

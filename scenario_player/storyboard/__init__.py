@@ -1,0 +1,1 @@
+"""The Storyboard: Init, Story/Act/ManeuverGroup/Maneuver/Event elements with the ASAM life cycle."""

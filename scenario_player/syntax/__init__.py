@@ -1,0 +1,1 @@
+"""OpenSCENARIO syntax: XML loading, parameters, catalogs, and typed records parsed from the resolved tree."""

@@ -1,0 +1,133 @@
+"""`load_scenario`: read an OpenSCENARIO file completely (parameters, catalogs, entities, storyboard, road
+network), validate entity references, and collect what is unsupported. The parsed `Scenario` is immutable; each
+Simulation builds its own fresh storyboard from it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lxml import etree
+
+from txt2sce_ros.errors import InputError
+from txt2sce_ros.road import RoadNetwork, load_network
+
+from ..world.signals import Phase, SignalController
+from .document import ResolvedDocument, resolve_document
+from .entities import EntitySpec
+from .xml import ParseContext
+
+#: attributes that name entities (validated at load).
+_ENTITY_ATTRS = ("entityRef", "masterEntityRef")
+
+
+@dataclass(frozen=True)
+class Scenario:
+    source: str
+    doc: ResolvedDocument
+    entities: tuple[EntitySpec, ...]
+    network: RoadNetwork
+    map_path: str
+    controllers: tuple[SignalController, ...]
+    unsupported: tuple[str, ...]
+    description: str = ""
+    revision: tuple[int, int] = (1, 0)
+    meta: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def root(self) -> etree._Element:
+        return self.doc.root
+
+    @property
+    def entity_names(self) -> list[str]:
+        return [e.name for e in self.entities]
+
+
+def _controllers(ctx: ParseContext, root: etree._Element) -> tuple[SignalController, ...]:
+    out = []
+    for c in root.iterfind("RoadNetwork/TrafficSignals/TrafficSignalController"):
+        phases = tuple(Phase(p.get("name", ""), ctx.float(p, "duration", 0.0),
+                             tuple((s.get("trafficSignalId", ""), s.get("state", ""))
+                                   for s in p.findall("TrafficSignalState")))
+                       for p in c.findall("Phase"))
+        out.append(SignalController(ctx.req(c, "name"), ctx.float(c, "delay", 0.0), phases))
+    return tuple(out)
+
+
+def _network(ctx: ParseContext, root: etree._Element, base_dir: Path, map_text: str | None,
+             map_path: str | None) -> tuple[RoadNetwork, str]:
+    if map_text:
+        return RoadNetwork.from_string(map_text, source=map_path or "<map>"), map_path or "<map>"
+    logic = root.find("RoadNetwork/LogicFile")
+    if logic is None or not logic.get("filepath"):
+        raise InputError("no RoadNetwork/LogicFile: the player needs an OpenDRIVE map", source=ctx.source,
+                         element="RoadNetwork", line=None if logic is None else logic.sourceline)
+    path = Path(logic.get("filepath", ""))
+    candidates = [path] if path.is_absolute() else [base_dir / path, base_dir / path.name]
+    if map_path:
+        candidates.insert(0, Path(map_path))
+    for cand in candidates:
+        if cand.is_file():
+            return load_network(cand), str(cand)
+    raise InputError(f"OpenDRIVE file '{path}' not found (looked in {', '.join(str(c) for c in candidates)})",
+                     source=ctx.source, element="LogicFile", line=logic.sourceline)
+
+
+def _check_references(ctx: ParseContext, root: etree._Element, names: set[str]) -> None:
+    for el in root.iter():
+        if not isinstance(el.tag, str):
+            continue
+        for attr in _ENTITY_ATTRS:
+            ref = el.get(attr)
+            if el.tag == "TrailerRef" and not ref:
+                continue        # catalog vehicles declare an optional trailer with an empty reference
+            if ref is not None and ref not in names:
+                raise InputError(f"unknown entity reference '{ref}' (entities: {', '.join(sorted(names))})",
+                                 source=ctx.source, element=str(el.tag), line=el.sourceline)
+
+
+def load_scenario(path_or_text: str | Path, *, source: str | None = None, map_text: str | None = None,
+                  map_path: str | None = None) -> Scenario:
+    """Parse a scenario completely. `path_or_text`: a file path, or the XML text itself (then `source` names it
+    and relative paths resolve against the current directory)."""
+    text: str | bytes
+    if isinstance(path_or_text, Path) or (isinstance(path_or_text, str) and "<" not in path_or_text[:512]):
+        p = Path(path_or_text)
+        try:
+            text = p.read_bytes()
+        except OSError as exc:
+            raise InputError(f"cannot read scenario: {exc}", source=str(p)) from exc
+        src, base = source or str(p), p.resolve().parent
+    else:
+        text, src, base = path_or_text, source or "<scenario>", Path.cwd()
+    doc = resolve_document(text, source=src, base_dir=base)
+    ctx = ParseContext(src)
+    root = doc.root
+    header = root.find("FileHeader")
+    rev = (1, 0)
+    if header is not None:
+        rev = (ctx.int(header, "revMajor", 1), ctx.int(header, "revMinor", 0))
+    entities_el = root.find("Entities")
+    if entities_el is None:
+        raise InputError("no <Entities>", source=src, element="OpenSCENARIO")
+    specs = []
+    for obj in entities_el:
+        if obj.tag == "ScenarioObject":
+            specs.append(EntitySpec.from_xml(ctx, obj))
+        elif isinstance(obj.tag, str):
+            ctx.note_unsupported(obj)
+    names = {s.name for s in specs}
+    if len(names) != len(specs):
+        raise InputError("duplicate ScenarioObject names", source=src, element="Entities")
+    _check_references(ctx, root, names)
+    if root.find("Storyboard") is None:
+        raise InputError("no <Storyboard>", source=src, element="OpenSCENARIO")
+    network, used_map = _network(ctx, root, base, map_text, map_path)
+    controllers = _controllers(ctx, root)
+    # Parse the storyboard once now so that errors and unsupported elements surface at load.
+    from ..storyboard.build import build_storyboard
+
+    build_storyboard(ctx, root)
+    return Scenario(source=src, doc=doc, entities=tuple(specs), network=network, map_path=used_map,
+                    controllers=controllers, unsupported=tuple(ctx.unsupported),
+                    description="" if header is None else header.get("description", ""), revision=rev)

@@ -1,0 +1,79 @@
+"""Small helpers to read typed attributes from resolved elements, with errors naming the element and line."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lxml import etree
+
+from txt2sce_ros.errors import InputError
+
+
+class ParseContext:
+    """What every `from_xml` needs: the source name (for errors) and the list that collects unsupported notes."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+        self.unsupported: list[str] = []
+
+    def error(self, el: etree._Element, message: str) -> InputError:
+        return InputError(message, source=self.source, element=str(el.tag), line=el.sourceline)
+
+    def note_unsupported(self, el: etree._Element, what: str | None = None) -> str:
+        note = f"unsupported: {what or el.tag} at line {el.sourceline}"
+        if note not in self.unsupported:
+            self.unsupported.append(note)
+        return note
+
+    # -- attributes ---------------------------------------------------------------------------------------------
+    def req(self, el: etree._Element, name: str) -> str:
+        value = el.get(name)
+        if value is None:
+            raise self.error(el, f"missing attribute '{name}'")
+        return value
+
+    def float(self, el: etree._Element, name: str, default: float | None = None) -> float:
+        value = el.get(name)
+        if value is None:
+            if default is None:
+                raise self.error(el, f"missing attribute '{name}'")
+            return default
+        try:
+            return float(value)
+        except ValueError as exc:
+            raise self.error(el, f"attribute {name}='{value}' is not a number") from exc
+
+    def int(self, el: etree._Element, name: str, default: int | None = None) -> int:
+        return int(round(self.float(el, name, None if default is None else float(default))))
+
+    def bool(self, el: etree._Element, name: str, default: bool = False) -> bool:
+        value = el.get(name)
+        if value is None:
+            return default
+        low = value.strip().lower()
+        if low in ("true", "1"):
+            return True
+        if low in ("false", "0"):
+            return False
+        raise self.error(el, f"attribute {name}='{value}' is not a boolean")
+
+    def child(self, el: etree._Element, tag: str) -> etree._Element:
+        found = el.find(tag)
+        if found is None:
+            raise self.error(el, f"missing child <{tag}>")
+        return found
+
+    def only_child(self, el: etree._Element) -> etree._Element:
+        kids = elements(el)
+        if len(kids) != 1:
+            raise self.error(el, f"expected exactly one child element, found {len(kids)}")
+        return kids[0]
+
+
+def elements(el: etree._Element) -> list[etree._Element]:
+    """Child elements (comments and processing instructions skipped)."""
+    return [c for c in el if isinstance(c.tag, str)]
+
+
+def iter_tag(el: etree._Element, tag: str) -> Iterator[etree._Element]:
+    return (c for c in el if c.tag == tag)

@@ -1,0 +1,83 @@
+"""Runtime state of one scenario object. Mutable on purpose (the world steps it in place); everything the outside
+sees is copied into frozen `EntityState` records."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from txt2sce_ros.contract import EntityState
+
+from ..syntax.entities import EntitySpec
+from .lanes import LaneTrack
+
+if TYPE_CHECKING:
+    from ..actions.base import ActionRun
+
+
+class Entity:
+    __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
+                 "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
+                 "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "road_id",
+                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache")
+
+    def __init__(self, spec: EntitySpec) -> None:
+        self.spec = spec
+        self.name = spec.name
+        self.x = self.y = self.h = 0.0
+        self.speed = self.accel = self.yaw_rate = 0.0
+        self.track: LaneTrack | None = None       # lane the entity follows (None: free motion)
+        self.s = 0.0                              # road s on `track`
+        self.offset = 0.0                         # from the lane centre toward +t
+        self.runs: dict[str, "ActionRun"] = {}    # control domain -> run holding it
+        self.route_lanes: set = set()             # LaneRefs of an assigned route (junction choices)
+        self.odometer = 0.0
+        self.standstill_time = 0.0
+        self.end_of_road_time: float | None = None
+        self.offroad_time: float | None = None
+        self.colliding: set[str] = set()
+        self.planner = False                      # driven by the planner under test
+        self.present = False                      # placed by a teleport (or the planner's start)
+        self.lane_locked = True                   # motion follows the lane (False: free kinematics)
+        self._prev_speed = 0.0
+        self._prev_h = 0.0
+        self.road_id: str | None = None
+        self.lane_id: int | None = None
+        self.road_s = 0.0
+        self.road_t = 0.0
+        self.heading_override: float | None = None
+        self.corner_cache = None
+
+    # -- placement ------------------------------------------------------------------------------------------------
+    def place_on_lane(self, track: LaneTrack, s: float, offset: float, heading: float | None = None) -> None:
+        self.track, self.s, self.offset = track, s, offset
+        self.lane_locked = True
+        x, y, h = track.pose(s, offset)
+        self.x, self.y = x, y
+        self.h = h if heading is None else heading
+        self.heading_override = None if heading is None or abs(_wrap(heading - h)) < 1e-9 else heading
+        self.present = True
+        self._sync_road()
+
+    def place_free(self, x: float, y: float, h: float) -> None:
+        self.track = None
+        self.x, self.y, self.h = x, y, h
+        self.lane_locked = False
+        self.present = True
+
+    def _sync_road(self) -> None:
+        tr = self.track
+        if tr is not None:
+            self.road_id, self.lane_id = tr.ref.road_id, tr.ref.lane_id
+            self.road_s = self.s
+            self.road_t = tr.center_t(self.s) + self.offset
+
+    def state(self, t: float) -> EntityState:
+        sp = self.spec
+        return EntityState(name=self.name, category=sp.category, t=t, x=self.x, y=self.y, heading=_wrap(self.h),
+                           speed=self.speed, accel=self.accel, yaw_rate=self.yaw_rate, length=sp.length,
+                           width=sp.width, height=sp.height, center_x=sp.center_x, is_static=sp.is_static)
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2.0 * math.pi) - math.pi

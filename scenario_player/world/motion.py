@@ -1,0 +1,124 @@
+"""Moving entities one step, and the states derived from the motion.
+
+Storyboard-driven entities on a lane move their speed·dt along the lane (through successor lanes at the lane's
+end, preferring lanes of an assigned route, else the straightest continuation); their lateral position is the
+offset their lateral action set. Entities off the lanes move straight along their heading. The planner-driven ego
+moves with the kinematic bicycle of `kinematics.py`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from txt2sce_ros.contract import ControlCommand
+
+from .kinematics import bicycle_command, integrate
+
+if TYPE_CHECKING:
+    from .entity import Entity
+    from .lanes import LaneTrack
+    from .world import World
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def _next_track(world: "World", ent: "Entity", track: "LaneTrack") -> "LaneTrack | None":
+    refs = world.tracks.successors(track.ref)
+    if not refs:
+        return None
+    if len(refs) > 1 and ent.route_lanes:
+        on_route = [r for r in refs if r in ent.route_lanes]
+        if on_route:
+            refs = on_route
+    if len(refs) == 1:
+        return world.tracks.track(refs[0])
+    # Straightest continuation: smallest heading change between this lane's end and the successor's start.
+    end_h = track.pose(track.s1 if track.forward else track.s0)[2]
+    best, best_dh = None, math.inf
+    for ref in refs:
+        cand = world.tracks.track(ref)
+        far = cand.travel(cand.entry_s(), min(10.0, cand.length))[0]
+        dh = abs(_wrap(cand.pose(far)[2] - end_h))
+        if dh < best_dh:
+            best, best_dh = cand, dh
+    return best
+
+
+def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
+    """Advance along the lane; False when the lane network ends (the entity stays at the end)."""
+    track = ent.track
+    assert track is not None
+    s, left = track.travel(ent.s, dist)
+    ok = True
+    guard = 0
+    while left > 1e-12 and guard < 20:
+        guard += 1
+        nxt = _next_track(world, ent, track) if dist > 0 else None
+        if nxt is None:
+            ok = False
+            break
+        if nxt.forward != track.forward:
+            ent.offset = -ent.offset        # +t of the next road points the other way relative to travel
+        track = nxt
+        s, left = track.travel(track.entry_s(), left)
+    ent.track, ent.s = track, s
+    return ok
+
+
+def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, prev_road: str | None) -> None:
+    for run in ent.runs.values():
+        if run.moves_entity:
+            return
+    dist = ent.speed * dt
+    if ent.track is not None and ent.lane_locked:
+        ok = move_on_lane(world, ent, dist)
+        x, y, h = ent.track.pose(ent.s, ent.offset)
+        ent._sync_road()
+        if ent.heading_override is not None and ent.offset == ent.offset:
+            h = ent.heading_override
+        elif dist > 1e-9 and prev_road == ent.road_id:
+            # Heading follows the lateral motion too (lane changes): atan of lateral over longitudinal travel.
+            lateral = (ent.road_t - prev_t) * (1.0 if ent.track.forward else -1.0)
+            h = h + math.atan2(lateral, dist)
+        ent.x, ent.y, ent.h = x, y, h
+        if ok:
+            ent.end_of_road_time = None
+        else:
+            ent.end_of_road_time = (ent.end_of_road_time or 0.0) + dt
+    elif dist != 0.0:
+        ent.x += dist * math.cos(ent.h)
+        ent.y += dist * math.sin(ent.h)
+
+
+def move_planner(world: "World", ent: "Entity", cmd: ControlCommand | None, dt: float) -> bool:
+    """Apply the planner's command to the ego; returns True if the wheels slipped."""
+    sp = ent.spec
+    v_cmd, w_cmd = (ent.speed, 0.0) if cmd is None else (cmd.speed, cmd.yaw_rate)
+    res = bicycle_command(ent.speed, v_cmd, w_cmd, dt, wheelbase=sp.wheelbase, max_steer=sp.max_steering,
+                          max_accel=sp.max_accel, max_decel=sp.max_decel, max_speed=sp.max_speed,
+                          friction=world.friction, is_vehicle=sp.kind == "vehicle")
+    ent.x, ent.y, ent.h = integrate(ent.x, ent.y, ent.h, ent.speed, res.speed, res.yaw_rate, dt)
+    ent.speed = res.speed
+    ent.track = None
+    ent.lane_locked = False
+    return res.slipping
+
+
+def derive(world: "World", ent: "Entity", dt: float, px: float, py: float, locate: bool) -> None:
+    """Acceleration, yaw rate, odometer, stand-still time, and road coordinates of free-moving entities."""
+    ent.accel = (ent.speed - ent._prev_speed) / dt
+    ent.yaw_rate = _wrap(ent.h - ent._prev_h) / dt
+    ent.odometer += math.hypot(ent.x - px, ent.y - py)
+    ent.standstill_time = ent.standstill_time + dt if abs(ent.speed) < 1e-3 else 0.0
+    if locate and (ent.track is None or not ent.lane_locked):
+        lp = world.net.locate(ent.x, ent.y, ent.h)
+        if lp is not None and lp.inside:
+            ent.road_id, ent.lane_id, ent.road_s, ent.road_t = lp.road_id, lp.lane_id, lp.s, lp.t
+            ent.offroad_time = None
+        else:
+            ent.offroad_time = (ent.offroad_time or 0.0) + dt
+            if lp is not None:
+                ent.road_id, ent.lane_id, ent.road_s, ent.road_t = lp.road_id, lp.lane_id, lp.s, lp.t

@@ -1,0 +1,273 @@
+"""The World: the one object actions and conditions talk to (a narrow facade), passed explicitly, no globals.
+
+Positions resolve here (lane, road, relative, route), actions start and take control domains here, and the
+storyboard index answers StoryboardElementStateConditions. Motion itself lives in `world/motion.py`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Iterable
+
+import numpy as np
+
+from txt2sce_ros.errors import InputError, UnsupportedFeature
+from txt2sce_ros.road import LanePath, LaneRef, RoadNetwork
+
+from ..syntax.positions import Orientation, Pose
+from .entity import Entity
+from .lanes import TrackCache
+from .measure import Measure
+from .signals import SignalBoard
+
+if TYPE_CHECKING:
+    from ..actions.base import ActionRun, ActionSpec
+    from ..storyboard.element import StoryboardElement, Transition
+
+STATIC_POSITIONS = ("WorldPosition", "LanePosition", "RoadPosition", "RoutePosition")
+
+
+class World:
+    def __init__(self, net: RoadNetwork, entities: dict[str, Entity], *, dt: float, seed: int,
+                 parameters: dict[str, str], source: str) -> None:
+        self.net = net
+        self.tracks = TrackCache.of(net)
+        self.entities = entities
+        self.order = list(entities.values())
+        self.dt = dt
+        self.t = 0.0
+        self.step_index = 0
+        self.rng = np.random.default_rng(seed)
+        self.friction = 1.0
+        self.parameters = dict(parameters)
+        self.source = source
+        self.signals = SignalBoard(net)
+        self.measure = Measure(self)
+        self.elements: dict[tuple[str, str], "StoryboardElement"] = {}
+        self.notes: list[str] = []                 # e.g. storyboard actions ignored on the planner-driven ego
+        self.transitions: list[tuple[float, str, str, str]] = []
+        self._static_cache: dict[int, Pose] = {}
+        self.running: list["ActionRun"] = []
+        self.global_runs: list["ActionRun"] = []
+
+    # -- lookups --------------------------------------------------------------------------------------------------
+    def entity(self, name: str) -> Entity:
+        try:
+            return self.entities[name]
+        except KeyError:
+            raise InputError(f"unknown entity '{name}'", source=self.source, element="entityRef") from None
+
+    def parameter(self, name: str) -> str:
+        if name not in self.parameters:
+            raise InputError(f"unknown parameter '{name}'", source=self.source, element="parameterRef")
+        return self.parameters[name]
+
+    def storyboard_element(self, kind: str, name: str) -> "StoryboardElement":
+        el = self.elements.get((kind, name))
+        if el is None:
+            raise InputError(f"no {kind} named '{name}'", source=self.source, element="storyboardElementRef")
+        return el
+
+    def log_transition(self, element: "StoryboardElement", transition: "Transition") -> None:
+        self.transitions.append((self.t, element.kind, element.name, transition.value))
+
+    def note(self, text: str) -> None:
+        if text not in self.notes:
+            self.notes.append(text)
+
+    # -- positions ------------------------------------------------------------------------------------------------
+    def resolve_cached(self, position: Any) -> Pose:
+        """Resolve a position; absolute ones once per run (conditions test them every step)."""
+        if type(position).__name__ in STATIC_POSITIONS:
+            key = id(position)
+            pose = self._static_cache.get(key)
+            if pose is None:
+                pose = position.resolve(self)
+                self._static_cache[key] = pose
+            return pose
+        return position.resolve(self)
+
+    def lane_pose(self, road_id: str, lane_id: int, s: float, offset: float,
+                  orientation: Orientation | None = None) -> Pose:
+        try:
+            track = self.tracks.at(str(road_id), int(lane_id), s)
+        except (InputError, KeyError) as exc:
+            raise InputError(f"no lane {lane_id} on road {road_id} at s={s}: {exc}", source=self.source,
+                             element="LanePosition") from exc
+        s = min(max(s, track.s0), track.s1)
+        x, y, h = track.pose(s, offset)
+        if orientation is not None:
+            h = orientation.apply(h)
+        return Pose(x, y, h, str(road_id), int(lane_id), s, offset)
+
+    def road_pose(self, road_id: str, s: float, t: float, orientation: Orientation | None = None) -> Pose:
+        try:
+            road = self.net.road(road_id)
+        except (InputError, KeyError) as exc:
+            raise InputError(f"no road {road_id}", source=self.source, element="RoadPosition") from exc
+        s = min(max(s, 0.0), road.length)
+        x, y, h = self.net.road_to_world(road_id, s, t)
+        pose = self.locate_pose(x, y, None)
+        heading = pose.h if pose.road_id is not None else h
+        if orientation is not None:
+            heading = orientation.apply(heading)
+        return Pose(x, y, heading, pose.road_id, pose.lane_id, pose.s, pose.offset)
+
+    def locate_pose(self, x: float, y: float, h: float | None) -> Pose:
+        """A world point, attached to the lane under it when there is one (so motion can follow that lane)."""
+        lp = self.net.locate(x, y, h)
+        if lp is None or not lp.inside:
+            return Pose(x, y, 0.0 if h is None else h)
+        heading = lp.heading if h is None else h
+        return Pose(x, y, heading, lp.road_id, lp.lane_id, lp.s, lp.offset)
+
+    def road_coordinates(self, name: str) -> tuple[str, float, float]:
+        ent = self.entity(name)
+        if ent.road_id is None:
+            raise InputError(f"entity '{name}' is not on a road", source=self.source, element="RelativeRoadPosition")
+        return ent.road_id, ent.road_s, ent.road_t
+
+    def relative_lane_pose(self, name: str, d_lane: int, ds: float, offset: float,
+                           orientation: Orientation | None) -> Pose:
+        ent = self.entity(name)
+        if ent.track is not None:
+            road_id, lane_id, s0, forward = ent.track.ref.road_id, ent.track.ref.lane_id, ent.s, ent.track.forward
+        elif ent.road_id is not None and ent.lane_id is not None:
+            road_id, lane_id, s0 = ent.road_id, ent.lane_id, ent.road_s
+            forward = self.net.lane_forward(road_id, lane_id, s0)
+        else:
+            raise InputError(f"entity '{name}' is not on a lane", source=self.source, element="RelativeLanePosition")
+        # dLane counts toward +t of the road (lane ids grow to the left), skipping the centre lane 0.
+        target = lane_id + d_lane
+        if lane_id < 0 < target or target == 0 and d_lane > 0:
+            target += 1
+        elif lane_id > 0 > target or target == 0 and d_lane < 0:
+            target -= 1
+        # ds is along the reference entity's driving direction.
+        s = s0 + (ds if forward else -ds)
+        return self.lane_pose(road_id, target, s, offset, orientation)
+
+    def route_pose(self, rp: Any) -> Pose:
+        path, refs = self.route_path(rp.route)
+        if rp.from_entity is not None:
+            ent = self.entity(rp.from_entity)
+            return self.locate_pose(ent.x, ent.y, ent.h)
+        lane_ref, lane_s = path.lane_at(min(rp.path_s, path.length))
+        lane_id = rp.lane_id if rp.lane_id is not None else lane_ref.lane_id
+        return self.lane_pose(lane_ref.road_id, lane_id, lane_s, rp.lane_offset)
+
+    def route_path(self, route: Any) -> tuple[LanePath, list[LaneRef]]:
+        """Lane-level path through a Route's waypoints (shortest on the routing graph between consecutive ones)."""
+        key = ("route", id(route))
+        cached = self._static_cache.get(key)  # type: ignore[arg-type]
+        if cached is not None:
+            return cached  # type: ignore[return-value]
+        poses = [self.resolve_cached(w.position) for w in route.waypoints]
+        refs: list[LaneRef] = []
+        for a, b in zip(poses, poses[1:]):
+            if a.road_id is None or b.road_id is None:
+                raise InputError("route waypoint is not on a lane", source=self.source, element="Waypoint")
+            ra = self.net.lane_ref(a.road_id, a.lane_id, a.s)
+            rb = self.net.lane_ref(b.road_id, b.lane_id, b.s)
+            leg = self.net.route(ra, rb)
+            refs.extend(leg if not refs else [r for r in leg if not refs or r != refs[-1]])
+        first, last = poses[0], poses[-1]
+        path = LanePath.from_lanes(self.net, refs, s_start=first.s, s_end=last.s)
+        self._static_cache[key] = (path, refs)  # type: ignore[index]
+        return path, refs
+
+    # -- actions (facade) -----------------------------------------------------------------------------------------
+    def start_action(self, element: "StoryboardElement", spec: "ActionSpec",
+                     actors: Iterable[str]) -> list["ActionRun"]:
+        from ..actions.base import ActionRun
+
+        runs: list[ActionRun] = []
+        if not spec.is_private:
+            run = spec.start(self, None)
+            if run is not None:
+                self.global_runs.append(run)
+                runs.append(run)
+            return runs
+        for name in actors:
+            ent = self.entity(name)
+            if ent.planner:
+                self.note(f"ignored: storyboard action '{element.name}' on planner-driven '{name}'")
+                continue
+            run = spec.start(self, ent)
+            if run is not None and not run.done:
+                self.take(ent, run)
+                runs.append(run)
+        return runs
+
+    def take(self, ent: Entity, run: "ActionRun") -> None:
+        """Give `run` its control domains on `ent`, ending the runs that held them."""
+        for dom in run.domains:
+            old = ent.runs.get(dom)
+            if old is not None and old is not run:
+                old.cancel()
+                for d in [k for k, v in ent.runs.items() if v is old]:
+                    del ent.runs[d]
+            ent.runs[dom] = run
+        self.running.append(run)
+
+    def cancel_runs(self, runs: Iterable["ActionRun"]) -> None:
+        for run in runs:
+            run.cancel()
+
+    def release(self, ent: Entity, domain: str) -> None:
+        ent.runs.pop(domain, None)
+
+    def teleport(self, ent: Entity, pose: Pose) -> None:
+        if pose.road_id is not None and pose.lane_id is not None and pose.s is not None:
+            track = self.tracks.at(pose.road_id, pose.lane_id, pose.s)
+            lane_h = track.pose(pose.s, pose.offset)[2]
+            ent.place_on_lane(track, pose.s, pose.offset, None if abs(_wrap(pose.h - lane_h)) < 1e-6 else pose.h)
+        else:
+            ent.place_free(pose.x, pose.y, pose.h)
+        ent.end_of_road_time = None
+
+    def reattach(self, ent: Entity) -> None:
+        _reattach_impl(self, ent)
+
+    def step_runs(self, dt: float) -> None:
+        """Actions phase: every running action advances once (global first, then in start order)."""
+        for run in self.global_runs:
+            if not run.done:
+                run.step(self, dt)
+        self.global_runs = [r for r in self.global_runs if not r.done]
+        # Longitudinal runs first: lateral shapes over distance and trajectories use this step's speed.
+        for run in self.running:
+            if not run.done and "longitudinal" in run.domains and not run.moves_entity:
+                run.step(self, dt)
+        for run in self.running:
+            if not run.done and ("longitudinal" not in run.domains or run.moves_entity):
+                run.step(self, dt)
+        if any(r.done for r in self.running):
+            for run in self.running:
+                if run.done:
+                    ent = run.entity
+                    for d in [k for k, v in ent.runs.items() if v is run]:
+                        del ent.runs[d]
+            self.running = [r for r in self.running if not r.done]
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2.0 * math.pi) - math.pi
+
+
+__all__ = ["World", "UnsupportedFeature"]
+
+
+def _reattach_impl(self: "World", ent: Entity) -> None:
+    """After a trajectory: follow the lane under the entity again if it drives along it, else go on straight."""
+    lp = self.net.locate(ent.x, ent.y, ent.h)
+    if lp is not None and lp.inside and abs(_wrap(lp.heading - ent.h)) < math.pi / 4:
+        track = self.tracks.at(lp.road_id, lp.lane_id, lp.s)
+        h = ent.h
+        ent.place_on_lane(track, lp.s, lp.offset)
+        ent.h = h
+    else:
+        ent.track = None
+        ent.lane_locked = False
+
+
