@@ -102,3 +102,25 @@ def test_centerline_and_borders_follow_driving_direction(esmini_dir) -> None:
         assert np.all(cross > 0)
         width = np.hypot(*(left - right).T)
         assert np.allclose(width, net.lane_width("0", lane, 10.0), atol=1e-6)
+
+
+def test_every_esmini_entity_on_the_road_is_inside_some_lane(esmini_dir) -> None:
+    """Each reference row is located inside a lane (any type), unless esmini's own t puts it beyond the road's
+    outermost border (trajectory-test drives a car off the road; esmini still reports road coordinates)."""
+    import csv
+
+    from txt2sce_ros.road.conformance import scenario_map
+
+    for ref in sorted((esmini_dir / "reference").glob("*.csv")):
+        net = __import__("txt2sce_ros.road", fromlist=["load_network"]).load_network(
+            scenario_map(esmini_dir / "xosc" / f"{ref.stem}.xosc", esmini_dir / "xodr"))
+        rows = [r for r in csv.DictReader(open(ref)) if r["roadId"] != "-1"]
+        m = net.world_to_lane(np.array([float(r["x"]) for r in rows]), np.array([float(r["y"]) for r in rows]),
+                              lane_types=None)
+        for i in np.flatnonzero(~m.inside):
+            r = rows[i]
+            s, t = float(r["s"]), float(r["t"])
+            ids = net.lane_ids(r["roadId"], s, types=None)
+            edge = [net.lane_center_t(r["roadId"], lid, s) + (1 if lid > 0 else -1) * net.lane_width(
+                r["roadId"], lid, s) / 2 for lid in (ids[0], ids[-1])]
+            assert t > edge[0] or t < edge[1], (ref.stem, r)

@@ -23,6 +23,9 @@ if TYPE_CHECKING:   # pragma: no cover
 
 #: Spacing of the lane-centre samples in the tree (m).
 SAMPLE_DS = 0.5
+#: Points outside every candidate lane but within this distance (m) of one are re-queried with RETRY_K samples.
+RETRY_DISTANCE = 8.0
+RETRY_K = 8
 
 
 @dataclass(frozen=True, slots=True)
@@ -216,24 +219,39 @@ class LaneIndex:
         if n == 0:
             e = np.zeros(0)
             return LaneMatch(np.zeros(0, dtype=object), e.astype(int), e.astype(int), e, e, e, e, e, e.astype(bool))
+        best = self._query_k(xs, ys, k)
+        # Near road ends the nearest samples can all belong to other roads (junction roads fanning out from the
+        # same point); points just outside every candidate get a second, wider look.
+        retry = np.flatnonzero(~best.inside & (best.distance < RETRY_DISTANCE))
+        if len(retry) and k < RETRY_K:
+            alt = self._query_k(xs[retry], ys[retry], RETRY_K)
+            take = alt.inside | (alt.distance < best.distance[retry])
+            for name in LaneMatch.__slots__:
+                getattr(best, name)[retry[take]] = getattr(alt, name)[take]
+        return best
+
+    def _query_k(self, xs: np.ndarray, ys: np.ndarray, k: int) -> LaneMatch:
+        n = len(xs)
         k = max(1, min(k, self.tree.n))
         _, idx = self.tree.query(np.column_stack([xs, ys]), k=k)
         idx = idx.reshape(n, k)
         if k == 1:
             return self._match(xs, ys, idx[:, 0])
-        # Candidates on the same road as the first one refine to the same answer: only keep other roads.
-        first_road = self.sample_road[idx[:, 0]]
+        # Candidates on a road already tried refine to the same answer: only evaluate new roads.
+        tried = [self.sample_road[idx[:, 0]]]
         best = self._match(xs, ys, idx[:, 0])
         for j in range(1, k):
-            other = np.flatnonzero(self.sample_road[idx[:, j]] != first_road)
+            road_j = self.sample_road[idx[:, j]]
+            other = np.flatnonzero(np.all([road_j != t for t in tried], axis=0))
+            tried.append(road_j)
             if len(other) == 0:
                 continue
             alt = self._match(xs[other], ys[other], idx[other, j])
             cur_score = np.where(best.inside[other], 0.0, 1e3) + best.distance[other]
             alt_score = np.where(alt.inside, 0.0, 1e3) + alt.distance
-            take = other[alt_score < cur_score]
+            sel = alt_score < cur_score
+            take = other[sel]
             if len(take):
-                sel = alt_score < cur_score
                 for name in LaneMatch.__slots__:
                     getattr(best, name)[take] = getattr(alt, name)[sel]
         return best
