@@ -59,6 +59,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:to|speed))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b|\bapplied\s+the\s+brakes?|\bhard\s+brak"),
+    ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
           r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|riding|rode|cruising|"
@@ -67,9 +68,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
 )
 _PHRASE_RES = [(c, re.compile(p, re.I)) for c, p in PHRASES]
 _INTENT = re.compile(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
-                     r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+)?$", re.I)
+                     r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+_NEGATED = re.compile(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = re.compile(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
-                        r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+)?$", re.I)
+                        r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
                          r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
@@ -79,7 +81,7 @@ _HEADING = re.compile(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driv
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 
-_RELATIVE = re.compile(r"\s*,?\s*(?:(?:that|which|who)\s+)?(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
+_RELATIVE = re.compile(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
 
@@ -111,12 +113,22 @@ def turn_from_headings(s: str) -> str | None:
     return {90: "e", 270: "d", 180: "j"}.get(diff)
 
 
-def _who_for(pos: int, ments: list[Mention], fallback: int | None) -> int | None:
-    """Entity index (-1 ego) whose clause covers `pos`: latest subject mention before it, else the first after."""
+def _who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str = "") -> int | None:
+    """Entity index (-1 ego) whose clause covers `pos`: latest subject mention before it, else the first after
+    (an opening "While reversing, the car ..."), except after "During ...", which continues the last story."""
     best: Mention | None = None
     for m in ments:
         if m.start <= pos and m.subject:
             best = m
+    if best is not None and best.kind == "pron":
+        # "when it slowed to a stop": the pronoun continues the sentence's (or the story's) last subject.
+        earlier = [m for m in ments if m.start < best.start and m.subject and m.kind != "pron"]
+        if earlier:
+            best = earlier[0]
+        else:
+            return fallback
+    if best is None and re.match(r"\s*(?:during|following)\b", sentence, re.I):
+        return fallback
     if best is None:
         for m in ments:
             if m.start > pos and m.subject:
@@ -143,8 +155,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         before = s[max(0, b - 40):b]
         if _INTENT.search(before) and not _INTENT_OK.search(before):
             continue
-        if code == "h" and re.search(r"\b(?:without|not)\s+$", before):
-            continue
+        if _NEGATED.search(before):
+            continue  # "did not immediately proceed"
         inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
         # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
@@ -157,7 +169,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         elif rel is not None and rel.kind in ("ego", "egod"):
             who = -1
         else:
-            who = _who_for(b, ments, fallback)
+            who = _who_for(b, ments, fallback, s)
         if who is None:
             continue
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))

@@ -46,7 +46,10 @@ class _Doc:
 
 
 def _summary_sentences(sents: list[str]) -> set[int]:
-    out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or _BOILERPLATE.search(s)}
+    """Sentences that summarise or administer rather than tell: "was in a collision involving an SUV", "Waymo is
+    reporting this crash under ...", form headers ("Weather: Clear Passengers: 4 ...")."""
+    out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or _BOILERPLATE.search(s)
+           or len(re.findall(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s", s)) >= 3}
     if sents and CONTACT.search(sents[0]) and any(CONTACT.search(s) for s in sents[1:]):
         out.add(0)
     return out
@@ -99,10 +102,20 @@ def _find_contact(d: _Doc) -> None:
         d.partner = d.ents[d.partner].merged_into
 
 
+_AFTERWARDS = re.compile(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
+                         r"\bdamaging\b|\bresulting\b", re.I)
+
+
 def _before_contact(d: _Doc, sent: int, pos: int) -> bool:
+    """Is text position (sent, pos) part of the story up to the contact? In the contact sentence, words after the
+    contact verb still are, unless a new clause ("and proceeded left", "then") tells what came next."""
     if d.contact_sent is None:
         return True
-    return sent < d.contact_sent or (sent == d.contact_sent and pos <= d.contact_pos + 40)
+    if sent != d.contact_sent:
+        return sent < d.contact_sent
+    if pos <= d.contact_pos:
+        return True
+    return not _AFTERWARDS.search(d.sents[sent][d.contact_pos:pos])
 
 
 def _mentions_after_trigger(d: _Doc, e: Entity, *, around_only: bool = False) -> bool:
@@ -127,7 +140,8 @@ def _counted(d: _Doc) -> tuple[list[Entity], list[Entity]]:
             continue
         moved = any(a.who == e.idx and a.code in "abcdefgijkmFT" for a in d.acts)
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
-                _mentions_after_trigger(d, e, around_only=True):
+                _mentions_after_trigger(d, e, around_only=True) and not re.search(
+                    r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)):
             e.parked = True  # a vehicle the AV went around, that did nothing itself, stood there
         if not is_partner and all(re.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
@@ -163,9 +177,16 @@ def _ctx(d: _Doc, e: Entity) -> str:
     return " | ".join(parts)
 
 
+_TURN_WORDS = re.compile(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|\b(?:left|right)\s+lane"
+                         r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
+                         r"scene", re.I)
+
+
 def _side(ctx: str) -> str | None:
-    left = re.search(r"\bleft\b", ctx, re.I)
-    right = re.search(r"\bright\b(?!\s+(?:turn|of\s+way))", ctx, re.I)
+    """The first side named in `ctx` ("in the rightmost lane", "to the left of"), turns and "right of way" aside."""
+    ctx = _TURN_WORDS.sub(" ", ctx)
+    left = re.search(r"\bleft(?:most)?\b", ctx, re.I)
+    right = re.search(r"\bright(?:most)?\b", ctx, re.I)
     if left and right:
         return "left" if left.start() < right.start() else "right"
     return "left" if left else "right" if right else None
@@ -189,6 +210,10 @@ def ego_contact_part(d: _Doc) -> tuple[str | None, str | None]:
         return None, None
     s = d.sents[d.contact_sent]
     parts = [m.group(1) for m in re.finditer(r"((?:[\w-]+\s+){1,6})(?:of|on|to)\s+EGO\b", s)]
+    passive = re.search(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)\b([^.]{0,80}?)"
+                        r"(?:\bby\b|$)", s)
+    if passive:
+        parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
     parts += [m.group(1) for m in re.finditer(r"\bEGO's\s+((?:[\w-]+\s+){1,6})", s)]
     text = " ".join(parts).lower()
     fore = "rear" if re.search(r"\brear\b|\bback\b|\btail", text) else "front" if re.search(r"\bfront\b|\bhood\b",
@@ -214,22 +239,30 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
     if re.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"
                  r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\bfrom\s+behind\b|\bfrom\s+the\s+rear\b|"
-                 r"\bto\s+EGO's\s+rear\b|^\s*\S*\s*behind\b|\b(?:following|trailing|behind)\s+(?:vehicle|car)",
+                 r"\bto\s+EGO's\s+rear\b|^\s*\S*\s*behind\b|\b(?:following|trailing|behind)\s+(?:vehicle|car)|"
+                 r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
                  ctx, re.I) or re.search(r"\b(?:following|trailing)\s*$", pre, re.I):
         side = None
         if re.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", ctx, re.I):
             side = _side(re.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", ctx, re.I).group(0))
         elif re.search(r"\bbehind\s+and\s+to\s+the\s+(left|right)", ctx, re.I):
             side = _side(ctx)
+        if side is None and re.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
+            side = "right"
         return "R6", side or "same", True
     oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+way\b|\bon-?coming\b", ctx + pre,
                          re.I)
     h = _heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
+    if re.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
+        oncoming = None
+        side_m = re.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
+        if side_m:
+            return "R5", side_m.group(1).lower(), True
     if oncoming or rel == 180:
         if d.junction:
             return "R2", None, True
-        return "R7", "same" if re.search(r"\b(?:in|into)\s+EGO's\s+lane\b", ctx) else "left", True
+        return "R7", "same" if re.search(r"\bwrong\s+way\b", ctx, re.I) else "left", True
     if rel == 0 and not re.search(r"\bbehind\b", ctx, re.I):
         return "R5", _side(ctx) or "same", True
     if d.junction and rel in (90, 270):
@@ -237,29 +270,44 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         return ("R1" if rel == 90 else "R3"), None, True
     if d.junction and re.search(r"\bfrom\s+the\s+(left|right)\b", ctx, re.I):
         return ("R1" if re.search(r"\bfrom\s+the\s+left\b", ctx, re.I) else "R3"), None, True
-    if re.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
-                 r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or re.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
-                                                                            pre, re.I):
-        return "R5", "same", True
     lane_ctx = re.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", ctx, re.I)
     if lane_ctx:
         text = lane_ctx.group(0)
-        side = _side(text) or ("right" if re.search(r"bike|sidewalk|curb|driveway", text, re.I) else None)
+        side = _side(text) or ("right" if re.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
+                                                     re.I) else None)
         if side is None:
             side = _side(ctx) or "same"
         if d.junction and ego_turning and re.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
         return "R5", side, True
+    if re.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
+                 r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or re.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
+                                                                            pre, re.I):
+        return "R5", "same", True
     if d.junction and ego_turning and e.category in ("pedestrian", "bicycle", "scooter") and \
             re.search(r"\bcrosswalk\b", ctx, re.I):
         return "R4", None, True
     if re.search(r"\b(?:ahead|in\s+front|preceding|in\s+EGO's\s+lane|in\s+its\s+lane|same\s+lane)\b", ctx, re.I):
         return "R5", "same", True
-    if d.junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and \
-            re.search(r"\bturn(?:ed|ing)?\b|\bentered\s+the\s+intersection", ctx, re.I):
+    if e.idx == d.partner and re.search(r"[fg]", ego_actions) and not re.search(r"[fg]", "".join(
+            a.code for a in d.acts if a.who == e.idx)):
+        return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
+    if fore == "rear":
+        return "R6", "same", True
+    if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
+        return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
+    turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
+    if d.junction and turns and not re.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
+        # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
+        # a party that then follows the AV turned into its direction, so the sides swap.
+        follows = re.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)
+        from_right = (turns[0] == "d") != bool(follows)
+        return ("R3" if from_right else "R1"), None, True
+    if d.junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
+            re.search(r"\bentered\s+the\s+intersection", ctx, re.I)):
         side = _side(ctx)
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
     if re.search(r"\bbehind\b", ctx, re.I):
@@ -348,6 +396,14 @@ def _sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) ->
     for c in codes:
         if out and out[-1] == c:
             continue
+        if c == "a" and out:
+            continue  # "go straight" opens a string; later "approaching"/"following" only describe the same run
+        if c == "A":
+            c = "a"  # an explicit "continued straight" is a manoeuvre of its own
+            if out and out[-1] == "a":
+                continue
+        if c == "i" and out and out[-1] != "h":
+            continue  # "began moving towards" while already moving is no start from a standstill
         if c == "h" and out and out[-1] == "c":
             out[-1] = "h"
             continue
@@ -472,6 +528,8 @@ def extract(text: str, report_id: str) -> Sketch:
         pacts = _prepend_mod_acts(d, e, pacts)
         stopped = bool(re.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
         start, acts = _sequence(pacts, stopped=stopped, ego=False, side=lane)
+        if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5":
+            acts = "a" + acts  # it travelled along the AV's road before turning off it
         if start == "moving" and not acts:
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
         if pos not in ("R5", "R6", "R7"):

@@ -28,7 +28,7 @@ _STREET_SUFFIX = re.compile(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|A
 
 _HEADS = sorted(set(PARTY_HEADS) | set(OBSTACLE_HEADS) | set(MAKES) | set(VAN_MODELS) | set(GROUP_HEADS),
                 key=len, reverse=True)
-_HEAD_RE = re.compile(r"\b(EGOD|EGO|" + "|".join(re.escape(h) for h in _HEADS) + r")(?:'s|s')?\b", re.I)
+_HEAD_RE = re.compile(r"\b(EGOD|EGO|it|he|she|" + "|".join(re.escape(h) for h in _HEADS) + r")(?:'s|s')?\b", re.I)
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 _NOT_HEAD_AFTER = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
@@ -123,6 +123,12 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             continue  # "single-car collision", "multi-vehicle": a compound adjective, not a party
         after = s[m.end():]
         hl = head.lower()
+        if hl in ("it", "he", "she"):
+            pre = s[:m.start()]
+            if _SUBJ_BEFORE.search(pre) or not pre.strip():
+                out.append(Mention(sent=sent_idx, start=m.start(), end=m.end(), kind="pron", head=hl,
+                                   category="pron", det="", mods="", subject=True))
+            continue
         if hl not in ("ego", "egod"):
             if _NOT_HEAD_AFTER.match(after) and not m.group(0).lower().endswith(("'s", "s'")):
                 if hl not in MAKES:
@@ -150,6 +156,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             mods.insert(0, wl)
         mod_text = " ".join(mods)
         kind, cat = _category(head, mod_text)
+        if kind in ("party", "obstacle") and re.search(r"\b(?:any|no|none|neither|nor)\s*$", s[:m.start()], re.I):
+            kind = "group"  # "did not contact any vehicle": a negated mention names nobody
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
         if out and out[-1].kind in ("party",) and kind == "party" and s[out[-1].end:m.start()].strip() == "":
             prev = out.pop()
@@ -244,6 +252,9 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             pass
         elif m.det != "a":
             for e in reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))):
+                if m.head in _GENERIC and m.sent not in summary_sents and \
+                        all(x.sent in summary_sents for x in e.mentions):
+                    continue  # a bare "the vehicle" in the telling does not reach back to the summary's party
                 if _compatible(e, m):
                     target = e
                     break
