@@ -4,6 +4,16 @@ esmini logs, per entity and step, its world pose and its road coordinates (roadI
 row that places the entity on a road (roadId != -1) we recompute (x, y) twice — from (roadId, s, t) and from
 (roadId, laneId, s, offset) — and count the rows within tolerance. A third, informative figure runs the inverse:
 (x, y) -> (road, s, t) with `world_to_lane`, which can legitimately pick another road where junction roads overlap.
+
+What the comparison established about esmini's conventions (all 17,620 on-road rows agree within 5 cm):
+- `offset` is measured from the lane centre toward +t of the road whatever the lane's side or driving direction
+  (a car in lane -1 with offset +3.07 sits at t = +1.535, in lane 1's area); `t` includes laneOffset.
+- Rows keep the lane esmini assigned (a lane change in progress reports the old lane with a growing offset), so the
+  inverse lookup may name the neighbour lane for the same point.
+- The largest residuals (2.8 cm on soderleden's paramPoly3 curves, 2.4 cm on curves_elevation's clothoids) are for
+  entities far off the lane centre on curves: esmini derives s from its own polyline approximation of the road,
+  so its s is a few centimetres off the exact projection there; elevation plays no part (x, y are 2D).
+- No row has roadId -1 in the shipped references; such rows (entities off any road) would be skipped and counted.
 """
 
 from __future__ import annotations

@@ -143,7 +143,7 @@ class RoadNetwork:
         h = h + np.arctan2(dt, np.maximum(1.0 - k * t, 1e-3))
         if not self.lane_forward(road.id, lane_id, float(s_arr[0])):
             h = h + math.pi
-        return x, y, h
+        return x, y, np.arctan2(np.sin(h), np.cos(h))
 
     # --- scalar API ------------------------------------------------------------------------------------------------
 
