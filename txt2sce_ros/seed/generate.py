@@ -125,7 +125,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     choices["constraints"] = constraints.describe()
     choices["relaxed"] = list(match.relaxed)
     choices["candidates"] = match.candidates
-    target = sketch.collision.with_
+    target = fidelity_target(sketch)
     if target and any(a.name == target for a in actors):
         gap, when = predicted_gap(actors, target, D.timing.time_limit)
         choices["predicted"] = {"party": target, "min_gap_m": round(gap, 2), "at_s": round(when, 2)}
@@ -147,6 +147,16 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
         "signals": [{"name": s.name, "phases": [[p.name, p.duration] for p in s.phases]} for s in signals],
     }
     return SeedResult(sketch.report_id, xosc, plan, map_path, manifest)
+
+
+def fidelity_target(sketch: Sketch) -> str | None:
+    """The party a faithful seed brings into conflict with the AV: the one it touched, else (a no-contact report)
+    the first party named."""
+    if sketch.collision.with_:
+        return sketch.collision.with_
+    if sketch.npcs:
+        return sketch.npcs[0].id
+    return sketch.obstacles[0].id if sketch.obstacles else None
 
 
 def _jsonable(x):

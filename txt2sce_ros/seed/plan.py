@@ -131,7 +131,13 @@ class Planner:
             return []
         lead = {"f": 0.5 * self.D.lane_change_time, "g": 0.5 * self.D.lane_change_time, "h": 3.0, "c": 2.5,
                 "k": 2.5, "l": 3.0, "i": 3.0, "b": 2.0, "m": 0.0}
+        if actor.name == "ego":
+            # the AV's reported stop comes too late to avoid the contact: it is still braking at the conflict
+            lead["h"] = 1.0
         times = [t_first]
+        if n == 1 and codes in lead and codes != "m":
+            # a single lateral/stop/start action is the critical one: it bites at the conflict
+            times = [max(t_first, t_critical - lead[codes])]
         if n > 1:
             last = max(t_critical - lead.get(codes[-1], 0.0), t_first + 0.5 * (n - 1))
             for k in range(1, n):
@@ -172,7 +178,7 @@ class Planner:
                 dur = max(dur, 3.0)
             if code in TURN_CODES:
                 # the AV's turn reuses its mission route (filled in by _ego_mission); a party's its own route
-                acts.append(route_for[code] if route_for and code in route_for else
+                acts.append(route_for[code] if route_for and code in route_for else  # type: ignore[arg-type]
                             RouteAct(EGO_ROUTE_PLACEHOLDER, ()) if actor.name == "ego" else None)
                 if acts[-1] is None:
                     acts.pop()
@@ -348,11 +354,36 @@ class Planner:
                                                                "lateral": round(lat, 2)}
         if isinstance(site, JunctionSite):
             ego_turn = self.choices["ego_lane"].get("turn", "straight")
-            want = turn if turn != "straight" else ego_turn if pidx == self.ego_idx else "straight"
+            curb_rider = rider and lat != 0.0
+            want = turn if (turn != "straight" or curb_rider) else ego_turn if pidx == self.ego_idx else "straight"
             refs = self._through(lanes[pidx], want)
-            return Track(self.net, refs), lat, "cross" if (turn != "straight" or ego_turn != "straight") and \
-                pidx != self.ego_idx else "parallel"
+            if turn != "straight" and not any(t == turn for t, _ in dict(site.ego.turns).get(lanes[pidx], ())):
+                # the party turns from a lane that has no such turn (a left turn from the right lane, across the
+                # AV): cut across to the lane that does
+                line = self._cut_across(site, lanes[pidx], turn)
+                if line is not None:
+                    return line, 0.0, "cross"
+            differ = want != ego_turn
+            crossing = differ and (pidx != self.ego_idx or rider)
+            return Track(self.net, refs), lat, "cross" if crossing else "parallel"
         return Track(self.net, [lanes[pidx]]), lat, "parallel"
+
+    def _cut_across(self, site: JunctionSite, ref, turn: str) -> LineTrack | None:
+        """A path from lane `ref` that merges, before the junction, into the connection of the nearest lane that
+        can make `turn`, then follows it out (realised as a FollowTrajectoryAction)."""
+        idx = [i for i in site.ego.lanes_turning(turn)]
+        if not idx:
+            return None
+        src = site.ego.lanes[idx[0] if turn in ("left", "uturn") else idx[-1]]
+        conn = site.ego.connection(site.ego.lanes.index(src), turn)
+        a = Track(self.net, [ref])
+        b = Track(self.net, self._through(src, turn))
+        cut = max(a.length - 12.0, 0.0)
+        pa = a.world_array(np.arange(0.0, cut, 1.0))
+        start_b = b.project(float(a.x[-1]), float(a.y[-1]))
+        pb = b.world_array(np.arange(start_b, b.length, 1.0))
+        del conn
+        return LineTrack([(float(x), float(y)) for x, y, _ in pa] + [(float(x), float(y)) for x, y, _ in pb])
 
     def _oncoming_track(self, p: Party) -> tuple[Track, float, str]:
         site = self.site
@@ -399,6 +430,9 @@ class Planner:
                 actor.v0 = cruise = round(0.5 * ego_v_T, 2)
                 actor.notes.append("speed lowered so that the AV closes on it")
         routes = self._party_routes(p, actor)
+        if isinstance(track, LineTrack):
+            traj = TrajectoryAct(f"{p.id}_path", track.vertices())
+            routes = {c: traj for c in p.actions if c in TURN_CODES}
         sched = self._schedule(actor, p.actions, t_first=0.0, t_critical=T, speed=cruise,
                                moving=p.start == "moving")
         self._apply_actions(actor, sched, cruise=cruise, route_for=routes)
@@ -469,8 +503,40 @@ class Planner:
         if actor.d0 < 0:
             actor.notes.append(f"party start clamped ({actor.d0:.1f} m before its path)")
             actor.d0 = 0.0
+        if dist[i, j] >= 1.0 and self.sketch.collision.with_ == actor.name and actor.events:
+            self._graze(actor, d_n_star, t_e)
         self._conflict_times = getattr(self, "_conflict_times", {})
         self._conflict_times[actor.name] = t_e
+
+    def _graze(self, actor: Actor, d_n_star: float, t_e: float) -> None:
+        """The paths pass side by side but the report says they touched: shift the party toward the AV (a
+        LaneOffsetAction in the event before the conflict), at most 2.5 m."""
+        ego = self.ego
+        e_pose = ego.track.world(ego.d0 + self._ego_d_at(t_e) + ego.cx)
+        p_pose = actor.track.world(d_n_star)
+        vx, vy = e_pose.x - p_pose.x, e_pose.y - p_pose.y
+        left = -math.sin(p_pose.h) * vx + math.cos(p_pose.h) * vy
+        need = abs(left) - (ego.width / 2 + actor.width / 2) + 0.3
+        if need <= 0:
+            return
+        shift = math.copysign(min(need, 4.0), left)
+        t0 = max(t_e - 3.5, actor.events[0].planned_time)
+        k = max(i for i, ev in enumerate(actor.events) if ev.planned_time <= t0 + 1e-6) if any(
+            ev.planned_time <= t0 + 1e-6 for ev in actor.events) else 0
+        ev = actor.events[k]
+        t_start = ev.planned_time
+        if isinstance(actor.track, Track):
+            ref = actor.track.lane_at(d_n_star)
+            pose = actor.track.lane_pose(d_n_star)
+            forward = self.net.lane_forward(ref.road_id, ref.lane_id, pose.s)
+            off_t = shift if forward != actor.track.reverse else -shift
+        else:
+            off_t = shift
+        actor.events[k] = EventPlan(ev.name, ev.code, ev.actions + (LaneOffsetAct(round(off_t, 3), 1.0),),
+                                    ev.trigger, ev.planned_time)
+        actor.lat_steps.append(LateralStep(t_start, shift, max(2.0, math.sqrt(4 * abs(shift) / 1.0))))
+        actor.notes.append(f"paths pass {abs(left):.1f} m apart: {shift:+.2f} m lane offset toward the AV "
+                           "(reported contact)")
 
     def _meet_parallel(self, p: Party, actor: Actor, T: float, t: np.ndarray, dn: np.ndarray, mode: str) -> None:
         ego = self.ego
@@ -485,6 +551,10 @@ class Planner:
         if p.position == "R7":
             # front to front (oncoming): party reference point ahead of the ego's front by both front overhangs
             target = de_T + ego_front + p_front
+        elif lat_conflict and p.lane == "same" and p.position == "R6":
+            target = de_T + ego_rear - p_front + 1.5     # pulls out of the AV's lane and clips its rear corner
+        elif lat_conflict and p.lane == "same":
+            target = de_T + ego_front - p_rear - 1.0     # changes out ahead of the AV, which clips its rear
         elif lat_conflict:
             target = de_T + (1.0 if p.position == "R5" else -1.0)
         elif p.position == "R6":
@@ -585,12 +655,16 @@ class Planner:
             d = ego.d0 + reach + front + (dims[1] / 2 - cx) + (-0.3 if is_collision else 4.0)
             if o.position == "R4" and math.isfinite(self.d_entry):
                 d = max(d, self.d_entry + 15.0)
-        lat = 0.0
+        t_e, pe = ego.states(self.horizon)
+        ego_lat_T = float(np.interp(self.T, t_e, lateral_profile(ego.lat0, ego.lat_steps, t_e)))
+        if o.position == "R6":
+            ego_lat_T = ego.lat0
+        lat = ego_lat_T if is_collision else 0.0
         edge = self.lane_w / 2
         if o.lane in ("left", "right", "shoulder") or (o.position == "R7"):
             sign = 1.0 if (o.lane == "left" or o.position == "R7") else -1.0
             if is_collision:
-                lat = sign * (ego.width / 2 + dims[0] / 2 - 0.3)   # overlapping the AV's path by 0.3 m
+                lat = ego_lat_T + sign * (ego.width / 2 + dims[0] / 2 - 0.3)   # overlapping the AV's path by 0.3 m
             else:
                 lat = sign * (edge + dims[0] / 2 + 0.3)
             if o.position == "R7":

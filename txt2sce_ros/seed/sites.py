@@ -176,6 +176,8 @@ def road_sites(path: str | Path, *, min_length: float = 80.0) -> list[RoadSite]:
                 continue
             same = _sorted_left_to_right(net, same, s_mid)
             other = sorted(other, key=lambda r: abs(r.lane_id))
+            if other and (abs(other[0].lane_id) != 1 or abs(same[0].lane_id) != 1):
+                other = []  # a median or other lanes between: no oncoming lane *beside* the AV
             right = same[-1].lane_id
             step = -1 if right < 0 else 1
             curb = []

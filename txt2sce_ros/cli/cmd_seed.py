@@ -1,0 +1,40 @@
+"""`txt2sce seed SKETCHES.jsonl --out DIR [--seed N] [--maps DIR]`: one OpenSCENARIO seed per buildable sketch,
+the maps they use, and `manifest.json` (choices per seed, reasons per refused sketch)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+HELP = "turn report sketches into OpenSCENARIO 1.0 seeds on matching OpenDRIVE maps (writes a manifest)"
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("sketches", type=Path, help="JSONL of txt2sce.sketch/1 records")
+    parser.add_argument("--out", type=Path, required=True, help="output directory")
+    parser.add_argument("--seed", type=int, default=0, help="RNG seed for the map pick (default 0)")
+    parser.add_argument("--maps", type=Path, default=None,
+                        help="directory of .xodr maps to match against (default: the bundled maps)")
+    parser.add_argument("--qc", action="store_true", help="also run the ASAM quality checker on every seed")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..sketch import load_sketches
+    from ..seed.generate import write_seeds
+
+    manifest = write_seeds(load_sketches(args.sketches), args.out, seed=args.seed, maps=args.maps)
+    built, refused = manifest["built"], manifest["refused"]
+    for r in refused:
+        print(f"refused {r['report_id']}: {r['error']}")
+    qc_bad = 0
+    if args.qc:
+        from ..xosc.validate import qc_errors
+
+        for b in built:
+            errs = qc_errors(args.out / b["file"])
+            if errs:
+                qc_bad += 1
+                print(f"QC {b['file']}: {errs[0]}")
+    print(f"{len(built)} seed(s) written to {args.out}, {len(refused)} sketch(es) refused"
+          + (f", {len(built) - qc_bad}/{len(built)} clean under the ASAM checker" if args.qc else ""))
+    return 1 if qc_bad else 0
