@@ -133,3 +133,12 @@ def test_load_network_caches_per_path_and_mtime(tmp_path) -> None:
     os.utime(p, ns=(1, 10**18))
     b = load_network(p)
     assert b is not a and b.roads["7"].rule == "LHT"
+
+
+def test_load_network_text_caches_by_content() -> None:
+    from txt2sce_ros.road import load_network_text
+
+    a = load_network_text(MINIMAL.format(rule=""), source="envelope")
+    assert load_network_text(MINIMAL.format(rule="").encode(), source="other") is a
+    b = load_network_text(MINIMAL.format(rule='rule="LHT"'), source="envelope")
+    assert b is not a and b.roads["7"].rule == "LHT"

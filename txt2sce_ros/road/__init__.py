@@ -8,7 +8,7 @@ widths, borders), `model` (records), `network` (RoadNetwork: geometry API), `loo
 from .lanepath import LanePath
 from .lookup import LaneMatch, LanePoint
 from .model import Connection, Controller, Junction, LaneRef, Road, RoadLink, Signal
-from .network import RoadNetwork, load_network
+from .network import RoadNetwork, load_network, load_network_text
 from .topology import DRIVABLE_TYPES
 
 __all__ = ["Connection", "Controller", "DRIVABLE_TYPES", "Junction", "LaneMatch", "LanePath", "LanePoint",

@@ -380,3 +380,26 @@ def load_network(path: str | os.PathLike[str]) -> RoadNetwork:
     with _CACHE_LOCK:
         _CACHE[key] = (st.st_mtime, st.st_size, net)
     return net
+
+
+_TEXT_CACHE: dict[str, RoadNetwork] = {}
+_TEXT_CACHE_SIZE = 8
+
+
+def load_network_text(text: str | bytes, source: str = "<string>") -> RoadNetwork:
+    """`RoadNetwork.from_string`, cached by the SHA-256 of the content (a player receiving the same map in every
+    scenario envelope parses it once). Keeps the last few maps."""
+    import hashlib
+
+    data = text.encode("utf-8") if isinstance(text, str) else text
+    key = hashlib.sha256(data).hexdigest()
+    with _CACHE_LOCK:
+        hit = _TEXT_CACHE.get(key)
+    if hit is not None:
+        return hit
+    net = RoadNetwork(data, source)
+    with _CACHE_LOCK:
+        if len(_TEXT_CACHE) >= _TEXT_CACHE_SIZE:
+            _TEXT_CACHE.pop(next(iter(_TEXT_CACHE)))
+        _TEXT_CACHE[key] = net
+    return net
