@@ -40,7 +40,7 @@ def test_lane_change_permissions_follow_the_road_marks(dbs: dict[str, MapDatabas
 
 def test_lane_changes_default_to_allowed_without_marks() -> None:
     net = load_network(bundled("junction4_signal.xodr"))
-    db = build_map_database(net, xodr_bytes=b"")  # no file content: no marks known
+    db = build_map_database(net, use_marks=False)
     j4 = {ln.id: ln for ln in db.segment("1").main_section.lanes}
     assert j4[-2].change_left and j4[-1].change_right
 

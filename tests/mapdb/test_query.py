@@ -7,7 +7,7 @@ import json
 import pytest
 
 from txt2sce_ros.errors import InputError
-from txt2sce_ros.mapdb import Control, Layout, MapDatabase, Turn
+from txt2sce_ros.mapdb import MapDatabase, Turn
 from txt2sce_ros.paths import shared_dir
 
 

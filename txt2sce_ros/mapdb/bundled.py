@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Callable
 
 from ..paths import BUNDLED_MAPS
 from .odr_builder import (BROKEN_WHITE, NO_MARK, SOLID_WHITE, SOLID_YELLOW_DOUBLE, Arc, ConnectionSpec,
@@ -295,7 +296,7 @@ def roundabout_map() -> MapSpec:
 
 
 #: file name -> generator. The file names are what seeds and tests refer to.
-BUNDLED: dict[str, callable] = {  # type: ignore[valid-type]
+BUNDLED: dict[str, Callable[[], MapSpec]] = {
     "straight_3x3.xodr": straight_map,
     "one_way.xodr": one_way_map,
     "curve.xodr": curve_map,

@@ -9,6 +9,7 @@ too (`MapDatabase.segments`), flagged `is_connecting`.
 
 from __future__ import annotations
 
+import hashlib
 import math
 from collections import defaultdict
 from dataclasses import replace
@@ -301,8 +302,7 @@ def _approaches(net: RoadNetwork, segments: dict[str, Segment], edges: list[Conn
     return {jid: tuple(v) for jid, v in out.items()}
 
 
-def _junction_infos(net: RoadNetwork, segments: dict[str, Segment], edges: list[ConnectionEdge],
-                    approach_map: dict[str, tuple[Approach, ...]], ring: set[str]) -> dict[str, JunctionInfo]:
+def _junction_infos(net: RoadNetwork, segments: dict[str, Segment], approach_map: dict[str, tuple[Approach, ...]], ring: set[str]) -> dict[str, JunctionInfo]:
     infos = {}
     for jid, junction in net.junctions.items():
         legs = sorted({rid for rid, seg in segments.items() if not seg.is_connecting
@@ -340,19 +340,24 @@ def _junction_infos(net: RoadNetwork, segments: dict[str, Segment], edges: list[
 # --------------------------------------------------------------------------------------------- build
 
 
-def build_map_database(network: RoadNetwork, *, xodr_bytes: bytes | None = None, sha256: str = "") -> MapDatabase:
+def build_map_database(network: RoadNetwork, *, xodr_bytes: bytes | None = None, sha256: str = "",
+                       use_marks: bool = True) -> MapDatabase:
     """Build the map database of a loaded road network.
 
-    `xodr_bytes` (the file's content) lets lane-change permissions follow the road marks; without it they are
-    read from `network.source` when that is a file, else changes are allowed between same-direction driving lanes.
+    Lane-change permissions follow the road marks, read from `xodr_bytes` (the file's content) or else from
+    `network.source` when that is a file (the road model does not keep marks). With `use_marks=False`, or with
+    no file to read, a change is allowed between any two adjacent same-direction driving lanes. `sha256` names
+    the content (computed from the bytes when not given).
     """
-    if xodr_bytes is None and Path(network.source).is_file():
+    if xodr_bytes is None and use_marks and Path(network.source).is_file():
         xodr_bytes = Path(network.source).read_bytes()
-    marks = read_marks(xodr_bytes, network.source) if xodr_bytes else {}
+    if not sha256 and xodr_bytes:
+        sha256 = hashlib.sha256(xodr_bytes).hexdigest()
+    marks = read_marks(xodr_bytes, network.source) if (xodr_bytes and use_marks) else {}
     notes: list[str] = []
     segments: dict[str, Segment] = {}
     abs_turns: dict[str, float] = {}
-    for rid, road in net_roads_sorted(network):
+    for rid, road in _roads_sorted(network):
         segments[rid], abs_turns[rid] = _segment(network, road, marks)
     edges = _junction_edges(network, notes) + _direct_edges(network)
 
@@ -386,7 +391,7 @@ def build_map_database(network: RoadNetwork, *, xodr_bytes: bytes | None = None,
         graph.nodes[rid]["layouts"] = sorted(t.value for t in segments[rid].layouts)
 
     approach_map = _approaches(network, segments, edges)
-    infos = _junction_infos(network, segments, edges, approach_map, ring)
+    infos = _junction_infos(network, segments, approach_map, ring)
     for jid, info in infos.items():  # connecting roads carry their junction's layout
         for rid in info.connecting_roads:
             if rid in segments:
@@ -395,7 +400,7 @@ def build_map_database(network: RoadNetwork, *, xodr_bytes: bytes | None = None,
                        junction_infos=infos, approach_map=approach_map, notes=tuple(notes))
 
 
-def net_roads_sorted(network: RoadNetwork) -> list[tuple[str, Road]]:
+def _roads_sorted(network: RoadNetwork) -> list[tuple[str, Road]]:
     """Roads in a stable order (numeric ids numerically), so graphs and summaries do not depend on file order."""
     return sorted(network.roads.items(), key=lambda kv: (len(kv[0]), kv[0]))
 
