@@ -12,4 +12,4 @@ from .network import RoadNetwork, load_network, load_network_text
 from .topology import DRIVABLE_TYPES
 
 __all__ = ["Connection", "Controller", "DRIVABLE_TYPES", "Junction", "LaneMatch", "LanePath", "LanePoint",
-           "LaneRef", "Road", "RoadLink", "RoadNetwork", "Signal", "load_network"]
+           "LaneRef", "Road", "RoadLink", "RoadNetwork", "Signal", "load_network", "load_network_text"]
