@@ -52,6 +52,7 @@ class StopPlan:
     decel: float
     cruise: float
     lag: float = 0.0
+    hard: bool = False           # brake late and hard (fault late_braking_low_friction): no comfort jerk limit
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,7 +117,7 @@ def stop_constraint(reason: Reason, distance: float, ego: EgoOnPath, lp: Longitu
     """A planned stop with the front bumper `stop_margin` metres before `distance`."""
     d = distance - lp.stop_margin
     a = stop_accel(ego.speed, d, lp, plan_decel=sp.decel, cruise=sp.cruise, lag=sp.lag)
-    return Constraint(reason, a, entity, distance, urgent=-a > sp.decel * 1.05)
+    return Constraint(reason, a, entity, distance, urgent=-a > sp.decel * 1.05 or (sp.hard and a < 0.0))
 
 
 def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourParams) -> float | None:

@@ -5,9 +5,11 @@ against known ground truth. What each should trigger (the oracle category in bra
 
 - `ignore_cyclists`: bicycles and scooters are dropped from the object list before planning, so the planner
   neither follows nor yields to them -> it rear-ends or hits a cyclist in its path [Collisions].
-- `late_braking_low_friction`: stopping distances and the IDM's braking use dry-road deceleration whatever the road
-  friction, so on wet / icy / foggy-wet roads braking starts too late; the player caps deceleration at friction·g
-  -> it runs into a stopped vehicle or obstacle [Collisions] or overshoots a red stop line [Misinterp].
+- `late_braking_low_friction`: a braking model tuned on dry roads: planned stops (stop lines, obstacles, yield
+  points) start only when `late_brake_decel` (5 m/s²) is needed and then brake hard, and following gaps get no
+  low-friction margin, whatever the road friction. The player caps deceleration at friction·g, so on wet / icy
+  roads (friction·g < 5 m/s²) the ego overruns -> it hits the obstacle or stopped vehicle [Collisions] or stops
+  past a red stop line [Misinterp]. On a dry road the stops succeed but are abrupt [Smooth].
 - `no_start_when_close`: at standstill, refuses to start while any NPC is within `close_start_radius` metres ahead
   or behind (even when the path is clear) -> the ego never moves [StartFail] (paper: 91.5 % of start failures had
   an NPC placed in front of or behind Autoware).

@@ -92,6 +92,7 @@ class FaultParams:
     aggressive_start_yaw_rate: float = 0.5
     aggressive_start_speed: float = 3.0
     dry_friction: float = 1.0
+    late_brake_decel: float = 5.0
 
 
 _T = TypeVar("_T")

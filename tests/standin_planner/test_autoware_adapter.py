@@ -27,7 +27,7 @@ def test_target_velocity_is_not_overshot_and_speed_never_negative():
 
 
 def test_round_trip():
-    ctrl = adapter.AutowareControl(velocity=6.0, acceleration=-1.5, steering_tire_angle=-0.1)
+    ctrl = adapter.AutowareControl(velocity=2.0, acceleration=-1.5, steering_tire_angle=-0.1)
     cmd = adapter.control_to_command(ctrl, speed_now=6.0, t=1.0, dt=0.05)
     back = adapter.command_to_control(cmd, speed_now=6.0, dt=0.05)
     assert back.acceleration == pytest.approx(-1.5) and back.steering_tire_angle == pytest.approx(-0.1)
