@@ -43,6 +43,7 @@ class _Doc:
     contact_pos: int = 10 ** 9
     partner: int | None = None  # entity index; None with contact_sent set = contact with nothing
     doors: dict[int, int] = field(default_factory=dict)  # door entity -> owner entity
+    struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
 
 
 def _summary_sentences(sents: list[str]) -> set[int]:
@@ -100,6 +101,16 @@ def _find_contact(d: _Doc) -> None:
     d.contact_sent, d.contact_pos, d.partner = chosen
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
+    # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
+    if d.partner is not None and d.ents[d.partner].kind == "obstacle":
+        ms = d.ments[d.contact_sent]
+        idx = [k for k, x in enumerate(ms) if x.entity == d.partner]
+        for k in range(idx[0] + 1 if idx else len(ms), len(ms)):
+            between = d.sents[d.contact_sent][ms[k - 1].end:ms[k].start]
+            if ms[k].kind == "obstacle" and re.fullmatch(r"[^,;]{0,30}\band\s*", between):
+                d.struck.add(ms[k].entity)
+            else:
+                break
 
 
 _AFTERWARDS = re.compile(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
@@ -159,7 +170,7 @@ def _counted(d: _Doc) -> tuple[list[Entity], list[Entity]]:
                 continue  # named in the summary only
             parties.append(e)
         elif e.kind == "obstacle":
-            if is_partner or _mentions_after_trigger(d, e):
+            if is_partner or e.idx in d.struck or _mentions_after_trigger(d, e):
                 obstacles.append(e)
     return parties, obstacles
 
@@ -197,8 +208,12 @@ def _heading(d: _Doc, who: int) -> int | None:
         for m in d.ments[i]:
             ent = -1 if m.kind in ("ego", "egod") else m.entity
             if ent == who:
-                h = heading_of(s[m.end:m.end + 70]) if who != -1 or True else None
-                if h is not None and not re.search(r"\b(?:onto|to)\s+\w+bound\s*$", s[m.end:m.end + 70][:20]):
+                window = s[m.end:m.end + 90]
+                final = re.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
+                if final and who == -1:  # the AV "turned right from southbound X onto westbound Y": heads west
+                    return heading_of(final.group(1) + "bound")
+                h = heading_of(window[:70])
+                if h is not None:
                     return h
     return None
 
@@ -270,10 +285,15 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         return ("R1" if rel == 90 else "R3"), None, True
     if d.junction and re.search(r"\bfrom\s+the\s+(left|right)\b", ctx, re.I):
         return ("R1" if re.search(r"\bfrom\s+the\s+left\b", ctx, re.I) else "R3"), None, True
+    if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
+        return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
+    if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
+        # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
+        return "R6", cside or "same", True
     lane_ctx = re.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
-                         r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", ctx, re.I)
+                         r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", _TURN_WORDS.sub(" ", ctx), re.I)
     if lane_ctx:
         text = lane_ctx.group(0)
         side = _side(text) or ("right" if re.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
@@ -297,8 +317,6 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
     if fore == "rear":
         return "R6", "same", True
-    if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
-        return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
     if d.junction and turns and not re.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
@@ -501,6 +519,7 @@ def extract(text: str, report_id: str) -> Sketch:
     mark_parked(ents, sents)
     d = _Doc(text=t, sents=sents, ments=ments, ents=ents, acts=[], summary=summary, junction=False)
     _add_doors(d)
+    _attach_towed(d)
     fallback: int | None = None
     for i, s in enumerate(sents):
         d.acts += find_acts(i, s, ments[i], fallback)
@@ -602,3 +621,17 @@ def _add_doors(d: _Doc) -> None:
             d.ments[i].sort(key=lambda x: x.start)
             d.doors[idx] = owner
             break
+
+
+def _attach_towed(d: _Doc) -> None:
+    """"a pickup truck that was dragging a basketball hoop": what a party drags or carries moves with it, so a
+    contact with it is a contact with the party."""
+    for i, s in enumerate(d.sents):
+        for m in d.ments[i]:
+            if m.kind != "obstacle" or m.entity < 0:
+                continue
+            if re.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,3}$",
+                         s[:m.start + len(m.mods) + 1]):
+                owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start and x.entity >= 0]
+                if owners:
+                    d.ents[m.entity].merged_into = owners[-1].entity

@@ -77,14 +77,33 @@ def normalise(text: str) -> str:
     t = re.sub(r"\s+", " ", t).strip()
     if t.isupper() or sum(c.isupper() for c in t) > 0.6 * sum(c.isalpha() for c in t):
         t = t.lower()  # all-caps narratives: case carries no information there
+    # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
+    for m in re.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
+        head = m.group(1)
+        t = re.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
     t = _PAREN_DEF.sub("", t)
     for rx in _EGO_RES:
         t = rx.sub(" EGO", t)
     t = re.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
-    t = EGO_DRIVER.sub(" EGOD", t)
+    t = EGO_DRIVER.sub(_ego_driver, t)
     t = re.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
     t = re.sub(r"\bEGO\s+EGOD\b", "EGOD", t)
     return re.sub(r"\s+", " ", t).strip()
+
+
+_OWNER_BEFORE = re.compile(r"(?:\b(?:" + "|".join(re.escape(h) for h in sorted(set(PARTY_HEADS) | set(MAKES),
+                                                                            key=len, reverse=True))
+                           + r")(?:'s)?|\bthe\s+other(?:\s+party's)?|\btheir|\bits|\b[2-9])\s*$", re.I)
+
+
+def _ego_driver(m: re.Match[str]) -> str:
+    """A driver or operator is the AV's unless the text ties them to another party ("the SUV driver", "the
+    driver of the Lexus")."""
+    before = m.string[max(0, m.start() - 30):m.start()]
+    after = m.string[m.end():m.end() + 12]
+    if "EGO" not in m.group(0) and (_OWNER_BEFORE.search(before) or re.match(r"\s+of\s+(?:the|a|an)\s", after)):
+        return m.group(0)
+    return " EGOD"
 
 
 def sentences(text: str) -> list[str]:
@@ -156,7 +175,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             mods.insert(0, wl)
         mod_text = " ".join(mods)
         kind, cat = _category(head, mod_text)
-        if kind in ("party", "obstacle") and re.search(r"\b(?:any|no|none|neither|nor)\s*$", s[:m.start()], re.I):
+        if kind in ("party", "obstacle") and re.search(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?"
+                                                       r"(?:[\w-]+\s+)?$", s[:m.start()], re.I):
             kind = "group"  # "did not contact any vehicle": a negated mention names nobody
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
         if out and out[-1].kind in ("party",) and kind == "party" and s[out[-1].end:m.start()].strip() == "":
@@ -181,6 +201,9 @@ _AFTER_PARKED = re.compile(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is)?\s*(?:do
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
 _LOCATIVE_AFTER = re.compile(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
                              r"following|traveling|that|which|in\s+the)", re.I)
+
+
+_RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped")
 
 
 def _compatible(e: Entity, m: Mention) -> bool:
@@ -231,6 +254,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             continue
         target: Entity | None = None
         live = [e for e in ents if e.merged_into is None]
+        if m.head in _RIDES and re.search(r"\b(?:abandoned|unattended|dropped|fallen|parked|discarded)\b", m.mods):
+            m.kind, m.category = "obstacle", "other"  # a scooter left lying in the road is an object
         # "The trailing vehicle is a bus": a predicate noun names the same party more precisely.
         if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
                 and prev.entity >= 0 and re.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)):
