@@ -162,7 +162,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
         left = [m for m in ments if m.end <= b]
         rel = left[-1] if left and _RELATIVE.fullmatch(s[left[-1].end:b]) else None
-        if rel is not None and not rel.subject and not re.search(r"\b(?:that|which|who)\b", s[rel.end:b]) and \
+        if rel is not None and not rel.subject and not re.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
                 not (s[rel.end:b].strip() == "" and s[b:e].lower().endswith("ing")):
             rel = None  # "from the left of EGO was slowing": EGO here is no subject
         if inside:
