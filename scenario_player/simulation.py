@@ -133,7 +133,7 @@ class Simulation:
                 ent.speed = spec.target.speed(w)      # the initial speed only; the planner drives from here
                 continue
             run = spec.start(w, ent)
-            if run is not None and not run.done:
+            if run is not None:
                 w.take(ent, run)
             if planner and ent is self.ego and isinstance(spec, AssignRouteAction):
                 self.goal = self._goal_from_route(spec)

@@ -38,6 +38,8 @@ def _switch_lane(world: "World", ent: "Entity", target_lane: int) -> None:
     assert tr is not None
     road_t = tr.center_t(ent.s) + ent.offset
     new = world.tracks.at(tr.ref.road_id, target_lane, ent.s)
+    if new.forward != tr.forward:
+        ent.reverse = not ent.reverse       # keep travelling the same way in the world
     ent.track = new
     ent.offset = road_t - new.center_t(ent.s)
     ent.lane_id = target_lane

@@ -230,6 +230,8 @@ class LongitudinalDistanceRun(ActionRun):
         self.spec = spec
         self.ref = world.entity(spec.ref)
         self.has_dynamics = spec.max_accel is not None or spec.max_decel is not None or spec.max_speed is not None
+        if not self.has_dynamics:
+            self.step(world, 0.0)        # without dynamics the distance holds from the start (t = 0 in Init)
 
     def _wanted(self) -> float:
         sp = self.spec
@@ -265,5 +267,5 @@ class LongitudinalDistanceRun(ActionRun):
             ent.speed = max(0.0, ent.speed + acc * dt)
             if sp.max_speed is not None:
                 ent.speed = min(ent.speed, sp.max_speed)
-        if not sp.continuous and abs(error) < 0.1:
+        if not sp.continuous and abs(error) < 0.1 and dt > 0:
             self.done = True

@@ -140,7 +140,14 @@ class TrajectoryRun(ActionRun):
         ent.track = None
         ent.lane_locked = False
         ent.heading_override = None
-        self._place(self.pos)
+        ent.present = True              # a trajectory in Init places an entity that was never teleported
+        # A vehicle whose reference point sits ahead of its rear axle (esmini's refpoint_x_offset property) steers
+        # like a bicycle: the point follows the path and the body heading trails it (a tractrix).
+        try:
+            self.axle_offset = float(ent.spec.properties.get("refpoint_x_offset", "0") or 0.0)
+        except ValueError:
+            self.axle_offset = 0.0
+        self._place(self.pos, initial=True)
 
     def _at(self, a: float) -> tuple[float, float, float]:
         arc = self.arc
@@ -155,9 +162,13 @@ class TrajectoryRun(ActionRun):
         h = math.atan2(self.ys[i + 1] - self.ys[i], self.xs[i + 1] - self.xs[i])
         return x, y, h
 
-    def _place(self, a: float) -> None:
+    def _place(self, a: float, initial: bool = False) -> None:
         x, y, h = self._at(a)
         ent = self.entity
+        if self.axle_offset > 0 and not initial:
+            rx = ent.x - self.axle_offset * math.cos(ent.h)
+            ry = ent.y - self.axle_offset * math.sin(ent.h)
+            h = math.atan2(y - ry, x - rx)
         ent.x, ent.y, ent.h = x, y, h
 
     def step(self, world: "World", dt: float) -> None:
@@ -181,10 +192,14 @@ class TrajectoryRun(ActionRun):
         else:
             self.pos += ent.speed * dt
         over = self.pos - self.length
-        self._place(self.pos)
         if over > 0:
-            ent.x += over * math.cos(ent.h)
-            ent.y += over * math.sin(ent.h)
+            h = ent.h if self.axle_offset > 0 else self._at(self.length)[2]
+            ent.x, ent.y = self._at(self.length)[:2]
+            ent.x += over * math.cos(h)
+            ent.y += over * math.sin(h)
+            ent.h = h
+        else:
+            self._place(self.pos)
         if self.pos >= self.length - 1e-9:
             self.done = True
             world.reattach(ent)

@@ -233,8 +233,10 @@ class TimeHeadwayCondition(EntityCheck):
 
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         d = world.measure.between(ent, world.entity(self.ref), "longitudinal", self.cs, self.freespace)
-        if d < 0.0 or ent.speed <= 1e-6:
-            hwt = LARGE        # target behind, or not moving: no headway (esmini treats it as infinite)
+        # Signed: a reference behind the triggering entity gives a negative headway (so 'greaterThan' waits
+        # until it has pulled ahead, as in cut-in scenarios); standing still, the headway is ±infinite.
+        if ent.speed <= 1e-6:
+            hwt = LARGE if d > 0 else -LARGE
         else:
             hwt = d / ent.speed
         return self.rule(hwt, self.value)

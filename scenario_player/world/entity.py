@@ -19,7 +19,7 @@ class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
                  "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "road_id",
-                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache")
+                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache", "reverse")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
@@ -47,6 +47,7 @@ class Entity:
         self.road_t = 0.0
         self.heading_override: float | None = None
         self.corner_cache = None
+        self.reverse = False                      # moves against its lane's driving direction (heading says so)
 
     # -- placement ------------------------------------------------------------------------------------------------
     def place_on_lane(self, track: LaneTrack, s: float, offset: float, heading: float | None = None) -> None:
@@ -55,7 +56,10 @@ class Entity:
         x, y, h = track.pose(s, offset)
         self.x, self.y = x, y
         self.h = h if heading is None else heading
-        self.heading_override = None if heading is None or abs(_wrap(heading - h)) < 1e-9 else heading
+        # An entity placed facing against its lane drives against it (esmini: motion follows the heading).
+        self.reverse = heading is not None and abs(_wrap(heading - h)) > math.pi / 2
+        lane_h = h + math.pi if self.reverse else h
+        self.heading_override = None if heading is None or abs(_wrap(heading - lane_h)) < 1e-9 else heading
         self.present = True
         self._sync_road()
 

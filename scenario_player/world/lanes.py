@@ -91,6 +91,9 @@ class LaneTrack:
     def entry_s(self) -> float:
         return self.s0 if self.forward else self.s1
 
+    def exit_s(self) -> float:
+        return self.s1 if self.forward else self.s0
+
 
 class TrackCache:
     """LaneTracks of one network, built on first use."""
@@ -119,6 +122,14 @@ class TrackCache:
 
     def at(self, road_id: str, lane_id: int, s: float) -> LaneTrack:
         return self.track(self.net.lane_ref(road_id, lane_id, s))
+
+    def predecessors(self, ref: LaneRef) -> list[LaneRef]:
+        key = ("pred", ref)
+        out = self.succ.get(key)  # type: ignore[call-overload]
+        if out is None:
+            out = self.net.predecessors(ref)
+            self.succ[key] = out  # type: ignore[index]
+        return out
 
     def successors(self, ref: LaneRef) -> list[LaneRef]:
         out = self.succ.get(ref)

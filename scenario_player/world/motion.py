@@ -25,8 +25,8 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2.0 * math.pi) - math.pi
 
 
-def _next_track(world: "World", ent: "Entity", track: "LaneTrack") -> "LaneTrack | None":
-    refs = world.tracks.successors(track.ref)
+def _next_track(world: "World", ent: "Entity", track: "LaneTrack", backward: bool = False) -> "LaneTrack | None":
+    refs = world.tracks.predecessors(track.ref) if backward else world.tracks.successors(track.ref)
     if not refs:
         return None
     if len(refs) > 1 and ent.route_lanes:
@@ -36,11 +36,14 @@ def _next_track(world: "World", ent: "Entity", track: "LaneTrack") -> "LaneTrack
     if len(refs) == 1:
         return world.tracks.track(refs[0])
     # Straightest continuation: smallest heading change between this lane's end and the successor's start.
-    end_h = track.pose(track.s1 if track.forward else track.s0)[2]
+    end_h = track.pose(track.s1 if track.forward != backward else track.s0)[2]
     best, best_dh = None, math.inf
     for ref in refs:
         cand = world.tracks.track(ref)
-        far = cand.travel(cand.entry_s(), min(10.0, cand.length))[0]
+        if backward:
+            far = cand.travel(cand.exit_s(), -min(10.0, cand.length))[0]
+        else:
+            far = cand.travel(cand.entry_s(), min(10.0, cand.length))[0]
         dh = abs(_wrap(cand.pose(far)[2] - end_h))
         if dh < best_dh:
             best, best_dh = cand, dh
@@ -48,22 +51,24 @@ def _next_track(world: "World", ent: "Entity", track: "LaneTrack") -> "LaneTrack
 
 
 def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
-    """Advance along the lane; False when the lane network ends (the entity stays at the end)."""
+    """Advance `dist` along the lane's driving direction (negative: against it, through predecessors); False when
+    the lane network ends (the entity stays at the end)."""
     track = ent.track
     assert track is not None
     s, left = track.travel(ent.s, dist)
     ok = True
     guard = 0
+    backward = dist < 0
     while left > 1e-12 and guard < 20:
         guard += 1
-        nxt = _next_track(world, ent, track) if dist > 0 else None
+        nxt = _next_track(world, ent, track, backward)
         if nxt is None:
             ok = False
             break
         if nxt.forward != track.forward:
             ent.offset = -ent.offset        # +t of the next road points the other way relative to travel
         track = nxt
-        s, left = track.travel(track.entry_s(), left)
+        s, left = (track.travel(track.exit_s(), -left) if backward else track.travel(track.entry_s(), left))
     ent.track, ent.s = track, s
     return ok
 
@@ -74,15 +79,24 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
             return
     dist = ent.speed * dt
     if ent.track is not None and ent.lane_locked:
-        ok = move_on_lane(world, ent, dist)
+        along = dist
+        if prev_road == ent.track.ref.road_id:
+            # Moving sideways (lane change, offset) uses part of the step's travel, as in esmini.
+            lat = ent.track.center_t(ent.s) + ent.offset - prev_t
+            if 0.0 < abs(lat) < abs(dist):
+                along = math.copysign(math.sqrt(dist * dist - lat * lat), dist)
+        ok = move_on_lane(world, ent, -along if ent.reverse else along)
         x, y, h = ent.track.pose(ent.s, ent.offset)
         ent._sync_road()
         if ent.heading_override is not None and ent.offset == ent.offset:
             h = ent.heading_override
-        elif dist > 1e-9 and prev_road == ent.road_id:
-            # Heading follows the lateral motion too (lane changes): atan of lateral over longitudinal travel.
-            lateral = (ent.road_t - prev_t) * (1.0 if ent.track.forward else -1.0)
-            h = h + math.atan2(lateral, dist)
+        else:
+            if ent.reverse:
+                h += math.pi
+            if dist > 1e-9 and prev_road == ent.road_id:
+                # Heading follows the lateral motion too (lane changes): atan of lateral over travel.
+                lateral = (ent.road_t - prev_t) * (1.0 if ent.track.forward != ent.reverse else -1.0)
+                h = h + math.atan2(lateral, along)
         ent.x, ent.y, ent.h = x, y, h
         if ok:
             ent.end_of_road_time = None

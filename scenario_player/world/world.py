@@ -194,9 +194,10 @@ class World:
                 self.note(f"ignored: storyboard action '{element.name}' on planner-driven '{name}'")
                 continue
             run = spec.start(self, ent)
-            if run is not None and not run.done:
-                self.take(ent, run)
-                runs.append(run)
+            if run is not None:
+                self.take(ent, run)      # even a run done at once (a step speed) ends the domain's holder
+                if not run.done:
+                    runs.append(run)
         return runs
 
     def take(self, ent: Entity, run: "ActionRun") -> None:
@@ -208,7 +209,11 @@ class World:
                 for d in [k for k, v in ent.runs.items() if v is old]:
                     del ent.runs[d]
             ent.runs[dom] = run
-        self.running.append(run)
+        if run.done:
+            for d in [k for k, v in ent.runs.items() if v is run]:
+                del ent.runs[d]
+        else:
+            self.running.append(run)
 
     def cancel_runs(self, runs: Iterable["ActionRun"]) -> None:
         for run in runs:
@@ -259,15 +264,12 @@ __all__ = ["World", "UnsupportedFeature"]
 
 
 def _reattach_impl(self: "World", ent: Entity) -> None:
-    """After a trajectory: follow the lane under the entity again if it drives along it, else go on straight."""
+    """After a trajectory: follow the lane under the entity again (either way along it), else go on straight."""
     lp = self.net.locate(ent.x, ent.y, ent.h)
-    if lp is not None and lp.inside and abs(_wrap(lp.heading - ent.h)) < math.pi / 4:
+    if lp is not None and lp.inside:
         track = self.tracks.at(lp.road_id, lp.lane_id, lp.s)
-        h = ent.h
-        ent.place_on_lane(track, lp.s, lp.offset)
-        ent.h = h
+        against = abs(_wrap(lp.heading - ent.h)) > math.pi / 2
+        ent.place_on_lane(track, lp.s, lp.offset, lp.heading + math.pi if against else None)
     else:
         ent.track = None
         ent.lane_locked = False
-
-
