@@ -107,3 +107,17 @@ def test_curve_map_has_clothoid_arc_clothoid_transitions() -> None:
     assert k.min() == pytest.approx(-1 / 150, rel=1e-6)
     # Curvature changes continuously (clothoids), never in a jump.
     assert np.max(np.abs(np.diff(k))) < 1e-4
+
+
+@pytest.mark.parametrize("name", list(BUNDLED))
+def test_lane_centres_locate_back_to_their_lanes(name: str) -> None:
+    """Points on every driving lane's centre outside junctions map back to that lane (no overlapping roads)."""
+    net = load_network(bundled(name))
+    for rid, road in net.roads.items():
+        if road.in_junction:
+            continue
+        for lid in net.lane_ids(rid, road.length / 2):
+            pts = net.lane_centerline(rid, lid, ds=10.0)[1:-1]
+            match = net.world_to_lane(pts[:, 0], pts[:, 1])
+            assert list(match.road_id) == [rid] * len(pts), (name, rid, lid)
+            assert list(match.lane_id) == [lid] * len(pts), (name, rid, lid)
