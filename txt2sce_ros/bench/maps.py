@@ -111,6 +111,12 @@ def run(args: argparse.Namespace) -> int:
     print(f"   world_to_lane (cKDTree + exact projection)            {rate:12,.0f} points/s "
           f"({rate / naive_rate:.0f}x baseline; {'meets' if rate >= 1e5 else 'MISSES'} target)")
     print(f"   points inside a driving lane: {100 * float(np.mean(match.inside)):.1f}%")
+    on_lane = np.flatnonzero(match.inside)[:2000]
+    t0 = time.perf_counter()
+    for i in on_lane:
+        net.locate(float(xs[i]), float(ys[i]), float(match.heading[i]))
+    t_loc = (time.perf_counter() - t0) / max(len(on_lane), 1)
+    print(f"   locate(x, y, heading), scalar, points on lanes         {t_loc * 1e6:12.1f} us/call")
 
     # 3. LanePath inner loop
     g = net.routing_graph

@@ -53,6 +53,10 @@ class Geometry:
         u, v, dh = self.local(np.array([ds]))
         return float(u[0]), float(v[0]), float(dh[0])
 
+    def curvature_local(self, ds: float) -> float:
+        """Scalar `curvature` (closed forms override it)."""
+        return float(self.curvature(np.array([ds]))[0])
+
     def at(self, ds: float) -> tuple[float, float, float]:
         """Scalar world (x, y, heading) at local arc length `ds`."""
         u, v, dh = self.local_at(ds)
@@ -64,6 +68,9 @@ class Geometry:
 class Line(Geometry):
     def local_at(self, ds: float) -> tuple[float, float, float]:
         return ds, 0.0, 0.0
+
+    def curvature_local(self, ds: float) -> float:
+        return 0.0
 
     def local(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         return ds, np.zeros_like(ds), np.zeros_like(ds)
@@ -83,6 +90,9 @@ def _arc_local(ds: np.ndarray, k: float) -> tuple[np.ndarray, np.ndarray, np.nda
 @dataclass(frozen=True, slots=True)
 class Arc(Geometry):
     k: float = 0.0
+
+    def curvature_local(self, ds: float) -> float:
+        return self.k
 
     def local_at(self, ds: float) -> tuple[float, float, float]:
         k = self.k
@@ -108,6 +118,9 @@ class Spiral(Geometry):
     @property
     def rate(self) -> float:
         return (self.k1 - self.k0) / self.length if self.length > 0 else 0.0
+
+    def curvature_local(self, ds: float) -> float:
+        return self.k0 + self.rate * ds
 
     def local(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         c = self.rate
@@ -245,7 +258,7 @@ class PlanView:
 
     def curvature_at(self, s: float) -> float:
         g = self.geometry_at(s)
-        return float(g.curvature(np.array([s - g.s]))[0])
+        return g.curvature_local(s - g.s)
 
     def _groups(self, s: np.ndarray) -> np.ndarray:
         idx = np.searchsorted(self._starts, s, side="right") - 1

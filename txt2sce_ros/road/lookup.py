@@ -16,6 +16,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..errors import InputError
+from .lanes import cubic_at
 from .model import LaneRef
 
 if TYPE_CHECKING:   # pragma: no cover
@@ -256,40 +257,62 @@ class LaneIndex:
                     getattr(best, name)[take] = getattr(alt, name)[sel]
         return best
 
+    def _project_one(self, x: float, y: float, rid: str, s0: float) -> tuple[float, float, float]:
+        """Scalar `_project` for one road: (s, t, overshoot beyond the road's ends)."""
+        road = self.net.roads[rid]
+        pv = road.plan_view
+        s = s0
+        for _ in range(2):
+            xr, yr, hr = pv.at(s)
+            k = pv.curvature_at(s)
+            c, sn = math.cos(hr), math.sin(hr)
+            dx, dy = x - xr, y - yr
+            lat = -dx * sn + dy * c
+            s = min(max(s + (dx * c + dy * sn) / max(1.0 - k * lat, 0.2), 0.0), road.length)
+        xr, yr, hr = pv.at(s)
+        c, sn = math.cos(hr), math.sin(hr)
+        dx, dy = x - xr, y - yr
+        along = dx * c + dy * sn
+        overshoot = abs(along) if (s <= 1e-9 or s >= road.length - 1e-9) and abs(along) > 1e-6 else 0.0
+        return s, -dx * sn + dy * c, overshoot
+
     def locate(self, x: float, y: float, heading: float | None = None, *, k: int = 12) -> LanePoint | None:
         """The lane at one point. Every lane (of the index's types) of every road among the k nearest samples is
         a candidate: lanes containing the point beat the others, then the driving direction closest to `heading`
-        (so a point on a centre line picks the lane going its way), then the smaller offset from the centre."""
+        (so a point on a centre line picks the lane going its way), then the smaller offset from the centre.
+        Scalar code throughout: players call this for every free-moving entity at every step."""
         k = max(1, min(k, self.tree.n))
-        _, idx = self.tree.query([x, y], k=k)
-        idx = np.atleast_1d(idx)
-        road_of = self.sample_road[idx]
-        _, first = np.unique(road_of, return_index=True)
-        idx = idx[np.sort(first)]                       # one sample per road, nearest first
-        m = self._match(np.full(len(idx), x), np.full(len(idx), y), idx)
+        _, idx = self.tree.query((x, y), k=k)
         best: tuple[float, LanePoint] | None = None
         net = self.net
-        for i in range(len(idx)):
-            rid, s, t = str(m.road_id[i]), float(m.s[i]), float(m.t[i])
-            # how far the projection overshoots the road's ends (0 inside the road's s range)
-            overshoot = math.sqrt(max(float(m.distance[i]) ** 2 - float(m.offset[i]) ** 2, 0.0))
+        seen: set[int] = set()
+        for sample in np.atleast_1d(idx).tolist():
+            ri = int(self.sample_road[sample])
+            if ri in seen:
+                continue
+            seen.add(ri)
+            rid = self.road_ids[ri]
+            s, t, overshoot = self._project_one(x, y, rid, float(self.sample_s[sample]))
             road = net.roads[rid]
             si = net.section_index(rid, s)
             sec = road.sections[si]
-            href = net.road_heading(rid, s)
+            href = road.plan_view.at(s)[2]
+            offset = cubic_at(road.lane_offsets, s)
             for lid, ln in sec.lanes.items():
                 if lid == 0 or not self._wanted(ln.type):
                     continue
-                inner, outer = net.lane_bounds(rid, lid, np.array([s]), si)
-                lo, hi = sorted((float(inner[0]), float(outer[0])))
+                inner, outer, _, _ = sec.lane_bounds_at(lid, s, offset)
+                lo, hi = (inner, outer) if inner <= outer else (outer, inner)
                 if hi - lo <= 1e-6:
                     continue
                 centre = 0.5 * (lo + hi)
                 gap = max(lo - t, 0.0, t - hi)
                 inside = gap <= 1e-9 and overshoot <= 1e-3
+                score = (0.0 if inside else 100.0 + gap + overshoot) + 0.01 * abs(t - centre)
+                if not inside and best is not None and score >= best[0]:
+                    continue
                 h = href if net.lane_forward(rid, lid, sec.s) else href + math.pi
                 h = math.atan2(math.sin(h), math.cos(h))
-                score = (0.0 if inside else 100.0 + gap + overshoot) + 0.01 * abs(t - centre)
                 if heading is not None:
                     diff = abs(math.atan2(math.sin(h - heading), math.cos(h - heading)))
                     score += (0.0 if diff <= math.pi / 2 else 50.0) + 0.1 * diff
