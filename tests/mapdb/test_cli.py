@@ -29,6 +29,22 @@ def test_show_prints_the_summary_and_reports_the_cache(capsys) -> None:
     assert "cache hit" in capsys.readouterr().out
 
 
+def test_show_json_round_trips_the_graph(capsys) -> None:
+    import json
+
+    import networkx as nx
+
+    from txt2sce_ros.mapdb import load_map_database
+
+    assert main(["mapdb", "show", "junction4_signal.xodr", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    graph = nx.node_link_graph(data["graph"], edges="edges")
+    db = load_map_database(BUNDLED_MAPS / "junction4_signal.xodr")
+    assert set(graph.nodes) == set(db.graph.nodes) and graph.number_of_edges() == db.graph.number_of_edges()
+    assert data["junctions"][0]["layout"] == "junction4"
+    assert data["junctions"][0]["approaches"][0]["lanes"][0] == {"id": -1, "turns": ["left", "uturn"]}
+
+
 def test_query_lists_matching_approaches_and_roads(capsys) -> None:
     assert main(["mapdb", "query", "junction4_signal.xodr", "--layout", "junction4", "--lanes", "2",
                  "--control", "signal", "--turn", "left", "--need", "dedicated_left"]) == 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import time
 from pathlib import Path
 
@@ -25,6 +26,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     s = sub.add_parser("show", help="print the map database summary of an OpenDRIVE file")
     s.add_argument("file", help="an .xodr path, or the name of a bundled map (e.g. junction4_signal.xodr)")
     s.add_argument("--no-cache", action="store_true", help="rebuild instead of reading the disk cache")
+    s.add_argument("--json", action="store_true", help="print the graph as node-link JSON instead")
 
     q = sub.add_parser("query", help="list the segments or junction approaches that match road constraints",
                        description="Examples:\n  txt2sce mapdb query junction4_signal.xodr --layout junction4 "
@@ -66,6 +68,9 @@ def run(args: argparse.Namespace) -> int:
     db = load_map_database(path, cache=not args.no_cache)
     elapsed = time.perf_counter() - t0
     if args.mapdb_command == "show":
+        if args.json:
+            print(json.dumps(db.to_json(), indent=1, sort_keys=True))
+            return 0
         print(db.summary())
         print(f"  ({'cache hit' if db.from_cache else 'built'} in {elapsed * 1000:.1f} ms)")
         for note in db.notes:

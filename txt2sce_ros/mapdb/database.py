@@ -14,6 +14,7 @@ import math
 from collections import defaultdict
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import networkx as nx
 import numpy as np
@@ -50,6 +51,22 @@ class MapDatabase(MapQueries):
                 and nx.utils.graphs_equal(self.graph, other.graph))
 
     __hash__ = None  # type: ignore[assignment]
+
+    def to_json(self) -> dict[str, Any]:
+        """The graph as node-link JSON (the paper kept it in Neo4j; this loads into any graph store), plus the
+        junction records. Plain types only, deterministic order."""
+        graph = nx.node_link_data(self.graph, edges="edges")
+        junctions = []
+        for jid in sorted(self.junction_infos, key=lambda r: (len(r), r)):
+            info = self.junction_infos[jid]
+            junctions.append({
+                "id": info.id, "name": info.name, "layout": info.layout.value, "control": info.control.value,
+                "legs": info.legs, "leg_roads": list(info.leg_roads), "x": info.x, "y": info.y,
+                "approaches": [{"road": a.road_id, "control": a.control.value, "heading": a.heading,
+                                "lanes": [{"id": ln.lane_id, "turns": sorted(t.value for t in ln.turns)}
+                                          for ln in a.lanes]} for a in self.approach_map.get(jid, ())],
+            })
+        return {"source": self.source, "sha256": self.sha256, "graph": graph, "junctions": junctions}
 
     def __repr__(self) -> str:
         return (f"MapDatabase({self.source!r}, segments={self.graph.number_of_nodes()}, "
