@@ -294,7 +294,9 @@ def render(sc: Scenario) -> str:
 
 
 J4 = "junction4_signal.xodr"
-WEST_GREEN = (("1010", "green"), ("1030", "green"), ("1011", "red"), ("1031", "red"), ("1020", "red"),
+# East-west green for through traffic and left arrows alike (the oracle reads a stop line 5 m either side when it
+# cannot tell lanes, so neighbouring heads of one approach show the same colour in these scenarios).
+WEST_GREEN = (("1010", "green"), ("1030", "green"), ("1011", "green"), ("1031", "green"), ("1020", "red"),
               ("1040", "red"), ("1021", "red"), ("1041", "red"))
 
 SCENARIOS: tuple[Scenario, ...] = (
@@ -304,9 +306,7 @@ SCENARIOS: tuple[Scenario, ...] = (
     Scenario("benign_curve", "curve.xodr", Lane("1", -1, 20.0), Lane("1", -1, 450.0), ego_speed=5.0,
              note="Curved road: the curve speed limit keeps the yaw rate inside the smoothness band."),
     Scenario("benign_junction_left", J4, Lane("3", -1, 80.0), Lane("2", 2, 120.0),
-             signals=(("west_left_green", 120.0, (("1031", "green"), ("1011", "green"), ("1030", "red"),
-                                                  ("1010", "red"), ("1020", "red"), ("1040", "red"),
-                                                  ("1021", "red"), ("1041", "red"))),),
+             signals=(("ew_green", 120.0, WEST_GREEN),),
              note="Left turn through the signalised 4-way junction on a green arrow."),
     Scenario("benign_junction_straight", J4, Lane("3", -2, 60.0), Lane("1", 2, 120.0),
              signals=(("ew_green", 120.0, WEST_GREEN),),
