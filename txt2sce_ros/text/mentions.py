@@ -16,6 +16,10 @@ from .lexicon import (EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEA
 
 _QUOTES = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
 _EGO_RES = [re.compile(p, re.I) for p in EGO_PATTERNS]
+_DROP_UPPER = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+_DROP_ALPHA = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
+_NEGATED_NP = re.compile(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
+_DET_END = re.compile(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", re.I)
 _PAREN_DEF = re.compile(r"\s*\((?:[^()]{0,40})\)")  # ("Waymo AV"), (Vehicle 2), (car 1): definitions, not text
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
 _ABBREV = re.compile(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
@@ -27,7 +31,28 @@ _STREET_SUFFIX = re.compile(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|A
 
 _HEADS = sorted(set(PARTY_HEADS) | set(OBSTACLE_HEADS) | set(MAKES) | set(VAN_MODELS) | set(GROUP_HEADS),
                 key=len, reverse=True)
-_HEAD_RE = re.compile(r"\b(EGOD|EGO|it|he|she|" + "|".join(re.escape(h) for h in _HEADS) + r")(?:'s|s')?\b", re.I)
+def _trie_pattern(words: list[str]) -> str:
+    """One regex alternation for many literals, factored as a trie: the engine then tries a few branches per
+    position instead of every word (a plain alternation of ~250 heads made this the extractor's hot spot)."""
+    trie: dict = {}
+    for w in words:
+        node = trie
+        for ch in w.lower():
+            node = node.setdefault(ch, {})
+        node[""] = {}
+
+    def emit(node: dict) -> str:
+        alts = [re.escape(ch) + emit(sub) for ch, sub in sorted(node.items()) if ch]
+        optional = "" in node
+        if not alts:
+            return ""
+        body = alts[0] if len(alts) == 1 and not optional else "(?:" + "|".join(alts) + ")"
+        return body + ("?" if optional else "")
+
+    return emit(trie)
+
+
+_HEAD_RE = re.compile(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 _NOT_HEAD_AFTER = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
@@ -74,7 +99,9 @@ def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     t = text.translate(_QUOTES)
     t = re.sub(r"\s+", " ", t).strip()
-    if t.isupper() or sum(c.isupper() for c in t) > 0.6 * sum(c.isalpha() for c in t):
+    n_upper = len(t) - len(t.translate(_DROP_UPPER))
+    n_alpha = len(t) - len(t.translate(_DROP_ALPHA))
+    if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     for m in re.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
@@ -142,8 +169,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         after = s[m.end():]
         hl = head.lower()
         if hl in ("it", "he", "she"):
-            pre = s[:m.start()]
-            if _SUBJ_BEFORE.search(pre) or not pre.strip():
+            pre = s[max(0, m.start() - 60):m.start()]
+            if _SUBJ_BEFORE.search(pre) or not s[:m.start()].strip():
                 out.append(Mention(sent=sent_idx, start=m.start(), end=m.end(), kind="pron", head=hl,
                                    category="pron", det="", mods="", subject=True))
             continue
@@ -174,8 +201,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             mods.insert(0, wl)
         mod_text = " ".join(mods)
         kind, cat = _category(head, mod_text)
-        if kind in ("party", "obstacle") and re.search(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?"
-                                                       r"(?:[\w-]+\s+)?$", s[:m.start()], re.I):
+        if kind in ("party", "obstacle") and _NEGATED_NP.search(s[max(0, m.start() - 40):m.start()]):
             kind = "group"  # "did not contact any vehicle": a negated mention names nobody
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
         if out and out[-1].kind in ("party",) and kind == "party" and s[out[-1].end:m.start()].strip() == "":
@@ -186,9 +212,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             start = prev.start
         else:
             start = m.start() - sum(len(w) + 1 for w in mods)
-        pre = s[:max(0, start)]
-        pre_wo_det = re.sub(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", "", pre, flags=re.I)
-        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or pre_wo_det.strip() == ""
+        pre = s[max(0, start - 60):max(0, start)]
+        pre_wo_det = _DET_END.sub("", pre)
+        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or (start <= 60 and pre_wo_det.strip() == "")
         out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
                            det=det, mods=mod_text, subject=subject))
     return out
