@@ -1,7 +1,8 @@
 """`load_map_database`: build once per map content, keep the result on disk keyed by the file's SHA-256.
 
-The key also carries `FORMAT`, bumped whenever the records or the build change, so a stale cache is never read.
-Writes go through a temporary file and `os.replace`, so concurrent builders never see half a pickle.
+The key also carries a fingerprint of the code that builds it (this package and the road model), so an entry
+written by an older version is never read. Writes go through a temporary file and `os.replace`, so concurrent
+builders never see half a pickle.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ import hashlib
 import os
 import pickle
 import tempfile
+from functools import lru_cache
 from pathlib import Path
 
 from ..errors import InputError
@@ -17,13 +19,21 @@ from ..paths import cache_dir
 from ..road import RoadNetwork
 from .database import MapDatabase, build_map_database
 
-#: Version of the cached layout; part of the cache key.
-FORMAT = 1
+@lru_cache(maxsize=1)
+def code_fingerprint() -> str:
+    """A hash of the sources the database depends on: the map-database and road-model modules."""
+    here = Path(__file__).resolve().parent
+    digest = hashlib.sha256()
+    for folder in (here, here.parent / "road"):
+        for src in sorted(folder.glob("*.py")):
+            digest.update(src.name.encode())
+            digest.update(src.read_bytes())
+    return digest.hexdigest()[:12]
 
 
 def cache_path(sha256: str) -> Path:
     """Where the database of a map with this content hash is cached."""
-    return cache_dir() / "mapdb" / f"{sha256}-f{FORMAT}.pickle"
+    return cache_dir() / "mapdb" / f"{sha256}-{code_fingerprint()}.pickle"
 
 
 def load_map_database(path: str | os.PathLike[str], *, cache: bool = True) -> MapDatabase:
