@@ -14,9 +14,18 @@ class LineTrack:
 
     reverse = False
 
-    def __init__(self, points: list[tuple[float, float]]) -> None:
+    def __init__(self, points: list[tuple[float, float]], *, ds: float = 0.5) -> None:
         p = np.asarray(points, dtype=float)
-        self.x, self.y = p[:, 0], p[:, 1]
+        self.corners = p  # the polyline as given: the trajectory's vertices
+        seg = np.hypot(np.diff(p[:, 0]), np.diff(p[:, 1]))
+        keep = np.concatenate([[True], seg > 1e-6])
+        p = p[keep]
+        # densify so that sampled distance tests (conflict search) cannot step over a crossing
+        cum = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(p[:, 0]), np.diff(p[:, 1])))])
+        self.corners, self.corner_d = p, cum
+        n = max(int(np.ceil(cum[-1] / ds)) + 1, 2)
+        u = np.linspace(0.0, cum[-1], n)
+        self.x, self.y = np.interp(u, cum, p[:, 0]), np.interp(u, cum, p[:, 1])
         seg = np.hypot(np.diff(self.x), np.diff(self.y))
         self.d = np.concatenate([[0.0], np.cumsum(seg)])
         hs = np.arctan2(np.diff(self.y), np.diff(self.x))
@@ -42,8 +51,17 @@ class LineTrack:
     def lane_pose(self, d: float, lateral: float = 0.0) -> WorldPose:
         return self.world(d, lateral)
 
-    def vertices(self) -> tuple[WorldPose, ...]:
-        return tuple(WorldPose(float(x), float(y), float(h)) for x, y, h in zip(self.x, self.y, self.h))
+    def vertices(self, from_d: float = 0.0) -> tuple[WorldPose, ...]:
+        """The corner points from distance `from_d` on (the first vertex is the point at `from_d`), with the
+        heading of the segment leaving each. A trajectory assigned while the entity is already under way must start
+        where it is: players follow a polyline from its first vertex."""
+        keep = self.corner_d > from_d + 0.5
+        first = self.world(from_d)
+        p = np.vstack([[first.x, first.y], self.corners[keep]])
+        hs = np.arctan2(np.diff(p[:, 1]), np.diff(p[:, 0]))
+        hs = np.concatenate([hs, hs[-1:]])
+        return tuple(WorldPose(round(float(x), 3), round(float(y), 3), round(float(h), 4))
+                     for (x, y), h in zip(p, hs))
 
 
 def perpendicular(px: float, py: float, heading: float, side: str, before: float, after: float) -> LineTrack:

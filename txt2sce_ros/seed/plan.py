@@ -184,7 +184,10 @@ class Planner:
                     acts.pop()
             if code == "m" and crossing is not None:
                 acts.append(crossing)
-            if code in "fg":
+            if code in "fg" and isinstance(actor.track, LineTrack):
+                # off the lane network (after a crossing): no lane to change from; keep going
+                actor.notes.append(f"{name} after leaving the lanes realised as keeping speed")
+            elif code in "fg":
                 rel = 1 if code == "f" else -1
                 acts.append(LaneChangeAct(rel, self.D.lane_change_time, lane_change_ref or actor.name))
                 actor.lat_steps.append(LateralStep(t, rel * self.lane_w, self.D.lane_change_time))
@@ -443,6 +446,7 @@ class Planner:
         else:
             self._meet_parallel(p, actor, T, t, dn, mode)
         self._release_if_needed(actor)
+        self._trim_trajectories(actor)
         self.actors.append(actor)
         self.choices["parties"].setdefault(p.id, {}).update({
             "mode": mode, "start_d": round(actor.d0, 2), "speed": actor.v0, "conflict_time": round(T, 2),
@@ -575,13 +579,25 @@ class Planner:
                 side = 1.0  # oncoming lane is to the AV's left == to the party's left as well
             if p.lane == "same" and p.position != "R7":
                 return
-            gap = self.lane_w - ego.width / 2 - actor.width / 2 - 0.3
+            gap = self.lane_w - ego.width / 2 - actor.width / 2 + 0.3   # 0.3 m of overlap: they touch
             shift = side * max(gap, 0.0)
             if abs(actor.lat0) < 1e-6 or abs(actor.lat0) >= self.lane_w:
                 actor.lat0 = (actor.lat0 - math.copysign(self.lane_w, actor.lat0)) if abs(actor.lat0) >= \
                     self.lane_w else 0.0
                 actor.lat0 += shift if p.position != "R7" else shift
             actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+
+    def _trim_trajectories(self, actor: Actor) -> None:
+        """Start every trajectory at the point the actor has reached when its event fires."""
+        if not isinstance(actor.track, LineTrack):
+            return
+        t, _, d = actor.profile(self.horizon)
+        for k, ev in enumerate(actor.events):
+            if any(isinstance(a, TrajectoryAct) for a in ev.actions):
+                at = actor.d0 + float(np.interp(ev.planned_time, t, d))
+                acts = tuple(TrajectoryAct(a.name, actor.track.vertices(at)) if isinstance(a, TrajectoryAct) else a
+                             for a in ev.actions)
+                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
 
     def _release_if_needed(self, actor: Actor) -> None:
         """Keep a start on the map; nothing else to do: events are timed from the plan."""
@@ -647,7 +663,7 @@ class Planner:
         if o.position == "R6":
             back = min(float(np.min(self.ego_d)), 0.0)
             rear = ego.cx - ego.length / 2
-            d = ego.d0 + back + rear - (cx + dims[1] / 2) - (0.3 if is_collision else 3.0)
+            d = ego.d0 + back + rear - (cx + dims[1] / 2) + (0.2 if is_collision else -3.0)
         else:
             reach = travelled_T if travelled_T > 1.0 else max(final, 0.0)
             if not is_collision:
