@@ -46,8 +46,8 @@ def condition_from_xml(ctx: ParseContext, el: etree._Element) -> Condition:
 
 
 def trigger_from_xml(ctx: ParseContext, el: etree._Element | None) -> Trigger | None:
-    if el is None:
-        return None
+    if el is None or el.find("ConditionGroup") is None:
+        return None     # an empty <StartTrigger/> is no trigger at all: the element starts at once (as esmini)
     return Trigger([ConditionGroup([condition_from_xml(ctx, c) for c in g.findall("Condition")])
                     for g in el.findall("ConditionGroup")])
 

@@ -39,7 +39,10 @@ class ActionElement(StoryboardElement):
         self.runs = []
 
     def tick(self, world: "World") -> None:
-        if self.state is State.RUNNING and all(r.done for r in self.runs):  # type: ignore[attr-defined]
+        # An action ends at the first tick after its runs finished, never in the tick it started: an instant
+        # action (teleport, step speed) completes one step later, which is when esmini reports its end too.
+        if (self.state is State.RUNNING and self.transition_step < world.step_index
+                and all(r.done for r in self.runs)):  # type: ignore[attr-defined]
             self.end(world)
 
 

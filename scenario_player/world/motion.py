@@ -86,6 +86,12 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
             if 0.0 < abs(lat) < abs(dist):
                 along = math.copysign(math.sqrt(dist * dist - lat * lat), dist)
         ok = move_on_lane(world, ent, -along if ent.reverse else along)
+        if ok and along == 0.0:
+            # Standing: still "at the end of the road" if parked on a dead end's last point.
+            tr = ent.track
+            end_s = tr.exit_s() if not ent.reverse else tr.entry_s()
+            nxt = world.tracks.predecessors(tr.ref) if ent.reverse else world.tracks.successors(tr.ref)
+            ok = not (abs(ent.s - end_s) < 1e-6 and not nxt)
         x, y, h = ent.track.pose(ent.s, ent.offset)
         ent._sync_road()
         if ent.heading_override is not None and ent.offset == ent.offset:
@@ -101,7 +107,9 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
         if ok:
             ent.end_of_road_time = None
         else:
-            ent.end_of_road_time = (ent.end_of_road_time or 0.0) + dt
+            # Stuck at the end of the lane network: the entity stops there (esmini does the same).
+            ent.end_of_road_time = (0.0 if ent.end_of_road_time is None else ent.end_of_road_time + dt)
+            ent.speed = 0.0
     elif dist != 0.0:
         ent.x += dist * math.cos(ent.h)
         ent.y += dist * math.sin(ent.h)

@@ -229,7 +229,8 @@ class World:
             ent.place_on_lane(track, pose.s, pose.offset, None if abs(_wrap(pose.h - lane_h)) < 1e-6 else pose.h)
         else:
             ent.place_free(pose.x, pose.y, pose.h)
-        ent.end_of_road_time = None
+        # Road-derived timers (end of road, off road) update in the kinematics phase, so every condition of this
+        # step still sees the state the step started with.
 
     def reattach(self, ent: Entity) -> None:
         _reattach_impl(self, ent)
