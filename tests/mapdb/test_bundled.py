@@ -121,3 +121,15 @@ def test_lane_centres_locate_back_to_their_lanes(name: str) -> None:
             match = net.world_to_lane(pts[:, 0], pts[:, 1])
             assert list(match.road_id) == [rid] * len(pts), (name, rid, lid)
             assert list(match.lane_id) == [lid] * len(pts), (name, rid, lid)
+
+
+@pytest.mark.parametrize("name", list(BUNDLED))
+def test_plan_views_are_continuous(name: str) -> None:
+    """Each geometry starts where the road model says the previous one ends (clothoid ends integrated by the
+    generator, evaluated independently by the road model)."""
+    net = load_network(bundled(name))
+    for road in net.roads.values():
+        for prev, geo in zip(road.plan_view.geometries, road.plan_view.geometries[1:]):
+            x, y, h = prev.evaluate(np.array([prev.length]))
+            assert math.hypot(x[0] - geo.x, y[0] - geo.y) < 1e-6, (name, road.id)
+            assert math.cos(h[0] - geo.hdg) > 1 - 1e-12

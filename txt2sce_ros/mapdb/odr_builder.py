@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable, Sequence
+from typing import Sequence
 
 import numpy as np
 from lxml import etree
@@ -415,12 +415,8 @@ def lane_border_t(lanes: Sequence[LaneSpec], lane_id: int, *, outer: bool) -> fl
     raise KeyError(lane_id)
 
 
-def ids(lanes: Iterable[LaneSpec], lane_type: str = "driving") -> list[int]:
-    return [ln.id for ln in lanes if ln.type == lane_type]
-
-
 __all__ = [
     "Pose", "Line", "Arc", "Spiral", "Hermite", "Primitive", "advance", "connector", "RoadMark", "LaneSpec",
     "RoadLink", "SignalSpec", "RoadSpec", "ConnectionSpec", "JunctionSpec", "ControllerSpec", "MapSpec", "to_xml",
-    "lane_border_t", "ids", "SOLID_YELLOW_DOUBLE", "SOLID_WHITE", "BROKEN_WHITE", "NO_MARK",
+    "lane_border_t", "SOLID_YELLOW_DOUBLE", "SOLID_WHITE", "BROKEN_WHITE", "NO_MARK",
 ]
