@@ -141,6 +141,7 @@ class Simulation:
             self.ego.track = None
             self.ego.lane_locked = False
         for ent in w.order:
+            ent.placed = False          # Init placements are the t = 0 state; everyone moves from step 1
             ent._prev_speed, ent._prev_h = ent.speed, ent.h
             if ent.track is None:
                 derive(w, ent, self.config.dt, ent.x, ent.y, self.config.locate_free)

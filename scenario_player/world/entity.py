@@ -19,7 +19,7 @@ class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
                  "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "road_id",
-                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache", "reverse")
+                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache", "reverse", "placed")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
@@ -47,6 +47,7 @@ class Entity:
         self.road_t = 0.0
         self.heading_override: float | None = None
         self.corner_cache = None
+        self.placed = False                       # teleported during this step's triggers/actions
         self.reverse = False                      # moves against its lane's driving direction (heading says so)
 
     # -- placement ------------------------------------------------------------------------------------------------

@@ -77,8 +77,12 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
     for run in ent.runs.values():
         if run.moves_entity:
             return
+    if ent.placed:
+        ent.placed = False          # teleported this step: it appears there, and moves from the next step
+        return
     dist = ent.speed * dt
     if ent.track is not None and ent.lane_locked:
+        s_before, track_before = ent.s, ent.track
         along = dist
         if prev_road == ent.track.ref.road_id:
             # Moving sideways (lane change, offset) uses part of the step's travel, as in esmini.
@@ -109,7 +113,8 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
         else:
             # Stuck at the end of the lane network: the entity stops there (esmini does the same).
             ent.end_of_road_time = (0.0 if ent.end_of_road_time is None else ent.end_of_road_time + dt)
-            ent.speed = 0.0
+            if ent.s == s_before and ent.track is track_before:
+                ent.speed = 0.0     # could not move at all: stuck at the end (esmini stops it there)
     elif dist != 0.0:
         ent.x += dist * math.cos(ent.h)
         ent.y += dist * math.sin(ent.h)

@@ -223,6 +223,7 @@ class World:
         ent.runs.pop(domain, None)
 
     def teleport(self, ent: Entity, pose: Pose) -> None:
+        ent.placed = True
         if pose.road_id is not None and pose.lane_id is not None and pose.s is not None:
             track = self.tracks.at(pose.road_id, pose.lane_id, pose.s)
             lane_h = track.pose(pose.s, pose.offset)[2]
