@@ -171,7 +171,7 @@ class LanePath:
             i = lo + int(np.argmin((seg_x - x) ** 2 + (seg_y - y) ** 2))
         else:
             if self._tree is None:
-                self._tree = cKDTree(np.column_stack([self._x, self._y]))
+                self._tree = cKDTree(np.column_stack([self._x, self._y]), balanced_tree=False, compact_nodes=False)
             i = int(self._tree.query([x, y])[1])
         best = (np.inf, 0.0, 0.0)
         for j in (i - 1, i):
