@@ -13,7 +13,7 @@ import json
 import os
 import time
 import zlib
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -27,7 +27,7 @@ from .assembly import assemble
 from .blocks import Disassembly, Variant
 from .context import build_context
 from .disassembly import disassemble
-from .export import write_dot, write_graphml
+from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
 from .prune import prune
 from .xml import parse_bytes
@@ -128,13 +128,12 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     cap = int(cfg["tree"]["max_nodes_per_tree"])
     prune_rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
 
-    manifest_nodes: list[dict[str, Any]] = []
+    # Compact records (id, parent id, path) only: the per-node metadata is expanded while the manifest streams
+    # out, so memory grows by a few dozen bytes per node, not by its change list.
+    records: list[tuple[str, str | None, tuple[int, ...]]] = [("root", None, ())]
     errors: list[str] = []
     root_text = assemble(dis.template, originals)
     (nodes_dir / "root.xosc").write_text(root_text, encoding="utf-8")
-    manifest_nodes.append({"id": "root", "parent": None, "depth": 0, "file": "nodes/root.xosc", "path": [],
-                           "block": None, "block_kind": None, "block_key": None, "variant": None,
-                           "operator": "seed", "changes": [], "rng_seed": int(seed)})
     frontier = [_Node("root", None, ())]
     written = pruned = invalid = 0
     truncated = False
@@ -170,12 +169,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
             with open(out / rel, "wb") as fh:
                 fh.write(text.encode("utf-8"))
             written += 1
-            v = vs[j]
-            manifest_nodes.append({
-                "id": node_id, "parent": parent.id, "depth": depth, "file": rel, "path": list(path),
-                "block": block.index, "block_kind": block.kind.value, "block_key": block.key, "variant": j,
-                "operator": v.operator, "changes": [[c.path, c.old, c.new] for c in v.changes],
-                "rng_seed": v.rng_seed})
+            records.append((node_id, parent.id, path))
             frontier.append(_Node(node_id, parent.id, path))
         if truncated or not frontier:
             break
@@ -189,11 +183,25 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
         "insertion": [dis.blocks[i].index for i in used],
         "block_counts": list(counts), "expected_nodes": expected_nodes(counts), "nodes_written": written,
         "pruned": pruned, "invalid": invalid, "truncated": truncated, "errors": errors[:50],
-        "nodes": manifest_nodes,
     }
-    (out / "manifest.json").write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n", encoding="utf-8")
-    write_graphml(manifest, out / "tree.graphml")
-    write_dot(manifest, out / "tree.dot")
+
+    def node_dicts() -> Iterator[dict[str, Any]]:
+        for node_id, parent_id, path in records:
+            if not path:
+                yield {"id": "root", "parent": None, "depth": 0, "file": "nodes/root.xosc", "path": [],
+                       "block": None, "block_kind": None, "block_key": None, "variant": None,
+                       "operator": "seed", "changes": [], "rng_seed": int(seed)}
+                continue
+            b = dis.blocks[used[len(path) - 1]]
+            v = variants[b.index][path[-1]]
+            yield {"id": node_id, "parent": parent_id, "depth": len(path), "file": f"nodes/{node_id}.xosc",
+                   "path": list(path), "block": b.index, "block_kind": b.kind.value, "block_key": b.key,
+                   "variant": path[-1], "operator": v.operator,
+                   "changes": [[c.path, c.old, c.new] for c in v.changes], "rng_seed": v.rng_seed}
+
+    write_manifest(manifest, node_dicts(), out / "manifest.json")
+    write_graphml(manifest["tree"], node_dicts(), out / "tree.graphml")
+    write_dot(manifest["tree"], node_dicts(), out / "tree.dot")
     return TreeResult(seed=str(seed_path), out_dir=out, block_counts=counts, expected=expected_nodes(counts),
                       nodes=written, pruned=pruned, invalid=invalid, truncated=truncated,
                       seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))

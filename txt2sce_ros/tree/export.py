@@ -1,41 +1,64 @@
-"""Tree exports from the manifest: GraphML (for graph tools) and Graphviz DOT."""
+"""Tree exports, streamed from node records (memory stays flat for large trees): the JSON manifest, GraphML (for
+graph tools such as Gephi/yEd/networkx) and Graphviz DOT."""
 
 from __future__ import annotations
 
+import json
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
+from xml.sax.saxutils import quoteattr
 
 
-def _graph(manifest: dict[str, Any]):
-    import networkx as nx
+def write_manifest(head: dict[str, Any], nodes: Iterable[dict[str, Any]], path: str | Path) -> None:
+    """`head` (sorted keys) plus a "nodes" list written one node per line; a plain JSON document."""
+    text = json.dumps(head, indent=1, sort_keys=True)
+    assert text.endswith("\n}")
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(text[:-2] + ',\n "nodes": [\n')
+        first = True
+        for n in nodes:
+            fh.write(("" if first else ",\n") + "  " + json.dumps(n, sort_keys=True))
+            first = False
+        fh.write("\n ]\n}\n")
 
-    g = nx.DiGraph(name=str(manifest.get("tree", "")))
-    for n in manifest["nodes"]:
-        g.add_node(n["id"], depth=int(n["depth"]), file=str(n["file"]), operator=str(n["operator"]),
-                   block=str(n.get("block_key") or ""), kind=str(n.get("block_kind") or ""))
-        if n["parent"] is not None:
-            g.add_edge(n["parent"], n["id"], block=str(n.get("block_key") or ""), operator=str(n["operator"]))
-    return g
+
+_KEYS = (("depth", "int"), ("file", "string"), ("operator", "string"), ("block", "string"), ("kind", "string"))
 
 
-def write_graphml(manifest: dict[str, Any], path: str | Path) -> None:
-    import networkx as nx
+def write_graphml(name: str, nodes: Iterable[dict[str, Any]], path: str | Path) -> None:
+    """GraphML: one node per tree node (depth, file, operator, block key, block kind), edges parent -> child."""
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write('<?xml version="1.0" encoding="UTF-8"?>\n'
+                 '<graphml xmlns="http://graphml.graphdrawing.org/xmlns">\n')
+        for key, typ in _KEYS:
+            fh.write(f'  <key id="{key}" for="node" attr.name="{key}" attr.type="{typ}"/>\n')
+        fh.write(f'  <graph id={quoteattr(str(name))} edgedefault="directed">\n')
+        for n in nodes:
+            vals = {"depth": n["depth"], "file": n["file"], "operator": n["operator"],
+                    "block": n.get("block_key") or "", "kind": n.get("block_kind") or ""}
+            data = "".join(f'<data key="{k}">{_esc(str(vals[k]))}</data>' for k, _ in _KEYS)
+            fh.write(f'    <node id={quoteattr(n["id"])}>{data}</node>\n')
+            if n["parent"] is not None:
+                fh.write(f'    <edge source={quoteattr(n["parent"])} target={quoteattr(n["id"])}/>\n')
+        fh.write("  </graph>\n</graphml>\n")
 
-    nx.write_graphml(_graph(manifest), str(path))
+
+def _esc(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 def _q(text: str) -> str:
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-def write_dot(manifest: dict[str, Any], path: str | Path) -> None:
-    """Nodes labelled with the block they added and its operator; one rank per insertion layer."""
-    lines = [f"digraph {_q(str(manifest.get('tree', 'tree')))} {{", "  rankdir=LR;", "  node [shape=box, fontsize=9];"]
-    for n in manifest["nodes"]:
-        label = "seed" if n["parent"] is None else f"{n['block_key']}\\n{n['operator']}#{n['variant']}"
-        lines.append(f"  {_q(n['id'])} [label={_q(label)}];")
-    for n in manifest["nodes"]:
-        if n["parent"] is not None:
-            lines.append(f"  {_q(n['parent'])} -> {_q(n['id'])};")
-    lines.append("}")
-    Path(path).write_text("\n".join(lines) + "\n", encoding="utf-8")
+def write_dot(name: str, nodes: Iterable[dict[str, Any]], path: str | Path) -> None:
+    """Graphviz DOT, left to right; nodes labelled with the block they added and the operator."""
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(f"digraph {_q(str(name))} {{\n  rankdir=LR;\n  node [shape=box, fontsize=9];\n")
+        for n in nodes:
+            label = "seed" if n["parent"] is None else f"{n['block_key']}\\n{n['operator']}#{n['variant']}"
+            fh.write(f"  {_q(n['id'])} [label={_q(label)}];\n")
+            if n["parent"] is not None:
+                fh.write(f"  {_q(n['parent'])} -> {_q(n['id'])};\n")
+        fh.write("}\n")
