@@ -1,9 +1,9 @@
 """Condition machinery: the base class owns edge detection, delay and history; subclasses only say whether their
 check holds now (`holds(world)`). Triggers are an OR of ConditionGroups, each an AND of Conditions.
 
-Edge semantics follow the standard: 'rising' is true in the evaluation where the check goes false -> true (the
-value before the first evaluation counts as false), 'falling' the reverse, 'risingOrFalling' either, 'none' the
-plain value. A delay shifts the (edge-processed) result by `delay` seconds of simulation time.
+Edge semantics follow the standard: 'rising' is true in the evaluation where the check goes false -> true,
+'falling' the reverse, 'risingOrFalling' either, 'none' the plain value. The first evaluation has no previous
+value, so it is never an edge (esmini does the same: a condition already true when first checked does not "rise"). A delay shifts the (edge-processed) result by `delay` seconds of simulation time.
 """
 
 from __future__ import annotations
@@ -73,14 +73,16 @@ class Condition:
         self.reset()
 
     def reset(self) -> None:
-        self._prev = False
+        self._prev: bool | None = None
         self._pending: deque[float] = deque()     # times at which a delayed edge fires
         self._history: deque[tuple[float, bool]] = deque()
         self.last_value = False
 
     def evaluate(self, world: "World") -> bool:
         raw = bool(self.check.holds(world))
-        if self.edge == "rising":
+        if self.edge != "none" and self._prev is None:
+            value = False
+        elif self.edge == "rising":
             value = raw and not self._prev
         elif self.edge == "falling":
             value = self._prev and not raw
