@@ -81,6 +81,8 @@ class LaneIndex:
         self.lane_types = None if lane_types is None else frozenset(lane_types)
         self.road_ids = list(net.roads)
         self._road_pos = {rid: i for i, rid in enumerate(self.road_ids)}
+        self._road_names = np.array(self.road_ids, dtype=object)
+        self._lengths = np.array([net.roads[r].length for r in self.road_ids])
         pts, road_idx, s_all = [], [], []
         for ri, rid in enumerate(self.road_ids):
             road = net.roads[rid]
@@ -113,11 +115,14 @@ class LaneIndex:
     # --- projection ------------------------------------------------------------------------------------------------
 
     def _project(self, xs: np.ndarray, ys: np.ndarray, road_idx: np.ndarray, s0: np.ndarray
-                 ) -> tuple[np.ndarray, np.ndarray]:
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Road (s, t) of each point on its candidate road, starting from s0 (two curvature-corrected Newton
-        steps on the exact reference line), s clamped to the road."""
+        steps on the exact reference line), s clamped to the road; plus the reference heading at s and the
+        along-track residual (non-zero only where the point lies beyond a road end)."""
         s = s0.copy()
         t = np.zeros_like(s)
+        href = np.zeros_like(s)
+        resid = np.zeros_like(s)
         order = np.argsort(road_idx, kind="stable")
         bounds = np.flatnonzero(np.diff(road_idx[order])) + 1
         for grp in np.split(order, bounds):
@@ -137,11 +142,14 @@ class LaneIndex:
                 lat = -dx * sn + dy * c
                 sg = np.clip(sg + along / np.maximum(1.0 - k * lat, 0.2), 0.0, road.length)
             xr, yr, hr = pv.evaluate(sg)
+            c, sn = np.cos(hr), np.sin(hr)
             s[grp] = sg
-            t[grp] = -(px - xr) * np.sin(hr) + (py - yr) * np.cos(hr)
-        return s, t
+            t[grp] = -(px - xr) * sn + (py - yr) * c
+            href[grp] = hr
+            resid[grp] = (px - xr) * c + (py - yr) * sn
+        return s, t, href, resid
 
-    def _assign_lanes(self, xs: np.ndarray, ys: np.ndarray, road_idx: np.ndarray, s: np.ndarray, t: np.ndarray
+    def _assign_lanes(self, road_idx: np.ndarray, s: np.ndarray, t: np.ndarray, href: np.ndarray
                       ) -> tuple[np.ndarray, ...]:
         """Lane (of wanted types) holding t at s, else the nearest such lane; with offset, heading, distance."""
         n = len(s)
@@ -157,14 +165,14 @@ class LaneIndex:
             m_road = np.flatnonzero(road_idx == ri)
             starts = net._section_starts[rid]
             sec_of = np.clip(np.searchsorted(starts, s[m_road] + 1e-9, side="right") - 1, 0, len(starts) - 1)
-            _, _, href = net.reference(rid, s[m_road])
+            href_road = href[m_road]
             for si in np.unique(sec_of):
                 grp = m_road[sec_of == si]
                 sec = road.sections[int(si)]
                 ids = [i for i, ln in sec.lanes.items() if i != 0 and self._wanted(ln.type)]
                 if not ids:
                     continue
-                hr = href[sec_of == si]
+                hr = href_road[sec_of == si]
                 borders = sec.borders_t(s[grp], net.lane_offset(rid, s[grp]))
                 tg = t[grp]
                 ids_arr = np.array(ids)
@@ -188,26 +196,16 @@ class LaneIndex:
 
     def _match(self, xs: np.ndarray, ys: np.ndarray, sample: np.ndarray) -> LaneMatch:
         road_idx = self.sample_road[sample]
-        s, t = self._project(xs, ys, road_idx, self.sample_s[sample])
-        section, lane, offset, heading, inside = self._assign_lanes(xs, ys, road_idx, s, t)
-        # Distance to the lane centre: lateral |offset|, plus how far the projection overshot the road's ends.
-        length = np.array([self.net.roads[r].length for r in self.road_ids])[road_idx]
-        xr, yr = self._centre_xy(road_idx, s, t - offset)
-        distance = np.hypot(xs - xr, ys - yr)
+        s, t, href, resid = self._project(xs, ys, road_idx, self.sample_s[sample])
+        section, lane, offset, heading, inside = self._assign_lanes(road_idx, s, t, href)
+        # Distance to the lane centre: lateral |offset|, plus how far the point lies beyond the road's ends (the
+        # along-track residual after two Newton steps is ~0 wherever the projection falls inside the road).
+        length = self._lengths[road_idx]
         at_end = (s <= 1e-6) | (s >= length - 1e-6)
-        inside &= ~at_end | (distance <= np.abs(offset) + 1e-3)
-        roads = np.array(self.road_ids, dtype=object)[road_idx]
-        return LaneMatch(roads, section, lane, s, t, offset, heading, distance, inside)
-
-    def _centre_xy(self, road_idx: np.ndarray, s: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        x = np.empty_like(s)
-        y = np.empty_like(s)
-        for ri in np.unique(road_idx):
-            m = road_idx == ri
-            xr, yr, hr = self.net.reference(self.road_ids[int(ri)], s[m])
-            x[m] = xr - tc[m] * np.sin(hr)
-            y[m] = yr + tc[m] * np.cos(hr)
-        return x, y
+        overshoot = np.where(at_end & (np.abs(resid) > 1e-6), np.abs(resid), 0.0)
+        distance = np.hypot(offset, overshoot)
+        inside &= overshoot <= 1e-3
+        return LaneMatch(self._road_names[road_idx], section, lane, s, t, offset, heading, distance, inside)
 
     # --- public ----------------------------------------------------------------------------------------------------
 
