@@ -1,9 +1,10 @@
 """Offline judging: read a recording, decode it to contract records, run the same `JudgeSession` the live monitor
 runs, and compare with the verdicts the live monitor recorded (if any).
 
-Works on any bag with the contract topics (ours, or one made with `ros2 bag record`). Messages are decoded with
-rosbags' CDR deserialiser (its classes carry the same field names as rclpy's, which is all `ros_io` reads), only
-for the topics the oracle needs: /clock and /control/command are counted but not decoded.
+Works on any bag with the contract topics (ours, or one made with `ros2 bag record`). Messages are decoded by
+`cdr.decode` (fast paths for Odometry / MarkerArray / DiagnosticArray, rosbags for the rest; both give objects with
+rclpy's field names, which is all `ros_io` reads), only for the topics the oracle needs: /clock and
+/control/command are counted but not decoded. The live node decodes with the same function.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from txt2sce_ros import contract as c
 from txt2sce_ros.errors import InputError
 
 from .bagread import read_bag
+from .cdr import decode
 from .messages import verdicts_in
 from .params import OracleParams
 from .recorder import typestore
@@ -57,7 +59,7 @@ def judge_bag(path: str | Path, params: OracleParams | None = None) -> JudgeResu
         if msg.topic not in wanted:
             continue
         try:
-            decoded = ts.deserialize_cdr(msg.data, msg.msgtype)
+            decoded = decode(msg.data, msg.msgtype, ts)
         except Exception:                 # a damaged message: count it, judge the rest
             decode_errors += 1
             continue

@@ -8,7 +8,7 @@ Parameters:
 - `flush_interval` (double, default 0.5): seconds between flushes of the recording to disk.
 
 Thin adapter: subscriptions take the serialized bytes (`raw=True`), which are recorded unchanged and decoded with
-the same rosbags deserialiser the offline judge uses, then handed to the `JudgeSession` the offline judge uses —
+the same `cdr.decode` the offline judge uses, then handed to the `JudgeSession` the offline judge uses —
 so `txt2sce judge` on the recording reproduces the live verdict. On SIGINT/SIGTERM a run still open is judged as
 incomplete, its verdict recorded and the bag closed (metadata.yaml written); a kill -9 leaves the flushed prefix.
 """
@@ -33,6 +33,7 @@ from txt2sce_ros import contract as c
 from txt2sce_ros.contract import RunStatus
 from txt2sce_ros.errors import Txt2SceError
 
+from .cdr import decode
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .params import OracleParams
 from .recorder import BagRecorder, typestore
@@ -78,7 +79,7 @@ class OracleMonitorNode(Node):
 
     def _on_raw(self, topic: str, data: bytes) -> None:
         try:
-            msg = self.typestore.deserialize_cdr(data, TOPIC_TYPES[topic])
+            msg = decode(data, TOPIC_TYPES[topic], self.typestore)
         except Exception as exc:          # a malformed message must not stop the monitor
             self.get_logger().error(f"undecodable message on {topic}: {exc}")
             return

@@ -17,6 +17,7 @@ from txt2sce_ros import contract as c
 from txt2sce_ros import ros_io
 from txt2sce_ros.contract import ControlCommand, Frame, Goal, RunStatus, ScenarioEnvelope
 
+from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
@@ -33,11 +34,14 @@ class RunWriter:
         self._k = 0
 
     def _w(self, topic: str, msg: object) -> None:
+        self._raw(topic, serialize_message(msg))
+
+    def _raw(self, topic: str, data: bytes) -> None:
         ns = None
         if self._base is not None:
             ns = self._base + self._k * self._dt
             self._k += 1
-        self.rec.write(topic, serialize_message(msg), log_time_ns=ns)
+        self.rec.write(topic, data, log_time_ns=ns)
 
     def begin(self, envelope: ScenarioEnvelope | None, goal: Goal | None, scenario_id: str = "") -> None:
         if envelope is not None:
@@ -48,14 +52,16 @@ class RunWriter:
             self._w(c.TOPIC_GOAL, ros_io.goal_to_pose(goal))
 
     def frame(self, frame: Frame, command: ControlCommand | None = None) -> None:
-        self._w(c.TOPIC_CLOCK, ros_io.clock_msg(frame.t))
-        self._w(c.TOPIC_TRAFFIC_LIGHTS, ros_io.lights_to_diagnostics(frame.lights, frame.t))
+        # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation).
+        raw = self._raw
+        raw(c.TOPIC_CLOCK, cdr.encode_clock(frame.t))
+        raw(c.TOPIC_TRAFFIC_LIGHTS, cdr.encode_lights(frame.lights, frame.t))
         for obj in frame.objects:
-            self._w(c.TOPIC_OBJECTS_ODOM, ros_io.entity_to_odometry(obj))
-        self._w(c.TOPIC_OBJECTS_MARKERS, ros_io.frame_to_markers(frame))
-        self._w(c.TOPIC_EGO_ODOM, ros_io.entity_to_odometry(frame.ego))
+            raw(c.TOPIC_OBJECTS_ODOM, cdr.encode_odometry(obj))
+        raw(c.TOPIC_OBJECTS_MARKERS, cdr.encode_markers(frame))
+        raw(c.TOPIC_EGO_ODOM, cdr.encode_odometry(frame.ego))
         if command is not None:
-            self._w(c.TOPIC_COMMAND, ros_io.command_to_twist(command))
+            raw(c.TOPIC_COMMAND, cdr.encode_command(command))
 
     def violations(self, t: float, violations: Iterable[Violation]) -> None:
         vs = list(violations)

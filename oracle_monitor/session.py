@@ -72,7 +72,12 @@ class JudgeSession:
     # --- dispatch ------------------------------------------------------------------------------------------------
 
     def on_message(self, topic: str, msg: Any) -> None:
-        if topic == c.TOPIC_EGO_ODOM or topic == c.TOPIC_OBJECTS_ODOM:
+        if topic == c.TOPIC_EGO_ODOM:
+            # The ego is whoever /sim/ego/odom names (a scenario's own "Ego", "hero", ...), not a fixed name.
+            if msg.child_frame_id != self.assembler.ego_name:
+                self.assembler.ego_name = msg.child_frame_id
+            self._frame(self.assembler.add_odometry(msg))
+        elif topic == c.TOPIC_OBJECTS_ODOM:
             self._frame(self.assembler.add_odometry(msg))
         elif topic == c.TOPIC_OBJECTS_MARKERS:
             self._frame(self.assembler.add_markers(msg))

@@ -1,0 +1,128 @@
+"""`txt2sce bench judge`: offline judging throughput and the cost of recording a lock-step run.
+
+Inputs are real closed-loop runs: esmini's `traffic_lights` and `pedestrian_collision` examples played by the
+scenario player against the stand-in planner (in-process, lock-step, dt 0.05 s).
+
+1. Offline judging (`judge_bag`: read + decode + assemble frames + oracle + verdict) in bag messages per second
+   (goal >= 50k/s), beside decoding alone (rosbags CDR deserialisation of every message of the same bag) as the
+   baseline measured in the same run.
+2. Recording overhead: the lock-step loop (player step + planner step + oracle) with and without `RunWriter`
+   recording every message the graph would publish (goal <= 10 %). Best of several repeats for both.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+from ..paths import shared_dir
+
+DESCRIPTION = "offline judging messages/s vs decoding alone; recording overhead on a lock-step run"
+
+SCENARIOS = ("traffic_lights", "pedestrian_collision")
+
+
+def _xosc(name: str) -> Path:
+    return shared_dir() / "data" / "conformance" / "esmini" / "xosc" / f"{name}.xosc"
+
+
+def _lockstep(name: str, writer: Any | None) -> tuple[float, int, Any]:
+    """One closed-loop run; returns (wall seconds of the loop, steps, verdict)."""
+    from oracle_monitor import Oracle, OracleParams
+    from scenario_player import Simulation, SimulationConfig, load_scenario
+    from standin_planner import Faults, Planner, PlannerParams
+    from txt2sce_ros.contract import ScenarioEnvelope
+
+    path = _xosc(name)
+    sim = Simulation(load_scenario(str(path)), SimulationConfig(ego_mode="planner", seed=0))
+    frame = sim.reset()
+    planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults())
+    oracle = Oracle(sim.network, sim.goal, OracleParams.from_config(), scenario_id=name)
+    env = ScenarioEnvelope(id=name, xosc=path.read_text(), map_path="")
+    steps = 0
+    t0 = time.perf_counter()
+    if writer is not None:
+        writer.begin(env, sim.goal)
+    new = oracle.observe(frame)
+    while not sim.done:
+        cmd = planner.step(frame)
+        if writer is not None:
+            writer.frame(frame, cmd)
+            writer.violations(frame.t, new)
+        frame = sim.step(cmd)
+        new = oracle.observe(frame)
+        steps += 1
+    verdict = oracle.finish(sim.status)
+    if writer is not None:
+        writer.frame(frame)
+        writer.violations(frame.t, new)
+        writer.end(sim.status, verdict)
+    return time.perf_counter() - t0, steps, verdict
+
+
+def run(args: argparse.Namespace) -> int:
+    from oracle_monitor.bagread import read_bag
+    from oracle_monitor.judge import judge_bag
+    from oracle_monitor.recorder import typestore
+    from oracle_monitor.runwriter import RunWriter
+
+    repeats = 2 if args.quick else 4
+    copies = 2 if args.quick else 6
+    tmp = Path(tempfile.mkdtemp(prefix="txt2sce_bench_judge_"))
+    try:
+        # --- 2. recording overhead (measured first: it also produces the runs) --------------------------------
+        print("recording overhead on lock-step runs (player + planner + oracle, in-process), best of "
+              f"{repeats}:")
+        total_plain = total_rec = 0.0
+        for name in SCENARIOS:
+            plain = min(_lockstep(name, None)[0] for _ in range(repeats))
+            recs = []
+            for k in range(repeats):
+                with RunWriter(tmp / f"rec_{name}_{k}") as w:
+                    wall, steps, verdict = _lockstep(name, w)
+                recs.append(wall)
+            rec = min(recs)
+            total_plain += plain
+            total_rec += rec
+            print(f"  {name:<22} {steps:5d} steps  plain {plain * 1000:8.1f} ms  recording {rec * 1000:8.1f} ms  "
+                  f"overhead {100 * (rec / plain - 1):+6.1f} %   verdict: {verdict.summary()}")
+        print(f"  total overhead {100 * (total_rec / total_plain - 1):+.1f} %  (goal <= 10 %)")
+
+        # --- 1. offline judging throughput --------------------------------------------------------------------
+        bag = tmp / "judge_input"
+        with RunWriter(bag) as w:
+            for _ in range(copies):
+                for name in SCENARIOS:
+                    _lockstep(name, w)
+        ts = typestore()
+        n_msgs = sum(1 for _ in read_bag(bag).messages())
+
+        def decode_all() -> None:
+            for m in read_bag(bag).messages():
+                ts.deserialize_cdr(m.data, m.msgtype)
+
+        def judge_all() -> None:
+            judge_bag(bag)
+
+        timings = {}
+        for label, fn in (("decode only", decode_all), ("judge", judge_all)):
+            best = float("inf")
+            for _ in range(repeats):
+                t0 = time.perf_counter()
+                fn()
+                best = min(best, time.perf_counter() - t0)
+            timings[label] = best
+        result = judge_bag(bag)
+        print(f"offline judging of {n_msgs} messages ({len(result.verdicts)} runs, "
+              f"{sum(v.frames for v in result.verdicts)} frames), best of {repeats}:")
+        for label, best in timings.items():
+            print(f"  {label:<12} {n_msgs / best:10,.0f} msg/s  ({best * 1000:.0f} ms)")
+        print(f"  judge / decode-only throughput: {timings['decode only'] / timings['judge']:.2f}  "
+              f"(goal >= 50,000 msg/s)")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return 0
