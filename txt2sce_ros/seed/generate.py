@@ -129,8 +129,11 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     if target and any(a.name == target for a in actors):
         gap, when = predicted_gap(actors, target, D.timing.time_limit)
         choices["predicted"] = {"party": target, "min_gap_m": round(gap, 2), "at_s": round(when, 2)}
+    # entities in the sketch's order (ego, npc1…, obs1…): stable names and positions for the tree's blocks
+    rank = {name: k for k, name in enumerate(["ego"] + [n.id for n in sketch.npcs] + [o.id for o in sketch.obstacles])}
+    ordered = sorted(actors, key=lambda a: rank.get(a.name, len(rank)))
     plan = ScenarioPlan(
-        report_id=sketch.report_id, map_ref=ref, entities=tuple(a.freeze() for a in actors),
+        report_id=sketch.report_id, map_ref=ref, entities=tuple(a.freeze() for a in ordered),
         environment=environment_plan(sketch, D), goal=planner.goal, goal_tolerance=D.timing.goal_tolerance,
         time_limit=D.timing.time_limit, signals=signals, choices=choices)
     xosc = write_xosc(plan, performance=(D.max_acceleration, D.max_deceleration, D.max_speed))
@@ -139,6 +142,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
         raise InputError(f"generated seed is not XSD-valid: {errors[0]}", source=sketch.report_id, element="xosc")
     manifest = {
         "report_id": sketch.report_id, "seed": int(seed), "map": map_path.name, "map_ref": ref,
+        "fidelity_target": target,
         "road_match": match.site.describe(), "choices": _jsonable(choices),
         "entities": [{"name": e.name, "category": e.category, "kind": e.kind, "speed": e.speed,
                       "events": [{"name": ev.name, "trigger": ev.trigger.kind, "value": ev.trigger.value,

@@ -270,6 +270,12 @@ def write_xosc(plan: ScenarioPlan, *, db: EntityDB | None = None,
         if e.route is not None:
             _private_action(x, pr, e.route, e.name)
     stories = [e for e in plan.entities if e.events]
+    if not stories:
+        # OpenSCENARIO needs at least one Story: a scene where nobody moves holds the AV's standstill explicitly
+        ego = plan.entity("ego")
+        hold = EventPlan("ego_e0_hold", "", (SpeedAct(ego.speed, "step", "time", 0.0),), Trigger("time", 0.0), 0.0)
+        stories = [EntityPlan(ego.name, ego.kind, ego.category, ego.xosc_category, ego.dimensions, ego.start,
+                              ego.speed, (hold,), ego.route, ego.external)]
     for e in stories:
         _story(x, sb, e)
     stop = x.el(sb, "StopTrigger", xsd_type="Trigger")
