@@ -77,3 +77,13 @@ def test_partial_path_and_bad_sequences(esmini_dir) -> None:
     assert back.position(0.0)[0] == pytest.approx(net.lane_to_world("1", 1, 150.0)[0])
     with pytest.raises(InputError, match="does not follow"):
         LanePath.from_lanes(esmini_map("fabriksgatan"), [LaneRef("0", 0, 1), LaneRef("3", 0, 1)])
+
+
+def test_zero_length_and_backward_paths(esmini_dir) -> None:
+    net = esmini_map("straight_500m")
+    p = LanePath.from_lanes(net, [LaneRef("1", 0, -1)], s_start=100.0, s_end=100.0)
+    assert p.length == pytest.approx(0.0, abs=1e-6)
+    assert p.position(5.0)[:2] == pytest.approx(net.lane_to_world("1", -1, 100.0)[:2])
+    assert p.lane_at(0.0)[0] == LaneRef("1", 0, -1)
+    with pytest.raises(InputError, match="behind its start"):
+        LanePath.from_lanes(net, [LaneRef("1", 0, -1)], s_start=150.0, s_end=100.0)

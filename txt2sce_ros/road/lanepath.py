@@ -90,6 +90,9 @@ class LanePath:
                 a = float(np.clip(s_start, lo, hi))
             if i == len(lanes) - 1 and s_end is not None:
                 b = float(np.clip(s_end, lo, hi))
+            if (b - a) * (1.0 if forward else -1.0) < -1e-3:
+                raise InputError(f"path end s={b:.3f} lies behind its start s={a:.3f} in the driving direction of "
+                                 f"lane {ref}", source=net.source, element="lane")
             n = max(2, int(np.ceil(abs(b - a) / PATH_DS)) + 1)
             rs = np.linspace(a, b, n)
             # Evaluate strictly inside the section so a boundary s picks this section's lanes.
@@ -116,6 +119,12 @@ class LanePath:
         samples[:, 3] = np.unwrap(samples[:, 3])
         # Guard against repeated s (a zero-length lane): interpolation needs strictly increasing s.
         keep = np.concatenate(([True], np.diff(samples[:, 0]) > 1e-9))
+        if keep.sum() < 2:
+            # A zero-length path (start == end) is legal: give it two coincident samples 1 nm apart.
+            samples = np.vstack([samples[:1], samples[:1] + [1e-9, 0.0, 0.0, 0.0]])
+            keep = np.array([True, True])
+            road_s_all = [np.repeat(road_s_all[0][:1], 2)]
+            piece_idx = [np.repeat(piece_idx[0][:1], 2)]
         return cls(net, pieces, samples[keep], np.concatenate(piece_idx)[keep], np.concatenate(road_s_all)[keep])
 
     # --- queries ---------------------------------------------------------------------------------------------------
