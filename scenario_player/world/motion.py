@@ -25,12 +25,13 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2.0 * math.pi) - math.pi
 
 
-def _next_track(world: "World", ent: "Entity", track: "LaneTrack", backward: bool = False) -> "LaneTrack | None":
+def _next_track(world: "World", route_lanes: set, track: "LaneTrack", backward: bool = False
+                ) -> "LaneTrack | None":
     refs = world.tracks.predecessors(track.ref) if backward else world.tracks.successors(track.ref)
     if not refs:
         return None
-    if len(refs) > 1 and ent.route_lanes:
-        on_route = [r for r in refs if r in ent.route_lanes]
+    if len(refs) > 1 and route_lanes:
+        on_route = [r for r in refs if r in route_lanes]
         if on_route:
             refs = on_route
     if len(refs) == 1:
@@ -50,25 +51,33 @@ def _next_track(world: "World", ent: "Entity", track: "LaneTrack", backward: boo
     return best
 
 
-def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
-    """Advance `dist` along the lane's driving direction (negative: against it, through predecessors); False when
-    the lane network ends (the entity stays at the end)."""
-    track = ent.track
-    assert track is not None
-    s, left = track.travel(ent.s, dist)
-    ok = True
-    guard = 0
+def lane_walk(world: "World", track: "LaneTrack", s: float, dist: float, route_lanes: set | None = None
+              ) -> tuple["LaneTrack", float, bool, int]:
+    """Go `dist` along the driving direction from road s (negative: against it, through predecessors).
+    Returns (track, s, completed, direction flips) — flips: how often +t reversed relative to travel."""
+    s, left = track.travel(s, dist)
     backward = dist < 0
-    while left > 1e-12 and guard < 20:
+    flips = 0
+    guard = 0
+    while left > 1e-12 and guard < 50:
         guard += 1
-        nxt = _next_track(world, ent, track, backward)
+        nxt = _next_track(world, route_lanes or set(), track, backward)
         if nxt is None:
-            ok = False
-            break
+            return track, s, False, flips
         if nxt.forward != track.forward:
-            ent.offset = -ent.offset        # +t of the next road points the other way relative to travel
+            flips += 1
         track = nxt
         s, left = (track.travel(track.exit_s(), -left) if backward else track.travel(track.entry_s(), left))
+    return track, s, True, flips
+
+
+def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
+    """Advance `dist` along the lane's driving direction (negative: against it); False when the lane network
+    ends (the entity stays at the end)."""
+    assert ent.track is not None
+    track, s, ok, flips = lane_walk(world, ent.track, ent.s, dist, ent.route_lanes)
+    if flips % 2:
+        ent.offset = -ent.offset        # +t of the new road points the other way relative to travel
     ent.track, ent.s = track, s
     return ok
 

@@ -137,15 +137,19 @@ class World:
             forward = self.net.lane_forward(road_id, lane_id, s0)
         else:
             raise InputError(f"entity '{name}' is not on a lane", source=self.source, element="RelativeLanePosition")
-        # dLane counts toward +t of the road (lane ids grow to the left), skipping the centre lane 0.
-        target = lane_id + d_lane
-        if lane_id < 0 < target or target == 0 and d_lane > 0:
-            target += 1
-        elif lane_id > 0 > target or target == 0 and d_lane < 0:
-            target -= 1
-        # ds is along the reference entity's driving direction.
-        s = s0 + (ds if forward else -ds)
-        return self.lane_pose(road_id, target, s, offset, orientation)
+        # ds runs along the reference entity's lane (through the lanes that follow it), dLane counts lanes to the
+        # left (+) in that lane's driving direction, skipping the centre lane 0.
+        from .motion import lane_walk
+
+        track = self.tracks.at(road_id, lane_id, s0)
+        along = abs(_wrap(track.pose(s0)[2] - ent.h)) <= math.pi / 2      # entity drives with the lane
+        track, s, _, _ = lane_walk(self, track, s0, ds if along else -ds, ent.route_lanes)
+        lane = track.ref.lane_id
+        step = d_lane if track.forward else -d_lane
+        target = lane + step
+        if lane < 0 <= target or lane > 0 >= target:
+            target += 1 if step > 0 else -1
+        return self.lane_pose(track.ref.road_id, target, s, offset, orientation)
 
     def route_pose(self, rp: Any) -> Pose:
         path, refs = self.route_path(rp.route)
