@@ -70,9 +70,12 @@ class _Ctx:
                 raise self.error(el, f"missing attribute {name!r}")
             return default
         try:
-            return int(float(raw)) if float(raw).is_integer() else _bad_int()
+            value = float(raw)      # OpenDRIVE writers emit ids like "-1.0"; accept them when integral
         except ValueError:
-            raise self.error(el, f"attribute {name}={raw!r} is not an integer") from None
+            value = math.nan
+        if not math.isfinite(value) or not value.is_integer():
+            raise self.error(el, f"attribute {name}={raw!r} is not an integer")
+        return int(value)
 
     def text(self, el: etree._Element, name: str, default: str | None = None) -> str:
         raw = el.get(name)
@@ -81,10 +84,6 @@ class _Ctx:
                 raise self.error(el, f"missing attribute {name!r}")
             return default
         return raw.strip()
-
-
-def _bad_int() -> int:
-    raise ValueError("not integral")
 
 
 def _children(el: etree._Element, name: str) -> list[etree._Element]:
