@@ -136,53 +136,104 @@ class SpeedProfileAction:
 
 
 class SpeedProfileRun(ActionRun):
+    """Speed over time from the entries. 'position': straight lines through the entries. 'follow': the same lines,
+    each corner rounded by a constant-jerk transition (maxAccelerationRate / maxDecelerationRate) that leaves one
+    line and lands tangentially on the next, so the speed follows the entries' slopes with bounded jerk (the
+    scheme esmini uses). Times are local: 0 when the action starts."""
+
     domains = frozenset({LONGITUDINAL})
 
     def __init__(self, ent: "Entity", spec: SpeedProfileAction) -> None:
         super().__init__(ent)
         self.spec = spec
-        times, speeds = [0.0], [ent.speed]
         acc = ent.spec.max_accel if spec.max_accel is None else spec.max_accel
         dec = ent.spec.max_decel if spec.max_decel is None else spec.max_decel
-        for dur, v in spec.entries:
-            if dur is None:   # no time: reach it at the limit acceleration
+        entries = list(spec.entries)
+        follow = spec.following_mode != "position"
+        times, speeds = [0.0], [ent.speed]
+        if entries and entries[0][0] is not None and abs(entries[0][0]) < 1e-9:
+            if follow:
+                entries = entries[1:]          # the profile starts from the current speed
+            else:
+                speeds = [entries[0][1]]
+                entries = entries[1:]
+        t = 0.0
+        for dur, v in entries:
+            if dur is None:                    # no time: reach it at the limit acceleration
                 dv = v - speeds[-1]
-                dur = abs(dv) / (acc if dv > 0 else dec) if (acc if dv > 0 else dec) > 0 else 0.0
-            times.append(times[-1] + max(dur, 0.0))
+                lim = acc if dv > 0 else dec
+                dur = abs(dv) / lim if lim > 0 else 0.0
+            t += max(dur, 0.0)
+            if t - times[-1] < 1e-9:
+                speeds[-1] = v                 # zero duration: replaces the previous point
+                continue
+            times.append(t)
             speeds.append(v)
         self.times, self.speeds = times, speeds
+        self.segments = self._follow_segments(acc, dec) if follow and len(times) > 1 else None
         self.elapsed = 0.0
-        self.acc = 0.0
+
+    def _follow_segments(self, acc: float, dec: float) -> list[tuple[float, float, float, float]]:
+        sp = self.spec
+        j_up = sp.max_accel_rate if sp.max_accel_rate else 1e3
+        j_dn = sp.max_decel_rate if sp.max_decel_rate else 1e3
+        ts, vs = self.times, self.speeds
+        slopes = [(vs[i + 1] - vs[i]) / (ts[i + 1] - ts[i]) for i in range(len(ts) - 1)] + [0.0]
+        intercepts = [vs[i] - slopes[i] * ts[i] for i in range(len(ts))]
+        segs: list[tuple[float, float, float, float]] = []      # (t start, v start, slope, jerk)
+        k_prev = self.entity.accel if abs(self.entity.accel) < 50 else 0.0
+        # First: jerk from the current acceleration onto the first slope, then that slope (a parallel line).
+        k1 = slopes[0]
+        j = j_up if k1 >= k_prev else -j_dn
+        tau = (k1 - k_prev) / j if abs(j) > 0 else 0.0
+        segs.append((0.0, vs[0], k_prev, j))
+        t3 = tau
+        v3 = vs[0] + k_prev * tau + 0.5 * j * tau * tau
+        segs.append((t3, v3, k1, 0.0))
+        k0, m0 = k1, v3 - k1 * t3
+        for i in range(1, len(ts)):
+            k1, m1 = slopes[i], intercepts[i]
+            if abs(k1 - k0) < 1e-9:
+                continue
+            j = j_up if k1 > k0 else -j_dn
+            # Leave line 0 at t1 so that the jerk arc lands on line 1 with its slope.
+            t1 = ((k1 - k0) ** 2 / (2 * j) + (m1 - m0)) / (k0 - k1)
+            t1 = max(t1, segs[-1][0])
+            v1 = k0 * t1 + m0
+            tau = (k1 - k0) / j
+            segs.append((t1, v1, k0, j))
+            t3 = t1 + tau
+            v3 = v1 + k0 * tau + 0.5 * j * tau * tau
+            segs.append((t3, v3, k1, 0.0))
+            k0, m0 = k1, v3 - k1 * t3
+        return segs
 
     def _profile(self, t: float) -> float:
+        if self.segments is not None:
+            seg = self.segments[0]
+            for cand in self.segments:
+                if cand[0] <= t + 1e-9:
+                    seg = cand
+                else:
+                    break
+            dt = t - seg[0]
+            return seg[1] + seg[2] * dt + 0.5 * seg[3] * dt * dt
         ts, vs = self.times, self.speeds
         if t >= ts[-1]:
             return vs[-1]
         for i in range(len(ts) - 1):
             if ts[i] <= t < ts[i + 1]:
-                span = ts[i + 1] - ts[i]
-                return vs[i + 1] if span <= 0 else vs[i] + (vs[i + 1] - vs[i]) * (t - ts[i]) / span
+                return vs[i] + (vs[i + 1] - vs[i]) * (t - ts[i]) / (ts[i + 1] - ts[i])
         return vs[-1]
 
     def step(self, world: "World", dt: float) -> None:
         ent, sp = self.entity, self.spec
         self.elapsed += dt
-        target = self._profile(self.elapsed)
-        if sp.following_mode == "position":
-            ent.speed = target
-        else:
-            acc_lim = sp.max_accel if sp.max_accel is not None else ent.spec.max_accel
-            dec_lim = sp.max_decel if sp.max_decel is not None else ent.spec.max_decel
-            want = (target - ent.speed) / dt
-            want = min(max(want, -dec_lim), acc_lim)
-            jerk_up = sp.max_accel_rate if sp.max_accel_rate else math.inf
-            jerk_dn = sp.max_decel_rate if sp.max_decel_rate else math.inf
-            want = min(max(want, self.acc - jerk_dn * dt), self.acc + jerk_up * dt)
-            self.acc = want
-            ent.speed += want * dt
+        ent.speed = self._profile(self.elapsed)
         if sp.max_speed is not None:
             ent.speed = min(ent.speed, sp.max_speed)
-        if self.elapsed >= self.times[-1] - 1e-9 and abs(ent.speed - self.speeds[-1]) < 1e-3:
+        last = self.segments[-1][0] if self.segments else self.times[-1]
+        if self.elapsed >= max(last, self.times[-1]) - 1e-9:
             ent.speed = self.speeds[-1]
             self.done = True
 
