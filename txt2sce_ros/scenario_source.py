@@ -52,20 +52,34 @@ def envelope_for(path: Path, *, scenario_id: str | None = None, parent: str | No
                             meta={"file": str(path)})
 
 
+def _from_manifest(d: Path, data: dict) -> Iterator[tuple[Path, str, str | None, str | None]]:
+    if "nodes" in data:  # a scenario tree: nodes with their parents
+        tree = str(data.get("tree") or data.get("id") or d.name)
+        for node in data["nodes"]:
+            if node.get("file"):
+                yield d / node["file"], str(node.get("id", Path(node["file"]).stem)), node.get("parent"), tree
+    else:  # a seed directory: built seeds
+        for entry in data.get("built", []):
+            yield d / entry["file"], str(entry.get("report_id", Path(entry["file"]).stem)), None, None
+
+
 def iter_scenario_files(inputs: list[str | Path]) -> Iterator[tuple[Path, str, str | None, str | None]]:
-    """(file, id, parent, tree) for every scenario the inputs name, in a stable order."""
+    """(file, id, parent, tree) for every scenario the inputs name, in a stable order: tree and seed directories
+    through their manifest.json, a directory of such directories one by one, other directories by their .xosc
+    files (recursively), files as given."""
     for item in inputs:
         p = Path(item)
-        manifest = p / "manifest.json" if p.is_dir() else None
-        if manifest is not None and manifest.is_file():
-            data = json.loads(manifest.read_text())
-            tree = data.get("tree") or data.get("id") or p.name
-            for node in data.get("nodes", []):
-                if node.get("file"):
-                    yield p / node["file"], str(node.get("id", Path(node["file"]).stem)), node.get("parent"), tree
+        manifest = p / "manifest.json"
+        if p.is_dir() and manifest.is_file():
+            yield from _from_manifest(p, json.loads(manifest.read_text(encoding="utf-8")))
         elif p.is_dir():
-            for f in sorted(p.rglob("*.xosc")):
-                yield f, f.stem, None, None
+            subdirs = sorted(c for c in p.iterdir() if (c / "manifest.json").is_file())
+            if subdirs:
+                for c in subdirs:
+                    yield from _from_manifest(c, json.loads((c / "manifest.json").read_text(encoding="utf-8")))
+            else:
+                for f in sorted(p.rglob("*.xosc")):
+                    yield f, f.stem, None, None
         elif p.is_file():
             yield p, p.stem, None, None
         else:
