@@ -1,8 +1,9 @@
 """SynchronizeAction: the actor arrives at its target position when the master arrives at its own, with a final
 speed (absolute, or relative to the master's; optionally reached a steady-state distance/time before).
 
-Each step the actor's speed is set so that a linear ramp from it to the final speed covers the remaining distance
-in the master's remaining time; re-planning every step makes this converge. Remaining distances are measured
+Each step the actor re-plans a two-phase profile — constant acceleration a, then −a until the final speed — that
+covers the remaining distance in the master's remaining time, and applies its first dt (without a final speed the
+required mean speed is taken at once). Remaining distances are measured
 along the lanes once at start and then decreased by the distance actually travelled (odometer), so junctions and
 curves are handled without projecting every step.
 """
@@ -132,6 +133,35 @@ class SynchronizeRun(ActionRun):
         if vf is None:
             ent.speed = da / t_left
         else:
-            # Linear ramp v -> vf over t_left covering da: start speed v = 2·da/t_left − vf.
-            ent.speed = max(0.0, 2.0 * da / t_left - vf)
+            a = _two_phase_accel(ent.speed, vf, t_left, da)
+            t1 = 0.5 * (t_left + (vf - ent.speed) / a) if abs(a) > 1e-9 else t_left
+            t1 = min(max(t1, 0.0), t_left)
+            ent.speed = max(0.0, ent.speed + a * min(dt, t1) - a * max(0.0, dt - t1))
         ent.speed = min(ent.speed, ent.spec.max_speed)
+
+
+def _two_phase_accel(v0: float, vf: float, T: float, D: float) -> float:
+    """Acceleration a of the profile 'a for t1, then −a for T − t1' from v0 to vf covering D in T."""
+    d_lin = 0.5 * (v0 + vf) * T
+    if abs(D - d_lin) < 1e-9:
+        return (vf - v0) / T if T > 0 else 0.0
+    sign = 1.0 if D > d_lin else -1.0
+
+    def dist(mag: float) -> float:
+        a = sign * mag
+        t1 = 0.5 * (T + (vf - v0) / a)
+        t2 = T - t1
+        vp = v0 + a * t1
+        return 0.5 * (v0 + vp) * t1 + 0.5 * (vp + vf) * t2
+
+    lo = abs(vf - v0) / T + 1e-9         # below this the two phases cannot meet vf in time
+    hi = max(lo * 2.0, 1.0)
+    while (dist(hi) - D) * sign < 0 and hi < 1e4:
+        hi *= 2.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if (dist(mid) - D) * sign < 0:
+            lo = mid
+        else:
+            hi = mid
+    return sign * 0.5 * (lo + hi)
