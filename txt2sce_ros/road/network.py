@@ -7,6 +7,7 @@ positive ones do (an OpenDRIVE 1.7 lane `direction="reversed"` flips that).
 
 from __future__ import annotations
 
+import bisect
 import math
 import os
 import threading
@@ -41,6 +42,8 @@ class RoadNetwork:
         self.junctions: dict[str, Junction] = parsed.junctions
         self.controllers: dict[str, Controller] = parsed.controllers
         self._section_starts = {rid: np.array([sec.s for sec in r.sections]) for rid, r in self.roads.items()}
+        self._section_start_lists = {rid: [sec.s for sec in r.sections] for rid, r in self.roads.items()}
+        self._topology_cache: dict[str, dict] = {}     # filled lazily by `topology` (successors, lane lengths)
         self.signals: dict[str, Signal] = self._place_signals()
         self._index_lock = threading.Lock()
         self._indices: dict[tuple[str, ...], "LaneIndex"] = {}
@@ -71,8 +74,9 @@ class RoadNetwork:
             raise InputError(f"no road with id {road_id!r}", source=self.source, element="road") from None
 
     def section_index(self, road_id: str | int, s: float) -> int:
-        starts = self._section_starts[self.road(road_id).id]
-        return int(max(0, np.searchsorted(starts, s + 1e-9, side="right") - 1))
+        # s exactly on a boundary (to 1e-9) belongs to the section starting there
+        starts = self._section_start_lists[self.road(road_id).id]
+        return max(0, bisect.bisect_right(starts, s + 1e-9) - 1)
 
     def section(self, road_id: str | int, s: float) -> LaneSection:
         road = self.road(road_id)

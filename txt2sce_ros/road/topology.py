@@ -33,11 +33,7 @@ UTURN_MIN_DEG = 150.0
 
 
 def _cache(net: "RoadNetwork") -> dict:
-    cache = net.__dict__.get("_topology_cache")
-    if cache is None:
-        cache = {}
-        net.__dict__["_topology_cache"] = cache
-    return cache
+    return net._topology_cache
 
 
 def _all_refs(net: "RoadNetwork") -> list[LaneRef]:
