@@ -45,24 +45,29 @@ _LANE_SIDE = re.compile(r"\b(?:left|right)most\b|\bfar\s+(?:left|right)\s+lane\b
                         r"\bthe\s+(?:left|right)\s+lane\b", re.I)
 _OPPOSING_LANE = re.compile(r"\b(?:oncoming|opposing|opposite)\s+(?:\w+\s+)?lane", re.I)
 
-_WEATHER = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
+_WEATHER_P = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
             ("snow", r"\bsnow(?:ing|y)?\b|\bsleet\b"), ("cloudy", r"\bcloudy\b|\bovercast\b"),
             ("clear", r"\bsunny\b|\bclear\s+(?:weather|skies|day|conditions)\b|\bweather:?\s+clear\b|"
                       r"\bweather\s+was\s+clear\b"))
-_SURFACE = (("wet", r"\bwet\b|\bslick\b|\bpuddl"), ("snow_ice", r"\bic(?:y|e)\b|\bsnow[- ]covered\b"),
+_SURFACE_P = (("wet", r"\bwet\b|\bslick\b|\bpuddl"), ("snow_ice", r"\bic(?:y|e)\b|\bsnow[- ]covered\b"),
             ("dry", r"\bdry\s+(?:road|pavement|surface|roadway)\b|\bsurface:?\s+dry\b"))
+_WEATHER = tuple((w, re.compile(p, re.I)) for w, p in _WEATHER_P)
+_SURFACE = tuple((w, re.compile(p, re.I)) for w, p in _SURFACE_P)
 _CLOCK = re.compile(r"\b(\d{1,2})(?::(\d{2}))?\s*(a\.?m\.?|p\.?m\.?)(?![a-z])", re.I)
 
 
+_LIGHT = (("dusk_dawn", re.compile(r"\b(?:dusk|dawn|twilight|sunset|sunrise)\b", re.I)),
+          ("day", re.compile(r"\b(?:daylight|daytime|sunny\s+day)\b", re.I)),
+          ("night_dark", re.compile(r"\bdark\b[^.]{0,30}\b(?:no|without)\s+street\s*lights?|\bunlit\b|"
+                                    r"\bpitch\s+dark", re.I)),
+          ("night_lit", re.compile(r"\bstreet\s*lights?\b|\bdark\b|\bnight(?:time)?\b", re.I)))
+
+
 def lighting_from_text(t: str) -> str:
-    if re.search(r"\b(?:dusk|dawn|twilight|sunset|sunrise)\b", t, re.I):
-        return "dusk_dawn"
-    if re.search(r"\b(?:daylight|daytime|sunny\s+day)\b", t, re.I):
-        return "day"
-    if re.search(r"\bdark\b[^.]{0,30}\b(?:no|without)\s+street\s*lights?|\bunlit\b|\bpitch\s+dark", t, re.I):
-        return "night_dark"
-    if re.search(r"\bstreet\s*lights?\b|\bdark\b|\bnight(?:time)?\b", t, re.I):
-        return "night_lit"
+    """Lighting as sketch.md reads it: words for the light first, else a clock time 8:00 AM-4:59 PM is day."""
+    for value, rx in _LIGHT:
+        if rx.search(t):
+            return value
     m = _CLOCK.search(t)
     if m:
         hour = int(m.group(1)) % 12 + (12 if m.group(3).lower().startswith("p") else 0)
@@ -72,8 +77,8 @@ def lighting_from_text(t: str) -> str:
 
 
 def environment(t: str) -> Environment:
-    weather = next((w for w, p in _WEATHER if re.search(p, t, re.I)), "unknown")
-    surface = next((w for w, p in _SURFACE if re.search(p, t, re.I)), "unknown")
+    weather = next((w for w, rx in _WEATHER if rx.search(t)), "unknown")
+    surface = next((w for w, rx in _SURFACE if rx.search(t)), "unknown")
     if weather == "rain" and surface == "unknown":
         surface = "wet"
     return Environment(weather=weather, lighting=lighting_from_text(t), surface=surface)  # type: ignore[arg-type]

@@ -1,0 +1,52 @@
+"""`txt2sce eval-extract --gold FILE [--pred FILE | --input FILE]`: Table IV and the extra slots, with counts and
+the worst slots' confusions; `--form-labels FILE` adds agreement with the company-filed labels."""
+
+from __future__ import annotations
+
+import argparse
+
+HELP = "measure extraction against gold sketches (paper's Table IV) and/or company form labels"
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--gold", help="gold sketches (JSONL), e.g. ../shared/data/reports/dev_gold.jsonl")
+    src = parser.add_mutually_exclusive_group(required=True)
+    src.add_argument("--pred", help="predicted sketches (JSONL written by `txt2sce extract`)")
+    src.add_argument("--input", help="reports to extract now (JSONL {id, text}, .txt, dir, PDF)")
+    parser.add_argument("--form-labels", help="company-filed labels (dev_form_labels.jsonl): agreement, separately")
+    parser.add_argument("--worst", type=int, default=4, help="slots in the confusion listing (default 4)")
+    parser.add_argument("--check-targets", action="store_true",
+                        help="exit 1 when a slot with a target (issue 3) falls below it")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..errors import InputError
+    from ..sketch import Sketch, load_sketches
+    from ..text.evaluate import TARGETS, evaluate, format_table
+    from ..text.forms import form_agreement, format_agreement, load_form_labels
+
+    if not args.gold and not args.form_labels:
+        raise InputError("give --gold and/or --form-labels", element="--gold")
+    if args.pred:
+        preds = {s.report_id: s for s in load_sketches(args.pred) if isinstance(s, Sketch)}
+    else:
+        from ..text.pipeline import run_batch
+        from ..text.readers import iter_inputs
+
+        preds = {s.report_id: s for s in run_batch(iter_inputs([args.input])) if isinstance(s, Sketch)}
+    status = 0
+    if args.gold:
+        gold = []
+        for g in load_sketches(args.gold):
+            if not isinstance(g, Sketch):
+                raise InputError(f"bad gold line: {g.error}", source=args.gold)
+            gold.append(g)
+        ev = evaluate(gold, preds)
+        print(format_table(ev, worst=args.worst))
+        if args.check_targets and any(ev.accuracy(k) < v for k, v in TARGETS.items()):
+            status = 1
+    if args.form_labels:
+        if args.gold:
+            print()
+        print(format_agreement(form_agreement(load_form_labels(args.form_labels), preds)))
+    return status

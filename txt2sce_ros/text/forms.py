@@ -1,0 +1,170 @@
+"""The structured fields companies file beside the narrative (OL 316 check boxes, NHTSA SGO fields).
+
+Two uses: an OL 316 PDF's boxes fill sketch fields the narrative leaves `unknown` (sketch.md allows it for
+environment), and `txt2sce eval-extract --form-labels` reports how often the extractor agrees with the filed labels.
+The companies fill these inconsistently (a rear-end marked head-on), so agreement is a noisy second opinion, never
+accuracy.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from ..sketch import Environment, Sketch
+from .pdf import FormFields
+
+WEATHER = {"clear": "clear", "cloudy": "cloudy", "raining": "rain", "rain": "rain", "snowing": "snow",
+           "snow": "snow", "fog/visibility": "fog", "fog": "fog", "fog, smog, smoke": "fog"}
+LIGHTING = {"daylight": "day", "dusk-dawn": "dusk_dawn", "dawn or dusk": "dusk_dawn",
+            "dark-street lights": "night_lit", "dark - lighted": "night_lit",
+            "dark-no street lights": "night_dark", "dark - not lighted": "night_dark",
+            "dark-street lights not functioning": "night_dark"}
+SURFACE = {"dry": "dry", "wet": "wet", "snowy-icy": "snow_ice", "snow": "snow_ice", "ice": "snow_ice"}
+COLLISION = {"head-on": "head_on", "side swipe": "side_swipe", "rear end": "rear_end", "broadside": "broadside",
+             "hit object": "hit_object", "vehicle/pedestrian": "pedestrian", "overturned": "other",
+             "other*": "other", "other": "other"}
+#: Movement preceding collision -> action codes that show it (any of them).
+MOVEMENT = {"making left turn": "d", "making right turn": "e", "backing": "k", "changing lanes": "fg",
+            "merging": "fg", "slowing/stopping": "ch", "proceeding straight": "a", "making u turn": "j",
+            "making u-turn": "j", "parking maneuver": "lk", "entering traffic": "mi", "passing other vehicle": "afg",
+            "passing": "afg", "crossing into opposing lane": "fg", "traveling wrong way": "a",
+            "other unsafe turning": "de", "ran off road": "fg", "turning left": "d", "turning right": "e"}
+_STATIC = ("stopped", "parked")
+#: SGO "Crash With" / OL 316 vehicle 2 -> party category ("object" for fixed objects and animals).
+_CRASH_WITH = (("pedestrian", "pedestrian"), ("cyclist", "bicycle"), ("bicycl", "bicycle"), ("scooter", "scooter"),
+               ("motorcycl", "motorcycle"), ("moped", "motorcycle"), ("bus", "bus"), ("heavy truck", "truck"),
+               ("truck", "truck"), ("van", "van"), ("fixed object", "object"), ("animal", "object"),
+               ("object", "object"), ("suv", "car"), ("pickup", "car"), ("car", "car"), ("vehicle", "car"))
+
+
+def _first(values: Iterable[str], table: dict[str, str]) -> str | None:
+    for v in values:
+        hit = table.get(v.strip().lower())
+        if hit:
+            return hit
+    return None
+
+
+def merge_form(sketch: Sketch, form: FormFields | None) -> Sketch:
+    """Fill the environment fields the narrative left `unknown` from the form's boxes (the narrative wins where it
+    speaks), and a collision type the text could not tell."""
+    if form is None:
+        return sketch
+    env = sketch.environment
+    new_env = Environment(
+        weather=env.weather if env.weather != "unknown" else (_first(form.get("weather"), WEATHER) or "unknown"),
+        lighting=env.lighting if env.lighting != "unknown" else (_first(form.get("lighting"), LIGHTING) or "unknown"),
+        surface=env.surface if env.surface != "unknown" else (_first(form.get("roadway_surface"), SURFACE)
+                                                              or "unknown"),
+    )  # type: ignore[arg-type]
+    out = replace(sketch, environment=new_env)
+    ctype = _first(form.get("type_of_collision"), COLLISION)
+    if ctype and sketch.collision.with_ is not None and sketch.collision.type == "other":
+        out = replace(out, collision=replace(sketch.collision, type=ctype))  # type: ignore[arg-type]
+    return out
+
+
+@dataclass
+class Agreement:
+    agree: int = 0
+    total: int = 0
+    disagreements: list[tuple[str, str, str]] = field(default_factory=list)  # (form, predicted, report id)
+
+    def add(self, ok: bool, form: str, pred: str, rid: str) -> None:
+        self.total += 1
+        self.agree += ok
+        if not ok:
+            self.disagreements.append((form, pred, rid))
+
+
+def _party_category_from_form(row: dict) -> str | None:
+    if "ol316" in row:
+        o = row["ol316"]
+        involved = [x.lower() for x in o.get("involved_in_accident_v1", []) + o.get("involved_in_accident_v2", [])]
+        if "pedestrian" in involved:
+            return "pedestrian"
+        if "bicyclist" in involved:
+            return "bicycle"
+        model = (o.get("vehicle_2_model") or "").lower()
+        if not model or model in ("n/a", "na", "none", "-"):
+            return None
+        return next((cat for key, cat in _CRASH_WITH if key in model), "car")
+    crash = (row.get("sgo", {}).get("Crash With") or "").lower()
+    if not crash:
+        return None
+    return next((cat for key, cat in _CRASH_WITH if key in crash), None)
+
+
+def _movements(row: dict) -> tuple[list[str], list[str]]:
+    if "ol316" in row:
+        o = row["ol316"]
+        return ([m.lower() for m in (o.get("vehicle_1_av") or {}).get("movement_preceding_collision", [])],
+                [m.lower() for m in (o.get("vehicle_2_other") or {}).get("movement_preceding_collision", [])])
+    s = row.get("sgo", {})
+    return ([str(s.get("SV Pre-Crash Movement", "")).lower()], [str(s.get("CP Pre-Crash Movement", "")).lower()])
+
+
+def _movement_ok(moves: list[str], start: str, actions: str) -> tuple[bool, str] | None:
+    """Does the action string show the filed movement? None when the form's movement tells nothing checkable."""
+    for mv in moves:
+        mv = re.sub(r"\s+", " ", mv.strip())
+        if mv in _STATIC:
+            return (start == "stopped" or actions in ("", "k")), mv
+        codes = MOVEMENT.get(mv)
+        if codes:
+            return any(c in actions for c in codes), mv
+    return None
+
+
+def form_agreement(rows: Iterable[dict], predicted: dict[str, Sketch]) -> dict[str, Agreement]:
+    """Agreement of predicted sketches with the filed labels: collision type, the other party's category, and the
+    movement preceding the collision (AV and other party) shown in the action strings."""
+    out = {k: Agreement() for k in ("collision_type", "party_category", "av_movement", "party_movement")}
+    for row in rows:
+        rid = row.get("id", "")
+        p = predicted.get(rid)
+        if p is None:
+            continue
+        if "ol316" in row:
+            form_type = _first((row["ol316"].get("vehicle_1_av") or {}).get("type_of_collision", []), COLLISION)
+            if form_type:
+                out["collision_type"].add(form_type == p.collision.type, form_type, p.collision.type, rid)
+        partner = p.party(p.collision.with_) if p.collision.with_ else None
+        pcat = getattr(partner, "category", None)
+        pred_cat = "object" if p.collision.with_ and p.collision.with_.startswith("obs") else (pcat or "-")
+        form_cat = _party_category_from_form(row)
+        if form_cat:
+            out["party_category"].add(form_cat == pred_cat, form_cat, pred_cat, rid)
+        av_moves, other_moves = _movements(row)
+        r = _movement_ok(av_moves, p.ego.start, p.ego.actions)
+        if r is not None:
+            out["av_movement"].add(r[0], r[1], f"{p.ego.start}/{p.ego.actions or '-'}", rid)
+        if partner is not None and hasattr(partner, "actions"):
+            r = _movement_ok(other_moves, partner.start, partner.actions)  # type: ignore[union-attr]
+            if r is not None:
+                out["party_movement"].add(r[0], r[1], f"{partner.start}/{partner.actions or '-'}", rid)  # type: ignore
+    return out
+
+
+def load_form_labels(path: str | Path) -> list[dict]:
+    with open(path, encoding="utf-8") as fh:
+        return [json.loads(line) for line in fh if line.strip()]
+
+
+def format_agreement(ag: dict[str, Agreement], *, examples: int = 3) -> str:
+    lines = ["Agreement with company-filed form labels (noisy second opinion, not accuracy)", "",
+             f"{'item':<18}{'agree':>8}{'count':>8}{'total':>7}", "-" * 41]
+    for name, a in ag.items():
+        pct = f"{a.agree / a.total:.1%}" if a.total else "n/a"
+        lines.append(f"{name:<18}{pct:>8}{a.agree:>8}{a.total:>7}")
+    for name, a in ag.items():
+        if a.disagreements:
+            from collections import Counter
+
+            top = Counter((f, p) for f, p, _ in a.disagreements).most_common(examples)
+            lines.append(f"  {name}: " + "; ".join(f"form {f} vs {p} x{k}" for (f, p), k in top))
+    return "\n".join(lines)

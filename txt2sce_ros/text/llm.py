@@ -1,0 +1,298 @@
+"""Optional LLM backend: any OpenAI-compatible chat-completions server (DeepSeek by default, or a local
+Ollama / vLLM / llama.cpp server), in the paper's multi-turn dialogue.
+
+The dialogue asks, in one conversation: parties and categories -> positions -> action sequences -> obstacles and
+contact -> road and conditions (prompts in `txt2sce_ros/text/prompts/`). Each answer is parsed as JSON and checked
+against its fragment of the sketch schema; an invalid answer is re-asked with the problem named (bounded), and the
+five answers are merged into one sketch, validated as a whole.
+
+Answers are cached on disk keyed by model + a hash of the whole prompt (all messages), so a rerun asks nothing and
+gives the same bytes. The API key comes only from the environment (`TXT2SCE_LLM_API_KEY`, else `DEEPSEEK_API_KEY`);
+it is sent in the Authorization header and never logged, cached or written.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import re
+import socket
+import time
+import urllib.error
+import urllib.request
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError, SimulationFault
+from ..paths import cache_dir
+from ..sketch import Sketch, load_schema, validate_sketch_dict
+
+PROMPTS_DIR = Path(__file__).resolve().parent / "prompts"
+STEPS = ("1_parties", "2_positions", "3_actions", "4_obstacles", "5_conditions")
+KEY_ENV = ("TXT2SCE_LLM_API_KEY", "DEEPSEEK_API_KEY")
+DEFAULT_BASE_URL = "https://api.deepseek.com"
+DEFAULT_MODEL = "deepseek-chat"
+
+
+@dataclass(frozen=True)
+class LlmConfig:
+    base_url: str = DEFAULT_BASE_URL
+    model: str = DEFAULT_MODEL
+    timeout_s: float = 60.0
+    retries: int = 3  # extra attempts after a 5xx, a 429 or a timeout
+    backoff_s: float = 1.0  # doubled per retry
+    max_reasks: int = 2  # re-asks of one step after an invalid answer
+    temperature: float = 0.0
+    max_tokens: int = 800
+    cache: Path | None = None  # None: <cache_dir>/llm
+
+    @classmethod
+    def from_settings(cls, settings: dict[str, Any] | None = None, **overrides: Any) -> LlmConfig:
+        """Config file values (`config/extract.yaml`, section `llm`), then env (`TXT2SCE_LLM_BASE_URL`,
+        `TXT2SCE_LLM_MODEL`), then explicit overrides (CLI flags) that are not None."""
+        s = dict(settings or {})
+        if os.environ.get("TXT2SCE_LLM_BASE_URL"):
+            s["base_url"] = os.environ["TXT2SCE_LLM_BASE_URL"]
+        if os.environ.get("TXT2SCE_LLM_MODEL"):
+            s["model"] = os.environ["TXT2SCE_LLM_MODEL"]
+        s.update({k: v for k, v in overrides.items() if v is not None})
+        known = {f for f in cls.__dataclass_fields__}
+        unknown = set(s) - known
+        if unknown:
+            raise InputError(f"unknown LLM settings: {', '.join(sorted(unknown))}", source="config/extract.yaml",
+                             element="llm")
+        if s.get("cache") is not None:
+            s["cache"] = Path(s["cache"])
+        return cls(**s)
+
+
+def api_key() -> str | None:
+    for name in KEY_ENV:
+        if os.environ.get(name):
+            return os.environ[name]
+    return None
+
+
+@dataclass
+class ChatClient:
+    """Chat completions over HTTP (urllib, no extra dependency) with retries and an on-disk answer cache."""
+
+    config: LlmConfig
+    requests_made: int = 0
+    cache_hits: int = 0
+    _sleep: Any = field(default=time.sleep, repr=False)
+
+    def _cache_path(self, messages: list[dict[str, str]]) -> Path:
+        root = self.config.cache or (cache_dir() / "llm")
+        key = hashlib.sha256(json.dumps({"model": self.config.model, "messages": messages,
+                                         "temperature": self.config.temperature},
+                                        sort_keys=True, ensure_ascii=False).encode()).hexdigest()
+        safe_model = re.sub(r"[^\w.-]+", "_", self.config.model)
+        return root / safe_model / key[:2] / f"{key}.json"
+
+    def complete(self, messages: list[dict[str, str]]) -> str:
+        """The assistant's answer to `messages` (from the cache when this exact prompt was asked before)."""
+        path = self._cache_path(messages)
+        if path.exists():
+            try:
+                self.cache_hits += 1
+                return json.loads(path.read_text(encoding="utf-8"))["content"]
+            except (json.JSONDecodeError, KeyError, OSError):
+                pass  # a damaged cache entry is asked again
+        content = self._post(messages)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(".tmp")
+        tmp.write_text(json.dumps({"model": self.config.model, "content": content}, ensure_ascii=False),
+                       encoding="utf-8")
+        tmp.replace(path)
+        return content
+
+    def _post(self, messages: list[dict[str, str]]) -> str:
+        url = self.config.base_url.rstrip("/") + "/chat/completions"
+        body = json.dumps({"model": self.config.model, "messages": messages, "temperature": self.config.temperature,
+                           "max_tokens": self.config.max_tokens, "stream": False}).encode()
+        headers = {"Content-Type": "application/json", "Accept": "application/json"}
+        key = api_key()
+        if key:
+            headers["Authorization"] = f"Bearer {key}"
+        last = ""
+        for attempt in range(self.config.retries + 1):
+            if attempt:
+                self._sleep(self.config.backoff_s * 2 ** (attempt - 1))
+            self.requests_made += 1
+            req = urllib.request.Request(url, data=body, headers=headers, method="POST")
+            try:
+                with urllib.request.urlopen(req, timeout=self.config.timeout_s) as resp:
+                    payload = json.loads(resp.read().decode("utf-8"))
+                return str(payload["choices"][0]["message"]["content"])
+            except urllib.error.HTTPError as exc:
+                last = f"HTTP {exc.code}"
+                if exc.code in (429,) or exc.code >= 500:
+                    continue
+                raise SimulationFault(f"LLM server refused the request ({last}; check model name and API key)",
+                                      source=url) from exc
+            except (TimeoutError, socket.timeout) as exc:
+                last = "timeout"
+                del exc
+                continue
+            except urllib.error.URLError as exc:
+                if isinstance(exc.reason, (TimeoutError, socket.timeout)):
+                    last = "timeout"
+                    continue
+                last = f"connection failed ({exc.reason})"
+                continue
+            except (json.JSONDecodeError, KeyError, IndexError, TypeError) as exc:
+                raise SimulationFault(f"LLM server answered outside the chat-completions protocol ({exc!r})",
+                                      source=url) from exc
+        raise SimulationFault(f"LLM server failed after {self.config.retries + 1} attempts (last: {last})",
+                              source=url)
+
+
+def load_prompt(name: str) -> str:
+    return (PROMPTS_DIR / f"{name}.md").read_text(encoding="utf-8")
+
+
+def _fragment_schemas() -> dict[str, dict[str, Any]]:
+    """Per-step JSON Schemas, cut from the sketch schema so both always agree."""
+    sk = load_schema()["properties"]
+    npc = sk["npcs"]["items"]["properties"]
+    party_id = npc["id"]
+
+    def obj(props: dict[str, Any], required: list[str]) -> dict[str, Any]:
+        return {"type": "object", "properties": props, "required": required}
+
+    return {
+        "1_parties": obj({"parties": {"type": "array", "items": obj(
+            {"id": party_id, "category": npc["category"]}, ["id", "category"])}}, ["parties"]),
+        "2_positions": obj({"positions": {"type": "array", "items": obj(
+            {"id": party_id, "position": npc["position"], "lane": npc["lane"]}, ["id", "position", "lane"])}},
+            ["positions"]),
+        "3_actions": obj({"ego": sk["ego"], "parties": {"type": "array", "items": obj(
+            {"id": party_id, "start": npc["start"], "actions": npc["actions"]}, ["id", "start", "actions"])}},
+            ["ego", "parties"]),
+        "4_obstacles": obj({"obstacles": sk["obstacles"], "collision": sk["collision"]}, ["obstacles", "collision"]),
+        "5_conditions": obj({"road": sk["road"], "environment": sk["environment"],
+                             "signal_state": sk["signal_state"], "missing": sk["missing"]},
+                            ["road", "environment", "signal_state", "missing"]),
+    }
+
+
+def parse_answer(text: str) -> Any:
+    """The JSON object in an answer, tolerating a code fence or prose around it; InputError if there is none."""
+    t = text.strip()
+    fence = re.search(r"```(?:json)?\s*(.*?)```", t, re.S)
+    if fence:
+        t = fence.group(1).strip()
+    try:
+        return json.loads(t)
+    except json.JSONDecodeError:
+        start, end = t.find("{"), t.rfind("}")
+        if 0 <= start < end:
+            try:
+                return json.loads(t[start:end + 1])
+            except json.JSONDecodeError:
+                pass
+    raise InputError("answer is not a JSON object", element="answer")
+
+
+@dataclass
+class LlmExtractor:
+    """The multi-turn dialogue over a ChatClient."""
+
+    client: ChatClient
+    reasks: int = 0  # total re-asks made (for reports and tests)
+
+    @classmethod
+    def from_config(cls, config: LlmConfig) -> LlmExtractor:
+        return cls(ChatClient(config))
+
+    def _ask(self, messages: list[dict[str, str]], step: str, check: Any) -> Any:
+        from jsonschema import Draft202012Validator
+
+        validator = Draft202012Validator(_fragment_schemas()[step])
+        for attempt in range(self.client.config.max_reasks + 1):
+            answer = self.client.complete(messages)
+            messages.append({"role": "assistant", "content": answer})
+            try:
+                data = parse_answer(answer)
+                errs = sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.absolute_path)))
+                if errs:
+                    where = "/".join(map(str, errs[0].absolute_path)) or "$"
+                    raise InputError(errs[0].message, element=where)
+                check(data)
+                return data
+            except InputError as exc:
+                if attempt == self.client.config.max_reasks:
+                    raise InputError(f"LLM answer to {step} still invalid after {attempt} re-asks: {exc.message}",
+                                     element=exc.element or step) from exc
+                self.reasks += 1
+                messages.append({"role": "user", "content": (
+                    f"That answer is not valid ({exc.element}: {exc.message}). Answer {step.split('_', 1)[0]} "
+                    "again with one JSON object exactly in the requested shape, nothing else.")})
+        raise AssertionError("unreachable")
+
+    def extract(self, narrative: str, report_id: str) -> Sketch:
+        """Run the five-step dialogue on one narrative and merge the answers into a validated sketch."""
+        if not narrative.strip():
+            raise InputError("empty narrative", source=report_id)
+        messages = [{"role": "system", "content": load_prompt("system")}]
+        answers: dict[str, Any] = {}
+        ids: list[str] = []
+
+        def same_ids(key: str) -> Any:
+            def check(data: Any) -> None:
+                got = [p["id"] for p in data[key]]
+                if sorted(got) != sorted(ids):
+                    raise InputError(f"ids {got} do not match the parties of step 1 {ids}", element=key)
+            return check
+
+        def numbered(data: Any) -> None:
+            got = [p["id"] for p in data["parties"]]
+            if got != [f"npc{i}" for i in range(1, len(got) + 1)]:
+                raise InputError("ids must be npc1, npc2, ... in order", element="parties")
+
+        checks = {"1_parties": numbered, "2_positions": same_ids("positions"), "3_actions": same_ids("parties"),
+                  "4_obstacles": lambda d: None, "5_conditions": lambda d: None}
+        for step in STEPS:
+            prompt = load_prompt(step)
+            if step == "1_parties":
+                prompt = prompt.replace("{narrative}", narrative.strip())
+            messages.append({"role": "user", "content": prompt})
+            answers[step] = self._ask(messages, step, checks[step])
+            if step == "1_parties":
+                ids = [p["id"] for p in answers[step]["parties"]]
+        return merge_answers(report_id, answers)
+
+    def refine(self, offline: Sketch, narrative: str) -> Sketch:
+        """Hybrid mode: keep the rules' sketch when it is complete; ask the LLM only for reports the rules flag as
+        incomplete, and take its answer only if that one is complete."""
+        if offline.is_buildable:
+            return offline
+        try:
+            asked = self.extract(narrative, offline.report_id)
+        except InputError:
+            return offline
+        return asked if asked.is_buildable else offline
+
+
+def merge_answers(report_id: str, answers: dict[str, Any]) -> Sketch:
+    """The five step answers -> one sketch dict -> validated Sketch (InputError naming the field otherwise)."""
+    pos = {p["id"]: p for p in answers["2_positions"]["positions"]}
+    act = {p["id"]: p for p in answers["3_actions"]["parties"]}
+    npcs = []
+    for p in answers["1_parties"]["parties"]:
+        q, a = pos[p["id"]], act[p["id"]]
+        npcs.append({"id": p["id"], "category": p["category"], "position": q["position"],
+                     "lane": q["lane"] if q["position"] in ("R5", "R6", "R7") else None,
+                     "start": a["start"], "actions": a["actions"]})
+    cond = answers["5_conditions"]
+    d = {"schema": "txt2sce.sketch/1", "report_id": report_id, "road": cond["road"],
+         "environment": cond["environment"], "signal_state": cond["signal_state"],
+         "ego": answers["3_actions"]["ego"], "npcs": npcs, "obstacles": answers["4_obstacles"]["obstacles"],
+         "collision": answers["4_obstacles"]["collision"], "missing": cond["missing"]}
+    problems = validate_sketch_dict(d)
+    if problems:
+        raise InputError(f"merged LLM answers do not form a valid sketch: {problems[0]}", source=report_id)
+    return Sketch.from_dict(d)

@@ -1,0 +1,48 @@
+"""One report input -> a sketch or an error record, with the chosen backend; batches never stop on a bad row."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from typing import TYPE_CHECKING, Literal
+
+from ..errors import Txt2SceError
+from ..sketch import ErrorRecord, Sketch, validate_sketch_dict
+from .extractor import extract
+from .forms import merge_form
+from .readers import ReportInput
+
+if TYPE_CHECKING:
+    from .llm import LlmExtractor
+
+Backend = Literal["offline", "llm", "hybrid"]
+BACKENDS: tuple[str, ...] = ("offline", "llm", "hybrid")
+
+
+def sketch_report(inp: ReportInput, *, backend: Backend = "offline", llm: LlmExtractor | None = None,
+                  validate: bool = True) -> Sketch | ErrorRecord:
+    """Extract one report. Errors raised on purpose become an ErrorRecord naming the report; so does a sketch
+    that fails the schema (a bug, reported rather than written)."""
+    try:
+        if backend == "offline":
+            sk = extract(inp.text, inp.report_id)
+        elif llm is None:
+            return ErrorRecord(inp.report_id, f"backend {backend!r} needs an LLM client", inp.source)
+        elif backend == "llm":
+            sk = llm.extract(inp.text, inp.report_id)
+        else:
+            sk = llm.refine(extract(inp.text, inp.report_id), inp.text)
+        sk = merge_form(sk, inp.form)
+    except Txt2SceError as exc:
+        return ErrorRecord(inp.report_id, str(exc), inp.source)
+    if validate:
+        problems = validate_sketch_dict(sk.to_dict())
+        if problems:
+            return ErrorRecord(inp.report_id, f"{inp.report_id}: produced an invalid sketch: {problems[0]}",
+                               inp.source)
+    return sk
+
+
+def run_batch(inputs: Iterable[ReportInput | ErrorRecord], **kw: object) -> Iterator[Sketch | ErrorRecord]:
+    """Sketches (or error records) for every input, in order."""
+    for inp in inputs:
+        yield inp if isinstance(inp, ErrorRecord) else sketch_report(inp, **kw)  # type: ignore[arg-type]
