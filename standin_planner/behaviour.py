@@ -53,6 +53,7 @@ class StopPlan:
     cruise: float
     lag: float = 0.0
     hard: bool = False           # brake late and hard (fault late_braking_low_friction): no comfort jerk limit
+    braking: bool = False        # the ego is braking already (hold a stop through to standstill)
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,8 +117,12 @@ def stop_constraint(reason: Reason, distance: float, ego: EgoOnPath, lp: Longitu
                     entity: str = "") -> Constraint:
     """A planned stop with the front bumper `stop_margin` metres before `distance`."""
     d = distance - lp.stop_margin
-    a = stop_accel(ego.speed, d, lp, plan_decel=sp.decel, cruise=sp.cruise, lag=sp.lag)
-    return Constraint(reason, a, entity, distance, urgent=-a > sp.decel * 1.05 or (sp.hard and a < 0.0))
+    a = stop_accel(ego.speed, d, lp, plan_decel=sp.decel, cruise=sp.cruise, lag=sp.lag, braking=sp.braking)
+    # Urgent (the jerk limit may be exceeded) only when even an immediate stop needs more than planned; the
+    # build-up lag is a comfort allowance and does not make a stop urgent by itself.
+    need_now = ego.speed * ego.speed / (2.0 * max(d, 0.05))
+    urgent = (a < 0.0 and need_now > sp.decel * 1.05 and ego.speed > 1.0) or (sp.hard and a < 0.0)
+    return Constraint(reason, a, entity, distance, urgent=urgent)
 
 
 def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourParams) -> float | None:
@@ -152,6 +157,10 @@ def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: Lo
     return out, offset
 
 
+#: sin of the angle below which a mover counts as travelling parallel to the route (25°).
+PARALLEL_SIN = math.sin(math.radians(25.0))
+
+
 def predict(obj: EntityState, horizon: float, step: float) -> np.ndarray:
     """Constant turn rate and velocity prediction of the footprint centre: rows (tau, x, y)."""
     taus = np.arange(0.0, horizon + 1e-9, step)
@@ -179,10 +188,12 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
             continue
         if in_path(po, ego, 0.0, bp) and abs(po.rel_heading) <= bp.lead_heading_tolerance:
             continue                                     # a lead or a follower: IDM's business, not a crossing
+        if abs(math.sin(po.rel_heading)) < PARALLEL_SIN and abs(o.yaw_rate) < 0.05:
+            continue                                     # keeps to a parallel lane (same way or oncoming)
         traj = predict(o, bp.prediction_horizon, bp.prediction_step)
         s, off = line.project_many(traj[:, 1], traj[:, 2])
         radius = 0.5 * max(o.length, o.width)
-        hit = (np.abs(off) < ego.half_width + radius + bp.conflict_margin) & (s > ego.s_front - 1.0) \
+        hit = (np.abs(off) < ego.half_width + po.half_lat + bp.conflict_margin) & (s > ego.s_front - 1.0) \
             & (s < ego.s_front + 80.0)
         idx = np.flatnonzero(hit)
         if len(idx) == 0:
@@ -235,10 +246,12 @@ def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, li
             continue
         d_stop = max(dist - lp.stop_margin, 0.01)
         need = ego.speed * ego.speed / (2.0 * d_stop)
-        if state is SignalState.YELLOW and need > bp.yellow_clear_decel:
+        # Yellow: stop only if the stop is comfortable, counting the jerk-limited build-up of braking.
+        need_planned = ego.speed * ego.speed / (2.0 * max(d_stop - sp.lag, 0.01))
+        if state is SignalState.YELLOW and need_planned > bp.yellow_clear_decel:
             continue                                     # cannot stop comfortably: clear the junction
-        if state is SignalState.RED and need > emergency_decel and dist < 0.0:
-            continue                                     # front already over the line: clear it
+        if state is SignalState.RED and need > emergency_decel:
+            continue                                     # cannot stop before the line at all: clear it
         out.append(stop_constraint(Reason.RED if state is SignalState.RED else Reason.YELLOW, dist, ego, lp, sp,
                                    light.id))
     return out

@@ -14,6 +14,10 @@ import math
 from .params import LongitudinalParams
 
 
+#: Within this distance (m) of a stop point a stop in progress is held through to standstill.
+CREEP_ZONE = 3.0
+
+
 def free_road_accel(v: float, v0: float, p: LongitudinalParams) -> float:
     """IDM's free-road term: accelerate towards the desired speed v0 (m/s²)."""
     if v0 <= 0.0:
@@ -45,19 +49,25 @@ def braking_decel(p: LongitudinalParams, friction: float) -> float:
 
 
 def stop_accel(v: float, distance: float, p: LongitudinalParams, *, plan_decel: float,
-               cruise: float, lag: float = 0.0) -> float:
+               cruise: float, lag: float = 0.0, braking: bool = False) -> float:
     """Acceleration (m/s²) to stop with the front bumper `distance` metres ahead (already net of the stop
     margin). `plan_decel` is the deceleration the stop is planned with; `cruise` is the acceleration wanted
     otherwise; `lag` metres are taken off the distance for the jerk-limited build-up of the braking. Braking starts
-    once the required deceleration v²/2d reaches `stop_onset_ratio`·plan_decel, and never asks for less than that requirement afterwards, so the ego stops at the point whatever the jerk ramp cost.
+    once the required deceleration v²/2d reaches `stop_onset_ratio`·plan_decel; once `braking`, it holds the
+    required deceleration down to a standstill (no release-and-creep in between).
     """
     if distance <= 0.05:
-        return -p.max_decel if v > 0.0 else min(0.0, cruise)
+        if v <= 0.0:
+            return min(0.0, cruise)
+        # At the point: stop now; hard only if still fast (a crawl is stopped by the comfort taper).
+        return -p.max_decel if v > 1.0 else -max(p.comfort_decel, v * v / 0.1)
     need = v * v / (2.0 * max(distance - lag, 0.05))
-    if need >= p.stop_onset_ratio * plan_decel:
+    onset = p.stop_onset_ratio * plan_decel
+    if need >= onset or (braking and v > 0.0 and (need >= 0.3 * onset or distance < CREEP_ZONE)):
         return -need
-    # Approaching a far stop point from low speed: go, but never faster than the plan can still stop from.
-    v_cap = math.sqrt(2.0 * p.stop_onset_ratio * plan_decel * distance)
+    # Approaching a far stop point from low speed: go, but never faster than the plan can still stop from, and
+    # not at all within the last metre (no creeping up to a stop line).
+    v_cap = math.sqrt(2.0 * onset * max(distance - CREEP_ZONE / 3.0, 0.0))
     if v >= v_cap:
         return min(cruise, 0.0)
     return cruise

@@ -61,7 +61,7 @@ class BehaviourParams:
     lead_heading_tolerance: float = 1.0
     signal_lateral_tolerance: float = 3.0
     signal_lookahead: float = 120.0
-    yellow_clear_decel: float = 3.0
+    yellow_clear_decel: float = 2.5
     prediction_horizon: float = 5.0
     prediction_step: float = 0.25
     conflict_margin: float = 1.0

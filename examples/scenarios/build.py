@@ -328,9 +328,10 @@ SCENARIOS: tuple[Scenario, ...] = (
              note="A cyclist rides ahead in the ego's lane at 3 m/s: follow it, or (ignore_cyclists) hit it."),
     Scenario("fault_late_braking_low_friction", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -1, 250.0),
              ego_speed=10.0, friction=0.3, weather="rain",
-             npcs=(Npc("npc1", "parked_vehicle", Lane("1", -1, 140.0)),),
-             note="Wet road (friction 0.3), a vehicle stands in the lane 120 m ahead: stop in time, or (late "
-                  "braking ignoring friction) slide into it."),
+             npcs=(Npc("npc1", "car", Lane("1", -1, 140.0),
+                       events=(Event("start", 30.0, speed=8.0, rate=1.5),)),),
+             note="Wet road (friction 0.3), a car stands in the lane 120 m ahead (it drives off at 30 s): stop "
+                  "in time, or (late braking ignoring friction) slide into it."),
     Scenario("fault_no_start_when_close", "straight_3x3.xodr", Lane("1", -1, 30.0), Lane("1", -1, 200.0),
              npcs=(Npc("npc1", "car", Lane("1", -1, 23.5)),),
              note="A car stands 2 m behind the ego at the start; the lane ahead is clear."),
@@ -338,17 +339,18 @@ SCENARIOS: tuple[Scenario, ...] = (
              ego_speed=10.0,
              npcs=(Npc("npc1", "car", Lane("1", -2, 55.0), speed=6.0,
                        events=(Event("lane_change_left", 5.0, lane_change_to=-1, lane_change_time=1.5),
-                               Event("decelerate", 6.0, speed=1.0, rate=4.0))),),
+                               Event("decelerate", 6.0, speed=1.0, rate=4.0),
+                               Event("accelerate", 14.0, speed=10.0, rate=2.0))),),
              note="A slower car cuts in ahead and brakes: a tracker a second late reacts too late."),
     Scenario("fault_aggressive_start", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -1, 150.0),
              friction=0.35, weather="rain",
              note="Standstill start on a wet road (friction 0.35): full throttle with steering spins the wheels."),
     Scenario("fault_red_light_misread", J4, Lane("3", -2, 60.0), Lane("1", 2, 120.0), ego_speed=10.0,
-             signals=(("ew_green", 4.0, WEST_GREEN),
-                      ("ew_yellow", 3.0, tuple((sid, "yellow" if st == "green" else st) for sid, st in WEST_GREEN)),
+             signals=(("ew_green", 9.0, WEST_GREEN),
+                      ("ew_yellow", 4.0, tuple((sid, "yellow" if st == "green" else st) for sid, st in WEST_GREEN)),
                       ("ew_red", 12.0, tuple((sid, "red") for sid, _ in WEST_GREEN)),
                       ("ew_green_again", 120.0, WEST_GREEN)),
-             note="The light turns yellow while the ego can still stop comfortably, red 3 s later."),
+             note="The light turns yellow while the ego can still stop comfortably, red 4 s later."),
 )
 
 

@@ -46,7 +46,7 @@ def test_red_light_ahead_is_a_stop_and_green_is_not():
 
 def test_yellow_stops_when_comfortable_clears_when_not_and_misread_ignores_it():
     light = (light_on_lane(N, "2", -1, STOP_LINE_S, SignalState.YELLOW),)
-    far = on_lane(N, "ego", "2", -1, STOP_LINE_S - 40.0, speed=10.0)
+    far = on_lane(N, "ego", "2", -1, STOP_LINE_S - 55.0, speed=10.0)
     near = on_lane(N, "ego", "2", -1, STOP_LINE_S - 12.0, speed=10.0)
     p = planner()
     p.step(frame(0.0, far, lights=light))
