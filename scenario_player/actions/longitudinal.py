@@ -288,7 +288,7 @@ class LongitudinalDistanceRun(ActionRun):
         sp = self.spec
         if sp.distance is not None:
             return sp.distance
-        return (sp.time_gap or 0.0) * max(self.entity.speed, 0.0)
+        return (sp.time_gap or 0.0) * abs(self.ref.speed)      # a time gap at the reference's speed
 
     def step(self, world: "World", dt: float) -> None:
         ent, ref, sp = self.entity, self.ref, self.spec
@@ -298,25 +298,24 @@ class LongitudinalDistanceRun(ActionRun):
         behind = sp.displacement != "leadingReferencedEntity"
         if sp.displacement == "any":
             behind = gap >= 0
-        wanted = self._wanted()
-        error = (gap - wanted) if behind else (-gap - wanted)     # >0: too far from the wanted spot
+        wanted = self._wanted() if behind else -self._wanted()
+        error = gap - wanted                 # > 0: the actor should move forward
         if not self.has_dynamics:
             if ent.track is not None:
-                shift = error if behind else -error
-                s, _ = ent.track.travel(ent.s, shift)
+                s, _ = ent.track.travel(ent.s, -error if ent.reverse else error)
                 ent.s = s
                 ent.x, ent.y, ent.h = ent.track.pose(s, ent.offset)
                 ent._sync_road()
             ent.speed = ref.speed
         else:
-            rel_v = ref.speed - ent.speed if behind else ent.speed - ref.speed
-            # Critically damped spring on the gap error (natural frequency 1 rad/s keeps it gentle).
-            acc = error * 1.0 + 2.0 * rel_v if behind else -(error * 1.0 + 2.0 * rel_v)
             acc_lim = sp.max_accel if sp.max_accel is not None else ent.spec.max_accel
             dec_lim = sp.max_decel if sp.max_decel is not None else ent.spec.max_decel
+            # Critically damped spring on the gap error; stiffer toward the side with more authority.
+            k = 0.4 * (acc_lim if error < 0 else dec_lim)
+            acc = error * k - (ent.speed - ref.speed) * 2.0 * math.sqrt(k)
             acc = min(max(acc, -dec_lim), acc_lim)
-            ent.speed = max(0.0, ent.speed + acc * dt)
+            ent.speed += acc * dt
             if sp.max_speed is not None:
-                ent.speed = min(ent.speed, sp.max_speed)
+                ent.speed = min(max(ent.speed, -sp.max_speed), sp.max_speed)
         if not sp.continuous and abs(error) < 0.1 and dt > 0:
             self.done = True
