@@ -84,6 +84,9 @@ class Connection:
     contact_point: str            # where the connecting road is entered: 'start' | 'end'
     lane_links: tuple[tuple[int, int], ...] = ()
 
+    def __iter__(self):  # noqa: ANN204 - lets `incoming, connecting, contact, links = conn` work as in road_api.md
+        return iter((self.incoming_road, self.connecting_road, self.contact_point, self.lane_links))
+
 
 @dataclass(frozen=True, slots=True)
 class Junction:
