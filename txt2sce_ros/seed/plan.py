@@ -524,23 +524,35 @@ class Planner:
         if need <= 0:
             return
         shift = math.copysign(min(need, 4.0), left)
-        t0 = max(t_e - 3.5, actor.events[0].planned_time)
-        k = max(i for i, ev in enumerate(actor.events) if ev.planned_time <= t0 + 1e-6) if any(
-            ev.planned_time <= t0 + 1e-6 for ev in actor.events) else 0
-        ev = actor.events[k]
-        t_start = ev.planned_time
-        if isinstance(actor.track, Track):
-            ref = actor.track.lane_at(d_n_star)
-            pose = actor.track.lane_pose(d_n_star)
-            forward = self.net.lane_forward(ref.road_id, ref.lane_id, pose.s)
-            off_t = shift if forward != actor.track.reverse else -shift
-        else:
-            off_t = shift
-        actor.events[k] = EventPlan(ev.name, ev.code, ev.actions + (LaneOffsetAct(round(off_t, 3), 1.0),),
-                                    ev.trigger, ev.planned_time)
-        actor.lat_steps.append(LateralStep(t_start, shift, max(2.0, math.sqrt(4 * abs(shift) / 1.0))))
-        actor.notes.append(f"paths pass {abs(left):.1f} m apart: {shift:+.2f} m lane offset toward the AV "
-                           "(reported contact)")
+        # Realised as a trajectory: the party's own path, bent toward the AV over the 15 m before the meeting
+        # point. (A LaneOffsetAction would do, but its sign is tied to the road's +t and flips when the path
+        # turns onto a road drawn the other way; world points are unambiguous.)
+        start = actor.d0
+        d_lo = max(start, d_n_star - 15.0)
+        ds = np.arange(start, actor.track.length, 2.0)
+        u = np.clip((ds - d_lo) / max(d_n_star - d_lo, 1.0), 0.0, 1.0)
+        # the party's own lane changes, turned from time into distance along its path, stay in the bent path
+        tp, _, dp = actor.profile(self.horizon)
+        t_of_d = np.interp(ds - start, dp, tp) if dp[-1] > dp[0] else np.zeros_like(ds)
+        own = lateral_profile(actor.lat0, actor.lat_steps, t_of_d)
+        actor.lat_steps = []
+        lat = own + shift * (0.5 - 0.5 * np.cos(math.pi * u))
+        pts = actor.track.world_array(ds, lat)
+        line = LineTrack([(float(x), float(y)) for x, y, _ in pts])
+        actor.track, actor.d0, actor.lat0, actor.world_start = line, 0.0, 0.0, True
+        traj = TrajectoryAct(f"{actor.name}_path", line.vertices(0.0))
+        ev = actor.events[0]
+        acts = tuple(a for a in ev.actions if not isinstance(a, (RouteAct, LaneChangeAct, LaneOffsetAct))) + (traj,)
+        actor.events[0] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
+        for k in range(1, len(actor.events)):  # later turns and lane changes are already in the bent path
+            e = actor.events[k]
+            if any(isinstance(a, (RouteAct, LaneChangeAct, LaneOffsetAct)) for a in e.actions):
+                rest = tuple(a for a in e.actions if not isinstance(a, (RouteAct, LaneChangeAct, LaneOffsetAct)))
+                actor.events[k] = EventPlan(e.name, e.code, rest or (SpeedAct(
+                    round(float(np.interp(e.planned_time, *actor.profile(self.horizon)[:2])), 3),
+                    self.D.shape, self.D.dimension, self.D.dyn_value),), e.trigger, e.planned_time)
+        actor.notes.append(f"paths pass {abs(left):.1f} m apart: bent {shift:+.2f} m toward the AV before the "
+                           "meeting point (reported contact)")
 
     def _meet_parallel(self, p: Party, actor: Actor, T: float, t: np.ndarray, dn: np.ndarray, mode: str) -> None:
         ego = self.ego
@@ -614,7 +626,9 @@ class Planner:
         if travelled < 0.5:  # the AV stands: cross right in front of it
             travelled = 0.0
         dims = self.D.dims(p.category)
-        d_p = ego.d0 + travelled + front + dims[1] / 2 * 0.5
+        # moving AV: the party's centre crosses the point the AV's front reaches at T; standing AV: the party's
+        # side passes 0.3 m into the AV's front
+        d_p = ego.d0 + travelled + front + (dims[0] / 2 - 0.3 if travelled == 0.0 else 0.0)
         if p.position in ("R4",) and math.isfinite(self.d_entry):
             d_p = max(d_p, self.d_entry + 4.0)
         px = ego.track.world(d_p)
