@@ -112,7 +112,10 @@ def register(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from standin_planner import Faults
+
     faults = tuple(f for f in args.faults.split(",") if f.strip())
+    Faults.from_names(faults)                     # an unknown name is the user's error, not an error run
     files = scenario_files(args.scenarios)
     if not files:
         raise Txt2SceError("no scenarios to run", source=str(DEFAULT_DIR))

@@ -1,0 +1,36 @@
+"""Closed loop (real scenario player + planner + oracle, in-process) on the scenarios built to expose each fault
+mode (examples/scenarios/fault_*.xosc): with the fault on, the intended unexpected behaviour; with it off, not."""
+
+import pytest
+
+from txt2sce_ros.cli.cmd_planner_check import DEFAULT_DIR, run_scenario
+
+#: fault -> (category the faulty run must show, end reason of the faulty run)
+EXPECTED = {
+    "ignore_cyclists": ("Collisions", "collision"),
+    "late_braking_low_friction": ("Collisions", "collision"),
+    "no_start_when_close": ("StartFail", None),
+    "stale_tracking": ("Collisions", "collision"),
+    "aggressive_start": ("StartFail", None),
+    "red_light_misread": ("Misinterp", None),
+}
+
+
+@pytest.mark.parametrize("fault", sorted(EXPECTED))
+def test_fault_shows_its_behaviour_and_nominal_does_not(fault):
+    path = DEFAULT_DIR / f"fault_{fault}.xosc"
+    category, end = EXPECTED[fault]
+    faulty = run_scenario(path, faults=(fault,))
+    nominal = run_scenario(path)
+    assert faulty.verdict == "fail" and category in faulty.categories, faulty.summary
+    if end is not None:
+        assert faulty.end_reason == end
+    # The nominal planner in the same scenario: no such behaviour, and it completes the mission.
+    assert category not in nominal.categories, nominal.summary
+    assert "Collisions" not in nominal.categories and nominal.goal_reached, nominal.summary
+
+
+def test_stale_tracking_nominal_brakes_hard_but_safely():
+    # The cut-in forces an emergency stop on any stack; the nominal one comes through it with a gap.
+    nominal = run_scenario(DEFAULT_DIR / "fault_stale_tracking.xosc")
+    assert nominal.min_gap > 1.0
