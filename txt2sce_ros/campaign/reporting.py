@@ -1,0 +1,114 @@
+"""Turn a campaign's stored results (and its trees) into the report of `txt2sce_ros.analysis.report`."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any, Sequence
+
+from ..analysis.report import CampaignResults, write_report
+from .runs import RunTask
+from .store import ResultStore
+
+#: How many representative failures get a top-down trajectory plot (one per category, most severe first).
+FAILURE_PLOTS = 5
+
+
+def _tree_nodes(tree_dir: Path) -> dict[str, dict[str, Any]]:
+    """Manifest nodes keyed by id, with the fields derivation analysis reads (block, operator, changes)."""
+    data = json.loads((tree_dir / "manifest.json").read_text(encoding="utf-8"))
+    nodes = {}
+    for n in data.get("nodes", []):
+        block = f"{n['block_kind']}:{n['block_key']}" if n.get("block_kind") else "seed"
+        changes = [{"path": c[0], "old": c[1], "new": c[2]} if isinstance(c, list) else c
+                   for c in n.get("changes", [])]
+        nodes[str(n["id"])] = {"parent": n.get("parent"), "block": block, "operator": n.get("operator", ""),
+                               "changes": changes, "file": n.get("file")}
+    return nodes
+
+
+def _tree_dirs(inputs: Sequence[str | Path]) -> list[Path]:
+    out = []
+    for item in inputs:
+        p = Path(item)
+        if (p / "manifest.json").is_file():
+            data = json.loads((p / "manifest.json").read_text(encoding="utf-8"))
+            if "nodes" in data:
+                out.append(p)
+        elif p.is_dir():
+            out += sorted(c for c in p.iterdir() if (c / "manifest.json").is_file())
+    return out
+
+
+def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS
+                  ) -> list[tuple[str, bytes]]:
+    """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
+    from ..analysis.plots import trajectory_plot
+    from ..closed_loop import run_closed_loop
+
+    picked: list[dict[str, Any]] = []
+    seen: set[str] = set()
+    for r in runs:
+        cats = [c for c in r["categories"] if c not in seen]
+        if r["verdict"] == "fail" and cats and r.get("file"):
+            picked.append(r)
+            seen.update(r["categories"])
+        if len(picked) >= limit:
+            break
+    out = []
+    for r in picked:
+        record, traj = run_closed_loop(r["file"], scenario_id=r["scenario_id"], faults=faults, keep_trajectory=True)
+        if traj is None:
+            continue
+        lanes = _lane_borders(r["file"], traj)
+        marks = []
+        for v in record.details.get("violations", [])[:3]:
+            if "x" in v and "y" in v:
+                marks.append((float(v["x"]), float(v["y"]), str(v.get("category", ""))))
+        caption = f"{r['scenario_id']}: {', '.join(r['categories'])}"
+        out.append((caption, trajectory_plot(traj, lanes, caption, marks)))
+    return out
+
+
+def _lane_borders(scenario_file: str, traj: dict[str, Any]) -> list[Any]:
+    """Borders of the driving lanes near the trajectories (for the plot background)."""
+    import numpy as np
+
+    from ..road import load_network
+    from ..scenario_source import logic_file
+
+    path = Path(scenario_file)
+    xodr = logic_file(path, path.read_bytes())
+    if xodr is None:
+        return []
+    net = load_network(str(xodr))
+    pts = np.vstack([t[:, 1:3] for t in traj.values() if len(t)])
+    lo, hi = pts.min(axis=0) - 60, pts.max(axis=0) + 60
+    borders = []
+    for rid, road in net.roads.items():
+        for lane_id in net.lane_ids(rid, 0.0, types=("driving",)):
+            left, right = net.lane_borders(rid, lane_id, ds=1.0)
+            for b in (left, right):
+                if len(b) and ((b >= lo) & (b <= hi)).all(axis=1).any():
+                    borders.append(b)
+    return borders
+
+
+def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path,
+                      tasks: Sequence[RunTask] = ()) -> Path:
+    files = {t.key: t.scenario_path for t in tasks}
+    runs = [{"scenario_id": r.scenario_id, "tree": r.tree, "parent": r.parent, "verdict": r.verdict,
+             "categories": list(r.categories), "file": files.get(r.run_key), "record": r.record}
+            for r in store.runs() if not files or r.run_key in files]
+    trees = {d.name: _tree_nodes(d) for d in _tree_dirs(inputs)}
+    res = CampaignResults(runs=runs, trees=trees)
+    if trees:
+        from ..tree.diversity import diversity
+
+        table = diversity(list(_tree_dirs(inputs)))
+        res.diversity = [(row.level, row.abstract, row.variants) for row in table.rows]
+        res.unique_categories = table.unique_categories
+    faults = tuple(store.meta("faults", []) or ())
+    res.failure_plots = failure_plots(runs, faults)
+    md, _html = write_report(res, out_dir)
+    return md
