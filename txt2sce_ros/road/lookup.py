@@ -80,7 +80,6 @@ class LaneIndex:
         self.net = net
         self.lane_types = None if lane_types is None else frozenset(lane_types)
         self.road_ids = list(net.roads)
-        self._road_pos = {rid: i for i, rid in enumerate(self.road_ids)}
         self._road_names = np.array(self.road_ids, dtype=object)
         self._lengths = np.array([net.roads[r].length for r in self.road_ids])
         pts, road_idx, s_all = [], [], []
