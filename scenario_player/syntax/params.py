@@ -128,4 +128,6 @@ class _Substitute(ast.NodeTransformer):
     def visit_Name(self, node: ast.Name) -> ast.AST:
         if node.id in self.values:
             return ast.copy_location(ast.Constant(value=self.values[node.id]), node)
+        if node.id in _FUNCS:
+            return node
         raise ValueError(f"unknown name {node.id}")

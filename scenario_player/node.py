@@ -1,0 +1,244 @@
+"""ROS 2 node of the scenario player: a thin adapter that runs `Simulation` cores one at a time and moves their
+frames and the planner's commands over the topic interface (txt2sce_ros.contract, txt2sce_ros.ros_io).
+
+Scenarios come from `/txt2sce/scenario` (std_msgs/String, JSON ScenarioEnvelope) and from the `scenario_files`
+parameter; they are queued and run one after the other.
+
+Per step k (lock-step protocol of txt2sce_ros.contract): `/clock`, `/sim/traffic_lights`, one `/sim/objects/odom`
+per entity, `/sim/objects/markers`, `/planning/goal`, then `/sim/ego/odom`; then the player waits for the
+`/control/command` stamped t_k and steps. Run life cycle on `/txt2sce/run_status` (JSON RunStatus: 'started',
+then 'finished' with end_reason, verdict_hint and the unsupported elements).
+
+Parameters (defaults from config/player.yaml `node:`):
+- `scenario_files` (string[]): .xosc files to run at start-up.
+- `lock_step` (bool): lock-step (true) or real-time mode (false).
+- `planner_timeout` (double, s wall): no command in time -> run ends, verdict_hint 'error',
+  end_reason 'planner_not_responding'.
+- `run_timeout` (double, s wall): a run never takes longer (end_reason 'wall_clock_limit', 'error').
+- `realtime_factor` (double): real-time mode speed (sim s per wall s).
+- `ego_mode` ('planner' | 'storyboard'), `time_limit` (double, sim s; <= 0: config default), `dt`, `seed`.
+- `exit_when_idle` (bool): shut down once the queue is empty and every file has run (default false).
+"""
+
+from __future__ import annotations
+
+import collections
+import sys
+import time
+from dataclasses import replace
+
+import rclpy
+from geometry_msgs.msg import PoseStamped, TwistStamped
+from nav_msgs.msg import Odometry
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rosgraph_msgs.msg import Clock
+from diagnostic_msgs.msg import DiagnosticArray
+from std_msgs.msg import String
+from visualization_msgs.msg import MarkerArray
+
+from txt2sce_ros.config import load_config
+from txt2sce_ros.contract import (TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL, TOPIC_OBJECTS_MARKERS,
+                                  TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS, TOPIC_SCENARIO, TOPIC_TRAFFIC_LIGHTS,
+                                  ControlCommand, Frame, RunStatus, ScenarioEnvelope)
+from txt2sce_ros.errors import Txt2SceError
+from txt2sce_ros.ros_io import (clock_msg, entity_to_odometry, frame_to_markers, goal_to_pose, lights_to_diagnostics,
+                                stamp_key, string_msg, to_stamp, twist_to_command)
+
+from .simulation import Simulation, SimulationConfig
+from .syntax.scenario import load_scenario
+
+
+def qos(depth: int, latched: bool = False) -> QoSProfile:
+    return QoSProfile(depth=depth, reliability=ReliabilityPolicy.RELIABLE,
+                      durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE)
+
+
+class PlayerNode(Node):
+    def __init__(self) -> None:
+        super().__init__("scenario_player")
+        cfg = load_config("player")
+        node_cfg, sim_cfg = cfg.get("node", {}), cfg.get("simulation", {})
+        self.declare_parameter("scenario_files", [""])
+        self.declare_parameter("lock_step", node_cfg.get("mode", "lockstep") == "lockstep")
+        self.declare_parameter("planner_timeout", float(node_cfg.get("command_timeout", 2.0)))
+        self.declare_parameter("run_timeout", float(node_cfg.get("run_wall_limit", 300.0)))
+        self.declare_parameter("realtime_factor", float(node_cfg.get("realtime_factor", 1.0)))
+        self.declare_parameter("startup_timeout", float(node_cfg.get("startup_timeout", 10.0)))
+        self.declare_parameter("ego_mode", "planner")
+        self.declare_parameter("time_limit", 0.0)
+        self.declare_parameter("dt", float(sim_cfg.get("dt", 0.05)))
+        self.declare_parameter("seed", int(sim_cfg.get("seed", 0)))
+        self.declare_parameter("exit_when_idle", False)
+        p = self.get_parameter
+        self.lock_step = bool(p("lock_step").value)
+        self.planner_timeout = float(p("planner_timeout").value)
+        self.run_timeout = float(p("run_timeout").value)
+        self.rt_factor = max(float(p("realtime_factor").value), 1e-3)
+        self.startup_timeout = float(p("startup_timeout").value)
+        self.ego_mode = str(p("ego_mode").value)
+        self.time_limit = float(p("time_limit").value)
+        self.exit_when_idle = bool(p("exit_when_idle").value)
+        self.base_config = SimulationConfig.from_config(dt=float(p("dt").value), seed=int(p("seed").value),
+                                                        ego_mode=self.ego_mode)
+        depth = int(node_cfg.get("qos_depth", 100))
+        self.pub_clock = self.create_publisher(Clock, TOPIC_CLOCK, qos(10))
+        self.pub_lights = self.create_publisher(DiagnosticArray, TOPIC_TRAFFIC_LIGHTS, qos(depth))
+        self.pub_objects = self.create_publisher(Odometry, TOPIC_OBJECTS_ODOM, qos(depth))
+        self.pub_markers = self.create_publisher(MarkerArray, TOPIC_OBJECTS_MARKERS, qos(depth))
+        self.pub_goal = self.create_publisher(PoseStamped, TOPIC_GOAL, qos(10, latched=True))
+        self.pub_ego = self.create_publisher(Odometry, TOPIC_EGO_ODOM, qos(depth))
+        self.pub_status = self.create_publisher(String, TOPIC_RUN_STATUS, qos(50, latched=True))
+        self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, qos(10, latched=True))
+        self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
+        self.queue: collections.deque[ScenarioEnvelope] = collections.deque()
+        for path in p("scenario_files").value or []:
+            if path:
+                self.queue.append(ScenarioEnvelope(id=path, xosc="", map_path="", meta={"file": path}))
+        self.commands: dict[int, ControlCommand] = {}
+        self.latest: ControlCommand | None = None
+        self.latest_wall = 0.0
+
+    # -- callbacks ------------------------------------------------------------------------------------------------
+    def _on_scenario(self, msg: String) -> None:
+        try:
+            self.queue.append(ScenarioEnvelope.from_json(msg.data))
+        except Txt2SceError as exc:
+            self._status(RunStatus(scenario_id="?", state="finished", end_reason=f"input_error: {exc}",
+                                   verdict_hint="error"))
+
+    def _on_command(self, msg: TwistStamped) -> None:
+        cmd = twist_to_command(msg)
+        self.commands[stamp_key(msg.header.stamp)] = cmd
+        self.latest, self.latest_wall = cmd, time.monotonic()
+
+    # -- publishing -----------------------------------------------------------------------------------------------
+    def _status(self, status: RunStatus) -> None:
+        self.pub_status.publish(string_msg(status.to_json()))
+
+    def publish_frame(self, sim: Simulation, frame: Frame) -> None:
+        t = frame.t
+        self.pub_clock.publish(clock_msg(t))
+        self.pub_lights.publish(lights_to_diagnostics(frame.lights, t))
+        for obj in frame.objects:
+            self.pub_objects.publish(entity_to_odometry(obj))
+        self.pub_markers.publish(frame_to_markers(frame))
+        if sim.goal is not None:
+            self.pub_goal.publish(goal_to_pose(sim.goal, t))
+        self.pub_ego.publish(entity_to_odometry(frame.ego))
+
+    # -- runs -----------------------------------------------------------------------------------------------------
+    def load(self, env: ScenarioEnvelope) -> Simulation:
+        file = env.meta.get("file") if env.meta else None
+        if file:
+            scenario = load_scenario(file)
+        else:
+            scenario = load_scenario(env.xosc, source=env.id or "<envelope>", map_text=env.map_xodr or None,
+                                     map_path=env.map_path or None)
+        cfg = replace(self.base_config, scenario_id=env.id,
+                      time_limit=self.time_limit if self.time_limit > 0 else None)
+        return Simulation(scenario, cfg)
+
+    def wait_for_planner(self, executor: SingleThreadedExecutor) -> bool:
+        deadline = time.monotonic() + self.startup_timeout
+        while time.monotonic() < deadline:
+            if self.count_publishers(TOPIC_COMMAND) > 0 and self.pub_ego.get_subscription_count() > 0:
+                return True
+            executor.spin_once(timeout_sec=0.02)
+        return False
+
+    def run_one(self, env: ScenarioEnvelope, executor: SingleThreadedExecutor) -> RunStatus:
+        try:
+            sim = self.load(env)
+            self._current = sim         # the command wait aborts the run it belongs to
+        except Txt2SceError as exc:
+            status = RunStatus(scenario_id=env.id, state="finished", end_reason=f"input_error: {exc}",
+                               verdict_hint="error")
+            self._status(status)
+            return status
+        needs_planner = self.ego_mode == "planner"
+        self.commands.clear()
+        frame = sim.reset()
+        self._status(replace(sim.status, state="started"))
+        if needs_planner and not self.wait_for_planner(executor):
+            sim.abort("planner_not_responding")
+        wall0 = time.monotonic()
+        next_wall = wall0
+        while not sim.done:
+            self.publish_frame(sim, frame)
+            cmd: ControlCommand | None = None
+            if needs_planner:
+                key = stamp_key(to_stamp(frame.t))
+                if self.lock_step:
+                    cmd = self._await_command(executor, key, wall0)
+                    if cmd is None:
+                        break
+                else:
+                    next_wall += sim.config.dt / self.rt_factor
+                    while time.monotonic() < next_wall:
+                        executor.spin_once(timeout_sec=max(0.0, min(0.005, next_wall - time.monotonic())))
+                    cmd = self.latest
+                    if cmd is None or time.monotonic() - self.latest_wall > self.planner_timeout:
+                        if time.monotonic() - wall0 > self.planner_timeout:
+                            sim.abort("planner_not_responding")
+                            break
+                self.commands.pop(key, None)
+            else:
+                executor.spin_once(timeout_sec=0.0)
+                if not self.lock_step:
+                    next_wall += sim.config.dt / self.rt_factor
+                    time.sleep(max(0.0, next_wall - time.monotonic()))
+            if time.monotonic() - wall0 > self.run_timeout:
+                sim.abort("wall_clock_limit")
+                break
+            frame = sim.step(cmd)
+        if sim.done and not sim.verdict_hint:
+            self.publish_frame(sim, frame)          # the final state, for recorders and oracles
+        status = sim.status
+        self._status(status)
+        self.get_logger().info(f"run {env.id}: {status.end_reason} at t={status.t:.2f}s")
+        return status
+
+    def _await_command(self, executor: SingleThreadedExecutor, key: int, wall0: float) -> ControlCommand | None:
+        deadline = time.monotonic() + self.planner_timeout
+        while key not in self.commands:
+            now = time.monotonic()
+            if now > deadline:
+                self._current.abort("planner_not_responding")
+                return None
+            if now - wall0 > self.run_timeout:
+                self._current.abort("wall_clock_limit")
+                return None
+            executor.spin_once(timeout_sec=0.01)
+        return self.commands[key]
+
+    def serve(self, executor: SingleThreadedExecutor) -> None:
+        while rclpy.ok():
+            if self.queue:
+                self.run_one(self.queue.popleft(), executor)
+            elif self.exit_when_idle:
+                return
+            else:
+                executor.spin_once(timeout_sec=0.1)
+
+
+def main(args: list[str] | None = None) -> int:
+    rclpy.init(args=args)
+    node = PlayerNode()
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    try:
+        node.serve(executor)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        executor.remove_node(node)
+        node.destroy_node()
+        if rclpy.ok():
+            rclpy.shutdown()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
