@@ -100,7 +100,7 @@ CONTACT = re.compile(
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
-    r"was\s+hit|was\s+struck|were\s+struck)\b", re.I)
+    r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into)\b", re.I)
 NEGATION = re.compile(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
 CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,
