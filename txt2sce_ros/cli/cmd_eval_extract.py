@@ -28,12 +28,14 @@ def run(args: argparse.Namespace) -> int:
     if not args.gold and not args.form_labels:
         raise InputError("give --gold and/or --form-labels", element="--gold")
     if args.pred:
-        preds = {s.report_id: s for s in load_sketches(args.pred) if isinstance(s, Sketch)}
+        results = list(load_sketches(args.pred))
     else:
         from ..text.pipeline import run_batch
         from ..text.readers import iter_inputs
 
-        preds = {s.report_id: s for s in run_batch(iter_inputs([args.input])) if isinstance(s, Sketch)}
+        results = list(run_batch(iter_inputs([args.input])))
+    preds = {s.report_id: s for s in results if isinstance(s, Sketch)}
+    seen = {s.report_id for s in results}  # error records count: as wrong, not as absent
     status = 0
     if args.gold:
         gold = []
@@ -41,7 +43,12 @@ def run(args: argparse.Namespace) -> int:
             if not isinstance(g, Sketch):
                 raise InputError(f"bad gold line: {g.error}", source=args.gold)
             gold.append(g)
-        ev = evaluate(gold, preds)
+        scored = [g for g in gold if g.report_id in seen]
+        if not scored:
+            raise InputError("no gold report id occurs in the predictions", source=args.pred or args.input)
+        ev = evaluate(scored, preds)
+        if len(scored) < len(gold):
+            print(f"({len(gold) - len(scored)} gold reports not among the predictions: left out)")
         print(format_table(ev, worst=args.worst))
         if args.check_targets and any(ev.accuracy(k) < v for k, v in TARGETS.items()):
             status = 1
