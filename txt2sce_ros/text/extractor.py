@@ -208,11 +208,13 @@ def _heading(d: _Doc, who: int) -> int | None:
         for m in d.ments[i]:
             ent = -1 if m.kind in ("ego", "egod") else m.entity
             if ent == who:
-                window = s[m.end:m.end + 90]
+                # Read up to the next party named in the sentence: its heading is its own.
+                nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
+                window = s[m.end:min([m.end + 120, *nxt])]
                 final = re.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
                 if final and who == -1:  # the AV "turned right from southbound X onto westbound Y": heads west
                     return heading_of(final.group(1) + "bound")
-                h = heading_of(window[:70])
+                h = heading_of(window)
                 if h is not None:
                     return h
     return None
@@ -488,7 +490,9 @@ def _collision_type(d: _Doc, partner: Entity | None, party: Party | None, obstac
     if party.position == "R6":
         return "rear_end" if party.lane == "same" and (rear_hit or re.search(r"\bbumper\b", s, re.I)) else "side_swipe"
     if party.position == "R5":
-        if party.lane == "same" and ("k" in party.actions or ego_actions.endswith(("a", "b", "i"))) and \
+        if party.lane == "same" and "k" in party.actions:
+            return "rear_end"  # backed into the AV behind it
+        if party.lane == "same" and ego_actions.endswith(("a", "b", "i")) and \
                 re.search(r"\b(?:rear|front)\s+(?:bumper|of)|\bbumper\b", s, re.I) and "m" not in party.actions:
             return "rear_end"
         if party.lane in ("left", "right") and re.search(r"\bside\b|\bmirror|\bfender|\bdoor|\bquarter", s, re.I) \
@@ -545,6 +549,12 @@ def extract(text: str, report_id: str) -> Sketch:
         pos, lane, known = _position(d, e, ego_heading, ego_turning, ego_actions)
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and _before_contact(d, a.sent, a.pos)]
         pacts = _prepend_mod_acts(d, e, pacts)
+        first_sent = ([m.sent for m in e.mentions if m.sent not in summary] or [e.first.sent])[0]
+        setup_stop = [k for k, a in enumerate(pacts) if a.code == "S" and a.sent == first_sent]
+        if setup_stop:
+            # "A passenger car, traveling in the same direction, was stopped in the adjacent lane": the scene's
+            # opening state is stopped; the participle before it only describes the car.
+            pacts = pacts[setup_stop[0]:]
         stopped = bool(re.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
         start, acts = _sequence(pacts, stopped=stopped, ego=False, side=lane)
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5":

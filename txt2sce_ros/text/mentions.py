@@ -204,7 +204,10 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         if kind in ("party", "obstacle") and _NEGATED_NP.search(s[max(0, m.start() - 40):m.start()]):
             kind = "group"  # "did not contact any vehicle": a negated mention names nobody
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
-        if out and out[-1].kind in ("party",) and kind == "party" and s[out[-1].end:m.start()].strip() == "":
+        gap = s[out[-1].end:m.start()] if out else ""
+        # "Toyota Corolla", "Mercedes SUV", and a make with a model code between: "Lexus RX 350 vehicle".
+        if out and out[-1].kind in ("party",) and kind == "party" and (gap.strip() == "" or (
+                out[-1].head in MAKES and re.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap))):
             prev = out.pop()
             if prev.category == "van" and cat == "car":
                 cat = "van"
