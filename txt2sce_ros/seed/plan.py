@@ -298,6 +298,7 @@ class Planner:
             self._place_ego_default()
         for o in sk.obstacles:
             self._plan_obstacle(o)
+        self._check_lane_changes(ego)
         # the ego's mission: route through its path, goal beyond the conflict
         self._ego_mission(ego_routes)
         return self.actors
@@ -446,6 +447,7 @@ class Planner:
         else:
             self._meet_parallel(p, actor, T, t, dn, mode)
         self._release_if_needed(actor)
+        self._check_lane_changes(actor)
         self._trim_trajectories(actor)
         self.actors.append(actor)
         self.choices["parties"].setdefault(p.id, {}).update({
@@ -598,6 +600,39 @@ class Planner:
                     self.lane_w else 0.0
                 actor.lat0 += shift if p.position != "R7" else shift
             actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+
+    def _check_lane_changes(self, actor: Actor) -> None:
+        """A lane change must start on a lane that has a neighbour on that side (not inside a one-lane junction
+        connector): move it to the nearest planned instant where one exists, else keep the lane (noted)."""
+        if not isinstance(actor.track, Track):
+            return
+        t, _, d = actor.profile(self.horizon)
+
+        def ok(at: float, rel: int) -> bool:
+            ref = actor.track.lane_at(actor.d0 + float(np.interp(at, t, d)))
+            return self.net.neighbour(ref, "left" if rel > 0 else "right") is not None
+
+        for k, ev in enumerate(actor.events):
+            lc = next((a for a in ev.actions if isinstance(a, LaneChangeAct)), None)
+            if lc is None or ok(ev.planned_time, lc.relative):
+                continue
+            cands = sorted((abs(c - ev.planned_time), c) for c in np.arange(0.0, self.horizon - 5.0, 0.25)
+                           if ok(float(c), lc.relative))
+            step = next((st for st in actor.lat_steps if abs(st.t - ev.planned_time) < 1e-6), None)
+            if cands:
+                new_t = round(float(cands[0][1]), 2)
+                actor.events[k] = EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t), new_t)
+                if step is not None:
+                    actor.lat_steps[actor.lat_steps.index(step)] = LateralStep(new_t, step.delta, step.duration)
+                actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it at {ev.planned_time} s")
+            else:
+                acts = tuple(a for a in ev.actions if not isinstance(a, LaneChangeAct)) or (
+                    SpeedAct(round(float(np.interp(ev.planned_time, t, actor.profile(self.horizon)[1])), 3),
+                             self.D.shape, self.D.dimension, self.D.dyn_value),)
+                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
+                if step is not None:
+                    actor.lat_steps.remove(step)
+                actor.notes.append(f"{ev.name}: no lane beside it anywhere on its path; lane kept")
 
     def _trim_trajectories(self, actor: Actor) -> None:
         """Start every trajectory at the point the actor has reached when its event fires."""

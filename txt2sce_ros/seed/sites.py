@@ -118,9 +118,21 @@ def _net(path: str) -> RoadNetwork:
     return load_network(path)
 
 
+def _map_db(path: str | Path):
+    """The map database (paper §III-A.2) of a file: its layout and control classification is what road matching
+    filters on. None when it cannot be built (the road model's own reading is used then)."""
+    try:
+        from ..mapdb import load_map_database
+
+        return load_map_database(Path(path))
+    except Exception:  # noqa: BLE001 - the database is an accelerator and classifier, never a hard dependency
+        return None
+
+
 def junction_sites(path: str | Path) -> list[JunctionSite]:
     net = _net(str(path))
     out = []
+    db = _map_db(path)
     ring_junctions = _roundabout_junctions(net)
     for jid in sorted(net.junctions):
         j = net.junctions[jid]
@@ -137,7 +149,17 @@ def junction_sites(path: str | Path) -> list[JunctionSite]:
                 if name and name not in legs:
                     legs[name] = b
             signalised = bool(a.signals)
-            out.append(JunctionSite(str(path), jid, a, legs, signalised, kind))
+            site_kind = kind
+            if db is not None and jid in db.junction_infos:
+                site_kind = db.junction_infos[jid].layout.value
+                try:
+                    control = db.approach(jid, rid).control.value
+                    signalised = control == "signal" and bool(a.signals)
+                    if control == "stop_sign" and not a.stop_sign:
+                        a = Approach(a.road_id, a.lanes, a.heading, a.turns, a.signals, True, a.length)
+                except Exception:  # noqa: BLE001 - an approach the database did not list keeps the road reading
+                    pass
+            out.append(JunctionSite(str(path), jid, a, legs, signalised, site_kind))
     return out
 
 
@@ -158,6 +180,7 @@ def _roundabout_junctions(net: RoadNetwork) -> set[str]:
 def road_sites(path: str | Path, *, min_length: float = 80.0) -> list[RoadSite]:
     net = _net(str(path))
     out = []
+    db = _map_db(path)
     import numpy as np
 
     for rid in sorted(net.roads):
@@ -188,5 +211,8 @@ def road_sites(path: str | Path, *, min_length: float = 80.0) -> list[RoadSite]:
                 lid += step
             kind = "parking" if road.road_type == "lowSpeed" or "parking" in road.name else (
                 "curve" if curv > 1.0 / 400.0 else "straight")
+            if db is not None and rid in db.segments:
+                layouts = {lay.value for lay in db.segments[rid].layouts}
+                kind = next((k for k in ("parking", "curve", "straight") if k in layouts), kind)
             out.append(RoadSite(str(path), rid, tuple(same), tuple(other), road.length, curv, tuple(curb), kind))
     return out
