@@ -49,7 +49,8 @@ class SimulationConfig:
     stop_on_ego_collision: bool = True     # planner mode: a crash ends the run (the oracle judges it)
     default_time_limit: float = 120.0
     scenario_id: str = ""
-    locate_free: bool = True               # road coordinates for free-moving entities every step
+    locate_free: bool | None = None        # locate free-moving entities every step (None: only if the
+                                           # scenario has an OffroadCondition; otherwise on demand)
 
     @classmethod
     def from_config(cls, **overrides: object) -> "SimulationConfig":
@@ -109,6 +110,8 @@ class Simulation:
         self.world.elements = index_elements(self.storyboard.stories)
         self.ego = entities[self.ego_name]
         self.ego.planner = self.config.ego_mode == "planner"
+        self.locate_free = (self.config.locate_free if self.config.locate_free is not None
+                            else any(True for _ in sc.root.iter("OffroadCondition")))
         self.recorder = _Recorder()
         self.done = False
         self.end_reason = self.verdict_hint = ""
@@ -144,7 +147,7 @@ class Simulation:
             ent.placed = False          # Init placements are the t = 0 state; everyone moves from step 1
             ent._prev_speed, ent._prev_h = ent.speed, ent.h
             if ent.track is None:
-                derive(w, ent, self.config.dt, ent.x, ent.y, self.config.locate_free)
+                derive(w, ent, self.config.dt, ent.x, ent.y, self.locate_free)
                 ent.accel = ent.yaw_rate = 0.0
         for story in self.storyboard.stories:
             story.start(w)
@@ -170,21 +173,28 @@ class Simulation:
 
     # -- the step -------------------------------------------------------------------------------------------------
     def step(self, command: ControlCommand | None = None) -> Frame:
+        """Advance one dt (the documented step function) and return the new frame."""
+        self.advance(command)
+        return self.frame()
+
+    def advance(self, command: ControlCommand | None = None) -> None:
+        """`step` without building the Frame (batch runs that only need the trajectory)."""
         if not self._started:
             self.reset()
         if self.done:
-            return self.frame()
+            return
         w, dt = self.world, self.config.dt
         # 1. triggers
         stop = self.storyboard.stop_trigger
         if stop is not None and stop.evaluate(w):
             fired = [c.name for g in stop.groups for c in g.conditions if c.last_value]
             self._finish("goal_reached" if any("goal" in n for n in fired) else "stop_trigger")
-            return self.frame()
+            return
         for story in self.storyboard.stories:
             story.tick(w)
         # 2. actions
-        before = [(e.x, e.y, e.road_t, e.road_id) for e in w.order]
+        before = [(e.x, e.y, e.road_t, e.road_id) if e.track is not None else (e.x, e.y, 0.0, None)
+                  for e in w.order]
         w.step_runs(dt)
         # 3 + 4. planner command and kinematics
         for ent, (px, py, pt, proad) in zip(w.order, before):
@@ -201,7 +211,7 @@ class Simulation:
         w.signals.step(w.t)
         for ent, (px, py, _pt, _pr) in zip(w.order, before):
             if ent.present:
-                derive(w, ent, dt, px, py, self.config.locate_free)
+                derive(w, ent, dt, px, py, self.locate_free)
                 ent._prev_speed, ent._prev_h = ent.speed, ent.h
         # 6. collisions
         for ent in w.order:
@@ -220,7 +230,6 @@ class Simulation:
             self._finish("goal_reached")
         elif w.t >= self.time_limit - 1e-9:
             self._finish("time_limit")
-        return self.frame()
 
     def _finish(self, reason: str, verdict_hint: str = "") -> None:
         self.done = True
@@ -270,6 +279,6 @@ class Simulation:
         self.reset()
         n = 0
         while not self.done and (max_steps is None or n < max_steps):
-            self.step(None)
+            self.advance(None)
             n += 1
         return self.status

@@ -42,7 +42,7 @@ def _switch_lane(world: "World", ent: "Entity", target_lane: int) -> None:
         ent.reverse = not ent.reverse       # keep travelling the same way in the world
     ent.track = new
     ent.offset = road_t - new.center_t(ent.s)
-    ent.lane_id = target_lane
+    ent._sync_road()
 
 
 @dataclass(frozen=True, slots=True)

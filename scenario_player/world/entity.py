@@ -18,8 +18,8 @@ if TYPE_CHECKING:
 class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
-                 "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "road_id",
-                 "lane_id", "road_s", "road_t", "heading_override", "corner_cache", "reverse", "placed")
+                 "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "_road",
+                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
@@ -41,10 +41,11 @@ class Entity:
         self.lane_locked = True                   # motion follows the lane (False: free kinematics)
         self._prev_speed = 0.0
         self._prev_h = 0.0
-        self.road_id: str | None = None
-        self.lane_id: int | None = None
-        self.road_s = 0.0
-        self.road_t = 0.0
+        # Road coordinates (road id, lane id, s, t). Lane-following entities keep them exact as they move;
+        # free-moving ones are located lazily, only when a condition or action asks (locating costs ~0.1 ms).
+        self._road: tuple[str | None, int | None, float, float] = (None, None, 0.0, 0.0)
+        self.road_stale = False
+        self.locator = None                       # callable(x, y, h) -> LanePoint | None, set by the World
         self.heading_override: float | None = None
         self.corner_cache = None
         self.placed = False                       # teleported during this step's triggers/actions
@@ -73,9 +74,38 @@ class Entity:
     def _sync_road(self) -> None:
         tr = self.track
         if tr is not None:
-            self.road_id, self.lane_id = tr.ref.road_id, tr.ref.lane_id
-            self.road_s = self.s
-            self.road_t = tr.center_t(self.s) + self.offset
+            self._road = (tr.ref.road_id, tr.ref.lane_id, self.s, tr.center_t(self.s) + self.offset)
+            self.road_stale = False
+
+    def _fresh(self) -> tuple[str | None, int | None, float, float]:
+        if self.road_stale:
+            self.road_stale = False
+            lp = self.locator(self.x, self.y, self.h) if self.locator is not None else None
+            if lp is not None:
+                self._road = (lp.road_id, lp.lane_id, lp.s, lp.t)
+                return self._road
+            self._road = (None, None, 0.0, 0.0)
+        return self._road
+
+    def set_road(self, road_id: str | None, lane_id: int | None, s: float, t: float) -> None:
+        self._road = (road_id, lane_id, s, t)
+        self.road_stale = False
+
+    @property
+    def road_id(self) -> str | None:
+        return self._fresh()[0]
+
+    @property
+    def lane_id(self) -> int | None:
+        return self._fresh()[1]
+
+    @property
+    def road_s(self) -> float:
+        return self._fresh()[2]
+
+    @property
+    def road_t(self) -> float:
+        return self._fresh()[3]
 
     def state(self, t: float) -> EntityState:
         sp = self.spec

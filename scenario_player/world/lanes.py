@@ -20,7 +20,7 @@ SAMPLE_DS = 0.25     # m; chord error on a 50 m radius is 0.16 mm
 
 class LaneTrack:
     __slots__ = ("ref", "forward", "s0", "s1", "s", "x", "y", "h", "nx", "ny", "tc", "arc", "length", "_sl",
-                 "_al", "__weakref__")
+                 "_al", "_hint", "__weakref__")
 
     def __init__(self, net: RoadNetwork, ref: LaneRef) -> None:
         road = net.road(ref.road_id)
@@ -36,20 +36,32 @@ class LaneTrack:
         _, _, href = net.reference(ref.road_id, s_eval)
         inner, outer = net.lane_bounds(ref.road_id, ref.lane_id, s_eval, ref.section)
         self.forward = net.lane_forward(ref.road_id, ref.lane_id, float(s_eval[0]))
-        self.s, self.x, self.y = s, np.asarray(x, float), np.asarray(y, float)
+        self.s = s
+        self.x, self.y = np.asarray(x, float), np.asarray(y, float)
         self.h = np.unwrap(np.asarray(h, float))
         self.nx, self.ny = -np.sin(href), np.cos(href)      # unit +t
         self.tc = 0.5 * (inner + outer)
         seg = np.hypot(np.diff(self.x), np.diff(self.y))
         self.arc = np.concatenate([[0.0], np.cumsum(seg)])
         self.length = float(self.arc[-1])
+        # Scalar lookups run on Python lists: indexing numpy arrays one float at a time is several times slower.
         self._sl = self.s.tolist()
         self._al = self.arc.tolist()
+        self.x, self.y, self.h = self.x.tolist(), self.y.tolist(), self.h.tolist()
+        self.nx, self.ny, self.tc = self.nx.tolist(), self.ny.tolist(), self.tc.tolist()
+        self._hint = 0
 
     # -- scalar interpolation (bisect on Python lists beats np.interp for one value) --------------------------------
     def _idx(self, keys: list[float], v: float) -> tuple[int, float]:
-        i = bisect.bisect_right(keys, v) - 1
-        i = 0 if i < 0 else (len(keys) - 2 if i > len(keys) - 2 else i)
+        i = self._hint
+        # Entities move a little each step: try the last segment and its neighbour before bisecting.
+        if not (keys[i] <= v < keys[i + 1]):
+            if i + 2 < len(keys) and keys[i + 1] <= v < keys[i + 2]:
+                i += 1
+            else:
+                i = bisect.bisect_right(keys, v) - 1
+                i = 0 if i < 0 else (len(keys) - 2 if i > len(keys) - 2 else i)
+            self._hint = i
         span = keys[i + 1] - keys[i]
         f = (v - keys[i]) / span if span > 0 else 0.0
         return i, f

@@ -149,12 +149,17 @@ def derive(world: "World", ent: "Entity", dt: float, px: float, py: float, locat
     ent.yaw_rate = _wrap(ent.h - ent._prev_h) / dt
     ent.odometer += math.hypot(ent.x - px, ent.y - py)
     ent.standstill_time = ent.standstill_time + dt if abs(ent.speed) < 1e-3 else 0.0
-    if locate and (ent.track is None or not ent.lane_locked):
+    if ent.track is None or not ent.lane_locked:
+        if not locate:
+            ent.road_stale = True           # located on demand
+            return
         lp = world.net.locate(ent.x, ent.y, ent.h)
         if lp is not None and lp.inside:
-            ent.road_id, ent.lane_id, ent.road_s, ent.road_t = lp.road_id, lp.lane_id, lp.s, lp.t
+            ent.set_road(lp.road_id, lp.lane_id, lp.s, lp.t)
             ent.offroad_time = None
         else:
             ent.offroad_time = (ent.offroad_time or 0.0) + dt
             if lp is not None:
-                ent.road_id, ent.lane_id, ent.road_s, ent.road_t = lp.road_id, lp.lane_id, lp.s, lp.t
+                ent.set_road(lp.road_id, lp.lane_id, lp.s, lp.t)
+            else:
+                ent.set_road(None, None, 0.0, 0.0)

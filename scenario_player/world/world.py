@@ -34,6 +34,8 @@ class World:
         self.tracks = TrackCache.of(net)
         self.entities = entities
         self.order = list(entities.values())
+        for ent in self.order:
+            ent.locator = net.locate
         self.dt = dt
         self.t = 0.0
         self.step_index = 0
