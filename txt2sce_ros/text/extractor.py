@@ -86,7 +86,7 @@ def _find_contact(d: _Doc) -> None:
                     partner = best.entity
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
-                    if owner == partner or d.ents[door].first.sent == i:
+                    if d.ents[door].first.sent == i:
                         partner = door
             candidates.append((i, m.start(), partner))
     if not candidates:
@@ -487,6 +487,8 @@ def _collision_type(d: _Doc, partner: Entity | None, party: Party | None, obstac
     assert party is not None
     rear_hit = re.search(r"\brear\b(?!\s+(?:driver|passenger|left|right)?\s*(?:side|door|quarter|wheel))", s, re.I) \
         and not re.search(r"\b(?:side|door|mirror|quarter|fender)\b", s, re.I)
+    if party.position == "R6" and party.lane == "same" and ego_actions.endswith("k"):
+        return "rear_end"  # the AV backed into the party behind it
     if party.position == "R6":
         return "rear_end" if party.lane == "same" and (rear_hit or re.search(r"\bbumper\b", s, re.I)) else "side_swipe"
     if party.position == "R5":

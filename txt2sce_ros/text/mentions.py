@@ -110,6 +110,11 @@ def normalise(text: str) -> str:
     t = _PAREN_DEF.sub("", t)
     for rx in _EGO_RES:
         t = rx.sub(" EGO", t)
+    if re.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
+        # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us").
+        t = re.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
+        t = re.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
+                   "EGO's", t)
     t = re.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
     t = EGO_DRIVER.sub(_ego_driver, t)
     t = re.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
