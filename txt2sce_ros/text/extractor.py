@@ -98,6 +98,12 @@ def _find_contact(d: _Doc) -> None:
         named = [c for c in candidates if c[2] is not None]
         if named:
             chosen = (chosen[0], chosen[1], named[-1][2])
+    if chosen[2] is None and not _CONTACT_NOTHING.search(d.sents[chosen[0]]):
+        # "Shortly thereafter, contact was made with the AV's front passenger side": the party in focus did it.
+        recent = [m.entity for j in range(max(0, chosen[0] - 2), chosen[0]) for m in d.ments[j]
+                  if m.kind == "party" and m.entity >= 0 and j not in d.summary and not d.ents[m.entity].parked]
+        if recent:
+            chosen = (chosen[0], chosen[1], recent[-1])
     d.contact_sent, d.contact_pos, d.partner = chosen
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
@@ -301,7 +307,14 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         side = _side(text) or ("right" if re.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
                                                      re.I) else None)
         if side is None:
-            side = _side(ctx) or "same"
+            side = _side(ctx)
+        if side is None and re.search(r"\badjacent\b|\bparallel\b|\balongside\b|\bbeside\b|\bnext\s+to\b", text,
+                                      re.I):
+            # Beside an AV in the leftmost lane is to its right (and the other way round).
+            own = re.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:\w+\s+)?lane",
+                            d.text)
+            side = {"left": "right", "right": "left"}.get(own.group(1).lower()) if own else None
+        side = side or "same"
         if d.junction and ego_turning and re.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
         return "R5", side, True
@@ -435,7 +448,10 @@ def _sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) ->
     return start, s
 
 
-def _ego_sequence(d: _Doc, first_party_pos: tuple[int, int] | None) -> tuple[str, str]:
+def _ego_sequence(d: _Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
+    """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
+    or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
+    interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green)."""
     acts = [a for a in d.acts if a.who == -1 and a.sent not in d.summary and _before_contact(d, a.sent, a.pos)]
     if first_party_pos is None:
         return _sequence(acts, stopped=False, ego=True, side=None)
@@ -451,6 +467,11 @@ def _ego_sequence(d: _Doc, first_party_pos: tuple[int, int] | None) -> tuple[str
     post = [a for a in acts if (a.sent, a.pos) >= (fs, clause_start)]
     stopped = False
     prefix: list[Act] = []
+    stops = [k for k, a in enumerate(pre) if a.code in ("h", "S")]
+    if party_first and stops and any(a.code in ("a", "i", "b", "A") for a in pre[stops[-1] + 1:]):
+        moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
+        return _sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
+                         side=None)
     if pre:
         last = pre[-1]
         if last.code in ("h", "S"):
@@ -541,7 +562,10 @@ def extract(text: str, report_id: str) -> Sketch:
         first_pos = p if first_pos is None or p < first_pos else first_pos
     junction = d.junction = is_junction([s if i not in summary else "" for i, s in enumerate(sents)],
                                         first_pos[0] if first_pos else 0)
-    ego_start, ego_actions = _ego_sequence(d, first_pos)
+    first_is_party = bool(parties) and (not obstacles or min(
+        (([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].sent,
+         ([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].start) for e in parties) == first_pos)
+    ego_start, ego_actions = _ego_sequence(d, first_pos, party_first=first_is_party)
     ego_heading = _heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(re.search(r"\bturn(?:ed|ing)\b", t)) and junction
     npcs: list[Party] = []

@@ -82,7 +82,7 @@ OBSTACLE_HEADS: dict[str, str] = {
     "traffic cone": "cone", "cone": "cone", "pylon": "cone", "delineator": "cone",
     "curb": "barrier", "kerb": "barrier", "median": "barrier", "divider": "barrier", "traffic island": "barrier",
     "island": "barrier", "guardrail": "barrier", "guard rail": "barrier", "barrier": "barrier", "gate": "barrier",
-    "wall": "barrier", "fence": "barrier", "k-rail": "barrier", "barricade": "barrier", "railing": "barrier",
+    "wall": "barrier", "abutment": "barrier", "embankment": "barrier", "planter": "barrier", "boulder": "other", "fence": "barrier", "k-rail": "barrier", "barricade": "barrier", "railing": "barrier",
     "pole": "pole", "post": "pole", "bollard": "pole", "hydrant": "pole", "sign": "pole", "signpost": "pole",
     "parking meter": "pole", "light pole": "pole", "utility pole": "pole", "column": "pole", "pillar": "pole",
     "animal": "animal", "dog": "animal", "deer": "animal", "cat": "animal", "bird": "animal", "coyote": "animal",
@@ -101,7 +101,7 @@ CONTACT = re.compile(
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
-    r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into)\b", re.I)
+    r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into|contact\s+(?:was\s+made|occurred))\b", re.I)
 NEGATION = re.compile(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
 CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,
