@@ -1,0 +1,129 @@
+"""The player node over real DDS (its own process) against a trivial planner node in this process:
+ROS lock-step gives the same trajectory as the batch core; a planner that stops answering ends the run as an error.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from scenario_player import Simulation, SimulationConfig, load_scenario
+from txt2sce_ros.contract import ControlCommand, RunStatus
+from txt2sce_ros.ros_env import pick_domain_id, ros_environment
+
+from .conftest import xosc
+
+SIM_SECONDS = 3.0
+
+
+def policy(k: int, speed: float) -> ControlCommand:
+    """Depends only on the step index and the ego speed, both exact over DDS (float64 fields, ns stamps)."""
+    return ControlCommand(t=k * 0.05, speed=min(speed + 0.08, 33.0), yaw_rate=0.04 * math.sin(0.2 * k))
+
+
+def batch_ego() -> np.ndarray:
+    sim = Simulation(load_scenario(xosc("cut-in")), SimulationConfig(ego_mode="planner", time_limit=SIM_SECONDS))
+    frame = sim.reset()
+    k = 0
+    while not sim.done:
+        frame = sim.step(policy(k, frame.ego.speed))
+        k += 1
+    return sim.trajectory["Ego"]
+
+
+@pytest.fixture()
+def ros(tmp_path: Path):
+    rclpy = pytest.importorskip("rclpy")
+    env = ros_environment(domain_id=pick_domain_id(f"{tmp_path}:{os.getpid()}:{time.time_ns()}"),
+                          log_dir=tmp_path / "ros_log")
+    for key in ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_DOMAIN_ID", "ROS_LOG_DIR", "FASTRTPS_DEFAULT_PROFILES_FILE",
+                "RMW_IMPLEMENTATION"):
+        os.environ[key] = env[key]
+    rclpy.init()
+    yield env
+    rclpy.shutdown()
+
+
+def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, **params: object
+                ) -> tuple[dict[int, tuple[float, float, float, float]], list[RunStatus]]:
+    """Start the player node (subprocess) on cut-in.xosc with this process as the planner; return the ego states
+    by step and the run statuses received."""
+    from geometry_msgs.msg import TwistStamped
+    from nav_msgs.msg import Odometry
+    from rclpy.executors import SingleThreadedExecutor
+    from rclpy.node import Node
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    from txt2sce_ros.contract import TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_RUN_STATUS
+    from txt2sce_ros.launcher import node_command
+    from txt2sce_ros.ros_io import command_to_twist, quat_to_yaw, stamp_key
+
+    node = Node("trivial_planner")
+    ex = SingleThreadedExecutor()
+    ex.add_node(node)
+    reliable = QoSProfile(depth=100, reliability=ReliabilityPolicy.RELIABLE)
+    latched = QoSProfile(depth=50, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    pub = node.create_publisher(TwistStamped, TOPIC_COMMAND, reliable)
+    ego: dict[int, tuple[float, float, float, float]] = {}
+    statuses: list[RunStatus] = []
+
+    def on_ego(msg: Odometry) -> None:
+        k = round(stamp_key(msg.header.stamp) / 50_000_000)
+        p, v = msg.pose.pose.position, msg.twist.twist.linear.x
+        ego[k] = (p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), v)
+        if answer_steps is None or k < answer_steps:
+            cmd = command_to_twist(policy(k, v))
+            cmd.header.stamp = msg.header.stamp
+            pub.publish(cmd)
+
+    node.create_subscription(Odometry, TOPIC_EGO_ODOM, on_ego, reliable)
+    node.create_subscription(String, TOPIC_RUN_STATUS, lambda m: statuses.append(RunStatus.from_json(m.data)),
+                             latched)
+    log = open(tmp_path / "player.log", "wb")
+    proc = subprocess.Popen(node_command("scenario_player_node", {
+        "scenario_files": [str(xosc("cut-in"))], "lock_step": True, "time_limit": SIM_SECONDS,
+        "exit_when_idle": True, "startup_timeout": 20.0, **params}), env=env, stdout=log,
+        stderr=subprocess.STDOUT, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not any(s.state == "finished" for s in statuses) and time.monotonic() < deadline:
+            ex.spin_once(timeout_sec=0.02)
+        proc.wait(timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.terminate()
+            proc.wait(timeout=5)
+        ex.remove_node(node)
+        node.destroy_node()
+        log.close()
+    assert statuses, (tmp_path / "player.log").read_text()
+    return ego, statuses
+
+
+def test_lockstep_ros_run_equals_batch_run(ros, tmp_path: Path) -> None:
+    ego, statuses = _run_player(ros, tmp_path, None, planner_timeout=10.0)
+    final = statuses[-1]
+    assert final.state == "finished" and final.end_reason == "time_limit" and final.verdict_hint == ""
+    batch = batch_ego()
+    steps = sorted(ego)
+    assert steps == list(range(len(batch))), "every step published once, in order"
+    ros_rows = np.array([ego[k] for k in steps])
+    # Positions and speeds bit-identical; heading through a quaternion round trip to 1e-12.
+    assert np.array_equal(ros_rows[:, [0, 1, 3]], batch[:, [1, 2, 4]])
+    assert np.allclose(np.unwrap(ros_rows[:, 2]), np.unwrap(batch[:, 3]), atol=1e-12)
+    assert batch[-1, 4] > batch[0, 4] + 1.0          # the planner's commands really drove the ego
+
+
+def test_planner_that_stops_answering_ends_the_run_as_error(ros, tmp_path: Path) -> None:
+    ego, statuses = _run_player(ros, tmp_path, 10, planner_timeout=0.5)
+    final = statuses[-1]
+    assert final.state == "finished"
+    assert final.end_reason == "planner_not_responding" and final.verdict_hint == "error"
+    assert max(ego) == 10                           # it waited at step 10 and went no further
