@@ -29,7 +29,7 @@ from txt2sce_ros.contract import (TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL, TOP
                                   ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
 from txt2sce_ros.road import RoadNetwork, load_network
-from txt2sce_ros.ros_io import FrameAssembler, command_to_twist, pose_to_goal
+from txt2sce_ros.ros_io import FrameAssembler, command_to_twist, pose_to_goal, stamp_key, to_stamp
 
 from .environment import friction_from_xosc
 from .faults import Faults
@@ -59,7 +59,9 @@ class PlannerNode(Node):
         self.goal: Goal | None = None
         self.planner: Planner | None = None
         self.pending: Frame | None = None
-        self.last_t = -1.0
+        self.last_key = -1                  # stamp (ns) of the last frame answered
+        self.fresh_scenario = False         # an envelope came after the last answered frame
+        self.awaiting_scenario = True       # frames of a new run wait for its envelope
         self.assembler = FrameAssembler()
         self.pub = self.create_publisher(TwistStamped, TOPIC_COMMAND, STREAM_QOS)
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, LATCHED_QOS)
@@ -73,23 +75,28 @@ class PlannerNode(Node):
             self.get_logger().warn(f"fault modes on: {', '.join(self.faults.active())}")
 
     # --- inputs -------------------------------------------------------------------------------------------------
+    #
+    # A new run shows as frames whose time went back. Its scenario envelope (the map) may arrive before or after
+    # its first frames (different topics, no order between them), so a frame of a new run waits until the
+    # envelope received since the previous run has been read; the latched goal is taken whenever it comes.
 
     def _on_scenario(self, msg: String) -> None:
         try:
             env = ScenarioEnvelope.from_json(msg.data)
             if env.map_xodr:
-                self.network = RoadNetwork.from_string(env.map_xodr, source=env.map_path or env.id)
+                network = RoadNetwork.from_string(env.map_xodr, source=env.map_path or env.id)
             else:
-                self.network = load_network(env.map_path)
-            self.friction = friction_from_xosc(env.xosc, source=env.id) if env.xosc else None
+                network = load_network(env.map_path)
+            friction = friction_from_xosc(env.xosc, source=env.id) if env.xosc else None
         except Txt2SceError as exc:
             self.get_logger().error(f"cannot use scenario: {exc}")
             return
-        self.get_logger().info(f"scenario {env.id}: map {env.map_path or '(inline)'}, friction {self.friction}")
-        # A new run starts at t = 0 again: forget the old run's frames.
-        self.assembler.reset()
-        self.pending = None
-        self._restart()
+        self.get_logger().info(f"scenario {env.id}: map {env.map_path or '(inline)'}, friction {friction}")
+        self.network, self.friction = network, friction
+        self.fresh_scenario = True
+        self.awaiting_scenario = False
+        self.planner = None
+        self._try_answer()
 
     def _on_goal(self, msg: PoseStamped) -> None:
         goal = pose_to_goal(msg)
@@ -97,36 +104,44 @@ class PlannerNode(Node):
             self.goal = goal
             if self.planner is not None:
                 self.planner.set_goal(goal)
-            else:
-                self._restart()
+            self._try_answer()
 
     def _on_markers(self, msg: MarkerArray) -> None:
+        if msg.markers:
+            self._new_run_check(stamp_key(msg.markers[0].header.stamp))
         self._handle(self.assembler.add_markers(msg))
 
     def _on_odom(self, msg: Odometry) -> None:
+        self._new_run_check(stamp_key(msg.header.stamp))
         self._handle(self.assembler.add_odometry(msg))
 
     # --- stepping -----------------------------------------------------------------------------------------------
 
-    def _restart(self) -> None:
-        """A new scenario (or the first goal): a fresh planner; a frame that waited for it is answered now."""
+    def _new_run_check(self, key: int) -> None:
+        if key >= self.last_key:
+            return
+        self.assembler.reset()                     # its record of answered steps would drop the new run's frames
+        self.last_key = -1
+        self.pending = None
         self.planner = None
-        self.last_t = -1.0
-        if self.network is not None and self.goal is not None:
+        # The envelope of this run came already (it is newer than the last answered frame) or is still to come.
+        self.awaiting_scenario = not self.fresh_scenario
+
+    def _handle(self, frame: Frame | None) -> None:
+        if frame is not None:
+            self.pending = frame
+            self._try_answer()
+
+    def _try_answer(self) -> None:
+        if self.pending is None or self.awaiting_scenario or self.network is None or self.goal is None:
+            return
+        if self.planner is None:
             friction = self.friction_override if self.friction_override is not None else self.friction
             self.planner = Planner(self.network, self.goal, self.params, faults=self.faults,
                                    road_friction=friction)
-        if self.pending is not None and self.planner is not None:
-            frame, self.pending = self.pending, None
-            self._handle(frame)
-
-    def _handle(self, frame: Frame | None) -> None:
-        if frame is None:
-            return
-        if self.planner is None:
-            self.pending = frame                       # answered once the map and the goal are here
-            return
-        self.last_t = frame.t
+        frame, self.pending = self.pending, None
+        self.last_key = stamp_key(to_stamp(frame.t))
+        self.fresh_scenario = False
         self.pub.publish(command_to_twist(self.planner.step(frame)))
 
 
