@@ -20,9 +20,11 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
-    ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
+    ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
+          r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
           r"\bbacking\b"),
-    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|\binto\s+a\s+(?:parallel\s+)?parking\s+"
+    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
+          r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
           r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb"),
     ("h", r"\b(?:came|come|comes|coming|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|slow(?:ed|ing|s)?\s+"
           r"to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
@@ -82,7 +84,8 @@ _HEADING = re.compile(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driv
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 
-_RELATIVE = re.compile(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
+_RELATIVE = re.compile(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?"
+                       r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
 

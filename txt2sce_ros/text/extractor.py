@@ -23,7 +23,8 @@ _BOILERPLATE = re.compile(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+supplement
                           r"updated)\b|\bsubmitted\b", re.I)
 _DOOR = re.compile(r"\bopen(?:ed|ing|s)?\s+(?:\w+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
                    r"\b|\bdooring\b", re.I)
-_AROUND = re.compile(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?"
+_AROUND = re.compile(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
+                     r"(?:the\s+(?:left|right)\s+side\s+of\s+)?"
                      r"(?:a|an|the|another)?\s*(?:[\w-]+\s+){0,3}$", re.I)
 _AROUND_ONLY = re.compile(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?(?:a|an|the|another)?\s*"
                           r"(?:[\w-]+\s+){0,3}$|\baround\s+(?:a|an|the)\s+[\w\s-]{0,30}\band\s+(?:a|an|the)?\s*$", re.I)
@@ -194,7 +195,8 @@ def _ctx(d: _Doc, e: Entity) -> str:
     return " | ".join(parts)
 
 
-_TURN_WORDS = re.compile(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|\b(?:left|right)\s+lane"
+_TURN_WORDS = re.compile(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
+                         r"\b(?:left|right)\s+lane"
                          r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
                          r"scene", re.I)
 
@@ -233,7 +235,8 @@ def ego_contact_part(d: _Doc) -> tuple[str | None, str | None]:
         return None, None
     s = d.sents[d.contact_sent]
     parts = [m.group(1) for m in re.finditer(r"((?:[\w-]+\s+){1,6})(?:of|on|to)\s+EGO\b", s)]
-    passive = re.search(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)\b([^.]{0,80}?)"
+    passive = re.search(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)\b"
+                        r"([^.]{0,80}?)"
                         r"(?:\bby\b|$)", s)
     if passive:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
@@ -273,7 +276,8 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         if side is None and re.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
             side = "right"
         return "R6", side or "same", True
-    oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+way\b|\bon-?coming\b", ctx + pre,
+    oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+way\b|\bon-?coming\b",
+                         ctx + pre,
                          re.I)
     h = _heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
@@ -298,7 +302,8 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
         return "R6", cside or "same", True
-    lane_ctx = re.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|lane\s+to\s+the\s+"
+    lane_ctx = re.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
+                         r"lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", _TURN_WORDS.sub(" ", ctx), re.I)
@@ -666,7 +671,8 @@ def _attach_towed(d: _Doc) -> None:
         for m in d.ments[i]:
             if m.kind != "obstacle" or m.entity < 0:
                 continue
-            if re.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,3}$",
+            if re.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*"
+                         r"(?:[\w-]+\s+){0,3}$",
                          s[:m.start + len(m.mods) + 1]):
                 owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start and x.entity >= 0]
                 if owners:

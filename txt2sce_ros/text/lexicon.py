@@ -16,7 +16,8 @@ COMPANIES = (
     "imagry", "mobileye", "qcraft", "vay", "valeo", "nvidia", "wayve", "woven planet", "tesla autopilot",
 )
 _CO = "|".join(COMPANIES)
-_AV_NOUN = r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|robotaxi|suv)"
+_AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|"
+            r"robotaxi|suv)")
 
 #: Ways the narratives name the AV (the ego). Order matters: longest first, applied to normalised text.
 EGO_PATTERNS: tuple[str, ...] = (
@@ -78,11 +79,13 @@ MAKES = ("toyota", "honda", "nissan", "ford", "chevrolet", "chevy", "tesla", "le
 OBSTACLE_HEADS: dict[str, str] = {
     "debris": "debris", "sheet metal": "debris", "metal": "debris", "rod": "debris",
     "object": "debris", "rock": "debris", "crate": "debris", "bucket": "debris", "mattress": "debris",
-    "furniture": "debris", "tarp": "debris", "manhole cover": "other", "manhole": "other", "ladder": "debris", "pallet": "debris", "lumber": "debris",
+    "furniture": "debris", "tarp": "debris", "manhole cover": "other", "manhole": "other", "ladder": "debris",
+    "pallet": "debris", "lumber": "debris",
     "traffic cone": "cone", "cone": "cone", "pylon": "cone", "delineator": "cone",
     "curb": "barrier", "kerb": "barrier", "median": "barrier", "divider": "barrier", "traffic island": "barrier",
     "island": "barrier", "guardrail": "barrier", "guard rail": "barrier", "barrier": "barrier", "gate": "barrier",
-    "wall": "barrier", "abutment": "barrier", "embankment": "barrier", "planter": "barrier", "boulder": "other", "fence": "barrier", "k-rail": "barrier", "barricade": "barrier", "railing": "barrier",
+    "wall": "barrier", "abutment": "barrier", "embankment": "barrier", "planter": "barrier", "boulder": "other",
+    "fence": "barrier", "k-rail": "barrier", "barricade": "barrier", "railing": "barrier",
     "pole": "pole", "post": "pole", "bollard": "pole", "hydrant": "pole", "sign": "pole", "signpost": "pole",
     "parking meter": "pole", "light pole": "pole", "utility pole": "pole", "column": "pole", "pillar": "pole",
     "animal": "animal", "dog": "animal", "deer": "animal", "cat": "animal", "bird": "animal", "coyote": "animal",

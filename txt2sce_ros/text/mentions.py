@@ -23,7 +23,8 @@ _DET_END = re.compile(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s
 _PAREN_DEF = re.compile(r"\s*\((?:[^()]{0,40})\)")  # ("Waymo AV"), (Vehicle 2), (car 1): definitions, not text
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
 _ABBREV = re.compile(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
-                     r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
+                     r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
+                     r"\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
 _SENT_SPLIT = re.compile(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
 _STREET_SUFFIX = re.compile(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
                             r"Dr\b|Way|Lane|Ln\b|Parkway|Pkwy|Highway|Hwy|Place|Pl\b|Court|Ct\b|Terrace|Circle|"
