@@ -457,7 +457,9 @@ def _ego_sequence(d: _Doc, first_party_pos: tuple[int, int] | None, *, party_fir
     """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
     or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
     interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green)."""
-    acts = [a for a in d.acts if a.who == -1 and a.sent not in d.summary and _before_contact(d, a.sent, a.pos)]
+    # A summary sentence still tells the AV's state ("was stopped ... when a vehicle reversed into it").
+    acts = [a for a in d.acts if a.who == -1 and (a.sent not in d.summary or a.code == "S")
+            and _before_contact(d, a.sent, a.pos)]
     if first_party_pos is None:
         return _sequence(acts, stopped=False, ego=True, side=None)
     fs, fp = first_party_pos

@@ -21,7 +21,7 @@ _TURN_ONTO = re.compile(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^.,
 _PRIOR_TURN = re.compile(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
 _ROUNDABOUT = re.compile(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
-_PARKING = re.compile(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:\w+\s+)?(?:parking\s+(?:lot|"
+_PARKING = re.compile(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"
                       r"structure|garage|facility)|garage|parking\s+area|depot|lot)\b|\bparking\s+(?:structure|"
                       r"garage)\b", re.I)
 _CURVE = re.compile(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
