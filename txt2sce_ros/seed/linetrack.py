@@ -58,6 +58,8 @@ class LineTrack:
         keep = self.corner_d > from_d + 0.5
         first = self.world(from_d)
         p = np.vstack([[first.x, first.y], self.corners[keep]])
+        if len(p) < 2:  # at (or past) the end: a polyline needs two vertices; continue 1 m along the last heading
+            p = np.vstack([p, [first.x + math.cos(first.h), first.y + math.sin(first.h)]])
         hs = np.arctan2(np.diff(p[:, 1]), np.diff(p[:, 0]))
         hs = np.concatenate([hs, hs[-1:]])
         return tuple(WorldPose(round(float(x), 3), round(float(y), 3), round(float(h), 4))

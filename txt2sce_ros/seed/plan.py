@@ -587,19 +587,21 @@ class Planner:
             actor.notes.append(f"start {actor.d0:.1f} m outside its lane; clamped")
             actor.d0 = float(np.clip(actor.d0, 0.0, actor.track.length))
         if lat_conflict and self.sketch.collision.with_ == p.id and not set(p.actions) & set("fgm"):
-            # a pass or graze without a lane change: drive close enough to touch (side-swipe reported)
-            side = 1.0 if (p.lane == "right") else -1.0
-            if p.position == "R7":
-                side = 1.0  # oncoming lane is to the AV's left == to the party's left as well
+            # a pass or graze without a lane change: drive close enough to touch (side-swipe reported). Measured
+            # in the AV's frame at the meeting, so it holds for neighbour lanes, curb riders and oncoming lanes.
             if p.lane == "same" and p.position != "R7":
                 return
-            gap = self.lane_w - ego.width / 2 - actor.width / 2 + 0.3   # 0.3 m of overlap: they touch
-            shift = side * max(gap, 0.0)
-            if abs(actor.lat0) < 1e-6 or abs(actor.lat0) >= self.lane_w:
-                actor.lat0 = (actor.lat0 - math.copysign(self.lane_w, actor.lat0)) if abs(actor.lat0) >= \
-                    self.lane_w else 0.0
-                actor.lat0 += shift if p.position != "R7" else shift
-            actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+            e_pose = ego.track.world(de_T)
+            p_pose = actor.track.world(d_target, actor.lat0)
+            vx, vy = p_pose.x - e_pose.x, p_pose.y - e_pose.y
+            rel = -math.sin(e_pose.h) * vx + math.cos(e_pose.h) * vy      # party left of the AV: > 0
+            if abs(rel) < 1e-6:
+                rel = 1e-6 if p.lane == "left" else -1e-6
+            desired = math.copysign(ego.width / 2 + actor.width / 2 - 0.3, rel)   # 0.3 m of overlap: they touch
+            if abs(rel) > abs(desired):
+                same_dir = math.cos(p_pose.h - e_pose.h) >= 0.0
+                actor.lat0 += (desired - rel) * (1.0 if same_dir else -1.0)
+                actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
 
     def _check_lane_changes(self, actor: Actor) -> None:
         """A lane change must start on a lane that has a neighbour on that side (not inside a one-lane junction
