@@ -70,56 +70,117 @@ def _quat(h: float) -> tuple[float, float, float, float]:
 
 # --- encoders (the content of serialize_message(ros_io.<conversion>(...)), padding zeroed) --------------------------
 
+# The hot encoders below lay the bytes out by offset arithmetic (offsets relative to the end of the encapsulation
+# header) with cached pieces for what repeats (names, categories, constant fields); `_W` stays the reference
+# writer for the rest and for the cached pieces. Tests compare every encoder with rclpy's serialisation.
+_MAP = _u32.pack(len(MAP_FRAME) + 1) + MAP_FRAME.encode() + b"\x00"       # "map" as a CDR string (8 bytes)
+_STAMP = struct.Struct("<iI")
+_ODOM_BODY = struct.Struct("<7d288x6d288x")     # pose, its covariance (zeros), twist, its covariance (zeros)
+_MARKER_POSE = struct.Struct("<iii")
+_POSE_SCALE = struct.Struct("<10d")
+_STR: dict[str, bytes] = {}
+
+
+def _cdr_string(text: str) -> bytes:
+    raw = _STR.get(text)
+    if raw is None:
+        enc = text.encode()
+        raw = _u32.pack(len(enc) + 1) + enc + b"\x00"
+        if len(_STR) > 8192:
+            _STR.clear()
+        _STR[text] = raw
+    return raw
+
+
+def _stamp(t: float) -> bytes:
+    ns = int(round(t * 1e9))
+    return _STAMP.pack(ns // 1_000_000_000, ns % 1_000_000_000)
+
+
 def encode_odometry(e: EntityState) -> bytes:
-    w = _W()
-    w.header(e.t, MAP_FRAME)
-    w.string(e.name)
-    w.pack(_f64x7, 8, float(e.x), float(e.y), 0.0, *_quat(e.heading))
-    w.b += _ZEROS36
-    w.pack(_f64x3, 8, float(e.speed), float(e.accel), 0.0)
-    w.b += _f64x3.pack(0.0, 0.0, float(e.yaw_rate))
-    w.b += _ZEROS36
-    return bytes(w.b)
+    child = _cdr_string(e.name)
+    off = 16 + len(child)                   # stamp (8) + "map" (8) + child_frame_id
+    h = e.heading
+    return b"".join((HEADER, _stamp(e.t), _MAP, child, bytes((-off) % 8), _ODOM_BODY.pack(
+        float(e.x), float(e.y), 0.0, 0.0, 0.0, math.sin(h / 2.0), math.cos(h / 2.0),
+        float(e.speed), float(e.accel), 0.0, 0.0, 0.0, float(e.yaw_rate))))
 
 
 def encode_markers(frame: Frame) -> bytes:
     from txt2sce_ros.ros_io import _CATEGORY_COLOURS   # the same colours the rclpy path uses
 
     entities = (frame.ego, *frame.objects)
-    w = _W()
-    w.pack(_u32, 4, len(entities))
+    parts = [HEADER, _u32.pack(len(entities))]
+    off = 4
     for i, e in enumerate(entities):
-        w.header(e.t, MAP_FRAME)
-        w.string(e.category)
-        w.pack(_i32x3, 4, i, 1, 0)                         # id, CUBE, ADD
-        c, s = math.cos(e.heading), math.sin(e.heading)
-        w.pack(_f64x7, 8, float(e.x + e.center_x * c), float(e.y + e.center_x * s), float(e.height / 2.0),
-               *_quat(e.heading))
-        w.b += _f64x3.pack(float(e.length), float(e.width), float(e.height))
-        r, g, b = _CATEGORY_COLOURS.get(e.category, (0.6, 0.6, 0.6))
-        w.b += _f32x4.pack(r, g, b, 0.8)
-        w.b += _i32u32.pack(0, 0)                           # lifetime
-        w.b += b"\x00"                                      # frame_locked
-        w.pack(_u32, 4, 0)                                  # points
-        w.b += _u32.pack(0)                                 # colors
-        w.string("")                                        # texture_resource
-        w.pack(_i32u32, 4, 0, 0)                            # texture.header.stamp
-        w.string("")                                        # texture.header.frame_id
-        w.string("")                                        # texture.format
-        w.pack(_u32, 4, 0)                                  # texture.data
-        w.b += _u32.pack(0)                                 # uv_coordinates
-        w.string(e.name)                                    # text
-        w.string("")                                        # mesh_resource
-        w.string("")                                        # mesh_file.filename
-        w.pack(_u32, 4, 0)                                  # mesh_file.data
-        w.b += b"\x00"                                      # mesh_use_embedded_materials
-    return bytes(w.b)
+        pad = (-off) % 4
+        ns = _cdr_string(e.category)
+        off += pad + 16 + len(ns)           # header: stamp + "map"; then ns
+        pad2 = (-off) % 4
+        off += pad2 + 12                    # id, type, action
+        pad3 = (-off) % 8
+        off += pad3 + 80                    # pose (7 doubles) + scale (3 doubles)
+        key = (e.category, e.name)
+        tail = _MARKER_TAIL.get(key)
+        if tail is None:
+            tail = _marker_tail(e.category, e.name, _CATEGORY_COLOURS.get(e.category, (0.6, 0.6, 0.6)))
+            if len(_MARKER_TAIL) > 4096:
+                _MARKER_TAIL.clear()
+            _MARKER_TAIL[key] = tail
+        off += len(tail)
+        c, s, h = math.cos(e.heading), math.sin(e.heading), e.heading
+        parts += (bytes(pad), _stamp(e.t), _MAP, ns, bytes(pad2), _MARKER_POSE.pack(i, 1, 0), bytes(pad3),
+                  _POSE_SCALE.pack(float(e.x + e.center_x * c), float(e.y + e.center_x * s), float(e.height / 2.0),
+                                   0.0, 0.0, math.sin(h / 2.0), math.cos(h / 2.0),
+                                   float(e.length), float(e.width), float(e.height)),
+                  tail)
+    return b"".join(parts)
+
+
+_MARKER_TAIL: dict[tuple[str, str], bytes] = {}
+
+
+def _marker_tail(category: str, name: str, rgb: tuple[float, float, float]) -> bytes:
+    w = _W()                                            # offset 0 after the encapsulation: 8-aligned, as in place
+    w.b += _f32x4.pack(*rgb, 0.8)                       # color
+    w.b += _i32u32.pack(0, 0)                           # lifetime
+    w.b += b"\x00"                                      # frame_locked
+    w.pack(_u32, 4, 0)                                  # points
+    w.b += _u32.pack(0)                                 # colors
+    w.string("")                                        # texture_resource
+    w.pack(_i32u32, 4, 0, 0)                            # texture.header.stamp
+    w.string("")                                        # texture.header.frame_id
+    w.string("")                                        # texture.format
+    w.pack(_u32, 4, 0)                                  # texture.data
+    w.b += _u32.pack(0)                                 # uv_coordinates
+    w.string(name)                                      # text
+    w.string("")                                        # mesh_resource
+    w.string("")                                        # mesh_file.filename
+    w.pack(_u32, 4, 0)                                  # mesh_file.data
+    w.b += b"\x00"                                      # mesh_use_embedded_materials
+    return bytes(w.b[4:])
+
+
+_LIGHTS_BODY: dict[tuple[TrafficLightState, ...], bytes] = {}
 
 
 def encode_lights(lights: Iterable[TrafficLightState], t: float) -> bytes:
-    lights = list(lights)
+    lights = lights if isinstance(lights, tuple) else tuple(lights)
+    # Signals change state a few times per run, and the header before them has a fixed length ("map"), so the
+    # body's bytes (and its alignment) repeat from step to step: encode each distinct set once.
+    body = _LIGHTS_BODY.get(lights)
+    if body is None:
+        body = _encode_lights_body(lights)
+        if len(_LIGHTS_BODY) > 4096:
+            _LIGHTS_BODY.clear()
+        _LIGHTS_BODY[lights] = body
+    return HEADER + _stamp(t) + _MAP + body
+
+
+def _encode_lights_body(lights: tuple[TrafficLightState, ...]) -> bytes:
     w = _W()
-    w.header(t, MAP_FRAME)
+    w.header(0.0, MAP_FRAME)
+    start = len(w.b)
     w.pack(_u32, 4, len(lights))
     for light in lights:
         w.b += b"\x00"                                      # level OK
@@ -132,12 +193,11 @@ def encode_lights(lights: Iterable[TrafficLightState], t: float) -> bytes:
                            ("lane_ids", ",".join(str(i) for i in light.lane_ids))):
             w.string(key)
             w.string(value)
-    return bytes(w.b)
+    return bytes(w.b[start:])
 
 
 def encode_clock(t: float) -> bytes:
-    ns = int(round(t * 1e9))
-    return HEADER + _i32u32.pack(ns // 1_000_000_000, ns % 1_000_000_000)
+    return HEADER + _stamp(t)
 
 
 def encode_command(cmd: ControlCommand, frame_id: str = "ego") -> bytes:

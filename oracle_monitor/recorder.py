@@ -7,8 +7,11 @@ complete MCAP records on disk — and `close()` (called on shutdown, SIGINT, or 
 summary and `metadata.yaml`. A bag cut short by a crash has no metadata and no footer; `bagread.read_bag` reads
 such a bag record by record up to where it stops.
 
-The flush uses `McapWriter.close_chunk()` of rosbags 0.11 (pinned in requirements.txt): an internal method, kept
-behind `_flush` so one place changes if rosbags does.
+The flush uses `McapWriter.close_chunk()` of rosbags 0.11 (pinned in requirements.txt), and `write` goes to the
+storage's pending chunk directly with one struct.pack per message (the same record bytes rosbags writes, without
+its BytesIO per record and its per-message connection check), keeping the Writer's statistics itself:
+internals of that version, kept in `_flush` and `write` so one place changes if rosbags does. The round-trip tests
+read every recording back with rosbags' Reader and the mcap library, which catches any drift.
 
 Log times are the receive times (wall clock, ns, made strictly increasing) as `ros2 bag record` stamps them, so a
 reader sees messages in the order the live monitor saw them, and replay reproduces the original timing.
@@ -16,6 +19,7 @@ reader sees messages in the order the live monitor saw them, and replay reproduc
 
 from __future__ import annotations
 
+import struct
 import time
 from pathlib import Path
 from typing import Any
@@ -38,6 +42,41 @@ def typestore() -> Any:
     return _TYPESTORE
 
 
+_MESSAGE_RECORD = struct.Struct("<BQHIQQ")    # opcode 0x05, record length, channel, sequence, log, publish time
+
+
+def _fast_write(storage: Any, cid: int, ns: int, data: bytes | memoryview) -> None:
+    """What `McapWriter.write` of rosbags 0.11 does, with one struct.pack instead of a BytesIO per record: the
+    same bytes (a Message record appended to the pending chunk, indexed, chunk closed past 1 MiB)."""
+    if ns < storage.message_start_time:
+        storage.message_start_time = ns
+    if ns > storage.message_end_time:
+        storage.message_end_time = ns
+    storage.channel_stats[cid] += 1
+    chunk = storage.chunk
+    if ns < chunk.message_start_time:
+        chunk.message_start_time = ns
+    if ns > chunk.message_end_time:
+        chunk.message_end_time = ns
+    bio = chunk.bio
+    chunk.msgs[cid].append((ns, bio.tell()))
+    bio.write(_MESSAGE_RECORD.pack(0x05, 22 + len(data), cid, 0, ns, ns))
+    bio.write(data)
+    if bio.tell() > 2**20:
+        storage.close_chunk()
+
+
+_DEFINITIONS: dict[str, tuple[str, str]] = {}
+
+
+def _definition(msgtype: str) -> tuple[str, str]:
+    """(message definition text, RIHS01 hash) of a type, computed once per process (a few ms each)."""
+    if msgtype not in _DEFINITIONS:
+        ts = typestore()
+        _DEFINITIONS[msgtype] = (ts.generate_msgdef(msgtype, ros_version=2)[0], ts.hash_rihs01(msgtype))
+    return _DEFINITIONS[msgtype]
+
+
 class BagRecorder:
     """Writes one rosbag2 directory. Topics are added on first use with the type of `topics.TOPIC_TYPES` (or the
     `msgtype` given)."""
@@ -51,6 +90,7 @@ class BagRecorder:
         except WriterError as exc:
             raise InputError(f"cannot record here: {exc}", source=str(self.path)) from exc
         self._connections: dict[str, Any] = {}
+        self._cids: dict[str, int] = {}
         self._last_ns = 0
         self._last_flush = time.monotonic()
         self.count = 0
@@ -62,7 +102,8 @@ class BagRecorder:
             msgtype = msgtype or TOPIC_TYPES.get(topic)
             if msgtype is None:
                 raise InputError("no message type known for this topic", source=str(self.path), element=topic)
-            conn = self._writer.add_connection(topic, msgtype, typestore=typestore())
+            msgdef, rihs01 = _definition(msgtype)
+            conn = self._writer.add_connection(topic, msgtype, msgdef=msgdef, rihs01=rihs01)
             self._connections[topic] = conn
         return conn
 
@@ -75,11 +116,67 @@ class BagRecorder:
         if ns <= self._last_ns and log_time_ns is None:
             ns = self._last_ns + 1               # strictly increasing: readers keep the receive order
         self._last_ns = max(self._last_ns, ns)
-        self._writer.write(self._connection(topic, msgtype), ns, data)
+        conn = self._connections.get(topic) or self._connection(topic, msgtype)
+        # Writer.write() checks `conn in connections` (a list of dataclasses compared field by field) on every
+        # message; the connection is ours, so write to the storage and keep the Writer's statistics ourselves.
+        w = self._writer
+        _fast_write(w.storage, conn.id, ns, data)
+        w.counts[conn.id] += 1
+        if ns < w.min_timestamp:
+            w.min_timestamp = ns
+        if ns > w.max_timestamp:
+            w.max_timestamp = ns
         self.count += 1
         if self.flush_interval >= 0 and time.monotonic() - self._last_flush >= self.flush_interval:
             self._flush()
         return ns
+
+    def write_batch(self, items: list[tuple[str, bytes]]) -> None:
+        """Append several messages received together (one lock-step step), with consecutive log times: one
+        buffer write instead of one per message, for the in-process recorder's hot path."""
+        if self.closed:
+            raise InputError("recording already closed", source=str(self.path))
+        ns = max(time.time_ns(), self._last_ns + 1)
+        w = self._writer
+        storage = w.storage
+        chunk = storage.chunk
+        bio = chunk.bio
+        pos = bio.tell()
+        parts = []
+        counts = w.counts
+        stats = storage.channel_stats
+        index = chunk.msgs
+        pack = _MESSAGE_RECORD.pack
+        t = ns
+        cids = self._cids
+        for topic, data in items:
+            cid = cids.get(topic)
+            if cid is None:
+                cid = cids[topic] = self._connection(topic, None).id
+            rec = pack(0x05, 22 + len(data), cid, 0, t, t)
+            index[cid].append((t, pos))
+            pos += len(rec) + len(data)
+            parts.append(rec)
+            parts.append(data)
+            counts[cid] += 1
+            stats[cid] += 1
+            t += 1
+        last = t - 1
+        bio.write(b"".join(parts))
+        if ns < storage.message_start_time:
+            storage.message_start_time = ns
+        storage.message_end_time = max(storage.message_end_time, last)
+        if ns < chunk.message_start_time:
+            chunk.message_start_time = ns
+        chunk.message_end_time = max(chunk.message_end_time, last)
+        w.min_timestamp = min(w.min_timestamp, ns)
+        w.max_timestamp = max(w.max_timestamp, last)
+        self._last_ns = last
+        self.count += len(items)
+        if bio.tell() > 2**20:
+            storage.close_chunk()
+        if self.flush_interval >= 0 and time.monotonic() - self._last_flush >= self.flush_interval:
+            self._flush()
 
     def write_message(self, topic: str, msg: Any, *, log_time_ns: int | None = None) -> int:
         """Serialise an rclpy message (rclpy imported here only: the rest of the recorder works without it)."""

@@ -52,16 +52,21 @@ class RunWriter:
             self._w(c.TOPIC_GOAL, ros_io.goal_to_pose(goal))
 
     def frame(self, frame: Frame, command: ControlCommand | None = None) -> None:
-        # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation).
-        raw = self._raw
-        raw(c.TOPIC_CLOCK, cdr.encode_clock(frame.t))
-        raw(c.TOPIC_TRAFFIC_LIGHTS, cdr.encode_lights(frame.lights, frame.t))
-        for obj in frame.objects:
-            raw(c.TOPIC_OBJECTS_ODOM, cdr.encode_odometry(obj))
-        raw(c.TOPIC_OBJECTS_MARKERS, cdr.encode_markers(frame))
-        raw(c.TOPIC_EGO_ODOM, cdr.encode_odometry(frame.ego))
+        # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation) and
+        # into the bag as one batch.
+        odom = cdr.encode_odometry
+        items = [(c.TOPIC_CLOCK, cdr.encode_clock(frame.t)),
+                 (c.TOPIC_TRAFFIC_LIGHTS, cdr.encode_lights(frame.lights, frame.t))]
+        items.extend((c.TOPIC_OBJECTS_ODOM, odom(obj)) for obj in frame.objects)
+        items.append((c.TOPIC_OBJECTS_MARKERS, cdr.encode_markers(frame)))
+        items.append((c.TOPIC_EGO_ODOM, odom(frame.ego)))
         if command is not None:
-            raw(c.TOPIC_COMMAND, cdr.encode_command(command))
+            items.append((c.TOPIC_COMMAND, cdr.encode_command(command)))
+        if self._base is None:
+            self.rec.write_batch(items)
+        else:
+            for topic, data in items:
+                self._raw(topic, data)
 
     def violations(self, t: float, violations: Iterable[Violation]) -> None:
         vs = list(violations)
