@@ -87,8 +87,8 @@ def _find_contact(d: _Doc) -> None:
                     partner = best.entity
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
-                    if d.ents[door].first.sent == i:
-                        partner = door
+                    if d.ents[door].first.sent == i or (owner == partner and re.search(r"\bdoor", s[:m.start()])):
+                        partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
             candidates.append((i, m.start(), partner))
     if not candidates:
         return
@@ -295,8 +295,9 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
     if d.junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
-    if d.junction and re.search(r"\bfrom\s+the\s+(left|right)\b", ctx, re.I):
-        return ("R1" if re.search(r"\bfrom\s+the\s+left\b", ctx, re.I) else "R3"), None, True
+    from_side = re.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+(?:adjacent\s+|turn\s+|hand\s+)?(?:lane|side))", ctx, re.I)
+    if d.junction and from_side:
+        return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
     if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
         return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
@@ -619,7 +620,10 @@ def extract(text: str, report_id: str) -> Sketch:
         missing.append("npcs")
         if d.contact_sent is not None:
             missing.append("actions")
-    r = road(t, junction=junction)
+    # Road facts come from the story up to the contact ("pulled over at a nearby parking lot" afterwards is no
+    # part of the scene).
+    scene = " ".join(sents[:d.contact_sent + 1]) if d.contact_sent is not None else t
+    r = road(scene, junction=junction)
     if r.layout == "unknown":
         missing.append("road")
     sig = signal_state(t, layout=r.layout, control=r.control)

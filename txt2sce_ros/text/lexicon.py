@@ -99,7 +99,8 @@ PARKED_WORDS = re.compile(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoc
 
 #: Contact between two parties.
 CONTACT = re.compile(
-    r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes\s+contact|"
+    r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes?\s+contact|"
+    r"(?:resulting\s+in|causing)\s+(?:a\s+)?(?:contact|collision)|contact\s+between|"
     r"came\s+into\s+contact|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"

@@ -116,6 +116,13 @@ def normalise(text: str) -> str:
         t = re.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
         t = re.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
                    "EGO's", t)
+    if "EGO" not in t:
+        # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
+        # the narrative introduces is the AV, and so is that noun with "the" afterwards.
+        first = re.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,3}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
+        if first:
+            noun = first.group(1)
+            t = t[:first.start()] + "EGO" + re.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
     t = re.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
     t = EGO_DRIVER.sub(_ego_driver, t)
     t = re.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
