@@ -133,7 +133,10 @@ class Simulation:
                 w.note(f"ignored: Init action {type(spec).__name__} on planner-driven '{ent.name}'")
                 continue
             if planner and ent is self.ego and isinstance(spec, SpeedAction):
-                ent.speed = spec.target.speed(w)      # the initial speed only; the planner drives from here
+                # The initial speed only (a step sets it; a transition would start from standing still): the
+                # planner drives from here.
+                if spec.dynamics.shape == "step" or spec.dynamics.value == 0.0:
+                    ent.speed = spec.target.speed(w)
                 continue
             run = spec.start(w, ent)
             if run is not None:

@@ -50,3 +50,33 @@ def test_planner_ego_in_a_real_scenario_follows_commands(esmini) -> None:
     assert ego[-1, 4] == pytest.approx(30.0 - 5.0 * 2.0)
     travelled = math.hypot(ego[-1, 1] - ego[0, 1], ego[-1, 2] - ego[0, 2])
     assert travelled == pytest.approx(0.5 * (30.0 + 20.0) * 2.0, rel=1e-6)
+
+
+def _with_friction(esmini, tmp_path, friction: float):
+    """lane_change_simple.xosc (ego starts standing) with an Init EnvironmentAction setting the road friction."""
+    text = xosc("lane_change_simple").read_text(encoding="utf-8")
+    env = (f'<GlobalAction><EnvironmentAction><Environment name="env"><TimeOfDay animation="false" '
+           f'dateTime="2020-01-01T12:00:00"/><Weather cloudState="free"/><RoadCondition '
+           f'frictionScaleFactor="{friction}"/></Environment></EnvironmentAction></GlobalAction>')
+    text = text.replace("<Actions>", "<Actions>" + env, 1)
+    text = text.replace("../xodr/", f"{esmini}/xodr/").replace("../xosc/Catalogs", f"{esmini}/xosc/Catalogs")
+    path = tmp_path / f"friction_{friction}.xosc"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_full_throttle_and_steering_on_ice_does_not_start(esmini, tmp_path) -> None:
+    moved = {}
+    for mu in (0.1, 1.0):
+        sim = Simulation(load_scenario(_with_friction(esmini, tmp_path, mu)),
+                         SimulationConfig(ego_mode="planner", time_limit=2.0))
+        frame = sim.reset()
+        assert frame.ego.speed == 0.0 and sim.world.friction == pytest.approx(mu)
+        while not sim.done:
+            frame = sim.step(ControlCommand(t=frame.t, speed=frame.ego.speed + 0.25, yaw_rate=0.5))
+        ego = sim.trajectory["Ego"]
+        moved[mu] = math.hypot(ego[-1, 1] - ego[0, 1], ego[-1, 2] - ego[0, 2])
+        slip_notes = [n for n in sim.status.unsupported if "slipped" in n]
+        assert bool(slip_notes) == (mu == 0.1)
+    assert moved[0.1] == 0.0          # wheels spin, no start
+    assert moved[1.0] > 5.0           # on a dry road the same commands pull away
