@@ -127,3 +127,52 @@ def test_planner_that_stops_answering_ends_the_run_as_error(ros, tmp_path: Path)
     assert final.state == "finished"
     assert final.end_reason == "planner_not_responding" and final.verdict_hint == "error"
     assert max(ego) == 10                           # it waited at step 10 and went no further
+
+
+def test_scenarios_from_the_topic_run_in_order_and_bad_ones_report_errors(ros, tmp_path: Path) -> None:
+    """Envelopes on /txt2sce/scenario (xosc and map as text): a malformed one is reported as an input error and
+    the next one still runs (storyboard mode, real-time mode at 50x)."""
+    from rclpy.executors import SingleThreadedExecutor
+    from rclpy.node import Node
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    from txt2sce_ros.contract import TOPIC_RUN_STATUS, TOPIC_SCENARIO, ScenarioEnvelope
+    from txt2sce_ros.launcher import node_command
+
+    good_path = xosc("slow-lead-vehicle")
+    scenario = load_scenario(good_path)
+    good = ScenarioEnvelope(id="good", xosc=good_path.read_text(encoding="utf-8").replace(
+        "../xosc/Catalogs", str(good_path.parent / "Catalogs")),
+        map_xodr=Path(scenario.map_path).read_text(encoding="utf-8"), map_path=scenario.map_path)
+    bad = ScenarioEnvelope(id="bad", xosc="<OpenSCENARIO><Entities>", map_xodr="")
+    node = Node("generator_stub")
+    ex = SingleThreadedExecutor()
+    ex.add_node(node)
+    latched = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    pub = node.create_publisher(String, TOPIC_SCENARIO, latched)
+    statuses: list[RunStatus] = []
+    node.create_subscription(String, TOPIC_RUN_STATUS, lambda m: statuses.append(RunStatus.from_json(m.data)),
+                             QoSProfile(depth=50, reliability=ReliabilityPolicy.RELIABLE,
+                                        durability=DurabilityPolicy.TRANSIENT_LOCAL))
+    for env in (bad, good):
+        pub.publish(String(data=env.to_json()))
+    log = open(tmp_path / "player.log", "wb")
+    proc = subprocess.Popen(node_command("scenario_player_node", {
+        "ego_mode": "storyboard", "lock_step": False, "realtime_factor": 50.0, "time_limit": 4.0}),
+        env=ros, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 60
+        while sum(s.state == "finished" for s in statuses) < 2 and time.monotonic() < deadline:
+            ex.spin_once(timeout_sec=0.05)
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
+        ex.remove_node(node)
+        node.destroy_node()
+        log.close()
+    finished = {s.scenario_id: s for s in statuses if s.state == "finished"}
+    assert set(finished) == {"bad", "good"}, (tmp_path / "player.log").read_text()
+    assert finished["bad"].verdict_hint == "error" and "malformed XML" in finished["bad"].end_reason
+    assert finished["good"].verdict_hint == "" and finished["good"].end_reason == "time_limit"
+    assert finished["good"].t == pytest.approx(4.0)
