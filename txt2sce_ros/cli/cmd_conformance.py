@@ -15,7 +15,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--reference", type=Path, required=True, help="directory of <name>.csv reference runs")
     parser.add_argument("--only", nargs="*", help="scenario names to run (default: all)")
     parser.add_argument("--target", type=float, default=0.5, help="RMS target in m (default 0.5)")
-    parser.add_argument("--entities", action="store_true", help="one line per entity")
+    parser.add_argument("--brief", action="store_true", help="one line per file (worst entity only)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -30,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
         worst = max(r.entities, key=lambda e: e.rms).name if r.entities else "-"
         flag = "" if r.rms < args.target else "  > target"
         print(f"{r.name:34s} {'yes':4s} {r.rms:8.3f} {r.max:8.3f}  {worst}{flag}")
-        if args.entities:
+        if not args.brief:
             for e in r.entities:
                 print(f"{'':36s} {e.name:20s} rows {e.rows:5d} rms {e.rms:8.3f} max {e.max:8.3f}")
         for note in r.unsupported:
