@@ -250,9 +250,13 @@ def ego_contact_part(d: _Doc) -> tuple[str | None, str | None]:
 
 
 def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
-              ego_actions: str = "") -> tuple[str, str | None, bool]:
-    """(position, lane, known): where the party was relative to the AV when the interaction began."""
+              ego_actions: str = "", behind_av: frozenset[str] = frozenset()) -> tuple[str, str | None, bool]:
+    """(position, lane, known): where the party was relative to the AV when the interaction began.
+    `behind_av`: head nouns of parties already placed behind the AV (R6); whoever follows them is behind too."""
     ctx = _ctx(d, e)
+    queue = re.search(r"\b(?:behind|following|trailing)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?([\w-]+)", ctx, re.I)
+    if queue and queue.group(1).lower() in behind_av:
+        return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
     pre = " ".join(re.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
                    for m in e.mentions[:2])
@@ -579,8 +583,11 @@ def extract(text: str, report_id: str) -> Sketch:
     npcs: list[Party] = []
     missing: list[str] = []
     idmap: dict[int, str] = {}
+    behind: set[str] = set()
     for k, e in enumerate(parties, 1):
-        pos, lane, known = _position(d, e, ego_heading, ego_turning, ego_actions)
+        pos, lane, known = _position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
+        if pos == "R6":
+            behind |= e.heads
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and _before_contact(d, a.sent, a.pos)]
         pacts = _prepend_mod_acts(d, e, pacts)
         first_sent = ([m.sent for m in e.mentions if m.sent not in summary] or [e.first.sent])[0]

@@ -257,7 +257,9 @@ def _compatible(e: Entity, m: Mention) -> bool:
            h in VAN_MODELS):
         return True
     if m.head in MAKES or m.head in VAN_MODELS:
-        return any(m.head in h or h in MAKES for h in e.heads)
+        # "the Mercedes" names the party introduced as "a Mercedes car", not another make.
+        named = set(e.heads) | {w for x in e.mentions for w in x.mods.split()}
+        return m.head in named or any(m.head in h.split() for h in e.heads)
     if m.head in _GENERIC or m.mods.startswith("other"):
         return e.category in ("car", "van", "truck", "bus")
     return e.category == m.category and m.category not in ("car",)
