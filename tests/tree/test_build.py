@@ -55,7 +55,7 @@ def test_each_child_adds_exactly_one_block(tmp_path):
     """Disassemble parent and child files: they differ in the fragments of the block the child added, nowhere
     else; and the manifest records the operator and the old -> new values of that block."""
     out = tmp_path / "t"
-    build_tree(JUNCTION, out, seed=1, cfg=tree_config(prune_share=1.0))
+    build_tree(JUNCTION, out, seed=1, cfg=tree_config(prune_share=1.0, max_nodes=0))
     manifest = json.loads((out / "manifest.json").read_text())
     nodes = {n["id"]: n for n in manifest["nodes"]}
     checked = 0
@@ -87,7 +87,7 @@ def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path):
 
 def test_every_generated_file_is_schema_valid_and_a_sample_is_qc_clean(tmp_path):
     out = tmp_path / "t"
-    res = build_tree(JUNCTION, out, seed=5, cfg=tree_config(validate=False))  # write everything, check here
+    res = build_tree(JUNCTION, out, seed=5, cfg=tree_config(validate=False, max_nodes=800))  # check here
     files = sorted((out / "nodes").glob("*.xosc"))
     assert len(files) == res.nodes + 1
     for f in files:
@@ -108,7 +108,18 @@ def test_generated_files_point_at_the_seeds_map(tmp_path):
 
 
 def test_pruning_keeps_at_least_half_of_each_cluster(tmp_path):
-    full = build_tree(JUNCTION, tmp_path / "full", seed=2, cfg=tree_config(prune_share=1.0))
-    half = build_tree(JUNCTION, tmp_path / "half", seed=2, cfg=tree_config(prune_share=0.5))
+    full = build_tree(JUNCTION, tmp_path / "full", seed=2, cfg=tree_config(prune_share=1.0, max_nodes=0))
+    half = build_tree(JUNCTION, tmp_path / "half", seed=2, cfg=tree_config(prune_share=0.5, max_nodes=0))
     assert half.pruned > 0 and half.nodes < full.nodes
     assert half.nodes >= full.nodes // 2 ** len(full.block_counts)
+
+
+def test_node_budget_thins_layers_but_inserts_every_block(tmp_path):
+    res = build_tree(JUNCTION, tmp_path / "t", seed=4, cfg=tree_config(prune_share=1.0, max_nodes=300))
+    assert res.truncated and res.nodes <= 300
+    manifest = json.loads((tmp_path / "t" / "manifest.json").read_text())
+    depths = {n["depth"] for n in manifest["nodes"]}
+    assert depths == set(range(0, len(res.block_counts) + 1))  # the deepest layer (obstacles) is still there
+    # within a thinned layer, distinct categories go before repeats: all 7 NPC categories survive
+    npc_nodes = [n for n in manifest["nodes"] if n["block_kind"] == "npc"]
+    assert {n["variant"] for n in npc_nodes} == set(range(7))

@@ -1,6 +1,6 @@
 """`txt2sce tree`: build scenario trees from seeds, or draw one.
 
-    txt2sce tree SEEDS... --out DIR [--seed N] [--mutations 2] [--prune 0.5] [--jobs 2]
+    txt2sce tree SEEDS... --out DIR [--seed N] [--mutations 2] [--prune 0.5] [--max-nodes 2000] [--jobs 2]
     txt2sce tree show TREE_DIR [--png FILE] [--depth 3]
 """
 
@@ -24,6 +24,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=0, help="RNG seed (default 0)")
     parser.add_argument("--mutations", type=int, default=None, help="M(b) for non-enumerated blocks (default 2)")
     parser.add_argument("--prune", type=float, default=None, help="share kept per cluster, 1 = no pruning (0.5)")
+    parser.add_argument("--max-nodes", type=int, default=None,
+                        help="node budget per tree, 0 = none (default 2000: later layers share what is left)")
     parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
     parser.add_argument("--config", help="mutation config YAML (default config/mutation.yaml)")
     parser.add_argument("--no-validate", action="store_true", help="skip XSD validation of generated files")
@@ -70,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
     if not args.out:
         raise InputError("--out DIR is required to build trees", element="--out")
     cfg = tree_config(args.config, mutations=args.mutations, prune_share=args.prune,
-                      validate=False if args.no_validate else None)
+                      validate=False if args.no_validate else None, max_nodes=args.max_nodes)
     seeds = _seed_files(args.inputs)
     t0 = time.perf_counter()
     results = build_trees(seeds, args.out, seed=args.seed, cfg=cfg, jobs=args.jobs)
@@ -86,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
         total += r.nodes
         counts = "x".join(str(c) for c in r.block_counts)
         print(f"{name:<48} {counts:<30} {r.expected:>7} {r.nodes:>8} {r.pruned:>7} {r.invalid:>7}"
-              + ("  TRUNCATED" if r.truncated else ""))
+              + ("  (budget)" if r.truncated else ""))
     print(f"\n{len(results) - failed} trees, {total} generated files in {wall:.1f} s "
           f"({total / wall if wall else 0:.0f} files/s, {args.jobs} jobs); "
           f"prune share {cfg['tree']['prune_share']}, M(b) = {cfg['tree']['mutations_per_block']}, "

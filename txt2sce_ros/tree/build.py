@@ -11,6 +11,7 @@ from __future__ import annotations
 import copy
 import json
 import os
+import sys
 import time
 import zlib
 from collections.abc import Iterator, Sequence
@@ -29,14 +30,14 @@ from .context import build_context
 from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
-from .prune import prune
+from .prune import prune, spread
 from .xml import parse_bytes
 
 MANIFEST_SCHEMA = "txt2sce.tree/1"
 
 
 def tree_config(path: str | Path | None = None, *, mutations: int | None = None, prune_share: float | None = None,
-                validate: bool | None = None) -> dict[str, Any]:
+                validate: bool | None = None, max_nodes: int | None = None) -> dict[str, Any]:
     """`config/mutation.yaml` (or `path`) with CLI overrides applied; a private copy the caller may change."""
     cfg = copy.deepcopy(load_config("mutation", path))
     if mutations is not None:
@@ -45,6 +46,8 @@ def tree_config(path: str | Path | None = None, *, mutations: int | None = None,
         cfg["tree"]["prune_share"] = float(prune_share)
     if validate is not None:
         cfg["tree"]["validate"] = bool(validate)
+    if max_nodes is not None:
+        cfg["tree"]["max_nodes_per_tree"] = int(max_nodes)
     if not 0.0 < float(cfg["tree"]["prune_share"]) <= 1.0:
         raise InputError("prune share must be in (0, 1]", element="tree.prune_share")
     return cfg
@@ -66,7 +69,8 @@ def seed_key(name: str) -> int:
 
 @dataclass(frozen=True)
 class TreeResult:
-    """What one tree build did. `nodes` excludes the root; `expected` is the unpruned Sum formula."""
+    """What one tree build did. `nodes` excludes the root; `expected` is the unpruned Sum formula; `truncated`
+    means the node budget (`max_nodes_per_tree`) thinned some layer."""
 
     seed: str
     out_dir: Path
@@ -125,7 +129,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     originals = dis.originals()
     validate = bool(cfg["tree"]["validate"])
     share = float(cfg["tree"]["prune_share"])
-    cap = int(cfg["tree"]["max_nodes_per_tree"])
+    cap = int(cfg["tree"]["max_nodes_per_tree"]) or sys.maxsize
     prune_rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
 
     # Compact records (id, parent id, path) only: the per-node metadata is expanded while the manifest streams
@@ -145,8 +149,13 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
                    for p, j in cands]
         keep = prune(vectors, share, prune_rng)
         pruned += len(cands) - len(keep)
-        if written + len(keep) > cap:
-            keep = keep[:max(0, cap - written)]
+        # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
+        # (a plain cut would drop the deepest layers: events and obstacles). Round robin over clusters keeps as
+        # many distinct categories as the budget allows.
+        layers_left = len(used) - depth + 1
+        allowed = max(1, (cap - written) // layers_left) if layers_left > 1 else max(0, cap - written)
+        if len(keep) > allowed:
+            keep = spread(keep, [vectors[i] for i in keep], allowed)
             truncated = True
         frontier = []
         for ci in keep:
@@ -171,14 +180,15 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
             written += 1
             records.append((node_id, parent.id, path))
             frontier.append(_Node(node_id, parent.id, path))
-        if truncated or not frontier:
+        if not frontier or written >= cap:
             break
 
     manifest = {
         "schema": MANIFEST_SCHEMA, "tree": seed_path.stem, "id": seed_path.stem, "seed_file": seed_path.name,
         "map": ctx.map_path.name if ctx.map_path else None, "rng_seed": int(seed),
         "settings": {"order": list(order), "mutations_per_block": cfg["tree"]["mutations_per_block"],
-                     "enumerate": list(cfg["tree"]["enumerate"]), "prune_share": share, "bins": cfg["bins"]},
+                     "enumerate": list(cfg["tree"]["enumerate"]), "prune_share": share, "bins": cfg["bins"],
+                     "max_nodes_per_tree": cfg["tree"]["max_nodes_per_tree"]},
         "blocks": [_block_entry(dis, i, variants[i], ctx, cfg) for i in range(len(dis.blocks))],
         "insertion": [dis.blocks[i].index for i in used],
         "block_counts": list(counts), "expected_nodes": expected_nodes(counts), "nodes_written": written,

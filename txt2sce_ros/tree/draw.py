@@ -31,7 +31,7 @@ def layer_summary(manifest: dict[str, Any]) -> list[str]:
         lines.append(f"{depth:>5}  {b['key']:<28} {b['kind']:<13} {len(b['variants']):>4} {per_depth.get(depth, 0):>7}")
     lines.append(f"nodes {manifest['nodes_written']} (Sum formula without pruning: {manifest['expected_nodes']}), "
                  f"pruned {manifest['pruned']}, invalid {manifest['invalid']}"
-                 + (", TRUNCATED at the node cap" if manifest["truncated"] else ""))
+                 + (", thinned to the node budget" if manifest["truncated"] else ""))
     return lines
 
 

@@ -10,7 +10,8 @@ from lxml import etree
 from .values import Recorder, gaussian, uniform
 
 #: Elements of type TransitionDynamics in OpenSCENARIO 1.0 that an event's private actions carry.
-DYNAMICS_TAGS = ("SpeedActionDynamics", "LaneChangeActionDynamics", "LaneOffsetActionDynamics")
+DYNAMICS_TAGS = ("SpeedActionDynamics", "LaneChangeActionDynamics")
+#: LaneOffsetActionDynamics is not a TransitionDynamics in 1.0: a shape and a maximum lateral acceleration.
 
 
 def speed_style(action: str, cfg: dict[str, Any], rng: np.random.Generator) -> str:
@@ -51,6 +52,11 @@ def dtm(event: etree._Element, rng: np.random.Generator, cfg: dict[str, Any], re
             rec.set(dyn, "dynamicsShape", str(shapes[int(rng.integers(len(shapes)))]))
             lo, hi = cfg["value"].get(dyn.get("dynamicsDimension", "time"), cfg["value"]["time"])
             rec.set(dyn, "value", uniform(rng, lo, hi), digits=3)
+    for dyn in event.iter("LaneOffsetActionDynamics"):
+        found = True
+        shapes = cfg["shapes"]
+        rec.set(dyn, "dynamicsShape", str(shapes[int(rng.integers(len(shapes)))]))
+        rec.set(dyn, "maxLateralAcc", uniform(rng, *cfg["max_lateral_acc"]), digits=3)
     return found
 
 

@@ -41,17 +41,17 @@ def _f(el: etree._Element | None, attr: str, default: float = 0.0) -> float:
         return default
 
 
-def weather_features(env: etree._Element, cfg: dict[str, Any], n: int) -> tuple:
+def weather_features(env: etree._Element, cfg: dict[str, Any], n: int) -> dict[str, Any]:
     kind = weather_type(env)
     spec = cfg["environment"]["weather"][kind]
     w = env.find("Weather")
     sun, fog, prec = (w.find("Sun"), w.find("Fog"), w.find("Precipitation")) if w is not None else (None,) * 3
-    return ("weather", kind,
-            bin_of(_f(fog, "visualRange"), *spec["visibility"], n),
-            bin_of(_f(sun, "azimuth"), *cfg["environment"]["azimuth"], n),
-            bin_of(_f(sun, "elevation"), *cfg["environment"]["elevation"], n),
-            bin_of(_f(prec, "intensity"), *spec["precipitation"], n),
-            bin_of(_f(env.find("RoadCondition"), "frictionScaleFactor", 1.0), *spec["friction"], n))
+    return {"type": kind,
+            "visibility": bin_of(_f(fog, "visualRange"), *spec["visibility"], n),
+            "azimuth": bin_of(_f(sun, "azimuth"), *cfg["environment"]["azimuth"], n),
+            "elevation": bin_of(_f(sun, "elevation"), *cfg["environment"]["elevation"], n),
+            "precipitation": bin_of(_f(prec, "intensity"), *spec["precipitation"], n),
+            "friction": bin_of(_f(env.find("RoadCondition"), "frictionScaleFactor", 1.0), *spec["friction"], n)}
 
 
 def _shift_bin(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any], n: int) -> int:
@@ -74,7 +74,7 @@ def entity_category(obj: etree._Element) -> str:
 
 
 def npc_features(obj: etree._Element, private: etree._Element | None, ctx: SeedContext, cfg: dict[str, Any],
-                 n: int) -> tuple:
+                 n: int) -> dict[str, Any]:
     cat = entity_category(obj)
     cats = cfg["physical"]["categories"]
     spec = cats.get(cat, cats["car"])
@@ -82,14 +82,15 @@ def npc_features(obj: etree._Element, private: etree._Element | None, ctx: SeedC
     dims = ent.find("BoundingBox/Dimensions") if ent is not None else None
     perf = ent.find("Performance") if ent is not None else None
     lo_s, hi_s = cfg["dynamics"]["vpm"]["clip_share"]
-    return ("npc", cat,
-            *(bin_of(_f(dims, a), lo, hi, n) for a, lo, hi in zip(("width", "length", "height"), spec["lo"],
-                                                                  spec["hi"])),
-            bin_of(_f(perf, "maxSpeed", spec["perf"][0]), lo_s * spec["perf"][0], hi_s * spec["perf"][0], n),
-            _shift_bin(private, obj.get("name", ""), ctx, cfg, n))
+    out: dict[str, Any] = {"category": cat}
+    for a, lo, hi in zip(("width", "length", "height"), spec["lo"], spec["hi"]):
+        out[a] = bin_of(_f(dims, a), lo, hi, n)
+    out["max_speed"] = bin_of(_f(perf, "maxSpeed", spec["perf"][0]), lo_s * spec["perf"][0], hi_s * spec["perf"][0], n)
+    out["shift"] = _shift_bin(private, obj.get("name", ""), ctx, cfg, n)
+    return out
 
 
-def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, Any], n: int) -> tuple:
+def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, Any], n: int) -> dict[str, Any]:
     """Driving semantics of one event: its action, how its target speed compares with the seed's (accelerating,
     decelerating, keeping), the speed ratio's bin, the transition shape and value bin, the lateral offset bin."""
     _, action = split_event_name(ev.get("name", ""))
@@ -105,21 +106,21 @@ def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, 
     vlo, vhi = cfg["dynamics"]["dtm"]["value"].get(dim, cfg["dynamics"]["dtm"]["value"]["time"])
     lc = next(ev.iter("LaneChangeAction"), None)
     half = cfg["trajectory"]["wpm"]["default_lane_width"] / 2
-    return ("event", action, style, bin_of(ratio, 0.5, 1.5, n), shape,
-            bin_of(_f(dyn, "value"), vlo, vhi, n) if dyn is not None else -1,
-            bin_of(_f(lc, "targetLaneOffset"), -half, half, n) if lc is not None else -1)
+    return {"action": action, "style": style, "speed": bin_of(ratio, 0.5, 1.5, n), "shape": shape,
+            "dynamics_value": bin_of(_f(dyn, "value"), vlo, vhi, n) if dyn is not None else -1,
+            "offset": bin_of(_f(lc, "targetLaneOffset"), -half, half, n) if lc is not None else -1}
 
 
-def signal_features(ctrl: etree._Element) -> tuple:
+def signal_features(ctrl: etree._Element) -> dict[str, Any]:
     phase = ctrl.find("Phase")
     states = [signal_state_name(s.get("state", "")) for s in phase.iterfind("TrafficSignalState")] if phase is not None else []
-    return ("signal", *states)
+    return {"states": "/".join(states)}
 
 
 def obstacle_features(obj: etree._Element | None, private: etree._Element | None, ctx: SeedContext,
-                      cfg: dict[str, Any], n: int) -> tuple:
+                      cfg: dict[str, Any], n: int) -> dict[str, Any]:
     if obj is None:
-        return ("obstacle", "none")
+        return {"category": "none", "where": "none", "distance": -1, "width": -1, "length": -1, "height": -1}
     spec = cfg["environment"]["obstacle"]
     ent = entity_element(obj)
     dims = ent.find("BoundingBox/Dimensions") if ent is not None else None
@@ -135,19 +136,20 @@ def obstacle_features(obj: etree._Element | None, private: etree._Element | None
             dist_bin = bin_of(ahead, *spec["ahead"], n)
         else:
             where = "route"
-    return ("obstacle", entity_category(obj), where, dist_bin,
-            *(bin_of(_f(dims, a), lo, hi, n) for a, lo, hi in zip(("width", "length", "height"), spec["dims_lo"],
-                                                                  spec["dims_hi"])))
+    out: dict[str, Any] = {"category": entity_category(obj), "where": where, "distance": dist_bin}
+    for a, lo, hi in zip(("width", "length", "height"), spec["dims_lo"], spec["dims_hi"]):
+        out[a] = bin_of(_f(dims, a), lo, hi, n)
+    return out
 
 
-def block_features(kind: BlockKind, elements: list[etree._Element | None], originals: list[etree._Element | None],
-                   ctx: SeedContext, cfg: dict[str, Any]) -> tuple:
-    """The feature tuple of one version of a block, from its parsed fragments (None for an empty slot)."""
+def all_features(kind: BlockKind, elements: list[etree._Element | None], originals: list[etree._Element | None],
+                 ctx: SeedContext, cfg: dict[str, Any]) -> dict[str, Any]:
+    """Every feature one version of a block offers, by name (see `features:` in config/mutation.yaml)."""
     n = int(cfg["bins"])
     if kind is BlockKind.WEATHER:
         return weather_features(elements[0], cfg, n)
     if kind is BlockKind.EGO:
-        return ("ego", _shift_bin(elements[0], "ego", ctx, cfg, n))
+        return {"shift": _shift_bin(elements[0], "ego", ctx, cfg, n)}
     if kind is BlockKind.NPC:
         return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
     if kind is BlockKind.SIGNAL:
@@ -155,3 +157,12 @@ def block_features(kind: BlockKind, elements: list[etree._Element | None], origi
     if kind is BlockKind.EVENT:
         return event_features(elements[0], originals[0], cfg, n)
     return obstacle_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
+
+
+def block_features(kind: BlockKind, elements: list[etree._Element | None], originals: list[etree._Element | None],
+                   ctx: SeedContext, cfg: dict[str, Any]) -> tuple:
+    """The feature tuple of one version of a block: the kind, then the configured features in order. The first
+    feature named for a kind is its abstract representation (Table V)."""
+    feats = all_features(kind, elements, originals, ctx, cfg)
+    key = "obstacle" if kind is BlockKind.NEW_OBSTACLE else kind.value
+    return (key, *(feats[name] for name in cfg["features"][key]))

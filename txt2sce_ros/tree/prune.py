@@ -37,3 +37,19 @@ def prune(vectors: Sequence[Hashable], share: float, rng: np.random.Generator) -
             pick = rng.choice(len(group), size=k, replace=False)
             kept.extend(group[int(i)] for i in pick)
     return sorted(kept)
+
+
+def spread(indices: Sequence[int], vectors: Sequence[Hashable], limit: int) -> list[int]:
+    """At most `limit` of `indices`, taken round robin over their clusters (first member of every cluster, then
+    the second…), so a node budget drops repeats of a category before it drops a category. Sorted."""
+    if len(indices) <= limit:
+        return list(indices)
+    groups = clusters(vectors)
+    out: list[int] = []
+    rank = 0
+    while len(out) < limit:
+        for g in groups:
+            if rank < len(g) and len(out) < limit:
+                out.append(indices[g[rank]])
+        rank += 1
+    return sorted(out)
