@@ -432,7 +432,7 @@ def _sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) ->
             c = "i"
         if codes and codes[-1] == "h" and c in ("a", "b") and not ego:
             c = "i"
-        if start == "stopped" and not codes and c in "defgm" and not ego:
+        if start == "stopped" and not codes and c in "defgm":
             codes.append("i")
         codes.append(c)
     out: list[str] = []
