@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
+from functools import lru_cache
 from typing import TYPE_CHECKING, Literal
 
 from ..errors import Txt2SceError
@@ -18,6 +19,15 @@ Backend = Literal["offline", "llm", "hybrid"]
 BACKENDS: tuple[str, ...] = ("offline", "llm", "hybrid")
 
 
+@lru_cache(maxsize=1)
+def default_llm() -> LlmExtractor:
+    """The LLM client configured by `config/extract.yaml` and the environment (for callers that pass none)."""
+    from ..config import load_config
+    from .llm import LlmConfig, LlmExtractor
+
+    return LlmExtractor.from_config(LlmConfig.from_settings(load_config("extract").get("llm")))
+
+
 def sketch_report(inp: ReportInput, *, backend: Backend = "offline", llm: LlmExtractor | None = None,
                   validate: bool = True) -> Sketch | ErrorRecord:
     """Extract one report. Errors raised on purpose become an ErrorRecord naming the report; so does a sketch
@@ -25,12 +35,14 @@ def sketch_report(inp: ReportInput, *, backend: Backend = "offline", llm: LlmExt
     try:
         if backend == "offline":
             sk = extract(inp.text, inp.report_id)
-        elif llm is None:
-            return ErrorRecord(inp.report_id, f"backend {backend!r} needs an LLM client", inp.source)
+        elif backend not in BACKENDS:
+            return ErrorRecord(inp.report_id, f"unknown backend {backend!r} (one of {', '.join(BACKENDS)})",
+                               inp.source)
         elif backend == "llm":
+            llm = llm or default_llm()
             sk = llm.extract(inp.text, inp.report_id)
         else:
-            sk = llm.refine(extract(inp.text, inp.report_id), inp.text)
+            sk = (llm or default_llm()).refine(extract(inp.text, inp.report_id), inp.text)
         sk = merge_form(sk, inp.form)
     except Txt2SceError as exc:
         return ErrorRecord(inp.report_id, str(exc), inp.source)
