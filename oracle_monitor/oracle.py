@@ -16,7 +16,7 @@ from .safety import ContactOracle, JerkCollisionOracle
 from .signals import Differentiator
 from .smartness import SmartnessOracle
 from .smoothness import SmoothnessOracle
-from .verdict import decide
+from .verdict import decide, error_reason
 
 
 class Oracle:
@@ -84,7 +84,8 @@ class Oracle:
         if self._finished is not None:
             return self._finished
         t_end = status.t if status and status.t else self.t_last
-        if status is not None and status.state == "finished":
+        # End-of-run checks (goal reached, never started) judge the system under test: not for runs that broke.
+        if status is not None and status.state == "finished" and not error_reason(status, self.frames):
             self.violations.extend(self.smart.finish(t_end, status.end_reason))
         self._finished = decide(tuple(self.violations), status, frames=self.frames, t_end=t_end,
                                 scenario_id=self.scenario_id, notes=self._notes())

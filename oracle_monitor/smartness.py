@@ -207,5 +207,5 @@ class SmartnessOracle:
             d = math.hypot(frame.ego.x - self.goal.x, frame.ego.y - self.goal.y)
             why = "time out" if end_reason == "time_limit" else f"run ended ({end_reason or 'no reason given'})"
             out.append(Violation(Rule.GOAL_NOT_REACHED, Category.PLAN_FAIL, t_end, d, self.goal.tolerance, "m", (),
-                                 f"{why} {d:.1f} m from the goal (closest {self.min_goal_distance:.1f} m)"))
+                                 f"{why} {d:.1f} m from the goal (closest {min(d, self.min_goal_distance):.1f} m)"))
         return out
