@@ -215,3 +215,21 @@ def test_hybrid_asks_only_for_incomplete_reports(server: ChatServer, tmp_path: P
     vague = ReportInput(RID, "The AV was damaged. No injuries were reported.", "mem")
     out = sketch_report(vague, backend="hybrid", llm=ex)
     assert isinstance(out, Sketch) and out == _gold() and len(server.log) == 5
+
+
+def test_cli_llm_backend_flags_and_env(server: ChatServer, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from txt2sce_ros.cli.main import main
+
+    monkeypatch.setenv("TXT2SCE_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("DEEPSEEK_API_KEY", KEY)
+    monkeypatch.delenv("TXT2SCE_LLM_API_KEY", raising=False)
+    src = tmp_path / "one.jsonl"
+    src.write_text(json.dumps({"id": RID, "text": _text()}) + "\n", encoding="utf-8")
+    out = tmp_path / "out.jsonl"
+    assert main(["extract", str(src), "--out", str(out), "--backend", "llm", "--base-url", server.url,
+                 "--model", "recorded-model", "--quiet"]) == 0
+    (line,) = out.read_text(encoding="utf-8").splitlines()
+    assert Sketch.from_dict(json.loads(line)) == _gold()
+    assert {r["auth"] for r in server.log} == {f"Bearer {KEY}"} and len(server.log) == 5
+    assert KEY not in out.read_text(encoding="utf-8")
+    assert all(KEY not in p.read_text(encoding="utf-8") for p in (tmp_path / "cache").rglob("*.json"))
