@@ -247,7 +247,7 @@ def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, li
         d_stop = max(dist - lp.stop_margin, 0.01)
         need = ego.speed * ego.speed / (2.0 * d_stop)
         # Yellow: stop only if the stop is comfortable, counting the jerk-limited build-up of braking.
-        need_planned = ego.speed * ego.speed / (2.0 * max(d_stop - sp.lag, 0.01))
+        need_planned = ego.speed * ego.speed / (2.0 * max(d_stop - min(sp.lag, 0.5 * d_stop), 0.01))
         if state is SignalState.YELLOW and need_planned > bp.yellow_clear_decel:
             continue                                     # cannot stop comfortably: clear the junction
         if state is SignalState.RED and need > emergency_decel:

@@ -16,6 +16,9 @@ from .params import LongitudinalParams
 
 #: Within this distance (m) of a stop point a stop in progress is held through to standstill.
 CREEP_ZONE = 3.0
+#: Standing within this distance (m) of a stop point, the ego waits there instead of creeping closer (the
+#: jerk-limited switch from pulling away to braking would need more room than that).
+HOLD_ZONE = 15.0
 
 
 def free_road_accel(v: float, v0: float, p: LongitudinalParams) -> float:
@@ -49,25 +52,30 @@ def braking_decel(p: LongitudinalParams, friction: float) -> float:
 
 
 def stop_accel(v: float, distance: float, p: LongitudinalParams, *, plan_decel: float,
-               cruise: float, lag: float = 0.0, braking: bool = False) -> float:
+               cruise: float, lag: float = 0.0, braking: bool = False, hold: bool = True) -> float:
     """Acceleration (m/s²) to stop with the front bumper `distance` metres ahead (already net of the stop
     margin). `plan_decel` is the deceleration the stop is planned with; `cruise` is the acceleration wanted
     otherwise; `lag` metres are taken off the distance for the jerk-limited build-up of the braking. Braking starts
     once the required deceleration v²/2d reaches `stop_onset_ratio`·plan_decel; once `braking`, it holds the
-    required deceleration down to a standstill (no release-and-creep in between).
+    required deceleration down to a standstill (no release-and-creep in between). With `hold`, an ego standing
+    within HOLD_ZONE of the point waits there (right for stop lines and obstacles, not for the goal itself).
     """
     if distance <= 0.05:
         if v <= 0.0:
             return min(0.0, cruise)
         # At the point: stop now; hard only if still fast (a crawl is stopped by the comfort taper).
         return -p.max_decel if v > 1.0 else -max(p.comfort_decel, v * v / 0.1)
-    need = v * v / (2.0 * max(distance - lag, 0.05))
+    # The build-up allowance never takes more than half the distance: near the point it would ask for absurd
+    # decelerations (v²/2d stays the honest requirement there).
+    need = v * v / (2.0 * max(distance - min(lag, 0.5 * distance), 0.05))
     onset = p.stop_onset_ratio * plan_decel
     if need >= onset or (braking and v > 0.0 and (need >= 0.3 * onset or distance < CREEP_ZONE)):
         return -need
+    if hold and v < 0.1 and distance < HOLD_ZONE:
+        return min(cruise, 0.0)                # standing near the point: wait, do not creep up to it
     # Approaching a far stop point from low speed: go, but never faster than the plan can still stop from, and
     # not at all within the last metre (no creeping up to a stop line).
-    v_cap = math.sqrt(2.0 * onset * max(distance - CREEP_ZONE / 3.0, 0.0))
+    v_cap = math.sqrt(2.0 * onset * max(distance - lag - CREEP_ZONE / 3.0, 0.0))
     if v >= v_cap:
         return min(cruise, 0.0)
     return cruise
@@ -82,7 +90,7 @@ def slow_down_accel(v: float, v_target: float, distance: float, p: LongitudinalP
         return min(cruise, free_road_accel(v, v_target, p))
     if v <= v_target:
         return cruise
-    need = (v * v - v_target * v_target) / (2.0 * max(distance - lag, 0.1))
+    need = (v * v - v_target * v_target) / (2.0 * max(distance - min(lag, 0.5 * distance), 0.1))
     if need >= p.stop_onset_ratio * plan_decel:
         return -need
     # Close to the onset: stop accelerating so the braking starts from a steady speed.

@@ -104,8 +104,9 @@ class Planner:
             plan_decel, lag = fp.late_brake_decel / lp.stop_onset_ratio, 0.0
             sp = StopPlan(decel=plan_decel, cruise=cruise, lag=0.0, hard=True, braking=self._accel < -0.05)
         else:
-            # Distance the jerk-limited build-up of braking to the planned deceleration still costs.
-            lag = 0.5 * v * max(0.0, plan_decel + min(self._accel, 0.0)) / self.params.comfort.max_jerk
+            # Distance the jerk-limited build-up of braking to the planned deceleration still costs (from the
+            # current acceleration: while still accelerating the build-up is longer).
+            lag = 0.5 * v * max(0.0, plan_decel + self._accel) / self.params.comfort.max_jerk
             sp = StopPlan(decel=plan_decel, cruise=cruise, lag=lag, braking=self._accel < -0.05)
         constraints: list[Constraint] = [Constraint(Reason.CRUISE, cruise)]
         for dist, v_curve in curve_targets(line, pp.s, v, self.params.lateral, plan_decel):
@@ -123,7 +124,8 @@ class Planner:
                                           misread_yellow=self.faults.red_light_misread)
         goal_d = self.route.goal_s + bp.goal_overshoot - pp.s
         constraints.append(Constraint(Reason.GOAL, stop_accel(v, goal_d, lp, plan_decel=braking_decel(lp, friction),
-                                                              cruise=cruise, lag=lag, braking=sp.braking),
+                                                              cruise=cruise, lag=lag, braking=sp.braking,
+                                                              hold=False),
                                       "goal", goal_d))
         if self.faults.no_start_when_close and v < 0.1 and self._npc_close(measured, me):
             constraints.append(Constraint(Reason.HOLD, -lp.max_decel, "npc_close"))

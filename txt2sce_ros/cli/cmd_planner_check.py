@@ -3,15 +3,22 @@ on a set of scenarios and print a table of runs, goals reached and oracle violat
 
 Default set: the benign scenarios shipped in `examples/scenarios/benign_*.xosc` (no conflicting party: the nominal
 planner must reach every goal with no violation). `--faults` switches fault modes on; `--scenarios` takes files or
-directories (e.g. generated seeds).
+directories (e.g. generated seeds); `--strip-npcs` runs each of them with every party and obstacle removed (the
+benign variant of a generated seed: same map, route, signals and weather, no conflicting party):
+
+    txt2sce seed ../shared/data/reports/dev_gold.jsonl --out seeds
+    txt2sce planner-check --scenarios seeds --strip-npcs
 """
 
 from __future__ import annotations
 
 import argparse
+import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
+
+from lxml import etree
 
 from ..errors import Txt2SceError
 from ..paths import REPO_ROOT
@@ -87,6 +94,43 @@ def _min_gap(frame) -> float:
     return best
 
 
+_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=False)
+
+
+def strip_npcs(path: Path, out_dir: Path, ego: str = "ego") -> Path:
+    """Write the benign variant of scenario `path` into `out_dir`: every entity but the ego removed with its Init
+    actions, stories and stop conditions; the map reference made absolute so the copy loads from anywhere."""
+    try:
+        tree = etree.parse(str(path), _PARSER)
+    except (OSError, etree.XMLSyntaxError) as exc:
+        raise Txt2SceError(f"cannot read scenario: {exc}", source=str(path)) from exc
+    root = tree.getroot()
+    gone = {o.get("name") for o in root.iterfind("Entities/ScenarioObject") if o.get("name") != ego}
+    for obj in root.iterfind("Entities/ScenarioObject"):
+        if obj.get("name") in gone:
+            obj.getparent().remove(obj)
+    for priv in root.iterfind("Storyboard/Init/Actions/Private"):
+        if priv.get("entityRef") in gone:
+            priv.getparent().remove(priv)
+
+    def mentions_gone(el: etree._Element) -> bool:
+        return any(ref.get("entityRef") in gone for ref in el.iter("EntityRef")) or any(
+            v in gone for node in el.iter() for k, v in node.attrib.items() if k in ("entityRef", "masterEntityRef"))
+
+    for story in root.iterfind("Storyboard/Story"):
+        if mentions_gone(story):
+            story.getparent().remove(story)
+    for group in root.iterfind("Storyboard/StopTrigger/ConditionGroup"):
+        if mentions_gone(group):
+            group.getparent().remove(group)
+    logic = root.find("RoadNetwork/LogicFile")
+    if logic is not None and logic.get("filepath") and not Path(logic.get("filepath")).is_absolute():
+        logic.set("filepath", str((path.parent / logic.get("filepath")).resolve()))
+    target = out_dir / path.name
+    tree.write(str(target), xml_declaration=True, encoding="UTF-8")
+    return target
+
+
 def scenario_files(inputs: list[str] | None, pattern: str = "benign_*.xosc") -> list[Path]:
     """Files named on the command line (directories expanded to their .xosc files), else the benign set."""
     if not inputs:
@@ -109,6 +153,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--faults", default="", help="comma-separated fault modes to switch on (default: none)")
     parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
     parser.add_argument("--time-limit", type=float, default=None, help="override the runs' time limit (s)")
+    parser.add_argument("--strip-npcs", action="store_true",
+                        help="run the benign variant of each scenario (all parties and obstacles removed)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -119,7 +165,10 @@ def run(args: argparse.Namespace) -> int:
     files = scenario_files(args.scenarios)
     if not files:
         raise Txt2SceError("no scenarios to run", source=str(DEFAULT_DIR))
-    rows = [run_scenario(f, faults=faults, seed=args.seed, time_limit=args.time_limit) for f in files]
+    with tempfile.TemporaryDirectory(prefix="planner_check_") as tmp:
+        if args.strip_npcs:
+            files = [strip_npcs(f, Path(tmp)) for f in files]
+        rows = [run_scenario(f, faults=faults, seed=args.seed, time_limit=args.time_limit) for f in files]
     width = max(len(r.scenario) for r in rows)
     print(f"planner-check: {len(rows)} runs, faults: {', '.join(faults) or 'none (nominal)'}")
     print(f"{'scenario':<{width}}  {'verdict':<7}  {'goal':<4}  {'end':<14}  {'t_sim':>6}  {'wall':>5}  violations")
