@@ -55,7 +55,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)?|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
-          r"|across\s+|in\s+front\s+of\s+)?(?:the\s+)?(?:street|road|roadway|crosswalk)|\b(?:pull(?:ed|ing)\s+"
+          r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
+          r"lanes)|\b(?:pull(?:ed|ing)\s+"
           r"out\s+of|exit(?:ed|ing)|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+(?:\w+\s+)?(?:driveway|"
           r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
           r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)"),
@@ -75,7 +76,7 @@ _INTENT = re.compile(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intendi
 _NEGATED = re.compile(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = re.compile(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
-_STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+)?(?:stopped|stationary|"
+_STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
                          r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b", re.I)

@@ -299,6 +299,15 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
     if d.junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
+    compass = re.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I)
+    if compass and ego_heading is not None:
+        origin = {"north": 0, "east": 90, "south": 180, "west": 270}[compass.group(1).lower()]
+        rel_origin = (origin - ego_heading) % 360  # 90: on the AV's right, 270: on its left
+        if rel_origin in (90, 270):
+            side = "right" if rel_origin == 90 else "left"
+            if d.junction:
+                return ("R3" if side == "right" else "R1"), None, True
+            return "R5", side, True
     from_side = re.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+(?:adjacent\s+|turn\s+|hand\s+)?(?:lane|side))", ctx, re.I)
     if d.junction and from_side:
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
@@ -324,6 +333,9 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
             own = re.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:\w+\s+)?lane",
                             d.text)
             side = {"left": "right", "right": "left"}.get(own.group(1).lower()) if own else None
+            if side is None and re.search(r"\bEGO\b[^.]{0,60}?\b(?:parking\s+lane|shoulder|parked|at\s+the\s+curb)",
+                                          d.text):
+                side = "left"  # the AV at the curb: the traffic lane beside it is on its left
         side = side or "same"
         if d.junction and ego_turning and re.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
@@ -426,6 +438,8 @@ def _sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) ->
         if not codes and c == "h" and not ego:
             start = "stopped"
             continue
+        if start == "stopped" and not codes and c == "h":
+            continue  # already standing: no stop to tell
         if start == "stopped" and not codes and c in ("a", "b", "c"):
             c = "i"
         if start == "stopped" and codes and codes[-1] == "h" and c in ("a", "b"):
