@@ -12,6 +12,10 @@
 
 "Clear path": no entity's footprint in the corridor `clear_distance` metres ahead of the front bumper (ego width
 plus `clear_margin` each side), and no red/yellow signal governing the ego whose stop line lies in that corridor.
+
+A signal governs the ego when the ego heads the signal's way (within `light_heading_tolerance_deg`) and, with a road
+network and a signal that names its lanes, when the ego is in one of those lanes on the signal's road; otherwise
+(no network, no lanes, ego not on that road) when it is within `light_half_width` of the stop point laterally.
 Waiting behind a car or at a red light is therefore never a failure to start.
 """
 
@@ -120,9 +124,24 @@ class SmartnessOracle:
             return math.nan, math.nan
         dx, dy = point[0] - light.stop_x, point[1] - light.stop_y
         lon, lat = dx * c + dy * s, -dx * s + dy * c
-        if abs(lat) > self.params.light_half_width:
+        lane = self._in_controlled_lane(light, point, ego.heading) if abs(lon) < 30.0 else None
+        if lane is False or (lane is None and abs(lat) > self.params.light_half_width):
             return math.nan, math.nan
         return lon, lat
+
+    def _in_controlled_lane(self, light: TrafficLightState, point: tuple[float, float],
+                            heading: float) -> bool | None:
+        """Whether `point` lies in one of the lanes the signal controls, from the road network; None when that
+        cannot be told (no network, a signal without lanes, a point off the road or past the signal's road)."""
+        if self.network is None or not light.road_id or not light.lane_ids:
+            return None
+        try:
+            lp = self.network.locate(point[0], point[1], heading)
+        except Exception:                   # a map the lookup cannot serve here: fall back to the lateral test
+            return None
+        if lp is None or not lp.inside or lp.road_id != light.road_id:
+            return None
+        return lp.ref.lane_id in light.lane_ids
 
     def _red_light(self, frame: Frame) -> Violation | None:
         front = front_point(frame.ego)

@@ -166,3 +166,24 @@ def test_an_obstacle_dropped_in_front_of_the_ego_is_a_collision() -> None:
     verdict, online = judge(Oracle(None, None, PARAMS), frames)
     assert [v.rule for v in online if v.entities == ("box1",)] == [Rule.CONTACT]
     assert verdict.category_names() == ("Collisions",)
+
+
+def test_signal_lanes_decide_on_a_real_map() -> None:
+    # straight_500m.xodr, road "1": lane -1 drives +x (y in [-3.07, 0]), lane 1 drives -x. A red signal
+    # controlling lane -1, stop point on lane -1's centre at s = 100: an ego driving lane -1 runs it.
+    net = load_network(esmini_map("straight_500m.xodr"))
+    x, y, h = net.lane_to_world("1", -1, 100.0)
+    mine = lambda t: [TrafficLightState("s1", SignalState.RED, x, y, h, "1", (-1,))]
+    frames = straight_run(lambda t: 10.0, 12.0, x0=50.0, lights=mine)
+    frames = [replace(f, ego=replace(f.ego, y=y)) for f in frames]
+    _, online = judge(Oracle(net, None, PARAMS), frames)
+    assert [v.rule for v in online if v.rule is Rule.RED_LIGHT] == [Rule.RED_LIGHT]
+    # The same stop point and heading, but the signal controls lane 1, not the ego's lane: not the ego's signal.
+    other = lambda t: [TrafficLightState("s2", SignalState.RED, x, y, h, "1", (1,))]
+    frames2 = straight_run(lambda t: 10.0, 12.0, x0=50.0, lights=other)
+    frames2 = [replace(f, ego=replace(f.ego, y=y)) for f in frames2]
+    _, online = judge(Oracle(net, None, PARAMS), frames2)
+    assert not [v for v in online if v.rule is Rule.RED_LIGHT]
+    # Without the map the lateral test applies and (wrongly, but knowingly) counts it.
+    _, online = judge(Oracle(None, None, PARAMS), frames2)
+    assert [v.rule for v in online if v.rule is Rule.RED_LIGHT] == [Rule.RED_LIGHT]
