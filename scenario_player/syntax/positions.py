@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Callable, Protocol
 
 from lxml import etree
 
-from .xml import ParseContext, elements
+from .xml import ParseContext
 
 if TYPE_CHECKING:
     from ..world.world import World

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from lxml import etree
 
-from .xml import ParseContext, elements
+from .xml import ParseContext
 
 
 @dataclass(frozen=True, slots=True)
@@ -100,4 +100,4 @@ class Trajectory:
         return cls(el.get("name", ""), ctx.bool(el, "closed", False), shape)
 
 
-__all__ = ["Route", "Waypoint", "Trajectory", "Polyline", "Clothoid", "Nurbs", "Vertex", "ControlPoint", "elements"]
+__all__ = ["Route", "Waypoint", "Trajectory", "Polyline", "Clothoid", "Nurbs", "Vertex", "ControlPoint"]

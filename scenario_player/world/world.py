@@ -49,6 +49,7 @@ class World:
         self.notes: list[str] = []                 # e.g. storyboard actions ignored on the planner-driven ego
         self.transitions: list[tuple[float, str, str, str]] = []
         self._static_cache: dict[int, Pose] = {}
+        self._routes: dict[int, tuple[LanePath, list[LaneRef]]] = {}
         self.running: list["ActionRun"] = []
         self.global_runs: list["ActionRun"] = []
 
@@ -164,10 +165,9 @@ class World:
 
     def route_path(self, route: Any) -> tuple[LanePath, list[LaneRef]]:
         """Lane-level path through a Route's waypoints (shortest on the routing graph between consecutive ones)."""
-        key = ("route", id(route))
-        cached = self._static_cache.get(key)  # type: ignore[arg-type]
+        cached = self._routes.get(id(route))
         if cached is not None:
-            return cached  # type: ignore[return-value]
+            return cached
         poses = [self.resolve_cached(w.position) for w in route.waypoints]
         refs: list[LaneRef] = []
         for a, b in zip(poses, poses[1:]):
@@ -179,7 +179,7 @@ class World:
             refs.extend(leg if not refs else [r for r in leg if not refs or r != refs[-1]])
         first, last = poses[0], poses[-1]
         path = LanePath.from_lanes(self.net, refs, s_start=first.s, s_end=last.s)
-        self._static_cache[key] = (path, refs)  # type: ignore[index]
+        self._routes[id(route)] = (path, refs)
         return path, refs
 
     # -- actions (facade) -----------------------------------------------------------------------------------------
