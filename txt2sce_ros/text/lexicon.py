@@ -78,7 +78,7 @@ MAKES = ("toyota", "honda", "nissan", "ford", "chevrolet", "chevy", "tesla", "le
 #: Static objects -> obstacle category.
 OBSTACLE_HEADS: dict[str, str] = {
     "debris": "debris", "sheet metal": "debris", "metal": "debris", "rod": "debris",
-    "object": "debris", "rock": "debris", "crate": "debris", "bucket": "debris", "mattress": "debris",
+    "fixed object": "other", "stationary object": "other", "solar panel": "other", "object": "debris", "rock": "debris", "crate": "debris", "bucket": "debris", "mattress": "debris",
     "furniture": "debris", "tarp": "debris", "manhole cover": "other", "manhole": "other", "ladder": "debris",
     "pallet": "debris", "lumber": "debris",
     "traffic cone": "cone", "cone": "cone", "pylon": "cone", "delineator": "cone",

@@ -20,7 +20,10 @@ _DROP_UPPER = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _DROP_ALPHA = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NEGATED_NP = re.compile(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
 _DET_END = re.compile(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", re.I)
-_PAREN_DEF = re.compile(r"\s*\((?:[^()]{0,40})\)")  # ("Waymo AV"), (Vehicle 2), (car 1): definitions, not text
+# ("Waymo AV"), (Vehicle 2), (car 1), (AV), (Level 4): definitions and labels, not story. Other parentheses
+# ("a fixed object (solar panel)") keep their words.
+_PAREN_DEF = re.compile(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
+                        r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*)\)", re.I)
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
 _ABBREV = re.compile(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"

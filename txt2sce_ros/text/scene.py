@@ -28,7 +28,7 @@ _CURVE = re.compile(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
 _ROADWAY = re.compile(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
                       r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
-                      r"road|curb|driveway)", re.I)
+                      r"road|curb|driveway|oncoming|traffic)", re.I)
 _SIGNAL = re.compile(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b", re.I)
 _STOP_SIGN = re.compile(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
