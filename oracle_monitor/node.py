@@ -20,7 +20,6 @@ import re
 import sys
 import time
 from pathlib import Path
-from typing import Any
 
 import rclpy
 from diagnostic_msgs.msg import DiagnosticArray

@@ -14,7 +14,7 @@ from nav_msgs.msg import Odometry  # noqa: E402
 from rclpy.qos import QoSProfile, ReliabilityPolicy  # noqa: E402
 
 from oracle_monitor import cdr  # noqa: E402
-from oracle_monitor.bagread import RawMessage, read_bag  # noqa: E402
+from oracle_monitor.bagread import RawMessage  # noqa: E402
 from oracle_monitor.recorder import BagRecorder  # noqa: E402
 from oracle_monitor.replay import replay_bag, schedule  # noqa: E402
 from tests.integration.rosproc import ros_test_env  # noqa: E402
