@@ -36,13 +36,15 @@ class StoryboardElementStateCondition(Check):
     ref: str
     state: str
     line: int | None
+    where: str = ""
 
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "StoryboardElementStateCondition":
         state = ctx.req(el, "state")
         if state not in _STATES:
             raise ctx.error(el, f"unknown storyboard element state '{state}'")
-        return cls(ctx.req(el, "storyboardElementType"), ctx.req(el, "storyboardElementRef"), state, el.sourceline)
+        return cls(ctx.req(el, "storyboardElementType"), ctx.req(el, "storyboardElementRef"), state, el.sourceline,
+                   ctx.where(el))
 
     def holds(self, world: "World") -> bool:
         element = world.storyboard_element(self.element_type, self.ref)

@@ -16,11 +16,23 @@ class ParseContext:
         self.source = source
         self.unsupported: list[str] = []
 
+    def where(self, el: etree._Element) -> str:
+        """The file an element was read from: the scenario, or the catalog entry it was copied from."""
+        node: etree._Element | None = el
+        while node is not None:
+            cat = node.get("_catalog") if isinstance(node.tag, str) else None
+            if cat:
+                return f"{self.source} (catalog entry {cat})"
+            node = node.getparent()
+        return self.source
+
     def error(self, el: etree._Element, message: str) -> InputError:
-        return InputError(message, source=self.source, element=str(el.tag), line=el.sourceline)
+        return InputError(message, source=self.where(el), element=str(el.tag), line=el.sourceline)
 
     def note_unsupported(self, el: etree._Element, what: str | None = None) -> str:
-        note = f"unsupported: {what or el.tag} at line {el.sourceline}"
+        where = self.where(el)
+        suffix = "" if where == self.source else f" of {where[len(self.source) + 2:-1]}"
+        note = f"unsupported: {what or el.tag} at line {el.sourceline}{suffix}"
         if note not in self.unsupported:
             self.unsupported.append(note)
         return note
