@@ -280,7 +280,7 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
         if side is None and re.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
             side = "right"
         return "R6", side or "same", True
-    oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+way\b|\bon-?coming\b",
+    oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
                          ctx + pre,
                          re.I)
     h = _heading(d, e.idx)
@@ -293,7 +293,7 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
     if oncoming or rel == 180:
         if d.junction:
             return "R2", None, True
-        return "R7", "same" if re.search(r"\bwrong\s+way\b", ctx, re.I) else "left", True
+        return "R7", "same" if re.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) else "left", True
     if rel == 0 and not re.search(r"\bbehind\b", ctx, re.I):
         return "R5", _side(ctx) or "same", True
     if d.junction and rel in (90, 270):
@@ -308,7 +308,7 @@ def _position(d: _Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
             if d.junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    from_side = re.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+(?:adjacent\s+|turn\s+|hand\s+)?(?:lane|side))", ctx, re.I)
+    from_side = re.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))", ctx, re.I)
     if d.junction and from_side:
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
     if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
@@ -549,8 +549,9 @@ def _collision_type(d: _Doc, partner: Entity | None, party: Party | None, obstac
             return "side_swipe"
         return "broadside" if ("m" in party.actions or "k" in party.actions) else "side_swipe"
     if party.position == "R7":
-        return "head_on" if party.lane == "same" and re.search(r"\bfront\b", s, re.I) and not \
-            re.search(r"\bside\b", s, re.I) else "side_swipe"
+        touched = s[d.contact_pos:]
+        return "head_on" if party.lane == "same" and re.search(r"\bfront\b", touched, re.I) and not \
+            re.search(r"\bside\b", touched, re.I) else "side_swipe"
     if party.position in ("R1", "R3", "R4", "R2"):
         if re.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror", s, re.I):
             return "side_swipe"

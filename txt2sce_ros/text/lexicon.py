@@ -105,6 +105,7 @@ CONTACT = re.compile(
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
+    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|cycled|walked)\s+into|"
     r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into|contact\s+(?:was\s+made|occurred))\b", re.I)
 NEGATION = re.compile(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 

@@ -251,6 +251,8 @@ _RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter",
 
 
 def _compatible(e: Entity, m: Mention) -> bool:
+    if e.kind == "party" and PARKED_WORDS.search(m.mods) and not any(PARKED_WORDS.search(x.mods) for x in e.mentions):
+        return False  # "the parked vehicle" is not the moving one named before
     if e.kind == "obstacle" or m.kind == "obstacle":
         return e.kind == m.kind and (m.head in e.heads or e.category == m.category)
     if m.head in e.heads:
