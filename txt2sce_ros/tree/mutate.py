@@ -47,7 +47,8 @@ def _choices(kind: str, values: list[str], cfg: dict[str, Any], rng: np.random.G
 
 
 def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed: int, seed_key: int) -> list[Variant]:
-    """The mutated versions of one block, in a fixed order."""
+    """The mutated versions of one block, in a fixed order; identical versions are merged, and a block no operator
+    can change gets none (it then stays as in the seed and is not a layer of the tree)."""
     ss = np.random.SeedSequence([int(seed), int(seed_key), int(block.index)])
     rng = np.random.default_rng(ss)
     rng_seed = int(ss.generate_state(1, dtype=np.uint32)[0])
@@ -55,9 +56,14 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
     m = int(cfg["tree"]["mutations_per_block"])
     out: list[Variant] = []
 
+    seen: set[tuple[str, ...]] = set()
+
     def emit(elements: list[etree._Element | None], operator: str, rec: Recorder) -> None:
-        feats = block_features(block.kind, elements, originals, ctx, cfg)
         frags = tuple(to_text(e) if e is not None else "" for e in elements)
+        if frags in seen:  # two draws that made the same XML would make the same files: keep one
+            return
+        seen.add(frags)
+        feats = block_features(block.kind, elements, originals, ctx, cfg)
         out.append(Variant(block=block.index, index=len(out), operator=operator, fragments=frags,
                            changes=tuple(rec.changes), features=feats, rng_seed=rng_seed))
 
@@ -102,7 +108,9 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                     ops.append("DTM")
                 if wpm_lane_change(els[0], action, entity, width, rng, cfg["trajectory"]["wpm"], ctx, rec):
                     ops.append("WPM")
-                emit(els, "+".join(ops) or "none", rec)
+                if not ops:
+                    break  # nothing in this event any operator mutates (e.g. a route alone): not a tree layer
+                emit(els, "+".join(ops), rec)
         elif block.kind is BlockKind.OBSTACLE:
             spec = cfg["environment"]["obstacle"]
             for _ in range(m):
