@@ -14,6 +14,8 @@ import math
 from .params import LongitudinalParams
 
 
+#: Speed-tracking gain inside a curve (1/s): the speed error closes with a ~2 s time constant.
+CURVE_GAIN = 0.5
 #: Within this distance (m) of a stop point a stop in progress is held through to standstill.
 CREEP_ZONE = 3.0
 #: Standing within this distance (m) of a stop point, the ego waits there instead of creeping closer (the
@@ -87,7 +89,8 @@ def slow_down_accel(v: float, v_target: float, distance: float, p: LongitudinalP
     constant deceleration once it reaches `stop_onset_ratio`·plan_decel; `lag` metres are taken off the distance
     for the jerk-limited build-up of the braking. Inside the curve (distance ~0) it holds the curve's speed."""
     if distance <= 0.5:
-        return min(cruise, free_road_accel(v, v_target, p))
+        # In the curve: track its speed with a gentle proportional law (IDM's free-road term above v0 is harsh).
+        return min(cruise, CURVE_GAIN * (v_target - v))
     if v <= v_target:
         return cruise
     need = (v * v - v_target * v_target) / (2.0 * max(distance - min(lag, 0.5 * distance), 0.1))

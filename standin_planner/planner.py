@@ -109,7 +109,7 @@ class Planner:
             lag = 0.5 * v * max(0.0, plan_decel + self._accel) / self.params.comfort.max_jerk
             sp = StopPlan(decel=plan_decel, cruise=cruise, lag=lag, braking=self._accel < -0.05)
         constraints: list[Constraint] = [Constraint(Reason.CRUISE, cruise)]
-        for dist, v_curve in curve_targets(line, pp.s, v, self.params.lateral, plan_decel):
+        for dist, v_curve in curve_targets(line, pp.s, v, v0, self.params.lateral, plan_decel):
             a = slow_down_accel(v, v_curve, dist, lp, plan_decel=plan_decel, lag=lag, cruise=cruise)
             constraints.append(Constraint(Reason.CURVE, a, "", dist))
         near = [o for o in objects if math.hypot(o.x - ego.x, o.y - ego.y) < PERCEPTION_RANGE]

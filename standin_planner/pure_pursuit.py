@@ -40,13 +40,14 @@ def curve_speed(kappa: float, p: LateralParams) -> float:
     return min(math.sqrt(p.max_lateral_accel / k), 0.95 * p.max_yaw_rate / k)
 
 
-def curve_targets(line: RefLine, s_ego: float, v: float, p: LateralParams, decel: float) -> list[tuple[float, float]]:
-    """(distance ahead, speed limit) of the curve samples ahead that are slower than the ego now, far enough ahead
-    to cover the braking distance at `decel`."""
+def curve_targets(line: RefLine, s_ego: float, v: float, v_max: float, p: LateralParams, decel: float
+                  ) -> list[tuple[float, float]]:
+    """(distance ahead, speed limit) of the curve samples from just behind the ego to its braking horizon whose
+    limit is below `v_max` (the speed the ego would otherwise aim for)."""
     horizon = max(p.curve_preview, v * v / (2.0 * decel) + 3.0 * v + 5.0)
     out = []
-    for s, k in line.max_abs_curvature(s_ego - 1.0, s_ego + horizon):
+    for s, k in line.max_abs_curvature(s_ego - 2.0, s_ego + horizon):
         vc = curve_speed(k, p)
-        if vc < max(v, 0.5):
+        if vc < v_max:
             out.append((max(s - s_ego, 0.0), vc))
     return out
