@@ -593,6 +593,8 @@ def extract(text: str, report_id: str) -> Sketch:
         (([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].sent,
          ([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].start) for e in parties) == first_pos)
     ego_start, ego_actions = _ego_sequence(d, first_pos, party_first=first_is_party)
+    if ego_start == "moving" and not ego_actions:
+        ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
     ego_heading = _heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(re.search(r"\bturn(?:ed|ing)\b", t)) and junction
     npcs: list[Party] = []

@@ -135,7 +135,12 @@ def form_agreement(rows: Iterable[dict], predicted: dict[str, Sketch]) -> dict[s
                 out["collision_type"].add(form_type == p.collision.type, form_type, p.collision.type, rid)
         partner = p.party(p.collision.with_) if p.collision.with_ else None
         pcat = getattr(partner, "category", None)
-        pred_cat = "object" if p.collision.with_ and p.collision.with_.startswith("obs") else (pcat or "-")
+        if pcat in ("parked_vehicle", "door"):
+            pred_cat = "car"  # the form files a parked car (or the car whose door opened) as vehicle 2
+        elif p.collision.with_ and p.collision.with_.startswith("obs"):
+            pred_cat = "object"
+        else:
+            pred_cat = pcat or "-"
         form_cat = _party_category_from_form(row)
         if form_cat:
             out["party_category"].add(form_cat == pred_cat, form_cat, pred_cat, rid)
