@@ -65,6 +65,7 @@ class ActionRun:
 
     domains: frozenset[str] = frozenset()
     moves_entity = False          # True: the run places the entity itself (default motion skips it)
+    consumes_travel = False       # True: its sideways motion takes part of the step's travel (lane changes)
 
     def __init__(self, entity: "Entity") -> None:
         self.entity = entity

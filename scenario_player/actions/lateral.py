@@ -81,7 +81,9 @@ class LaneChangeAction:
             if ref.track.ref.road_id != ent.track.ref.road_id:
                 lane = lanes_left(ent.track.ref.lane_id, ent.track.forward, self.relative)
         _switch_lane(world, ent, lane)
-        return OffsetRun(ent, ent.offset, self.target_offset, self.dynamics)
+        run = OffsetRun(ent, ent.offset, self.target_offset, self.dynamics)
+        run.consumes_travel = True      # a lane change moves along the path it curves on (esmini's model)
+        return run
 
 
 class OffsetRun(ActionRun):
@@ -218,14 +220,15 @@ class LateralDistanceRun(ActionRun):
             ent.offset = want_offset
         else:
             vmax = sp.max_speed if sp.max_speed is not None else math.inf
-            amax = sp.max_accel if sp.max_accel is not None else math.inf
-            # Speed that can still stop in time at amax, toward the error.
-            v_des = math.copysign(min(vmax, math.sqrt(2.0 * amax * abs(err)) if amax < math.inf else vmax,
-                                      abs(err) / dt), err)
-            dv = v_des - self.vel
-            if amax < math.inf:
-                dv = max(-amax * dt, min(amax * dt, dv))
-            self.vel += dv
+            if sp.max_accel is None:
+                # Rigid move at most at the lateral speed limit.
+                self.vel = math.copysign(min(vmax, abs(err) / dt), err)
+            else:
+                # Critically damped spring toward the wanted offset, within the acceleration and speed limits.
+                k = 0.4 * sp.max_accel
+                acc = err * k - self.vel * 2.0 * math.sqrt(k)
+                acc = max(-sp.max_accel, min(sp.max_accel, acc))
+                self.vel = max(-vmax, min(vmax, self.vel + acc * dt))
             ent.offset += self.vel * dt
         if not sp.continuous and abs(want_offset - ent.offset) < 0.01:
             self.done = True

@@ -93,8 +93,9 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
     if ent.track is not None and ent.lane_locked:
         s_before, track_before = ent.s, ent.track
         along = dist
-        if prev_road == ent.track.ref.road_id:
-            # Moving sideways (lane change, offset) uses part of the step's travel, as in esmini.
+        lateral_run = ent.runs.get("lateral")
+        if prev_road == ent.track.ref.road_id and lateral_run is not None and lateral_run.consumes_travel:
+            # A lane change's sideways motion uses part of the step's travel, as in esmini (offsets do not).
             lat = ent.track.center_t(ent.s) + ent.offset - prev_t
             if 0.0 < abs(lat) < abs(dist):
                 along = math.copysign(math.sqrt(dist * dist - lat * lat), dist)

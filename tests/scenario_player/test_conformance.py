@@ -17,6 +17,7 @@ CASES = {
     "drop-bike": 0.01,                     # LongitudinalDistanceAction without dynamics, relative object position
     "traffic_lights": 0.5,                 # signals, signal conditions with delay, routes through a junction
     "lane_change_simple": 0.5,             # end of road, teleports, maximumExecutionCount
+    "keep_lateral_distance": 0.5,          # LateralDistanceAction (speed-limited and damped), relative lanes
 }
 
 
