@@ -67,3 +67,15 @@ def test_check_frames_contact_and_none() -> None:
                     objects=(_state("npc1", 0.0, 10.0, 0.0, 0.0),)) for k in range(5)]
     assert check_frames(frames, "npc1")[0] == "none"
     assert check_frames(frames, "npc9")[0] == "none"
+
+
+def test_dev_gold_fidelity_reaches_the_target(buildable) -> None:
+    """Issue 4's bar: ≥ 90% of the buildable dev-gold sketches are faithful in the player (the figure itself is
+    printed by `txt2sce fidelity`)."""
+    from txt2sce_ros.seed.fidelity import fidelity_batch
+
+    results = fidelity_batch(buildable, seed=0)
+    assert len(results) == len(buildable)
+    assert not [r for r in results if r.kind == "error"]
+    rate = sum(r.faithful for r in results) / len(results)
+    assert rate >= 0.90, [r.report_id for r in results if not r.faithful]

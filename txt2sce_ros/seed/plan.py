@@ -611,8 +611,13 @@ class Planner:
         t, _, d = actor.profile(self.horizon)
 
         def ok(at: float, rel: int) -> bool:
-            ref = actor.track.lane_at(actor.d0 + float(np.interp(at, t, d)))
-            return self.net.neighbour(ref, "left" if rel > 0 else "right") is not None
+            # with a margin of ±0.5 s: the player's position may differ from the plan's by a few centimetres at a
+            # lane's end, and a lane change is resolved against the lane the entity is on when it starts
+            for dt in (-0.5, 0.0, 0.5):
+                ref = actor.track.lane_at(actor.d0 + float(np.interp(at + dt, t, d)))
+                if self.net.neighbour(ref, "left" if rel > 0 else "right") is None:
+                    return False
+            return True
 
         for k, ev in enumerate(actor.events):
             lc = next((a for a in ev.actions if isinstance(a, LaneChangeAct)), None)
