@@ -63,3 +63,11 @@ def test_other_versions_build(db) -> None:
     db13 = entity_db("1.3")
     assert "TrafficSwarmAction" in db13.elements()
     assert "RandomRouteAction" in db13.elements() and "RandomRouteAction" not in db.elements()
+
+
+def test_enumerated_domains(db) -> None:
+    weather = db.enumerations("Weather")
+    assert weather == {("Weather", "cloudState"): ["cloudy", "free", "overcast", "rainy", "skyOff"]}
+    every = db.enumerations()
+    assert ("TransitionDynamics", "dynamicsShape") in every and ("Vehicle", "vehicleCategory") in every
+    assert all(vals == sorted(vals) and vals for vals in every.values())

@@ -266,6 +266,17 @@ class EntityDB:
                 return list(rec.enumeration) if rec.enumeration is not None else None
         raise InputError(f"no attribute uses simple type {type_name}", element=type_name)
 
+    def enumerations(self, element: str | None = None) -> dict[tuple[str, str], list[str]]:
+        """(type, attribute) -> members for every enumerated attribute (of one element, or of all): the value
+        domains of enumerated mutations (weather cloudState, dynamicsShape, vehicleCategory, ...)."""
+        owner = self.resolve(element) if element else None
+        out = {}
+        for _, d in self.graph.nodes(data=True):
+            rec = d["record"]
+            if d["node"] == "XSDAttribute" and rec.enumeration is not None and (owner is None or rec.owner == owner):
+                out[(rec.owner, rec.name)] = list(rec.enumeration)
+        return dict(sorted(out.items()))
+
     def numeric_range(self, element: str, attribute: str) -> tuple[float | None, float | None] | None:
         return self.attribute(element, attribute).numeric_range
 
