@@ -11,7 +11,7 @@ import re
 #: Operators of AV fleets that write narratives; "<company> AV/vehicle/car/truck/shuttle" names the AV.
 COMPANIES = (
     "waymo", "cruise", "zoox", "apple", "pony\\.ai", "pony", "nuro", "ghost", "beep", "aurora", "apollo", "baidu",
-    "weride", "may mobility", "argo", "lyft", "uber", "motional", "aptiv", "drive\\.ai", "toyota research",
+    "weride", "may mobility", "may", "argo", "lyft", "uber", "motional", "aptiv", "drive\\.ai", "toyota research",
     "mercedes-benz", "kodiak", "tusimple", "navya", "autox", "deeproute", "didi", "gatik", "plus", "jingchi",
     "imagry", "mobileye", "qcraft", "vay", "valeo", "nvidia", "wayve", "woven planet", "tesla autopilot",
 )
@@ -24,7 +24,7 @@ EGO_PATTERNS: tuple[str, ...] = (
     rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
     rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:\s*\((?:vehicle|car)?\s*1\))?",
     rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
-    rf"reporting|vehicle operators))",
+    rf"reporting|vehicle operators))(?:\s+(?-i:[A-Z])[\w.]*){{0,3}}(?:\s+{_AV_NOUN}\b)?",
     r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
     r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
     r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",

@@ -122,7 +122,7 @@ def normalise(text: str) -> str:
     if "EGO" not in t:
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
         # the narrative introduces is the AV, and so is that noun with "the" afterwards.
-        first = re.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,3}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
+        first = re.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
         if first:
             noun = first.group(1)
             t = t[:first.start()] + "EGO" + re.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
@@ -180,8 +180,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     out: list[Mention] = []
     for m in _HEAD_RE.finditer(s):
         head = m.group(1)
-        if m.start() > 0 and s[m.start() - 1] == "-" and head not in ("EGO", "EGOD"):
-            continue  # "single-car collision", "multi-vehicle": a compound adjective, not a party
+        if head not in ("EGO", "EGOD") and ((m.start() > 0 and s[m.start() - 1] == "-") or
+                                            s[m.end():m.end() + 1] == "-"):
+            continue  # "single-car collision", "truck-mounted": a compound adjective, not a party
         after = s[m.end():]
         hl = head.lower()
         if hl in ("it", "he", "she"):

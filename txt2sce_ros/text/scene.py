@@ -90,12 +90,16 @@ _LOT_EXIT = re.compile(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|f
 _ONGOING_TURN = re.compile(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)
 
 
+_DISPLAYED = re.compile(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
+
+
 def is_junction(sents: list[str], first_sent: int) -> bool:
     """Did the interaction happen at a junction? Turns finished before the interaction began ("after turning right
     onto X", a turn told in a sentence before the other party appears), turns out of a driveway or lot, and
     intersections the AV was only near do not count."""
     for i, s in enumerate(sents):
-        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", s)))
+        # An arrow on a work truck's light board is no traffic signal.
+        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
         if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
             return True
         if _TURN_ONTO.search(cleaned) and (i >= first_sent or _ONGOING_TURN.search(cleaned)):
@@ -117,6 +121,7 @@ def road(t: str, *, junction: bool) -> RoadInfo:
         layout = "straight"
     else:
         layout = "unknown"
+    t = _DISPLAYED.sub(" ", t)
     if _STOP_SIGN.search(t):
         control = "stop_sign"
     elif _SIGNAL.search(t) and layout.startswith("junction"):
