@@ -87,21 +87,35 @@ def _clothoid(world: "World", c: Clothoid) -> tuple[np.ndarray, np.ndarray | Non
 
 
 def _nurbs(world: "World", nb: Nurbs) -> tuple[np.ndarray, np.ndarray | None]:
+    """Sample the rational B-spline about every metre of its control polygon. Times: each control point's time
+    belongs to the parameter where its basis function peaks, and is interpolated linearly in the parameter in
+    between (how esmini times NURBS trajectories)."""
     poses = [cp.position.resolve(world) for cp in nb.points]
     ctrl = np.array([[p.x, p.y] for p in poses], dtype=float)
     w = np.array([cp.weight for cp in nb.points], dtype=float)
     ctimes = [cp.time for cp in nb.points]
     knots = np.array(nb.knots, dtype=float)
     k = nb.order
-    u = np.linspace(knots[k - 1], knots[len(ctrl)], 400)
+    polygon = float(np.hypot(*np.diff(ctrl, axis=0).T).sum()) if len(ctrl) > 1 else 0.0
+    steps = int(1 + polygon / 1.0)
+    u = np.minimum(np.arange(steps + 1) * (knots[-1] / steps), knots[-1] - 1e-10)
+    u = np.maximum(u, knots[0])
     basis = np.array([_basis(knots, k, i, u) for i in range(len(ctrl))])     # (n, m)
     wb = basis * w[:, None]
     den = wb.sum(axis=0)
     den[den == 0] = 1.0
     pts = (wb.T @ ctrl) / den[:, None]
     times = None
-    if all(t is not None for t in ctimes):
-        times = (wb.T @ np.array(ctimes, dtype=float)) / den
+    if all(t is not None for t in ctimes) and len(ctrl) > 1:
+        peak_u = u[np.argmax(basis, axis=1)]
+        times = np.empty(len(u))
+        seg = 0
+        for j, uj in enumerate(u):
+            if seg + 1 < len(ctrl) - 1 and uj >= peak_u[seg + 1]:
+                seg += 1
+            span = peak_u[seg + 1] - peak_u[seg]
+            f = (uj - peak_u[seg]) / span if span > 0 else 0.0
+            times[j] = ctimes[seg] + f * (ctimes[seg + 1] - ctimes[seg])  # type: ignore[operator]
     return pts, times
 
 
@@ -203,4 +217,5 @@ class TrajectoryRun(ActionRun):
         if self.pos >= self.length - 1e-9:
             self.done = True
             world.reattach(ent)
+            ent.placed = True           # already moved this step: default motion takes over from the next one
 

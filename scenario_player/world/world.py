@@ -146,13 +146,25 @@ class World:
 
         track = self.tracks.at(road_id, lane_id, s0)
         along = abs(_wrap(track.pose(s0)[2] - ent.h)) <= math.pi / 2      # entity drives with the lane
-        track, s, _, _ = lane_walk(self, track, s0, ds if along else -ds, ent.route_lanes)
+        # ds is measured in road s while it stays on this lane section (as esmini reads it); beyond, the rest
+        # continues through the lanes that follow.
+        lane_dir = 1.0 if track.forward else -1.0
+        step = ds if along else -ds                    # + = the lane's driving direction
+        s = s0 + lane_dir * step
+        flips = 0
+        if not track.s0 <= s <= track.s1:
+            end = track.s1 if (lane_dir * step) > 0 else track.s0
+            track, s, _, flips = lane_walk(self, track, end, math.copysign(abs(s - end) + 1e-9, step),
+                                           ent.route_lanes)
+        # dLane and offset count to the left of the reference entity's direction of travel.
+        with_lane = along if flips % 2 == 0 else not along
+        plus_s = track.forward == with_lane
         lane = track.ref.lane_id
-        step = d_lane if track.forward else -d_lane
-        target = lane + step
+        d = d_lane if plus_s else -d_lane               # in road terms: lane ids grow toward +t
+        target = lane + d
         if lane < 0 <= target or lane > 0 >= target:
-            target += 1 if step > 0 else -1
-        return self.lane_pose(track.ref.road_id, target, s, offset, orientation)
+            target += 1 if d > 0 else -1
+        return self.lane_pose(track.ref.road_id, target, s, offset if plus_s else -offset, orientation)
 
     def route_pose(self, rp: Any) -> Pose:
         path, refs = self.route_path(rp.route)

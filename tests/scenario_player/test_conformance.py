@@ -18,6 +18,7 @@ CASES = {
     "traffic_lights": 0.5,                 # signals, signal conditions with delay, routes through a junction
     "lane_change_simple": 0.5,             # end of road, teleports, maximumExecutionCount
     "keep_lateral_distance": 0.5,          # LateralDistanceAction (speed-limited and damped), relative lanes
+    "trajectory-test": 0.5,                # FollowTrajectory: timed Polyline, Clothoid, Nurbs; relative lanes
 }
 
 
