@@ -19,6 +19,7 @@ HELP = "re-judge recorded runs (rosbag2 MCAP) offline: pass / fail with categori
 
 
 def register(parser: argparse.ArgumentParser) -> None:
+    parser.epilog = __doc__
     parser.add_argument("bags", nargs="+", metavar="BAG", help="rosbag2 directories or .mcap files")
     parser.add_argument("--config", default=None, help="oracle thresholds YAML (default config/oracle.yaml)")
     parser.add_argument("--json", action="store_true", help="one JSON object per run on stdout")

@@ -15,6 +15,7 @@ HELP = "re-publish a recorded run on its ROS 2 topics with its original timing (
 
 
 def register(parser: argparse.ArgumentParser) -> None:
+    parser.epilog = __doc__
     parser.add_argument("bag", metavar="BAG", help="rosbag2 directory or .mcap file")
     parser.add_argument("--rate", type=float, default=1.0, help="speed factor (2.0 = twice as fast; default 1.0)")
     parser.add_argument("--topics", nargs="+", default=None, help="only these topics (default: all but violations)")
