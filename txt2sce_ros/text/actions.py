@@ -71,6 +71,15 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
 )
 _PHRASE_RES = [(c, re.compile(p, re.I)) for c, p in PHRASES]
+#: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
+#: (the extractor's hot loop; the results are the same).
+_NEEDS: dict[str, tuple[str, ...]] = {
+    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
+    "i": ("began", "begin", "start", "forward", "proceed"), "f": ("left", "oncoming", "opposing", "opposite", "merg"),
+    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
+    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding"),
+    "c": ("slow", "decelerat", "brak"), "A": ("straight",),
+}
 _INTENT = re.compile(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEGATED = re.compile(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
@@ -147,7 +156,11 @@ def _who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str
 def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None) -> list[Act]:
     """The manoeuvres in one sentence, each attributed to its doer."""
     spans: list[tuple[int, int, str]] = []
+    low = s.lower()
     for code, rx in _PHRASE_RES:
+        needs = _NEEDS.get(code)
+        if needs is not None and not any(w in low for w in needs):
+            continue
         for m in rx.finditer(s):
             if any(m.start() < e and m.end() > b for b, e, _ in spans):
                 continue  # an earlier (more specific) phrase already covers this text

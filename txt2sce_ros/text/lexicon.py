@@ -15,7 +15,26 @@ COMPANIES = (
     "mercedes-benz", "kodiak", "tusimple", "navya", "autox", "deeproute", "didi", "gatik", "plus", "jingchi",
     "imagry", "mobileye", "qcraft", "vay", "valeo", "nvidia", "wayve", "woven planet", "tesla autopilot",
 )
-_CO = "|".join(COMPANIES)
+def _trie(words: tuple[str, ...]) -> str:
+    """An alternation of literal names factored as a trie (much faster to scan than a flat alternation)."""
+    root: dict = {}
+    for w in words:
+        node = root
+        for ch in w.replace("\\", ""):
+            node = node.setdefault(ch, {})
+        node[""] = {}
+
+    def emit(node: dict) -> str:
+        alts = [re.escape(ch) + emit(sub) for ch, sub in sorted(node.items()) if ch]
+        if not alts:
+            return ""
+        body = "(?:" + "|".join(alts) + ")" if len(alts) > 1 or "" in node else alts[0]
+        return body + ("?" if "" in node else "")
+
+    return emit(root)
+
+
+_CO = _trie(COMPANIES)
 _AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|"
             r"robotaxi|suv)")
 
