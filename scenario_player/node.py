@@ -159,6 +159,7 @@ class PlayerNode(Node):
             return status
         needs_planner = self.ego_mode == "planner"
         self.commands.clear()
+        self.latest = None              # a command of the previous run must not drive this one
         frame = sim.reset()
         self._status(replace(sim.status, state="started"))
         if needs_planner and not self.wait_for_planner(executor):
