@@ -40,6 +40,7 @@ class Oracle:
         self.frames = 0
         self.t_last = 0.0
         self._finished: RunVerdict | None = None
+        self._end_reason = ""
 
     def set_goal(self, goal: Goal) -> None:
         """The goal arrived after the first frame (topics are not ordered across each other)."""
@@ -84,6 +85,7 @@ class Oracle:
         if self._finished is not None:
             return self._finished
         t_end = status.t if status and status.t else self.t_last
+        self._end_reason = status.end_reason if status else ""
         # End-of-run checks (goal reached, never started) judge the system under test: not for runs that broke.
         if status is not None and status.state == "finished" and not error_reason(status, self.frames):
             self.violations.extend(self.smart.finish(t_end, status.end_reason))
@@ -101,6 +103,9 @@ class Oracle:
             notes.append(f"jerk rule computed over {self.jerk.coarse_interval * 1000:.0f} ms frames (paper: "
                          f"5–15 ms)")
         contacts = [v for v in self.violations if v.rule in (Rule.CONTACT, Rule.STATIC_OBSTACLE_HIT)]
+        if self._end_reason == "collision" and not contacts:
+            notes.append("the player ended the run on a collision that the footprints never showed (check the "
+                         "entities' bounding boxes)")
         jerks = [v for v in self.violations if v.rule is Rule.JERK_COLLISION]
         w = self.params.safety.jerk_match_window
         both = sum(1 for c in contacts if any(abs(j.t - c.t) <= w for j in jerks))

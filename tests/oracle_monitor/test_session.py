@@ -1,0 +1,66 @@
+"""JudgeSession: runs cut out of a message stream in whatever order DDS delivered it."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from oracle_monitor import OracleParams
+from oracle_monitor.session import JudgeSession
+from txt2sce_ros import contract as c
+from txt2sce_ros import ros_io
+from txt2sce_ros.contract import Goal, RunStatus, ScenarioEnvelope, Verdict
+
+from .oracle_runs import car, esmini_map, straight_run
+
+PARAMS = OracleParams.from_config()
+
+
+def _feed(session: JudgeSession, frames) -> None:
+    for f in frames:
+        session.on_message(c.TOPIC_TRAFFIC_LIGHTS, ros_io.lights_to_diagnostics(f.lights, f.t))
+        for o in f.objects:
+            session.on_message(c.TOPIC_OBJECTS_ODOM, ros_io.entity_to_odometry(o))
+        session.on_message(c.TOPIC_OBJECTS_MARKERS, ros_io.frame_to_markers(f))
+        session.on_message(c.TOPIC_EGO_ODOM, ros_io.entity_to_odometry(f.ego))
+
+
+def _env(sid: str) -> object:
+    path = esmini_map("straight_500m.xodr")
+    return ros_io.string_msg(ScenarioEnvelope(id=sid, xosc="", map_path=str(path)).to_json())
+
+
+def _status(sid: str, state: str, t: float = 0.0, reason: str = "") -> object:
+    return ros_io.string_msg(RunStatus(sid, state, t, reason).to_json())
+
+
+def test_goal_before_scenario_duplicates_and_an_unfinished_run() -> None:
+    s = JudgeSession(PARAMS)
+    # Run a: its goal arrives before its scenario, the scenario is delivered twice (transient-local history).
+    s.on_message(c.TOPIC_GOAL, ros_io.goal_to_pose(Goal(60.0, 0.0, 0.0)))
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "started"))
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    _feed(s, straight_run(lambda t: 10.0, 6.0))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 6.0, "goal_reached"))
+    # Run b: never finishes; run c's scenario arrives, so b is judged as incomplete (no failure seen: error).
+    s.on_message(c.TOPIC_SCENARIO, _env("b"))
+    _feed(s, straight_run(lambda t: 10.0, 2.0))
+    s.on_message(c.TOPIC_SCENARIO, _env("c"))
+    # Run c: an entity named "Ego" on /sim/ego/odom (the scenario's own name) rear-ends a car; then input ends.
+    frames = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("lead", t, 30.0)])
+    _feed(s, [replace(f, ego=replace(f.ego, name="Ego")) for f in frames])
+    s.close()
+    a, b, cc = s.verdicts
+    assert (a.scenario_id, a.verdict) == ("a", Verdict.PASS) and a.frames == 121
+    assert (b.scenario_id, b.verdict) == ("b", Verdict.ERROR) and "no final run status" in b.error
+    assert cc.scenario_id == "c" and cc.verdict is Verdict.FAIL and cc.category_names() == ("Collisions",)
+    assert not any("road network not loaded" in n for n in a.notes)
+
+
+def test_a_bag_without_scenario_or_status_is_judged_as_one_incomplete_run() -> None:
+    s = JudgeSession(PARAMS)
+    _feed(s, straight_run(lambda t: 0.0, 7.0))                 # what `ros2 bag record` of odometry alone gives
+    s.close()
+    (v,) = s.verdicts
+    assert v.verdict is Verdict.FAIL and v.category_names() == ("StartFail",)
+    assert any("incomplete" in n for n in v.notes) and any("no road network" in n for n in v.notes)
