@@ -587,8 +587,8 @@ def extract(text: str, report_id: str) -> Sketch:
         ms = [m for m in e.mentions if m.sent not in summary] or e.mentions
         p = (ms[0].sent, ms[0].start)
         first_pos = p if first_pos is None or p < first_pos else first_pos
-    junction = d.junction = is_junction([s if i not in summary else "" for i, s in enumerate(sents)],
-                                        first_pos[0] if first_pos else 0)
+    junction = d.junction = is_junction([s if not _BOILERPLATE.search(s) else "" for s in sents],
+                                        first_pos[0] if first_pos else 0, frozenset(summary))
     first_is_party = bool(parties) and (not obstacles or min(
         (([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].sent,
          ([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].start) for e in parties) == first_pos)

@@ -71,7 +71,7 @@ PARTY_HEADS: dict[str, str] = {
     "tractor-trailer": "truck", "tractor trailer": "truck", "semi-trailer truck": "truck", "semi-truck": "truck",
     "semi truck": "truck", "semi": "truck", "box truck": "truck", "fire engine": "truck", "fire truck": "truck",
     "garbage truck": "truck", "tow truck": "truck", "dump truck": "truck", "cargo truck": "truck",
-    "heavy truck": "truck", "delivery truck": "truck", "truck": "truck", "big rig": "truck", "18-wheeler": "truck",
+    "heavy truck": "truck", "delivery truck": "truck", "truck": "truck", "big rig": "truck", "18-wheeler": "truck", "eighteen-wheeler": "truck",
     "bus": "bus", "shuttle": "bus", "trolley": "bus", "streetcar": "bus", "light rail": "bus",
     "motorcyclist": "motorcycle", "motorcycle": "motorcycle", "motorbike": "motorcycle", "moped": "motorcycle",
     "motorcycle rider": "motorcycle",

@@ -15,8 +15,8 @@ _NOT_JUNCTION = re.compile(r"\b(?:near|before|past|approaching|toward|towards|fr
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
 _T_JUNCTION = re.compile(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
-_TURN_ONTO = re.compile(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^.,]{1,40}?\s+)?onto\b|\b(?:left|right)"
-                        r"\s+turn\s+(?:from\s+[^.,]{1,40}?\s+)?onto\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
+_TURN_ONTO = re.compile(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
+                        r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?onto\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b", re.I)
 _PRIOR_TURN = re.compile(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
@@ -93,13 +93,19 @@ _ONGOING_TURN = re.compile(r"\b(?:turning|completing|making|preparing\s+to|waiti
 _DISPLAYED = re.compile(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
 
 
-def is_junction(sents: list[str], first_sent: int) -> bool:
+def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = frozenset()) -> bool:
     """Did the interaction happen at a junction? Turns finished before the interaction began ("after turning right
     onto X", a turn told in a sentence before the other party appears), turns out of a driveway or lot, and
     intersections the AV was only near do not count."""
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
         cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
+        if re.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
+                re.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
+                          cleaned, re.I):
+            return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
+        if i in summary:
+            continue
         if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
             return True
         if _TURN_ONTO.search(cleaned) and (i >= first_sent or _ONGOING_TURN.search(cleaned)):
