@@ -2,8 +2,8 @@
 over the road model's routing graph (networkx shortest path), turned into the reference line the controllers
 follow. Replanning happens when the ego is found off the route.
 
-Lane changes in a route (the graph's `change_left` / `change_right` edges) become a diagonal across the lane
-section: the line leaves the first lane a third of the way along it and joins the next lane two thirds along.
+Lane changes in a route (the graph's `change_left` / `change_right` edges) are blended into the line: it leaves
+the first lane a few metres ahead of the ego and joins the target lane over 30 m per lane crossed.
 """
 
 from __future__ import annotations
@@ -24,6 +24,9 @@ from .refline import RefLine
 DS = 0.5
 #: The line runs on past the goal so the pure-pursuit look-ahead has a point to aim at near the end (m).
 GOAL_EXTENSION = 30.0
+#: A lane change in the route starts this far ahead of the ego (m) and takes this long per lane crossed (m).
+LANE_CHANGE_START = 5.0
+LANE_CHANGE_LENGTH = 30.0
 #: The line starts this far behind the ego, so its projection is never clipped at the start (m).
 START_BACKOFF = 10.0
 
@@ -78,30 +81,56 @@ def _extend(net: RoadNetwork, last: LaneRef, length: float) -> list[LaneRef]:
     return out
 
 
-def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str]) -> tuple[RefLine, list[float]]:
+def _groups(lanes: list[LaneRef], kinds: list[str]) -> list[list[int]]:
+    """Indices of the lanes split into runs joined by lane changes (one run = one stretch of road)."""
+    groups: list[list[int]] = [[0]]
+    for i, kind in enumerate(kinds):
+        if kind == "follow":
+            groups.append([i + 1])
+        else:
+            groups[-1].append(i + 1)
+    return groups
+
+
+def _smoothstep(u: np.ndarray) -> np.ndarray:
+    u = np.clip(u, 0.0, 1.0)
+    return u * u * (3.0 - 2.0 * u)
+
+
+def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str], *,
+               start_xy: tuple[float, float] | None = None) -> tuple[RefLine, list[tuple[float, float]]]:
     """Concatenate the lanes' centre lines (driving direction) into one reference line; `kinds[i]` is the edge
-    from lanes[i] to lanes[i+1]. Also returns the arc length at which each lane starts on the line."""
-    xy_parts, junction_parts, width_parts = [], [], []
-    cut_start = 0.0                                    # fraction of the lane skipped at its start
-    for i, ref in enumerate(lanes):
-        pts, junction, widths = _lane_points(net, ref)
-        n = len(pts)
-        lo = int(round(cut_start * (n - 1)))
-        hi = n
-        cut_start = 0.0
-        if i < len(kinds) and kinds[i] != "follow":
-            hi = max(lo + 2, int(round((n - 1) / 3.0)) + 1)
-            cut_start = 2.0 / 3.0
-        xy_parts.append(pts[lo:hi, :2])
-        junction_parts.append(np.full(hi - lo, junction))
-        width_parts.append(widths[lo:hi])
+    from lanes[i] to lanes[i+1]. Lanes joined by lane changes (neighbours in one lane section, sampled at the same
+    s) are blended: the line leaves the first `LANE_CHANGE_START` m after the ego (or after the section start)
+    and reaches the last over `LANE_CHANGE_LENGTH` m per lane crossed. Returns the line and, per lane, the
+    (start, end) arc length of the stretch it belongs to."""
+    xy_parts, junction_parts, width_parts, group_of = [], [], [], {}
+    for g, idx in enumerate(_groups(lanes, kinds)):
+        src, junction, _ = _lane_points(net, lanes[idx[0]])
+        dst, _, widths = _lane_points(net, lanes[idx[-1]])
+        xy = dst[:, :2]
+        if len(idx) > 1 and len(src) == len(dst):
+            arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(src[:, :2], axis=0).T))])
+            begin = 0.0
+            if g == 0 and start_xy is not None:
+                begin = float(arc[int(np.argmin(np.hypot(src[:, 0] - start_xy[0], src[:, 1] - start_xy[1])))])
+            begin += LANE_CHANGE_START
+            length = min(LANE_CHANGE_LENGTH * (len(idx) - 1), max(arc[-1] - begin - 1.0, 1.0))
+            w = _smoothstep((arc - begin) / length)[:, None]
+            xy = (1.0 - w) * src[:, :2] + w * dst[:, :2]
+        xy_parts.append(xy)
+        junction_parts.append(np.full(len(xy), junction))
+        width_parts.append(widths)
+        for i in idx:
+            group_of[i] = g
     xy = np.vstack(xy_parts)
-    starts = np.cumsum([0] + [len(p) for p in xy_parts[:-1]])
     seg = np.hypot(*np.diff(xy, axis=0).T)
     s = np.concatenate([[0.0], np.cumsum(seg)])
+    bounds = np.cumsum([0] + [len(p) for p in xy_parts])
+    spans = [(float(s[bounds[group_of[i]]]), float(s[bounds[group_of[i] + 1] - 1])) for i in range(len(lanes))]
     line = RefLine(xy, in_junction=np.concatenate(junction_parts), lane_width=np.concatenate(width_parts),
                    lanes=tuple(lanes))
-    return line, [float(s[i]) for i in starts]
+    return line, spans
 
 
 def _locate(net: RoadNetwork, x: float, y: float, heading: float, what: str) -> LaneRef:
@@ -123,13 +152,12 @@ def plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal)
     tail = _extend(net, lanes[-1], GOAL_EXTENSION)
     full = list(lanes) + tail
     kinds += ["follow"] * len(tail)
-    line, starts = build_line(net, full, kinds)
+    line, spans = build_line(net, full, kinds, start_xy=(x, y))
     # Each pose is projected onto its own lane's stretch of the line, so a route crossing itself (or passing the
     # goal's neighbourhood earlier) cannot confuse the two.
-    first_end = starts[1] if len(starts) > 1 else line.length
-    ego_s = line.project(x, y, near_s=0.5 * first_end, window=0.5 * first_end + 1.0).s
-    g0 = starts[len(lanes) - 1]
-    g1 = starts[len(lanes)] if len(starts) > len(lanes) else line.length
+    e0, e1 = spans[0]
+    ego_s = line.project(x, y, near_s=0.5 * (e0 + e1), window=0.5 * (e1 - e0) + 1.0).s
+    g0, g1 = spans[len(lanes) - 1]
     goal_s = line.project(goal.x, goal.y, near_s=0.5 * (g0 + g1), window=0.5 * (g1 - g0) + 1.0).s
     trimmed, shift = _trim(line, max(0.0, ego_s - START_BACKOFF), min(line.length, goal_s + GOAL_EXTENSION))
     return Route(lanes=tuple(lanes), line=trimmed, goal_s=goal_s - shift)

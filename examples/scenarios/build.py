@@ -303,6 +303,8 @@ SCENARIOS: tuple[Scenario, ...] = (
     # --- benign: no conflicting party ---------------------------------------------------------------------------
     Scenario("benign_straight", "straight_3x3.xodr", Lane("1", -2, 20.0), Lane("1", -2, 300.0),
              note="Straight three-lane road, from standstill to a goal 280 m ahead."),
+    Scenario("benign_lane_change", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -3, 300.0), ego_speed=8.0,
+             note="The goal lies two lanes to the right: the route changes lanes twice."),
     Scenario("benign_curve", "curve.xodr", Lane("1", -1, 20.0), Lane("1", -1, 450.0), ego_speed=5.0,
              note="Curved road: the curve speed limit keeps the yaw rate inside the smoothness band."),
     Scenario("benign_junction_left", J4, Lane("3", -1, 80.0), Lane("2", 2, 120.0),

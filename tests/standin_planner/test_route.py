@@ -42,3 +42,24 @@ def test_off_route_by_offset_and_by_heading():
     xo, yo, _ = n.lane_to_world("2", -1, 200.0, 4.0 if n.lane_forward("2", -1) else -4.0)
     assert off_route(route.line, xo, yo, h, s, 3.0)
     assert off_route(route.line, x, y, h + math.pi, s, 3.0)
+
+
+def test_lane_changes_in_the_route_are_blended_into_the_line():
+    from txt2sce_ros.paths import BUNDLED_MAPS
+    from txt2sce_ros.road import load_network
+    import numpy as np
+
+    n = load_network(BUNDLED_MAPS / "straight_3x3.xodr")
+    x, y, h = n.lane_to_world("1", -1, 20.0)
+    goal = goal_on_lane(n, "1", -3, 300.0)
+    route = plan_route(n, x, y, h, goal)
+    assert [ref.lane_id for ref in route.lanes] == [-1, -2, -3]
+    line = route.line
+    gx, gy, _ = line.position(route.goal_s)
+    assert math.hypot(gx - goal.x, gy - goal.y) < 0.5
+    # Starts in the ego's lane, is in the goal lane well before the goal, and is smooth in between.
+    assert line.project(x, y).offset == pytest.approx(0.0, abs=0.1)
+    w3 = n.lane_to_world("1", -3, 150.0)
+    assert line.project(w3[0], w3[1]).offset == pytest.approx(0.0, abs=0.1)
+    assert np.hypot(*np.diff(line.xy, axis=0).T).max() < 1.0
+    assert np.abs(line.curvature).max() < 0.05
