@@ -155,7 +155,14 @@ class Planner:
         v = actor.v0
         names = action_names("".join(c for c, _ in schedule))
         shape, dim = self.D.shape, self.D.dimension
+        floor = 0.0
         for k, ((code, t), name) in enumerate(zip(schedule, names)):
+            prev = actor.events[-1] if actor.events else None
+            if prev is not None and prev.code == "h" and code in "ik":
+                # a stop is completed before moving off again (0.5 s at standstill)
+                stop_end = prev.planned_time + next((a.value for a in prev.actions if isinstance(a, SpeedAct)), 0.0)
+                floor = max(floor, round(stop_end + 0.5, 2))
+            t = max(t, floor)
             acts: list = []
             if code in "ai":
                 target = cruise if code == "i" or v == 0.0 else v if v > 0 else cruise
@@ -200,7 +207,14 @@ class Planner:
                 actor.speed_steps.append(SpeedStep(t, target, dur))
             v = target
             ev_name = f"{actor.name}_e{k + 1}_{name}"
-            actor.events.append(EventPlan(ev_name, code, tuple(acts), Trigger("time", t), t))
+            trigger = Trigger("time", t)
+            prev = actor.events[-1] if actor.events else None
+            if prev is not None and prev.code == "h" and code in "ik":
+                # moving off again after a stop: chained to the end of the stop (the standstill is reached), so
+                # the pause survives mutations of speed and dynamics
+                stop_end = prev.planned_time + next((a.value for a in prev.actions if isinstance(a, SpeedAct)), 0.0)
+                trigger = Trigger("event_end", round(max(t - stop_end, 0.0), 2), ref=prev.name)
+            actor.events.append(EventPlan(ev_name, code, tuple(acts), trigger, t))
 
     def _offset_t(self, actor: Actor, lateral: float) -> float:
         """Lateral (left of travel) -> OpenSCENARIO lane offset sign (toward +t) at the actor's start lane."""
