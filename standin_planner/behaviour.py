@@ -32,6 +32,7 @@ class Reason(str, enum.Enum):
     RED = "red_light"
     YELLOW = "yellow_light"
     GOAL = "goal"
+    WAIT = "wait_clear"    # standing, something in the path close ahead: start only once it is clear
     HOLD = "hold"          # refuses to move (fault no_start_when_close)
 
 
@@ -111,6 +112,18 @@ def lead_constraint(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, v
     gap = best.s_min - ego.s_front
     a = idm_accel(ego.speed, v0, gap, max(best.v_along, 0.0), lp, decel=decel, own_brake=own_brake)
     return Constraint(Reason.LEAD, a, best.state.name, gap, urgent=a < -decel)
+
+
+def start_clear(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, bp: BehaviourParams) -> Constraint | None:
+    """At standstill, a wait while anything stands or moves in the path within `start_clear_distance` ahead
+    (a slowly moving lead is followed by IDM once it has pulled away that far)."""
+    if ego.speed >= 0.1:
+        return None
+    for po in objs:
+        gap = po.s_min - ego.s_front
+        if -0.5 < gap < bp.start_clear_distance and in_path(po, ego, ego_offset, bp):
+            return Constraint(Reason.WAIT, 0.0, po.state.name, gap)
+    return None
 
 
 def stop_constraint(reason: Reason, distance: float, ego: EgoOnPath, lp: LongitudinalParams, sp: StopPlan,

@@ -15,7 +15,7 @@ from txt2sce_ros.errors import InputError
 from txt2sce_ros.road import RoadNetwork
 
 from .behaviour import (Constraint, EgoOnPath, PathObject, Reason, StopPlan, lead_constraint, measure,
-                        obstacle_rules, signal_constraints, yield_constraints)
+                        obstacle_rules, signal_constraints, start_clear, yield_constraints)
 from .faults import Faults
 from .idm import braking_decel, free_road_accel, slow_down_accel, stop_accel
 from .params import PlannerParams
@@ -127,6 +127,9 @@ class Planner:
                                                               cruise=cruise, lag=lag, braking=sp.braking,
                                                               hold=False),
                                       "goal", goal_d))
+        wait = start_clear(measured, me, self._offset, bp)
+        if wait is not None:
+            constraints.append(wait)
         if self.faults.no_start_when_close and v < 0.1 and self._npc_close(measured, me):
             constraints.append(Constraint(Reason.HOLD, -lp.max_decel, "npc_close"))
 

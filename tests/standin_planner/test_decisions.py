@@ -176,3 +176,14 @@ def test_same_frames_same_commands(latency):
         p = Planner(N, GOAL, params)
         out.append([p.step(frame(0.05 * k, ego, npc)) for k in range(30)])
     assert out[0] == out[1]
+
+
+def test_standing_behind_something_close_waits_and_starts_once_clear():
+    ego = on_lane(N, "ego", "2", -1, 100.0)
+    close = on_lane(N, "npc1", "2", -1, 108.0)          # ~2 m from bumper to bumper, standing
+    p = planner()
+    cmd = p.step(frame(0.0, ego, close))
+    assert cmd.speed == 0.0 and Reason.WAIT in reasons(p)
+    away = on_lane(N, "npc1", "2", -1, 125.0, speed=3.0)
+    cmd = p.step(frame(0.05, ego, away))
+    assert cmd.speed > 0.0
