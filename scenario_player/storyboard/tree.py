@@ -122,6 +122,9 @@ class Story(StoryboardElement):
 
 def _actors(ctx: ParseContext, mg: etree._Element) -> tuple[str, ...]:
     actors = ctx.child(mg, "Actors")
+    if ctx.bool(actors, "selectTriggeringEntities", False):
+        # Actors chosen at run time from the entities that triggered the events: not implemented.
+        ctx.note_unsupported(actors, "Actors selectTriggeringEntities=true")
     return tuple(ctx.req(r, "entityRef") for r in actors.findall("EntityRef"))
 
 
