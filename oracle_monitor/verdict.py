@@ -29,12 +29,13 @@ ERROR_END_REASONS = frozenset({"planner_not_responding", "invalid_scenario", "si
 
 def error_reason(status: RunStatus | None, frames: int) -> str:
     """Why this run is an error, or '' when it can be judged."""
+    # The player's own account of a broken run (an invalid scenario has no frames) comes first.
+    if status is not None and (status.verdict_hint == "error" or status.end_reason in ERROR_END_REASONS):
+        return f"run broke: {status.end_reason or 'player reported an error'}"
     if frames == 0:
         return "nothing observed: no frame of the run was received"
     if status is None:
         return "the run never reported its end (no final run status): recording incomplete"
-    if status.verdict_hint == "error" or status.end_reason in ERROR_END_REASONS:
-        return f"run broke: {status.end_reason or 'player reported an error'}"
     if status.state != "finished":
         return f"the run did not finish (last status {status.state!r})"
     return ""

@@ -80,3 +80,10 @@ def test_config_rejects_unknown_keys_and_bad_rules(tmp_path) -> None:
         P.from_config(str(bad))
     assert PARAMS.safety.jerk_threshold == 300.0 and PARAMS.smoothness.jerk_high == 0.9
     assert PARAMS.smoothness.yaw_rate_limit_deg == 10.0 and PARAMS.smoothness.window == 1.0
+
+
+def test_invalid_scenario_is_an_error_with_the_players_reason() -> None:
+    status = RunStatus("bad", "finished", 0.0, "input_error: bad.xosc, line 3: <Storyboard> missing",
+                       verdict_hint="error")
+    verdict = Oracle(None, None, PARAMS).finish(status)
+    assert verdict.verdict is Verdict.ERROR and "input_error" in verdict.error
