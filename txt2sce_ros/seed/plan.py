@@ -393,14 +393,12 @@ class Planner:
         if not idx:
             return None
         src = site.ego.lanes[idx[0] if turn in ("left", "uturn") else idx[-1]]
-        conn = site.ego.connection(site.ego.lanes.index(src), turn)
         a = Track(self.net, [ref])
         b = Track(self.net, self._through(src, turn))
         cut = max(a.length - 12.0, 0.0)
         pa = a.world_array(np.arange(0.0, cut, 1.0))
         start_b = b.project(float(a.x[-1]), float(a.y[-1]))
         pb = b.world_array(np.arange(start_b, b.length, 1.0))
-        del conn
         return LineTrack([(float(x), float(y)) for x, y, _ in pa] + [(float(x), float(y)) for x, y, _ in pb])
 
     def _oncoming_track(self, p: Party) -> tuple[Track, float, str]:

@@ -14,7 +14,7 @@ from lxml import etree
 from ..xosc.entitydb import EntityDB, entity_db
 from .model import (
     EntityPlan, EnvironmentPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, Pose, RouteAct, ScenarioPlan,
-    SpeedAct, TrajectoryAct, Trigger, WorldPose,
+    SpeedAct, TrajectoryAct, Trigger,
 )
 
 #: The FileHeader date: fixed so that seeds are byte-identical across runs (the manifest says when it was built).
