@@ -23,7 +23,7 @@ import numpy as np
 
 from ..config import load_config
 from ..errors import InputError, Txt2SceError
-from ..xosc.validate import validate_xosc
+from ..xosc.validate import document_version
 from .assembly import assemble
 from .blocks import Disassembly, Variant
 from .context import build_context
@@ -31,6 +31,7 @@ from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
 from .prune import prune, spread
+from .validity import NodeValidator
 from .xml import parse_bytes
 
 MANIFEST_SCHEMA = "txt2sce.tree/1"
@@ -127,7 +128,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     counts = tuple(len(variants[i]) for i in used)
 
     originals = dis.originals()
-    validate = bool(cfg["tree"]["validate"])
+    validator = NodeValidator(document_version(root, source=str(seed_path))) if cfg["tree"]["validate"] else None
     share = float(cfg["tree"]["prune_share"])
     cap = int(cfg["tree"]["max_nodes_per_tree"]) or sys.maxsize
     prune_rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
@@ -168,8 +169,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
                 for slot, frag in zip(b.slots, variants[used[k]][vi].fragments):
                     frags[slot] = frag
             text = assemble(dis.template, frags)
-            if validate:
-                problems = validate_xosc(text, source=node_id)
+            if validator is not None:
+                problems = validator.errors(text, source=node_id)
                 if problems:
                     invalid += 1
                     errors.append(f"{node_id}: {problems[0]}")
