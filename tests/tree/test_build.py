@@ -123,3 +123,14 @@ def test_node_budget_thins_layers_but_inserts_every_block(tmp_path):
     # within a thinned layer, distinct categories go before repeats: all 7 NPC categories survive
     npc_nodes = [n for n in manifest["nodes"] if n["block_kind"] == "npc"]
     assert {n["variant"] for n in npc_nodes} == set(range(7))
+
+
+def test_node_validator_reports_schema_errors():
+    from txt2sce_ros.tree.validity import NodeValidator
+
+    text = JUNCTION.read_text()
+    v = NodeValidator("1.0")
+    assert v.errors(text, source="ok") == []
+    bad = v.errors(text.replace('cloudState="free"', 'cloudState="drizzle"'), source="bad")
+    assert bad and "drizzle" in bad[0]
+    assert v.errors(text[:-40], source="cut")  # not well-formed

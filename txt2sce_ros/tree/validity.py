@@ -27,8 +27,8 @@ class NodeValidator:
         """[] when valid; else the reference validator's messages (`line N: ...`)."""
         try:
             root = etree.fromstring(text.encode("utf-8"), _PARSER)
-        except etree.XMLSyntaxError:
-            return validate_xosc(text, version=self.version, source=source) or ["not well-formed XML"]
+        except etree.XMLSyntaxError as exc:  # cannot come from α on well-formed blocks; reported, not raised
+            return [f"line {exc.lineno}: not well-formed XML: {exc}"]
         if self.schema.validate(root):
             return []
         return validate_xosc(text, version=self.version, source=source) or ["schema-invalid"]
