@@ -127,7 +127,7 @@ def turn_from_headings(s: str) -> str | None:
     return {90: "e", 270: "d", 180: "j"}.get(diff)
 
 
-def _who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str = "") -> int | None:
+def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str = "") -> int | None:
     """Entity index (-1 ego) whose clause covers `pos`: latest subject mention before it, else the first after
     (an opening "While reversing, the car ..."), except after "During ...", which continues the last story."""
     best: Mention | None = None
@@ -190,7 +190,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         elif rel is not None and rel.kind in ("ego", "egod"):
             who = -1
         else:
-            who = _who_for(b, ments, fallback, s)
+            who = who_for(b, ments, fallback, s)
         if who is None:
             continue
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))

@@ -1,0 +1,170 @@
+"""Action strings (the 13 codes) for the AV and each party, and the collision type, under sketch.md's rules."""
+
+from __future__ import annotations
+
+import re
+
+from ..sketch import Party
+from .actions import Act, turn_from_headings
+from .mentions import Entity
+from .story import Doc, before_contact, context
+
+_FORWARD = set("abdefgjm")
+
+
+def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> tuple[str, str]:
+    """Raw acts of one party -> (start, action string) under sketch.md's rules."""
+    codes: list[str] = []
+    start = "stopped" if stopped else "moving"
+    for a in acts:
+        c = a.code
+        if c == "F":
+            c = "f" if (ego or side != "left") else "g"
+            if re.search(r"around", a.text, re.I) and not ego:
+                c = "f"
+        if c == "T":
+            continue
+        if c == "S":
+            if not codes and not any(x in _FORWARD for x in codes):
+                start = "stopped"
+                continue
+            c = "h"
+        if not codes and c == "k" and not ego:
+            start = "stopped"
+        if not codes and c == "h" and not ego:
+            start = "stopped"
+            continue
+        if start == "stopped" and not codes and c == "h":
+            continue  # already standing: no stop to tell
+        if start == "stopped" and not codes and c in ("a", "b", "c"):
+            c = "i"
+        if start == "stopped" and codes and codes[-1] == "h" and c in ("a", "b"):
+            c = "i"
+        if codes and codes[-1] == "h" and c in ("a", "b") and not ego:
+            c = "i"
+        if start == "stopped" and not codes and c in "defgm":
+            codes.append("i")
+        codes.append(c)
+    out: list[str] = []
+    for c in codes:
+        if out and out[-1] == c:
+            continue
+        if c == "a" and out:
+            continue  # "go straight" opens a string; later "approaching"/"following" only describe the same run
+        if c == "A":
+            c = "a"  # an explicit "continued straight" is a manoeuvre of its own
+            if out and out[-1] == "a":
+                continue
+        if c == "i" and out and out[-1] != "h":
+            continue  # "began moving towards" while already moving is no start from a standstill
+        if c == "h" and out and out[-1] == "c":
+            out[-1] = "h"
+            continue
+        if c == "i" and not out and start == "moving":
+            c = "a"
+        out.append(c)
+    s = "".join(out)
+    s = re.sub(r"h+", "h", s)
+    return start, s
+
+
+def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
+    """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
+    or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
+    interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green)."""
+    # A summary sentence still tells the AV's state ("was stopped ... when a vehicle reversed into it").
+    acts = [a for a in d.acts if a.who == -1 and (a.sent not in d.summary or a.code == "S")
+            and before_contact(d, a.sent, a.pos)]
+    if first_party_pos is None:
+        return sequence(acts, stopped=False, ego=True, side=None)
+    fs, fp = first_party_pos
+    clause_start = fp
+    s = d.sents[fs]
+    m = list(re.finditer(r"(?:,|;|\bwhen\b|\bas\b|\bwhile\b|\bthen\b)", s[:fp]))
+    if m:
+        clause_start = m[-1].start()
+    else:
+        clause_start = 0
+    pre = [a for a in acts if (a.sent, a.pos) < (fs, clause_start)]
+    post = [a for a in acts if (a.sent, a.pos) >= (fs, clause_start)]
+    stopped = False
+    prefix: list[Act] = []
+    stops = [k for k, a in enumerate(pre) if a.code in ("h", "S")]
+    if party_first and stops and any(a.code in ("a", "i", "b", "A") for a in pre[stops[-1] + 1:]):
+        moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
+        return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
+                         side=None)
+    if pre:
+        last = pre[-1]
+        if last.code in ("h", "S"):
+            stopped = True
+        elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F"):
+            prefix = [last]
+        elif last.code == "T":
+            turn = turn_from_headings(d.sents[last.sent])
+            if turn:
+                prefix = [Act(last.sent, last.pos, turn, -1, last.text)]
+        else:
+            prefix = [Act(last.sent, last.pos, "a", -1, "")]
+    return sequence(prefix + post, stopped=stopped, ego=True, side=None)
+
+
+_MOD_ACTS = (("m", re.compile(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", re.compile(r"\boncoming\b|\bapproaching\b|"
+                                                                                       r"\bfollowing\b", re.I)))
+
+
+def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:
+    """"a jaywalking pedestrian", "an oncoming vehicle": the modifier tells the manoeuvre."""
+    first = e.mentions[0]
+    for code, rx in _MOD_ACTS:
+        if rx.search(first.mods) and not any(a.code == code for a in pacts[:1]):
+            return [Act(first.sent, first.start, code, e.idx, first.mods)] + pacts
+    if not pacts and e.category == "pedestrian" and re.search(r"\bcross", context(d, e), re.I):
+        return [Act(first.sent, first.start, "m", e.idx, "cross")]
+    return pacts
+
+
+def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle: bool, ego_actions: str) -> str:
+    if d.contact_sent is None:
+        return "none"
+    if partner is None:
+        return "other"
+    if obstacle:
+        return "hit_object"
+    if partner.category == "pedestrian":
+        return "pedestrian"
+    s = d.sents[d.contact_sent]
+    if re.search(r"\brear[- ]end", d.text, re.I):
+        return "rear_end"
+    if re.search(r"\bside[- ]?swip", d.text, re.I):
+        return "side_swipe"
+    if re.search(r"\bhead[- ]on\b", s, re.I):
+        return "head_on"
+    if re.search(r"\bbroadside|\bt-bone", s, re.I):
+        return "broadside"
+    assert party is not None
+    rear_hit = re.search(r"\brear\b(?!\s+(?:driver|passenger|left|right)?\s*(?:side|door|quarter|wheel))", s, re.I) \
+        and not re.search(r"\b(?:side|door|mirror|quarter|fender)\b", s, re.I)
+    if party.position == "R6" and party.lane == "same" and ego_actions.endswith("k"):
+        return "rear_end"  # the AV backed into the party behind it
+    if party.position == "R6":
+        return "rear_end" if party.lane == "same" and (rear_hit or re.search(r"\bbumper\b", s, re.I)) else "side_swipe"
+    if party.position == "R5":
+        if party.lane == "same" and "k" in party.actions:
+            return "rear_end"  # backed into the AV behind it
+        if party.lane == "same" and ego_actions.endswith(("a", "b", "i")) and \
+                re.search(r"\b(?:rear|front)\s+(?:bumper|of)|\bbumper\b", s, re.I) and "m" not in party.actions:
+            return "rear_end"
+        if party.lane in ("left", "right") and re.search(r"\bside\b|\bmirror|\bfender|\bdoor|\bquarter", s, re.I) \
+                and "k" not in party.actions:
+            return "side_swipe"
+        return "broadside" if ("m" in party.actions or "k" in party.actions) else "side_swipe"
+    if party.position == "R7":
+        touched = s[d.contact_pos:]
+        return "head_on" if party.lane == "same" and re.search(r"\bfront\b", touched, re.I) and not \
+            re.search(r"\bside\b", touched, re.I) else "side_swipe"
+    if party.position in ("R1", "R3", "R4", "R2"):
+        if re.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror", s, re.I):
+            return "side_swipe"
+        return "broadside"
+    return "other"

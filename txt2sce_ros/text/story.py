@@ -1,0 +1,292 @@
+"""The story of one narrative, as the extractor reads it: sentences, mentions, entities, manoeuvres, the AV's
+contact, and who counts as a party or an obstacle.
+
+`Doc` is the extractor's working state for one report (mutable while the steps fill it in, never returned); the
+functions here are the steps that need the whole story at once.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from .actions import Act, who_for, heading_of
+from .lexicon import CONTACT, NEGATION
+from .mentions import Entity, Mention
+
+_SUMMARY = re.compile(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
+                      r"\b|\breceived\s+notice\b|\bcollision\s+involving\b", re.I)
+
+
+BOILERPLATE = re.compile(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+supplement\b|\breport\s+was\s+(?:originally|"
+                          r"updated)\b|\bsubmitted\b", re.I)
+
+
+_DOOR = re.compile(r"\bopen(?:ed|ing|s)?\s+(?:\w+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
+                   r"\b|\bdooring\b", re.I)
+
+
+_AROUND = re.compile(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
+                     r"(?:the\s+(?:left|right)\s+side\s+of\s+)?"
+                     r"(?:a|an|the|another)?\s*(?:[\w-]+\s+){0,3}$", re.I)
+
+
+_AROUND_ONLY = re.compile(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?(?:a|an|the|another)?\s*"
+                          r"(?:[\w-]+\s+){0,3}$|\baround\s+(?:a|an|the)\s+[\w\s-]{0,30}\band\s+(?:a|an|the)?\s*$", re.I)
+
+
+_CONTACT_NOTHING = re.compile(r"\b(?:pavement|undercarriage|pothole|road\s+surface|ground|speed\s+bump|dip)\b", re.I)
+
+
+@dataclass
+class Doc:
+    text: str
+    sents: list[str]
+    ments: list[list[Mention]]
+    ents: list[Entity]
+    acts: list[Act]
+    summary: set[int]
+    junction: bool
+    contact_sent: int | None = None
+    contact_pos: int = 10 ** 9
+    partner: int | None = None  # entity index; None with contact_sent set = contact with nothing
+    doors: dict[int, int] = field(default_factory=dict)  # door entity -> owner entity
+    struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
+
+
+def summary_sentences(sents: list[str]) -> set[int]:
+    """Sentences that summarise or administer rather than tell: "was in a collision involving an SUV", "Waymo is
+    reporting this crash under ...", form headers ("Weather: Clear Passengers: 4 ...")."""
+    out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or BOILERPLATE.search(s)
+           or len(re.findall(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s", s)) >= 3}
+    if sents and CONTACT.search(sents[0]) and any(CONTACT.search(s) for s in sents[1:]):
+        out.add(0)
+    return out
+
+
+def find_contact(d: Doc) -> None:
+    """The AV's contact: the last non-negated contact phrase in a sentence about the AV (summaries aside, unless
+    nothing else tells it), and the party or object nearest that phrase."""
+    candidates: list[tuple[int, int, int | None]] = []
+    for i, s in enumerate(d.sents):
+        ments = d.ments[i]
+        has_ego = any(m.kind in ("ego", "egod") for m in ments) or re.search(r"\b(?:was|were|been|got)\s+"
+                                                                             r"(?:struck|hit|contacted)", s, re.I)
+        if not has_ego:
+            continue
+        for m in CONTACT.finditer(s):
+            before = s[max(0, m.start() - 45):m.start()]
+            if NEGATION.search(before) or re.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
+                                                    re.I):
+                continue
+            others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
+            partner = None
+            if others:
+                # The doer of the contact verb, when it is not the AV; else what the AV touched (after the verb).
+                who = who_for(m.start(), ments, None)
+                after = [x for x in others if x.start >= m.end()]
+                if who is not None and who >= 0:
+                    partner = who
+                elif after:
+                    partner = after[0].entity
+                else:
+                    best = min(others, key=lambda x: abs(x.end - m.start()))
+                    partner = best.entity
+                # A door that opened in the same sentence is what touched the AV.
+                for door, owner in d.doors.items():
+                    if d.ents[door].first.sent == i or (owner == partner and re.search(r"\bdoor", s[:m.start()])):
+                        partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
+            candidates.append((i, m.start(), partner))
+    if not candidates:
+        return
+    detailed = [c for c in candidates if c[0] not in d.summary]
+    chosen = detailed[-1] if detailed else candidates[-1]
+    if chosen[2] is None:
+        # The detailed sentence may refer to the party by a pronoun ("it struck the AV"): take the summary's party.
+        named = [c for c in candidates if c[2] is not None]
+        if named:
+            chosen = (chosen[0], chosen[1], named[-1][2])
+    if chosen[2] is None and not _CONTACT_NOTHING.search(d.sents[chosen[0]]):
+        # "Shortly thereafter, contact was made with the AV's front passenger side": the party in focus did it.
+        recent = [m.entity for j in range(max(0, chosen[0] - 2), chosen[0]) for m in d.ments[j]
+                  if m.kind == "party" and m.entity >= 0 and j not in d.summary and not d.ents[m.entity].parked]
+        if recent:
+            chosen = (chosen[0], chosen[1], recent[-1])
+    d.contact_sent, d.contact_pos, d.partner = chosen
+    while d.partner is not None and d.ents[d.partner].merged_into is not None:
+        d.partner = d.ents[d.partner].merged_into
+    # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
+    if d.partner is not None and d.ents[d.partner].kind == "obstacle":
+        ms = d.ments[d.contact_sent]
+        idx = [k for k, x in enumerate(ms) if x.entity == d.partner]
+        for k in range(idx[0] + 1 if idx else len(ms), len(ms)):
+            between = d.sents[d.contact_sent][ms[k - 1].end:ms[k].start]
+            if ms[k].kind == "obstacle" and re.fullmatch(r"[^,;]{0,30}\band\s*", between):
+                d.struck.add(ms[k].entity)
+            else:
+                break
+
+
+_AFTERWARDS = re.compile(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
+                         r"\bdamaging\b|\bresulting\b", re.I)
+
+
+def before_contact(d: Doc, sent: int, pos: int) -> bool:
+    """Is text position (sent, pos) part of the story up to the contact? In the contact sentence, words after the
+    contact verb still are, unless a new clause ("and proceeded left", "then") tells what came next."""
+    if d.contact_sent is None:
+        return True
+    if sent != d.contact_sent:
+        return sent < d.contact_sent
+    if pos <= d.contact_pos:
+        return True
+    return not _AFTERWARDS.search(d.sents[sent][d.contact_pos:pos])
+
+
+def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
+    """Did the AV act for this object ("around a double-parked vehicle", "stopped for debris")?"""
+    rx = _AROUND_ONLY if around_only else _AROUND
+    for m in e.mentions:
+        s = d.sents[m.sent]
+        if rx.search(s[max(0, m.start - 60):m.start]) and m.sent not in d.summary:
+            return True
+    return False
+
+
+def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
+    parties, obstacles = [], []
+    for e in d.ents:
+        if e.merged_into is not None:
+            continue
+        first_detail = [m for m in e.mentions if m.sent not in d.summary]
+        first = first_detail[0] if first_detail else e.first
+        is_partner = e.idx == d.partner
+        if not is_partner and not before_contact(d, first.sent, first.start):
+            continue
+        moved = any(a.who == e.idx and a.code in "abcdefgijkmFT" for a in d.acts)
+        if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
+                acted_for(d, e, around_only=True) and not re.search(
+                    r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)):
+            e.parked = True  # a vehicle the AV went around, that did nothing itself, stood there
+        if not is_partner and all(re.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
+                                            d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
+                                  for m in e.mentions) and not moved:
+            continue  # "a skateboard that escaped control of a nearby pedestrian": named only as an owner
+        if e.idx in d.doors:
+            obstacles.append(e)
+        elif e.kind == "party" and e.parked and not moved:
+            if is_partner or acted_for(d, e):
+                obstacles.append(e)
+        elif e.kind == "party":
+            if any(d.doors.get(k) == e.idx for k in d.doors) and not moved:
+                continue  # the door's vehicle stood still: only its door takes part
+            if not first_detail and not is_partner:
+                continue  # named in the summary only
+            parties.append(e)
+        elif e.kind == "obstacle":
+            if is_partner or e.idx in d.struck or acted_for(d, e):
+                obstacles.append(e)
+    return parties, obstacles
+
+
+def add_doors(d: Doc) -> None:
+    """"opened a rear door into the side of the AV": a door obstacle, owned by the latest vehicle named before."""
+    for i, s in enumerate(d.sents):
+        for m in _DOOR.finditer(s):
+            owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start() and x.entity >= 0]
+            if not owners:
+                owners = [x for j in range(max(0, i - 2), i) for x in d.ments[j] if x.kind == "party" and x.entity >= 0]
+            if not owners:
+                continue
+            owner = owners[-1].entity
+            idx = len(d.ents)
+            ment = Mention(sent=i, start=m.start(), end=m.end(), kind="obstacle", head="door", category="other",
+                           det="a", mods="", subject=False, entity=idx)
+            ent = Entity(idx=idx, kind="obstacle", category="other", heads={"door"}, mentions=[ment])
+            d.ents.append(ent)
+            d.ments[i].append(ment)
+            d.ments[i].sort(key=lambda x: x.start)
+            d.doors[idx] = owner
+            break
+
+
+def attach_towed(d: Doc) -> None:
+    """"a pickup truck that was dragging a basketball hoop": what a party drags or carries moves with it, so a
+    contact with it is a contact with the party."""
+    for i, s in enumerate(d.sents):
+        for m in d.ments[i]:
+            if m.kind != "obstacle" or m.entity < 0:
+                continue
+            if re.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*"
+                         r"(?:[\w-]+\s+){0,3}$",
+                         s[:m.start + len(m.mods) + 1]):
+                owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start and x.entity >= 0]
+                if owners:
+                    d.ents[m.entity].merged_into = owners[-1].entity
+
+
+def context(d: Doc, e: Entity) -> str:
+    """Text around an entity's mentions before the contact: what the narrative says of its place."""
+    parts = []
+    for m in e.mentions:
+        if not before_contact(d, m.sent, m.start) and m.sent != d.contact_sent:
+            continue
+        s = d.sents[m.sent]
+        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and x.kind in ("party", "obstacle")]
+        end = min([m.end + 110, *nxt]) if nxt else m.end + 110
+        parts.append(f"{m.mods} {m.head} {s[m.end:end]}")
+    return " | ".join(parts)
+
+
+TURN_WORDS = re.compile(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
+                         r"\b(?:left|right)\s+lane"
+                         r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
+                         r"scene", re.I)
+
+
+def side_named(ctx: str) -> str | None:
+    """The first side named in `ctx` ("in the rightmost lane", "to the left of"), turns and "right of way" aside."""
+    ctx = TURN_WORDS.sub(" ", ctx)
+    left = re.search(r"\bleft(?:most)?\b", ctx, re.I)
+    right = re.search(r"\bright(?:most)?\b", ctx, re.I)
+    if left and right:
+        return "left" if left.start() < right.start() else "right"
+    return "left" if left else "right" if right else None
+
+
+def heading(d: Doc, who: int) -> int | None:
+    for i, s in enumerate(d.sents):
+        for m in d.ments[i]:
+            ent = -1 if m.kind in ("ego", "egod") else m.entity
+            if ent == who:
+                # Read up to the next party named in the sentence: its heading is its own.
+                nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
+                window = s[m.end:min([m.end + 120, *nxt])]
+                final = re.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
+                if final and who == -1:  # the AV "turned right from southbound X onto westbound Y": heads west
+                    return heading_of(final.group(1) + "bound")
+                h = heading_of(window)
+                if h is not None:
+                    return h
+    return None
+
+
+def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
+    """Where the AV was touched, (front/rear, left/right), from the contact sentence's "the rear driver side of
+    EGO" / "EGO's front bumper" (US vehicles: the driver side is the left)."""
+    if d.contact_sent is None:
+        return None, None
+    s = d.sents[d.contact_sent]
+    parts = [m.group(1) for m in re.finditer(r"((?:[\w-]+\s+){1,6})(?:of|on|to)\s+EGO\b", s)]
+    passive = re.search(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)\b"
+                        r"([^.]{0,80}?)"
+                        r"(?:\bby\b|$)", s)
+    if passive:
+        parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
+    parts += [m.group(1) for m in re.finditer(r"\bEGO's\s+((?:[\w-]+\s+){1,6})", s)]
+    text = " ".join(parts).lower()
+    fore = "rear" if re.search(r"\brear\b|\bback\b|\btail", text) else "front" if re.search(r"\bfront\b|\bhood\b",
+                                                                                          text) else None
+    side = "left" if re.search(r"\bdriver|\bleft\b", text) else "right" if re.search(r"\bpassenger|\bright\b",
+                                                                                     text) else None
+    return fore, side
