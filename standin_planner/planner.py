@@ -32,6 +32,16 @@ OFFSET_RATE = 0.6
 
 
 @dataclass(frozen=True, slots=True)
+class _Braking:
+    """Decelerations (m/s², positive) the stack counts on this step."""
+
+    stop: StopPlan           # how planned stops are made
+    goal_decel: float        # the goal stop (planned, never "hard")
+    idm_decel: float         # IDM's comfortable deceleration b
+    max_decel: float         # the hardest braking it commands
+
+
+@dataclass(frozen=True, slots=True)
 class Decision:
     """Why the planner commanded what it did at time t (for tests, logs and the planner-check table)."""
 
@@ -66,7 +76,6 @@ class Planner:
         self._accel = 0.0
         self._offset = 0.0
         self._last_t: float | None = None
-        self._started = False
 
     # --- public -------------------------------------------------------------------------------------------------
 
@@ -84,74 +93,87 @@ class Planner:
             accel = self._hold(ego, dt)
             return self._command(frame, accel, 0.0, Reason.HOLD, "", (), speed=max(0.0, ego.speed + accel * dt))
         assert self.route is not None
-        line = self.route.line
-        pp = line.project(ego.x, ego.y, near_s=self._s)
+        pp = self.route.line.project(ego.x, ego.y, near_s=self._s)
         self._s = pp.s
-        v = max(ego.speed, 0.0)
-        lp, bp, fp = self.params.longitudinal, self.params.behaviour, self.params.faults
-        friction = fp.dry_friction if self.faults.late_braking_low_friction else self.road_friction
-        plan_decel = braking_decel(lp, friction)
-        idm_decel = min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity)
-        max_decel = min(lp.max_decel, friction * lp.gravity)
-        me = EgoOnPath(s=pp.s, s_front=pp.s + ego.center_x + 0.5 * ego.length, offset=pp.offset, speed=v,
-                       half_width=0.5 * ego.width)
+        me = EgoOnPath(s=pp.s, s_front=pp.s + ego.center_x + 0.5 * ego.length, offset=pp.offset,
+                       speed=max(ego.speed, 0.0), half_width=0.5 * ego.width)
+        braking = self._braking_model(me.speed)
+        constraints, target_offset = self._constraints(frame, objects, me, braking)
+        binding = min(constraints, key=lambda c: c.accel)
+        accel = self._limit(binding.accel, me.speed, dt, urgent=binding.urgent, max_decel=braking.max_decel)
+        self._offset = _approach(self._offset, target_offset, OFFSET_RATE * dt)
+        speed, yaw = self._lateral(ego, me, accel, dt, starting=binding.accel > 0.0)
+        return self._command(frame, (speed - me.speed) / dt, yaw, binding.reason, binding.entity,
+                             tuple(constraints), speed=speed)
 
-        v0 = lp.desired_speed
-        cruise = free_road_accel(v, v0, lp)
+    def _braking_model(self, v: float) -> "_Braking":
+        """The decelerations the stack plans with on this road (or, under `late_braking_low_friction`, on a dry
+        one whatever the road) and how stops are planned this step."""
+        lp, fp = self.params.longitudinal, self.params.faults
+        friction = fp.dry_friction if self.faults.late_braking_low_friction else self.road_friction
+        cruise = free_road_accel(v, lp.desired_speed, lp)
+        braking = self._accel < -0.05
         if self.faults.late_braking_low_friction:
-            # A stack tuned on dry roads: stops start late, at a deceleration only a dry road gives, braking hard.
+            # Tuned on dry roads: stops start late, at a deceleration only a dry road gives, and brake hard.
             # (stop_accel starts a stop at stop_onset_ratio x the planned deceleration: scale so that is the onset)
-            plan_decel, lag = fp.late_brake_decel / lp.stop_onset_ratio, 0.0
-            sp = StopPlan(decel=plan_decel, cruise=cruise, lag=0.0, hard=True, braking=self._accel < -0.05)
+            plan = fp.late_brake_decel / lp.stop_onset_ratio
+            stop = StopPlan(decel=plan, cruise=cruise, lag=0.0, hard=True, braking=braking)
         else:
+            plan = braking_decel(lp, friction)
             # Distance the jerk-limited build-up of braking to the planned deceleration still costs (from the
             # current acceleration: while still accelerating the build-up is longer).
-            lag = 0.5 * v * max(0.0, plan_decel + self._accel) / self.params.comfort.max_jerk
-            sp = StopPlan(decel=plan_decel, cruise=cruise, lag=lag, braking=self._accel < -0.05)
-        constraints: list[Constraint] = [Constraint(Reason.CRUISE, cruise)]
-        for dist, v_curve in curve_targets(line, pp.s, v, v0, self.params.lateral, plan_decel):
-            a = slow_down_accel(v, v_curve, dist, lp, plan_decel=plan_decel, lag=lag, cruise=cruise)
-            constraints.append(Constraint(Reason.CURVE, a, "", dist))
-        near = [o for o in objects if math.hypot(o.x - ego.x, o.y - ego.y) < PERCEPTION_RANGE]
-        measured = [measure(o, line, pp.s) for o in near]
-        obstacle_stops, target_offset = obstacle_rules(measured, me, line, lp, bp, sp)
-        constraints += obstacle_stops
-        lead = lead_constraint(measured, me, self._offset, v0, lp, bp, idm_decel, max_decel)
+            lag = 0.5 * v * max(0.0, plan + self._accel) / self.params.comfort.max_jerk
+            stop = StopPlan(decel=plan, cruise=cruise, lag=lag, braking=braking)
+        return _Braking(stop=stop, goal_decel=braking_decel(lp, friction),
+                        idm_decel=min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity),
+                        max_decel=min(lp.max_decel, friction * lp.gravity))
+
+    def _constraints(self, frame: Frame, objects: tuple[EntityState, ...], me: EgoOnPath, br: "_Braking"
+                     ) -> tuple[list[Constraint], float]:
+        """Every rule's demand this step, and the lateral offset to drive at (passing a static obstacle)."""
+        assert self.route is not None
+        line, lp, bp, sp = self.route.line, self.params.longitudinal, self.params.behaviour, br.stop
+        v, v0 = me.speed, lp.desired_speed
+        out: list[Constraint] = [Constraint(Reason.CRUISE, sp.cruise)]
+        for dist, v_curve in curve_targets(line, me.s, v, v0, self.params.lateral, sp.decel):
+            a = slow_down_accel(v, v_curve, dist, lp, plan_decel=sp.decel, lag=sp.lag, cruise=sp.cruise)
+            out.append(Constraint(Reason.CURVE, a, "", dist))
+        ego = frame.ego
+        measured = [measure(o, line, me.s) for o in objects
+                    if math.hypot(o.x - ego.x, o.y - ego.y) < PERCEPTION_RANGE]
+        stops, target_offset = obstacle_rules(measured, me, line, lp, bp, sp)
+        out += stops
+        lead = lead_constraint(measured, me, self._offset, v0, lp, bp, br.idm_decel, br.max_decel)
         if lead is not None:
-            constraints.append(lead)
-        constraints += yield_constraints(measured, me, line, lp, bp, sp, v0)
-        constraints += signal_constraints(frame.lights, me, line, lp, bp, sp, max_decel,
-                                          misread_yellow=self.faults.red_light_misread)
-        goal_d = self.route.goal_s + bp.goal_overshoot - pp.s
-        constraints.append(Constraint(Reason.GOAL, stop_accel(v, goal_d, lp, plan_decel=braking_decel(lp, friction),
-                                                              cruise=cruise, lag=lag, braking=sp.braking,
-                                                              hold=False),
-                                      "goal", goal_d))
+            out.append(lead)
+        out += yield_constraints(measured, me, line, lp, bp, sp, v0)
+        out += signal_constraints(frame.lights, me, line, lp, bp, sp, br.max_decel,
+                                  misread_yellow=self.faults.red_light_misread)
+        goal_d = self.route.goal_s + bp.goal_overshoot - me.s
+        out.append(Constraint(Reason.GOAL, stop_accel(v, goal_d, lp, plan_decel=br.goal_decel, cruise=sp.cruise,
+                                                      lag=sp.lag, braking=sp.braking, hold=False), "goal", goal_d))
         wait = start_clear(measured, me, self._offset, bp)
         if wait is not None:
-            constraints.append(wait)
+            out.append(wait)
         if self.faults.no_start_when_close and v < 0.1 and self._npc_close(measured, me):
-            constraints.append(Constraint(Reason.HOLD, -lp.max_decel, "npc_close"))
+            out.append(Constraint(Reason.HOLD, -lp.max_decel, "npc_close"))
+        return out, target_offset
 
-        binding = min(constraints, key=lambda c: c.accel)
-        accel = self._limit(binding.accel, v, dt, urgent=binding.urgent, max_decel=max_decel)
-        self._offset = _approach(self._offset, target_offset, OFFSET_RATE * dt)
-        kappa = pursuit_curvature(ego.x, ego.y, ego.heading, pp.s, v, line, self.params.lateral,
+    def _lateral(self, ego: EntityState, me: EgoOnPath, accel: float, dt: float, *, starting: bool
+                 ) -> tuple[float, float]:
+        """(speed command, yaw rate): pure pursuit on the line at the current offset, yaw rate within its limit;
+        under `aggressive_start`, a pull-away with full throttle and a large steering input instead."""
+        assert self.route is not None
+        fp, lat = self.params.faults, self.params.lateral
+        kappa = pursuit_curvature(ego.x, ego.y, ego.heading, me.s, me.speed, self.route.line, lat,
                                   offset=self._offset)
-        speed_cmd = max(self.params.comfort.min_speed_command, v + accel * dt)
-        yaw = kappa * speed_cmd
-        if self.faults.aggressive_start and v < fp.aggressive_start_speed and binding.accel > 0.0:
-            # Autoware's start on low adhesion: full throttle with a large steering input (paper §V-C).
-            accel = fp.aggressive_start_accel
-            speed_cmd = v + accel * dt
-            yaw = math.copysign(fp.aggressive_start_yaw_rate, kappa if kappa != 0.0 else 1.0)
-        else:
-            wmax = self.params.lateral.max_yaw_rate
-            yaw = max(-wmax, min(wmax, yaw))
-        if v > 0.2:
-            self._started = True
-        return self._command(frame, accel, yaw, binding.reason, binding.entity, tuple(constraints),
-                             speed=speed_cmd)
+        if self.faults.aggressive_start and me.speed < fp.aggressive_start_speed and starting:
+            # Autoware's start on low adhesion (paper §V-C): throttle and steering together.
+            self._accel = fp.aggressive_start_accel
+            return me.speed + fp.aggressive_start_accel * dt, math.copysign(fp.aggressive_start_yaw_rate,
+                                                                           kappa if kappa != 0.0 else 1.0)
+        speed = max(self.params.comfort.min_speed_command, me.speed + accel * dt)
+        return speed, max(-lat.max_yaw_rate, min(lat.max_yaw_rate, kappa * speed))
 
     # --- internals ----------------------------------------------------------------------------------------------
 
