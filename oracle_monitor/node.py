@@ -83,10 +83,12 @@ class OracleMonitorNode(Node):
             self.get_logger().error(f"undecodable message on {topic}: {exc}")
             return
         try:
-            starts = topic == c.TOPIC_SCENARIO or (
+            # Messages that may open the next run (a scenario, a goal, a 'started' status) go to the session first:
+            # if they close the previous run (unfinished, or its final status held for late frames), its bag is
+            # closed before they are recorded, so they land in the next run's bag.
+            starts = topic in (c.TOPIC_SCENARIO, c.TOPIC_GOAL) or (
                 topic == c.TOPIC_RUN_STATUS and RunStatus.from_json(msg.data).state == "started")
             if starts:
-                # The previous run (if it never finished) is closed into its own bag first; this one opens the next.
                 self.session.on_message(topic, msg)
                 self._record(topic, data)
             else:

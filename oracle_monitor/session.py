@@ -3,7 +3,8 @@ share, so a recording re-judged offline gives the verdict the live run gave.
 
 A run starts with a scenario envelope on `/txt2sce/scenario` (or a `started` run status, or the first frame when a
 bag has neither) and ends with a `finished` run status; a new envelope before that ends the previous run as
-incomplete. Messages may be rclpy messages (live) or rosbags-decoded ones (offline): the `ros_io` conversions only
+incomplete. A `finished` status that overtakes the run's last frames (topics are not ordered against each other)
+is held until a frame reaches its time, the next run starts, or the input ends. Messages may be rclpy messages (live) or rosbags-decoded ones (offline): the `ros_io` conversions only
 read attributes, which both kinds share.
 """
 
@@ -68,6 +69,7 @@ class JudgeSession:
         self.run: RunState | None = None
         self.verdicts: list[RunVerdict] = []
         self.frames_seen = 0
+        self._pending: RunStatus | None = None
 
     # --- dispatch ------------------------------------------------------------------------------------------------
 
@@ -85,6 +87,7 @@ class JudgeSession:
             self.assembler.add_lights(msg)
         elif topic == c.TOPIC_GOAL:
             goal = pose_to_goal(msg)
+            self._settle()                        # a goal after a finished status is the next run's
             run = self._ensure_run()
             run.goal = goal
             if run.oracle is not None:
@@ -95,12 +98,29 @@ class JudgeSession:
             status = RunStatus.from_json(msg.data)
             if status.state == "finished":
                 if self.run is not None:
-                    self.finish(status)
-            elif self.run is None or (self.run.oracle is not None and self.run.oracle.frames):
-                self._start(None, status.scenario_id)
+                    oracle = self.run.oracle
+                    if oracle is not None and oracle.t_last < status.t - 1e-6:
+                        # DDS does not order topics against each other: the last frames may still be on their
+                        # way. Hold the status until a frame reaches its time, the next run starts, or input ends.
+                        self._pending = status
+                    else:
+                        self.finish(status)
+            else:
+                self._settle()
+                if self.run is None or (self.run.oracle is not None and self.run.oracle.frames):
+                    self._start(None, status.scenario_id)
+
+    def _settle(self) -> None:
+        """Finish the run whose final status is being held (see TOPIC_RUN_STATUS)."""
+        if self._pending is not None:
+            self.finish(self._pending)
 
     def _start(self, envelope: ScenarioEnvelope | None, scenario_id: str = "") -> None:
         run = self.run
+        if self._pending is not None and not (envelope is not None and run is not None and run.envelope is not None
+                                              and run.envelope.id == envelope.id):
+            self._settle()
+            run = self.run
         if run is not None and envelope is not None and run.envelope is not None and run.envelope.id == envelope.id:
             return                                # the same envelope delivered again (transient-local history)
         # A run that has not seen a frame nor an envelope yet (only its goal or its 'started' status) is this one.
@@ -132,11 +152,14 @@ class JudgeSession:
         new = run.oracle.observe(frame)
         if new and self.on_violations:
             self.on_violations(frame.t, new)
+        if self._pending is not None and frame.t >= self._pending.t - 1e-6:
+            self._settle()
 
     # --- end of a run --------------------------------------------------------------------------------------------
 
     def finish(self, status: RunStatus | None) -> RunVerdict:
         """Close the current run with its final status (None: it never reported one) and return its verdict."""
+        self._pending = None
         run = self._ensure_run()
         oracle = run.oracle or Oracle(run.network, run.goal, self.params, scenario_id=run.scenario_id)
         verdict = oracle.finish(status)
@@ -151,6 +174,8 @@ class JudgeSession:
 
     def close(self) -> RunVerdict | None:
         """End of input (shutdown, end of the bag): a run still open is judged as incomplete."""
+        if self._pending is not None:
+            return self.finish(self._pending)
         if self.run is not None and (self.run.oracle is not None or self.run.envelope is not None):
             return self.finish(None)
         return None

@@ -64,3 +64,21 @@ def test_a_bag_without_scenario_or_status_is_judged_as_one_incomplete_run() -> N
     (v,) = s.verdicts
     assert v.verdict is Verdict.FAIL and v.category_names() == ("StartFail",)
     assert any("incomplete" in n for n in v.notes) and any("no road network" in n for n in v.notes)
+
+
+def test_a_finished_status_overtaking_the_last_frames_is_held() -> None:
+    frames = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("lead", t, 36.2)])   # contact at ~3.1 s
+    s = JudgeSession(PARAMS)
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    _feed(s, frames[:50])                                       # up to 2.45 s
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 4.0, "time_limit"))
+    assert s.verdicts == []                                     # held: the frames up to 4.0 s are not in yet
+    _feed(s, frames[50:])
+    (v,) = s.verdicts
+    assert v.frames == len(frames) and v.category_names() == ("Collisions",) and v.end_reason == "time_limit"
+    # The next run's goal and scenario then start a new run, not a phantom one.
+    s.on_message(c.TOPIC_GOAL, ros_io.goal_to_pose(Goal(60.0, 0.0, 0.0)))
+    s.on_message(c.TOPIC_SCENARIO, _env("b"))
+    _feed(s, straight_run(lambda t: 10.0, 6.0))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("b", "finished", 6.0, "goal_reached"))
+    assert [x.scenario_id for x in s.verdicts] == ["a", "b"] and s.verdicts[1].verdict is Verdict.PASS
