@@ -88,7 +88,7 @@ _INTENT_OK = re.compile(r"\b(?:began|begin|begins|started|start|starts|attempted
 _STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
                          r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
-                         r"parked)\b", re.I)
+                         r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b", re.I)
 _HEADING = re.compile(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)

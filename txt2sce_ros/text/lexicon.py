@@ -43,7 +43,7 @@ EGO_PATTERNS: tuple[str, ...] = (
     rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
     rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:\s*\((?:vehicle|car)?\s*1\))?",
     rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
-    rf"reporting|vehicle operators))(?:\s+(?-i:[A-Z])[\w.]*){{0,3}}(?:\s+{_AV_NOUN}\b)?",
+    rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
     r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
     r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
     r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",

@@ -89,7 +89,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         if side is None and re.search(r"\badjacent\b|\bparallel\b|\balongside\b|\bbeside\b|\bnext\s+to\b", text,
                                       re.I):
             # Beside an AV in the leftmost lane is to its right (and the other way round).
-            own = re.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:\w+\s+)?lane",
+            own = re.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+|second\s+|third\s+)?(left|right)(?:most)?\s+"
+                            r"(?:\w+\s+)?lane",
                             d.text)
             side = {"left": "right", "right": "left"}.get(own.group(1).lower()) if own else None
             if side is None and re.search(r"\bEGO\b[^.]{0,60}?\b(?:parking\s+lane|shoulder|parked|at\s+the\s+curb)",

@@ -148,8 +148,9 @@ def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
     rx = _AROUND_ONLY if around_only else _AROUND
     for m in e.mentions:
         s = d.sents[m.sent]
-        if rx.search(s[max(0, m.start - 60):m.start]) and m.sent not in d.summary:
-            return True
+        if rx.search(s[max(0, m.start - 60):m.start]) and m.sent not in d.summary and \
+                who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], -1, s) == -1:
+            return True  # the AV (not another party: "failed to stop for the stop sign") acted for it
     return False
 
 
