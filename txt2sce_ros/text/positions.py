@@ -21,7 +21,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     passing = re.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
                         r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
-    if passing:
+    # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind.
+    if passing and not re.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I):
         return "R6", (passing.group(1) or "").lower() or side_named(ctx[passing.end():passing.end() + 30]) or cside or \
             "same", True
     if re.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
