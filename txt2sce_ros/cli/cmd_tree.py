@@ -1,6 +1,7 @@
 """`txt2sce tree`: build scenario trees from seeds, or draw one.
 
     txt2sce tree SEEDS... --out DIR [--seed N] [--mutations 2] [--prune 0.5] [--max-nodes 2000] [--jobs 2]
+                               [--check-sample N]
     txt2sce tree show TREE_DIR [--png FILE] [--depth 3]
 """
 
@@ -29,6 +30,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
     parser.add_argument("--config", help="mutation config YAML (default config/mutation.yaml)")
     parser.add_argument("--no-validate", action="store_true", help="skip XSD validation of generated files")
+    parser.add_argument("--check-sample", type=int, default=0, metavar="N",
+                        help="after building, run the ASAM quality checker and the scenario player on N random files")
     parser.add_argument("--png", help="show: PNG path (default TREE_DIR/tree.png)")
     parser.add_argument("--depth", type=int, default=3, help="show: outline depth (default 3)")
 
@@ -93,4 +96,16 @@ def run(args: argparse.Namespace) -> int:
           f"({total / wall if wall else 0:.0f} files/s, {args.jobs} jobs); "
           f"prune share {cfg['tree']['prune_share']}, M(b) = {cfg['tree']['mutations_per_block']}, "
           f"RNG seed {args.seed} -> {args.out}")
+    if args.check_sample:
+        from ..tree.checks import check_sample
+
+        dirs = [r.out_dir for r in results if r.nodes]
+        chk = check_sample(dirs, args.check_sample, seed=args.seed)
+        player = (f"{chk.checked - chk.player_failed}/{chk.checked} load in the scenario player"
+                  if chk.player_available else "scenario player not installed")
+        print(f"sample check: {chk.checked - chk.qc_failed}/{chk.checked} ASAM-QC clean, {player}")
+        for p in chk.problems:
+            print(f"  {p}")
+        if chk.qc_failed or chk.player_failed:
+            return 1
     return 1 if failed and failed == len(results) else 0
