@@ -195,7 +195,16 @@ class PlayerNode(Node):
                 break
             frame = sim.step(cmd)
         if sim.done and not sim.verdict_hint:
-            self.publish_frame(sim, frame)          # the final state, for recorders and oracles
+            # The final state, for recorders and oracles. In lock-step the planner answers it like any frame:
+            # waiting (briefly) for that answer means the frame has gone round before 'finished' is announced,
+            # so a monitor does not close the run on the status while the last frame is still in flight.
+            self.publish_frame(sim, frame)
+            if needs_planner and self.lock_step:
+                key = stamp_key(to_stamp(frame.t))
+                deadline = time.monotonic() + min(self.planner_timeout, 1.0)
+                while key not in self.commands and time.monotonic() < deadline:
+                    executor.spin_once(timeout_sec=0.01)
+                self.commands.clear()
         status = sim.status
         self._status(status)
         self.get_logger().info(f"run {env.id}: {status.end_reason} at t={status.t:.2f}s")
