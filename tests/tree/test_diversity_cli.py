@@ -75,3 +75,13 @@ def test_cli_errors_are_one_line(tmp_path, capsys):
     assert "no such seed" in capsys.readouterr().err
     with pytest.raises(InputError):
         diversity([tmp_path / "nothing"])
+
+
+def test_sample_check_runs_qc_and_player(tmp_path):
+    from txt2sce_ros.tree.checks import check_sample, sample_files
+
+    build_tree(CUT_IN, tmp_path / "c", seed=0, cfg=tree_config(max_nodes=200))
+    files = sample_files([tmp_path / "c"], 6, seed=1)
+    assert len(files) == 6 and files == sample_files([tmp_path / "c"], 6, seed=1)
+    chk = check_sample([tmp_path / "c"], 6, seed=1)
+    assert chk.checked == 6 and chk.qc_failed == 0 and chk.player_available and chk.player_failed == 0
