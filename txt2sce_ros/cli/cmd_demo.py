@@ -30,6 +30,10 @@ def run(args: argparse.Namespace) -> int:
     if args.fresh and out.exists():
         shutil.rmtree(out)
     reports = sorted(BUNDLED_REPORTS.glob("*.jsonl"))
+    if not reports:
+        from ..errors import InputError
+
+        raise InputError("no bundled narratives (*.jsonl) found", source=str(BUNDLED_REPORTS))
     print(f"demo: {', '.join(str(r) for r in reports)} -> {out}", file=sys.stderr)
     summary = run_campaign(reports, config_from_args(args, out / "campaign"))
     print_summary(summary)
