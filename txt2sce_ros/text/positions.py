@@ -39,9 +39,14 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         if side is None and re.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
             side = "right"
         return "R6", side or "same", True
+    # Oncoming is said of the party itself ("an oncoming truck", "traveling in the opposite direction"), close to
+    # its name; "without yielding to oncoming traffic" further on speaks of others.
+    near = " | ".join(f"{m.mods} {d.sents[m.sent][m.end:m.end + 100]}" for m in e.mentions)
     oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
-                         ctx + pre,
-                         re.I)
+                         near + " " + pre, re.I)
+    if oncoming and re.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
+                              re.I) and not re.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
+        oncoming = None
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     if re.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):

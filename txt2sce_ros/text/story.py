@@ -185,6 +185,8 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                 continue  # named in the summary only
             parties.append(e)
         elif e.kind == "obstacle":
+            if "sign" in e.heads and not (is_partner or e.idx in d.struck):
+                continue  # a stop sign the AV obeyed is traffic control, not an object in the scene
             if is_partner or e.idx in d.struck or acted_for(d, e):
                 obstacles.append(e)
     return parties, obstacles
