@@ -148,7 +148,9 @@ def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle
     if party.position == "R6" and party.lane == "same" and ego_actions.endswith("k"):
         return "rear_end"  # the AV backed into the party behind it
     if party.position == "R6":
-        return "rear_end" if party.lane == "same" and (rear_hit or re.search(r"\bbumper\b", s, re.I)) else "side_swipe"
+        # Struck from behind is a rear-end (sketch.md) unless the text puts the contact on the AV's side.
+        side_hit = re.search(r"\b(?:side|mirror|door|fender|quarter)\b", s[d.contact_pos:], re.I) and not rear_hit
+        return "rear_end" if party.lane == "same" and not side_hit else "side_swipe"
     if party.position == "R5":
         if party.lane == "same" and "k" in party.actions:
             return "rear_end"  # backed into the AV behind it
