@@ -60,7 +60,8 @@ def environment_plan(sketch: Sketch, D: SeedDefaults) -> EnvironmentPlan:
         visual_range=float(vis), friction=float(env["friction"][sketch.environment.surface]))
 
 
-def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_action: float) -> SignalPlan | None:
+def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_action: float,
+                time_limit: float | None = None) -> SignalPlan | None:
     """Controller for the junction's lights: the AV's approach (and the opposite one) show the reported state when
     the AV's first action begins; the crossing legs show the conflicting state. `unknown` counts as green."""
     if not site.signalised or sketch.road.control != "signal":
@@ -72,7 +73,7 @@ def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_a
             cross |= set(site.legs[leg].signals)
     if not axis:
         return None
-    limit = D.timing.time_limit
+    limit = time_limit or D.timing.time_limit
 
     def phase(name: str, dur: float, ego_state: str) -> SignalPhase:
         other = "red" if ego_state in ("green", "yellow") else "green"
@@ -119,7 +120,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     ego_first = planner.ego.events[0].planned_time if planner.ego.events else 0.0
     signals = ()
     if isinstance(match.site, JunctionSite):
-        sp = signal_plan(sketch, match.site, D, ego_first)
+        sp = signal_plan(sketch, match.site, D, ego_first, planner.time_limit)
         signals = (sp,) if sp else ()
     choices = dict(planner.choices)
     choices["constraints"] = constraints.describe()
@@ -127,7 +128,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     choices["candidates"] = match.candidates
     target = fidelity_target(sketch)
     if target and any(a.name == target for a in actors):
-        gap, when = predicted_gap(actors, target, D.timing.time_limit)
+        gap, when = predicted_gap(actors, target, planner.time_limit)
         choices["predicted"] = {"party": target, "min_gap_m": round(gap, 2), "at_s": round(when, 2)}
     # entities in the sketch's order (ego, npc1…, obs1…): stable names and positions for the tree's blocks
     rank = {name: k for k, name in enumerate(["ego"] + [n.id for n in sketch.npcs] + [o.id for o in sketch.obstacles])}
@@ -135,7 +136,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     plan = ScenarioPlan(
         report_id=sketch.report_id, map_ref=ref, entities=tuple(a.freeze() for a in ordered),
         environment=environment_plan(sketch, D), goal=planner.goal, goal_tolerance=D.timing.goal_tolerance,
-        time_limit=D.timing.time_limit, signals=signals, choices=choices)
+        time_limit=planner.time_limit, signals=signals, choices=choices)
     xosc = write_xosc(plan, performance=(D.max_acceleration, D.max_deceleration, D.max_speed))
     errors = validate_xosc(xosc, source=sketch.report_id)
     if errors:  # a bug in the writer, never a user error: refuse loudly rather than ship an invalid seed

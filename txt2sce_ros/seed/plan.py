@@ -761,11 +761,15 @@ class Planner:
     # ---- mission
     def _ego_mission(self, routes: dict) -> None:
         ego = self.ego
-        final = ego.d0 + max(float(np.max(self.ego_d)), 0.0)
-        goal_d = min(max(final, ego.d0 + self._ego_d_at(self.T)) + self.D.timing.ego_goal_beyond_conflict,
-                     ego.track.length - 2.0)
+        # the goal lies a little beyond where the AV meets the party (not where its storyboard would end up: a
+        # planner must be able to reach it well within the time limit)
+        conflict = ego.d0 + max(self._ego_d_at(self.T), 0.0) + ego.cx + ego.length / 2
+        goal_d = min(conflict + self.D.timing.ego_goal_beyond_conflict, ego.track.length - 2.0)
         if math.isfinite(self.d_entry):
             goal_d = max(goal_d, min(self.d_entry + 40.0, ego.track.length - 2.0))
+        # time for a planner at the AV's cruise speed to get there, with margin (never below the configured limit)
+        cruise = self.D.speed("ego")
+        self.time_limit = float(max(self.D.timing.time_limit, math.ceil(1.5 * (goal_d - ego.d0) / cruise + 10.0)))
         start = ego.track.lane_pose(ego.d0)
         wps: list = [LanePose(start.road_id, start.lane_id, start.s)]
         if isinstance(ego.track, Track) and len(ego.track.refs) > 1:
