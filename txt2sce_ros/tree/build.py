@@ -20,13 +20,14 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from lxml import etree
 
 from ..config import load_config
 from ..errors import InputError, Txt2SceError
 from ..xosc.validate import document_version
 from .assembly import assemble
 from .blocks import Disassembly, Variant
-from .context import build_context
+from .context import SeedContext, build_context
 from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
@@ -106,6 +107,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     out = Path(out_dir)
     nodes_dir = out / "nodes"
     nodes_dir.mkdir(parents=True, exist_ok=True)
+    for stale in nodes_dir.glob("*.xosc"):  # a rebuild into the same directory must not leave old nodes behind
+        stale.unlink()
     try:
         data = seed_path.read_bytes()
     except OSError as exc:
@@ -116,8 +119,6 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     if logic is not None and ctx.map_path is not None:
         # Generated files live elsewhere: point them at the same map, relative to where they are written.
         logic.set("filepath", os.path.relpath(ctx.map_path, nodes_dir.resolve()))
-    from lxml import etree
-
     rebased = etree.tostring(root, encoding="unicode")
     order = tuple(cfg["tree"]["order"])
     dis = disassemble(rebased, source=str(seed_path), order=order,
@@ -218,7 +219,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
                       seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))
 
 
-def _block_entry(dis: Disassembly, i: int, vs: list[Variant], ctx, cfg) -> dict[str, Any]:
+def _block_entry(dis: Disassembly, i: int, vs: list[Variant], ctx: SeedContext, cfg: dict[str, Any],
+                 ) -> dict[str, Any]:
     b = dis.blocks[i]
     return {"index": b.index, "kind": b.kind.value, "key": b.key,
             "original_features": list(original_features(b, ctx, cfg)),

@@ -110,12 +110,12 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
         for key, parts in found[kind]:
             cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
     if BlockKind.NEW_OBSTACLE in wanted:
-        for k in range(new_obstacle_slots):
+        for _ in range(new_obstacle_slots):
             last_obj = _last_element(entities)
             last_priv = _last_element(actions)
             s_obj = cutter.empty_after(entities, last_obj)
             s_priv = cutter.empty_after(actions, last_priv)
-            cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken, k), (s_obj, s_priv)))
+            cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken), (s_obj, s_priv)))
 
     text = etree.tostring(root, encoding="unicode")
     pieces: list[str] = []
@@ -144,14 +144,10 @@ def _last_element(parent: etree._Element) -> etree._Element | None:
     return kids[-1] if kids else None
 
 
-def _free_obstacle_name(taken: set[str | None], k: int) -> str:
+def _free_obstacle_name(taken: set[str | None]) -> str:
+    """The first `obs<n>` name no entity uses yet (then marked taken), so inserted obstacles never clash."""
     n = 1
-    found = 0
-    while True:
-        name = f"obs{n}"
-        if name not in taken:
-            if found == k:
-                taken.add(name)
-                return name
-            found += 1
+    while f"obs{n}" in taken:
         n += 1
+    taken.add(f"obs{n}")
+    return f"obs{n}"
