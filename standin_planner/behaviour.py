@@ -148,6 +148,10 @@ def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourPara
     return min(options, key=abs) if options else None
 
 
+#: Static obstacles closer than this (m) are passed inside the lane when there is room (farther ones wait).
+PASS_LOOKAHEAD = 60.0
+
+
 def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: LongitudinalParams,
                    bp: BehaviourParams, sp: StopPlan) -> tuple[list[Constraint], float]:
     """Static (or standing, not-following) objects in the lane: pass within the lane when there is room, else
@@ -160,7 +164,7 @@ def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: Lo
                        and po.v_along >= 0.3)
         if moving_lead or not in_path(po, ego, offset, bp):
             continue
-        if po.state.is_static and po.s_min - ego.s_front < 60.0:
+        if po.state.is_static and po.s_min - ego.s_front < PASS_LOOKAHEAD:
             shift = pass_offset(po, ego, line, bp)
             if shift is not None:
                 offset = shift
