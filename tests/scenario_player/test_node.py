@@ -27,14 +27,14 @@ def policy(k: int, speed: float) -> ControlCommand:
     return ControlCommand(t=k * 0.05, speed=min(speed + 0.08, 33.0), yaw_rate=0.04 * math.sin(0.2 * k))
 
 
-def batch_ego() -> np.ndarray:
+def batch_run() -> dict[str, np.ndarray]:
     sim = Simulation(load_scenario(xosc("cut-in")), SimulationConfig(ego_mode="planner", time_limit=SIM_SECONDS))
     frame = sim.reset()
     k = 0
     while not sim.done:
         frame = sim.step(policy(k, frame.ego.speed))
         k += 1
-    return sim.trajectory["Ego"]
+    return sim.trajectory
 
 
 @pytest.fixture()
@@ -51,7 +51,8 @@ def ros(tmp_path: Path):
 
 
 def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, **params: object
-                ) -> tuple[dict[int, tuple[float, float, float, float]], list[RunStatus]]:
+                ) -> tuple[dict[int, tuple[float, float, float, float]], list[RunStatus],
+                           dict[int, tuple[float, float, float, float]]]:
     """Start the player node (subprocess) on cut-in.xosc with this process as the planner; return the ego states
     by step and the run statuses received."""
     from geometry_msgs.msg import TwistStamped
@@ -61,7 +62,7 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
     from std_msgs.msg import String
 
-    from txt2sce_ros.contract import TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_RUN_STATUS
+    from txt2sce_ros.contract import TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS
     from txt2sce_ros.launcher import node_command
     from txt2sce_ros.ros_io import command_to_twist, quat_to_yaw, stamp_key
 
@@ -72,7 +73,14 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
     latched = QoSProfile(depth=50, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     pub = node.create_publisher(TwistStamped, TOPIC_COMMAND, reliable)
     ego: dict[int, tuple[float, float, float, float]] = {}
+    npc: dict[int, tuple[float, float, float, float]] = {}
     statuses: list[RunStatus] = []
+
+    def on_object(msg: Odometry) -> None:
+        if msg.child_frame_id == "OverTaker":
+            p = msg.pose.pose.position
+            npc[round(stamp_key(msg.header.stamp) / 50_000_000)] = (
+                p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), msg.twist.twist.linear.x)
 
     def on_ego(msg: Odometry) -> None:
         k = round(stamp_key(msg.header.stamp) / 50_000_000)
@@ -84,6 +92,7 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
             pub.publish(cmd)
 
     node.create_subscription(Odometry, TOPIC_EGO_ODOM, on_ego, reliable)
+    node.create_subscription(Odometry, TOPIC_OBJECTS_ODOM, on_object, reliable)
     node.create_subscription(String, TOPIC_RUN_STATUS, lambda m: statuses.append(RunStatus.from_json(m.data)),
                              latched)
     log = open(tmp_path / "player.log", "wb")
@@ -104,14 +113,15 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
         node.destroy_node()
         log.close()
     assert statuses, (tmp_path / "player.log").read_text()
-    return ego, statuses
+    return ego, statuses, npc
 
 
 def test_lockstep_ros_run_equals_batch_run(ros, tmp_path: Path) -> None:
-    ego, statuses = _run_player(ros, tmp_path, None, planner_timeout=10.0)
+    ego, statuses, npc = _run_player(ros, tmp_path, None, planner_timeout=10.0)
     final = statuses[-1]
     assert final.state == "finished" and final.end_reason == "time_limit" and final.verdict_hint == ""
-    batch = batch_ego()
+    runs = batch_run()
+    batch = runs["Ego"]
     steps = sorted(ego)
     assert steps == list(range(len(batch))), "every step published once, in order"
     ros_rows = np.array([ego[k] for k in steps])
@@ -119,10 +129,14 @@ def test_lockstep_ros_run_equals_batch_run(ros, tmp_path: Path) -> None:
     assert np.array_equal(ros_rows[:, [0, 1, 3]], batch[:, [1, 2, 4]])
     assert np.allclose(np.unwrap(ros_rows[:, 2]), np.unwrap(batch[:, 3]), atol=1e-12)
     assert batch[-1, 4] > batch[0, 4] + 1.0          # the planner's commands really drove the ego
+    # The storyboard-driven OverTaker too (it reacts to the ego through its headway conditions).
+    other = runs["OverTaker"]
+    assert sorted(npc) == list(range(len(other)))
+    assert np.array_equal(np.array([npc[k] for k in sorted(npc)])[:, [0, 1, 3]], other[:, [1, 2, 4]])
 
 
 def test_planner_that_stops_answering_ends_the_run_as_error(ros, tmp_path: Path) -> None:
-    ego, statuses = _run_player(ros, tmp_path, 10, planner_timeout=0.5)
+    ego, statuses, _ = _run_player(ros, tmp_path, 10, planner_timeout=0.5)
     final = statuses[-1]
     assert final.state == "finished"
     assert final.end_reason == "planner_not_responding" and final.verdict_hint == "error"
