@@ -39,9 +39,9 @@ from std_msgs.msg import String
 from visualization_msgs.msg import MarkerArray
 
 from txt2sce_ros.config import load_config
-from txt2sce_ros.contract import (TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL, TOPIC_OBJECTS_MARKERS,
-                                  TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS, TOPIC_SCENARIO, TOPIC_TRAFFIC_LIGHTS,
-                                  ControlCommand, Frame, RunStatus, ScenarioEnvelope)
+from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL,
+                                  TOPIC_OBJECTS_MARKERS, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS, TOPIC_SCENARIO,
+                                  TOPIC_TRAFFIC_LIGHTS, ControlCommand, Frame, RunStatus, ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
 from txt2sce_ros.ros_io import (clock_msg, entity_to_odometry, frame_to_markers, goal_to_pose, lights_to_diagnostics,
                                 stamp_key, string_msg, to_stamp, twist_to_command)
@@ -118,6 +118,9 @@ class PlayerNode(Node):
         self.pub_status.publish(string_msg(status.to_json()))
 
     def publish_frame(self, sim: Simulation, frame: Frame) -> None:
+        if frame.ego.name != EGO_NAME:
+            # The contract names the ego 'ego' on the wire (child frame, marker text), whatever the scenario calls it.
+            frame = replace(frame, ego=replace(frame.ego, name=EGO_NAME))
         t = frame.t
         self.pub_clock.publish(clock_msg(t))
         self.pub_lights.publish(lights_to_diagnostics(frame.lights, t))

@@ -83,6 +83,7 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
                 p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), msg.twist.twist.linear.x)
 
     def on_ego(msg: Odometry) -> None:
+        assert msg.child_frame_id == "ego"       # cut-in calls it 'Ego'; the wire name is the contract's
         k = round(stamp_key(msg.header.stamp) / 50_000_000)
         p, v = msg.pose.pose.position, msg.twist.twist.linear.x
         ego[k] = (p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), v)
