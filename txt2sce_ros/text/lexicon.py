@@ -35,13 +35,15 @@ def _trie(words: tuple[str, ...]) -> str:
 
 
 _CO = _trie(COMPANIES)
+#: The companies as one regex alternation (for callers that look for an operator's name).
+COMPANY_ALTERNATION = _CO
 _AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|"
             r"robotaxi|suv)")
 
 #: Ways the narratives name the AV (the ego). Order matters: longest first, applied to normalised text.
 EGO_PATTERNS: tuple[str, ...] = (
-    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
-    rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:'?s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
+    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s|-operated|-owned)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
+    rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
     rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
     rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
     r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",

@@ -11,11 +11,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from .lexicon import (EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS, PARKED_WORDS, PARTY_HEADS,
+from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS, PARKED_WORDS, PARTY_HEADS,
                       VAN_MODELS)
 
 _QUOTES = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
 _EGO_RES = [re.compile(p, re.I) for p in EGO_PATTERNS]
+_COMPANY_RE = re.compile(rf"\b(?:{COMPANY_ALTERNATION})\b", re.I)
+_FIRST_EGO_NOUN = re.compile(r"\b(?:a|an|the)\s+(?:[A-Z][\w.-]*\s+){1,3}(shuttle|Prius|robotaxi)\b")
 _DROP_UPPER = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _DROP_ALPHA = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
 _NEGATED_NP = re.compile(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
@@ -119,6 +121,11 @@ def normalise(text: str) -> str:
         t = re.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
         t = re.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
                    "EGO's", t)
+    # "a Navya ARMA shuttle ... the shuttle", "a Nuro Prius ... the Prius": a distinctive noun the AV was named
+    # with (with its operator's name) refers to the AV afterwards.
+    first_ego = _FIRST_EGO_NOUN.search(text.translate(_QUOTES))
+    if first_ego and _COMPANY_RE.search(first_ego.group(0)):
+        t = re.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
     if "EGO" not in t:
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
         # the narrative introduces is the AV, and so is that noun with "the" afterwards.

@@ -117,7 +117,7 @@ def road(t: str, *, junction: bool) -> RoadInfo:
     if _ROUNDABOUT.search(t):
         layout = "roundabout"
     elif _PARKING.search(t) and not re.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
-                                              r"parking", t, re.I):
+                                              r"parking\s+(?:lot|garage|structure)", t, re.I):
         layout = "parking"
     elif junction:
         layout = "junction3" if _T_JUNCTION.search(t) else "junction4"
