@@ -11,8 +11,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS, PARKED_WORDS, PARTY_HEADS,
-                      VAN_MODELS)
+from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
+                      PARKED_WORDS, PARTY_HEADS, VAN_MODELS)
 
 _QUOTES = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
 _EGO_RES = [re.compile(p, re.I) for p in EGO_PATTERNS]
