@@ -187,3 +187,14 @@ def test_standing_behind_something_close_waits_and_starts_once_clear():
     away = on_lane(N, "npc1", "2", -1, 125.0, speed=3.0)
     cmd = p.step(frame(0.05, ego, away))
     assert cmd.speed > 0.0
+
+
+def test_off_route_pose_triggers_a_replan_from_where_the_ego_is():
+    p = planner()
+    p.step(frame(0.0, on_lane(N, "ego", "2", -1, 150.0, speed=5.0)))
+    assert p.replans == 1 and p.route.lanes[0].road_id == "2"
+    p.step(frame(0.05, on_lane(N, "ego", "2", -1, 150.2, speed=5.0)))
+    assert p.replans == 1                                  # still on its route: no replanning
+    # Displaced onto the road coming in from the west (e.g. a lane it was pushed into): a new route from there.
+    p.step(frame(0.10, on_lane(N, "ego", "3", -1, 60.0, speed=5.0)))
+    assert p.replans == 2 and p.route.lanes[0].road_id == "3" and p.route.lanes[-1].road_id == "0"
