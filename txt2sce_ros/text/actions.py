@@ -27,7 +27,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
           r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
-          r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
+          r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
+          r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\b|\bstops\b|\byield(?:ed|ing|s)?\b"),
     ("i", r"\b(?:began|begin|begins|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"

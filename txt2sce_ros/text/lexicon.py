@@ -42,7 +42,8 @@ _AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehi
 
 #: Ways the narratives name the AV (the ego). Order matters: longest first, applied to normalised text.
 EGO_PATTERNS: tuple[str, ...] = (
-    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s|-operated|-owned)?\s+(?:(?:autonomous|av|test|driverless|self-driving|"
+    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s|-operated|-owned)?\s+"
+    rf"(?:(?:autonomous|av|test|driverless|self-driving|"
     rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
     rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
     rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
@@ -73,7 +74,8 @@ PARTY_HEADS: dict[str, str] = {
     "tractor-trailer": "truck", "tractor trailer": "truck", "semi-trailer truck": "truck", "semi-truck": "truck",
     "semi truck": "truck", "semi": "truck", "box truck": "truck", "fire engine": "truck", "fire truck": "truck",
     "garbage truck": "truck", "tow truck": "truck", "dump truck": "truck", "cargo truck": "truck",
-    "heavy truck": "truck", "delivery truck": "truck", "truck": "truck", "big rig": "truck", "18-wheeler": "truck", "eighteen-wheeler": "truck",
+    "heavy truck": "truck", "delivery truck": "truck", "truck": "truck", "big rig": "truck", "18-wheeler": "truck",
+    "eighteen-wheeler": "truck",
     "bus": "bus", "shuttle": "bus", "trolley": "bus", "streetcar": "bus", "light rail": "bus",
     "motorcyclist": "motorcycle", "motorcycle": "motorcycle", "motorbike": "motorcycle", "moped": "motorcycle",
     "motorcycle rider": "motorcycle",
@@ -99,7 +101,8 @@ MAKES = ("toyota", "honda", "nissan", "ford", "chevrolet", "chevy", "tesla", "le
 #: Static objects -> obstacle category.
 OBSTACLE_HEADS: dict[str, str] = {
     "debris": "debris", "sheet metal": "debris", "metal": "debris", "rod": "debris",
-    "fixed object": "other", "stationary object": "other", "solar panel": "other", "object": "debris", "rock": "debris", "crate": "debris", "bucket": "debris", "mattress": "debris",
+    "fixed object": "other", "stationary object": "other", "solar panel": "other", "object": "debris",
+    "rock": "debris", "crate": "debris", "bucket": "debris", "mattress": "debris",
     "furniture": "debris", "tarp": "debris", "manhole cover": "other", "manhole": "other", "ladder": "debris",
     "pallet": "debris", "lumber": "debris",
     "traffic cone": "cone", "cone": "cone", "pylon": "cone", "delineator": "cone",

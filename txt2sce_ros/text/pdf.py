@@ -26,7 +26,8 @@ _FIELDS = {
     "PEDESTRIAN/BICYCLIST INVOLVED": "involved",
     "INVOLVED": "involved",
 }
-_CHECKED = re.compile(r"(?:\[\s*[Xx✓✔]\s*\]|☒|☑|■)\s*([A-Za-z][A-Za-z /*\-]+?)(?=\s*(?:\[|☐|☒|☑|□|■|$))")
+_CHECKED = re.compile(r"(?:\[\s*[Xx✓✔]\s*\]|☒|☑|■)\s*([A-Za-z][A-Za-z /*\-]+?)"
+                      r"(?=\s*(?:\[|☐|☒|☑|□|■|$))")
 _SECTION5 = re.compile(r"(?:SECTION\s*5\b|5\s*[.)]?\s*ACCIDENT\s+DETAILS\s*[-–]\s*DESCRIPTION)[^\n]*\n", re.I)
 _SECTION_END = re.compile(r"\n\s*(?:SECTION\s*6\b|6\s*[.)]\s*[A-Z]|OL\s*316\s*\(REV|PAGE\s+\d+\s+OF)", re.I)
 _REPORT_ID = re.compile(r"(?:REPORT\s+(?:ID|NUMBER|NO\.?)|DATE\s+OF\s+ACCIDENT)\s*[:#]?\s*([\w/-]+)", re.I)
