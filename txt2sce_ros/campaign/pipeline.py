@@ -36,6 +36,8 @@ class CampaignConfig:
     ros: bool = False
     max_seeds: int | None = None          # the first N seeds only (quick demos)
     limit: int | None = None              # stop after N new runs (resume testing)
+    time_limit: float | None = None       # simulated seconds per run (None: the player's limit)
+    max_nodes: int | None = None          # node budget per tree; None = config/mutation.yaml
     progress: bool = True
     report: bool = True
 
@@ -137,7 +139,7 @@ def tree_stage(seed_dir: Path, cfg: CampaignConfig) -> Path:
     if cfg.max_seeds is not None:
         seeds = seeds[: cfg.max_seeds]
     if not _stamp(out).exists():
-        tcfg = tree_config(mutations=cfg.mutations, prune_share=cfg.prune)
+        tcfg = tree_config(mutations=cfg.mutations, prune_share=cfg.prune, max_nodes=cfg.max_nodes)
         results = build_trees(seeds, out, seed=cfg.seed, cfg=tcfg, jobs=cfg.workers or 2)
         _log(cfg, f"trees: {len(results)} built, {sum(r.nodes for r in results)} nodes "
                   f"({sum(r.pruned for r in results)} pruned) -> {out}")
@@ -147,8 +149,14 @@ def tree_stage(seed_dir: Path, cfg: CampaignConfig) -> Path:
 
 def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignSummary:
     """Run the campaign from whatever stage the inputs are at; resumable (see the module docstring)."""
-    cfg.out.mkdir(parents=True, exist_ok=True)
+    from standin_planner.faults import Faults
+
+    # An unknown fault name is the user's mistake: say so now, not as an 'error' verdict on every run.
+    Faults.from_names(cfg.faults)
+    if not inputs:
+        raise InputError("no inputs given")
     stage = detect_stage(inputs)
+    cfg.out.mkdir(parents=True, exist_ok=True)
     summary = CampaignSummary(start_stage=stage)
     scenario_inputs: list[str | Path] = list(inputs)
     if stage == "reports":
@@ -161,7 +169,7 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
     if stage == "seeds":
         tree_dir = tree_stage(Path(scenario_inputs[0]), cfg)
         stage, scenario_inputs = "trees", [tree_dir]
-    tasks = make_tasks(scenario_inputs, faults=cfg.faults, seed=cfg.seed, ros=cfg.ros)
+    tasks = make_tasks(scenario_inputs, faults=cfg.faults, seed=cfg.seed, ros=cfg.ros, time_limit=cfg.time_limit)
     summary.scenarios = len(tasks)
     summary.trees = len({t.tree for t in tasks if t.tree})
     _log(cfg, f"closed loop: {len(tasks)} scenarios, executor {cfg.executor}"

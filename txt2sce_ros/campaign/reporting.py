@@ -40,8 +40,8 @@ def _tree_dirs(inputs: Sequence[str | Path]) -> list[Path]:
     return out
 
 
-def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS
-                  ) -> list[tuple[str, bytes]]:
+def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS, *,
+                  time_limit: float | None = None) -> list[tuple[str, bytes]]:
     """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
     from ..analysis.plots import trajectory_plot
     from ..closed_loop import run_closed_loop
@@ -57,7 +57,8 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
             break
     out = []
     for r in picked:
-        record, traj = run_closed_loop(r["file"], scenario_id=r["scenario_id"], faults=faults, keep_trajectory=True)
+        record, traj = run_closed_loop(r["file"], scenario_id=r["scenario_id"], faults=faults, keep_trajectory=True,
+                                       time_limit=time_limit)
         if traj is None:
             continue
         lanes = _lane_borders(r["file"], traj)
@@ -109,6 +110,8 @@ def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir:
         res.diversity = [(row.level, row.abstract, row.variants) for row in table.rows]
         res.unique_categories = table.unique_categories
     faults = tuple(store.meta("faults", []) or ())
-    res.failure_plots = failure_plots(runs, faults)
+    # the same time limit as the stored runs, so the re-run draws what was judged
+    time_limit = next((t.time_limit for t in tasks), None)
+    res.failure_plots = failure_plots(runs, faults, time_limit=time_limit)
     md, _html = write_report(res, out_dir)
     return md

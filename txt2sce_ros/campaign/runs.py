@@ -26,6 +26,7 @@ class RunTask:
     faults: tuple[str, ...]
     seed: int
     ros: bool = False
+    time_limit: float | None = None     # simulated seconds per run (None: the scenario's / player's own limit)
 
 
 def execute(task: RunTask) -> StoredRun:
@@ -38,19 +39,22 @@ def execute(task: RunTask) -> StoredRun:
         from ..closed_loop import run_closed_loop
 
         record, _ = run_closed_loop(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults,
-                                    seed=task.seed)
+                                    seed=task.seed, time_limit=task.time_limit)
     return StoredRun(task.key, task.scenario_id, task.tree, task.parent, record.verdict.value,
                      tuple(record.categories), record.to_dict())
 
 
 def make_tasks(inputs: Sequence[str | Path], *, faults: tuple[str, ...] = (), seed: int = 0,
-               ros: bool = False) -> list[RunTask]:
+               ros: bool = False, time_limit: float | None = None) -> list[RunTask]:
     """One task per scenario file under `inputs` (files, directories, tree directories), keyed by content."""
     tasks = []
-    config = {"planner": "standin", "faults": sorted(faults), "ros": ros}
+    config: dict[str, object] = {"planner": "standin", "faults": sorted(faults), "ros": ros}
+    if time_limit is not None:
+        # only when set, so the keys of stores written without it stay valid
+        config["time_limit"] = float(time_limit)
     for path, sid, parent, tree in iter_scenario_files(list(inputs)):
         key = run_key(Path(path).read_bytes(), config, seed)
-        tasks.append(RunTask(key, str(path), sid, tree, parent, tuple(sorted(faults)), seed, ros))
+        tasks.append(RunTask(key, str(path), sid, tree, parent, tuple(sorted(faults)), seed, ros, time_limit))
     return tasks
 
 

@@ -19,6 +19,8 @@ def add_campaign_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--prune", type=float, default=None,
                         help="share of each cluster kept when pruning (default: config, 0.5)")
     parser.add_argument("--max-seeds", type=int, default=None, help="grow trees from the first N seeds only")
+    parser.add_argument("--max-nodes", type=int, default=None,
+                        help="node budget per tree (default: config/mutation.yaml)")
     parser.add_argument("--executor", choices=EXECUTORS, default="pool",
                         help="serial | pool (local processes, default) | ray (RAY_ADDRESS or a local instance)")
     parser.add_argument("--workers", type=int, default=None, help="parallel workers (default: CPU count)")
@@ -27,6 +29,10 @@ def add_campaign_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--ros", action="store_true",
                         help="run each scenario over the ROS 2 node graph (separate processes, DDS) instead of "
                              "the in-process cores")
+    parser.add_argument("--time-limit", type=float, default=None,
+                        help="simulated seconds per run (default: the player's limit); part of the run key")
+    parser.add_argument("--limit", type=int, default=None,
+                        help="stop after N new runs (rerun without it to finish: the campaign resumes)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bars")
 
 
@@ -44,6 +50,7 @@ def config_from_args(args: argparse.Namespace, out: Path):
     return CampaignConfig(out=out, seed=args.seed, backend=args.backend, mutations=args.mutations,
                           prune=args.prune, executor=args.executor, workers=args.workers,
                           faults=tuple(args.fault), ros=args.ros, max_seeds=args.max_seeds,
+                          limit=args.limit, time_limit=args.time_limit, max_nodes=args.max_nodes,
                           progress=not args.no_progress, report=not getattr(args, "no_report", False))
 
 

@@ -1,0 +1,31 @@
+"""Shared inputs of the campaign tests: real seeds built from the first dev-gold sketches (never the holdout)."""
+
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+
+import pytest
+
+from txt2sce_ros.paths import shared_dir
+
+DEV_GOLD = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
+#: Simulated seconds per run in these tests: enough for starts, stops and contacts to show, short enough that a
+#: file of tests stays well under a minute on a loaded 2-core machine.
+TIME_LIMIT = 8.0
+
+
+@pytest.fixture(scope="session")
+def seed_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    from txt2sce_ros.seed import write_seeds
+    from txt2sce_ros.sketch import load_sketches
+
+    out = tmp_path_factory.mktemp("seeds")
+    manifest = write_seeds(itertools.islice(load_sketches(DEV_GOLD), 8), out, seed=0)
+    assert len(manifest["built"]) >= 6, manifest["refused"]
+    return out
+
+
+@pytest.fixture(scope="session")
+def seed_files(seed_dir: Path) -> list[Path]:
+    return sorted(seed_dir.glob("*.xosc"))[:6]
