@@ -117,8 +117,8 @@ def test_ncm_enumerates_categories_and_model_follows(cfg):
 
 def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
     d, block, vs, _ = _variants(JUNCTION, cfg, "signal_ctrl_4")
-    assert [v.features for v in vs] == [("signal", "green/red/red"), ("signal", "yellow/red/red"),
-                                        ("signal", "red/green/green")]
+    assert [v.features for v in vs] == [("signal", "green", "green/red/red"), ("signal", "yellow", "yellow/red/red"),
+                                        ("signal", "red", "red/green/green")]
     assert vs[0].changes == ()  # green is the seed's own state
     for v in vs:
         assert _valid_with(d, block, v) == []

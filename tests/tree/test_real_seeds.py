@@ -71,3 +71,30 @@ def test_real_trees_are_byte_identical_for_the_same_rng_seed(sample, tmp_path):
         assert (tmp_path / "a" / rel).read_bytes() == (tmp_path / "b" / rel).read_bytes(), rel
     m = json.loads((tmp_path / "a" / fa[0].parts[0] / "manifest.json").read_text())
     assert m["rng_seed"] == 11
+
+
+def test_tls_sets_the_signal_facing_the_av(seeds):
+    """On signalised dev seeds, the enumerated state lands on a signal the map says controls the AV's lane."""
+    from txt2sce_ros.tree.context import build_context
+    from txt2sce_ros.tree.mutate import block_variants
+    from txt2sce_ros.tree.build import tree_config
+    from txt2sce_ros.tree.xml import parse_bytes, parse_fragment
+
+    cfg = tree_config()
+    checked = 0
+    for s in seeds:
+        data = s.read_bytes()
+        if b"<TrafficSignalController" not in data:
+            continue
+        ctx = build_context(parse_bytes(data, str(s)), source=str(s), seed_path=s)
+        ego = ctx.starts["ego"]
+        facing = ctx.map.signals_on(ego.road, ego.lane)
+        assert ctx.ego_signals[: len(facing)] == tuple(facing) and facing
+        block = next(b for b in disassemble(data).blocks if b.kind is BlockKind.SIGNAL)
+        for v in block_variants(block, ctx, cfg, seed=0, seed_key=1):
+            phase = parse_fragment(v.fragments[0]).find("Phase")
+            states = {t.get("trafficSignalId"): t.get("state") for t in phase.iterfind("TrafficSignalState")}
+            mine = next(f for f in ctx.ego_signals if f in states)
+            assert states[mine] == v.features[1]          # the 'ego' feature is the AV's light
+        checked += 1
+    assert checked >= 3

@@ -85,6 +85,16 @@ class MapView:
         lane = sec.lanes[int(lane_id)]
         return float(lane.width(np.array([s - sec.s]))[0])
 
+    def signals_on(self, road_id: str, lane_id: int | None = None) -> list[str]:
+        """Ids of the map's signals on `road_id` (those controlling `lane_id` first when given)."""
+        if self._net is not None:
+            sigs = [sg for sg in self._net.signals.values() if str(sg.road_id) == str(road_id)]
+        else:
+            sigs = list(self._road(road_id).signals)
+        if lane_id is not None:
+            sigs.sort(key=lambda sg: lane_id not in getattr(sg, "controlled_lanes", ()))
+        return [str(sg.id) for sg in sigs]
+
     def direction(self, road_id: str, lane_id: int) -> int:
         """+1 when the lane drives toward increasing s, -1 otherwise (right-hand traffic: negative lane ids)."""
         rht = self.rule(road_id) != "LHT"
@@ -123,6 +133,7 @@ class SeedContext:
     ego_route: list[LanePos]            # ego route waypoints (first = start, last = goal)
     must_reach: dict[str, list[LanePos]]  # entity -> positions it must still reach (routes, triggers)
     categories: dict[str, str]          # entity -> txt2sce:category
+    ego_signals: tuple[str, ...] = ()   # signal ids facing the ego: its start lane's first, then its route's
 
 
 def build_context(root: etree._Element, *, source: str, seed_path: Path | None) -> SeedContext:
@@ -154,5 +165,11 @@ def build_context(root: etree._Element, *, source: str, seed_path: Path | None) 
     for obj in root.iterfind("Entities/ScenarioObject"):
         prop = obj.find("*/Properties/Property[@name='txt2sce:category']")
         cats[obj.get("name", "")] = prop.get("value", "") if prop is not None else ""
+    ego_signals: list[str] = []
+    ego = starts.get("ego")
+    if view is not None and ego is not None:
+        for pos in [ego] + ego_route[1:]:
+            if view.has_road(pos.road):
+                ego_signals += [sid for sid in view.signals_on(pos.road, pos.lane) if sid not in ego_signals]
     return SeedContext(source=source, map_path=map_path, map=view, starts=starts, ego_route=ego_route,
-                       must_reach=must, categories=cats)
+                       must_reach=must, categories=cats, ego_signals=tuple(ego_signals))

@@ -36,7 +36,8 @@ def layer_summary(manifest: dict[str, Any]) -> list[str]:
 
 
 def outline(manifest: dict[str, Any], *, max_depth: int = 3, max_children: int = 8) -> list[str]:
-    """Indented outline of the first layers: each node with the block it added, operator and first change."""
+    """Indented outline of the first layers: each node with the block it added, the operators, the version's
+    features (what pruning and Table V see) and how many values changed."""
     kids = _children(manifest)
     out: list[str] = []
 
@@ -44,9 +45,9 @@ def outline(manifest: dict[str, Any], *, max_depth: int = 3, max_children: int =
         if node["parent"] is None:
             label = "seed"
         else:
-            ch = node["changes"][0] if node["changes"] else None
-            first = f"  {ch[0].split('/')[-1]}: {ch[1]} -> {ch[2]}" if ch else ""
-            label = f"+{node['block_key']} [{node['operator']}]{first}"
+            feats = manifest["blocks"][node["block"]]["variants"][node["variant"]]["features"]
+            label = (f"+{node['block_key']} [{node['operator']}] {' '.join(map(str, feats[1:]))}"
+                     f"  ({len(node['changes'])} changes)")
         out.append(f"{'  ' * indent}{node['id']}  {label}")
         if node["depth"] >= max_depth:
             return

@@ -58,18 +58,19 @@ def signal_state_name(state: str) -> str:
     return _LAMP_NAMES.get(state, state)
 
 
-def tls(ctrl: etree._Element, state: str, rec: Recorder, *, primary: str | None = None) -> str:
-    """Traffic Signal Mutation: the controller's first phase (running while the parties interact) shows `state`
-    on the primary signal (the given one, else the phase's first); signals that showed the primary's old state
-    follow it, the others show the conflicting state (red while the primary is green/yellow, green otherwise).
-    Returns the primary's old state name."""
+def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, ...] = ()) -> str:
+    """Traffic Signal Mutation: in the controller's first phase (running while the parties interact) the primary
+    signal — the first of `facing` (the signals facing the AV, per the map) the phase sets, else the phase's
+    first — shows `state`; signals that showed the primary's old state follow it, the others show the
+    conflicting state (red while the primary is green/yellow, green otherwise). Returns the old state."""
     phase = ctrl.find("Phase")
     if phase is None:
         return ""
     states = phase.findall("TrafficSignalState")
     if not states:
         return ""
-    first = next((s for s in states if s.get("trafficSignalId") == primary), states[0])
+    by_id = {s.get("trafficSignalId"): s for s in states}
+    first = next((by_id[f] for f in facing if f in by_id), states[0])
     lamps = ";" in (first.get("state") or "")
     old = signal_state_name(first.get("state", ""))
     conflict = "green" if state == "red" else "red"

@@ -111,10 +111,14 @@ def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, 
             "offset": bin_of(_f(lc, "targetLaneOffset"), -half, half, n) if lc is not None else -1}
 
 
-def signal_features(ctrl: etree._Element) -> dict[str, Any]:
+def signal_features(ctrl: etree._Element, facing: tuple[str, ...]) -> dict[str, Any]:
+    """`ego`: the state the AV's own signal shows in the first phase; `states`: all of that phase's states."""
     phase = ctrl.find("Phase")
-    states = [signal_state_name(s.get("state", "")) for s in phase.iterfind("TrafficSignalState")] if phase is not None else []
-    return {"states": "/".join(states)}
+    sts = list(phase.iterfind("TrafficSignalState")) if phase is not None else []
+    by_id = {s.get("trafficSignalId"): s for s in sts}
+    primary = next((by_id[f] for f in facing if f in by_id), sts[0] if sts else None)
+    return {"ego": signal_state_name(primary.get("state", "")) if primary is not None else "none",
+            "states": "/".join(signal_state_name(s.get("state", "")) for s in sts)}
 
 
 def obstacle_features(obj: etree._Element | None, private: etree._Element | None, ctx: SeedContext,
@@ -153,7 +157,7 @@ def all_features(kind: BlockKind, elements: list[etree._Element | None], origina
     if kind is BlockKind.NPC:
         return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
     if kind is BlockKind.SIGNAL:
-        return signal_features(elements[0])
+        return signal_features(elements[0], ctx.ego_signals)
     if kind is BlockKind.EVENT:
         return event_features(elements[0], originals[0], cfg, n)
     return obstacle_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)

@@ -93,7 +93,7 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
         elif block.kind is BlockKind.SIGNAL:
             for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
-                tls(els[0], state, rec)
+                tls(els[0], state, rec, facing=ctx.ego_signals)
                 emit(els, "TLS", rec)
         elif block.kind is BlockKind.EVENT:
             entity, action = split_event_name(block.key)
