@@ -193,6 +193,10 @@ def test_values_are_checked_against_the_entity_database():
     with pytest.raises(InputError, match="intensity"):
         rec.set(etree.Element("Precipitation"), "intensity", 1.7)  # documented range [0, 1]
     assert rec.set(el, "cloudState", "rainy") == "rainy" and rec.changes[-1].old == "free"
+    whole = etree.fromstring('<Vehicle name="x" vehicleCategory="car"><Performance maxSpeed="-3" '
+                             'maxAcceleration="1" maxDeceleration="1"/></Vehicle>')
+    with pytest.raises(InputError, match="maxSpeed"):
+        rec.check_tree(whole)  # elements written whole are checked attribute by attribute
 
 
 def test_obstacle_block_dm_and_relocation(cfg):

@@ -137,6 +137,8 @@ def obstacle_fragments(name: str, pos: LanePos, dims: tuple[float, float, float]
     lp.set("laneId", str(pos.lane))
     lp.set("s", rec.db.check_value("LanePosition", "s", f"{pos.s:.3f}"))
     lp.set("offset", rec.db.check_value("LanePosition", "offset", f"{pos.offset:.3f}"))
+    rec.check_tree(obj)
+    rec.check_tree(priv)
     rec.note(f"Entities/ScenarioObject[@name='{name}']", None, f"MiscObject {dims[0]:.2f}x{dims[1]:.2f}x{dims[2]:.2f}")
     rec.note(f"Init/Private[@entityRef='{name}']/LanePosition", None,
              f"road {pos.road} lane {pos.lane} s {pos.s:.2f} offset {pos.offset:.2f}")

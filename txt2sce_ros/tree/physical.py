@@ -109,6 +109,7 @@ def ncm(obj: etree._Element, category: str, rng: np.random.Generator, cfg: dict[
             if isinstance(prop.tag, str) and prop.get("name") != "txt2sce:category":
                 props.append(etree.fromstring(etree.tostring(prop, with_tail=False)))
     _sub(props, "Property", name="txt2sce:category", value=category)
+    rec.check_tree(new)
     return old_cat
 
 

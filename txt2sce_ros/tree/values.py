@@ -52,6 +52,14 @@ class Recorder:
             self.changes.append(Change(path=f"{element_path(el)}/@{attr}", old=old, new=text))
         return text
 
+    def check_tree(self, root: etree._Element) -> None:
+        """Check every attribute of an element written whole (a new entity, an inserted obstacle)."""
+        for el in root.iter():
+            if isinstance(el.tag, str):
+                for attr, value in el.attrib.items():
+                    if ":" not in attr:
+                        self.db.check_value(str(el.tag), attr, value)
+
     def note(self, path: str, old: str | None, new: str | None) -> None:
         """A structural change (element replaced, block inserted) that no single attribute captures."""
         self.changes.append(Change(path=path, old=old, new=new))
