@@ -1,0 +1,58 @@
+"""A campaign from a seed directory writes its report: report.md, a self-contained report.html, analysis.json."""
+
+from __future__ import annotations
+
+import base64
+import json
+import re
+from pathlib import Path
+
+from txt2sce_ros.campaign.pipeline import CampaignConfig, run_campaign
+from txt2sce_ros.campaign.store import ResultStore
+
+from .conftest import TIME_LIMIT
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+def test_seed_directory_campaign_writes_the_report(seed_dir: Path, tmp_path: Path) -> None:
+    out = tmp_path / "c"
+    cfg = CampaignConfig(out=out, executor="pool", workers=2, progress=False, mutations=1, max_nodes=10,
+                         max_seeds=1, time_limit=TIME_LIMIT)
+    summary = run_campaign([seed_dir], cfg)
+    assert summary.start_stage == "seeds" and summary.trees == 1
+    assert summary.report == out / "report" / "report.md"
+    with ResultStore(out / "results.sqlite") as store:
+        runs = list(store.runs())
+    assert len(runs) == summary.scenarios > 1
+    assert (out / ".trees.done").exists()
+
+    md = (out / "report" / "report.md").read_text(encoding="utf-8")
+    verdicts = {v: sum(r.verdict == v for r in runs) for v in ("pass", "fail", "error")}
+    assert f"{len(runs)} runs: {verdicts['pass']} pass, {verdicts['fail']} fail, {verdicts['error']} error" in md
+    for heading in ("## Unexpected behaviours (paper Table VI)", "## Trigger conditions by lift",
+                    "## Derivation triggers", "## Diversity (paper Table V)"):
+        assert heading in md
+    # every figure the Markdown names exists beside it as a PNG
+    figs = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", md)
+    assert any("categories" in f for f in figs) and any("tree" in f for f in figs)
+    for f in figs:
+        assert (out / "report" / f).read_bytes().startswith(PNG_MAGIC)
+
+    page = (out / "report" / "report.html").read_text(encoding="utf-8")
+    uris = re.findall(r'src="data:image/png;base64,([^"]+)"', page)
+    assert len(uris) == len(figs)                       # every image inlined, none linked
+    assert all(base64.b64decode(u).startswith(PNG_MAGIC) for u in uris)
+    assert not re.search(r'src="(?!data:)', page)       # self-contained: no external references
+
+    analysis = json.loads((out / "report" / "analysis.json").read_text(encoding="utf-8"))
+    assert analysis["verdicts"] == {k: v for k, v in verdicts.items() if v}
+    fails = [r for r in runs if r.verdict == "fail"]
+    by_cat = {b["category"]: b["count"] for b in analysis["behaviours"]}
+    for cat in by_cat:
+        assert by_cat[cat] == sum(cat in r.categories for r in fails)
+
+    # rerunning the finished campaign runs nothing and rewrites the same analysis
+    again = run_campaign([seed_dir], cfg)
+    assert again.runs is not None and again.runs.ran == 0
+    assert json.loads((out / "report" / "analysis.json").read_text(encoding="utf-8")) == analysis
