@@ -148,6 +148,10 @@ def test_initial_location_is_context_aware(cfg):
     assert feasible_s(ctx, "npc1", start, 45.0 + 8.0, margin)
     assert not feasible_s(ctx, "npc1", start, 19.0, margin)     # too close to the trigger at s=15
     assert not feasible_s(ctx, "npc1", start, 200.0, margin)    # past the road's end (93.7 m)
+    ego = ctx.starts["ego"]                                      # road 2 lane -1 at s=250, obs1 at s=280
+    assert feasible_s(ctx, "ego", ego, 245.0, margin)
+    assert not feasible_s(ctx, "ego", ego, 276.0, margin)        # 4 m behind the obstacle in its lane
+    assert not feasible_s(ctx, "ego", ego, 290.0, margin)        # past it
     for seed in range(8):
         _, block, vs, _ = _variants(JUNCTION, cfg, "npc1", seed=seed)
         for v in vs:

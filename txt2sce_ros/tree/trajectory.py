@@ -49,9 +49,11 @@ def _lane_width_at(ctx: SeedContext, pos: LanePos | None, cfg: dict[str, Any]) -
     return w if w > 0.5 else float(cfg["default_lane_width"])
 
 
-def feasible_s(ctx: SeedContext, entity: str, start: LanePos, new_s: float, margin: float) -> bool:
+def feasible_s(ctx: SeedContext, entity: str, start: LanePos, new_s: float, margin: float,
+               min_gap: float = 6.0) -> bool:
     """Context check for a new start s on the same road and lane: inside the road, on a lane of the original type,
-    and still upstream (by `margin`) of every position on that lane the entity had ahead of it."""
+    `min_gap` from (and on the same side of) every other entity starting in that lane, and still upstream (by
+    `margin`) of every position on that lane the entity had ahead of it."""
     m = ctx.map
     if m is None or not m.has_road(start.road):
         return False
@@ -61,6 +63,14 @@ def feasible_s(ctx: SeedContext, entity: str, start: LanePos, new_s: float, marg
     if m.lane_type(start.road, start.lane, new_s) != m.lane_type(start.road, start.lane, start.s):
         return False
     sign = m.direction(start.road, start.lane)
+    for other, pos in ctx.starts.items():
+        # never onto or past another entity starting in the same lane: the order of the queue is part of the
+        # scenario, and an overlap at t=0 is a collision before anything happened
+        if other == entity or (pos.road, pos.lane) != (start.road, start.lane):
+            continue
+        before, after = start.s - pos.s, new_s - pos.s
+        if before * after <= 0 or abs(after) < min_gap:
+            return False
     for target in ctx.must_reach.get(entity, []):
         if target.road != start.road:
             continue
@@ -84,7 +94,7 @@ def shift_init_location(private: etree._Element, entity: str, rng: np.random.Gen
         if abs(shift) < 0.05:
             continue
         new_s = start.s + shift
-        if feasible_s(ctx, entity, start, new_s, cfg["margin"]):
+        if feasible_s(ctx, entity, start, new_s, cfg["margin"], cfg["min_gap"]):
             text = rec.set(tele, "s", new_s, digits=3)
             for wp in private.iterfind("PrivateAction/RoutingAction/AssignRouteAction/Route/Waypoint[1]/Position/"
                                        "LanePosition"):
