@@ -16,84 +16,23 @@ Everything random is drawn from the caller's numpy Generator (the site pick); th
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..errors import InputError
-from ..sketch import Party, Sketch, action_names
+from ..sketch import Party, Sketch
+from .actor import Actor, center_x, predicted_gap
 from .constraints import first_turn
 from .defaults import SeedDefaults
-from .kinematics import LateralStep, SpeedStep, box_corners, boxes_gap, lateral_profile, speed_profile, \
-    time_to_reach, transition_time
+from .events import EGO_ROUTE_PLACEHOLDER, TURN_CODES, EventRealiser
+from .kinematics import lateral_profile, speed_profile, time_to_reach
 from .lanes import CURB, case1_lane, ego_lane, party_lane
 from .linetrack import LineTrack, perpendicular
-from .model import (
-    EntityPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger,
-    WorldPose,
-)
+from .model import EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger
 from .sites import JunctionSite, RoadSite, _net
 from .track import Track
 
-TURN_CODES = {"d": "left", "e": "right", "j": "uturn"}
-EGO_ROUTE_PLACEHOLDER = "__ego_route__"
-LATERAL_CODES = set("fgl")
-
-
-def center_x(kind: str, length: float) -> float:
-    return round(0.311 * length, 2) if kind == "vehicle" else 0.0
-
-
-@dataclass
-class Actor:
-    """One moving or standing entity while it is being planned (mutable builder, frozen into an EntityPlan)."""
-
-    name: str
-    kind: str
-    category: str
-    xosc_category: str
-    dims: tuple[float, float, float]
-    track: Track | LineTrack
-    d0: float = 0.0
-    lat0: float = 0.0
-    v0: float = 0.0
-    speed_steps: list[SpeedStep] = field(default_factory=list)
-    lat_steps: list[LateralStep] = field(default_factory=list)
-    events: list[EventPlan] = field(default_factory=list)
-    route: RouteAct | None = None
-    external: bool = False
-    world_start: bool = False         # start written as WorldPosition (off-lane paths, wrong-way driving)
-    notes: list[str] = field(default_factory=list)
-
-    @property
-    def length(self) -> float:
-        return self.dims[1]
-
-    @property
-    def width(self) -> float:
-        return self.dims[0]
-
-    @property
-    def cx(self) -> float:
-        return center_x(self.kind, self.length)
-
-    def profile(self, horizon: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return speed_profile(self.v0, self.speed_steps, horizon)
-
-    def states(self, horizon: float) -> tuple[np.ndarray, np.ndarray]:
-        """(t, poses (N,3)) of the planned motion."""
-        t, _, d = self.profile(horizon)
-        lat = lateral_profile(self.lat0, self.lat_steps, t)
-        return t, self.track.world_array(self.d0 + d, lat)
-
-    def start_pose(self) -> LanePose | WorldPose:
-        if self.world_start or isinstance(self.track, LineTrack):
-            return self.track.world(self.d0, self.lat0)
-        return self.track.lane_pose(self.d0, self.lat0)
-
-    def freeze(self) -> EntityPlan:
-        return EntityPlan(self.name, self.kind, self.category, self.xosc_category, self.dims, self.start_pose(),
-                          round(self.v0, 3), tuple(self.events), self.route, self.external)
+__all__ = ["Actor", "Planner", "predicted_gap"]
 
 
 class Planner:
@@ -109,6 +48,7 @@ class Planner:
         self.choices: dict = {"site": site.describe(), "parties": {}}
         self.actors: list[Actor] = []
         self.lane_w = 3.5
+        self.ev = EventRealiser(defaults, self.net, self.lane_w, self.horizon)
 
     # ------------------------------------------------------------------------------------------ entity basics
     def _actor(self, name: str, category: str, track: Track | LineTrack) -> Actor:
@@ -122,108 +62,6 @@ class Planner:
         return Actor(name, kind, category, xcat, self.D.dims(category), track)
 
     # ------------------------------------------------------------------------------------------ schedules
-    def _schedule(self, actor: Actor, codes: str, *, t_first: float, t_critical: float, speed: float,
-                  moving: bool) -> list[tuple[str, float]]:
-        """Event times: the first action at `t_first`; the last lateral/speed action so that it bites at
-        `t_critical`; the ones between spread evenly. Turns (route assignments) go with the event before them."""
-        n = len(codes)
-        if n == 0:
-            return []
-        lead = {"f": 0.5 * self.D.lane_change_time, "g": 0.5 * self.D.lane_change_time, "h": 3.0, "c": 2.5,
-                "k": 2.5, "l": 3.0, "i": 3.0, "b": 2.0, "m": 0.0}
-        if actor.name == "ego":
-            # the AV's reported stop comes too late to avoid the contact: it is still braking at the conflict
-            lead["h"] = 1.0
-        times = [t_first]
-        if n == 1 and codes in lead and codes != "m":
-            # a single lateral/stop/start action is the critical one: it bites at the conflict
-            times = [max(t_first, t_critical - lead[codes])]
-        if n > 1:
-            last = max(t_critical - lead.get(codes[-1], 0.0), t_first + 0.5 * (n - 1))
-            for k in range(1, n):
-                times.append(t_first + (last - t_first) * k / (n - 1))
-        # route assignments early: the path through the junction must be known before the junction
-        for k, c in enumerate(codes):
-            if c in TURN_CODES and k > 0:
-                times[k] = times[k - 1] + 0.1 if times[k - 1] + 0.1 < times[k] else times[k]
-        return [(c, round(t, 2)) for c, t in zip(codes, times)]
-
-    def _apply_actions(self, actor: Actor, schedule: list[tuple[str, float]], *, cruise: float,
-                       route_for: dict[str, RouteAct] | None = None, crossing: TrajectoryAct | None = None,
-                       lane_change_ref: str | None = None) -> None:
-        """Turn (code, time) pairs into events and the matching speed/lateral steps."""
-        v = actor.v0
-        names = action_names("".join(c for c, _ in schedule))
-        shape, dim = self.D.shape, self.D.dimension
-        floor = 0.0
-        for k, ((code, t), name) in enumerate(zip(schedule, names)):
-            prev = actor.events[-1] if actor.events else None
-            if prev is not None and prev.code == "h" and code in "ik":
-                # a stop is completed before moving off again (0.5 s at standstill)
-                stop_end = prev.planned_time + next((a.value for a in prev.actions if isinstance(a, SpeedAct)), 0.0)
-                floor = max(floor, round(stop_end + 0.5, 2))
-            t = max(t, floor)
-            acts: list = []
-            if code in "ai":
-                target = cruise if code == "i" or v == 0.0 else v if v > 0 else cruise
-            elif code == "b":
-                target = max(v, cruise) * self.D.accelerate_factor
-            elif code == "c":
-                target = max(v, cruise) * self.D.decelerate_factor
-            elif code == "h":
-                target = 0.0
-            elif code == "k":
-                target = self.D.reverse_speed if actor.kind != "pedestrian" else -0.8
-            elif code == "l":
-                target = 0.0
-            elif code == "m":
-                target = cruise
-            else:  # d e j f g: keep the speed (or start moving if standing)
-                target = v if v != 0 else cruise
-            dur = transition_time(v, target)
-            if code == "l":
-                dur = max(dur, 3.0)
-            if code in TURN_CODES:
-                # the AV's turn reuses its mission route (filled in by _ego_mission); a party's its own route
-                acts.append(route_for[code] if route_for and code in route_for else  # type: ignore[arg-type]
-                            RouteAct(EGO_ROUTE_PLACEHOLDER, ()) if actor.name == "ego" else None)
-                if acts[-1] is None:
-                    acts.pop()
-            if code == "m" and crossing is not None:
-                acts.append(crossing)
-            if code in "fg" and isinstance(actor.track, LineTrack):
-                # off the lane network (after a crossing): no lane to change from; keep going
-                actor.notes.append(f"{name} after leaving the lanes realised as keeping speed")
-            elif code in "fg":
-                rel = 1 if code == "f" else -1
-                acts.append(LaneChangeAct(rel, self.D.lane_change_time, lane_change_ref or actor.name))
-                actor.lat_steps.append(LateralStep(t, rel * self.lane_w, self.D.lane_change_time))
-            if code == "l":
-                off = -(self.lane_w / 2 - actor.width / 2 - 0.2)
-                acts.append(LaneOffsetAct(round(self._offset_t(actor, off), 3), self.D.lane_offset_max_lat_acc))
-                actor.lat_steps.append(LateralStep(t, off - actor.lat0, 3.0))
-            if target != v or not acts:
-                acts.insert(0, SpeedAct(round(target, 3), shape, dim, dur))
-                actor.speed_steps.append(SpeedStep(t, target, dur))
-            v = target
-            ev_name = f"{actor.name}_e{k + 1}_{name}"
-            trigger = Trigger("time", t)
-            prev = actor.events[-1] if actor.events else None
-            if prev is not None and prev.code == "h" and code in "ik":
-                # moving off again after a stop: chained to the end of the stop (the standstill is reached), so
-                # the pause survives mutations of speed and dynamics
-                stop_end = prev.planned_time + next((a.value for a in prev.actions if isinstance(a, SpeedAct)), 0.0)
-                trigger = Trigger("event_end", round(max(t - stop_end, 0.0), 2), ref=prev.name)
-            actor.events.append(EventPlan(ev_name, code, tuple(acts), trigger, t))
-
-    def _offset_t(self, actor: Actor, lateral: float) -> float:
-        """Lateral (left of travel) -> OpenSCENARIO lane offset sign (toward +t) at the actor's start lane."""
-        if isinstance(actor.track, LineTrack):
-            return lateral
-        pose = actor.track.lane_pose(actor.d0)
-        forward = self.net.lane_forward(pose.road_id, pose.lane_id, pose.s)
-        return lateral if forward != actor.track.reverse else -lateral
-
     # ------------------------------------------------------------------------------------------ ego
     def _ego_lane_index(self, n: int, allowed: list[int]) -> tuple[int, str]:
         try:
@@ -261,6 +99,7 @@ class Planner:
             self.choices["ego_lane"] = {"index": idx, "lane_id": ref.lane_id, "why": why}
         s = self.net.roads[ref.road_id].length / 2
         self.lane_w = self.net.lane_width(ref.road_id, ref.lane_id, min(s, 10.0))
+        self.ev.lane_w = self.lane_w
         return track, idx, d_entry, self.lane_w
 
     def _through(self, ref, turn: str, *, extra: int = 1) -> list:
@@ -294,10 +133,9 @@ class Planner:
             # moved off from a standstill: after the reported red phase when there was one
             t_first = D.timing.signal_phase_before if sk.signal_state == "red" else 1.0
         self.ego_t_first = t_first
-        sched = self._schedule(ego, sk.ego.actions, t_first=t_first, t_critical=self.T, speed=D.speed("ego"),
-                               moving=sk.ego.start == "moving")
+        sched = self.ev.schedule(ego, sk.ego.actions, t_first=t_first, t_critical=self.T)
         ego_routes = {}
-        self._apply_actions(ego, sched, cruise=D.speed("ego"), route_for=ego_routes)
+        self.ev.apply(ego, sched, cruise=D.speed("ego"), route_for=ego_routes)
         self.actors = [ego]
         t, _, de = ego.profile(self.horizon)
         self.ego_t, self.ego_d = t, de
@@ -312,7 +150,7 @@ class Planner:
             self._place_ego_default()
         for o in sk.obstacles:
             self._plan_obstacle(o)
-        self._check_lane_changes(ego)
+        self.ev.check_lane_changes(ego)
         # the ego's mission: route through its path, goal beyond the conflict
         self._ego_mission(ego_routes)
         return self.actors
@@ -449,9 +287,8 @@ class Planner:
         if isinstance(track, LineTrack):
             traj = TrajectoryAct(f"{p.id}_path", track.vertices())
             routes = {c: traj for c in p.actions if c in TURN_CODES}
-        sched = self._schedule(actor, p.actions, t_first=0.0, t_critical=T, speed=cruise,
-                               moving=p.start == "moving")
-        self._apply_actions(actor, sched, cruise=cruise, route_for=routes)
+        sched = self.ev.schedule(actor, p.actions, t_first=0.0, t_critical=T)
+        self.ev.apply(actor, sched, cruise=cruise, route_for=routes)
         t, _, dn = actor.profile(self.horizon)
         # ---- the meeting
         if mode == "cross":
@@ -459,8 +296,8 @@ class Planner:
         else:
             self._meet_parallel(p, actor, T, t, dn, mode)
         self._release_if_needed(actor)
-        self._check_lane_changes(actor)
-        self._trim_trajectories(actor)
+        self.ev.check_lane_changes(actor)
+        self.ev.trim_trajectories(actor)
         self.actors.append(actor)
         self.choices["parties"].setdefault(p.id, {}).update({
             "mode": mode, "start_d": round(actor.d0, 2), "speed": actor.v0, "conflict_time": round(T, 2),
@@ -615,56 +452,6 @@ class Planner:
                 actor.lat0 += (desired - rel) * (1.0 if same_dir else -1.0)
                 actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
 
-    def _check_lane_changes(self, actor: Actor) -> None:
-        """A lane change must start on a lane that has a neighbour on that side (not inside a one-lane junction
-        connector): move it to the nearest planned instant where one exists, else keep the lane (noted)."""
-        if not isinstance(actor.track, Track):
-            return
-        t, _, d = actor.profile(self.horizon)
-
-        def ok(at: float, rel: int) -> bool:
-            # with a margin of ±0.5 s: the player's position may differ from the plan's by a few centimetres at a
-            # lane's end, and a lane change is resolved against the lane the entity is on when it starts
-            for dt in (-0.5, 0.0, 0.5):
-                ref = actor.track.lane_at(actor.d0 + float(np.interp(at + dt, t, d)))
-                if self.net.neighbour(ref, "left" if rel > 0 else "right") is None:
-                    return False
-            return True
-
-        for k, ev in enumerate(actor.events):
-            lc = next((a for a in ev.actions if isinstance(a, LaneChangeAct)), None)
-            if lc is None or ok(ev.planned_time, lc.relative):
-                continue
-            cands = sorted((abs(c - ev.planned_time), c) for c in np.arange(0.0, self.horizon - 5.0, 0.25)
-                           if ok(float(c), lc.relative))
-            step = next((st for st in actor.lat_steps if abs(st.t - ev.planned_time) < 1e-6), None)
-            if cands:
-                new_t = round(float(cands[0][1]), 2)
-                actor.events[k] = EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t), new_t)
-                if step is not None:
-                    actor.lat_steps[actor.lat_steps.index(step)] = LateralStep(new_t, step.delta, step.duration)
-                actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it at {ev.planned_time} s")
-            else:
-                acts = tuple(a for a in ev.actions if not isinstance(a, LaneChangeAct)) or (
-                    SpeedAct(round(float(np.interp(ev.planned_time, t, actor.profile(self.horizon)[1])), 3),
-                             self.D.shape, self.D.dimension, self.D.dyn_value),)
-                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
-                if step is not None:
-                    actor.lat_steps.remove(step)
-                actor.notes.append(f"{ev.name}: no lane beside it anywhere on its path; lane kept")
-
-    def _trim_trajectories(self, actor: Actor) -> None:
-        """Start every trajectory at the point the actor has reached when its event fires."""
-        if not isinstance(actor.track, LineTrack):
-            return
-        t, _, d = actor.profile(self.horizon)
-        for k, ev in enumerate(actor.events):
-            if any(isinstance(a, TrajectoryAct) for a in ev.actions):
-                at = actor.d0 + float(np.interp(ev.planned_time, t, d))
-                acts = tuple(TrajectoryAct(a.name, actor.track.vertices(at)) if isinstance(a, TrajectoryAct) else a
-                             for a in ev.actions)
-                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
-
     def _release_if_needed(self, actor: Actor) -> None:
         """Keep a start on the map; nothing else to do: events are timed from the plan."""
         actor.d0 = round(float(np.clip(actor.d0, 0.0, actor.track.length)), 3)
@@ -698,9 +485,8 @@ class Planner:
         moving = p.start == "moving" and delay == 0.0
         actor.v0 = v if moving else 0.0
         traj = TrajectoryAct(f"{p.id}_crossing", line.vertices())
-        sched = self._schedule(actor, p.actions, t_first=round(delay, 2), t_critical=T + 2.0, speed=v,
-                               moving=moving)
-        self._apply_actions(actor, sched, cruise=v, crossing=traj)
+        sched = self.ev.schedule(actor, p.actions, t_first=round(delay, 2), t_critical=T + 2.0)
+        self.ev.apply(actor, sched, cruise=v, crossing=traj)
         if delay > 0 and actor.events:
             # released by the AV's approach: the distance at the planned release time (+0.5 m so it fires)
             first = actor.events[0]
@@ -785,21 +571,3 @@ class Planner:
                                                         a.name == EGO_ROUTE_PLACEHOLDER else a for a in ev.actions),
                                 ev.trigger, ev.planned_time) for ev in ego.events]
         self.choices["goal"] = {"road": goal.road_id, "lane": goal.lane_id, "s": goal.s}
-
-
-def predicted_gap(actors: list[Actor], target: str, horizon: float) -> tuple[float, float]:
-    """(smallest box gap in m between the ego and `target` over the planned motion, time of it)."""
-    ego = next(a for a in actors if a.name == "ego")
-    other = next(a for a in actors if a.name == target)
-    t, pe = ego.states(horizon)
-    _, po = other.states(horizon)
-    best, when = math.inf, 0.0
-    for k in range(0, len(t), 2):
-        a = box_corners(pe[k, 0], pe[k, 1], pe[k, 2], ego.length, ego.width, ego.cx)
-        b = box_corners(po[k, 0], po[k, 1], po[k, 2], other.length, other.width, other.cx)
-        g = boxes_gap(a, b)
-        if g < best:
-            best, when = g, float(t[k])
-        if g <= 0:
-            break
-    return best, when
