@@ -8,6 +8,8 @@ Parameters:
 - `faults` (string[]): fault modes to switch on (see standin_planner.faults), default none.
 - `config` (string): planner YAML, default the package's config/planner.yaml.
 - `road_friction` (double): friction the stack assumes; < 0 (default) reads it from the scenario's environment.
+- `map` (string): an OpenDRIVE file to drive on when no scenario envelope is published (a player started with
+  `scenario_files` only); an envelope, when one comes, takes precedence.
 """
 
 from __future__ import annotations
@@ -49,6 +51,7 @@ class PlannerNode(Node):
         self.declare_parameter("faults", [""])
         self.declare_parameter("config", "")
         self.declare_parameter("road_friction", -1.0)
+        self.declare_parameter("map", "")
         self.faults = Faults.from_names(self.get_parameter("faults").value)
         cfg = self.get_parameter("config").value
         self.params = PlannerParams.from_config(cfg or None)
@@ -61,8 +64,12 @@ class PlannerNode(Node):
         self.pending: Frame | None = None
         self.last_key = -1                  # stamp (ns) of the last frame answered
         self.fresh_scenario = False         # an envelope came after the last answered frame
-        self.awaiting_scenario = True       # frames of a new run wait for its envelope
+        self.awaiting_scenario = True       # frames of a new run wait for its envelope (not with a fixed map)
         self.assembler = FrameAssembler()
+        self.fixed_map = str(self.get_parameter("map").value)
+        if self.fixed_map:
+            self.network = load_network(self.fixed_map)     # raises InputError naming the file: fail at start-up
+            self.awaiting_scenario = False
         self.pub = self.create_publisher(TwistStamped, TOPIC_COMMAND, STREAM_QOS)
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, LATCHED_QOS)
         # Volatile subscription: matches a goal publisher of either durability.
@@ -125,7 +132,7 @@ class PlannerNode(Node):
         self.pending = None
         self.planner = None
         # The envelope of this run came already (it is newer than the last answered frame) or is still to come.
-        self.awaiting_scenario = not self.fresh_scenario
+        self.awaiting_scenario = not self.fresh_scenario and not self.fixed_map
 
     def _handle(self, frame: Frame | None) -> None:
         if frame is not None:

@@ -39,11 +39,8 @@ class Route:
 
 
 def _edge_kind(graph: nx.DiGraph, a: LaneRef, b: LaneRef) -> str:
-    data = graph.get_edge_data(a, b) or {}
-    for key in ("kind", "type", "edge", "label"):
-        if key in data:
-            return str(data[key])
-    return "follow"
+    """'follow', 'change_left' or 'change_right' (the routing graph's edge kinds, docs/road_api.md)."""
+    return str((graph.get_edge_data(a, b) or {}).get("kind", "follow"))
 
 
 def _follow_only(graph: nx.DiGraph) -> nx.DiGraph:

@@ -84,8 +84,8 @@ def graph(tmp_path):
     rclpy.init(context=context)
     procs = []
 
-    def launch(faults: list[str]) -> PlayerSide:
-        procs.append(start("planner_node", {"faults": faults or [""]}, env, tmp_path / "planner.log"))
+    def launch(faults: list[str], **params) -> PlayerSide:
+        procs.append(start("planner_node", {"faults": faults or [""], **params}, env, tmp_path / "planner.log"))
         side = PlayerSide(context)
         assert wait_until(side.matched, 30.0, side.spin), (tmp_path / "planner.log").read_text()
         return side
@@ -101,14 +101,15 @@ def graph(tmp_path):
     rclpy.shutdown(context=context)
 
 
-def _closed_loop_over_dds(side: PlayerSide, path: Path, steps: int):
+def _closed_loop_over_dds(side: PlayerSide, path: Path, steps: int, *, envelope: bool = True):
     text = path.read_text(encoding="utf-8")
     sim = Simulation(load_scenario(str(path)), SimulationConfig.from_config(ego_mode="planner"))
     frame = sim.reset()
     xodr = sim.network.source
     env = c.ScenarioEnvelope(id=path.stem, xosc=text, map_path=str(xodr),
                              map_xodr=Path(xodr).read_text(encoding="utf-8"))
-    side.scenario.publish(String(data=env.to_json()))
+    if envelope:
+        side.scenario.publish(String(data=env.to_json()))
     side.goal.publish(goal_to_pose(sim.goal))
     for _ in range(steps):
         side.publish_frame(frame)
@@ -145,3 +146,11 @@ def test_fault_parameter_reaches_the_node(graph):
     path = DEFAULT_DIR / "fault_no_start_when_close.xosc"
     sim = _closed_loop_over_dds(graph(["no_start_when_close"]), path, 60)
     assert math.isclose(sim.trajectory["ego"][-1, 4], 0.0, abs_tol=1e-9)     # 3 s and still standing
+
+
+def test_without_an_envelope_the_map_parameter_serves(graph):
+    path = DEFAULT_DIR / "benign_straight.xosc"
+    xodr = Simulation(load_scenario(str(path)), SimulationConfig.from_config()).network.source
+    over_dds = _closed_loop_over_dds(graph([], map=str(xodr)), path, 100, envelope=False).trajectory["ego"]
+    in_process = _closed_loop_in_process(path, 100).trajectory["ego"]
+    assert over_dds[-1, 4] > 2.0 and abs(over_dds - in_process).max() < 1e-6
