@@ -32,7 +32,11 @@ setup(
     name=PACKAGE,
     version="0.1.0",
     packages=find_packages(exclude=["tests", "tests.*", "bench", "bench.*"]),
-    package_data={"": ["*.yaml", "*.json", "*.jsonl", "*.xodr", "*.xosc", "*.txt", "*.md"]},
+    # Bundled data ships inside the package (txt2sce_ros/data has no __init__.py, so name its files here).
+    package_data={
+        "txt2sce_ros": ["data/*.json", "data/reports/*.jsonl", "data/maps/*.xodr", "data/maps/*.md"],
+        "": ["*.yaml", "*.json", "*.jsonl", "*.xodr", "*.xosc", "*.txt", "*.md"],
+    },
     include_package_data=True,
     data_files=[
         ("share/ament_index/resource_index/packages", [f"resource/{PACKAGE}"]),

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from ol316_fixture import write_ol316, write_scanned
+from .ol316_fixture import write_ol316, write_scanned
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.paths import shared_dir
 from txt2sce_ros.sketch import ErrorRecord, Sketch
