@@ -6,13 +6,21 @@ ranking can name what the paper's table names ("R7, ah", "R7, km, 2", bicycle, f
 
 They are read from the file itself (names per docs/seed_format.md, properties `txt2sce:category` and
 `txt2sce:position` on the ScenarioObjects), so any scenario the tree wrote can be analysed without its history.
+
+Positions: the seeds do not write `txt2sce:position` yet, and mutations move parties anyway (ILM shifts the Init
+positions), so when the scenario's map is at hand each party's position is *derived* from the Init teleports in
+the ego's frame (`derived_position`), by the sketch spec's definitions of R1-R7; plus `near_start:yes` when a party
+starts within `NEAR_START` metres ahead of or behind the ego in its lane corridor (what a "too close to start"
+fault depends on). A written `txt2sce:position` wins over the derived one.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 from lxml import etree
 
@@ -70,7 +78,53 @@ def signal_label(root: etree._Element) -> str:
     return value or "none"
 
 
-def scenario_elements(xml: bytes) -> frozenset[str]:
+#: m: a party this close ahead of or behind the ego at the start counts as `near_start:yes`.
+NEAR_START = 8.0
+_SAME_DIR = math.radians(45.0)     # heading difference below this: same direction of travel
+_LANE_HALF = 1.8                   # m: lateral offset within which a party is in the ego's lane
+_ROAD_HALF = 12.0                  # m: lateral offset within which a party is on the ego's road (R5-R7)
+
+
+def _init_poses(root: etree._Element, net: Any) -> dict[str, tuple[float, float, float]]:
+    """World (x, y, heading) of each entity's Init teleport (LanePosition or WorldPosition)."""
+    poses: dict[str, tuple[float, float, float]] = {}
+    for priv in root.iterfind("Storyboard/Init/Actions/Private"):
+        pos = priv.find("PrivateAction/TeleportAction/Position")
+        if pos is None or len(pos) == 0:
+            continue
+        p = pos[0]
+        try:
+            if p.tag == "WorldPosition":
+                poses[priv.get("entityRef", "")] = (float(p.get("x", 0)), float(p.get("y", 0)), float(p.get("h", 0)))
+            elif p.tag == "LanePosition" and net is not None:
+                poses[priv.get("entityRef", "")] = net.lane_to_world(p.get("roadId"), int(p.get("laneId", 0)),
+                                                                     float(p.get("s", 0)),
+                                                                     float(p.get("offset", 0) or 0))
+        except Exception:   # a position the map cannot place: no derived position for that party
+            continue
+    return poses
+
+
+def derived_position(ego: tuple[float, float, float], other: tuple[float, float, float]) -> tuple[str, str | None]:
+    """(R-code, lane) of `other` in the ego's frame (sketch spec: R1-R4 at a junction, R5-R7 on the ego's road)."""
+    ex, ey, eh = ego
+    dx, dy = other[0] - ex, other[1] - ey
+    lon = dx * math.cos(eh) + dy * math.sin(eh)           # ahead +
+    lat = -dx * math.sin(eh) + dy * math.cos(eh)          # left +
+    dh = math.atan2(math.sin(other[2] - eh), math.cos(other[2] - eh))
+    lane = "same" if abs(lat) <= _LANE_HALF else ("left" if lat > 0 else "right")
+    if abs(dh) < _SAME_DIR and abs(lat) <= _ROAD_HALF:
+        return ("R5" if lon >= 0 else "R6"), lane
+    if abs(dh) > math.pi - _SAME_DIR:
+        return ("R7", lane) if abs(lat) <= _ROAD_HALF and lon > 0 else ("R2", None)
+    if abs(dh) < _SAME_DIR:
+        return "R4", None                                  # same heading but off the ego's road: beyond a turn
+    # crossing traffic: heading left-to-right across the ego's path comes from its left
+    return ("R1" if dh < 0 else "R3"), None
+
+
+def scenario_elements(xml: bytes, net: Any = None) -> frozenset[str]:
+    """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports."""
     root = etree.fromstring(xml, _PARSER)
     out: set[str] = set()
     npcs: dict[str, dict[str, str]] = {}
@@ -88,6 +142,18 @@ def scenario_elements(xml: bytes) -> frozenset[str]:
         m = _EVENT.match(ev.get("name", ""))
         if m and m["entity"].startswith("npc") and m["action"] in ACTION_NAMES:
             events.setdefault(m["entity"], []).append((int(m["k"]), ACTION_NAMES[m["action"]]))
+    poses = _init_poses(root, net) if npcs else {}
+    ego_pose = poses.get("ego")
+    if ego_pose is not None:
+        for name, props in npcs.items():
+            if name in poses and not props.get("txt2sce:position"):
+                code, lane = derived_position(ego_pose, poses[name])
+                props["txt2sce:position"] = code
+                if lane:
+                    props["txt2sce:lane"] = lane
+                dist = math.hypot(poses[name][0] - ego_pose[0], poses[name][1] - ego_pose[1])
+                if code in ("R5", "R6") and lane == "same" and dist <= NEAR_START:
+                    out.add("near_start:yes")
     out.add(f"npcs:{len(npcs)}")
     out.add("obstacle:yes" if obstacles else "obstacle:no")
     for name, props in npcs.items():
@@ -96,6 +162,8 @@ def scenario_elements(xml: bytes) -> frozenset[str]:
         codes = "".join(code for _, code in sorted(events.get(name, [])))
         if pos:
             out.add(f"position:{pos}")
+            if props.get("txt2sce:lane"):
+                out.add(f"position:{pos}/{props['txt2sce:lane']}")
         if cat:
             out.add(f"category:{cat}")
         if codes:
@@ -109,4 +177,16 @@ def scenario_elements(xml: bytes) -> frozenset[str]:
 
 @lru_cache(maxsize=65536)
 def elements_of_file(path: str) -> frozenset[str]:
-    return scenario_elements(Path(path).read_bytes())
+    """Elements of a scenario file, positions derived on the map it names (when that map loads)."""
+    from ..road import load_network
+    from ..scenario_source import logic_file
+
+    data = Path(path).read_bytes()
+    net = None
+    try:
+        xodr = logic_file(Path(path), data)
+        if xodr is not None and xodr.is_file():
+            net = load_network(str(xodr))
+    except Exception:   # the elements that need no map are still worth having
+        net = None
+    return scenario_elements(data, net)

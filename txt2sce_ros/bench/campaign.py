@@ -1,0 +1,158 @@
+"""`txt2sce bench campaign`: a paper-scale campaign end to end on this machine, beside baselines from the same run.
+
+1. Scale: the dev-gold sketches -> seeds -> trees with the default mutation settings (config/mutation.yaml), seeds
+   taken in manifest order until the trees hold >= `--scenarios` scenarios (default 4,000, the paper's scale),
+   -> every scenario closed-loop in-process on the process pool -> verdicts in the store -> analysis report.
+   Printed: wall time per stage and end to end, scenarios/s of the run stage.
+2. Baseline: the serial executor on a sample of the same scenarios (same run, same machine load).
+3. ROS-graph mode (`--ros` path: one node graph per run in its own ROS domain, verdict from the recorded bag)
+   on a small sample, beside the in-process path on the same sample.
+4. Profile: cProfile over a few in-process runs, the top functions per package (player / planner / oracle / road),
+   so each owner sees where a run's time goes.
+
+`--quick`: 300 scenarios, smaller samples. The figures are measurements on whatever load the machine has; the
+load average is printed beside them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import json
+import os
+import pstats
+import shutil
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+DESCRIPTION = "paper-scale campaign (>= 4,000 scenarios) wall time and scenarios/s; serial and ROS-graph baselines"
+
+PACKAGES = ("scenario_player", "standin_planner", "oracle_monitor", "txt2sce_ros/road", "numpy", "lxml")
+
+
+def _grow_trees(seed_dir: Path, out: Path, target: int, seed: int) -> tuple[int, int]:
+    """Trees from the seeds in manifest order until they hold `target` scenarios; (trees, scenarios)."""
+    from txt2sce_ros.tree.build import build_trees, tree_config
+
+    manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
+    seeds = [seed_dir / e["file"] for e in manifest["built"]]
+    cfg = tree_config()
+    total, trees, i = 0, 0, 0
+    while total < target and i < len(seeds):
+        batch = seeds[i:i + 2]            # two at a time: the two cores
+        i += len(batch)
+        for r in build_trees(batch, out, seed=seed, cfg=cfg, jobs=2):
+            total += r.nodes
+            trees += 1
+    return trees, total
+
+
+def _rate(n: int, seconds: float) -> str:
+    return f"{n / seconds:.2f} scenarios/s" if seconds > 0 else "–"
+
+
+def _profile(files: list[str], time_limit: float | None) -> dict[str, list[tuple[str, float, int]]]:
+    """Own time (tottime) per function over in-process runs, grouped by package, top 5 each."""
+    from txt2sce_ros.closed_loop import run_closed_loop
+
+    prof = cProfile.Profile()
+    prof.enable()
+    for f in files:
+        run_closed_loop(f, time_limit=time_limit)
+    prof.disable()
+    stats = pstats.Stats(prof)
+    per: dict[str, list[tuple[str, float, int]]] = defaultdict(list)
+    totals: dict[str, float] = defaultdict(float)
+    for (path, line, name), (_cc, ncalls, tottime, _ct, _callers) in stats.stats.items():  # type: ignore[attr-defined]
+        pkg = next((p for p in PACKAGES if f"/{p}/" in path), "other")
+        totals[pkg] += tottime
+        short = path.split(f"/{pkg}/", 1)[-1] if pkg != "other" else Path(path).name
+        per[pkg].append((f"{short}:{line} {name}", tottime, ncalls))
+    out = {}
+    for pkg in sorted(per, key=lambda p: -totals[p]):
+        out[f"{pkg} ({totals[pkg]:.2f} s)"] = sorted(per[pkg], key=lambda r: -r[1])[:5]
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from txt2sce_ros.campaign.pipeline import CampaignConfig, seed_stage
+    from txt2sce_ros.campaign.reporting import report_from_store
+    from txt2sce_ros.campaign.runs import make_tasks, run_all
+    from txt2sce_ros.campaign.store import ResultStore
+    from txt2sce_ros.paths import shared_dir
+
+    quick = getattr(args, "quick", False)
+    target = 300 if quick else 4000
+    serial_n = 20 if quick else 60
+    ros_n = 2 if quick else 4
+    prof_n = 3 if quick else 8
+    sketches = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
+    tmp = Path(tempfile.mkdtemp(prefix="txt2sce_bench_campaign_"))
+    workers = os.cpu_count() or 2
+    print(f"bench campaign: {sketches.name} -> >= {target} scenarios, {workers} cores, "
+          f"load average {os.getloadavg()[0]:.1f} at start; work dir {tmp}")
+    try:
+        cfg = CampaignConfig(out=tmp, seed=args.seed, progress=True)
+        t_start = time.perf_counter()
+        seed_dir, manifest = seed_stage(sketches, cfg)
+        t_seeds = time.perf_counter()
+        trees, scenarios = _grow_trees(seed_dir, tmp / "trees", target, args.seed)
+        t_trees = time.perf_counter()
+        tasks = make_tasks([tmp / "trees"], seed=args.seed)
+        with ResultStore(tmp / "results.sqlite") as store:
+            summary = run_all(tasks, store, executor="pool", workers=workers, progress=True)
+            t_runs = time.perf_counter()
+            report_from_store(store, [tmp / "trees"], tmp / "report", tasks=tasks)
+        t_end = time.perf_counter()
+        runs_s = t_runs - t_trees
+        print(f"\nscale ({len(manifest['built'])} seeds built, {trees} trees grown, default mutation settings):")
+        print(f"  seeds        {t_seeds - t_start:7.1f} s")
+        print(f"  trees        {t_trees - t_seeds:7.1f} s  ({scenarios} scenarios)")
+        print(f"  closed loop  {runs_s:7.1f} s  ({summary.ran} runs, pool x{workers}: {_rate(summary.ran, runs_s)}; "
+              f"verdicts {dict(sorted(summary.verdicts.items()))})")
+        print(f"  report       {t_end - t_runs:7.1f} s")
+        print(f"  end to end   {t_end - t_start:7.1f} s = {(t_end - t_start) / 60:.1f} min "
+              f"({_rate(len(tasks), t_end - t_start)}; goal <= 10 min)")
+
+        # Baseline: the serial executor on every k-th task (a spread sample), in a fresh store.
+        step = max(1, len(tasks) // serial_n)
+        sample = tasks[::step][:serial_n]
+        with ResultStore(tmp / "serial.sqlite") as store:
+            t0 = time.perf_counter()
+            run_all(sample, store, executor="serial", progress=False)
+            t_serial = time.perf_counter() - t0
+        pool_rate = summary.ran / runs_s if runs_s > 0 else 0.0
+        serial_rate = len(sample) / t_serial
+        print(f"\nbaseline: serial executor, {len(sample)} of the same scenarios: {_rate(len(sample), t_serial)} "
+              f"(pool x{workers} above: {pool_rate / serial_rate:.2f}x)")
+
+        # ROS-graph mode on a small sample, beside the in-process path on the same sample.
+        ros_sample = sample[:ros_n]
+        ros_tasks = make_tasks([t.scenario_path for t in ros_sample], seed=args.seed, ros=True)
+        with ResultStore(tmp / "ros.sqlite") as store:
+            t0 = time.perf_counter()
+            ros_summary = run_all(ros_tasks, store, executor="pool", workers=workers, progress=False)
+            t_ros = time.perf_counter() - t0
+            ros_runs = {r.scenario_id: (r.verdict, r.categories) for r in store.runs()}
+        with ResultStore(tmp / "serial.sqlite") as store:
+            inproc = {r.scenario_id: (r.verdict, r.categories) for r in store.runs()}
+        agree = sum(ros_runs.get(Path(t.scenario_path).stem) == inproc.get(t.scenario_id) for t in ros_sample)
+        print(f"ROS graph (--ros, one domain per worker, pool x{workers}), {len(ros_tasks)} scenarios: "
+              f"{_rate(len(ros_tasks), t_ros)} (verdicts {dict(sorted(ros_summary.verdicts.items()))}); "
+              f"in-process serial on the same: {serial_rate:.2f} scenarios/s; "
+              f"same verdict and categories in {agree}/{len(ros_sample)}")
+
+        # Where a run's time goes.
+        prof_files = [t.scenario_path for t in sample[:prof_n]]
+        print(f"\nprofile: cProfile own time over {len(prof_files)} in-process runs, top functions per package")
+        for pkg, rows in _profile(prof_files, None).items():
+            print(f"  {pkg}")
+            for name, tottime, ncalls in rows:
+                print(f"    {tottime:6.2f} s  {ncalls:>8} calls  {name}")
+        print(f"\nload average at end: {os.getloadavg()[0]:.1f}")
+    finally:
+        if not getattr(args, "keep", False):
+            shutil.rmtree(tmp, ignore_errors=True)
+    return 0
