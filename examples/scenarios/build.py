@@ -10,7 +10,7 @@ bundled maps: `python examples/scenarios/build.py` regenerates every `.xosc` bes
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent

@@ -1,9 +1,12 @@
 import math
 
+import numpy as np
 import pytest
 
 from standin_planner.route import off_route, plan_route
 from txt2sce_ros.errors import InputError
+from txt2sce_ros.paths import BUNDLED_MAPS
+from txt2sce_ros.road import load_network
 
 from .helpers import goal_on_lane, net
 
@@ -45,10 +48,6 @@ def test_off_route_by_offset_and_by_heading():
 
 
 def test_lane_changes_in_the_route_are_blended_into_the_line():
-    from txt2sce_ros.paths import BUNDLED_MAPS
-    from txt2sce_ros.road import load_network
-    import numpy as np
-
     n = load_network(BUNDLED_MAPS / "straight_3x3.xodr")
     x, y, h = n.lane_to_world("1", -1, 20.0)
     goal = goal_on_lane(n, "1", -3, 300.0)
