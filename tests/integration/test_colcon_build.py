@@ -34,3 +34,10 @@ def test_colcon_build_installs_node_executables(tmp_path: Path) -> None:
     assert (share / "txt2sce_ros" / "package.xml").is_file()
     assert (share / "txt2sce_ros" / "launch" / "txt2sce.launch.py").is_file()
     assert (share / "txt2sce_ros" / "config" / "fastdds_profile.xml").is_file()
+    # Bundled data travels inside the Python package (maps, demo narratives, the sketch schema).
+    site = list((tmp_path / "install" / "txt2sce_ros" / "lib").glob("python3*/site-packages/txt2sce_ros"))
+    assert site, "txt2sce_ros not installed as a Python package"
+    data = site[0] / "data"
+    assert list((data / "maps").glob("*.xodr")), "bundled maps missing from the install"
+    assert list((data / "reports").glob("*.jsonl")), "bundled narratives missing from the install"
+    assert (data / "sketch.schema.json").is_file()
