@@ -1,6 +1,8 @@
 """The planner's decisions on constructed frames on a real map (fabriksgatan: road 2 lane -1 runs 304 m south
 into a 4-way junction). Each fault flag is checked against the nominal planner on the same frame."""
 
+import math
+
 import pytest
 
 from standin_planner import Faults, Planner, PlannerParams
@@ -198,3 +200,20 @@ def test_off_route_pose_triggers_a_replan_from_where_the_ego_is():
     # Displaced onto the road coming in from the west (e.g. a lane it was pushed into): a new route from there.
     p.step(frame(0.10, on_lane(N, "ego", "3", -1, 60.0, speed=5.0)))
     assert p.replans == 2 and p.route.lanes[0].road_id == "3" and p.route.lanes[-1].road_id == "0"
+
+
+def test_pedestrian_about_to_cross_ahead_is_yielded_to():
+    ego = on_lane(N, "ego", "2", -1, 150.0, speed=8.0)
+    # 25 m ahead, 4 m to the right of the ego's lane centre, walking across it at 1.4 m/s.
+    side = -4.0 if N.lane_forward("2", -1) else 4.0
+    ped = on_lane(N, "ped1", "2", -1, 175.0, speed=1.4, category="pedestrian", offset=side, length=0.5,
+                  width=0.6, heading_delta=math.copysign(math.pi / 2, -side))
+    p = planner()
+    p.step(frame(0.0, ego, ped))
+    assert "ped1" in entities(p, Reason.YIELD)
+    # Walking away from the road instead: no yield.
+    away = on_lane(N, "ped1", "2", -1, 175.0, speed=1.4, category="pedestrian", offset=side, length=0.5,
+                   width=0.6, heading_delta=math.copysign(math.pi / 2, side))
+    p = planner()
+    p.step(frame(0.0, ego, away))
+    assert "ped1" not in entities(p, Reason.YIELD)
