@@ -144,6 +144,8 @@ def plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal)
     start = _locate(net, x, y, heading, "ego")
     target = _locate(net, goal.x, goal.y, goal.heading, "goal")
     lanes = lane_route(net, start, target)
+    if lanes == [start] and _behind(net, start, (x, y), (goal.x, goal.y)):
+        lanes = _loop_route(net, start)
     graph = net.routing_graph
     kinds = [_edge_kind(graph, a, b) for a, b in zip(lanes[:-1], lanes[1:])]
     tail = _extend(net, lanes[-1], GOAL_EXTENSION)
@@ -158,6 +160,33 @@ def plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal)
     goal_s = line.project(goal.x, goal.y, near_s=0.5 * (g0 + g1), window=0.5 * (g1 - g0) + 1.0).s
     trimmed, shift = _trim(line, max(0.0, ego_s - START_BACKOFF), min(line.length, goal_s + GOAL_EXTENSION))
     return Route(lanes=tuple(lanes), line=trimmed, goal_s=goal_s - shift)
+
+
+def _behind(net: RoadNetwork, ref: LaneRef, ego: tuple[float, float], goal: tuple[float, float]) -> bool:
+    """True when, on one lane, the goal lies behind the ego (the route must go round and come back)."""
+    pts = net.lane_centerline(ref.road_id, ref.lane_id, DS, section=ref.section)
+
+    def index(p: tuple[float, float]) -> int:
+        return int(np.argmin(np.hypot(pts[:, 0] - p[0], pts[:, 1] - p[1])))
+
+    return index(goal) < index(ego) - 2
+
+
+def _loop_route(net: RoadNetwork, start: LaneRef) -> list[LaneRef]:
+    """The shortest way from `start` round and back onto it (a ring road, a block)."""
+    graph = _follow_only(net.routing_graph)
+    best: list[LaneRef] | None = None
+    for nxt in net.successors(start):
+        try:
+            path = [start] + list(nx.shortest_path(graph, nxt, start, weight="weight"))
+        except (nx.NetworkXNoPath, nx.NodeNotFound):
+            continue
+        if best is None or len(path) < len(best):
+            best = path
+    if best is None:
+        raise InputError(f"the goal lies behind the ego on lane {start} and no way leads round to it",
+                         source=net.source, element="route")
+    return best
 
 
 def _trim(line: RefLine, s0: float, s1: float) -> tuple[RefLine, float]:

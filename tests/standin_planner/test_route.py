@@ -8,7 +8,7 @@ from txt2sce_ros.errors import InputError
 from txt2sce_ros.paths import BUNDLED_MAPS
 from txt2sce_ros.road import load_network
 
-from .helpers import goal_on_lane, net
+from .helpers import ESMINI_XODR, goal_on_lane, net
 
 
 def test_route_through_the_junction_turns_onto_the_goal_road():
@@ -62,3 +62,15 @@ def test_lane_changes_in_the_route_are_blended_into_the_line():
     assert line.project(w3[0], w3[1]).offset == pytest.approx(0.0, abs=0.1)
     assert np.hypot(*np.diff(line.xy, axis=0).T).max() < 1.0
     assert np.abs(line.curvature).max() < 0.05
+
+
+def test_goal_behind_the_ego_on_a_ring_road_goes_round():
+    n = load_network(ESMINI_XODR / "circle_300m.xodr")
+    x, y, h = n.lane_to_world("1", -1, 100.0)
+    behind = plan_route(n, x, y, h, goal_on_lane(n, "1", -1, 50.0))
+    ahead = plan_route(n, x, y, h, goal_on_lane(n, "1", -1, 150.0))
+    assert len(behind.lanes) == 2 and len(ahead.lanes) == 1
+    # Round the ring (~250 m of lane) versus 50 m straight on, both measured from 10 m behind the ego.
+    assert behind.goal_s > 4.0 * (ahead.goal_s - 10.0)
+    # 250 m of reference line round the ring; the lane centre's ring is a few per cent longer or shorter.
+    assert behind.goal_s == pytest.approx(10.0 + 250.0, rel=0.06)
