@@ -322,6 +322,8 @@ SCENARIOS: tuple[Scenario, ...] = (
              note="Red on approach: stop at the line, go on green."),
     Scenario("benign_stop_t_junction", "junction3_stop.xodr", Lane("3", -1, 100.0), Lane("1", 1, 120.0),
              note="T junction: turn from the minor road."),
+    Scenario("benign_roundabout", "roundabout.xodr", Lane("1", -1, 30.0), Lane("3", 1, 100.0),
+             note="Through a single-lane roundabout, leaving at the second exit."),
     Scenario("benign_wet_straight", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -1, 250.0), friction=0.4,
              weather="rain", note="Wet road (friction 0.4): start and stop without slipping."),
     # --- one scenario per fault mode ------------------------------------------------------------------------------
