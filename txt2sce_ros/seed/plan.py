@@ -87,7 +87,9 @@ class Planner:
             idx, why = self._ego_lane_index(len(site.ego.lanes), allowed)
             refs = self._through(site.ego.lanes[idx], turn)
             track = Track(self.net, refs)
-            d_entry = float(track.d[np.nonzero(track.seg == 1)[0][0]]) if len(refs) > 1 else track.length
+            k_junction = next((k for k, r in enumerate(refs) if self.net.roads[r.road_id].in_junction), None)
+            d_entry = float(track.d[np.nonzero(track.seg == k_junction)[0][0]]) if k_junction is not None \
+                else track.length
             self.choices["ego_lane"] = {"index": idx, "lane_id": site.ego.lanes[idx].lane_id, "why": why,
                                         "turn": turn}
             ref = site.ego.lanes[idx]
@@ -102,9 +104,25 @@ class Planner:
         self.ev.lane_w = self.lane_w
         return track, idx, d_entry, self.lane_w
 
-    def _through(self, ref, turn: str, *, extra: int = 1) -> list:
-        """Lane refs: `ref`, the connecting lane making `turn` (or any), then `extra` successors beyond."""
+    def _junction_ref(self, track: Track | LineTrack):
+        """The first lane of a track inside a junction (the connecting lane a route must name), or None."""
+        if not isinstance(track, Track):
+            return None
+        return next((r for r in track.refs if self.net.roads[r.road_id].in_junction), None)
+
+    def _through(self, ref, turn: str, *, extra: int = 1, run_up: float = 150.0) -> list:
+        """Lane refs: `ref` (preceded by its unique predecessors while it is shorter than `run_up` m: short
+        approach roads on third-party maps), the connecting lane making `turn` (or any), then `extra` successors."""
         refs = [ref]
+        length = self.net.lane_length(ref)
+        for _ in range(4):
+            if length >= run_up:
+                break
+            prev = [r for r in self.net.predecessors(refs[0]) if r not in refs]
+            if len(prev) != 1:
+                break
+            refs.insert(0, prev[0])
+            length += self.net.lane_length(prev[0])
         conns = [(self.net.turn_type(ref, c), c) for c in self.net.successors(ref)]
         pick = next((c for t, c in conns if t == turn), conns[0][1] if conns else None)
         if pick is None:
@@ -309,7 +327,7 @@ class Planner:
         out = {}
         for c in p.actions:
             if c in TURN_CODES:
-                mid_ref = actor.track.refs[1]
+                mid_ref = self._junction_ref(actor.track) or actor.track.refs[1]
                 mid = self.net.lane_centerline(mid_ref.road_id, mid_ref.lane_id, 0.5, section=mid_ref.section)
                 s_mid = float(mid[len(mid) // 2, 2])
                 end = actor.track.lane_pose(actor.track.length - 5.0)
@@ -356,7 +374,15 @@ class Planner:
         reach = float(np.interp(t_e, t, dn))
         actor.d0 = d_n_star - reach - actor.cx
         if actor.d0 < 0:
-            actor.notes.append(f"party start clamped ({actor.d0:.1f} m before its path)")
+            t_party = time_to_reach(t, dn, d_n_star - actor.cx)
+            if primary and t_party is not None and self._ego_d_at(t_e) > 1.0:
+                # the party's road is too short for the planned run-up: meet earlier, moving the AV closer
+                t_e = t_party
+                ego.d0 = max(d_e_star - front - self._ego_d_at(t_e), 0.0)
+                self.choices["ego_start_d"] = round(ego.d0, 2)
+                actor.notes.append(f"short approach: meeting at {t_e:.1f} s instead of {T:.1f} s")
+            else:
+                actor.notes.append(f"party start clamped ({actor.d0:.1f} m before its path)")
             actor.d0 = 0.0
         if dist[i, j] >= 1.0 and self.sketch.collision.with_ == actor.name and actor.events:
             self._graze(actor, d_n_star, t_e)
@@ -558,8 +584,8 @@ class Planner:
         self.time_limit = float(max(self.D.timing.time_limit, math.ceil(1.5 * (goal_d - ego.d0) / cruise + 10.0)))
         start = ego.track.lane_pose(ego.d0)
         wps: list = [LanePose(start.road_id, start.lane_id, start.s)]
-        if isinstance(ego.track, Track) and len(ego.track.refs) > 1:
-            mid_ref = ego.track.refs[1]
+        mid_ref = self._junction_ref(ego.track)
+        if mid_ref is not None:
             mid = self.net.lane_centerline(mid_ref.road_id, mid_ref.lane_id, 0.5, section=mid_ref.section)
             wps.append(LanePose(mid_ref.road_id, mid_ref.lane_id, round(float(mid[len(mid) // 2, 2]), 3)))
         goal = ego.track.lane_pose(goal_d)
