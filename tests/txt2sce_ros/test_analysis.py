@@ -50,3 +50,79 @@ def test_derivation_attributes_new_categories_to_the_added_block() -> None:
                                                                   ("n3", "Smooth", "TSM")]
     assert "car -> bicycle" in cands[0].changes[0]
     assert aggregate(cands) == {"Collisions": [("npc / NCM", 1)], "Smooth": [("event / TSM", 1)]}
+
+
+# --- scenario elements read from real seeds (dev-gold sketches -> seeds), positions derived on their maps ---------
+
+import itertools  # noqa: E402
+import math  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+from txt2sce_ros.analysis.features import derived_position, elements_of_file, scenario_elements  # noqa: E402
+from txt2sce_ros.paths import shared_dir  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def gold_seeds(tmp_path_factory: pytest.TempPathFactory) -> dict[str, tuple[Path, dict]]:
+    import json
+
+    from txt2sce_ros.seed import write_seeds
+    from txt2sce_ros.sketch import load_sketches
+
+    gold = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
+    out = tmp_path_factory.mktemp("seeds")
+    write_seeds(itertools.islice(load_sketches(gold), 8), out, seed=0)
+    sketches = {}
+    with gold.open(encoding="utf-8") as fh:
+        for line in itertools.islice(fh, 8):
+            d = json.loads(line)
+            sketches[d["report_id"]] = d
+    return {p.stem: (p, sketches[p.stem]) for p in sorted(out.glob("*.xosc"))}
+
+
+def test_elements_of_real_seeds_match_their_sketches(gold_seeds: dict[str, tuple[Path, dict]]) -> None:
+    checked = 0
+    for rid, (path, sketch) in gold_seeds.items():
+        elems = elements_of_file(str(path))
+        assert f"npcs:{len(sketch['npcs'])}" in elems
+        assert ("obstacle:yes" in elems) == bool(sketch["obstacles"])
+        for npc in sketch["npcs"]:
+            assert f"category:{npc['category']}" in elems
+            assert f"events:{npc['actions']}" in elems
+        expected_signal = sketch["signal_state"] if sketch["signal_state"] in ("red", "yellow", "green") else "none"
+        assert f"signal:{expected_signal}" in elems
+        # derived positions agree with the labelled ones for parties that move along a lane (a crossing party,
+        # actions 'm', starts across the road: its heading says R1/R3 whatever side of the road it stands)
+        for npc in sketch["npcs"]:
+            if npc["actions"] != "m":
+                assert f"position:{npc['position']}" in elems, (rid, npc, sorted(elems))
+                checked += 1
+    assert checked >= 3
+
+
+def test_derived_position_follows_the_sketch_definitions() -> None:
+    ego = (0.0, 0.0, 0.0)                                   # heading +x
+    assert derived_position(ego, (10.0, 0.0, 0.0)) == ("R5", "same")
+    assert derived_position(ego, (-10.0, 3.5, 0.0)) == ("R6", "left")
+    assert derived_position(ego, (30.0, 3.5, math.pi)) == ("R7", "left")
+    assert derived_position(ego, (40.0, 30.0, -math.pi / 2)) == ("R1", None)   # comes from the left, heading right
+    assert derived_position(ego, (40.0, -30.0, math.pi / 2)) == ("R3", None)
+
+
+def test_written_position_wins_and_weather_is_read(gold_seeds: dict[str, tuple[Path, dict]]) -> None:
+    path, _ = gold_seeds["dmvca-apple-20211111-r241"]
+    xml = path.read_bytes()
+    assert b"txt2sce:position" not in xml
+    with_prop = xml.replace(b'<Property name="txt2sce:category" value="van"/>',
+                            b'<Property name="txt2sce:category" value="van"/>'
+                            b'<Property name="txt2sce:position" value="R2"/>')
+    assert with_prop != xml
+    from txt2sce_ros.road import load_network
+    from txt2sce_ros.scenario_source import logic_file
+
+    net = load_network(str(logic_file(path, xml)))
+    assert "position:R6" in scenario_elements(xml, net)          # derived on the map
+    assert "position:R2" in scenario_elements(with_prop, net)    # the written one wins
+    assert "position:R6" not in scenario_elements(with_prop, net)
+    rainy = xml.replace(b'precipitationType="dry" intensity="0.0"', b'precipitationType="rain" intensity="0.8"')
+    assert "weather:rain" in scenario_elements(rainy) and "weather:clear" in scenario_elements(xml)

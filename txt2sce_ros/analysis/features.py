@@ -63,14 +63,18 @@ def weather_label(root: etree._Element) -> str:
     return "clear"
 
 
-def signal_label(root: etree._Element) -> str:
-    """The first phase's state of the first signal controller ('none' without one)."""
+def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:
+    """The state the ego's signal shows in the first phase (running while the parties interact) of the first
+    controller: the first of `facing` (signal ids facing the ego) the phase sets, else the phase's first signal
+    ('none' without a controller) — the same signal the tree's TLS mutation changes."""
     ctrl = root.find(".//TrafficSignalController")
     if ctrl is None:
         return "none"
-    state = ctrl.find("Phase/TrafficSignalState")
-    if state is None:
+    states = ctrl.findall("Phase[1]/TrafficSignalState")
+    if not states:
         return "none"
+    by_id = {s.get("trafficSignalId"): s for s in states}
+    state = next((by_id[f] for f in facing if f in by_id), states[0])
     value = state.get("state", "").lower()
     for colour in ("red", "yellow", "green"):
         if colour in value:
@@ -123,8 +127,9 @@ def derived_position(ego: tuple[float, float, float], other: tuple[float, float,
     return ("R1" if dh < 0 else "R3"), None
 
 
-def scenario_elements(xml: bytes, net: Any = None) -> frozenset[str]:
-    """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports."""
+def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ()) -> frozenset[str]:
+    """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports,
+    `facing` names the signals facing the ego (see `signal_label`)."""
     root = etree.fromstring(xml, _PARSER)
     out: set[str] = set()
     npcs: dict[str, dict[str, str]] = {}
@@ -171,7 +176,7 @@ def scenario_elements(xml: bytes, net: Any = None) -> frozenset[str]:
             if pos:
                 out.add(f"{pos}+{codes}")
     out.add(f"weather:{weather_label(root)}")
-    out.add(f"signal:{signal_label(root)}")
+    out.add(f"signal:{signal_label(root, facing)}")
     return frozenset(out)
 
 
@@ -182,11 +187,15 @@ def elements_of_file(path: str) -> frozenset[str]:
     from ..scenario_source import logic_file
 
     data = Path(path).read_bytes()
-    net = None
+    net, facing = None, ()
     try:
         xodr = logic_file(Path(path), data)
         if xodr is not None and xodr.is_file():
             net = load_network(str(xodr))
+            if b"TrafficSignalController" in data:
+                from ..tree.context import build_context
+
+                facing = build_context(etree.fromstring(data, _PARSER), source=path, seed_path=Path(path)).ego_signals
     except Exception:   # the elements that need no map are still worth having
-        net = None
-    return scenario_elements(data, net)
+        pass
+    return scenario_elements(data, net, facing)
