@@ -1,0 +1,56 @@
+"""The effectiveness study: differential attribution (fault vs nominal) and the study on real seeds."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from txt2sce_ros.campaign.effectiveness import FAULTS, StudyConfig, assess, pick_seeds, run_study
+from txt2sce_ros.campaign.store import ResultStore
+
+from .conftest import TIME_LIMIT
+
+
+def test_assess_counts_only_what_the_fault_added() -> None:
+    spec = next(f for f in FAULTS if f.name == "ignore_cyclists")
+    elements = {f"s{i}": frozenset({"category:bicycle" if i < 4 else "category:car", "weather:clear"})
+                for i in range(10)}
+    nominal = {f"s{i}": frozenset({"Collisions"} if i == 9 else ()) for i in range(10)}
+    # the fault adds collisions in three bicycle scenarios; s9 collided anyway (not the fault's doing)
+    faulty = {f"s{i}": frozenset({"Collisions"} if i in (0, 1, 2, 9) else ()) for i in range(10)}
+    row, lift = assess(spec, nominal, faulty, elements)
+    assert row.found and row.differential == 3
+    assert (row.runs_with_fault, row.runs_nominal) == (4, 1)
+    assert row.right_rank == 1 and row.top_trigger.startswith("category:bicycle")
+    assert lift[0].support == 3 and lift[0].with_element == 4
+    # nothing added: not found, no ranking
+    row, lift = assess(spec, nominal, nominal, elements)
+    assert not row.found and row.right_rank is None and lift == []
+
+
+def test_pick_seeds_covers_new_elements_first(seed_files: list[Path]) -> None:
+    picked = pick_seeds(seed_files, 3)
+    assert len(picked) == 3 and len(set(picked)) == 3
+    assert pick_seeds(seed_files, 3) == picked                     # deterministic
+    assert pick_seeds(list(reversed(seed_files)), 3) == picked      # independent of input order
+
+
+def test_study_shares_nominal_runs_and_writes_the_table(seed_dir: Path, tmp_path: Path) -> None:
+    faults = ("ignore_cyclists", "no_start_when_close")
+    cfg = StudyConfig(out=tmp_path / "study", seeds=2, nodes=6, time_limit=TIME_LIMIT, faults=faults,
+                      workers=2, progress=False)
+    rows = run_study([seed_dir], cfg)
+    assert [r.fault for r in rows] == list(faults)
+    data = json.loads((tmp_path / "study" / "effectiveness.json").read_text(encoding="utf-8"))
+    n = data["scenarios"]
+    assert n > 2 and len(data["seeds"]) == 2
+    with ResultStore(tmp_path / "study" / "results.sqlite") as store:
+        assert store.count() == n * (1 + len(faults))      # one nominal set, one set per fault
+    for r in rows:
+        assert r.found == (r.differential > 0)
+        assert r.differential <= r.runs_with_fault
+        assert r.right_rank is None or r.right_rank >= 1
+    table = (tmp_path / "study" / "effectiveness.txt").read_text(encoding="utf-8")
+    assert all(f in table for f in faults)
+    # resumed: nothing reruns, the same rows come back
+    assert run_study([seed_dir], cfg) == rows
