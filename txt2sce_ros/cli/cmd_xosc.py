@@ -75,7 +75,8 @@ def _entitydb(args: argparse.Namespace) -> int:
         mx = "*" if c.max_occurs == UNBOUNDED else str(c.max_occurs)
         print(f"  <{c.tag}> {c.type} [{c.min_occurs}..{mx}]{' (choice)' if c.in_choice else ''}")
     for a in db.attributes(el.name):
-        dom = f" in {list(a.enumeration)}" if a.enumeration else (f" range {a.numeric_range}" if a.numeric_range else "")
+        dom = f" in {list(a.enumeration)}" if a.enumeration else (
+            f" range {a.numeric_range}" if a.numeric_range else "")
         print(f"  @{a.name}: {a.type}{' required' if a.required else ''}{dom}")
     return 0
 

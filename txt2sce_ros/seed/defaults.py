@@ -13,9 +13,6 @@ from ..errors import InputError
 @dataclass(frozen=True, slots=True)
 class Timing:
     time_to_conflict: float
-    min_run_up: float
-    rear_gap_time: float
-    lane_change_trigger_ttc: float
     ego_goal_beyond_conflict: float
     time_limit: float
     goal_tolerance: float

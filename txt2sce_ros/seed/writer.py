@@ -20,6 +20,9 @@ from .model import (
 #: The FileHeader date: fixed so that seeds are byte-identical across runs (the manifest says when it was built).
 HEADER_DATE = "2024-01-01T00:00:00"
 AUTHOR = "txt2sce"
+#: Masses (kg) the XSD requires for pedestrians and objects; nothing in the pipeline reads them.
+PEDESTRIAN_MASS = 75.0
+OBJECT_MASS = 50.0
 #: Events in one maneuver may overlap (a route assigned while a speed change runs): `parallel`, not `overwrite`.
 EVENT_PRIORITY = "parallel"
 
@@ -95,12 +98,13 @@ def _entity(x: _Xml, ents: etree._Element, e: EntityPlan, d_perf: tuple[float, f
                                  "positionX": 0.0, "positionZ": wheel / 2}, xsd_type="Axle")
         _properties(x, v, props)
     elif e.kind == "pedestrian":
-        p = x.el(so, "Pedestrian", {"name": f"{e.name}_pedestrian", "model": e.category, "mass": 75.0,
+        p = x.el(so, "Pedestrian", {"name": f"{e.name}_pedestrian", "model": e.category, "mass": PEDESTRIAN_MASS,
                                     "pedestrianCategory": e.xosc_category})
         _bounding_box(x, p, e)
         _properties(x, p, props)
     else:
-        m = x.el(so, "MiscObject", {"name": f"{e.name}_object", "mass": 50.0, "miscObjectCategory": e.xosc_category})
+        m = x.el(so, "MiscObject", {"name": f"{e.name}_object", "mass": OBJECT_MASS,
+                                    "miscObjectCategory": e.xosc_category})
         _bounding_box(x, m, e)
         _properties(x, m, props)
     if e.external:

@@ -15,7 +15,7 @@ The XSD carries no `xsd:documentation` in 1.0–1.3, so `documentation` holds a 
 
     from txt2sce_ros.xosc.entitydb import entity_db
     db = entity_db()                               # version 1.0, cached on disk under paths.cache_dir()
-    db.children("SpeedAction")                     # [Child(tag='SpeedActionDynamics', type='TransitionDynamics', ...), ...]
+    db.children("SpeedAction")                     # [Child(tag='SpeedActionDynamics', ...), ...]
     db.allowed_values("TransitionDynamics", "dynamicsShape")   # ['cubic', 'linear', 'sinusoidal', 'step']
     db.check_value("Precipitation", "precipitationType", "rain")   # raises InputError when not a member
     db.numeric_range("Precipitation", "intensity")             # (0.0, 1.0)
