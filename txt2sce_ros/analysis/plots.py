@@ -82,7 +82,7 @@ def tree_view(nodes: Mapping[str, Mapping], verdicts: Mapping[str, str], title: 
                                                    if d.get("parent") and d.get("parent") not in nodes]
     for r in sorted(set(roots)):
         place(r, 0)
-    fig, ax = plt.subplots(figsize=(min(18, 2 + 0.12 * max(1, leaf_x[0])), 4))
+    fig, ax = plt.subplots(figsize=(min(18, 3 + 0.15 * max(1, leaf_x[0])), 4))
     for nid, node in nodes.items():
         p = node.get("parent")
         if p in pos and nid in pos:
@@ -91,7 +91,10 @@ def tree_view(nodes: Mapping[str, Mapping], verdicts: Mapping[str, str], title: 
         xs, ys = zip(*(pos[n] for n in pos))
         cols = [VERDICT_COLOURS.get(verdicts.get(n, ""), "white") for n in pos]
         ax.scatter(xs, ys, c=cols, s=14, edgecolors="k", linewidths=0.3, zorder=2)
-    ax.set_title(title)
+    for verdict, colour in (*VERDICT_COLOURS.items(), ("not run", "white")):
+        ax.scatter([], [], c=colour, s=14, edgecolors="k", linewidths=0.3, label=verdict)
+    ax.legend(fontsize=7, loc="upper right", frameon=False)
+    ax.set_title(title, fontsize=10)
     ax.set_yticks([])
     ax.set_xticks([])
     for s in ax.spines.values():
@@ -105,16 +108,26 @@ def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.n
     fig, ax = plt.subplots(figsize=(6, 6))
     for border in lanes:
         ax.plot(border[:, 0], border[:, 1], color="#cfcfcf", lw=0.6)
+    # the ego always blue; other parties from a palette without blue or red (red marks the violations)
+    palette = iter(["#ff9800", "#43a047", "#8e24aa", "#6d4c41", "#00acc1", "#757575", "#c0ca33", "#f06292"])
     for name, tr in trajectories.items():
         if len(tr) == 0:
             continue
-        style = dict(lw=2.2, color="#1e88e5") if name == "ego" else dict(lw=1.2)
-        ax.plot(tr[:, 1], tr[:, 2], label=name, **style)
-        ax.plot(tr[0, 1], tr[0, 2], "o", ms=4, color=style.get("color", "k"))
-        ax.plot(tr[-1, 1], tr[-1, 2], "s", ms=4, color=style.get("color", "k"))
+        colour = "#1e88e5" if name == "ego" else next(palette, "#424242")
+        lw = 2.4 if name == "ego" else 1.4
+        ax.plot(tr[:, 1], tr[:, 2], label=name, lw=lw, color=colour)
+        ax.plot(tr[0, 1], tr[0, 2], "o", ms=5, color=colour)
+        ax.plot(tr[-1, 1], tr[-1, 2], "s", ms=5, color=colour)
+    # violations at (nearly) the same place share one cross and one stacked label, so texts never overprint
+    spots: dict[tuple[int, int], list[str]] = {}
     for x, y, text in marks:
-        ax.plot(x, y, "x", color="#e53935", ms=10, mew=2)
-        ax.annotate(text, (x, y), fontsize=8, color="#e53935")
+        spots.setdefault((round(x), round(y)), []).append(text)
+    for (x, y), texts in spots.items():
+        ax.plot(x, y, "x", color="#e53935", ms=11, mew=2.2, zorder=5)
+        ax.annotate("\n".join(texts), (x, y), xytext=(8, 8), textcoords="offset points", fontsize=8,
+                    color="#c62828", bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="#e53935", alpha=0.85))
+    ax.plot([], [], "ko", ms=4, label="start")
+    ax.plot([], [], "ks", ms=4, label="end")
     allpts = np.vstack([tr[:, 1:3] for tr in trajectories.values() if len(tr)]) if trajectories else np.zeros((1, 2))
     lo, hi = allpts.min(axis=0) - 15, allpts.max(axis=0) + 15
     span = max(hi - lo)

@@ -107,7 +107,7 @@ def write_report(res: CampaignResults, out_dir: str | Path, *, title: str = "txt
     figs: dict[str, bytes] = {"categories": plots.category_bars(an.behaviours), "lift": plots.lift_bars(an.lift)}
     for tree, nodes in sorted(res.trees.items())[:3]:
         verdicts = {r["scenario_id"]: r["verdict"] for r in res.runs if r.get("tree") == tree}
-        figs[f"tree:{tree}"] = plots.tree_view(nodes, verdicts, f"tree {tree} (red = fail, green = pass)")
+        figs[f"tree:{tree}"] = plots.tree_view(nodes, verdicts, f"tree {tree}: depth = blocks added; failing nodes red")
     for i, (caption, png) in enumerate(res.failure_plots):
         figs[f"failure:{i:02d} {caption}"] = png
     names = {}

@@ -43,6 +43,8 @@ def _tree_dirs(inputs: Sequence[str | Path]) -> list[Path]:
 def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS, *,
                   time_limit: float | None = None) -> list[tuple[str, bytes]]:
     """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
+    import numpy as np
+
     from ..analysis.plots import trajectory_plot
     from ..closed_loop import run_closed_loop
 
@@ -63,10 +65,19 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
             continue
         lanes = _lane_borders(r["file"], traj)
         marks = []
-        for v in record.details.get("violations", [])[:3]:
+        for v in record.details.get("violations", []):
+            if len(marks) >= 3:
+                break
             if "x" in v and "y" in v:
                 marks.append((float(v["x"]), float(v["y"]), str(v.get("category", ""))))
-        caption = f"{r['scenario_id']}: {', '.join(r['categories'])}"
+            elif "t" in v and len(traj.get("ego", ())):
+                # violations carry a time, not a place: mark where the ego was then
+                ego = traj["ego"]
+                t = float(v["t"])
+                marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
+                              f"{v.get('category', '')} @ {t:.1f} s"))
+        where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
+        caption = f"{where}: {', '.join(r['categories'])}"
         out.append((caption, trajectory_plot(traj, lanes, caption, marks)))
     return out
 

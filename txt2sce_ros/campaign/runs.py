@@ -78,8 +78,15 @@ def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "po
     todo = [t for t in todo if not (t.key in seen or seen.add(t.key))]
     if limit is not None:
         todo = todo[:limit]
-    verdicts: dict[str, int] = {}
-    bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, file=sys.stderr, dynamic_ncols=True)
+    if progress and done:
+        print(f"[campaign] resuming: {sum(t.key in done for t in tasks)} of {len(tasks)} runs already stored",
+              file=sys.stderr)
+    # fixed key order so the bar's counts do not jump around as verdicts first appear
+    verdicts: dict[str, int] = {"pass": 0, "fail": 0, "error": 0}
+    bar = tqdm(total=len(todo), desc="closed-loop runs", unit="run", disable=not progress, file=sys.stderr,
+               dynamic_ncols=True, mininterval=0.5, smoothing=0.05,
+               bar_format="{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt} [{elapsed}<{remaining} ETA, "
+                          "{rate_fmt}{postfix}]")
     try:
         for run in run_tasks(execute, todo, executor=executor, workers=workers):
             store.add(run)
@@ -89,4 +96,5 @@ def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "po
     finally:
         bar.close()
     skipped = sum(1 for t in tasks if t.key in done)
+    verdicts = {k: v for k, v in verdicts.items() if v}
     return RunsSummary(total=len(tasks), skipped=skipped, ran=sum(verdicts.values()), verdicts=verdicts)
