@@ -363,11 +363,18 @@ class Planner:
                     actor.notes.append("AV run-up shortened by the map")
             else:  # the AV stands: the party comes to it
                 ego.d0 = max(min(self.d_entry - 2.0 - front, d_e_star - front - 1.0), 0.0)
+                at_line = ego.track.world(ego.d0 + front)
+                miss = float(np.min(np.hypot(pts[:, 0] - at_line.x, pts[:, 1] - at_line.y)))
+                if self.sketch.collision.with_ == actor.name and dist[i, j] < 1.0 and miss > 3.0:
+                    # the party's path crosses inside the junction, far from the stop line, yet they touched:
+                    # the AV stood past the line, its front in the party's path
+                    ego.d0 = max(d_e_star - front + actor.width / 2 - 0.3, 0.0)
+                    actor.notes.append("AV standing inside the junction, its front in the party's path")
             self.choices["ego_start_d"] = round(ego.d0, 2)
         t_e = time_to_reach(self.ego_t, self.ego_d, d_e_star - front - ego.d0)
         if t_e is None:
-            # the AV never gets there: meet at the AV itself (it stands at/ before the point)
-            stand = ego.d0 + float(self.ego_d[-1]) + front
+            # the AV never gets there: meet at the AV itself, where it is at the conflict time
+            stand = ego.d0 + self._ego_d_at(T) + front
             wp = ego.track.world(stand)
             d_n_star = float(actor.track.project(wp.x, wp.y)) if isinstance(actor.track, Track) else d_n_star
             t_e = T
