@@ -119,3 +119,22 @@ def test_no_fitting_map_is_a_clear_error(gold, tmp_path) -> None:
     s = next(s for s in gold.values() if not s.missing and (s.road.lanes or 0) >= 3)
     with pytest.raises(InputError, match="no map site fits"):
         generate_seed(s, maps=aisle)
+
+
+def test_bytes_do_not_depend_on_the_process(tmp_path, gold) -> None:
+    """Same sketches + seed in two interpreters with different hash seeds: identical files and manifest."""
+    import os
+    import subprocess
+    import sys
+
+    src = tmp_path / "in.jsonl"
+    src.write_text("".join(gold[r].to_json() + "\n" for r in (
+        "dmvca-waymo-20240411-r574", "dmvca-cruise-20190807-r58", "dmvca-cruise-20211113-r243")))
+    outs = []
+    for hs in ("1", "4242"):
+        out = tmp_path / f"out{hs}"
+        env = dict(os.environ, PYTHONHASHSEED=hs)
+        subprocess.run([sys.executable, "-m", "txt2sce_ros.cli.main", "seed", str(src), "--out", str(out),
+                        "--seed", "5"], check=True, env=env, capture_output=True)
+        outs.append({p.relative_to(out).as_posix(): p.read_bytes() for p in sorted(out.rglob("*")) if p.is_file()})
+    assert outs[0] == outs[1] and len(outs[0]) >= 4
