@@ -35,6 +35,13 @@ def run(args: argparse.Namespace) -> int:
             if errs:
                 qc_bad += 1
                 print(f"QC {b['file']}: {errs[0]}")
+    from collections import Counter
+
+    maps = Counter(b["map"] for b in built)
+    relaxed = sum(1 for b in built if b["choices"].get("relaxed"))
+    if built:
+        print("maps: " + ", ".join(f"{m} {n}" for m, n in sorted(maps.items()))
+              + f"; {relaxed} seed(s) with a relaxed road constraint (see manifest.json)")
     print(f"{len(built)} seed(s) written to {args.out}, {len(refused)} sketch(es) refused"
           + (f", {len(built) - qc_bad}/{len(built)} clean under the ASAM checker" if args.qc else ""))
     return 1 if qc_bad else 0
