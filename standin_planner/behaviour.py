@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from txt2sce_ros.contract import EntityState, SignalState, TrafficLightState
+from txt2sce_ros.contract import OBSTACLE_CATEGORIES, EntityState, SignalState, TrafficLightState
 
-from .idm import idm_accel, stop_accel
+from .idm import idm_accel, slow_down_accel, stop_accel
 from .params import BehaviourParams, LongitudinalParams
 from .refline import RefLine, wrap_angle
 
@@ -55,6 +55,12 @@ class StopPlan:
     lag: float = 0.0
     hard: bool = False           # brake late and hard (fault late_braking_low_friction): no comfort jerk limit
     braking: bool = False        # the ego is braking already (hold a stop through to standstill)
+
+
+def is_static(obj: EntityState) -> bool:
+    """A static object: flagged so by the simulator, or of an obstacle category (a parked vehicle is one even when
+    it is modelled as a Vehicle; the ROS path derives the flag from the category, so both paths agree)."""
+    return obj.is_static or obj.category in OBSTACLE_CATEGORIES
 
 
 @dataclass(frozen=True, slots=True)
@@ -103,7 +109,7 @@ def lead_constraint(objs: list[PathObject], ego: EgoOnPath, ego_offset: float, v
     for po in objs:
         if po.s_max <= ego.s_front - 0.5 or not in_path(po, ego, ego_offset, bp):
             continue
-        if po.state.is_static or abs(po.rel_heading) > bp.lead_heading_tolerance or po.v_along < 0.3:
+        if is_static(po.state) or abs(po.rel_heading) > bp.lead_heading_tolerance or po.v_along < 0.3:
             continue
         if best is None or po.s_min < best.s_min:
             best = po
@@ -138,39 +144,102 @@ def stop_constraint(reason: Reason, distance: float, ego: EgoOnPath, lp: Longitu
     return Constraint(reason, a, entity, distance, urgent=urgent)
 
 
-def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourParams) -> float | None:
-    """Lateral offset of the ego's centre (left positive) at which it passes the static object with
-    `pass_lateral_margin` clearance while its whole body stays inside its lane; None when neither side has room."""
-    half_room = 0.5 * line.width_at(0.5 * (po.s_min + po.s_max)) - ego.half_width
+def pass_offset(po: PathObject, ego: EgoOnPath, line: RefLine, bp: BehaviourParams,
+                others: list[PathObject] = ()) -> tuple[float, bool] | None:
+    """(offset, clear): the lateral offset of the ego's centre (left positive) at which it passes the static object
+    with `pass_lateral_margin` clearance — inside its lane when the lane leaves room, else partly or wholly in a
+    same-direction neighbour lane — and whether that is free now (`others` checked from behind the ego to past
+    the object; a pass inside the lane is always free). None when neither side has room at all."""
+    w = line.width_at(0.5 * (po.s_min + po.s_max))
+    room_l, room_r = line.neighbour_room(po.s_min - PASS_PREPARE, po.s_max + PASS_RETURN)
     left = po.offset + po.half_lat + bp.pass_lateral_margin + ego.half_width
     right = po.offset - po.half_lat - bp.pass_lateral_margin - ego.half_width
-    options = [o for o in (left, right) if abs(o) <= half_room + 1e-9]
-    return min(options, key=abs) if options else None
+    own = 0.5 * w - ego.half_width
+    inside = [o for o in (left, right) if abs(o) <= own + 1e-9]
+    if inside:
+        return min(inside, key=abs), True
+    options = []
+    if room_l > 0.0 and left <= own + room_l + 1e-9:
+        options.append((left, _clear(others, po, ego, 0.5 * w, 0.5 * w + room_l)))
+    if room_r > 0.0 and -right <= own + room_r + 1e-9:
+        options.append((right, _clear(others, po, ego, -(0.5 * w + room_r), -0.5 * w)))
+    if not options:
+        return None
+    # A free side first, then the smaller move.
+    return min(options, key=lambda o: (not o[1], abs(o[0])))
 
 
-#: Static obstacles closer than this (m) are passed inside the lane when there is room (farther ones wait).
+def _clear(others: list[PathObject], po: PathObject, ego: EgoOnPath, lo: float, hi: float) -> bool:
+    """No other object overlaps the lateral band [lo, hi] between PASS_BEHIND m behind the ego and PASS_RETURN m
+    past the obstacle."""
+    for o in others:
+        if o is po or o.s_max < ego.s - PASS_BEHIND or o.s_min > po.s_max + PASS_RETURN:
+            continue
+        if o.offset + o.half_lat > lo and o.offset - o.half_lat < hi:
+            return False
+    return True
+
+
+#: Static obstacles closer than this (m) are passed when there is room (farther ones are only stopped for).
 PASS_LOOKAHEAD = 60.0
+#: A pass into a neighbour lane needs it free from this far behind the ego (m, for traffic coming up), from this
+#: far before the obstacle (m, to move over) and to this far past it (m, to move back).
+PASS_BEHIND = 30.0
+PASS_PREPARE = 15.0
+PASS_RETURN = 10.0
+#: Waiting to pass, the ego stops this much further back (m) so it can move over when the lane beside is free.
+PASS_SETUP = 8.0
+#: Travel needed per metre of sideways move at a crawl (m/m), and the crawl speed while moving over (m/s).
+PASS_SLOPE = 4.0
+PASS_CRAWL = 1.0
 
 
 def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: LongitudinalParams,
                    bp: BehaviourParams, sp: StopPlan) -> tuple[list[Constraint], float]:
-    """Static (or standing, not-following) objects in the lane: pass within the lane when there is room, else
-    stop before them. Returns the stop constraints and the lateral offset to drive at (0 = lane centre)."""
+    """Static (or standing, not-following) objects in the lane: pass them when there is room, else stop before
+    them. Returns the stop constraints and the lateral offset to drive at (0 = lane centre). While the ego has not
+    yet moved over far enough (its measured offset, not the commanded one: the vehicle lags the command), the stop
+    stays in force, so it slows down rather than clip the obstacle; an obstacle alongside keeps the offset until
+    the ego's rear has passed it."""
     out: list[Constraint] = []
     offset = 0.0
-    ahead = sorted((po for po in objs if po.s_max > ego.s_front - 0.5), key=lambda po: po.s_min)
+    ahead = sorted((po for po in objs if po.s_max > ego.s - 1.0), key=lambda po: po.s_min)
     for po in ahead:
-        moving_lead = (not po.state.is_static and abs(po.rel_heading) <= bp.lead_heading_tolerance
+        moving_lead = (not is_static(po.state) and abs(po.rel_heading) <= bp.lead_heading_tolerance
                        and po.v_along >= 0.3)
         if moving_lead or not in_path(po, ego, offset, bp):
             continue
-        if po.state.is_static and po.s_min - ego.s_front < PASS_LOOKAHEAD:
-            shift = pass_offset(po, ego, line, bp)
-            if shift is not None:
-                offset = shift
+        distance = po.s_min - ego.s_front
+        if is_static(po.state) and distance < PASS_LOOKAHEAD:
+            found = pass_offset(po, ego, line, bp, objs)
+            if found is not None:
+                shift, free = found
+                blocked = in_path(po, ego, ego.offset, bp)        # measured: the vehicle lags the command
+                if free or not blocked:
+                    # Go (or carry on with a pass already under way). Not yet clear: approach at a crawl while
+                    # the remaining sideways move still fits before the object (about PASS_SLOPE m of travel per
+                    # metre sideways), else stop at it.
+                    offset = shift
+                    if blocked and distance > -0.5:
+                        need = lp.stop_margin + PASS_SLOPE * max(abs(shift - ego.offset) - 0.05, 0.0)
+                        if distance > need + 0.5:
+                            a = slow_down_accel(ego.speed, PASS_CRAWL, distance - need, lp, plan_decel=sp.decel,
+                                                lag=sp.lag, cruise=sp.cruise)
+                            out.append(Constraint(Reason.OBSTACLE, a, po.state.name, distance))
+                        else:
+                            out.append(stop_constraint(Reason.OBSTACLE, distance, ego, lp, sp, po.state.name))
+                else:
+                    # Lane beside busy: line up inside the own lane and wait PASS_SETUP m short of the object,
+                    # leaving room to move over once it is free.
+                    own = 0.5 * line.width_at(po.s_min) - ego.half_width
+                    offset = max(-own, min(own, shift))
+                    wait_at = distance - PASS_SETUP if distance - PASS_SETUP > lp.stop_margin else distance
+                    if distance > -0.5:
+                        out.append(stop_constraint(Reason.OBSTACLE, wait_at, ego, lp, sp, po.state.name))
                 continue
-        out.append(stop_constraint(Reason.OBSTACLE, po.s_min - ego.s_front, ego, lp, sp, po.state.name))
-        break
+        if distance > -0.5:
+            out.append(stop_constraint(Reason.OBSTACLE, distance, ego, lp, sp, po.state.name))
+            break
     return out, offset
 
 
@@ -201,7 +270,7 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
     out: list[Constraint] = []
     for po in objs:
         o = po.state
-        if o.is_static or o.speed < 0.3:
+        if is_static(o) or o.speed < 0.3:
             continue
         if in_path(po, ego, 0.0, bp) and abs(po.rel_heading) <= bp.lead_heading_tolerance:
             continue                                     # a lead or a follower: IDM's business, not a crossing

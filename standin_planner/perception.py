@@ -20,6 +20,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Frame
 
+from .behaviour import is_static
 from .faults import CYCLIST_CATEGORIES, Faults
 from .params import FaultParams, PerceptionParams
 
@@ -60,14 +61,14 @@ class Perception:
         dx = float(self._rng.normal(0.0, pn)) if pn > 0 else 0.0
         dy = float(self._rng.normal(0.0, pn)) if pn > 0 else 0.0
         # A static object's speed is known to be zero (the tracker classifies it as static).
-        dv = float(self._rng.normal(0.0, sn)) if sn > 0 and not o.is_static else 0.0
+        dv = float(self._rng.normal(0.0, sn)) if sn > 0 and not is_static(o) else 0.0
         return dataclasses.replace(o, x=o.x + dx, y=o.y + dy, speed=o.speed + dv)
 
 
 def _predict(o: EntityState, t: float) -> EntityState:
     """The state `o` predicted to time t at constant speed and heading."""
     dt = t - o.t
-    if dt <= 0.0 or o.is_static:
+    if dt <= 0.0 or is_static(o):
         return o
     return dataclasses.replace(o, t=t, x=o.x + o.speed * dt * math.cos(o.heading),
                                y=o.y + o.speed * dt * math.sin(o.heading))

@@ -15,7 +15,7 @@ from txt2sce_ros.errors import InputError
 from txt2sce_ros.road import RoadNetwork
 
 from .behaviour import (Constraint, EgoOnPath, PathObject, Reason, StopPlan, lead_constraint, measure,
-                        obstacle_rules, signal_constraints, start_clear, yield_constraints)
+                        is_static, obstacle_rules, signal_constraints, start_clear, yield_constraints)
 from .faults import Faults
 from .idm import braking_decel, free_road_accel, slow_down_accel, stop_accel
 from .params import PlannerParams
@@ -195,7 +195,7 @@ class Planner:
     def _npc_close(self, measured: list[PathObject], me: EgoOnPath) -> bool:
         radius = self.params.faults.close_start_radius
         for po in measured:
-            if po.state.is_static:
+            if is_static(po.state):
                 continue
             ahead = po.s_min - me.s_front
             behind = me.s - po.s_max

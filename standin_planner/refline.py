@@ -28,7 +28,8 @@ class RefLine:
     (`in_junction`, `lane_width`) that the behaviour layer needs."""
 
     def __init__(self, xy: np.ndarray, *, in_junction: np.ndarray | None = None,
-                 lane_width: np.ndarray | None = None, lanes: tuple = ()) -> None:
+                 lane_width: np.ndarray | None = None, room_left: np.ndarray | None = None,
+                 room_right: np.ndarray | None = None, lanes: tuple = ()) -> None:
         xy = np.asarray(xy, dtype=float)
         if xy.ndim != 2 or xy.shape[1] != 2 or len(xy) < 2:
             raise ValueError("a reference line needs at least two (x, y) points")
@@ -40,6 +41,9 @@ class RefLine:
         self.in_junction = (np.zeros(n, dtype=bool) if in_junction is None
                             else np.asarray(in_junction, dtype=bool)[keep])
         self.lane_width = (np.full(n, 3.5) if lane_width is None else np.asarray(lane_width, dtype=float)[keep])
+        # Width of the same-direction driving lane beside the route's lane on each side (0: none there).
+        self.room_left = np.zeros(n) if room_left is None else np.asarray(room_left, dtype=float)[keep]
+        self.room_right = np.zeros(n) if room_right is None else np.asarray(room_right, dtype=float)[keep]
         self.lanes = lanes
         seg = np.diff(self.xy, axis=0)
         seg_len = np.hypot(seg[:, 0], seg[:, 1])
@@ -89,6 +93,13 @@ class RefLine:
 
     def width_at(self, s: float) -> float:
         return float(np.interp(s, self.s, self.lane_width))
+
+    def neighbour_room(self, s0: float, s1: float) -> tuple[float, float]:
+        """Narrowest same-direction neighbour lane width (left, right) over [s0, s1] (0 where there is none)."""
+        mask = (self.s >= s0) & (self.s <= s1)
+        if not mask.any():
+            return float(np.interp(s0, self.s, self.room_left)), float(np.interp(s0, self.s, self.room_right))
+        return float(self.room_left[mask].min()), float(self.room_right[mask].min())
 
     def junction_at(self, s: float) -> bool:
         return bool(self.in_junction[min(self._index(s) + 1, len(self.s) - 1)])

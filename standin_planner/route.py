@@ -64,6 +64,19 @@ def _lane_points(net: RoadNetwork, ref: LaneRef) -> tuple[np.ndarray, bool, np.n
     return pts, road.junction not in ("-1", ""), widths
 
 
+def _neighbour_widths(net: RoadNetwork, ref: LaneRef, road_s: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Widths of the same-direction driving lanes left and right of `ref` along its samples (0 where none):
+    the room an obstacle may be passed in."""
+    out = []
+    for side in ("left", "right"):
+        other = net.neighbour(ref, side)
+        if other is None or net.lane_type(other.road_id, other.lane_id, float(road_s[0])) != "driving":
+            out.append(np.zeros(len(road_s)))
+        else:
+            out.append(np.array([net.lane_width(other.road_id, other.lane_id, float(s)) for s in road_s]))
+    return out[0], out[1]
+
+
 def _extend(net: RoadNetwork, last: LaneRef, length: float) -> list[LaneRef]:
     """Lanes after the goal lane (first successor each time) covering about `length` metres."""
     out: list[LaneRef] = []
@@ -101,7 +114,7 @@ def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str], *,
     s) are blended: the line leaves the first `LANE_CHANGE_START` m after the ego (or after the section start)
     and reaches the last over `LANE_CHANGE_LENGTH` m per lane crossed. Returns the line and, per lane, the
     (start, end) arc length of the stretch it belongs to."""
-    xy_parts, junction_parts, width_parts, group_of = [], [], [], {}
+    xy_parts, junction_parts, width_parts, left_parts, right_parts, group_of = [], [], [], [], [], {}
     for g, idx in enumerate(_groups(lanes, kinds)):
         src, junction, _ = _lane_points(net, lanes[idx[0]])
         dst, _, widths = _lane_points(net, lanes[idx[-1]])
@@ -118,6 +131,9 @@ def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str], *,
         xy_parts.append(xy)
         junction_parts.append(np.full(len(xy), junction))
         width_parts.append(widths)
+        room_l, room_r = _neighbour_widths(net, lanes[idx[-1]], dst[:, 2])
+        left_parts.append(room_l)
+        right_parts.append(room_r)
         for i in idx:
             group_of[i] = g
     xy = np.vstack(xy_parts)
@@ -126,7 +142,7 @@ def build_line(net: RoadNetwork, lanes: list[LaneRef], kinds: list[str], *,
     bounds = np.cumsum([0] + [len(p) for p in xy_parts])
     spans = [(float(s[bounds[group_of[i]]]), float(s[bounds[group_of[i] + 1] - 1])) for i in range(len(lanes))]
     line = RefLine(xy, in_junction=np.concatenate(junction_parts), lane_width=np.concatenate(width_parts),
-                   lanes=tuple(lanes))
+                   room_left=np.concatenate(left_parts), room_right=np.concatenate(right_parts), lanes=tuple(lanes))
     return line, spans
 
 
@@ -196,7 +212,8 @@ def _trim(line: RefLine, s0: float, s1: float) -> tuple[RefLine, float]:
         return line, 0.0
     lo, hi = max(idx[0] - 1, 0), min(idx[-1] + 2, len(line.s))
     return RefLine(line.xy[lo:hi], in_junction=line.in_junction[lo:hi], lane_width=line.lane_width[lo:hi],
-                   lanes=line.lanes), float(line.s[lo])
+                   room_left=line.room_left[lo:hi], room_right=line.room_right[lo:hi], lanes=line.lanes), \
+        float(line.s[lo])
 
 
 def off_route(line: RefLine, x: float, y: float, heading: float, s_hint: float, max_offset: float) -> bool:

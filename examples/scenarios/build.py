@@ -324,6 +324,9 @@ SCENARIOS: tuple[Scenario, ...] = (
              note="T junction: turn from the minor road."),
     Scenario("benign_roundabout", "roundabout.xodr", Lane("1", -1, 30.0), Lane("3", 1, 100.0),
              note="Through a single-lane roundabout, leaving at the second exit."),
+    Scenario("benign_parked_car", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -1, 250.0), ego_speed=8.0,
+             npcs=(Npc("obs1", "parked_vehicle", Lane("1", -1, 120.0)),),
+             note="A parked car blocks the ego's lane; the lane to the right is free: pass it there."),
     Scenario("benign_wet_straight", "straight_3x3.xodr", Lane("1", -1, 20.0), Lane("1", -1, 250.0), friction=0.4,
              weather="rain", note="Wet road (friction 0.4): start and stop without slipping."),
     # --- one scenario per fault mode ------------------------------------------------------------------------------
