@@ -21,6 +21,7 @@ import cProfile
 import json
 import os
 import pstats
+import resource
 import shutil
 import tempfile
 import time
@@ -47,6 +48,12 @@ def _grow_trees(seed_dir: Path, out: Path, target: int, seed: int) -> tuple[int,
             total += r.nodes
             trees += 1
     return trees, total
+
+
+def _cpu() -> float:
+    """CPU seconds used so far by this process and its finished children (pool workers, once the pool closed)."""
+    me, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return me.ru_utime + me.ru_stime + kids.ru_utime + kids.ru_stime
 
 
 def _rate(n: int, seconds: float) -> str:
@@ -102,8 +109,10 @@ def run(args: argparse.Namespace) -> int:
         t_trees = time.perf_counter()
         tasks = make_tasks([tmp / "trees"], seed=args.seed)
         with ResultStore(tmp / "results.sqlite") as store:
+            cpu0 = _cpu()
             summary = run_all(tasks, store, executor="pool", workers=workers, progress=True)
             t_runs = time.perf_counter()
+            cpu_runs = _cpu() - cpu0
             report_from_store(store, [tmp / "trees"], tmp / "report", tasks=tasks)
         t_end = time.perf_counter()
         runs_s = t_runs - t_trees
@@ -113,6 +122,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"  closed loop  {runs_s:7.1f} s  ({summary.ran} runs, pool x{workers}: {_rate(summary.ran, runs_s)}; "
               f"verdicts {dict(sorted(summary.verdicts.items()))})")
         print(f"  report       {t_end - t_runs:7.1f} s")
+        # The machine is shared: CPU seconds say what the same work costs on {workers} idle cores.
+        print(f"  closed loop CPU time {cpu_runs:.1f} s -> on {workers} idle cores about {cpu_runs / workers:.0f} s "
+              f"({summary.ran * workers / cpu_runs:.2f} scenarios/s); mean load average over the run: see below")
         print(f"  end to end   {t_end - t_start:7.1f} s = {(t_end - t_start) / 60:.1f} min "
               f"({_rate(len(tasks), t_end - t_start)}; goal <= 10 min)")
 
@@ -151,7 +163,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {pkg}")
             for name, tottime, ncalls in rows:
                 print(f"    {tottime:6.2f} s  {ncalls:>8} calls  {name}")
-        print(f"\nload average at end: {os.getloadavg()[0]:.1f}")
+        print(f"\nload average at end: {os.getloadavg()[0]:.1f} (1 min), {os.getloadavg()[2]:.1f} (15 min)")
     finally:
         if not getattr(args, "keep", False):
             shutil.rmtree(tmp, ignore_errors=True)
