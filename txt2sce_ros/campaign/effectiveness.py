@@ -138,11 +138,15 @@ def run_study(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[Effectiven
                          source=str(inputs[0]))
     seed_dir = Path(inputs[0])
     manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
-    chosen = pick_seeds([seed_dir / e["file"] for e in manifest["built"]], cfg.seeds)
     picked = cfg.out / "picked_seeds"
-    picked.mkdir(exist_ok=True)
-    (picked / "manifest.json").write_text(json.dumps(
-        {"built": [{"file": str(p.resolve())} for p in chosen], "refused": []}, indent=1), encoding="utf-8")
+    if (picked / "manifest.json").is_file():
+        # resuming: the seeds the trees were grown from, whatever a changed feature reader would pick now
+        chosen = [Path(e["file"]) for e in json.loads((picked / "manifest.json").read_text(encoding="utf-8"))["built"]]
+    else:
+        chosen = pick_seeds([seed_dir / e["file"] for e in manifest["built"]], cfg.seeds)
+        picked.mkdir(exist_ok=True)
+        (picked / "manifest.json").write_text(json.dumps(
+            {"built": [{"file": str(p.resolve())} for p in chosen], "refused": []}, indent=1), encoding="utf-8")
     tree_dir = tree_stage(picked, ccfg)
 
     by_config: dict[str, list[Any]] = {}
