@@ -55,6 +55,8 @@ def _junction_score(c: RoadConstraints, s: JunctionSite) -> tuple[int, list[str]
         relaxed.append(f"layout {want_kind} -> {s.kind}")
     elif not want_kind:
         relaxed.append(f"layout {c.layout} -> junction ({s.kind}) for the reported turn/positions")
+        if s.kind == "roundabout":
+            relaxed.append("a roundabout is the least like a driveway or mid-block turn")
     if c.control == "signal" and not s.signalised:
         relaxed.append("control signal -> unsignalised")
     if c.control == "stop_sign" and not s.ego.stop_sign:
