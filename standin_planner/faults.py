@@ -6,18 +6,19 @@ against known ground truth. What each should trigger (the oracle category in bra
 - `ignore_cyclists`: bicycles and scooters are dropped from the object list before planning, so the planner
   neither follows nor yields to them -> it rear-ends or hits a cyclist in its path [Collisions].
 - `late_braking_low_friction`: a braking model tuned on dry roads: planned stops (stop lines, obstacles, yield
-  points) start only when `late_brake_decel` (5 m/s²) is needed and then brake hard, and following gaps get no
-  low-friction margin, whatever the road friction. The player caps deceleration at friction·g, so on wet / icy
-  roads (friction·g < 5 m/s²) the ego overruns -> it hits the obstacle or stopped vehicle [Collisions] or stops
-  past a red stop line [Misinterp]. On a dry road the stops succeed but are abrupt [Smooth].
+  points) start only when `late_brake_decel` (6.5 m/s²) is needed and then brake hard, and following gaps get no
+  low-friction margin, whatever the road friction. The player caps deceleration at friction·g, so on slippery
+  roads (friction below ~0.66: rain, snow, most fog) the ego overruns -> it hits the obstacle or stopped vehicle
+  [Collisions] or stops past a red stop line [Misinterp]. On a dry road the stops succeed but are abrupt [Smooth].
 - `no_start_when_close`: at standstill, refuses to start while any NPC is within `close_start_radius` metres ahead
   or behind (even when the path is clear) -> the ego never moves [StartFail] (paper: 91.5 % of start failures had
   an NPC placed in front of or behind Autoware).
-- `stale_tracking`: object states reach the planner `stale_tracking_delay` seconds late (no prediction to the
-  present), so a braking lead is noticed late -> rear-end collisions [Collisions].
+- `stale_tracking`: object states reach the planner `stale_tracking_delay` seconds late and are predicted to the
+  present at constant velocity, so a lead that brakes or cuts in is seen late (still where it would have been)
+  -> rear-end collisions [Collisions].
 - `aggressive_start`: from standstill, commands high throttle (`aggressive_start_accel`) with a large steering yaw
-  rate; the player models wheel slip when commanded acceleration exceeds friction·g -> on low friction the ego
-  spins its wheels and does not move [StartFail]; on dry roads it starts with a jolt [Smooth].
+  rate; the player models wheel slip when the traction demand exceeds friction·g -> on low friction (below ~0.71)
+  the ego spins its wheels and does not move [StartFail]; on dry roads it starts with a jolt [Smooth].
 - `red_light_misread`: a yellow signal is read as green, so the planner does not stop at yellow when it could
   -> it enters the junction after the signal turned red [Misinterp].
 """

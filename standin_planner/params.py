@@ -88,11 +88,11 @@ class FaultParams:
 
     stale_tracking_delay: float = 1.0
     close_start_radius: float = 6.0
-    aggressive_start_accel: float = 6.0
+    aggressive_start_accel: float = 7.0
     aggressive_start_yaw_rate: float = 0.5
     aggressive_start_speed: float = 3.0
     dry_friction: float = 1.0
-    late_brake_decel: float = 5.0
+    late_brake_decel: float = 6.5
 
 
 _T = TypeVar("_T")
