@@ -39,6 +39,15 @@ def test_seed_directory_campaign_writes_the_report(seed_dir: Path, tmp_path: Pat
     for f in figs:
         assert (out / "report" / f).read_bytes().startswith(PNG_MAGIC)
 
+    # every Markdown table row has its header's column count (no stray '|' in a cell)
+    table: list[str] = []
+    for line in md.splitlines() + [""]:
+        if line.startswith("|"):
+            table.append(line)
+        elif table:
+            assert len({row.count("|") for row in table}) == 1, table
+            table = []
+
     page = (out / "report" / "report.html").read_text(encoding="utf-8")
     uris = re.findall(r'src="data:image/png;base64,([^"]+)"', page)
     assert len(uris) == len(figs)                       # every image inlined, none linked

@@ -70,10 +70,11 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
     if "categories" in images:
         parts += ["", f"![categories]({images['categories']})"]
     parts += ["", "## Trigger conditions by lift", "",
-              "lift = P(category | element) / P(category); support = runs with both."]
+              "lift = P(category given element) / P(category); confidence = P(category given element); "
+              "support = runs with both."]
     for cat, rows in an.lift.items():
         parts += ["", f"### {cat}", ""]
-        parts.append(_md_table(["element", "lift", "support", "runs with element", "P(cat | element)"],
+        parts.append(_md_table(["element", "lift", "support", "runs with element", "confidence"],
                                [(r.element, f"{r.lift:.2f}", r.support, r.with_element, f"{r.confidence:.2f}")
                                 for r in rows[:10]]))
     if "lift" in images:
