@@ -2,23 +2,24 @@
 /oracle/violations (diagnostic_msgs/DiagnosticArray), and records each run to its own rosbag2 MCAP directory.
 
 Parameters:
-- `bag_dir` (string, default ""): where runs are recorded, one directory `<NNN>_<scenario id>` per run, plus
-  `verdicts.jsonl` (one RunVerdict per line); "" records nothing.
+- `bag_dir` (string, default ""): where the runs are recorded: one rosbag2 directory `monitor_<NNN>` per monitor
+  process holding every run it saw, in arrival order, plus `verdicts.jsonl` (one RunVerdict per line with the bag
+  and the run's index in it); "" records nothing. One bag rather than one per run: a monitor that falls behind
+  receives the next run's first messages before the last ones of the current run, so cutting the stream per run
+  would put messages in the wrong bag; one stream re-judged offline gives the live verdicts exactly.
 - `config` (string, default ""): oracle thresholds YAML (default `config/oracle.yaml`).
 - `flush_interval` (double, default 0.5): seconds between flushes of the recording to disk.
 
 Thin adapter: subscriptions take the serialized bytes (`raw=True`), which are recorded unchanged and decoded with
 the same `cdr.decode` the offline judge uses, then handed to the `JudgeSession` the offline judge uses —
-so `txt2sce judge` on the recording reproduces the live verdict. On SIGINT/SIGTERM a run still open is judged as
+so `txt2sce judge` on the recording reproduces the live verdicts. On SIGINT/SIGTERM a run still open is judged as
 incomplete, its verdict recorded and the bag closed (metadata.yaml written); a kill -9 leaves the flushed prefix.
 """
 
 from __future__ import annotations
 
 import json
-import re
 import sys
-import time
 from pathlib import Path
 
 import rclpy
@@ -29,7 +30,6 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.serialization import serialize_message
 
 from txt2sce_ros import contract as c
-from txt2sce_ros.contract import RunStatus
 from txt2sce_ros.errors import Txt2SceError
 
 from .cdr import decode
@@ -43,7 +43,6 @@ from .topics import TOPIC_TYPES
 
 SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 STREAM_QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE)
-PENDING_LIMIT = 10_000       # messages held while a run has no name yet; beyond it the bag opens as "run"
 
 
 class OracleMonitorNode(Node):
@@ -62,8 +61,7 @@ class OracleMonitorNode(Node):
                                     on_verdict=self._on_verdict)
         self.typestore = typestore()
         self.recorder: BagRecorder | None = None
-        self._pending: list[tuple[str, bytes, int]] = []
-        self.runs = 0
+        self.verdict_count = 0
         self.pub = self.create_publisher(DiagnosticArray, c.TOPIC_VIOLATIONS, STREAM_QOS)
         for topic in c.CONTRACT_TOPICS:
             qos = SCENARIO_QOS if topic == c.TOPIC_SCENARIO else STREAM_QOS
@@ -81,42 +79,24 @@ class OracleMonitorNode(Node):
             msg = decode(data, TOPIC_TYPES[topic], self.typestore)
         except Exception as exc:          # a malformed message must not stop the monitor
             self.get_logger().error(f"undecodable message on {topic}: {exc}")
+            self._record(topic, data)     # kept: the offline judge meets (and skips) it the same way
             return
+        # Recorded before it is judged, in arrival order: the offline judge replays exactly this sequence.
+        self._record(topic, data)
         try:
-            # Messages that may open the next run (a scenario, a goal, a 'started' status) go to the session first:
-            # if they close the previous run (unfinished, or its final status held for late frames), its bag is
-            # closed before they are recorded, so they land in the next run's bag.
-            starts = topic in (c.TOPIC_SCENARIO, c.TOPIC_GOAL) or (
-                topic == c.TOPIC_RUN_STATUS and RunStatus.from_json(msg.data).state == "started")
-            if starts:
-                self.session.on_message(topic, msg)
-                self._record(topic, data)
-            else:
-                self._record(topic, data)
-                self.session.on_message(topic, msg)
+            self.session.on_message(topic, msg)
         except (Txt2SceError, ValueError, KeyError, TypeError) as exc:
             self.get_logger().error(f"bad message on {topic}: {exc}")
 
-    def _record(self, topic: str, data: bytes, *, force: bool = False) -> None:
+    def _record(self, topic: str, data: bytes) -> None:
         if self.bag_dir is None:
             return
         if self.recorder is None:
-            run = self.session.run
-            sid = run.scenario_id if run and run.scenario_id else ""
-            if not sid and not force and len(self._pending) < PENDING_LIMIT:
-                # DDS does not order topics against each other: a run's goal or clock may arrive before its
-                # scenario. Hold them (with their receive times) until the run's name is known.
-                self._pending.append((topic, data, time.time_ns()))
-                return
-            self.runs += 1
-            path = self.bag_dir / f"{self.runs:03d}_{re.sub(r'[^A-Za-z0-9_.-]+', '_', sid or 'run')}"
-            while path.exists():
-                path = path.with_name(path.name + "_")
-            self.recorder = BagRecorder(path, flush_interval=self.flush_interval)
-            self.get_logger().info(f"recording {path}")
-            for p_topic, p_data, p_ns in self._pending:
-                self.recorder.write(p_topic, p_data, log_time_ns=p_ns)
-            self._pending.clear()
+            n = 1
+            while (self.bag_dir / f"monitor_{n:03d}").exists():
+                n += 1
+            self.recorder = BagRecorder(self.bag_dir / f"monitor_{n:03d}", flush_interval=self.flush_interval)
+            self.get_logger().info(f"recording {self.recorder.path}")
         self.recorder.write(topic, data)
 
     def _on_violations(self, t: float, violations: list[Violation]) -> None:
@@ -133,25 +113,23 @@ class OracleMonitorNode(Node):
         self.get_logger().info(f"{verdict.scenario_id or 'run'}: {verdict.summary()}")
         if self.bag_dir is None:
             return
-        self._record(c.TOPIC_VIOLATIONS, serialize_message(msg), force=True)
-        path = self.recorder.path if self.recorder else None
-        self._close_bag()
+        self._record(c.TOPIC_VIOLATIONS, serialize_message(msg))
+        self.recorder.flush()             # the verdict is on disk even if the process is killed next
+        self.verdict_count += 1
         with open(self.bag_dir / "verdicts.jsonl", "a", encoding="utf-8") as fh:
-            fh.write(json.dumps({"bag": str(path), **verdict.to_dict()}, sort_keys=True) + "\n")
+            fh.write(json.dumps({"bag": str(self.recorder.path), "run": self.verdict_count, **verdict.to_dict()},
+                                sort_keys=True) + "\n")
 
     def _flush(self) -> None:
         if self.recorder is not None:
             self.recorder.flush()
 
-    def _close_bag(self) -> None:
+    def shutdown(self) -> None:
+        """Judge the runs still open (as incomplete if they never ended) and finalise the recording."""
+        self.session.close()
         if self.recorder is not None:
             self.recorder.close()
             self.recorder = None
-
-    def shutdown(self) -> None:
-        """Judge a run still open as incomplete and finalise its recording."""
-        self.session.close()
-        self._close_bag()
 
 
 def main(args: list[str] | None = None) -> int:

@@ -42,6 +42,11 @@ class Oracle:
         self._finished: RunVerdict | None = None
         self._end_reason = ""
 
+    def set_network(self, network: Any | None) -> None:
+        """The road network arrived after the first frame (its scenario came late)."""
+        self.network = network
+        self.smart.network = network
+
     def set_goal(self, goal: Goal) -> None:
         """The goal arrived after the first frame (topics are not ordered across each other)."""
         self.goal = goal

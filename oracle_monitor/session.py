@@ -2,9 +2,15 @@
 share, so a recording re-judged offline gives the verdict the live run gave.
 
 A run starts with a scenario envelope on `/txt2sce/scenario` (or a `started` run status, or the first frame when a
-bag has neither) and ends with a `finished` run status; a new envelope before that ends the previous run as
-incomplete. A `finished` status that overtakes the run's last frames (topics are not ordered against each other)
-is held until a frame reaches its time, the next run starts, or the input ends. Messages may be rclpy messages (live) or rosbags-decoded ones (offline): the `ros_io` conversions only
+bag has neither) and ends with a `finished` run status; a different scenario, or frames whose time goes back
+(each run's clock restarts), before that end the previous run as incomplete.
+
+Topics are not ordered against each other, and a monitor that falls behind receives each topic's backlog in its
+own order: the player's `finished` status and the next run's scenario, status and goal may overtake the last
+frames of a run. So a `finished` status ahead of the frames is held until a frame reaches its time; meanwhile the
+next run's start messages wait, and its frame messages (recognised by a topic's stamps going back) are
+assembled apart.
+The node records messages in arrival order and the offline judge replays that order, so both decide alike. Messages may be rclpy messages (live) or rosbags-decoded ones (offline): the `ros_io` conversions only
 read attributes, which both kinds share.
 """
 
@@ -17,11 +23,27 @@ from typing import Any, Callable
 from txt2sce_ros import contract as c
 from txt2sce_ros.contract import Goal, RunStatus, ScenarioEnvelope
 from txt2sce_ros.errors import Txt2SceError
-from txt2sce_ros.ros_io import FrameAssembler, pose_to_goal
+from txt2sce_ros.ros_io import FrameAssembler, pose_to_goal, stamp_key
 
 from .oracle import Oracle
 from .params import OracleParams
 from .records import RunVerdict, Violation
+
+
+#: Frames of the next run collected before the current run, still without its final status, is closed as
+#: incomplete (a bag recorded without run statuses, a player that died between runs).
+NEXT_RUN_PATIENCE = 40
+
+_FRAME_TOPICS = frozenset({c.TOPIC_EGO_ODOM, c.TOPIC_OBJECTS_ODOM, c.TOPIC_OBJECTS_MARKERS, c.TOPIC_TRAFFIC_LIGHTS})
+
+
+def _stamp_key(topic: str, msg: Any) -> int | None:
+    """Integer nanoseconds of a frame message's stamp (a MarkerArray's first marker's), None if it has none."""
+    if topic == c.TOPIC_OBJECTS_MARKERS:
+        if not msg.markers:
+            return None
+        return stamp_key(msg.markers[0].header.stamp)
+    return stamp_key(msg.header.stamp)
 
 
 @dataclass
@@ -69,73 +91,147 @@ class JudgeSession:
         self.run: RunState | None = None
         self.verdicts: list[RunVerdict] = []
         self.frames_seen = 0
-        self._pending: RunStatus | None = None
+        self._pending: RunStatus | None = None             # a final status held for the run's last frames
+        self._deferred: list[tuple[str, Any]] = []          # the next run's scenario / status / goal messages
+        self._next: FrameAssembler | None = None            # ... and its frame messages, assembled apart
+        self._next_frames: list[Any] = []
+        self._gen = 0                                       # generation of the current run
+        self._used = False                                  # whether the current run got a frame message
+        self._topic_gen: dict[str, int] = {}                # each frame topic's generation and latest stamp
+        self._topic_key: dict[str, int] = {}
+        self.dropped = 0                                    # late messages of finished runs
 
     # --- dispatch ------------------------------------------------------------------------------------------------
 
     def on_message(self, topic: str, msg: Any) -> None:
+        if topic in _FRAME_TOPICS:
+            self._frame_message(topic, msg)
+            return
+        if topic == c.TOPIC_RUN_STATUS:
+            status = RunStatus.from_json(msg.data)
+            if self._belongs_to_next(status.scenario_id):
+                self._deferred.append((topic, msg))
+            elif status.state != "finished":
+                self._start(None, status.scenario_id)
+            elif self.run is not None:
+                t_last = self.run.oracle.t_last if self.run.oracle is not None else None
+                if status.t > 1e-6 and (t_last is None or t_last < status.t - 1e-6):
+                    # The last frames are still on their way: hold the status until a frame reaches its time, a
+                    # topic's stamps going back show that the next run began, or the input ends.
+                    self._pending = status
+                else:
+                    self._end_run(status)
+        elif topic == c.TOPIC_SCENARIO:
+            envelope = ScenarioEnvelope.from_json(msg.data)
+            if self._belongs_to_next(envelope.id):
+                self._deferred.append((topic, msg))
+            else:
+                self._start(envelope)
+        elif topic == c.TOPIC_GOAL:
+            # A second goal while the run has one (and frames) is the next run's, ahead of its scenario.
+            run = self.run
+            if self._pending is not None or self._deferred or (
+                    run is not None and run.goal is not None and run.oracle is not None):
+                self._deferred.append((topic, msg))
+            else:
+                goal = pose_to_goal(msg)
+                run = self._ensure_run()
+                run.goal = goal
+                if run.oracle is not None:
+                    run.oracle.set_goal(goal)
+
+    def _belongs_to_next(self, scenario_id: str) -> bool:
+        """Whether a scenario / status message is about a run after the current one: the current one's final
+        status is held, messages for later runs already wait, or it names another scenario than the current."""
+        run = self.run
+        known = (run.envelope.id if run.envelope is not None else run.scenario_id) if run is not None else ""
+        if known and scenario_id == known:
+            return False
+        if self._pending is not None or self._deferred:
+            return True
+        # A run that has seen no frame yet may be a leftover (a scenario that never ran): let the next replace it.
+        return bool(known) and bool(scenario_id) and run is not None and run.oracle is not None
+
+    def _frame_message(self, topic: str, msg: Any) -> None:
+        """Route a frame message to the current run, the next one, or nowhere (a late one of a finished run).
+
+        Each topic's stamps only grow within a run and restart with the next (the player's clock restarts), and
+        each topic is delivered in order: so a topic whose stamps go back has moved on to the next run. Runs and
+        topics carry generation numbers: run g takes the messages of generation g on every topic."""
+        key = _stamp_key(topic, msg)
+        gen, last = self._topic_gen.get(topic), self._topic_key.get(topic)
+        if gen is None or gen < self._gen - 1:
+            # First use of this topic in a while: it belongs to the run now under way on the other topics.
+            next_begun = any(g > self._gen for g in self._topic_gen.values())
+            gen = self._gen + 1 if next_begun else self._gen
+        elif key is not None and last is not None and key < last:
+            gen += 1
+        self._topic_gen[topic] = gen
+        if key is not None:
+            self._topic_key[topic] = key
+        if gen < self._gen:
+            self.dropped += 1                      # a finished run's late message (e.g. its last lights)
+            return
+        if gen == self._gen:
+            self._used = True
+            self._feed(self.assembler, topic, msg, self._frame)
+            return
+        # The next run's. Kept apart until the current run ends: by its final status (usually just behind), or —
+        # when none comes within NEXT_RUN_PATIENCE frames of the next run — as a run that never reported its end.
+        if self._next is None:
+            self._next = FrameAssembler()
+        self._feed(self._next, topic, msg, self._next_frames.append)
+        if self._pending is None and len(self._next_frames) > NEXT_RUN_PATIENCE:
+            self._end_run(None)
+
+    @staticmethod
+    def _feed(asm: FrameAssembler, topic: str, msg: Any, sink: Callable[[Any], None]) -> None:
         if topic == c.TOPIC_EGO_ODOM:
             # The ego is whoever /sim/ego/odom names (a scenario's own "Ego", "hero", ...), not a fixed name.
-            if msg.child_frame_id != self.assembler.ego_name:
-                self.assembler.ego_name = msg.child_frame_id
-            self._frame(self.assembler.add_odometry(msg))
+            if msg.child_frame_id != asm.ego_name:
+                asm.ego_name = msg.child_frame_id
+            frame = asm.add_odometry(msg)
         elif topic == c.TOPIC_OBJECTS_ODOM:
-            self._frame(self.assembler.add_odometry(msg))
+            frame = asm.add_odometry(msg)
         elif topic == c.TOPIC_OBJECTS_MARKERS:
-            self._frame(self.assembler.add_markers(msg))
-        elif topic == c.TOPIC_TRAFFIC_LIGHTS:
-            self.assembler.add_lights(msg)
-        elif topic == c.TOPIC_GOAL:
-            goal = pose_to_goal(msg)
-            self._settle()                        # a goal after a finished status is the next run's
-            run = self._ensure_run()
-            run.goal = goal
-            if run.oracle is not None:
-                run.oracle.set_goal(goal)
-        elif topic == c.TOPIC_SCENARIO:
-            self._start(ScenarioEnvelope.from_json(msg.data))
-        elif topic == c.TOPIC_RUN_STATUS:
-            status = RunStatus.from_json(msg.data)
-            if status.state == "finished":
-                if self.run is not None:
-                    oracle = self.run.oracle
-                    if oracle is not None and oracle.t_last < status.t - 1e-6:
-                        # DDS does not order topics against each other: the last frames may still be on their
-                        # way. Hold the status until a frame reaches its time, the next run starts, or input ends.
-                        self._pending = status
-                    else:
-                        self.finish(status)
-            else:
-                self._settle()
-                if self.run is None or (self.run.oracle is not None and self.run.oracle.frames):
-                    self._start(None, status.scenario_id)
-
-    def _settle(self) -> None:
-        """Finish the run whose final status is being held (see TOPIC_RUN_STATUS)."""
-        if self._pending is not None:
-            self.finish(self._pending)
+            frame = asm.add_markers(msg)
+        else:
+            asm.add_lights(msg)
+            frame = None
+        if frame is not None:
+            sink(frame)
 
     def _start(self, envelope: ScenarioEnvelope | None, scenario_id: str = "") -> None:
+        """A scenario envelope or a 'started' status for the current run, or one after a run without frames.
+
+        A run that has no scenario yet (its goal, status or first frames came before the generator's envelope)
+        adopts the one that arrives."""
+        sid = envelope.id if envelope is not None else scenario_id
         run = self.run
-        if self._pending is not None and not (envelope is not None and run is not None and run.envelope is not None
-                                              and run.envelope.id == envelope.id):
-            self._settle()
-            run = self.run
-        if run is not None and envelope is not None and run.envelope is not None and run.envelope.id == envelope.id:
-            return                                # the same envelope delivered again (transient-local history)
-        # A run that has not seen a frame nor an envelope yet (only its goal or its 'started' status) is this one.
-        if run is not None and (run.oracle is not None or (run.envelope is not None and envelope is not None)):
-            self.finish(None)                     # the previous run never reported its end
-            run = None
-        run = run or RunState()
+        if run is not None:
+            known = run.envelope.id if run.envelope is not None else run.scenario_id
+            if known and sid and known != sid:
+                self._end_run(None)               # a scenario that never produced a frame
+                return self._start(envelope, scenario_id) if self.run is None else None
+            if envelope is not None and run.envelope is not None:
+                return None                       # the same envelope again (transient-local history)
+        if run is None:
+            # No reset of the assembler here: `finish` cleared it, and what it holds now (parts of a first frame
+            # that came before its scenario) is this run's.
+            run = RunState()
         if envelope is not None:
             run.envelope = envelope
             run.network, why = network_for(envelope)
             if why:
                 run.notes.append(why)
-        run.scenario_id = envelope.id if envelope else (scenario_id or run.scenario_id)
+            if run.oracle is not None:
+                run.oracle.set_network(run.network)
+        if sid:
+            run.scenario_id = sid
+            if run.oracle is not None:
+                run.oracle.scenario_id = sid
         self.run = run
-        self.assembler.reset()
+        return None
 
     def _ensure_run(self) -> RunState:
         if self.run is None:
@@ -143,8 +239,6 @@ class JudgeSession:
         return self.run
 
     def _frame(self, frame: Any) -> None:
-        if frame is None:
-            return
         run = self._ensure_run()
         if run.oracle is None:
             run.oracle = Oracle(run.network, run.goal, self.params, scenario_id=run.scenario_id)
@@ -153,9 +247,23 @@ class JudgeSession:
         if new and self.on_violations:
             self.on_violations(frame.t, new)
         if self._pending is not None and frame.t >= self._pending.t - 1e-6:
-            self._settle()
+            self._end_run(self._pending)
 
     # --- end of a run --------------------------------------------------------------------------------------------
+
+    def _end_run(self, status: RunStatus | None) -> None:
+        """Judge the current run, then start the next with what was kept for it (messages, assembled frames)."""
+        self.finish(status)
+        deferred, self._deferred = self._deferred, []
+        frames, self._next_frames = self._next_frames, []
+        nxt, self._next = self._next, None
+        if nxt is not None:
+            self.assembler = nxt
+            self._used = True
+        for topic, msg in deferred:
+            self.on_message(topic, msg)
+        for frame in frames:
+            self._frame(frame)
 
     def finish(self, status: RunStatus | None) -> RunVerdict:
         """Close the current run with its final status (None: it never reported one) and return its verdict."""
@@ -168,14 +276,35 @@ class JudgeSession:
         self.verdicts.append(verdict)
         self.run = None
         self.assembler.reset()
+        if self._used:                            # the next run takes the next generation of every topic
+            self._gen += 1
+            self._used = False
         if self.on_verdict:
             self.on_verdict(verdict)
         return verdict
 
-    def close(self) -> RunVerdict | None:
-        """End of input (shutdown, end of the bag): a run still open is judged as incomplete."""
-        if self._pending is not None:
-            return self.finish(self._pending)
-        if self.run is not None and (self.run.oracle is not None or self.run.envelope is not None):
-            return self.finish(None)
-        return None
+    def close(self) -> None:
+        """End of input (shutdown, end of the bag): runs still open are judged (as incomplete if no end came)."""
+        for _ in range(10_000):                   # each pass ends one run; the bound only guards against a loop
+            if self._pending is not None:
+                self._end_run(self._pending)
+            elif self.run is not None and (self.run.oracle is not None or self.run.envelope is not None):
+                self._end_run(None)
+            elif self._deferred or self._next_frames:
+                self._end_run_without_current()
+            else:
+                return
+
+    def _end_run_without_current(self) -> None:
+        """Start what was kept for the next run when there is no current run to judge."""
+        deferred, self._deferred = self._deferred, []
+        frames, self._next_frames = self._next_frames, []
+        nxt, self._next = self._next, None
+        if nxt is not None:
+            self.assembler = nxt
+            self._gen += 1
+            self._used = True
+        for topic, msg in deferred:
+            self.on_message(topic, msg)
+        for frame in frames:
+            self._frame(frame)

@@ -56,6 +56,7 @@ class SmartnessOracle:
         self._prev_front: tuple[float, float] | None = None
         self._prev_lights: dict[str, TrafficLightState] = {}
         self._in_view_since: dict[str, float] = {}
+        self._located: dict[tuple[float, float, float], Any] = {}
         self.last_frame: Frame | None = None
         self._cos_tol = math.cos(math.radians(params.light_heading_tolerance_deg))
 
@@ -116,18 +117,21 @@ class SmartnessOracle:
 
     # --- red lights ----------------------------------------------------------------------------------------------
 
-    def governs(self, light: TrafficLightState, ego: EntityState, point: tuple[float, float]) -> tuple[float, float]:
-        """(longitudinal, lateral) position of `point` relative to the light's stop line, or (nan, nan) when the
-        signal does not govern the ego (heading too different or the point beside its stop line)."""
+    def stop_line_position(self, light: TrafficLightState, heading: float,
+                           point: tuple[float, float]) -> tuple[float, float] | None:
+        """(longitudinal, lateral) position of `point` relative to the light's stop line (longitudinal > 0: past
+        it), or None when the ego heads another way than the signal's lanes (cheap: no map lookup)."""
         c, s = math.cos(light.heading), math.sin(light.heading)
-        if math.cos(ego.heading) * c + math.sin(ego.heading) * s < self._cos_tol:
-            return math.nan, math.nan
+        if math.cos(heading) * c + math.sin(heading) * s < self._cos_tol:
+            return None
         dx, dy = point[0] - light.stop_x, point[1] - light.stop_y
-        lon, lat = dx * c + dy * s, -dx * s + dy * c
-        lane = self._in_controlled_lane(light, point, ego.heading) if abs(lon) < 30.0 else None
-        if lane is False or (lane is None and abs(lat) > self.params.light_half_width):
-            return math.nan, math.nan
-        return lon, lat
+        return dx * c + dy * s, -dx * s + dy * c
+
+    def governs(self, light: TrafficLightState, heading: float, point: tuple[float, float], lat: float) -> bool:
+        """Whether the signal is the ego's at `point` (lateral offset `lat` from its stop point): by its controlled
+        lanes when the map can tell, else by `light_half_width`."""
+        lane = self._in_controlled_lane(light, point, heading)
+        return lane is True or (lane is None and abs(lat) <= self.params.light_half_width)
 
     def _in_controlled_lane(self, light: TrafficLightState, point: tuple[float, float],
                             heading: float) -> bool | None:
@@ -135,16 +139,28 @@ class SmartnessOracle:
         cannot be told (no network, a signal without lanes, a point off the road or past the signal's road)."""
         if self.network is None or not light.road_id or not light.lane_ids:
             return None
-        try:
-            lp = self.network.locate(point[0], point[1], heading)
-        except Exception:                   # a map the lookup cannot serve here: fall back to the lateral test
-            return None
+        lp = self._locate(point, heading)
         if lp is None or not lp.inside or lp.road_id != light.road_id:
             return None
         return lp.ref.lane_id in light.lane_ids
 
+    def _locate(self, point: tuple[float, float], heading: float) -> Any:
+        """`network.locate`, remembered for the last few points: a crossing asks about this frame's and the
+        previous frame's bumper, for every signal."""
+        key = (point[0], point[1], heading)
+        cache = self._located
+        if key not in cache:
+            if len(cache) > 8:
+                cache.clear()
+            try:
+                cache[key] = self.network.locate(point[0], point[1], heading)
+            except Exception:               # a map the lookup cannot serve here: fall back to the lateral test
+                cache[key] = None
+        return cache[key]
+
     def _red_light(self, frame: Frame) -> Violation | None:
-        front = front_point(frame.ego)
+        ego = frame.ego
+        front = front_point(ego)
         prev_front, prev_lights = self._prev_front, self._prev_lights
         self._prev_front = front
         self._prev_lights = {light.id: light for light in frame.lights}
@@ -152,16 +168,16 @@ class SmartnessOracle:
             return None
         for light in frame.lights:
             before = prev_lights.get(light.id, light)
-            lon0, _ = self.governs(before, frame.ego, prev_front)
-            lon1, lat1 = self.governs(light, frame.ego, front)
-            if not (lon0 < 0.0 <= lon1):          # nan compares false: not governed, no crossing
-                continue
+            p0 = self.stop_line_position(before, ego.heading, prev_front)
+            p1 = self.stop_line_position(light, ego.heading, front)
+            if p0 is None or p1 is None or not (p0[0] < 0.0 <= p1[0]):
+                continue                            # not heading its way, or no crossing in this step
             red = before.state is SignalState.RED or (
                 self.params.yellow_is_violation and before.state is SignalState.YELLOW)
-            if red:
-                return Violation(Rule.RED_LIGHT, Category.MISINTERP, frame.t, frame.ego.speed, 0.0, "m/s",
+            if red and self.governs(before, ego.heading, prev_front, p0[1]):
+                return Violation(Rule.RED_LIGHT, Category.MISINTERP, frame.t, ego.speed, 0.0, "m/s",
                                  (light.id,), f"crossed the stop line of signal {light.id} on {before.state.value} "
-                                              f"at {frame.ego.speed:.2f} m/s (lateral {lat1:+.2f} m)")
+                                              f"at {ego.speed:.2f} m/s (lateral {p1[1]:+.2f} m)")
         return None
 
     # --- clear path, visibility, lanes ---------------------------------------------------------------------------
@@ -178,9 +194,10 @@ class SmartnessOracle:
                 return False
         for light in frame.lights:
             if light.state is SignalState.RED or light.state is SignalState.YELLOW:
-                lon, _ = self.governs(light, ego, (fx, fy))
+                pos = self.stop_line_position(light, ego.heading, (fx, fy))
                 # lon < 0: the line is ahead of the bumper; a bumper just over it (1 m) still waits for it.
-                if -p.clear_distance <= lon <= 1.0:
+                if pos is not None and -p.clear_distance <= pos[0] <= 1.0 and \
+                        self.governs(light, ego.heading, (fx, fy), pos[1]):
                     return False
         return True
 

@@ -82,3 +82,74 @@ def test_a_finished_status_overtaking_the_last_frames_is_held() -> None:
     _feed(s, straight_run(lambda t: 10.0, 6.0))
     s.on_message(c.TOPIC_RUN_STATUS, _status("b", "finished", 6.0, "goal_reached"))
     assert [x.scenario_id for x in s.verdicts] == ["a", "b"] and s.verdicts[1].verdict is Verdict.PASS
+
+
+def test_frames_before_their_scenario_stay_in_one_run() -> None:
+    # The player's goal, 'started' status and first frames overtake the generator's envelope.
+    s = JudgeSession(PARAMS)
+    frames = straight_run(lambda t: 10.0, 6.0)
+    s.on_message(c.TOPIC_GOAL, ros_io.goal_to_pose(Goal(60.0, 0.0, 0.0)))
+    _feed(s, frames[:5])
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "started"))
+    _feed(s, frames[5:10])
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    _feed(s, frames[10:])
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 6.0, "goal_reached"))
+    # The next run's frames come before its envelope too; the started status names it.
+    s.on_message(c.TOPIC_RUN_STATUS, _status("b", "started"))
+    _feed(s, frames[:3])
+    s.on_message(c.TOPIC_SCENARIO, _env("b"))
+    s.close()
+    a, b = s.verdicts
+    assert (a.scenario_id, a.verdict, a.frames) == ("a", Verdict.PASS, len(frames))
+    assert b.scenario_id == "b" and b.frames == 3 and b.verdict is Verdict.ERROR
+
+
+def _run_messages(sid: str, frames, goal: Goal, end: RunStatus) -> list[tuple[str, object]]:
+    out = [(c.TOPIC_SCENARIO, _env(sid)), (c.TOPIC_RUN_STATUS, _status(sid, "started")),
+           (c.TOPIC_GOAL, ros_io.goal_to_pose(goal))]
+    for f in frames:
+        out.append((c.TOPIC_TRAFFIC_LIGHTS, ros_io.lights_to_diagnostics(f.lights, f.t)))
+        out.extend((c.TOPIC_OBJECTS_ODOM, ros_io.entity_to_odometry(o)) for o in f.objects)
+        out.append((c.TOPIC_OBJECTS_MARKERS, ros_io.frame_to_markers(f)))
+        out.append((c.TOPIC_EGO_ODOM, ros_io.entity_to_odometry(f.ego)))
+    out.append((c.TOPIC_RUN_STATUS, ros_io.string_msg(end.to_json())))
+    return out
+
+
+def _lagging_delivery(messages, seed: int) -> list[tuple[str, object]]:
+    """What a monitor that falls behind receives: the publisher runs ahead by random bursts; each executor round
+    takes one available message per topic, topics in random order. Each topic keeps its own order."""
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+    queues: dict[str, list[tuple[int, object]]] = {}
+    for i, (topic, msg) in enumerate(messages):
+        queues.setdefault(topic, []).append((i, msg))
+    out, published = [], 0
+    while any(queues.values()):
+        published += int(rng.integers(1, 60))
+        topics = [t for t, q in queues.items() if q and q[0][0] < published]
+        for k in rng.permutation(len(topics)):
+            out.append((topics[k], queues[topics[k]].pop(0)[1]))
+    return out
+
+
+def test_a_lagging_monitor_reaches_the_verdicts_of_in_order_delivery() -> None:
+    goal = Goal(60.0, 0.0, 0.0)
+    a = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("lead", t, 36.2)])        # contact at ~3.17 s
+    b = straight_run(lambda t: 10.0, 6.0, objects=lambda t: [car("far", t, 200.0, y=7.0)])  # reaches the goal
+    msgs = (_run_messages("a", a, goal, RunStatus("a", "finished", 4.0, "time_limit"))
+            + _run_messages("b", b, goal, RunStatus("b", "finished", 6.0, "goal_reached")))
+    ref = JudgeSession(PARAMS)
+    for topic, msg in msgs:
+        ref.on_message(topic, msg)
+    ref.close()
+    expected = [v.to_dict() for v in ref.verdicts]
+    assert [(v["scenario_id"], v["verdict"]) for v in expected] == [("a", "fail"), ("b", "pass")]
+    for seed in range(12):
+        s = JudgeSession(PARAMS)
+        for topic, msg in _lagging_delivery(msgs, seed):
+            s.on_message(topic, msg)
+        s.close()
+        assert [v.to_dict() for v in s.verdicts] == expected, seed
