@@ -169,9 +169,33 @@ class Planner:
         for o in sk.obstacles:
             self._plan_obstacle(o)
         self.ev.check_lane_changes(ego)
+        self._relative_triggers()
         # the ego's mission: route through its path, goal beyond the conflict
         self._ego_mission(ego_routes)
         return self.actors
+
+    def _relative_triggers(self) -> None:
+        """The collision party's critical later manoeuvre (a lane change, stop, slow-down or reversing) fires by
+        its distance to the AV rather than by the clock when the AV is closing in at that moment: in closed loop
+        the planner's AV is not where the plan put it, and the manoeuvre should still come when the AV is near."""
+        target = self.sketch.collision.with_
+        party = next((a for a in self.actors if a.name == target and a.events), None)
+        if party is None or isinstance(party.track, LineTrack):
+            return
+        t, pe = self.ego.states(self.horizon)
+        _, pp = party.states(self.horizon)
+        gap = np.hypot(pe[:, 0] - pp[:, 0], pe[:, 1] - pp[:, 1])
+        for k, ev in enumerate(party.events):
+            if k == 0 or ev.code not in "fghck" or ev.trigger.kind != "time":
+                continue
+            i = int(np.searchsorted(t, ev.planned_time))
+            j = int(np.searchsorted(t, max(ev.planned_time - 1.0, 0.0)))
+            if i >= len(t) or gap[j] - gap[i] < 0.5 or np.any(np.diff(gap[: i + 1]) > 1e-6):
+                continue  # not steadily closing up to then: a distance threshold would fire early or never
+            party.events[k] = EventPlan(ev.name, ev.code, ev.actions,
+                                        Trigger("distance", round(float(gap[i]) + 0.3, 2), party.name, "ego"),
+                                        ev.planned_time)
+            party.notes.append(f"{ev.name} fires at {float(gap[i]) + 0.3:.1f} m from the AV")
 
     def _place_ego_default(self) -> None:
         ego = self.ego
