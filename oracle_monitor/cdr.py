@@ -229,17 +229,24 @@ class _R:
         return out
 
     def u32(self) -> int:
-        return self.unpack(_u32, 4)[0]
+        p = self.p
+        p += (4 - p) % 4                    # align 4 relative to the end of the encapsulation header
+        self.p = p + 4
+        return _u32.unpack_from(self.m, p)[0]
 
     def string(self) -> str:
-        n = self.u32()
-        if n == 0:
+        p = self.p
+        p += (4 - p) % 4
+        n = _u32.unpack_from(self.m, p)[0]
+        p += 4
+        if n <= 1:                          # "" is stored as length 1 (the NUL) — most of a marker's strings
+            self.p = p + n
             return ""
-        raw = bytes(self.m[self.p:self.p + n - 1])
-        if len(raw) != n - 1:
+        end = p + n - 1
+        if end > len(self.m):
             raise ValueError("string past the end")
-        self.p += n
-        return raw.decode()
+        self.p = p + n
+        return bytes(self.m[p:end]).decode()
 
     def skip_seq(self, elem_size: int, align: int) -> None:
         n = self.u32()
@@ -305,9 +312,26 @@ def decode_markers(data: bytes | memoryview) -> NS:
     return NS(markers=markers)
 
 
+_DIAG_BODY: dict[tuple[int, bytes], list[NS]] = {}
+
+
 def decode_diagnostics(data: bytes | memoryview) -> NS:
     r = _R(data)
     header = r.header()
+    # The signals' statuses repeat from step to step (only the header's stamp changes): decode each distinct body
+    # once. The status objects are shared between messages; readers only read them.
+    key = ((r.p - 4) % 4, bytes(r.m[r.p:]))  # the body's alignment is part of its meaning
+    cached = _DIAG_BODY.get(key)
+    if cached is not None:
+        return NS(header=header, status=cached)
+    status = _decode_statuses(r)
+    if len(_DIAG_BODY) > 4096:
+        _DIAG_BODY.clear()
+    _DIAG_BODY[key] = status
+    return NS(header=header, status=status)
+
+
+def _decode_statuses(r: _R) -> list[NS]:
     status = []
     for _ in range(r.u32()):
         level = bytes(r.m[r.p:r.p + 1])
@@ -315,7 +339,7 @@ def decode_diagnostics(data: bytes | memoryview) -> NS:
         name, message, hw = r.string(), r.string(), r.string()
         values = [NS(key=r.string(), value=r.string()) for _ in range(r.u32())]
         status.append(NS(level=level, name=name, message=message, hardware_id=hw, values=values))
-    return NS(header=header, status=status)
+    return status
 
 
 FAST_DECODERS = {

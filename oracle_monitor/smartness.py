@@ -107,9 +107,10 @@ class SmartnessOracle:
             out.append(Violation(Rule.STOPPED_MID_ROUTE, Category.PLAN_FAIL, frame.t, self._still_clear,
                                  p.stop_timeout, "s", (), "standing mid-route with a clear path"))
         if self._still >= p.park_time and not self._park_reported and self.network is not None:
+            # Checked once per stop (standing still, the footprint does not move; the lookup costs ~1 ms).
+            self._park_reported = True
             outside = self.outside_lane(ego)
             if outside:
-                self._park_reported = True
                 out.append(Violation(Rule.PARKED_OUTSIDE_LANE, Category.PLAN_FAIL, frame.t, outside, 0.0,
                                      "corners", (), f"{outside:.0f} of 4 footprint corners outside "
                                                     f"{'/'.join(p.lane_types)} lanes"))

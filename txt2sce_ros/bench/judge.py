@@ -45,7 +45,10 @@ def _lockstep(name: str, writer: Any | None) -> tuple[float, int, Any]:
     frame = sim.reset()
     planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults())
     oracle = Oracle(sim.network, sim.goal, OracleParams.from_config(), scenario_id=name)
-    env = ScenarioEnvelope(id=name, xosc=path.read_text(), map_path="")
+    # The map travels with the scenario as the generator sends it, so the judge has the road network too.
+    src = Path(sim.network.source)
+    env = ScenarioEnvelope(id=name, xosc=path.read_text(), map_path=str(src),
+                           map_xodr=src.read_text() if src.is_file() else "")
     steps = 0
     t0 = time.process_time()
     if writer is not None:
