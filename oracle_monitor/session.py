@@ -30,8 +30,9 @@ from .params import OracleParams
 from .records import RunVerdict, Violation
 
 
-#: Frames of the next run collected before the current run, still without its final status, is closed as
-#: incomplete (a bag recorded without run statuses, a player that died between runs).
+#: Frames of the next run collected before the current run is closed anyway: with its held final status if it has
+#: one (its last frames were lost in transport), else as incomplete (a bag recorded without run statuses, a player
+#: that died between runs).
 NEXT_RUN_PATIENCE = 40
 
 _FRAME_TOPICS = frozenset({c.TOPIC_EGO_ODOM, c.TOPIC_OBJECTS_ODOM, c.TOPIC_OBJECTS_MARKERS, c.TOPIC_TRAFFIC_LIGHTS})
@@ -99,6 +100,10 @@ class JudgeSession:
         self._used = False                                  # whether the current run got a frame message
         self._topic_gen: dict[str, int] = {}                # each frame topic's generation and latest stamp
         self._topic_key: dict[str, int] = {}
+        self._names_at_key: dict[str, set[str]] = {}        # entities seen at the topic's latest stamp
+        self._cur_max_key = -1                              # latest stamp of the current run, of the next run,
+        self._next_max_key = -1                             # and of the previous run (where it ended)
+        self._prev_end_key = -1
         self.dropped = 0                                    # late messages of finished runs
 
     # --- dispatch ------------------------------------------------------------------------------------------------
@@ -164,25 +169,44 @@ class JudgeSession:
             # First use of this topic in a while: it belongs to the run now under way on the other topics.
             next_begun = any(g > self._gen for g in self._topic_gen.values())
             gen = self._gen + 1 if next_begun else self._gen
-        elif key is not None and last is not None and key < last:
-            gen += 1
+        elif key is not None and last is not None and (key < last or (key == last and self._repeat(topic, msg))):
+            gen += 1                                # stamps went back (or repeat): the next run's clock
+        elif gen == self._gen - 1 and key is not None and key > self._prev_end_key:
+            gen = self._gen                         # later than the previous run ever got: not one of its own
         self._topic_gen[topic] = gen
         if key is not None:
+            if key != last:
+                self._names_at_key.pop(topic, None)
             self._topic_key[topic] = key
+            if topic == c.TOPIC_OBJECTS_ODOM:
+                self._names_at_key.setdefault(topic, set()).add(msg.child_frame_id)
         if gen < self._gen:
             self.dropped += 1                      # a finished run's late message (e.g. its last lights)
             return
         if gen == self._gen:
             self._used = True
+            if key is not None and key > self._cur_max_key:
+                self._cur_max_key = key
             self._feed(self.assembler, topic, msg, self._frame)
             return
+        if key is not None and key > self._next_max_key:
+            self._next_max_key = key
         # The next run's. Kept apart until the current run ends: by its final status (usually just behind), or —
         # when none comes within NEXT_RUN_PATIENCE frames of the next run — as a run that never reported its end.
         if self._next is None:
             self._next = FrameAssembler()
         self._feed(self._next, topic, msg, self._next_frames.append)
-        if self._pending is None and len(self._next_frames) > NEXT_RUN_PATIENCE:
-            self._end_run(None)
+        if len(self._next_frames) > NEXT_RUN_PATIENCE:
+            # The current run's end never came (or its last frames were lost in transport): close it with what
+            # it has — its held final status, if any.
+            self._end_run(self._pending)
+
+    def _repeat(self, topic: str, msg: Any) -> bool:
+        """A message with the same stamp as the topic's last one starts a new run — except another entity's
+        odometry of the same step (several per step on /sim/objects/odom)."""
+        if topic != c.TOPIC_OBJECTS_ODOM:
+            return True
+        return msg.child_frame_id in self._names_at_key.get(topic, ())
 
     @staticmethod
     def _feed(asm: FrameAssembler, topic: str, msg: Any, sink: Callable[[Any], None]) -> None:
@@ -279,6 +303,7 @@ class JudgeSession:
         if self._used:                            # the next run takes the next generation of every topic
             self._gen += 1
             self._used = False
+            self._prev_end_key, self._cur_max_key, self._next_max_key = self._cur_max_key, self._next_max_key, -1
         if self.on_verdict:
             self.on_verdict(verdict)
         return verdict
@@ -304,6 +329,7 @@ class JudgeSession:
             self.assembler = nxt
             self._gen += 1
             self._used = True
+            self._prev_end_key, self._cur_max_key, self._next_max_key = self._cur_max_key, self._next_max_key, -1
         for topic, msg in deferred:
             self.on_message(topic, msg)
         for frame in frames:

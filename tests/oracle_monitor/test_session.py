@@ -153,3 +153,19 @@ def test_a_lagging_monitor_reaches_the_verdicts_of_in_order_delivery() -> None:
             s.on_message(topic, msg)
         s.close()
         assert [v.to_dict() for v in s.verdicts] == expected, seed
+
+
+def test_a_run_broken_at_t0_then_a_run_from_t0() -> None:
+    # The planner never answered: the player ends run a at t = 0 after one frame; run b starts at t = 0 too, so
+    # no topic's stamps go back — the repeated stamps must still open run b.
+    s = JudgeSession(PARAMS)
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    _feed(s, straight_run(lambda t: 10.0, 0.0, objects=lambda t: [car("x", t, 50.0), car("y", t, 80.0)]))
+    s.on_message(c.TOPIC_RUN_STATUS, ros_io.string_msg(
+        RunStatus("a", "finished", 0.0, "planner_not_responding", verdict_hint="error").to_json()))
+    s.on_message(c.TOPIC_SCENARIO, _env("b"))
+    _feed(s, straight_run(lambda t: 10.0, 6.0, objects=lambda t: [car("x", t, 150.0, y=7.0)]))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("b", "finished", 6.0, "goal_reached"))
+    a, b = s.verdicts
+    assert a.verdict is Verdict.ERROR and "planner_not_responding" in a.error
+    assert (b.scenario_id, b.verdict, b.frames) == ("b", Verdict.PASS, 121)
