@@ -47,7 +47,7 @@ def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, fau
     """Run one scenario file against the stand-in planner (with `faults` switched on) and judge it."""
     from oracle_monitor import Oracle, OracleParams
     from scenario_player import Simulation, SimulationConfig, load_scenario
-    from standin_planner import Faults, Planner, PlannerParams
+    from standin_planner import Faults, Planner, PlannerParams, friction_from_xosc
 
     sid = scenario_id or Path(scenario).stem
     t0 = time.perf_counter()
@@ -60,7 +60,10 @@ def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, fau
             cfg_kwargs["time_limit"] = time_limit
         sim = Simulation(scen, SimulationConfig(**cfg_kwargs))
         frame: Frame = sim.reset()
-        planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults.from_names(faults))
+        # The planner node reads the road friction from the scenario envelope; do the same here so both paths agree.
+        friction = friction_from_xosc(Path(scenario).read_text(encoding="utf-8"))
+        planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults.from_names(faults),
+                          road_friction=friction)
         oracle = Oracle(sim.network, sim.goal, OracleParams.from_config())
         oracle.observe(frame)
         steps = 0

@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 
 from lxml import etree
 
+from txt2sce_ros.contract import OBSTACLE_CATEGORIES
+
 from .xml import ParseContext
 
 #: Defaults when a file leaves Performance/Axles out (a mid-size car; pedestrians walk).
@@ -41,7 +43,9 @@ class EntitySpec:
 
     @property
     def is_static(self) -> bool:
-        return self.kind == "misc"
+        # A parked vehicle written as a Vehicle is still an obstacle: same rule as ros_io, so in-process and ROS
+        # frames agree.
+        return self.kind == "misc" or self.category in OBSTACLE_CATEGORIES
 
     @classmethod
     def from_xml(cls, ctx: ParseContext, obj: etree._Element) -> "EntitySpec":
