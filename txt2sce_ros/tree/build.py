@@ -24,7 +24,7 @@ from lxml import etree
 
 from ..config import load_config
 from ..errors import InputError, Txt2SceError
-from ..xosc.validate import document_version
+from ..xosc.validate import document_version, validate_xosc
 from .assembly import assemble
 from .blocks import Disassembly, Variant
 from .context import SeedContext, build_context
@@ -32,7 +32,6 @@ from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
 from .prune import prune, spread
-from .validity import NodeValidator
 from .xml import parse_bytes
 
 MANIFEST_SCHEMA = "txt2sce.tree/1"
@@ -129,7 +128,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     counts = tuple(len(variants[i]) for i in used)
 
     originals = dis.originals()
-    validator = NodeValidator(document_version(root, source=str(seed_path))) if cfg["tree"]["validate"] else None
+    # every node shares the seed's version: read it once, not from each node's FileHeader
+    version = document_version(root, source=str(seed_path)) if cfg["tree"]["validate"] else None
     share = float(cfg["tree"]["prune_share"])
     cap = int(cfg["tree"]["max_nodes_per_tree"]) or sys.maxsize
     prune_rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
@@ -170,8 +170,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
                 for slot, frag in zip(b.slots, variants[used[k]][vi].fragments):
                     frags[slot] = frag
             text = assemble(dis.template, frags)
-            if validator is not None:
-                problems = validator.errors(text, source=node_id)
+            if version is not None:
+                problems = _node_problems(text, version)
                 if problems:
                     invalid += 1
                     errors.append(f"{node_id}: {problems[0]}")
@@ -217,6 +217,16 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     return TreeResult(seed=str(seed_path), out_dir=out, block_counts=counts, expected=expected_nodes(counts),
                       nodes=written, pruned=pruned, invalid=invalid, truncated=truncated,
                       seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))
+
+
+def _node_problems(text: str, version: str) -> list[str]:
+    """XSD errors of one assembled node as `line N: message` ([] when valid; the caller prefixes the node id). A
+    node that is not well-formed (α only joins well-formed fragments, so it would be a bug) is reported like a
+    schema error rather than ending the tree."""
+    try:
+        return validate_xosc(text, version=version)
+    except InputError as exc:
+        return [str(exc)]
 
 
 def _block_entry(dis: Disassembly, i: int, vs: list[Variant], ctx: SeedContext, cfg: dict[str, Any],

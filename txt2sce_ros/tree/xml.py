@@ -4,23 +4,17 @@ from __future__ import annotations
 
 from lxml import etree
 
-from ..errors import InputError
-
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=False)
+from ..xosc.schema import parse_document, safe_parser
 
 
 def parse_bytes(data: bytes | str, source: str) -> etree._Element:
     """Root element of an XML document; InputError naming the file and line when it is not well-formed."""
-    raw = data.encode("utf-8") if isinstance(data, str) else data
-    try:
-        return etree.fromstring(raw, _PARSER)
-    except etree.XMLSyntaxError as exc:
-        raise InputError(f"not well-formed XML: {exc}", source=source, line=exc.lineno) from exc
+    return parse_document(data, source=source)
 
 
 def parse_fragment(text: str) -> etree._Element:
     """A block fragment (always produced by `to_text`, so well-formed)."""
-    return etree.fromstring(text, _PARSER)
+    return etree.fromstring(text, safe_parser())
 
 
 def to_text(el: etree._Element) -> str:
