@@ -43,22 +43,41 @@ def point_in_box(p: tuple[float, float], poly: Poly) -> bool:
 
 
 def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
-    """Pairs of present entities whose footprints overlap; a bounding-circle test prunes far pairs first."""
-    from .measure import box_center, box_corners
+    """Pairs of present entities whose footprints overlap; a bounding-circle test prunes far pairs first.
+
+    Runs every step for every pair, so the centres are computed inline (the same expressions as
+    `measure.box_center`, hence the same bits) and corners only for the pairs the circles cannot separate. With
+    the handful of entities of a scenario, plain floats beat numpy arrays here (array set-up costs more than the
+    pairs)."""
+    from .measure import box_corners
 
     live = [e for e in entities if e.present]
-    centres = [box_center(e) for e in live]
-    radii = [0.5 * math.hypot(e.spec.length, e.spec.width) for e in live]
+    n = len(live)
+    if n < 2:
+        return []
+    cos, sin, hypot = math.cos, math.sin, math.hypot
+    geo = []
+    for e in live:
+        sp = e.spec
+        c, s = cos(e.h), sin(e.h)
+        geo.append((e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y,
+                    0.5 * hypot(sp.length, sp.width)))
     pairs: list[tuple[str, str]] = []
     corners: dict[int, Poly] = {}
-    for i in range(len(live)):
-        for j in range(i + 1, len(live)):
-            dx, dy = centres[i][0] - centres[j][0], centres[i][1] - centres[j][1]
-            r = radii[i] + radii[j]
+    for i in range(n - 1):
+        xi, yi, ri = geo[i]
+        for j in range(i + 1, n):
+            xj, yj, rj = geo[j]
+            dx, dy = xi - xj, yi - yj
+            r = ri + rj
             if dx * dx + dy * dy > r * r:
                 continue
-            ci = corners.setdefault(i, box_corners(live[i]))
-            cj = corners.setdefault(j, box_corners(live[j]))
+            ci = corners.get(i)
+            if ci is None:
+                ci = corners[i] = box_corners(live[i])
+            cj = corners.get(j)
+            if cj is None:
+                cj = corners[j] = box_corners(live[j])
             if obb_overlap(ci, cj):
                 pairs.append((live[i].name, live[j].name))
     return pairs

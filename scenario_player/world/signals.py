@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 from txt2sce_ros.contract import SignalState, TrafficLightState
 from txt2sce_ros.road import RoadNetwork
 
 
+@lru_cache(maxsize=1024)
 def state_of(text: str) -> SignalState:
+    """The colour a state text shows (cached: a run decodes the same few texts every step)."""
     low = text.strip().lower()
     for s in SignalState:
         if low == s.value:
@@ -51,6 +54,10 @@ class SignalBoard:
         self.controllers: dict[str, SignalController] = {}
         self.phase_start: dict[str, tuple[int, float]] = {}   # controller -> (phase index, start time)
         self._geometry: dict[str, tuple[float, float, float, str, tuple[int, ...]]] = {}
+        # lights() is asked for every frame but changes only when a state does: the records are frozen, so the
+        # same tuple is handed out until the (id, text) items differ.
+        self._lights_key: tuple[tuple[str, str], ...] | None = None
+        self._lights: tuple[TrafficLightState, ...] = ()
         for sid, sig in net.signals.items():
             if getattr(sig, "dynamic", False):
                 self.states.setdefault(sid, "off")
@@ -99,6 +106,13 @@ class SignalBoard:
                 self._apply_phase(ctrl, nxt)
 
     def lights(self) -> tuple[TrafficLightState, ...]:
+        key = tuple(self.states.items())
+        if key != self._lights_key:
+            self._lights = self._build_lights()
+            self._lights_key = key
+        return self._lights
+
+    def _build_lights(self) -> tuple[TrafficLightState, ...]:
         out = []
         for sid in sorted(self.states):
             x, y, h, road_id, lanes = self._stop_line(sid)
