@@ -113,8 +113,11 @@ class JudgeSession:
             self._frame_message(topic, msg)
             return
         if topic == c.TOPIC_RUN_STATUS:
+            # The player's statuses come in order on their one topic (started a, finished a, started b, ...), so
+            # they need no matching by name (names differ between paths: a file path in-process, the envelope id
+            # over ROS): a status behind a held one, or behind waiting start messages, is the next run's.
             status = RunStatus.from_json(msg.data)
-            if self._belongs_to_next(status.scenario_id):
+            if self._pending is not None or (self._deferred and status.state != "finished"):
                 self._deferred.append((topic, msg))
             elif status.state != "finished":
                 self._start(None, status.scenario_id)
@@ -127,8 +130,13 @@ class JudgeSession:
                 else:
                     self._end_run(status)
         elif topic == c.TOPIC_SCENARIO:
+            # The generator's envelope is not ordered against the player's messages: one for another scenario
+            # while the current run is under way waits for that run's end.
             envelope = ScenarioEnvelope.from_json(msg.data)
-            if self._belongs_to_next(envelope.id):
+            run = self.run
+            if self._pending is not None or self._deferred or (
+                    run is not None and run.envelope is not None and run.envelope.id != envelope.id
+                    and run.oracle is not None):
                 self._deferred.append((topic, msg))
             else:
                 self._start(envelope)
@@ -145,18 +153,6 @@ class JudgeSession:
                 if run.oracle is not None:
                     run.oracle.set_goal(goal)
 
-    def _belongs_to_next(self, scenario_id: str) -> bool:
-        """Whether a scenario / status message is about a run after the current one: the current one's final
-        status is held, messages for later runs already wait, or it names another scenario than the current."""
-        run = self.run
-        known = (run.envelope.id if run.envelope is not None else run.scenario_id) if run is not None else ""
-        if known and scenario_id == known:
-            return False
-        if self._pending is not None or self._deferred:
-            return True
-        # A run that has seen no frame yet may be a leftover (a scenario that never ran): let the next replace it.
-        return bool(known) and bool(scenario_id) and run is not None and run.oracle is not None
-
     def _frame_message(self, topic: str, msg: Any) -> None:
         """Route a frame message to the current run, the next one, or nowhere (a late one of a finished run).
 
@@ -169,8 +165,11 @@ class JudgeSession:
             # First use of this topic in a while: it belongs to the run now under way on the other topics.
             next_begun = any(g > self._gen for g in self._topic_gen.values())
             gen = self._gen + 1 if next_begun else self._gen
-        elif key is not None and last is not None and (key < last or (key == last and self._repeat(topic, msg))):
-            gen += 1                                # stamps went back (or repeat): the next run's clock
+        elif key is not None and last is not None and key < last:
+            gen += 1                                # stamps went back: the next run's clock
+        elif key is not None and key == last and gen == self._gen - 1 and self._repeat(topic, msg):
+            gen += 1                                # the previous run ended at this very stamp, this one starts
+                                                    # there (a run broken at t = 0, then the next from t = 0)
         elif gen == self._gen - 1 and key is not None and key > self._prev_end_key:
             gen = self._gen                         # later than the previous run ever got: not one of its own
         self._topic_gen[topic] = gen
@@ -202,8 +201,8 @@ class JudgeSession:
             self._end_run(self._pending)
 
     def _repeat(self, topic: str, msg: Any) -> bool:
-        """A message with the same stamp as the topic's last one starts a new run — except another entity's
-        odometry of the same step (several per step on /sim/objects/odom)."""
+        """Right after a run ended, a message with the stamp of the topic's last one starts the next run — except
+        another entity's odometry of the same step (several per step on /sim/objects/odom)."""
         if topic != c.TOPIC_OBJECTS_ODOM:
             return True
         return msg.child_frame_id in self._names_at_key.get(topic, ())
@@ -233,12 +232,11 @@ class JudgeSession:
         sid = envelope.id if envelope is not None else scenario_id
         run = self.run
         if run is not None:
-            known = run.envelope.id if run.envelope is not None else run.scenario_id
-            if known and sid and known != sid:
-                self._end_run(None)               # a scenario that never produced a frame
-                return self._start(envelope, scenario_id) if self.run is None else None
             if envelope is not None and run.envelope is not None:
-                return None                       # the same envelope again (transient-local history)
+                if run.envelope.id == envelope.id:
+                    return None                   # the same envelope again (transient-local history)
+                self._end_run(None)               # a scenario that never produced a frame
+                return self._start(envelope) if self.run is None else None
         if run is None:
             # No reset of the assembler here: `finish` cleared it, and what it holds now (parts of a first frame
             # that came before its scenario) is this run's.
@@ -250,7 +248,7 @@ class JudgeSession:
                 run.notes.append(why)
             if run.oracle is not None:
                 run.oracle.set_network(run.network)
-        if sid:
+        if sid and (envelope is not None or not run.scenario_id):   # the envelope's id wins over a status's
             run.scenario_id = sid
             if run.oracle is not None:
                 run.oracle.scenario_id = sid

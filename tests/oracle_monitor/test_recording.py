@@ -193,3 +193,19 @@ def test_batched_wall_clock_recording_reads_back_in_order(tmp_path: Path) -> Non
     assert lights[0].status[0].message == "red"
     result = judge_bag(tmp_path / "bag", PARAMS)
     assert result.complete and result.verdicts[0].category_names() == ("Misinterp",)
+
+
+def test_real_closed_loop_runs_recorded_and_rejudged_match(tmp_path: Path) -> None:
+    # esmini examples played by the scenario player against the stand-in planner (in-process, lock-step), each
+    # recorded with its live verdict; the player's final frame repeats the previous frame's stamp, and the two
+    # runs' clocks both restart at 0 — the re-judged verdicts must be the live ones, run for run.
+    from txt2sce_ros.bench.judge import _lockstep
+
+    live = []
+    with RunWriter(tmp_path / "bag") as w:
+        for name in ("slow-lead-vehicle", "traffic_lights", "slow-lead-vehicle"):
+            live.append(_lockstep(name, w)[2])
+    result = judge_bag(tmp_path / "bag", PARAMS)
+    assert result.complete and result.agrees_with_live() is True
+    assert [v.to_dict() for v in result.verdicts] == [v.to_dict() for v in live]
+    assert [v.frames for v in result.verdicts] == [v.frames for v in live] and live[1].frames > 500
