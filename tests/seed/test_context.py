@@ -44,3 +44,29 @@ def test_reachable_lanes_and_shift(seeds) -> None:
         ctx.shift_start("npc1", 500.0)   # past the junction: the lane branches
     with pytest.raises(InputError):
         ctx.start("npc9")
+
+
+def test_tree_facing_fields_agree_with_the_seed_api(seeds) -> None:
+    """The tree reads the same context: lane starts as written, the ego route from the start, the map view."""
+    ctx = SeedContext.from_file(seeds["dmvca-waymo-20211008-r227"])
+    ego, written = ctx.start("ego"), ctx.starts["ego"]
+    assert (written.road, written.lane, written.s, written.offset) == (ego.road_id, ego.lane_id, ego.s, ego.offset)
+    first = ctx.ego_route[0]
+    assert (first.road, first.lane) == (written.road, written.lane)
+    assert ctx.must_reach["ego"][:len(ctx.ego_route) - 1] == ctx.ego_route[1:]
+    assert ctx.map is not None and ctx.map.lane_type(written.road, written.lane, written.s) == "driving"
+    assert ctx.map.lane_type(written.road, 0, written.s) != "driving"
+    assert ctx.categories["ego"] and set(ctx.starts) <= set(ctx.categories)
+
+
+def test_seed_without_map_gives_a_context_whose_map_queries_raise(seeds) -> None:
+    from lxml import etree
+
+    path = seeds["dmvca-apple-20211111-r241"]
+    root = etree.fromstring(path.read_bytes())
+    rn = root.find("RoadNetwork")
+    rn.remove(rn.find("LogicFile"))
+    ctx = SeedContext.from_text(etree.tostring(root), base_dir=path.parent, source="nomap")
+    assert ctx.map is None and "ego" in ctx.starts
+    with pytest.raises(InputError, match="LogicFile"):
+        ctx.start("ego")

@@ -11,7 +11,7 @@ from lxml import etree
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.tree import BlockKind, assemble, disassemble
 from txt2sce_ros.tree.build import tree_config
-from txt2sce_ros.tree.context import build_context, lane_pos
+from txt2sce_ros.seed.context import build_context, lane_pos
 from txt2sce_ros.tree.mutate import block_variants
 from txt2sce_ros.tree.trajectory import feasible_s
 from txt2sce_ros.tree.values import Recorder

@@ -75,7 +75,7 @@ def test_real_trees_are_byte_identical_for_the_same_rng_seed(sample, tmp_path):
 
 def test_tls_sets_the_signal_facing_the_av(seeds):
     """On signalised dev seeds, the enumerated state lands on a signal the map says controls the AV's lane."""
-    from txt2sce_ros.tree.context import build_context
+    from txt2sce_ros.seed.context import build_context
     from txt2sce_ros.tree.mutate import block_variants
     from txt2sce_ros.tree.build import tree_config
     from txt2sce_ros.tree.xml import parse_bytes, parse_fragment

@@ -27,7 +27,7 @@ from ..errors import InputError, Txt2SceError
 from ..xosc.validate import document_version, validate_xosc
 from .assembly import assemble
 from .blocks import Disassembly, Variant
-from .context import SeedContext, build_context
+from ..seed.context import SeedContext, build_context
 from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features

@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
-from .context import LanePos, SeedContext
+from ..seed.context import LanePos, SeedContext
 from .values import Recorder, uniform
 
 #: esmini-style lamp encodings (red;yellow;green lamps), used when a seed writes states that way.

@@ -12,7 +12,7 @@ from typing import Any
 from lxml import etree
 
 from .blocks import BlockKind
-from .context import SeedContext, lane_pos
+from ..seed.context import SeedContext, lane_pos
 from .environment import signal_state_name, weather_type
 from .physical import entity_element
 

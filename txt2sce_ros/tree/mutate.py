@@ -23,7 +23,7 @@ from lxml import etree
 
 from ..errors import InputError
 from .blocks import Block, BlockKind, Variant
-from .context import SeedContext
+from ..seed.context import SeedContext
 from .dynamics import dtm, tsm
 from .environment import obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name

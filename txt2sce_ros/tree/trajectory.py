@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
-from .context import LanePos, SeedContext, lane_pos
+from ..seed.context import LanePos, SeedContext, lane_pos
 from .values import Recorder, gaussian, uniform
 
 _LANE_CHANGE_ACTIONS = ("lane_change_left", "lane_change_right")
