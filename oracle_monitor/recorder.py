@@ -131,12 +131,12 @@ class BagRecorder:
             self._flush()
         return ns
 
-    def write_batch(self, items: list[tuple[str, bytes]]) -> None:
-        """Append several messages received together (one lock-step step), with consecutive log times: one
-        buffer write instead of one per message, for the in-process recorder's hot path."""
+    def write_batch(self, items: list[tuple[str, bytes]], received_ns: int | None = None) -> None:
+        """Append several messages received together (one lock-step step, at `received_ns` or now), with
+        consecutive log times: one buffer write instead of one per message, for the in-process hot path."""
         if self.closed:
             raise InputError("recording already closed", source=str(self.path))
-        ns = max(time.time_ns(), self._last_ns + 1)
+        ns = max(time.time_ns() if received_ns is None else received_ns, self._last_ns + 1)
         w = self._writer
         storage = w.storage
         chunk = storage.chunk
