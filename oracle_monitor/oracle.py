@@ -94,8 +94,13 @@ class Oracle:
         # End-of-run checks (goal reached, never started) judge the system under test: not for runs that broke.
         if status is not None and status.state == "finished" and not error_reason(status, self.frames):
             self.violations.extend(self.smart.finish(t_end, status.end_reason))
+        notes = self._notes()
+        if status is not None and status.unsupported:
+            # The run went on without these elements: a verdict on a scenario that was not played as written.
+            notes += (f"the player skipped {len(status.unsupported)} unsupported element(s): "
+                      + "; ".join(status.unsupported[:5]),)
         self._finished = decide(tuple(self.violations), status, frames=self.frames, t_end=t_end,
-                                scenario_id=self.scenario_id, notes=self._notes())
+                                scenario_id=self.scenario_id, notes=notes)
         return self._finished
 
     def _notes(self) -> tuple[str, ...]:

@@ -87,3 +87,10 @@ def test_invalid_scenario_is_an_error_with_the_players_reason() -> None:
                        verdict_hint="error")
     verdict = Oracle(None, None, PARAMS).finish(status)
     assert verdict.verdict is Verdict.ERROR and "input_error" in verdict.error
+
+
+def test_unsupported_elements_are_noted() -> None:
+    frames = straight_run(lambda t: 10.0, 3.0)
+    status = RunStatus("s", "finished", 3.0, "stop_trigger", unsupported=("unsupported: <SynchronizeAction> at line 40",))
+    verdict, _ = judge(Oracle(None, None, PARAMS), frames, status)
+    assert verdict.verdict is Verdict.PASS and any("SynchronizeAction" in n for n in verdict.notes)
