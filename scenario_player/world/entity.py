@@ -4,6 +4,7 @@ sees is copied into frozen `EntityState` records."""
 from __future__ import annotations
 
 import math
+from dataclasses import fields
 from typing import TYPE_CHECKING
 
 from txt2sce_ros.contract import EntityState
@@ -109,10 +110,21 @@ class Entity:
 
     def state(self, t: float) -> EntityState:
         sp = self.spec
-        return EntityState(name=self.name, category=sp.category, t=t, x=self.x, y=self.y, heading=_wrap(self.h),
-                           speed=self.speed, accel=self.accel, yaw_rate=self.yaw_rate, length=sp.length,
-                           width=sp.width, height=sp.height, center_x=sp.center_x, is_static=sp.is_static)
+        # Positional, in EntityState's field order: built for every entity every step, and keywords cost more.
+        return EntityState(self.name, sp.category, t, self.x, self.y, (self.h + _PI) % _TWO_PI - _PI,
+                           self.speed, self.accel, self.yaw_rate, sp.length, sp.width, sp.height, sp.center_x,
+                           sp.is_static)
+
+
+_PI = math.pi
+_TWO_PI = 2.0 * math.pi
+
+# `Entity.state` passes EntityState's fields positionally: fail at import, not silently, if the contract reorders.
+if tuple(f.name for f in fields(EntityState)) != (
+        "name", "category", "t", "x", "y", "heading", "speed", "accel", "yaw_rate", "length", "width", "height",
+        "center_x", "is_static"):
+    raise ImportError("txt2sce_ros.contract.EntityState fields changed: update scenario_player Entity.state")
 
 
 def _wrap(a: float) -> float:
-    return (a + math.pi) % (2.0 * math.pi) - math.pi
+    return (a + _PI) % _TWO_PI - _PI
