@@ -29,7 +29,7 @@ from .kinematics import lateral_profile, speed_profile, time_to_reach
 from .lanes import CURB, case1_lane, ego_lane, party_lane
 from .linetrack import LineTrack, perpendicular
 from .model import EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger
-from .sites import JunctionSite, RoadSite, _net
+from .sites import JunctionSite, RoadSite, site_network
 from .track import Track
 
 __all__ = ["Actor", "Planner", "predicted_gap"]
@@ -42,7 +42,7 @@ class Planner:
         self.sketch = sketch
         self.site = site
         self.D = defaults
-        self.net = _net(site.map_path)
+        self.net = site_network(site)
         self.T = defaults.timing.time_to_conflict
         self.horizon = defaults.timing.time_limit
         self.choices: dict = {"site": site.describe(), "parties": {}}

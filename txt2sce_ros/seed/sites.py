@@ -1,33 +1,28 @@
-"""Map sites a sketch can be placed on, read from the road model: junction approaches and road segments.
+"""Map sites a sketch can be placed on: junction approaches and road segments, read from the map database (paper
+§III-A.2 / §III-C: road matching is a query on the map database, `txt2sce_ros.mapdb`).
 
-A `JunctionSite` is one junction seen from one incoming road (the AV's approach): the other legs classified as
-left / opposite / right by their approach headings, the lanes (left to right) driving into the junction and the
-turns each lane can make. A `RoadSite` is a non-junction road in one direction of travel.
+A `JunctionSite` is one junction seen from one incoming road (the AV's approach): the other legs as the sketch's
+R1–R3 see them (`db.relative_approaches`), the lanes (left to right) driving into the junction and the turns each
+lane can make. A `RoadSite` is a non-junction road in one direction of travel (`db.roads`). These records only
+re-shape the database's answers into lane references the planner drives on; no map analysis happens here.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
-from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
-
+from ..mapdb import Control, Layout, MapDatabase, load_map_database
+from ..mapdb import Approach as DbApproach
 from ..road import LaneRef, RoadNetwork, load_network
-
-
-def _wrap(a: float) -> float:
-    return math.atan2(math.sin(a), math.cos(a))
 
 
 @dataclass(frozen=True, slots=True)
 class Approach:
     road_id: str
     lanes: tuple[LaneRef, ...]                  # driving into the junction, left to right
-    heading: float                              # travel heading at the junction entry
     turns: tuple[tuple[LaneRef, tuple[tuple[str, LaneRef], ...]], ...]   # lane -> (turn, connecting lane)
-    signals: tuple[str, ...]                    # dynamic signal ids on this road
+    signals: tuple[str, ...]                    # traffic-light ids controlling the approach
     stop_sign: bool
     length: float
 
@@ -55,7 +50,7 @@ class JunctionSite:
     ego: Approach
     legs: dict = field(hash=False, compare=False)        # 'left' | 'opposite' | 'right' -> Approach
     signalised: bool = False
-    kind: str = "junction4"                              # junction4 | junction3 | roundabout
+    kind: str = "junction4"                              # junction4 | junction3 | roundabout | junction
 
     def describe(self) -> dict:
         return {"kind": self.kind, "junction": self.junction_id, "ego_road": self.ego.road_id,
@@ -78,141 +73,64 @@ class RoadSite:
                 "oncoming": [r.lane_id for r in self.oncoming], "length": round(self.length, 1)}
 
 
-def _sorted_left_to_right(net: RoadNetwork, refs: list[LaneRef], s: float) -> list[LaneRef]:
-    if not refs:
-        return []
-    forward = net.lane_forward(refs[0].road_id, refs[0].lane_id, s)
-    return sorted(refs, key=lambda r: -r.lane_id if not forward else r.lane_id, reverse=True) if forward else \
-        sorted(refs, key=lambda r: r.lane_id)
+def site_network(site: JunctionSite | RoadSite) -> RoadNetwork:
+    """The road model of the site's map (cached by the road package per path and mtime)."""
+    return load_network(site.map_path)
 
 
-def _approach(net: RoadNetwork, junction_id: str, road_id: str) -> Approach | None:
+def _map_db(path: str | Path) -> MapDatabase:
+    return load_map_database(Path(path))
+
+
+def _entry_ref(net: RoadNetwork, road_id: str, lane_id: int) -> LaneRef:
+    """The connecting lane where traffic enters it: its first section when it drives along +s, else its last."""
     road = net.roads[road_id]
-    at_end = road.successor is not None and road.successor.element_type == "junction" and \
-        road.successor.element_id == junction_id
-    s_j = road.length - 0.01 if at_end else 0.01
-    si = road.section_index(s_j)
-    lanes = []
-    for lid in net.lane_ids(road_id, s_j):
-        forward = net.lane_forward(road_id, lid, s_j)
-        if forward == at_end:  # drives toward the junction
-            lanes.append(LaneRef(road_id, si, lid))
-    lanes = _sorted_left_to_right(net, lanes, s_j)
-    if not lanes:
-        return None
+    forward = net.lane_forward(road_id, lane_id)
+    return LaneRef(road_id, 0 if forward else len(road.sections) - 1, int(lane_id))
+
+
+def _approach(net: RoadNetwork, app: DbApproach) -> Approach:
+    """The database's approach as lane references; turns sorted by (turn, connecting road) for a stable order."""
+    road = net.roads[app.road_id]
+    section = len(road.sections) - 1 if app.at_end else 0
+    lanes = tuple(LaneRef(app.road_id, section, ln.lane_id) for ln in app.lanes)
     turns = []
-    for ref in lanes:
-        conns = []
-        for nxt in net.successors(ref):
-            if net.roads[nxt.road_id].in_junction and net.roads[nxt.road_id].junction == junction_id:
-                conns.append((net.turn_type(ref, nxt), nxt))
+    for ref, ln in zip(lanes, app.lanes):
+        conns = [(e.turn.value, _entry_ref(net, e.connecting_road, e.connecting_lane)) for e in ln.edges
+                 if e.connecting_road is not None and e.connecting_lane is not None]
         turns.append((ref, tuple(sorted(conns, key=lambda c: (c[0], c[1].road_id)))))
-    _, _, h = net.lane_to_world(road_id, lanes[0].lane_id, s_j)
-    sigs = tuple(sorted(sg.id for sg in road.signals if sg.is_traffic_light))
-    stop = any(sg.type in ("206", "294") for sg in road.signals)
-    return Approach(road_id, tuple(lanes), h, tuple(turns), sigs, stop, road.length)
-
-
-@lru_cache(maxsize=64)
-def _net(path: str) -> RoadNetwork:
-    return load_network(path)
-
-
-def _map_db(path: str | Path):
-    """The map database (paper §III-A.2) of a file: its layout and control classification is what road matching
-    filters on. None when it cannot be built (the road model's own reading is used then)."""
-    try:
-        from ..mapdb import load_map_database
-
-        return load_map_database(Path(path))
-    except Exception:  # noqa: BLE001 - the database is an accelerator and classifier, never a hard dependency
-        return None
+    lights = tuple(sorted(s for s in app.signal_ids if s in net.signals and net.signals[s].is_traffic_light))
+    return Approach(app.road_id, lanes, tuple(turns), lights, app.control is Control.STOP_SIGN, road.length)
 
 
 def junction_sites(path: str | Path) -> list[JunctionSite]:
-    net = _net(str(path))
+    """One site per junction approach of the map (`db.junctions()`, `db.approaches`, `db.relative_approaches`)."""
+    net, db = load_network(path), _map_db(path)
     out = []
-    db = _map_db(path)
-    ring_junctions = _roundabout_junctions(net)
-    for jid in sorted(net.junctions):
-        j = net.junctions[jid]
-        incoming = sorted({c.incoming_road for c in j.connections if not net.roads[c.incoming_road].in_junction})
-        approaches = {rid: a for rid in incoming if (a := _approach(net, jid, rid)) is not None}
-        kind = "roundabout" if jid in ring_junctions else ("junction4" if len(approaches) >= 4 else "junction3")
-        for rid, a in approaches.items():
-            legs = {}
-            for other, b in approaches.items():
-                if other == rid:
-                    continue
-                rel = math.degrees(_wrap(b.heading - a.heading))
-                name = "opposite" if abs(rel) > 135 else ("left" if rel < 0 else "right") if abs(rel) > 45 else None
-                if name and name not in legs:
-                    legs[name] = b
-            signalised = bool(a.signals)
-            site_kind = kind
-            if db is not None and jid in db.junction_infos:
-                site_kind = db.junction_infos[jid].layout.value
-                try:
-                    control = db.approach(jid, rid).control.value
-                    signalised = control == "signal" and bool(a.signals)
-                    if control == "stop_sign" and not a.stop_sign:
-                        a = Approach(a.road_id, a.lanes, a.heading, a.turns, a.signals, True, a.length)
-                except Exception:  # noqa: BLE001 - an approach the database did not list keeps the road reading
-                    pass
-            out.append(JunctionSite(str(path), jid, a, legs, signalised, site_kind))
-    return out
-
-
-def _roundabout_junctions(net: RoadNetwork) -> set[str]:
-    """Junctions whose incoming roads include a curved non-junction road linking two junctions (a ring arc)."""
-    out = set()
-    for road in net.roads.values():
-        if road.in_junction:
-            continue
-        p, s = road.predecessor, road.successor
-        if p and s and p.element_type == "junction" and s.element_type == "junction":
-            k = abs(float(np.asarray(road.plan_view.curvature(road.length / 2)).ravel()[0]))
-            if k > 1e-3:
-                out.update({p.element_id, s.element_id})
+    for info in sorted(db.junctions(), key=lambda j: j.id):
+        for app in db.approaches(info.id):
+            ego = _approach(net, app)
+            legs = {name: _approach(net, other)
+                    for name, other in db.relative_approaches(info.id, app.road_id).items() if other is not None}
+            signalised = app.control is Control.SIGNAL and bool(ego.signals)
+            out.append(JunctionSite(str(path), info.id, ego, legs, signalised, info.layout.value))
     return out
 
 
 def road_sites(path: str | Path, *, min_length: float = 80.0) -> list[RoadSite]:
-    net = _net(str(path))
-    out = []
+    """One site per non-junction road and direction of travel (`db.roads()`), on roads of one lane section (lane
+    ids are stable along them) at least `min_length` m long."""
     db = _map_db(path)
-    import numpy as np
-
-    for rid in sorted(net.roads):
-        road = net.roads[rid]
-        if road.in_junction or road.length < min_length:
+    out = []
+    for m in sorted(db.roads(), key=lambda m: (m.road_id, not m.forward)):
+        seg = m.segment
+        if seg.length < min_length or len(seg.sections) != 1:
             continue
-        s_mid = road.length / 2
-        if road.section_index(0.0) != road.section_index(road.length - 0.01):
-            continue  # keep to single-section roads: lane ids are stable along them
-        ids = net.lane_ids(rid, s_mid)
-        curv = float(np.max(np.abs(road.plan_view.curvature(np.linspace(0, road.length, 64)))))
-        for forward in (True, False):
-            same = [LaneRef(rid, 0, lid) for lid in ids if net.lane_forward(rid, lid, s_mid) == forward]
-            other = [LaneRef(rid, 0, lid) for lid in ids if net.lane_forward(rid, lid, s_mid) != forward]
-            if not same:
-                continue
-            same = _sorted_left_to_right(net, same, s_mid)
-            other = sorted(other, key=lambda r: abs(r.lane_id))
-            if other and (abs(other[0].lane_id) != 1 or abs(same[0].lane_id) != 1):
-                other = []  # a median or other lanes between: no oncoming lane *beside* the AV
-            right = same[-1].lane_id
-            step = -1 if right < 0 else 1
-            curb = []
-            lid = right + step
-            all_ids = net.lane_ids(rid, s_mid, types=None)
-            while lid in all_ids:
-                curb.append(net.lane_type(rid, lid, s_mid))
-                lid += step
-            kind = "parking" if road.road_type == "lowSpeed" or "parking" in road.name else (
-                "curve" if curv > 1.0 / 400.0 else "straight")
-            if db is not None and rid in db.segments:
-                layouts = {lay.value for lay in db.segments[rid].layouts}
-                kind = next((k for k in ("parking", "curve", "straight") if k in layouts), kind)
-            out.append(RoadSite(str(path), rid, tuple(same), tuple(other), road.length, curv, tuple(curb), kind))
+        same = tuple(LaneRef(seg.road_id, 0, lid) for lid in m.lanes)
+        other = tuple(LaneRef(seg.road_id, 0, lid) for lid in m.oncoming)
+        if other and (abs(other[0].lane_id) != 1 or abs(same[0].lane_id) != 1):
+            other = ()  # a median or other lanes between: no oncoming lane *beside* the AV
+        kind = next((k.value for k in (Layout.PARKING, Layout.CURVE, Layout.STRAIGHT) if k in seg.layouts),
+                    "straight")
+        out.append(RoadSite(str(path), seg.road_id, same, other, seg.length, seg.max_curvature, m.right_side, kind))
     return out
