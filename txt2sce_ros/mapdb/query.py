@@ -7,7 +7,7 @@ caller drawing one candidate with a seeded `numpy.random.Generator` gets the sam
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Iterable
+from typing import TYPE_CHECKING, Iterable, TypeVar
 
 from ..errors import InputError
 from .records import (ROAD_NEEDS, Approach, ConnectionEdge, Control, JunctionInfo, Layout, RoadMatch, Segment,
@@ -34,20 +34,24 @@ def _check(needs: Iterable[str], allowed: frozenset[str], what: str) -> frozense
     return got
 
 
-def _layout(value: str | Layout | None) -> Layout | None:
+_E = TypeVar("_E", Layout, Control)
+
+
+def _member(kind: type[_E], value: str | _E | None, what: str) -> _E | None:
+    """The enum member a query argument names (None passes through); InputError listing the known values."""
     try:
-        return None if value is None else Layout(value)
+        return None if value is None else kind(value)
     except ValueError:
-        raise InputError(f"unknown layout {value!r}; known: {[m.value for m in Layout]}",
+        raise InputError(f"unknown {what} {value!r}; known: {[m.value for m in kind]}",
                          element="mapdb query") from None
+
+
+def _layout(value: str | Layout | None) -> Layout | None:
+    return _member(Layout, value, "layout")
 
 
 def _control(value: str | Control | None) -> Control | None:
-    try:
-        return None if value is None else Control(value)
-    except ValueError:
-        raise InputError(f"unknown control {value!r}; known: {[m.value for m in Control]}",
-                         element="mapdb query") from None
+    return _member(Control, value, "control")
 
 
 class MapQueries:
