@@ -58,19 +58,27 @@ def signal_state_name(state: str) -> str:
     return _LAMP_NAMES.get(state, state)
 
 
+def primary_signal(phase: etree._Element, facing: tuple[str, ...] = ()) -> etree._Element | None:
+    """The phase's primary `TrafficSignalState`: the first of `facing` (signal ids facing the AV, per the map) the
+    phase sets, else its first; None for a phase that sets no signal. The TLS mutation changes this signal, and
+    the analysis labels a scenario by it, so both must pick the same one."""
+    states = phase.findall("TrafficSignalState")
+    if not states:
+        return None
+    by_id = {s.get("trafficSignalId"): s for s in states}
+    return next((by_id[f] for f in facing if f in by_id), states[0])
+
+
 def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, ...] = ()) -> str:
     """Traffic Signal Mutation: in the controller's first phase (running while the parties interact) the primary
     signal — the first of `facing` (the signals facing the AV, per the map) the phase sets, else the phase's
     first — shows `state`; signals that showed the primary's old state follow it, the others show the
     conflicting state (red while the primary is green/yellow, green otherwise). Returns the old state."""
     phase = ctrl.find("Phase")
-    if phase is None:
+    first = primary_signal(phase, facing) if phase is not None else None
+    if first is None:
         return ""
     states = phase.findall("TrafficSignalState")
-    if not states:
-        return ""
-    by_id = {s.get("trafficSignalId"): s for s in states}
-    first = next((by_id[f] for f in facing if f in by_id), states[0])
     lamps = ";" in (first.get("state") or "")
     old = signal_state_name(first.get("state", ""))
     conflict = "green" if state == "red" else "red"
