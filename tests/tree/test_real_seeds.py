@@ -88,8 +88,17 @@ def test_tls_sets_the_signal_facing_the_av(seeds):
             continue
         ctx = build_context(parse_bytes(data, str(s)), source=str(s), seed_path=s)
         ego = ctx.starts["ego"]
-        facing = ctx.map.signals_on(ego.road, ego.lane)
-        assert ctx.ego_signals[: len(facing)] == tuple(facing) and facing
+        # the AV's lane at the stop line: its start lane, or (standing past the line, inside the junction) the
+        # lane it came from; the first facing signal controls that lane
+        approach = [(ego.road, ego.lane)]
+        if ctx.map.in_junction(ego.road):
+            ref = ctx.network.lane_ref(ego.road, ego.lane, ego.s)
+            approach = [(p.road_id, p.lane_id) for p in ctx.network.predecessors(ref)]
+        facing = [sid for road, lane in approach for sid in ctx.map.signals_on(road, lane)]
+        assert facing and ctx.ego_signals[: len(facing)] == tuple(facing)
+        first = ctx.network.signals[facing[0]]
+        assert first.road_id in {r for r, _ in approach}
+        assert not first.controlled_lanes or any(lane in first.controlled_lanes for _, lane in approach)
         block = next(b for b in disassemble(data).blocks if b.kind is BlockKind.SIGNAL)
         for v in block_variants(block, ctx, cfg, seed=0, seed_key=1):
             phase = parse_fragment(v.fragments[0]).find("Phase")

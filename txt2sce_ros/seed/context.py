@@ -190,10 +190,17 @@ class SeedContext:
     def _ego_signals(self) -> tuple[str, ...]:
         out: list[str] = []
         ego = self.starts.get("ego")
-        if self.map is not None and ego is not None:
-            for pos in [ego] + self.ego_route[1:]:
-                if self.map.has_road(pos.road):
-                    out += [sid for sid in self.map.signals_on(pos.road, pos.lane) if sid not in out]
+        if self.map is None or self.network is None or ego is None:
+            return ()
+        lanes = [(p.road, p.lane) for p in [ego] + self.ego_route[1:]]
+        if self.map.has_road(ego.road) and self.map.in_junction(ego.road):
+            # an AV standing past the stop line, inside the junction, still faces its approach's lights (the
+            # route's later roads carry the lights facing the other way)
+            ref = self.network.lane_ref(ego.road, ego.lane, ego.s)
+            lanes = [(p.road_id, p.lane_id) for p in self.network.predecessors(ref)] + lanes
+        for road, lane in lanes:
+            if self.map.has_road(road):
+                out += [sid for sid in self.map.signals_on(road, lane) if sid not in out]
         return tuple(out)
 
     # ------------------------------------------------------------------------------------------------ queries
