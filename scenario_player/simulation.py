@@ -104,8 +104,10 @@ class Simulation:
     # -- life cycle -----------------------------------------------------------------------------------------------
     def _build(self) -> None:
         sc = self.scenario
-        ctx = ParseContext(sc.source)
-        self.storyboard = build_storyboard(ctx, sc.root)
+        if sc.prebuilt:
+            self.storyboard = sc.prebuilt.pop()      # load_scenario's own, never run: fresh
+        else:
+            self.storyboard = build_storyboard(ParseContext(sc.source), sc.root)
         entities = {spec.name: Entity(spec) for spec in sc.entities}
         self.world = World(sc.network, entities, dt=self.config.dt, seed=self.config.seed,
                            parameters=sc.doc.parameters, source=sc.source)

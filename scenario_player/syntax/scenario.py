@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from lxml import etree
 
@@ -33,6 +34,9 @@ class Scenario:
     description: str = ""
     revision: tuple[int, int] = (1, 0)
     meta: dict[str, str] = field(default_factory=dict)
+    # The storyboard load_scenario built to validate the file, unused: the first Simulation takes it instead of
+    # parsing the storyboard a second time (runtime objects are stateful, so it is handed out once only).
+    prebuilt: list[Any] = field(default_factory=list, compare=False, repr=False)
 
     @property
     def root(self) -> etree._Element:
@@ -127,7 +131,8 @@ def load_scenario(path_or_text: str | Path, *, source: str | None = None, map_te
     # Parse the storyboard once now so that errors and unsupported elements surface at load.
     from ..storyboard.build import build_storyboard
 
-    build_storyboard(ctx, root)
+    board = build_storyboard(ctx, root)
     return Scenario(source=src, doc=doc, entities=tuple(specs), network=network, map_path=used_map,
                     controllers=controllers, unsupported=tuple(ctx.unsupported),
-                    description="" if header is None else header.get("description", ""), revision=rev)
+                    description="" if header is None else header.get("description", ""), revision=rev,
+                    prebuilt=[board])

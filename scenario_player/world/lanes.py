@@ -10,6 +10,7 @@ from __future__ import annotations
 import bisect
 import math
 import weakref
+from typing import Any
 
 import numpy as np
 
@@ -116,6 +117,12 @@ class TrackCache:
         self.net = net
         self.tracks: dict[LaneRef, LaneTrack] = {}
         self.succ: dict[LaneRef, list[LaneRef]] = {}
+        # Route paths by their waypoints' lane positions: the scenarios of one tree share their routes, and a
+        # LanePath costs ~0.5 ms to sample, a fair part of a short run's set-up. LanePaths are not changed after
+        # construction (only a lazily built KD-tree), so runs can share them. Bounded: a campaign runs thousands.
+        self.paths: dict[tuple, tuple[Any, tuple[LaneRef, ...]]] = {}
+
+    PATHS_KEPT = 512
 
     @classmethod
     def of(cls, net: RoadNetwork) -> "TrackCache":

@@ -181,6 +181,14 @@ class World:
         if cached is not None:
             return cached
         poses = [self.resolve_cached(w.position) for w in route.waypoints]
+        # Same waypoint lanes and s -> same lane sequence and path (both are functions of the map alone). Only
+        # successful paths are stored, so a hit never skips an error below.
+        key = tuple((p.road_id, p.lane_id, p.s) for p in poses)
+        shared = self.tracks.paths.get(key)
+        if shared is not None:
+            result = (shared[0], list(shared[1]))
+            self._routes[id(route)] = result
+            return result
         refs: list[LaneRef] = []
         for a, b in zip(poses, poses[1:]):
             if a.road_id is None or b.road_id is None:
@@ -192,6 +200,10 @@ class World:
         first, last = poses[0], poses[-1]
         path = LanePath.from_lanes(self.net, refs, s_start=first.s, s_end=last.s)
         self._routes[id(route)] = (path, refs)
+        paths = self.tracks.paths
+        if len(paths) >= self.tracks.PATHS_KEPT:
+            paths.pop(next(iter(paths)))
+        paths[key] = (path, tuple(refs))
         return path, refs
 
     # -- actions (facade) -----------------------------------------------------------------------------------------
