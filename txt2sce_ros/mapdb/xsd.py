@@ -11,6 +11,7 @@ from pathlib import Path
 from lxml import etree
 
 from ..errors import InputError, UnsupportedFeature
+from ..xosc.schema import safe_parser
 
 _SCHEMA_NAME = "opendrive_17_core.xsd"
 
@@ -31,13 +32,12 @@ def schema_path() -> Path:
 
 @lru_cache(maxsize=1)
 def _schema() -> etree.XMLSchema:
-    parser = etree.XMLParser(resolve_entities=False, no_network=True)
-    return etree.XMLSchema(etree.parse(str(schema_path()), parser))
+    return etree.XMLSchema(etree.parse(str(schema_path()), safe_parser()))
 
 
 def validation_errors(xodr: str | Path | bytes) -> list[str]:
     """Schema errors of an OpenDRIVE document (a path or the bytes), as 'line N: message'; empty when valid."""
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False)
+    parser = safe_parser()
     source = "<bytes>" if isinstance(xodr, bytes) else str(xodr)
     try:
         doc = etree.fromstring(xodr, parser) if isinstance(xodr, bytes) else etree.parse(str(xodr), parser)

@@ -78,10 +78,6 @@ def site_network(site: JunctionSite | RoadSite) -> RoadNetwork:
     return load_network(site.map_path)
 
 
-def _map_db(path: str | Path) -> MapDatabase:
-    return load_map_database(Path(path))
-
-
 def _entry_ref(net: RoadNetwork, road_id: str, lane_id: int) -> LaneRef:
     """The connecting lane where traffic enters it: its first section when it drives along +s, else its last."""
     road = net.roads[road_id]
@@ -105,7 +101,7 @@ def _approach(net: RoadNetwork, app: DbApproach) -> Approach:
 
 def junction_sites(path: str | Path) -> list[JunctionSite]:
     """One site per junction approach of the map (`db.junctions()`, `db.approaches`, `db.relative_approaches`)."""
-    net, db = load_network(path), _map_db(path)
+    net, db = load_network(path), load_map_database(Path(path))
     out = []
     for info in sorted(db.junctions(), key=lambda j: j.id):
         for app in db.approaches(info.id):
@@ -120,7 +116,7 @@ def junction_sites(path: str | Path) -> list[JunctionSite]:
 def road_sites(path: str | Path, *, min_length: float = 80.0) -> list[RoadSite]:
     """One site per non-junction road and direction of travel (`db.roads()`), on roads of one lane section (lane
     ids are stable along them) at least `min_length` m long."""
-    db = _map_db(path)
+    db: MapDatabase = load_map_database(Path(path))
     out = []
     for m in sorted(db.roads(), key=lambda m: (m.road_id, not m.forward)):
         seg = m.segment
