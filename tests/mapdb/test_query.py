@@ -84,7 +84,7 @@ def test_every_sketch_layout_finds_a_bundled_map(dbs: dict[str, MapDatabase]) ->
 
 
 def test_dev_set_sketches_find_bundled_roads(dbs: dict[str, MapDatabase]) -> None:
-    """The hand-labelled dev sketches (never the holdout): each complete one with a known layout has a match
+    """The hand-labelled dev sketches (dev set only): each complete one with a known layout has a match
     when its lane count is honoured, and a junction match with its control when that is signal or stop sign."""
     path = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
     roads = []
