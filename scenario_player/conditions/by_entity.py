@@ -47,6 +47,8 @@ class ByEntityCondition(Check):
     check: EntityCheck
 
     def holds(self, world: "World") -> bool:
+        if len(self.entities) == 1:     # the usual case, evaluated every step: skip the generator
+            return bool(self.check.holds_for(world, world.entity(self.entities[0])))
         results = (self.check.holds_for(world, world.entity(n)) for n in self.entities)
         return any(results) if self.rule == "any" else all(results)
 

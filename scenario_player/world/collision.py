@@ -63,7 +63,7 @@ def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
         geo.append((e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y,
                     0.5 * hypot(sp.length, sp.width)))
     pairs: list[tuple[str, str]] = []
-    corners: dict[int, Poly] = {}
+    corners: dict[int, Poly] | None = None
     for i in range(n - 1):
         xi, yi, ri = geo[i]
         for j in range(i + 1, n):
@@ -72,6 +72,8 @@ def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
             r = ri + rj
             if dx * dx + dy * dy > r * r:
                 continue
+            if corners is None:
+                corners = {}
             ci = corners.get(i)
             if ci is None:
                 ci = corners[i] = box_corners(live[i])
