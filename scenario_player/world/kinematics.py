@@ -20,13 +20,14 @@ Pedestrians: a point mass with the same speed/yaw-rate command, limited only by 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 G = 9.81
 
 
-@dataclass(frozen=True, slots=True)
-class BicycleResult:
+class BicycleResult(NamedTuple):
+    """One step's accepted command (a NamedTuple: built once per step for the ego, cheaper than a dataclass)."""
+
     speed: float
     yaw_rate: float
     accel: float

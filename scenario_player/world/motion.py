@@ -108,14 +108,15 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
             ok = not (abs(ent.s - end_s) < 1e-6 and not nxt)
         x, y, h = ent.track.pose(ent.s, ent.offset)
         ent._sync_road()
+        road = ent._road                # just synced from the track: read it without the stale check
         if ent.heading_override is not None and ent.offset == ent.offset:
             h = ent.heading_override
         else:
             if ent.reverse:
                 h += math.pi
-            if dist > 1e-9 and prev_road == ent.road_id:
+            if dist > 1e-9 and prev_road == road[0]:
                 # Heading follows the lateral motion too (lane changes): atan of lateral over travel.
-                lateral = (ent.road_t - prev_t) * (1.0 if ent.track.forward != ent.reverse else -1.0)
+                lateral = (road[3] - prev_t) * (1.0 if ent.track.forward != ent.reverse else -1.0)
                 h = h + math.atan2(lateral, along)
         ent.x, ent.y, ent.h = x, y, h
         if ok:
