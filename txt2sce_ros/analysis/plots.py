@@ -115,14 +115,18 @@ def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.n
             continue
         colour = "#1e88e5" if name == "ego" else next(palette, "#424242")
         lw = 2.4 if name == "ego" else 1.4
+        if np.ptp(tr[:, 1]) + np.ptp(tr[:, 2]) < 0.5:
+            # a party that never moved (parked car, debris): a marker, not an invisible zero-length line
+            ax.plot(tr[0, 1], tr[0, 2], "D", ms=8, color=colour, label=f"{name} (static)")
+            continue
         ax.plot(tr[:, 1], tr[:, 2], label=name, lw=lw, color=colour)
         ax.plot(tr[0, 1], tr[0, 2], "o", ms=5, color=colour)
         ax.plot(tr[-1, 1], tr[-1, 2], "s", ms=5, color=colour)
     # violations at (nearly) the same place share one cross and one stacked label, so texts never overprint
-    spots: dict[tuple[int, int], list[str]] = {}
+    spots: dict[tuple[int, int], tuple[float, float, list[str]]] = {}
     for x, y, text in marks:
-        spots.setdefault((round(x), round(y)), []).append(text)
-    for (x, y), texts in spots.items():
+        spots.setdefault((round(x / 4.0), round(y / 4.0)), (x, y, []))[2].append(text)
+    for x, y, texts in spots.values():
         ax.plot(x, y, "x", color="#e53935", ms=11, mew=2.2, zorder=5)
         ax.annotate("\n".join(texts), (x, y), xytext=(8, 8), textcoords="offset points", fontsize=8,
                     color="#c62828", bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="#e53935", alpha=0.85))
