@@ -263,8 +263,9 @@ class Simulation:
     def frame(self) -> Frame:
         w = self.world
         t = w.t
-        objects = tuple(e.state(t) for e in w.order if e.present and e is not self.ego)
-        return Frame(t=t, ego=self.ego.state(t), objects=objects, lights=w.signals.lights())
+        ego = self.ego
+        objects = tuple([e.state(t) for e in w.order if e.present and e is not ego])
+        return Frame(t=t, ego=ego.state(t), objects=objects, lights=w.signals.lights())
 
     @property
     def t(self) -> float:

@@ -20,11 +20,12 @@ class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
                  "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "_road",
-                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed")
+                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed", "_static")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
         self.name = spec.name
+        self._static = spec.is_static             # a property of the (immutable) spec; read for every frame
         self.x = self.y = self.h = 0.0
         self.speed = self.accel = self.yaw_rate = 0.0
         self.track: LaneTrack | None = None       # lane the entity follows (None: free motion)
@@ -113,7 +114,7 @@ class Entity:
         # Positional, in EntityState's field order: built for every entity every step, and keywords cost more.
         return EntityState(self.name, sp.category, t, self.x, self.y, (self.h + _PI) % _TWO_PI - _PI,
                            self.speed, self.accel, self.yaw_rate, sp.length, sp.width, sp.height, sp.center_x,
-                           sp.is_static)
+                           self._static)
 
 
 _PI = math.pi

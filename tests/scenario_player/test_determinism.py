@@ -51,3 +51,23 @@ def test_planner_runs_are_bit_identical_and_reset_restarts(esmini) -> None:
         while not sim.done:
             frame = sim.step(policy(frame))
         assert sim.trajectory["Ego"].tobytes() == a["Ego"].tobytes()
+
+
+def test_simulations_sharing_one_scenario_agree(esmini) -> None:
+    # The first Simulation of a Scenario runs the storyboard load_scenario built; later ones build their own; all
+    # share the map's route paths. None of that may show in the trajectories.
+    scen = load_scenario(xosc("traffic_lights"))
+    assert len(scen.prebuilt) == 1
+    runs = []
+    for _ in range(3):
+        sim = Simulation(scen, SimulationConfig(ego_mode="storyboard", time_limit=20.0))
+        sim.run()
+        runs.append(sim.trajectory)
+    assert not scen.prebuilt
+    from scenario_player.world.lanes import TrackCache
+
+    assert TrackCache.of(scen.network).paths        # the routes went through the shared path cache
+    for other in runs[1:]:
+        assert other.keys() == runs[0].keys()
+        for name in runs[0]:
+            assert other[name].tobytes() == runs[0][name].tobytes()
