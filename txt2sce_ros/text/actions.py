@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from .fastre import compile_gated
 from .lexicon import CARDINALS
 from .mentions import Mention
 
@@ -71,7 +72,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
           r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
 )
-_PHRASE_RES = [(c, re.compile(p, re.I)) for c, p in PHRASES]
+_PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
@@ -81,21 +82,21 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",),
 }
-_INTENT = re.compile(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
+_INTENT = compile_gated(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
-_NEGATED = re.compile(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
-_INTENT_OK = re.compile(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
+_NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+_INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
-_STATE_STOP = re.compile(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
+_STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
                          r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b", re.I)
-_HEADING = re.compile(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
+_HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 
-_RELATIVE = re.compile(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?"
+_RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?"
                        r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import re
 
+from .fastre import compile_gated
+
 #: Operators of AV fleets that write narratives; "<company> AV/vehicle/car/truck/shuttle" names the AV.
 COMPANIES = (
     "waymo", "cruise", "zoox", "apple", "pony\\.ai", "pony", "nuro", "ghost", "beep", "aurora", "apollo", "baidu",
@@ -58,7 +60,7 @@ EGO_PATTERNS: tuple[str, ...] = (
 )
 
 #: People who drive the AV: their manoeuvres are the AV's.
-EGO_DRIVER = re.compile(
+EGO_DRIVER = compile_gated(
     r"\b(?:the\s+|our\s+|an?\s+)?(?:(?:av|ego)\s+)?(?:(?:test|safety|vehicle|av|shuttle|remote)\s+)?"
     r"(?:driver|operator|attendant|specialist)s?\b(?!'s\s+(?:side|door|seat|seating|window|mirror))"
     r"(?!\s*-?\s*(?:side|door|seat|seating|window|mirror|'s\s+side))(?:\s+of\s+EGO)?|"
@@ -119,10 +121,10 @@ OBSTACLE_HEADS: dict[str, str] = {
     "bag": "other", "basketball hoop": "other",
 }
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
-PARKED_WORDS = re.compile(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
+PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
 
 #: Contact between two parties.
-CONTACT = re.compile(
+CONTACT = compile_gated(
     r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes?\s+contact|"
     r"(?:resulting\s+in|causing)\s+(?:a\s+)?(?:contact|collision)|contact\s+between|"
     r"came\s+into\s+contact|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
@@ -131,7 +133,7 @@ CONTACT = re.compile(
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|cycled|walked)\s+into|"
     r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into|contact\s+(?:was\s+made|occurred))\b", re.I)
-NEGATION = re.compile(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
+NEGATION = compile_gated(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
 CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,
              "west": 270, "northwest": 315}

@@ -11,27 +11,28 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from .fastre import compile_gated
 from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
                       PARKED_WORDS, PARTY_HEADS, VAN_MODELS)
 
 _QUOTES = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
-_EGO_RES = [re.compile(p, re.I) for p in EGO_PATTERNS]
-_COMPANY_RE = re.compile(rf"\b(?:{COMPANY_ALTERNATION})\b", re.I)
-_FIRST_EGO_NOUN = re.compile(r"\b(?:a|an|the)\s+(?:[A-Z][\w.-]*\s+){1,3}(shuttle|Prius|robotaxi)\b")
+_EGO_RES = [compile_gated(p, re.I) for p in EGO_PATTERNS]
+_COMPANY_RE = compile_gated(rf"\b(?:{COMPANY_ALTERNATION})\b", re.I)
+_FIRST_EGO_NOUN = compile_gated(r"\b(?:a|an|the)\s+(?:[A-Z][\w.-]*\s+){1,3}(shuttle|Prius|robotaxi)\b")
 _DROP_UPPER = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _DROP_ALPHA = str.maketrans("", "", "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")
-_NEGATED_NP = re.compile(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
-_DET_END = re.compile(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", re.I)
+_NEGATED_NP = compile_gated(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
+_DET_END = compile_gated(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", re.I)
 # ("Waymo AV"), (Vehicle 2), (car 1), (AV), (Level 4): definitions and labels, not story. Other parentheses
 # ("a fixed object (solar panel)") keep their words.
-_PAREN_DEF = re.compile(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
+_PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
                         r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*)\)", re.I)
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
-_ABBREV = re.compile(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
+_ABBREV = compile_gated(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
                      r"\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
-_SENT_SPLIT = re.compile(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
-_STREET_SUFFIX = re.compile(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
+_SENT_SPLIT = compile_gated(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
+_STREET_SUFFIX = compile_gated(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
                             r"Dr\b|Way|Lane|Ln\b|Parkway|Pkwy|Highway|Hwy|Place|Pl\b|Court|Ct\b|Terrace|Circle|"
                             r"Expressway|Alley|Plaza|Park\b|Center)")
 
@@ -58,16 +59,16 @@ def _trie_pattern(words: list[str]) -> str:
     return emit(trie)
 
 
-_HEAD_RE = re.compile(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
+_HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
-_NOT_HEAD_AFTER = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
+_NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
                              r"occupants?|passengers?)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
-_STOP_BACK = re.compile(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
+_STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
                         r"when|as|while|was|were|is|had|has|then|that|which|who|EGO|EGOD|,|;|:)$", re.I)
-_SUBJ_BEFORE = re.compile(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
+_SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
                           r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
 
 
@@ -140,7 +141,7 @@ def normalise(text: str) -> str:
     return re.sub(r"\s+", " ", t).strip()
 
 
-_OWNER_BEFORE = re.compile(r"(?:\b(?:" + "|".join(re.escape(h) for h in sorted(set(PARTY_HEADS) | set(MAKES),
+_OWNER_BEFORE = compile_gated(r"(?:\b(?:" + "|".join(re.escape(h) for h in sorted(set(PARTY_HEADS) | set(MAKES),
                                                                             key=len, reverse=True))
                            + r")(?:'s)?|\bthe\s+other(?:\s+party's)?|\btheir|\bits|\b[2-9])\s*$", re.I)
 
@@ -247,11 +248,11 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     return out
 
 
-_RIDE = re.compile(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
+_RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
                    r"\s*(?:[\w-]+\s+){0,2}$", re.I)
-_AFTER_PARKED = re.compile(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is)?\s*(?:double[- ])?parked\b", re.I)
+_AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is)?\s*(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
-_LOCATIVE_AFTER = re.compile(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
+_LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
                              r"following|traveling|that|which|in\s+the)", re.I)
 
 

@@ -5,45 +5,46 @@ from __future__ import annotations
 import re
 
 from ..sketch import Environment, RoadInfo
+from .fastre import compile_gated
 from .lexicon import NUMBER_WORDS
 
-_JUNCTION = re.compile(r"\bintersection\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
+_JUNCTION = compile_gated(r"\bintersection\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
                        r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
                        r"\bthe\s+light\s+turned\b", re.I)
-_NOT_JUNCTION = re.compile(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
+_NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
-_T_JUNCTION = re.compile(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
+_T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
-_TURN_ONTO = re.compile(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
+_TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?onto\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b", re.I)
-_PRIOR_TURN = re.compile(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
+_PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
-_ROUNDABOUT = re.compile(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
-_PARKING = re.compile(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"
+_ROUNDABOUT = compile_gated(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
+_PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"
                       r"structure|garage|facility)|garage|parking\s+area|depot|lot)\b|\bparking\s+(?:structure|"
                       r"garage)\b", re.I)
-_CURVE = re.compile(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
-_ROADWAY = re.compile(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
+_CURVE = compile_gated(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
+_ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
                       r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
                       r"road|curb|driveway|oncoming|traffic)", re.I)
-_SIGNAL = re.compile(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
+_SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b", re.I)
-_STOP_SIGN = re.compile(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
-_ONE_WAY = re.compile(r"\bone[- ]way\b", re.I)
-_TWO_WAY = re.compile(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\s+(?:lane|traffic|direction)\b|"
+_STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
+_ONE_WAY = compile_gated(r"\bone[- ]way\b", re.I)
+_TWO_WAY = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\s+(?:lane|traffic|direction)\b|"
                       r"\bon-?coming\b|\bopposite\s+lane\b|\btraveling\s+the\s+wrong\s+way\b", re.I)
-_LANES_N = re.compile(r"\b(one|two|three|four|five|six|\d)[- ]lanes?\b|\b(one|two|three|four|five|six|\d)\s+"
+_LANES_N = compile_gated(r"\b(one|two|three|four|five|six|\d)[- ]lanes?\b|\b(one|two|three|four|five|six|\d)\s+"
                       r"(?:\w+\s+)?lanes\b", re.I)
-_LANE_ORD = re.compile(r"\b(second|third|fourth|2nd|3rd|4th)\s+lane\s+from\s+the\s+(?:left|right)", re.I)
-_LANE_MIDDLE = re.compile(r"\b(?:middle|center|centre)\s+lane\b", re.I)
-_LANE_SIDE = re.compile(r"\b(?:left|right)most\b|\bfar\s+(?:left|right)\s+lane\b|\b(?:left|right)\s+lane\b|"
+_LANE_ORD = compile_gated(r"\b(second|third|fourth|2nd|3rd|4th)\s+lane\s+from\s+the\s+(?:left|right)", re.I)
+_LANE_MIDDLE = compile_gated(r"\b(?:middle|center|centre)\s+lane\b", re.I)
+_LANE_SIDE = compile_gated(r"\b(?:left|right)most\b|\bfar\s+(?:left|right)\s+lane\b|\b(?:left|right)\s+lane\b|"
                         r"\b(?:left|right)\s+(?:adjacent\s+)?lane\b|\badjacent\s+lane\b|\blane\s+to\s+the\s+(?:left|"
                         r"right)\b|\b(?:left|right)\s+turn\s+lane\b|\bturn\s+lane\b|\bbus\s+(?:only\s+)?lane\b|"
                         r"\bthe\s+(?:left|right)\s+lane\b", re.I)
-_OPPOSING_LANE = re.compile(r"\b(?:oncoming|opposing|opposite)\s+(?:\w+\s+)?lane", re.I)
+_OPPOSING_LANE = compile_gated(r"\b(?:oncoming|opposing|opposite)\s+(?:\w+\s+)?lane", re.I)
 
 _WEATHER_P = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
             ("snow", r"\bsnow(?:ing|y)?\b|\bsleet\b"), ("cloudy", r"\bcloudy\b|\bovercast\b"),
@@ -51,16 +52,16 @@ _WEATHER_P = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)
                       r"\bweather\s+was\s+clear\b"))
 _SURFACE_P = (("wet", r"\bwet\b|\bslick\b|\bpuddl"), ("snow_ice", r"\bic(?:y|e)\b|\bsnow[- ]covered\b"),
             ("dry", r"\bdry\s+(?:road|pavement|surface|roadway)\b|\bsurface:?\s+dry\b"))
-_WEATHER = tuple((w, re.compile(p, re.I)) for w, p in _WEATHER_P)
-_SURFACE = tuple((w, re.compile(p, re.I)) for w, p in _SURFACE_P)
-_CLOCK = re.compile(r"\b(\d{1,2})(?::(\d{2}))?\s*(a\.?m\.?|p\.?m\.?)(?![a-z])", re.I)
+_WEATHER = tuple((w, compile_gated(p, re.I)) for w, p in _WEATHER_P)
+_SURFACE = tuple((w, compile_gated(p, re.I)) for w, p in _SURFACE_P)
+_CLOCK = compile_gated(r"\b(\d{1,2})(?::(\d{2}))?\s*(a\.?m\.?|p\.?m\.?)(?![a-z])", re.I)
 
 
-_LIGHT = (("dusk_dawn", re.compile(r"\b(?:dusk|dawn|twilight|sunset|sunrise)\b", re.I)),
-          ("day", re.compile(r"\b(?:daylight|daytime|sunny\s+day)\b", re.I)),
-          ("night_dark", re.compile(r"\bdark\b[^.]{0,30}\b(?:no|without)\s+street\s*lights?|\bunlit\b|"
+_LIGHT = (("dusk_dawn", compile_gated(r"\b(?:dusk|dawn|twilight|sunset|sunrise)\b", re.I)),
+          ("day", compile_gated(r"\b(?:daylight|daytime|sunny\s+day)\b", re.I)),
+          ("night_dark", compile_gated(r"\bdark\b[^.]{0,30}\b(?:no|without)\s+street\s*lights?|\bunlit\b|"
                                     r"\bpitch\s+dark", re.I)),
-          ("night_lit", re.compile(r"\bstreet\s*lights?\b|\bdark\b|\bnight(?:time)?\b", re.I)))
+          ("night_lit", compile_gated(r"\bstreet\s*lights?\b|\bdark\b|\bnight(?:time)?\b", re.I)))
 
 
 def lighting_from_text(t: str) -> str:
@@ -84,13 +85,13 @@ def environment(t: str) -> Environment:
     return Environment(weather=weather, lighting=lighting_from_text(t), surface=surface)  # type: ignore[arg-type]
 
 
-_LOT_EXIT = re.compile(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+_LOT_EXIT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+)?"
                        r"(?:parking\s+(?:lot|garage|structure|space|spot)|driveway|garage|alley|lot)\b[^.]*?"
                        r"(?:\bonto\b|$)", re.I)
-_ONGOING_TURN = re.compile(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)
+_ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)
 
 
-_DISPLAYED = re.compile(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
+_DISPLAYED = compile_gated(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
 
 
 def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = frozenset()) -> bool:

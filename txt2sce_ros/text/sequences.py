@@ -6,6 +6,7 @@ import re
 
 from ..sketch import Party
 from .actions import Act, turn_from_headings
+from .fastre import compile_gated
 from .mentions import Entity
 from .story import Doc, before_contact, context
 
@@ -109,7 +110,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     return sequence(prefix + post, stopped=stopped, ego=True, side=None)
 
 
-_MOD_ACTS = (("m", re.compile(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", re.compile(r"\boncoming\b|\bapproaching\b|"
+_MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", compile_gated(r"\boncoming\b|\bapproaching\b|"
                                                                                        r"\bfollowing\b", re.I)))
 
 

@@ -10,32 +10,33 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from .actions import Act, who_for, heading_of
+from .actions import Act, heading_of, who_for
+from .fastre import compile_gated
 from .lexicon import CONTACT, NEGATION
 from .mentions import Entity, Mention
 
-_SUMMARY = re.compile(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
+_SUMMARY = compile_gated(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
                       r"\b|\breceived\s+notice\b|\bcollision\s+involving\b", re.I)
 
 
-BOILERPLATE = re.compile(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+supplement\b|\breport\s+was\s+(?:originally|"
+BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+supplement\b|\breport\s+was\s+(?:originally|"
                           r"updated)\b|\bsubmitted\b", re.I)
 
 
-_DOOR = re.compile(r"\bopen(?:ed|ing|s)?\s+(?:\w+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
+_DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:\w+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
                    r"\b|\bdooring\b", re.I)
 
 
-_AROUND = re.compile(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
+_AROUND = compile_gated(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
                      r"(?:the\s+(?:left|right)\s+side\s+of\s+)?"
                      r"(?:a|an|the|another)?\s*(?:[\w-]+\s+){0,3}$", re.I)
 
 
-_AROUND_ONLY = re.compile(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?(?:a|an|the|another)?\s*"
+_AROUND_ONLY = compile_gated(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?(?:a|an|the|another)?\s*"
                           r"(?:[\w-]+\s+){0,3}$|\baround\s+(?:a|an|the)\s+[\w\s-]{0,30}\band\s+(?:a|an|the)?\s*$", re.I)
 
 
-_CONTACT_NOTHING = re.compile(r"\b(?:pavement|undercarriage|pothole|road\s+surface|ground|speed\s+bump|dip)\b", re.I)
+_CONTACT_NOTHING = compile_gated(r"\b(?:pavement|undercarriage|pothole|road\s+surface|ground|speed\s+bump|dip)\b", re.I)
 
 
 @dataclass
@@ -127,7 +128,7 @@ def find_contact(d: Doc) -> None:
                 break
 
 
-_AFTERWARDS = re.compile(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
+_AFTERWARDS = compile_gated(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
                          r"\bdamaging\b|\bresulting\b", re.I)
 
 
@@ -241,7 +242,7 @@ def context(d: Doc, e: Entity) -> str:
     return " | ".join(parts)
 
 
-TURN_WORDS = re.compile(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
+TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
                          r"\b(?:left|right)\s+lane"
                          r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
                          r"scene", re.I)

@@ -1,0 +1,78 @@
+"""The literal prefilter must never change a result: checked against the raw regex on every dev sentence."""
+
+from __future__ import annotations
+
+import importlib
+import json
+import re
+
+import pytest
+
+from txt2sce_ros.paths import shared_dir
+from txt2sce_ros.text.fastre import Gated, factors_of, gate
+from txt2sce_ros.text.mentions import normalise, sentences
+
+_MODULES = ("lexicon", "mentions", "actions", "story", "sequences", "scene")
+
+
+def _gated_patterns() -> list[tuple[str, Gated]]:
+    out: list[tuple[str, Gated]] = []
+    for name in _MODULES:
+        mod = importlib.import_module(f"txt2sce_ros.text.{name}")
+        for key, val in vars(mod).items():
+            items = val if isinstance(val, (list, tuple)) else [val]
+            for k, item in enumerate(items):
+                if isinstance(item, tuple) and len(item) == 2:
+                    item = item[1]
+                if isinstance(item, Gated):
+                    out.append((f"{name}.{key}[{k}]", item))
+    return out
+
+
+@pytest.fixture(scope="module")
+def texts() -> list[str]:
+    path = shared_dir() / "data" / "reports" / "dev.jsonl"
+    rows = [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
+    out: list[str] = []
+    for r in rows:
+        t = normalise(r["text"])
+        out += [r["text"], t] + sentences(t)
+    return out
+
+
+def test_most_extractor_patterns_are_gated() -> None:
+    gated = _gated_patterns()
+    assert len(gated) >= 60, [n for n, _ in gated]
+
+
+def test_gated_patterns_agree_with_the_raw_regex_on_dev(texts: list[str]) -> None:
+    skipped = 0
+    for name, g in _gated_patterns():
+        for s in texts:
+            raw = [m.span() for m in g.rx.finditer(s)]
+            assert [m.span() for m in g.finditer(s)] == raw, (name, s)
+            assert (g.search(s) is None) == (not raw), (name, s)
+            assert g.sub("#", s) == g.rx.sub("#", s), (name, s)
+            skipped += not g._may_match(s)
+    assert skipped > 1000  # the gate does skip work on real text, or it is pure overhead
+
+
+def test_factors_of_a_word_alternation() -> None:
+    rx = re.compile(r"\b(?:collided|colliding|collision\s+with|struck)\b", re.I)
+    fs = factors_of(rx)
+    assert fs is not None and "struck" in fs and len(fs) <= 4
+    for word in ("collided", "colliding", "collision with", "struck"):  # every match holds a factor
+        assert any(f in word for f in fs), word
+    assert not any(f in "the car stopped beside the curb" for f in fs)
+    # A pattern that can match without a literal gets no gate.
+    assert factors_of(re.compile(r"\s*(?:that\s+)?", re.I)) is None
+    assert factors_of(re.compile(r"\b(?:it|he)\b")) is None  # factors too short to pay off
+
+
+def test_non_ascii_text_always_runs_the_regex() -> None:
+    # Under IGNORECASE "k" matches the Kelvin sign, which str.lower() does not turn into "k".
+    g = gate(re.compile(r"\bkelvin\s+struck\s+(?:something|another\s+vehicle)", re.I))
+    assert isinstance(g, Gated)
+    s = "A careful narrative in which \u212aelvin struck another vehicle at the junction."
+    assert g.search(s) is not None and g.rx.search(s) is not None
+    assert g.search(s.replace("\u212a", "X")) is None
