@@ -26,10 +26,16 @@ except ImportError:  # pragma: no cover - Python < 3.11
     import sre_constants as _c  # type: ignore[no-redef]
     import sre_parse as _p  # type: ignore[no-redef]
 
-#: Texts shorter than this always run the regex: on a few dozen characters the scan is as cheap as the check.
-MIN_GATED_LEN = 48
-#: Factors shorter than this are found in nearly every sentence and make the check pure overhead.
+#: Texts shorter than this always run the regex: on a few characters the scan is as cheap as the check.
+MIN_GATED_LEN = 24
+#: Factors shorter than this are found in nearly every sentence and make the check pure overhead ...
 MIN_FACTOR_LEN = 3
+#: ... except punctuation that narratives seldom use ("(" of a parenthesis, "#").
+RARE_CHARS = frozenset("()[]{}#:;/\"\\")
+#: Words in nearly every narrative: a factor set built on one of them almost never skips a scan, so the derivation
+#: prefers another required part of the pattern ("ran over": "ran", not "over").
+COMMON = frozenset({"the", "and", "was", "were", "into", "over", "with", "that", "this", "from", "for", "its", "his",
+                    "her", "then", "when", "while", "which", "who", "are", "has", "had", "been", "not", "vehicle"})
 
 _REPEATS = {_c.MAX_REPEAT, _c.MIN_REPEAT} | ({_c.POSSESSIVE_REPEAT} if hasattr(_c, "POSSESSIVE_REPEAT") else set())
 
@@ -44,8 +50,14 @@ def _minimal(factors: set[str]) -> frozenset[str]:
     return frozenset(out)
 
 
+def _useful_len(f: str) -> int:
+    if f in COMMON:
+        return 1
+    return 3 if len(f) < 3 and all(ch in RARE_CHARS for ch in f) else len(f)
+
+
 def _score(fs: frozenset[str]) -> tuple[int, int]:
-    return (min(len(f) for f in fs), -len(fs))
+    return (min(_useful_len(f) for f in fs), -len(fs))
 
 
 def _factors(seq: Any) -> frozenset[str] | None:
@@ -94,9 +106,25 @@ def factors_of(rx: re.Pattern[str]) -> frozenset[str] | None:
         fs = _factors(_p.parse(rx.pattern, rx.flags))
     except Exception:  # an unexpected parse-tree shape: no gate, the regex always runs (always correct)
         return None
-    if not fs or not all(f.isascii() for f in fs) or min(len(f) for f in fs) < MIN_FACTOR_LEN:
+    if not fs or not all(f.isascii() for f in fs) or min(_useful_len(f) for f in fs) < MIN_FACTOR_LEN:
         return None
     return fs
+
+
+# The text last lowercased, and its lowercase: the extractor runs a dozen patterns over one sentence in a row.
+# One tuple, replaced whole, so a reader never pairs a text with another text's lowercase.
+_last: tuple[str, str | None] = ("", "")
+
+
+def _lower_ascii(s: str) -> str | None:
+    """`s.lower()` for an ASCII text, None for any other (cached for the latest text)."""
+    global _last
+    last = _last
+    if last[0] is s:
+        return last[1]
+    low = s.lower() if s.isascii() else None
+    _last = (s, low)
+    return low
 
 
 class Gated:
@@ -112,9 +140,11 @@ class Gated:
         self.flags = rx.flags
 
     def _may_match(self, s: str) -> bool:
-        if len(s) < MIN_GATED_LEN or not s.isascii():
+        if len(s) < MIN_GATED_LEN:
             return True
-        low = s.lower()
+        low = _lower_ascii(s)
+        if low is None:
+            return True
         for f in self.factors:
             if f in low:
                 return True

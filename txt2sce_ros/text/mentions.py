@@ -173,7 +173,8 @@ def _category(head: str, mods: str) -> tuple[str, str]:
         return "group", "group"
     if h in PARTY_HEADS:
         cat = PARTY_HEADS[h]
-        if any(v in mods.lower().split() for v in VAN_MODELS):
+        words = mods.lower().split()  # once, not once per model name
+        if any(v in words for v in VAN_MODELS):
             cat = "van"
         return "party", cat
     if h in VAN_MODELS:
