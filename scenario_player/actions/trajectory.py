@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from lxml import etree
 
+from ..syntax.positions import WorldPosition
 from ..syntax.routes import Clothoid, Nurbs, Polyline, Trajectory
 from ..syntax.xml import ParseContext
 from .base import LATERAL, LONGITUDINAL, ActionRun
@@ -57,11 +58,19 @@ class FollowTrajectoryAction:
         return TrajectoryRun(ent, pts, times if timed else None, self.timing, self.initial_distance, world.t)
 
 
+def _xy(world: "World", position: object) -> tuple[float, float]:
+    """A shape point's (x, y). A WorldPosition is its own point: resolving it would also locate it on a lane
+    (~0.1 ms per vertex, dozens per trajectory), which a shape's points do not use."""
+    if isinstance(position, WorldPosition):
+        return position.x, position.y
+    pose = position.resolve(world)  # type: ignore[attr-defined]
+    return pose.x, pose.y
+
+
 def sample_shape(world: "World", traj: Trajectory) -> tuple[np.ndarray, np.ndarray | None]:
     shape = traj.shape
     if isinstance(shape, Polyline):
-        poses = [v.position.resolve(world) for v in shape.vertices]
-        pts = np.array([[p.x, p.y] for p in poses], dtype=float)
+        pts = np.array([_xy(world, v.position) for v in shape.vertices], dtype=float)
         times = [v.time for v in shape.vertices]
         return pts, (None if any(t is None for t in times) else np.array(times, dtype=float))
     if isinstance(shape, Clothoid):
@@ -90,8 +99,7 @@ def _nurbs(world: "World", nb: Nurbs) -> tuple[np.ndarray, np.ndarray | None]:
     """Sample the rational B-spline about every metre of its control polygon. Times: each control point's time
     belongs to the parameter where its basis function peaks, and is interpolated linearly in the parameter in
     between (how esmini times NURBS trajectories)."""
-    poses = [cp.position.resolve(world) for cp in nb.points]
-    ctrl = np.array([[p.x, p.y] for p in poses], dtype=float)
+    ctrl = np.array([_xy(world, cp.position) for cp in nb.points], dtype=float)
     w = np.array([cp.weight for cp in nb.points], dtype=float)
     ctimes = [cp.time for cp in nb.points]
     knots = np.array(nb.knots, dtype=float)
