@@ -82,6 +82,8 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",),
 }
+_NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
+_ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 _INTENT = compile_gated(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
@@ -159,9 +161,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
     """The manoeuvres in one sentence, each attributed to its doer."""
     spans: list[tuple[int, int, str]] = []
     low = s.lower()
+    present = {w for w in _ALL_NEEDS if w in low}  # one pass over the words, not one per code
     for code, rx in _PHRASE_RES:
-        needs = _NEEDS.get(code)
-        if needs is not None and not any(w in low for w in needs):
+        needs = _NEEDS_SETS.get(code)
+        if needs is not None and not needs & present:
             continue
         for m in rx.finditer(s):
             if any(m.start() < e and m.end() > b for b, e, _ in spans):

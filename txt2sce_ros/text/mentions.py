@@ -104,8 +104,8 @@ class Entity:
 
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
-    t = text.translate(_QUOTES)
-    t = re.sub(r"\s+", " ", t).strip()
+    quoted = text.translate(_QUOTES)
+    t = re.sub(r"\s+", " ", quoted).strip()
     n_upper = len(t) - len(t.translate(_DROP_UPPER))
     n_alpha = len(t) - len(t.translate(_DROP_ALPHA))
     if n_upper > 0.6 * n_alpha:
@@ -124,7 +124,7 @@ def normalise(text: str) -> str:
                    "EGO's", t)
     # "a Navya ARMA shuttle ... the shuttle", "a Nuro Prius ... the Prius": a distinctive noun the AV was named
     # with (with its operator's name) refers to the AV afterwards.
-    first_ego = _FIRST_EGO_NOUN.search(text.translate(_QUOTES))
+    first_ego = _FIRST_EGO_NOUN.search(quoted)
     if first_ego and _COMPANY_RE.search(first_ego.group(0)):
         t = re.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
     if "EGO" not in t:

@@ -55,11 +55,14 @@ class Doc:
     struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
 
 
+_FORM_FIELD = compile_gated(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s")  # "Weather: ", "Lighting Conditions: "
+
+
 def summary_sentences(sents: list[str]) -> set[int]:
     """Sentences that summarise or administer rather than tell: "was in a collision involving an SUV", "Waymo is
     reporting this crash under ...", form headers ("Weather: Clear Passengers: 4 ...")."""
     out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or BOILERPLATE.search(s)
-           or len(re.findall(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s", s)) >= 3}
+           or len(_FORM_FIELD.findall(s)) >= 3}
     if sents and CONTACT.search(sents[0]) and any(CONTACT.search(s) for s in sents[1:]):
         out.add(0)
     return out
@@ -275,19 +278,27 @@ def heading(d: Doc, who: int) -> int | None:
     return None
 
 
+# "the rear driver side of EGO": up to six words before "of/on/to EGO". The quantifiers inside the group are
+# possessive: a word ([\w-]) is always followed by whitespace and whitespace by a word or "of", so giving back
+# characters can never lead to a match - possessive matching finds the same matches without the backtracking that
+# made this pattern cost more than any other in the extractor.
+_PART_OF_EGO = compile_gated(r"((?:[\w-]++\s++){1,6})(?:of|on|to)\s+EGO\b")
+_PASSIVE_CONTACT = compile_gated(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
+                                 r"\b([^.]{0,80}?)(?:\bby\b|$)")
+_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+\s+){1,6})")
+
+
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
     """Where the AV was touched, (front/rear, left/right), from the contact sentence's "the rear driver side of
     EGO" / "EGO's front bumper" (US vehicles: the driver side is the left)."""
     if d.contact_sent is None:
         return None, None
     s = d.sents[d.contact_sent]
-    parts = [m.group(1) for m in re.finditer(r"((?:[\w-]+\s+){1,6})(?:of|on|to)\s+EGO\b", s)]
-    passive = re.search(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)\b"
-                        r"([^.]{0,80}?)"
-                        r"(?:\bby\b|$)", s)
+    parts = [m.group(1) for m in _PART_OF_EGO.finditer(s)]
+    passive = _PASSIVE_CONTACT.search(s)
     if passive:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
-    parts += [m.group(1) for m in re.finditer(r"\bEGO's\s+((?:[\w-]+\s+){1,6})", s)]
+    parts += [m.group(1) for m in _EGOS_PART.finditer(s)]
     text = " ".join(parts).lower()
     fore = "rear" if re.search(r"\brear\b|\bback\b|\btail", text) else "front" if re.search(r"\bfront\b|\bhood\b",
                                                                                           text) else None
