@@ -9,7 +9,7 @@ import re
 import pytest
 
 from txt2sce_ros.paths import shared_dir
-from txt2sce_ros.text.fastre import Gated, factors_of, gate
+from txt2sce_ros.text.fastre import Gated, factors_of, folded, gate
 from txt2sce_ros.text.mentions import normalise, sentences
 
 _MODULES = ("lexicon", "mentions", "actions", "story", "sequences", "scene")
@@ -43,6 +43,7 @@ def texts() -> list[str]:
 def test_most_extractor_patterns_are_gated() -> None:
     gated = _gated_patterns()
     assert len(gated) >= 60, [n for n, _ in gated]
+    assert sum(g.cs is not None for _, g in gated) >= 60  # and scanned case-folded
 
 
 def test_gated_patterns_agree_with_the_raw_regex_on_dev(texts: list[str]) -> None:
@@ -53,6 +54,7 @@ def test_gated_patterns_agree_with_the_raw_regex_on_dev(texts: list[str]) -> Non
             assert [m.span() for m in g.finditer(s)] == raw, (name, s)
             assert (g.search(s) is None) == (not raw), (name, s)
             assert g.sub("#", s) == g.rx.sub("#", s), (name, s)
+            assert g.findall(s) == g.rx.findall(s), (name, s)
             skipped += not g._may_match(s)
     assert skipped > 1000  # the gate does skip work on real text, or it is pure overhead
 
@@ -88,3 +90,22 @@ def test_possessive_part_of_ego_matches_the_backtracking_original(texts: list[st
         assert [(m.span(), m.group(1)) for m in _PART_OF_EGO.finditer(s)] == want, s
         found += len(want)
     assert found > 50
+
+
+def test_folded_classes_match_as_ignorecase_does() -> None:
+    # Every ASCII character through classes with letters, ranges, negation, and a literal alternation.
+    for pat in (r"[^A-Z]", r"[A-Fx]", r"[^a-c.]", r"[^\S ]", r"\bSt\.(?=\s+[a-z0-9(,])", r"(?:Mt|dr)\.", r"[^K]"):
+        rx = re.compile(pat, re.I)
+        cs = folded(rx)
+        assert cs is not None, pat
+        for code in range(128):
+            ch = chr(code)
+            for s in (ch, f"St.{ch}x", f"dR.{ch}"):
+                want = [m.span() for m in rx.finditer(s)]
+                assert [m.span() for m in cs.finditer(s.lower())] == want, (pat, s)
+
+
+def test_scoped_case_sensitivity_is_not_folded() -> None:
+    assert folded(re.compile(r"\bthe\s+(?-i:[A-Z])\w+", re.I)) is None
+    assert folded(re.compile(r"(a)\1", re.I)) is None  # back-reference
+    assert folded(re.compile(r"plain")) is None  # case-sensitive already
