@@ -18,7 +18,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fresh", action="store_true", help="delete the output directory first")
     parser.add_argument("--no-ros", action="store_true", help="skip the run over the ROS 2 node graph")
     add_campaign_options(parser)
-    parser.set_defaults(max_seeds=None)
+    # A demo should finish in a few minutes: the paper's mutation settings, but at most 60 nodes per tree (the
+    # budget is spread over every layer, so each block is still inserted). `txt2sce campaign` has no such cap.
+    parser.set_defaults(max_seeds=None, max_nodes=60)
 
 
 def run(args: argparse.Namespace) -> int:
