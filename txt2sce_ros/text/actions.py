@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CARDINALS
 from .mentions import Mention
@@ -124,7 +125,7 @@ def heading_of(s: str) -> int | None:
 
 def turn_from_headings(s: str) -> str | None:
     """"from southbound X to westbound Y" / "southbound ... onto westbound": the turn's side by the heading change."""
-    found = [CARDINALS[w.lower()] for w in re.findall(rf"\b({_DIR})bound\b", s, re.I)]
+    found = [CARDINALS[w.lower()] for w in fre.findall(rf"\b({_DIR})bound\b", s, re.I)]
     if len(found) < 2:
         return None
     diff = (found[1] - found[0]) % 360
@@ -145,7 +146,7 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
             best = earlier[0]
         else:
             return fallback
-    if best is None and re.match(r"\s*(?:during|following)\b", sentence, re.I):
+    if best is None and fre.match(r"\s*(?:during|following)\b", sentence, re.I):
         return fallback
     if best is None:
         for m in ments:
@@ -185,7 +186,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
         left = [m for m in ments if m.end <= b]
         rel = left[-1] if left and _RELATIVE.fullmatch(s[left[-1].end:b]) else None
-        if rel is not None and not rel.subject and not re.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
+        if rel is not None and not rel.subject and not fre.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
                 not (s[rel.end:b].strip() == "" and s[b:e].lower().endswith("ing")):
             rel = None  # "from the left of EGO was slowing": EGO here is no subject
         if inside:

@@ -10,10 +10,9 @@ lists are in `lexicon`.
 
 from __future__ import annotations
 
-import re
-
 from ..errors import InputError
 from ..sketch import Collision, EgoInfo, Obstacle, Party, Sketch
+from . import fastre as fre
 from .actions import find_acts
 from .mentions import find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
@@ -60,7 +59,7 @@ def extract(text: str, report_id: str) -> Sketch:
     if ego_start == "moving" and not ego_actions:
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
     ego_heading = heading(d, -1)
-    ego_turning = bool(set(ego_actions) & set("dej")) or bool(re.search(r"\bturn(?:ed|ing)\b", t)) and junction
+    ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(r"\bturn(?:ed|ing)\b", t)) and junction
     npcs: list[Party] = []
     missing: list[str] = []
     idmap: dict[int, str] = {}
@@ -77,7 +76,7 @@ def extract(text: str, report_id: str) -> Sketch:
             # "A passenger car, traveling in the same direction, was stopped in the adjacent lane": the scene's
             # opening state is stopped; the participle before it only describes the car.
             pacts = pacts[setup_stop[0]:]
-        stopped = bool(re.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
+        stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
         start, acts = sequence(pacts, stopped=stopped, ego=False, side=lane)
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5":
             acts = "a" + acts  # it travelled along the AV's road before turning off it

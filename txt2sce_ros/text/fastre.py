@@ -318,3 +318,48 @@ def gate(rx: re.Pattern[str]) -> re.Pattern[str]:
 def compile_gated(pattern: str, flags: int = 0) -> re.Pattern[str]:
     """`re.compile` + `gate`."""
     return gate(re.compile(pattern, flags))
+
+
+# `re`'s module functions over gated, folded patterns, for the extractor's rules that name their pattern inline.
+# Cached like `re`'s own cache; patterns built from the text ("the <noun>") make it grow, so it is bounded.
+_CACHE: dict[tuple[str, int], re.Pattern[str]] = {}
+_CACHE_MAX = 1024
+
+
+def _cached(pattern: str, flags: int) -> re.Pattern[str]:
+    key = (pattern, int(flags))
+    rx = _CACHE.get(key)
+    if rx is None:
+        if len(_CACHE) >= _CACHE_MAX:
+            _CACHE.clear()
+        rx = _CACHE[key] = compile_gated(pattern, flags)
+    return rx
+
+
+def search(pattern: str, string: str, flags: int = 0) -> re.Match[str] | None:
+    return _cached(pattern, flags).search(string)
+
+
+def match(pattern: str, string: str, flags: int = 0) -> re.Match[str] | None:
+    return _cached(pattern, flags).match(string)
+
+
+def fullmatch(pattern: str, string: str, flags: int = 0) -> re.Match[str] | None:
+    return _cached(pattern, flags).fullmatch(string)
+
+
+def finditer(pattern: str, string: str, flags: int = 0) -> Iterator[re.Match[str]]:
+    return _cached(pattern, flags).finditer(string)
+
+
+def findall(pattern: str, string: str, flags: int = 0) -> list[Any]:
+    return _cached(pattern, flags).findall(string)
+
+
+def sub(pattern: str, repl: str | Callable[[re.Match[str]], str], string: str, count: int = 0,
+        flags: int = 0) -> str:
+    return _cached(pattern, flags).sub(repl, string, count)
+
+
+def split(pattern: str, string: str, maxsplit: int = 0, flags: int = 0) -> list[str]:
+    return _cached(pattern, flags).split(string, maxsplit)

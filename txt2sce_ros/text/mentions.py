@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
                       PARKED_WORDS, PARTY_HEADS, VAN_MODELS)
@@ -105,40 +106,40 @@ class Entity:
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     quoted = text.translate(_QUOTES)
-    t = re.sub(r"\s+", " ", quoted).strip()
+    t = fre.sub(r"\s+", " ", quoted).strip()
     n_upper = len(t) - len(t.translate(_DROP_UPPER))
     n_alpha = len(t) - len(t.translate(_DROP_ALPHA))
     if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
-    for m in re.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
+    for m in fre.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
         head = m.group(1)
-        t = re.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
+        t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
     t = _PAREN_DEF.sub("", t)
     for rx in _EGO_RES:
         t = rx.sub(" EGO", t)
-    if re.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
+    if fre.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us").
-        t = re.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
-        t = re.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
+        t = fre.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
+        t = fre.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
                    "EGO's", t)
     # "a Navya ARMA shuttle ... the shuttle", "a Nuro Prius ... the Prius": a distinctive noun the AV was named
     # with (with its operator's name) refers to the AV afterwards.
     first_ego = _FIRST_EGO_NOUN.search(quoted)
     if first_ego and _COMPANY_RE.search(first_ego.group(0)):
-        t = re.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
+        t = fre.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
     if "EGO" not in t:
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
         # the narrative introduces is the AV, and so is that noun with "the" afterwards.
-        first = re.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
+        first = fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
         if first:
             noun = first.group(1)
-            t = t[:first.start()] + "EGO" + re.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
-    t = re.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
+            t = t[:first.start()] + "EGO" + fre.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
+    t = fre.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
     t = EGO_DRIVER.sub(_ego_driver, t)
-    t = re.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
-    t = re.sub(r"\bEGO\s+EGOD\b", "EGOD", t)
-    return re.sub(r"\s+", " ", t).strip()
+    t = fre.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
+    t = fre.sub(r"\bEGO\s+EGOD\b", "EGOD", t)
+    return fre.sub(r"\s+", " ", t).strip()
 
 
 _OWNER_BEFORE = compile_gated(r"(?:\b(?:" + "|".join(re.escape(h) for h in sorted(set(PARTY_HEADS) | set(MAKES),
@@ -151,7 +152,7 @@ def _ego_driver(m: re.Match[str]) -> str:
     driver of the Lexus")."""
     before = m.string[max(0, m.start() - 30):m.start()]
     after = m.string[m.end():m.end() + 12]
-    if "EGO" not in m.group(0) and (_OWNER_BEFORE.search(before) or re.match(r"\s+of\s+(?:the|a|an)\s", after)):
+    if "EGO" not in m.group(0) and (_OWNER_BEFORE.search(before) or fre.match(r"\s+of\s+(?:the|a|an)\s", after)):
         return m.group(0)
     return " EGOD"
 
@@ -233,7 +234,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         gap = s[out[-1].end:m.start()] if out else ""
         # "Toyota Corolla", "Mercedes SUV", and a make with a model code between: "Lexus RX 350 vehicle".
         if out and out[-1].kind in ("party",) and kind == "party" and (gap.strip() == "" or (
-                out[-1].head in MAKES and re.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap))):
+                out[-1].head in MAKES and fre.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap))):
             prev = out.pop()
             if prev.category == "van" and cat == "car":
                 cat = "van"
@@ -312,17 +313,17 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             continue
         target: Entity | None = None
         live = [e for e in ents if e.merged_into is None]
-        if m.head in _RIDES and re.search(r"\b(?:abandoned|unattended|dropped|fallen|parked|discarded)\b", m.mods):
+        if m.head in _RIDES and fre.search(r"\b(?:abandoned|unattended|dropped|fallen|parked|discarded)\b", m.mods):
             m.kind, m.category = "obstacle", "other"  # a scooter left lying in the road is an object
         # "The trailing vehicle is a bus": a predicate noun names the same party more precisely.
         if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
-                and prev.entity >= 0 and re.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)):
+                and prev.entity >= 0 and fre.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)):
             m.det = "the"
             target = ents[prev.entity]
             target.category = m.category if m.category != "car" else target.category
         # "the curb of a traffic island median": one object named twice.
         if m.kind == "obstacle" and prev is not None and prev.kind == "obstacle" and prev.sent == m.sent and \
-                prev.entity >= 0 and re.fullmatch(r"\s*(?:of|on)\s+(?:a|an|the)?\s*", _between(sents, prev, m)):
+                prev.entity >= 0 and fre.fullmatch(r"\s*(?:of|on)\s+(?:a|an|the)?\s*", _between(sents, prev, m)):
             target = ents[prev.entity]
             target.heads.add(m.head)
             if m.category == "barrier":

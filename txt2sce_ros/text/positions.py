@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from . import fastre as fre
 from .mentions import Entity
 from .story import TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
 
@@ -12,58 +13,58 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     """(position, lane, known): where the party was relative to the AV when the interaction began.
     `behind_av`: head nouns of parties already placed behind the AV (R6); whoever follows them is behind too."""
     ctx = context(d, e)
-    queue = re.search(r"\b(?:behind|following|trailing)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?([\w-]+)", ctx, re.I)
+    queue = fre.search(r"\b(?:behind|following|trailing)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?([\w-]+)", ctx, re.I)
     if queue and queue.group(1).lower() in behind_av:
         return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
-    pre = " ".join(re.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
+    pre = " ".join(fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
                    for m in e.mentions[:2])
     full = " ".join(d.sents[m.sent] for m in e.mentions)
-    passing = re.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
+    passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
                         r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind.
-    if passing and not re.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I):
+    if passing and not fre.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I):
         return "R6", (passing.group(1) or "").lower() or side_named(ctx[passing.end():passing.end() + 30]) or cside or \
             "same", True
-    if re.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
+    if fre.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"
                  r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\bfrom\s+behind\b|\bfrom\s+the\s+rear\b|"
                  r"\bto\s+EGO's\s+rear\b|^\s*\S*\s*behind\b|\b(?:following|trailing|behind)\s+(?:vehicle|car)|"
                  r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
-                 ctx, re.I) or re.search(r"\b(?:following|trailing)\s*$", pre, re.I):
+                 ctx, re.I) or fre.search(r"\b(?:following|trailing)\s*$", pre, re.I):
         side = None
-        if re.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", ctx, re.I):
-            side = side_named(re.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", ctx, re.I).group(0))
-        elif re.search(r"\bbehind\s+and\s+to\s+the\s+(left|right)", ctx, re.I):
+        if fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", ctx, re.I):
+            side = side_named(fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", ctx, re.I).group(0))
+        elif fre.search(r"\bbehind\s+and\s+to\s+the\s+(left|right)", ctx, re.I):
             side = side_named(ctx)
-        if side is None and re.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
+        if side is None and fre.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
             side = "right"
         return "R6", side or "same", True
     # Oncoming is said of the party itself ("an oncoming truck", "traveling in the opposite direction"), close to
     # its name; "without yielding to oncoming traffic" further on speaks of others.
     near = " | ".join(f"{m.mods} {d.sents[m.sent][m.end:m.end + 100]}" for m in e.mentions)
-    oncoming = re.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
+    oncoming = fre.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
                          near + " " + pre, re.I)
-    if oncoming and re.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
-                              re.I) and not re.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
+    if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
+                              re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
-    if re.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
+    if fre.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
         oncoming = None
-        side_m = re.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
+        side_m = fre.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
         if side_m:
             return "R5", side_m.group(1).lower(), True
     if oncoming or rel == 180:
         if d.junction:
             return "R2", None, True
-        return "R7", "same" if re.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) else "left", True
-    if rel == 0 and not re.search(r"\bbehind\b", ctx, re.I):
+        return "R7", "same" if fre.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) else "left", True
+    if rel == 0 and not fre.search(r"\bbehind\b", ctx, re.I):
         return "R5", side_named(ctx) or "same", True
     if d.junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
-    compass = re.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I)
+    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I)
     if compass and ego_heading is not None:
         origin = {"north": 0, "east": 90, "south": 180, "west": 270}[compass.group(1).lower()]
         rel_origin = (origin - ego_heading) % 360  # 90: on the AV's right, 270: on its left
@@ -72,68 +73,68 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if d.junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    from_side = re.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))", ctx,
+    from_side = fre.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))", ctx,
                           re.I)
     if d.junction and from_side:
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
-    if d.junction and "d" in ego_actions and re.search(r"\bapproaching\b", ctx, re.I):
+    if d.junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
         return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
         return "R6", cside or "same", True
-    lane_ctx = re.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
+    lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
                          r"lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", TURN_WORDS.sub(" ", ctx), re.I)
     if lane_ctx:
         text = lane_ctx.group(0)
-        side = side_named(text) or ("right" if re.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
+        side = side_named(text) or ("right" if fre.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
                                                      re.I) else None)
         if side is None:
             side = side_named(ctx)
-        if side is None and re.search(r"\badjacent\b|\bparallel\b|\balongside\b|\bbeside\b|\bnext\s+to\b", text,
+        if side is None and fre.search(r"\badjacent\b|\bparallel\b|\balongside\b|\bbeside\b|\bnext\s+to\b", text,
                                       re.I):
             # Beside an AV in the leftmost lane is to its right (and the other way round).
-            own = re.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+|second\s+|third\s+)?(left|right)(?:most)?\s+"
+            own = fre.search(r"\bEGO\b[^.]{0,100}?\bin\s+the\s+(?:far\s+|second\s+|third\s+)?(left|right)(?:most)?\s+"
                             r"(?:\w+\s+)?lane",
                             d.text)
             side = {"left": "right", "right": "left"}.get(own.group(1).lower()) if own else None
-            if side is None and re.search(r"\bEGO\b[^.]{0,60}?\b(?:parking\s+lane|shoulder|parked|at\s+the\s+curb)",
+            if side is None and fre.search(r"\bEGO\b[^.]{0,60}?\b(?:parking\s+lane|shoulder|parked|at\s+the\s+curb)",
                                           d.text):
                 side = "left"  # the AV at the curb: the traffic lane beside it is on its left
         side = side or "same"
-        if d.junction and ego_turning and re.search(r"driveway|parking", ctx, re.I):
+        if d.junction and ego_turning and fre.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
         return "R5", side, True
-    if re.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
-                 r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or re.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
+    if fre.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
+                 r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or fre.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
                                                                             pre, re.I):
         return "R5", "same", True
     if d.junction and ego_turning and e.category in ("pedestrian", "bicycle", "scooter") and \
-            re.search(r"\bcrosswalk\b", ctx, re.I):
+            fre.search(r"\bcrosswalk\b", ctx, re.I):
         return "R4", None, True
-    if re.search(r"\b(?:ahead|in\s+front|preceding|in\s+EGO's\s+lane|in\s+its\s+lane|same\s+lane)\b", ctx, re.I):
+    if fre.search(r"\b(?:ahead|in\s+front|preceding|in\s+EGO's\s+lane|in\s+its\s+lane|same\s+lane)\b", ctx, re.I):
         return "R5", "same", True
-    if e.idx == d.partner and re.search(r"[fg]", ego_actions) and not re.search(r"[fg]", "".join(
+    if e.idx == d.partner and fre.search(r"[fg]", ego_actions) and not fre.search(r"[fg]", "".join(
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
     if fore == "rear":
         return "R6", "same", True
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
-    if d.junction and turns and not re.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
+    if d.junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
         # a party that then follows the AV turned into its direction, so the sides swap.
-        follows = re.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)
+        follows = fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)
         from_right = (turns[0] == "d") != bool(follows)
         return ("R3" if from_right else "R1"), None, True
     if d.junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
-            re.search(r"\bentered\s+the\s+intersection", ctx, re.I)):
+            fre.search(r"\bentered\s+the\s+intersection", ctx, re.I)):
         side = side_named(ctx)
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
-    if re.search(r"\bbehind\b", ctx, re.I):
+    if fre.search(r"\bbehind\b", ctx, re.I):
         return "R6", "same", True
-    if e.idx == d.partner and re.search(r"[fg]", ego_actions) and not re.search(r"[fg]", "".join(
+    if e.idx == d.partner and fre.search(r"[fg]", ego_actions) and not fre.search(r"[fg]", "".join(
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
     if fore == "rear":
@@ -147,31 +148,31 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
     ctx = context(d, e)
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     cat = "door" if e.idx in d.doors else e.category
-    if cat in ("barrier",) and re.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + ctx, re.I):
+    if cat in ("barrier",) and fre.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + ctx, re.I):
         lane = "left"
-    elif re.search(r"\bon\s+the\s+divider|\bon\s+the\s+median", ctx, re.I):
+    elif fre.search(r"\bon\s+the\s+divider|\bon\s+the\s+median", ctx, re.I):
         lane = "left"
-    elif cat in ("barrier",) or re.search(r"\b(?:curb|parked\s+at|parallel|sidewalk|shoulder|side\s+of\s+the\s+"
+    elif cat in ("barrier",) or fre.search(r"\b(?:curb|parked\s+at|parallel|sidewalk|shoulder|side\s+of\s+the\s+"
                                           r"(?:road|street)|parking\s+(?:lane|spot|space))\b", ctx, re.I):
         lane = "shoulder"
-        if re.search(r"\bleft\s+side\s+of\s+the\s+road|\bto\s+the\s+left\b", ctx, re.I):
+        if fre.search(r"\bleft\s+side\s+of\s+the\s+road|\bto\s+the\s+left\b", ctx, re.I):
             lane = "left"
-    elif re.search(r"\bon\s+the\s+right\b|\bright\s+side\b", ctx, re.I) and cat == "parked_vehicle":
+    elif fre.search(r"\bon\s+the\s+right\b|\bright\s+side\b", ctx, re.I) and cat == "parked_vehicle":
         lane = "shoulder"
-    elif re.search(r"\b(?:in|on)\s+(?:its|the|EGO's)\s+lane|\bin\s+the\s+(?:middle|road|roadway)|\bahead\b", ctx,
+    elif fre.search(r"\b(?:in|on)\s+(?:its|the|EGO's)\s+lane|\bin\s+the\s+(?:middle|road|roadway)|\bahead\b", ctx,
                    re.I):
         lane = "same"
-    elif e.kind == "party" and e.parked and not re.search(r"double", " ".join(m.mods for m in e.mentions)):
+    elif e.kind == "party" and e.parked and not fre.search(r"double", " ".join(m.mods for m in e.mentions)):
         lane = "shoulder"
     else:
-        lane = side_named(ctx) if re.search(r"\b(?:to|on)\s+the\s+(?:left|right)\b", ctx, re.I) else "same"
+        lane = side_named(ctx) if fre.search(r"\b(?:to|on)\s+the\s+(?:left|right)\b", ctx, re.I) else "same"
     if cat == "door":
         owner = d.ents[d.doors[e.idx]]
         oc = context(d, owner) + " " + full
-        lane = "left" if re.search(r"\bon\s+the\s+right\b|\bbetween\b|\bmiddle\s+of\s+the\s+road", oc, re.I) else \
-            "shoulder" if re.search(r"\bparked\b|\bcurb\b", oc, re.I) else (side_named(oc) or "shoulder")
+        lane = "left" if fre.search(r"\bon\s+the\s+right\b|\bbetween\b|\bmiddle\s+of\s+the\s+road", oc, re.I) else \
+            "shoulder" if fre.search(r"\bparked\b|\bcurb\b", oc, re.I) else (side_named(oc) or "shoulder")
     pos = "R5"
-    if re.search(r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", full, re.I) or \
+    if fre.search(r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", full, re.I) or \
             (ego_codes.endswith("k") and e.idx == d.partner):
         pos = "R6"
     elif d.junction and ego_turning and e.idx == d.partner:

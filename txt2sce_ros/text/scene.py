@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 from ..sketch import Environment, RoadInfo
+from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import NUMBER_WORDS
 
@@ -101,8 +102,8 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
         cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
-        if re.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
-                re.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
+        if fre.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
+                fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
             return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
         if i in summary:
@@ -117,7 +118,7 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
 def road(t: str, *, junction: bool) -> RoadInfo:
     if _ROUNDABOUT.search(t):
         layout = "roundabout"
-    elif _PARKING.search(t) and not re.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+    elif _PARKING.search(t) and not fre.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
                                               r"parking\s+(?:lot|garage|structure)", t, re.I):
         layout = "parking"
     elif junction:
@@ -169,12 +170,12 @@ def signal_state(t: str, *, layout: str, control: str) -> str:
         return "none"
     if control != "signal":
         return "unknown"
-    if re.search(r"\bEGO(?:D)?\b[^.]{0,60}\b(?:stopped|waiting|stop)\b[^.]{0,30}\bred\b|\bred\s+light\b[^.]{0,40}"
+    if fre.search(r"\bEGO(?:D)?\b[^.]{0,60}\b(?:stopped|waiting|stop)\b[^.]{0,30}\bred\b|\bred\s+light\b[^.]{0,40}"
                  r"\bEGO\b[^.]{0,20}\b(?:stopped|waiting)|\bstopped\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
         return "red"
-    if re.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
+    if fre.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
         return "green"
     for colour in ("green", "yellow", "red"):
-        if re.search(rf"\b{colour}\b", t, re.I):
+        if fre.search(rf"\b{colour}\b", t, re.I):
             return colour
     return "unknown"

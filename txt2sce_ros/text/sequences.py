@@ -6,6 +6,7 @@ import re
 
 from ..sketch import Party
 from .actions import Act, turn_from_headings
+from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
 from .story import Doc, before_contact, context
@@ -21,7 +22,7 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         c = a.code
         if c == "F":
             c = "f" if (ego or side != "left") else "g"
-            if re.search(r"around", a.text, re.I) and not ego:
+            if fre.search(r"around", a.text, re.I) and not ego:
                 c = "f"
         if c == "T":
             continue
@@ -65,7 +66,7 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "a"
         out.append(c)
     s = "".join(out)
-    s = re.sub(r"h+", "h", s)
+    s = fre.sub(r"h+", "h", s)
     return start, s
 
 
@@ -81,7 +82,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     fs, fp = first_party_pos
     clause_start = fp
     s = d.sents[fs]
-    m = list(re.finditer(r"(?:,|;|\bwhen\b|\bas\b|\bwhile\b|\bthen\b)", s[:fp]))
+    m = list(fre.finditer(r"(?:,|;|\bwhen\b|\bas\b|\bwhile\b|\bthen\b)", s[:fp]))
     if m:
         clause_start = m[-1].start()
     else:
@@ -120,7 +121,7 @@ def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:
     for code, rx in _MOD_ACTS:
         if rx.search(first.mods) and not any(a.code == code for a in pacts[:1]):
             return [Act(first.sent, first.start, code, e.idx, first.mods)] + pacts
-    if not pacts and e.category == "pedestrian" and re.search(r"\bcross", context(d, e), re.I):
+    if not pacts and e.category == "pedestrian" and fre.search(r"\bcross", context(d, e), re.I):
         return [Act(first.sent, first.start, "m", e.idx, "cross")]
     return pacts
 
@@ -135,39 +136,39 @@ def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle
     if partner.category == "pedestrian":
         return "pedestrian"
     s = d.sents[d.contact_sent]
-    if re.search(r"\brear[- ]end", d.text, re.I):
+    if fre.search(r"\brear[- ]end", d.text, re.I):
         return "rear_end"
-    if re.search(r"\bside[- ]?swip", d.text, re.I):
+    if fre.search(r"\bside[- ]?swip", d.text, re.I):
         return "side_swipe"
-    if re.search(r"\bhead[- ]on\b", s, re.I):
+    if fre.search(r"\bhead[- ]on\b", s, re.I):
         return "head_on"
-    if re.search(r"\bbroadside|\bt-bone", s, re.I):
+    if fre.search(r"\bbroadside|\bt-bone", s, re.I):
         return "broadside"
     assert party is not None
-    rear_hit = re.search(r"\brear\b(?!\s+(?:driver|passenger|left|right)?\s*(?:side|door|quarter|wheel))", s, re.I) \
-        and not re.search(r"\b(?:side|door|mirror|quarter|fender)\b", s, re.I)
+    rear_hit = fre.search(r"\brear\b(?!\s+(?:driver|passenger|left|right)?\s*(?:side|door|quarter|wheel))", s, re.I) \
+        and not fre.search(r"\b(?:side|door|mirror|quarter|fender)\b", s, re.I)
     if party.position == "R6" and party.lane == "same" and ego_actions.endswith("k"):
         return "rear_end"  # the AV backed into the party behind it
     if party.position == "R6":
         # Struck from behind is a rear-end (sketch.md) unless the text puts the contact on the AV's side.
-        side_hit = re.search(r"\b(?:side|mirror|door|fender|quarter)\b", s[d.contact_pos:], re.I) and not rear_hit
+        side_hit = fre.search(r"\b(?:side|mirror|door|fender|quarter)\b", s[d.contact_pos:], re.I) and not rear_hit
         return "rear_end" if party.lane == "same" and not side_hit else "side_swipe"
     if party.position == "R5":
         if party.lane == "same" and "k" in party.actions:
             return "rear_end"  # backed into the AV behind it
         if party.lane == "same" and ego_actions.endswith(("a", "b", "i")) and \
-                re.search(r"\b(?:rear|front)\s+(?:bumper|of)|\bbumper\b", s, re.I) and "m" not in party.actions:
+                fre.search(r"\b(?:rear|front)\s+(?:bumper|of)|\bbumper\b", s, re.I) and "m" not in party.actions:
             return "rear_end"
-        if party.lane in ("left", "right") and re.search(r"\bside\b|\bmirror|\bfender|\bdoor|\bquarter", s, re.I) \
+        if party.lane in ("left", "right") and fre.search(r"\bside\b|\bmirror|\bfender|\bdoor|\bquarter", s, re.I) \
                 and "k" not in party.actions:
             return "side_swipe"
         return "broadside" if ("m" in party.actions or "k" in party.actions) else "side_swipe"
     if party.position == "R7":
         touched = s[d.contact_pos:]
-        return "head_on" if party.lane == "same" and re.search(r"\bfront\b", touched, re.I) and not \
-            re.search(r"\bside\b", touched, re.I) else "side_swipe"
+        return "head_on" if party.lane == "same" and fre.search(r"\bfront\b", touched, re.I) and not \
+            fre.search(r"\bside\b", touched, re.I) else "side_swipe"
     if party.position in ("R1", "R3", "R4", "R2"):
-        if re.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror", s, re.I):
+        if fre.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror", s, re.I):
             return "side_swipe"
         return "broadside"
     return "other"

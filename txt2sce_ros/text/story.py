@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass, field
 
 from .actions import Act, heading_of, who_for
+from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CONTACT, NEGATION
 from .mentions import Entity, Mention
@@ -74,13 +75,13 @@ def find_contact(d: Doc) -> None:
     candidates: list[tuple[int, int, int | None]] = []
     for i, s in enumerate(d.sents):
         ments = d.ments[i]
-        has_ego = any(m.kind in ("ego", "egod") for m in ments) or re.search(r"\b(?:was|were|been|got)\s+"
+        has_ego = any(m.kind in ("ego", "egod") for m in ments) or fre.search(r"\b(?:was|were|been|got)\s+"
                                                                              r"(?:struck|hit|contacted)", s, re.I)
         if not has_ego:
             continue
         for m in CONTACT.finditer(s):
             before = s[max(0, m.start() - 45):m.start()]
-            if NEGATION.search(before) or re.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
+            if NEGATION.search(before) or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
                                                     re.I):
                 continue
             others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
@@ -98,7 +99,7 @@ def find_contact(d: Doc) -> None:
                     partner = best.entity
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
-                    if d.ents[door].first.sent == i or (owner == partner and re.search(r"\bdoor", s[:m.start()])):
+                    if d.ents[door].first.sent == i or (owner == partner and fre.search(r"\bdoor", s[:m.start()])):
                         partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
             candidates.append((i, m.start(), partner))
     if not candidates:
@@ -125,7 +126,7 @@ def find_contact(d: Doc) -> None:
         idx = [k for k, x in enumerate(ms) if x.entity == d.partner]
         for k in range(idx[0] + 1 if idx else len(ms), len(ms)):
             between = d.sents[d.contact_sent][ms[k - 1].end:ms[k].start]
-            if ms[k].kind == "obstacle" and re.fullmatch(r"[^,;]{0,30}\band\s*", between):
+            if ms[k].kind == "obstacle" and fre.fullmatch(r"[^,;]{0,30}\band\s*", between):
                 d.struck.add(ms[k].entity)
             else:
                 break
@@ -170,10 +171,10 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             continue
         moved = any(a.who == e.idx and a.code in "abcdefgijkmFT" for a in d.acts)
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
-                acted_for(d, e, around_only=True) and not re.search(
+                acted_for(d, e, around_only=True) and not fre.search(
                     r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)):
             e.parked = True  # a vehicle the AV went around, that did nothing itself, stood there
-        if not is_partner and all(re.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
+        if not is_partner and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
             continue  # "a skateboard that escaped control of a nearby pedestrian": named only as an owner
@@ -224,7 +225,7 @@ def attach_towed(d: Doc) -> None:
         for m in d.ments[i]:
             if m.kind != "obstacle" or m.entity < 0:
                 continue
-            if re.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*"
+            if fre.search(r"\b(?:dragging|towing|pulling|carrying|hauling|dragged|towed)\s+(?:a|an|the)?\s*"
                          r"(?:[\w-]+\s+){0,3}$",
                          s[:m.start + len(m.mods) + 1]):
                 owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start and x.entity >= 0]
@@ -254,8 +255,8 @@ TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|in
 def side_named(ctx: str) -> str | None:
     """The first side named in `ctx` ("in the rightmost lane", "to the left of"), turns and "right of way" aside."""
     ctx = TURN_WORDS.sub(" ", ctx)
-    left = re.search(r"\bleft(?:most)?\b", ctx, re.I)
-    right = re.search(r"\bright(?:most)?\b", ctx, re.I)
+    left = fre.search(r"\bleft(?:most)?\b", ctx, re.I)
+    right = fre.search(r"\bright(?:most)?\b", ctx, re.I)
     if left and right:
         return "left" if left.start() < right.start() else "right"
     return "left" if left else "right" if right else None
@@ -269,7 +270,7 @@ def heading(d: Doc, who: int) -> int | None:
                 # Read up to the next party named in the sentence: its heading is its own.
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 window = s[m.end:min([m.end + 120, *nxt])]
-                final = re.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
+                final = fre.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
                 if final and who == -1:  # the AV "turned right from southbound X onto westbound Y": heads west
                     return heading_of(final.group(1) + "bound")
                 h = heading_of(window)
@@ -300,8 +301,8 @@ def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
     parts += [m.group(1) for m in _EGOS_PART.finditer(s)]
     text = " ".join(parts).lower()
-    fore = "rear" if re.search(r"\brear\b|\bback\b|\btail", text) else "front" if re.search(r"\bfront\b|\bhood\b",
+    fore = "rear" if fre.search(r"\brear\b|\bback\b|\btail", text) else "front" if fre.search(r"\bfront\b|\bhood\b",
                                                                                           text) else None
-    side = "left" if re.search(r"\bdriver|\bleft\b", text) else "right" if re.search(r"\bpassenger|\bright\b",
+    side = "left" if fre.search(r"\bdriver|\bleft\b", text) else "right" if fre.search(r"\bpassenger|\bright\b",
                                                                                      text) else None
     return fore, side
