@@ -7,7 +7,10 @@ that point has curvature κ = 2·sin(α)/L, α being the bearing of the point in
 
 from __future__ import annotations
 
+import bisect
 import math
+
+import numpy as np
 
 from .params import LateralParams
 from .refline import RefLine, wrap_angle
@@ -40,14 +43,29 @@ def curve_speed(kappa: float, p: LateralParams) -> float:
     return min(math.sqrt(p.max_lateral_accel / k), 0.95 * p.max_yaw_rate / k)
 
 
+def curve_speed_profile(line: RefLine, p: LateralParams) -> list[float]:
+    """`curve_speed` of every vertex's |curvature|, computed once per line and parameters (the line's cache):
+    the per-step curve check then only compares and slices. Vectorised with the scalar form's operations in its
+    order (sqrt and division are correctly rounded in numpy as in `math`), so every value is bit-identical."""
+    key = ("curve_speed", p.max_lateral_accel, p.max_yaw_rate)
+    cached = line.cache.get(key)
+    if cached is None:
+        k = np.abs(line.curvature)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            vc = np.minimum(np.sqrt(p.max_lateral_accel / k), 0.95 * p.max_yaw_rate / k)
+        cached = np.where(k < 1e-4, math.inf, vc).tolist()
+        line.cache[key] = cached
+    return cached
+
+
 def curve_targets(line: RefLine, s_ego: float, v: float, v_max: float, p: LateralParams, decel: float
                   ) -> list[tuple[float, float]]:
     """(distance ahead, speed limit) of the curve samples from just behind the ego to its braking horizon whose
     limit is below `v_max` (the speed the ego would otherwise aim for)."""
     horizon = max(p.curve_preview, v * v / (2.0 * decel) + 3.0 * v + 5.0)
-    out = []
-    for s, k in line.max_abs_curvature(s_ego - 2.0, s_ego + horizon):
-        vc = curve_speed(k, p)
-        if vc < v_max:
-            out.append((max(s - s_ego, 0.0), vc))
-    return out
+    limits = curve_speed_profile(line, p)
+    s_all = line.s_list
+    # The vertices with s0 <= s <= s1, as `max_abs_curvature` selects them (s is sorted).
+    lo = bisect.bisect_left(s_all, s_ego - 2.0)
+    hi = bisect.bisect_right(s_all, s_ego + horizon)
+    return [(max(s_all[i] - s_ego, 0.0), limits[i]) for i in range(lo, hi) if limits[i] < v_max]

@@ -5,6 +5,7 @@ controllers can be exercised on any polyline.
 
 from __future__ import annotations
 
+import bisect
 import math
 from dataclasses import dataclass
 
@@ -63,13 +64,28 @@ class RefLine:
         if win > 1 and n > win:
             k = np.convolve(k, np.ones(win) / win, mode="same")
         self.curvature = k
+        # Per-step queries are scalar: plain-Python copies and per-segment constants avoid numpy's per-call
+        # overhead (np.searchsorted / np.clip on a float cost microseconds each) without changing any value.
+        #: `s` as a Python list, for bisect.
+        self.s_list: list[float] = self.s.tolist()
+        self._last_seg = len(seg) - 1
+        self._x0 = np.ascontiguousarray(self.xy[:-1, 0])
+        self._y0 = np.ascontiguousarray(self.xy[:-1, 1])
+        self._dx = np.ascontiguousarray(seg[:, 0])
+        self._dy = np.ascontiguousarray(seg[:, 1])
+        self._L2 = np.maximum(seg_len ** 2, 1e-12)
+        # The planner projects the ego twice per step with the same arguments (off-route check, then the step).
+        self._last_project: tuple[tuple[float, float, float | None, float], PathPoint] | None = None
+        #: Derived per-vertex arrays keyed by their parameters (e.g. curve speed limits), filled by their users.
+        self.cache: dict = {}
 
     @property
     def length(self) -> float:
         return float(self.s[-1])
 
     def _index(self, s: float) -> int:
-        return int(np.clip(np.searchsorted(self.s, s, side="right") - 1, 0, len(self._seg) - 1))
+        # bisect_right on the sorted list is searchsorted(side="right"), NaN included (both give len).
+        return min(max(bisect.bisect_right(self.s_list, s) - 1, 0), self._last_seg)
 
     def position(self, s: float, offset: float = 0.0) -> tuple[float, float, float]:
         """(x, y, heading) at arc length `s` (extrapolated straight beyond both ends), `offset` to the left."""
@@ -128,28 +144,38 @@ class RefLine:
         """Nearest point of the line to (x, y): arc length, signed left offset, heading. With `near_s`, only the
         stretch within `window` metres of it is searched, so a route that passes the same place twice (loops,
         U-turns) projects onto the right pass."""
+        key = (x, y, near_s, window)
+        last = self._last_project
+        if last is not None and last[0] == key:
+            return last[1]
         lo, hi = 0, len(self._seg)
         if near_s is not None:
             lo = max(0, self._index(near_s - window))
             hi = min(len(self._seg), self._index(near_s + window) + 1)
-        p0 = self.xy[lo:hi]
-        d = self._seg[lo:hi]
-        L2 = np.maximum(self._seg_len[lo:hi] ** 2, 1e-12)
-        u = np.clip(((x - p0[:, 0]) * d[:, 0] + (y - p0[:, 1]) * d[:, 1]) / L2, 0.0, 1.0)
-        px = p0[:, 0] + u * d[:, 0]
-        py = p0[:, 1] + u * d[:, 1]
+        x0 = self._x0[lo:hi]
+        y0 = self._y0[lo:hi]
+        dx = self._dx[lo:hi]
+        dy = self._dy[lo:hi]
+        # Same operations in the same order as the plain formula, so the result is bit-identical to it.
+        u = np.minimum(np.maximum(((x - x0) * dx + (y - y0) * dy) / self._L2[lo:hi], 0.0), 1.0)
+        px = x0 + u * dx
+        py = y0 + u * dy
         dist2 = (x - px) ** 2 + (y - py) ** 2
-        j = int(np.argmin(dist2))
+        j = int(dist2.argmin())
         i = lo + j
+        uj = float(u[j])
         h = float(self._seg_heading[i])
-        s = float(self.s[i] + u[j] * self._seg_len[i])
+        s = self.s_list[i] + uj * float(self._seg_len[i])
         # Beyond the ends, extend straight so objects ahead of the goal still get a sensible s.
-        if i == len(self._seg) - 1 and u[j] >= 1.0 or i == 0 and u[j] <= 0.0:
-            ref_x, ref_y = self.xy[i] if u[j] <= 0.0 else self.xy[i + 1]
+        if i == self._last_seg and uj >= 1.0 or i == 0 and uj <= 0.0:
+            k = i if uj <= 0.0 else i + 1
+            ref_x, ref_y = float(self.xy[k, 0]), float(self.xy[k, 1])
             along = (x - ref_x) * math.cos(h) + (y - ref_y) * math.sin(h)
-            s = float(self.s[i] if u[j] <= 0.0 else self.s[i + 1]) + along
-        cross = -(x - px[j]) * math.sin(h) + (y - py[j]) * math.cos(h)
-        return PathPoint(s=s, offset=float(cross), heading=h)
+            s = self.s_list[k] + along
+        cross = -(x - float(px[j])) * math.sin(h) + (y - float(py[j])) * math.cos(h)
+        pp = PathPoint(s=float(s), offset=float(cross), heading=h)
+        self._last_project = (key, pp)
+        return pp
 
     def project_many(self, xs: np.ndarray, ys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Vectorised (s, offset) of many points (used for predicted object positions)."""
