@@ -1,16 +1,23 @@
-"""Literal pre-filters for the extractor's regexes: skip a scan that cannot match, with the same results.
+"""Faster scans for the extractor's regexes, with exactly the results of `re`.
 
-Python's `re` has no prefilter for patterns such as `\\b(?:the|a)?\\s*(?:waymo|cruise|...)\\s+vehicle` under
-IGNORECASE: it tries the whole pattern at every position of every sentence, and most sentences hold none of the
-words the pattern needs. `gate(rx)` reads the compiled pattern's parse tree once, at import, and derives a set of
-*factors* - lowercase literals one of which every match must contain (like RE2's and Hyperscan's prefilters).
-Before a scan the wrapper checks the text for a factor with plain substring search; with none present it answers
-"no match" without running the regex.
+The extractor is some two hundred IGNORECASE word-list patterns run over every sentence; `re` spends most of its
+time trying alternatives that cannot match. Two exact rewrites, both derived once from the pattern's parse tree:
 
-Soundness: a match is a substring of the text, so a literal every match contains is in the text. The check runs on
-`text.lower()` and only for ASCII texts, where IGNORECASE matching and `str.lower` agree exactly (Unicode case
-folding such as the Kelvin sign or the long s is the reason non-ASCII texts always run the regex). When the
-derivation meets anything it does not understand it gives up and the wrapper always runs the regex.
+1. A literal prefilter. `factors_of(rx)` is a set of lowercase literals one of which every match contains (like
+   RE2's and Hyperscan's prefilters); a text holding none of them has no match, and the scan is skipped. Sound
+   because a match is a substring of the text.
+2. A case-folded scan. With IGNORECASE, `re` enters every branch of an alternation at every position; without it,
+   a branch starting with a literal is skipped after one character compare. `folded(rx)` is the case-sensitive
+   twin of the pattern for lowercase text (literals lowercased, letter classes given their lowercase members); it
+   runs on `text.lower()` to find where each match starts, and the original pattern, anchored there, returns the
+   match object - on the original text, so groups, callbacks and replacements see the original characters. A
+   disagreement in the end position raises instead of returning a different result.
+
+Both run only on ASCII texts, where IGNORECASE matching and `str.lower` agree exactly (Unicode case folding, such
+as the Kelvin sign matching "k", is why any other text runs the original pattern). Where the derivation meets
+anything it does not understand (scoped flags, back-references, non-ASCII literals) it gives up and the original
+pattern runs. `compile_gated` replaces `re.compile`; `search`, `sub`, ... replace `re`'s module functions for the
+rules that write their pattern inline (cached, as `re` caches).
 """
 
 from __future__ import annotations
@@ -307,11 +314,16 @@ class Gated:
 
 
 def gate(rx: re.Pattern[str]) -> re.Pattern[str]:
-    """`rx` behind a literal prefilter when one is derivable, else `rx` itself (typed as a pattern for callers)."""
+    """`rx` behind a literal prefilter and/or a case-folded scan when derivable, else `rx` itself (typed as a
+    pattern for callers)."""
     fs = factors_of(rx)
     # The folded scanner only for patterns that cannot match an empty string: `sub` and `finditer` above rely
     # on it (their empty-match rules would otherwise need copying).
-    cs = folded(rx) if rx.pattern and _p.parse(rx.pattern, rx.flags).getwidth()[0] > 0 else None
+    try:
+        nonempty = isinstance(rx.pattern, str) and _p.parse(rx.pattern, rx.flags).getwidth()[0] > 0
+    except Exception:  # an unexpected parser: no folded scan (always correct)
+        nonempty = False
+    cs = folded(rx) if nonempty else None
     return Gated(rx, fs, cs) if fs or cs else rx  # type: ignore[return-value]
 
 
