@@ -57,10 +57,27 @@ def lane_route(net: RoadNetwork, start: LaneRef, goal: LaneRef) -> list[LaneRef]
         return net.route(start, goal)
 
 
+def lane_widths(net: RoadNetwork, road_id: str, lane_id: int, road_s: np.ndarray) -> np.ndarray:
+    """`net.lane_width` at each of the road s values, in one array call when they lie in one lane section.
+
+    `lane_bounds` adds the same widths in the same order as the scalar `lane_width` (laneOffset, then each inner
+    lane's width outward), so the values are bit-identical; the scalar form is kept for samples spanning
+    sections (each sample then takes the section holding it, as `lane_width` does)."""
+    road_s = np.asarray(road_s, dtype=float)
+    if len(road_s) == 0:
+        return np.zeros(0)
+    lo, hi = float(road_s.min()), float(road_s.max())
+    si = net.section_index(road_id, lo)
+    if si != net.section_index(road_id, hi):
+        return np.array([net.lane_width(road_id, lane_id, float(s)) for s in road_s])
+    inner, outer = net.lane_bounds(road_id, lane_id, road_s, section=si)
+    return np.abs(outer - inner)
+
+
 def _lane_points(net: RoadNetwork, ref: LaneRef) -> tuple[np.ndarray, bool, np.ndarray]:
     pts = net.lane_centerline(ref.road_id, ref.lane_id, DS, section=ref.section)
     road = net.roads[ref.road_id]
-    widths = np.array([net.lane_width(ref.road_id, ref.lane_id, float(s)) for s in pts[:, 2]])
+    widths = lane_widths(net, ref.road_id, ref.lane_id, pts[:, 2])
     return pts, road.junction not in ("-1", ""), widths
 
 
@@ -73,7 +90,7 @@ def _neighbour_widths(net: RoadNetwork, ref: LaneRef, road_s: np.ndarray) -> tup
         if other is None or net.lane_type(other.road_id, other.lane_id, float(road_s[0])) != "driving":
             out.append(np.zeros(len(road_s)))
         else:
-            out.append(np.array([net.lane_width(other.road_id, other.lane_id, float(s)) for s in road_s]))
+            out.append(lane_widths(net, other.road_id, other.lane_id, road_s))
     return out[0], out[1]
 
 

@@ -1,0 +1,125 @@
+"""The planner's fast paths must give bit-identical results to the plain formulas they replaced (the closed loop's
+commands must not change by a single bit): each is compared with `==` against the straightforward form, on the
+bundled maps' real lanes."""
+
+import math
+
+import numpy as np
+import pytest
+
+from standin_planner.params import PlannerParams
+from standin_planner.pure_pursuit import curve_speed, curve_speed_profile, curve_targets
+from standin_planner.refline import PathPoint, RefLine
+from standin_planner.route import lane_widths
+from txt2sce_ros.paths import BUNDLED_MAPS
+from txt2sce_ros.road import load_network
+
+from .helpers import FABRIKSGATAN
+
+MAPS = sorted(BUNDLED_MAPS.glob("*.xodr")) + [FABRIKSGATAN]
+
+
+def _lanes(net):
+    """(road id, lane id, section index) of every driving lane of every section."""
+    for rid, road in net.roads.items():
+        for si, sec in enumerate(road.sections):
+            for lid, lane in sec.lanes.items():
+                if lid != 0 and lane.type == "driving":
+                    yield rid, lid, si
+
+
+def _lines(path) -> list[RefLine]:
+    net = load_network(path)
+    lines = []
+    for rid, lid, si in _lanes(net):
+        pts = net.lane_centerline(rid, lid, 0.5, section=si)
+        if len(pts) >= 4:
+            lines.append(RefLine(pts[:, :2]))
+    return lines
+
+
+@pytest.mark.parametrize("path", MAPS, ids=lambda p: p.stem)
+def test_array_lane_widths_equal_the_scalar_lane_width_bit_for_bit(path):
+    net = load_network(path)
+    checked = 0
+    for rid, lid, si in _lanes(net):
+        s = net.lane_centerline(rid, lid, 0.5, section=si)[:, 2]
+        fast = lane_widths(net, rid, lid, s)
+        plain = np.array([net.lane_width(rid, lid, float(v)) for v in s])
+        assert fast.tobytes() == plain.tobytes(), (rid, lid, si)
+        checked += 1
+    assert checked > 0
+
+
+def _plain_project(line: RefLine, x: float, y: float, near_s: float | None = None, window: float = 60.0
+                   ) -> PathPoint:
+    """RefLine.project as first written (np.searchsorted / np.clip, no caches)."""
+    def index(s):
+        return int(np.clip(np.searchsorted(line.s, s, side="right") - 1, 0, len(line._seg) - 1))
+
+    lo, hi = 0, len(line._seg)
+    if near_s is not None:
+        lo = max(0, index(near_s - window))
+        hi = min(len(line._seg), index(near_s + window) + 1)
+    p0, d = line.xy[lo:hi], line._seg[lo:hi]
+    L2 = np.maximum(line._seg_len[lo:hi] ** 2, 1e-12)
+    u = np.clip(((x - p0[:, 0]) * d[:, 0] + (y - p0[:, 1]) * d[:, 1]) / L2, 0.0, 1.0)
+    px, py = p0[:, 0] + u * d[:, 0], p0[:, 1] + u * d[:, 1]
+    j = int(np.argmin((x - px) ** 2 + (y - py) ** 2))
+    i = lo + j
+    h = float(line._seg_heading[i])
+    s = float(line.s[i] + u[j] * line._seg_len[i])
+    if i == len(line._seg) - 1 and u[j] >= 1.0 or i == 0 and u[j] <= 0.0:
+        ref_x, ref_y = line.xy[i] if u[j] <= 0.0 else line.xy[i + 1]
+        along = (x - ref_x) * math.cos(h) + (y - ref_y) * math.sin(h)
+        s = float(line.s[i] if u[j] <= 0.0 else line.s[i + 1]) + along
+    cross = -(x - px[j]) * math.sin(h) + (y - py[j]) * math.cos(h)
+    return PathPoint(s=s, offset=float(cross), heading=h)
+
+
+@pytest.mark.parametrize("path", [BUNDLED_MAPS / "roundabout.xodr", BUNDLED_MAPS / "curve.xodr", FABRIKSGATAN],
+                         ids=lambda p: p.stem)
+def test_projection_equals_the_plain_formula_bit_for_bit(path):
+    rng = np.random.default_rng(7)
+    for line in _lines(path)[:12]:
+        for _ in range(25):
+            # Points around the line and beyond both ends (the straight extension), sometimes with a hint.
+            s = rng.uniform(-15.0, line.length + 15.0)
+            x, y, _ = line.position(s, rng.normal(0.0, 3.0))
+            near = float(rng.uniform(0.0, line.length)) if rng.random() < 0.5 else None
+            want = _plain_project(line, x, y, near_s=near)
+            assert line.project(x, y, near_s=near) == want
+            assert line.project(x, y, near_s=near) == want           # the memo returns the same answer
+            assert line._index(s) == int(np.clip(np.searchsorted(line.s, s, side="right") - 1, 0,
+                                                  len(line._seg) - 1))
+
+
+def test_projection_memo_does_not_answer_a_different_question():
+    line = _lines(BUNDLED_MAPS / "curve.xodr")[0]
+    x, y, _ = line.position(20.0, 1.0)
+    a = line.project(x, y)
+    b = line.project(x + 5.0, y)
+    assert b != a and line.project(x, y) == a
+    assert line.project(x, y, near_s=20.0, window=5.0) == _plain_project(line, x, y, near_s=20.0, window=5.0)
+
+
+@pytest.mark.parametrize("path", [BUNDLED_MAPS / "roundabout.xodr", BUNDLED_MAPS / "curve.xodr", FABRIKSGATAN],
+                         ids=lambda p: p.stem)
+def test_curve_targets_equal_the_per_sample_curve_speed_bit_for_bit(path):
+    p = PlannerParams.from_config().lateral
+    found = 0
+    for line in _lines(path):
+        prof = curve_speed_profile(line, p)
+        assert prof == [curve_speed(k, p) for k in line.curvature]
+        for s_ego in np.linspace(-5.0, line.length + 5.0, 9):
+            for v, v_max in ((0.0, 13.9), (8.0, 13.9), (15.0, 30.0)):
+                want = []
+                for s, k in line.max_abs_curvature(s_ego - 2.0, s_ego + max(p.curve_preview,
+                                                                            v * v / 6.0 + 3.0 * v + 5.0)):
+                    vc = curve_speed(k, p)
+                    if vc < v_max:
+                        want.append((max(s - s_ego, 0.0), vc))
+                got = curve_targets(line, float(s_ego), v, v_max, p, 3.0)
+                assert got == want
+                found += len(got)
+    assert found > 0        # the maps' curves do limit the speed somewhere
