@@ -63,6 +63,9 @@ def test_gated_patterns_agree_with_the_raw_regex_on_dev(texts: list[str]) -> Non
             assert [m.span() for m in g.finditer(s)] == raw, (name, s)
             assert (g.search(s) is None) == (not raw), (name, s)
             assert g.sub("#", s) == g.rx.sub("#", s), (name, s)
+            if raw:  # a template with a reference, and a callback
+                assert g.sub(r"<\g<0>>", s) == g.rx.sub(r"<\g<0>>", s), (name, s)
+                assert g.sub(lambda m: m.group(0).upper(), s, 1) == g.rx.sub(lambda m: m.group(0).upper(), s, 1)
             assert g.findall(s) == g.rx.findall(s), (name, s)
             skipped += not g._may_match(s)
     assert skipped > 1000  # the gate does skip work on real text, or it is pure overhead

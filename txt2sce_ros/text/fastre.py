@@ -243,14 +243,17 @@ class Gated:
     def _may_match(self, s: str) -> bool:
         return self._low(s) is not None
 
+    def _original(self, s: str, m: re.Match[str]) -> re.Match[str]:
+        """The original pattern's match at the folded match's start (the same match)."""
+        r = self.rx.match(s, m.start())
+        if r is None or r.end() != m.end():  # never expected: fail loudly rather than change a result
+            raise RuntimeError(f"folded pattern disagrees with {self.rx.pattern!r} at {m.start()} of {s!r}")
+        return r
+
     def _iter(self, s: str, low: str, pos: int = 0) -> Iterator[re.Match[str]]:
         # The folded scan finds where each match starts; the original, anchored there, gives the same match.
-        match = self.rx.match
         for m in self.cs.finditer(low, pos):  # type: ignore[union-attr]
-            r = match(s, m.start())
-            if r is None or r.end() != m.end():  # never expected: fail loudly rather than change a result
-                raise RuntimeError(f"folded pattern disagrees with {self.rx.pattern!r} at {m.start()} of {s!r}")
-            yield r
+            yield self._original(s, m)
 
     def search(self, s: str, *a: Any) -> re.Match[str] | None:
         low = self._low(s)
@@ -258,7 +261,8 @@ class Gated:
             return None
         if not low or len(a) > 1:
             return self.rx.search(s, *a)
-        return next(self._iter(s, low, *a), None)
+        m = self.cs.search(low, *a)  # type: ignore[union-attr]
+        return None if m is None else self._original(s, m)
 
     def match(self, s: str, *a: Any) -> re.Match[str] | None:
         return self.rx.match(s, *a) if self._may_match(s) else None
@@ -294,10 +298,13 @@ class Gated:
             return self.rx.sub(repl, s, count)
         # A match of a folded pattern is never empty (see `gate`), so `sub` is exactly the matches of `finditer`
         # replaced in order; `expand` reads a template as `sub` does.
+        # A template without a backslash is literal text, for `sub` too: no need to expand it per match.
+        literal = repl if isinstance(repl, str) and "\\" not in repl else None
         parts: list[str] = []
         last = 0
         for n, m in enumerate(self._iter(s, low), 1):
-            parts += [s[last:m.start()], repl(m) if callable(repl) else m.expand(repl)]
+            text = literal if literal is not None else repl(m) if callable(repl) else m.expand(repl)
+            parts += [s[last:m.start()], text]
             last = m.end()
             if count and n >= count:
                 break
