@@ -181,12 +181,11 @@ class RefLine:
         """Vectorised (s, offset) of many points (used for predicted object positions)."""
         xs = np.asarray(xs, dtype=float)[:, None]
         ys = np.asarray(ys, dtype=float)[:, None]
-        p0 = self.xy[:-1][None, :, :]
-        d = self._seg[None, :, :]
-        L2 = np.maximum(self._seg_len ** 2, 1e-12)[None, :]
-        u = np.clip(((xs - p0[..., 0]) * d[..., 0] + (ys - p0[..., 1]) * d[..., 1]) / L2, 0.0, 1.0)
-        px = p0[..., 0] + u * d[..., 0]
-        py = p0[..., 1] + u * d[..., 1]
+        # Contiguous per-coordinate rows (precomputed) instead of strided column views; same values, same order.
+        x0, y0, dx, dy = self._x0, self._y0, self._dx, self._dy
+        u = np.minimum(np.maximum(((xs - x0) * dx + (ys - y0) * dy) / self._L2, 0.0), 1.0)
+        px = x0 + u * dx
+        py = y0 + u * dy
         dist2 = (xs - px) ** 2 + (ys - py) ** 2
         j = np.argmin(dist2, axis=1)
         rows = np.arange(len(j))

@@ -123,3 +123,28 @@ def test_curve_targets_equal_the_per_sample_curve_speed_bit_for_bit(path):
                 assert got == want
                 found += len(got)
     assert found > 0        # the maps' curves do limit the speed somewhere
+
+
+def _plain_project_many(line: RefLine, xs: np.ndarray, ys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """RefLine.project_many as first written (strided views, np.clip)."""
+    xs, ys = np.asarray(xs, dtype=float)[:, None], np.asarray(ys, dtype=float)[:, None]
+    p0, d = line.xy[:-1][None, :, :], line._seg[None, :, :]
+    L2 = np.maximum(line._seg_len ** 2, 1e-12)[None, :]
+    u = np.clip(((xs - p0[..., 0]) * d[..., 0] + (ys - p0[..., 1]) * d[..., 1]) / L2, 0.0, 1.0)
+    px, py = p0[..., 0] + u * d[..., 0], p0[..., 1] + u * d[..., 1]
+    j = np.argmin((xs - px) ** 2 + (ys - py) ** 2, axis=1)
+    rows = np.arange(len(j))
+    h = line._seg_heading[j]
+    s = line.s[j] + u[rows, j] * line._seg_len[j]
+    off = -(xs[:, 0] - px[rows, j]) * np.sin(h) + (ys[:, 0] - py[rows, j]) * np.cos(h)
+    return s, off
+
+
+def test_project_many_equals_the_plain_formula_bit_for_bit():
+    rng = np.random.default_rng(11)
+    for line in _lines(BUNDLED_MAPS / "roundabout.xodr")[:8]:
+        pts = np.array([line.position(s, o)[:2] for s, o in zip(rng.uniform(-10.0, line.length + 10.0, 40),
+                                                                 rng.normal(0.0, 4.0, 40))])
+        s, off = line.project_many(pts[:, 0], pts[:, 1])
+        ws, woff = _plain_project_many(line, pts[:, 0], pts[:, 1])
+        assert s.tobytes() == ws.tobytes() and off.tobytes() == woff.tobytes()
