@@ -17,6 +17,10 @@ def wrap_angle(a: float) -> float:
     return (a + math.pi) % (2.0 * math.pi) - math.pi
 
 
+#: Projections a line remembers (it forgets them all when full: they are cheap to recompute).
+PROJECTION_CACHE = 256
+
+
 @dataclass(frozen=True, slots=True)
 class PathPoint:
     s: float
@@ -74,8 +78,10 @@ class RefLine:
         self._dx = np.ascontiguousarray(seg[:, 0])
         self._dy = np.ascontiguousarray(seg[:, 1])
         self._L2 = np.maximum(seg_len ** 2, 1e-12)
-        # The planner projects the ego twice per step with the same arguments (off-route check, then the step).
-        self._last_project: tuple[tuple[float, float, float | None, float], PathPoint] | None = None
+        # Projections by (x, y, first segment, end segment), which fully determine the answer: the planner projects
+        # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
+        # every step with a window that covers the whole (short) line.
+        self._projections: dict[tuple[float, float, int, int] | None, PathPoint] = {}
         #: Derived per-vertex arrays keyed by their parameters (e.g. curve speed limits), filled by their users.
         self.cache: dict = {}
 
@@ -144,14 +150,15 @@ class RefLine:
         """Nearest point of the line to (x, y): arc length, signed left offset, heading. With `near_s`, only the
         stretch within `window` metres of it is searched, so a route that passes the same place twice (loops,
         U-turns) projects onto the right pass."""
-        key = (x, y, near_s, window)
-        last = self._last_project
-        if last is not None and last[0] == key:
-            return last[1]
         lo, hi = 0, len(self._seg)
         if near_s is not None:
             lo = max(0, self._index(near_s - window))
             hi = min(len(self._seg), self._index(near_s + window) + 1)
+        # (0.0 == -0.0 as a key, but the sign of a zero can reach the answer: such points are not cached.)
+        key = (x, y, lo, hi) if x != 0.0 and y != 0.0 else None
+        hit = self._projections.get(key)
+        if hit is not None:
+            return hit
         x0 = self._x0[lo:hi]
         y0 = self._y0[lo:hi]
         dx = self._dx[lo:hi]
@@ -174,7 +181,10 @@ class RefLine:
             s = self.s_list[k] + along
         cross = -(x - float(px[j])) * math.sin(h) + (y - float(py[j])) * math.cos(h)
         pp = PathPoint(s=float(s), offset=float(cross), heading=h)
-        self._last_project = (key, pp)
+        if key is not None:
+            if len(self._projections) >= PROJECTION_CACHE:
+                self._projections.clear()
+            self._projections[key] = pp
         return pp
 
     def project_many(self, xs: np.ndarray, ys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -101,6 +101,13 @@ def test_projection_memo_does_not_answer_a_different_question():
     b = line.project(x + 5.0, y)
     assert b != a and line.project(x, y) == a
     assert line.project(x, y, near_s=20.0, window=5.0) == _plain_project(line, x, y, near_s=20.0, window=5.0)
+    # A window that excludes the nearest stretch gets its own answer, not the remembered whole-line one.
+    far = line.project(x, y, near_s=line.length - 3.0, window=2.0)
+    assert far == _plain_project(line, x, y, near_s=line.length - 3.0, window=2.0) and far.s != a.s
+    # Many distinct points (the memo forgets when full) still get their own answers.
+    for k in range(600):
+        px, py, _ = line.position(0.1 * k, 0.5)
+        assert line.project(px, py) == _plain_project(line, px, py)
 
 
 @pytest.mark.parametrize("path", [BUNDLED_MAPS / "roundabout.xodr", BUNDLED_MAPS / "curve.xodr", FABRIKSGATAN],
