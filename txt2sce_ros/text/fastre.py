@@ -35,8 +35,8 @@ except ImportError:  # pragma: no cover - Python < 3.11
     import sre_compile as _compiler  # type: ignore[no-redef]
     import sre_parse as _p  # type: ignore[no-redef]
 
-#: Texts shorter than this always run the regex: on a few characters the scan is as cheap as the check.
-MIN_GATED_LEN = 24
+#: Texts shorter than this always run the original pattern: on a few characters the checks cost more than the scan.
+MIN_GATED_LEN = 8
 #: Factors shorter than this are found in nearly every sentence and make the check pure overhead ...
 MIN_FACTOR_LEN = 3
 #: ... except punctuation that narratives seldom use ("(" of a parenthesis, "#").
