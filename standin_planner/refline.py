@@ -17,6 +17,13 @@ def wrap_angle(a: float) -> float:
     return (a + math.pi) % (2.0 * math.pi) - math.pi
 
 
+#: Segments per chunk of `project_many`'s pruning.
+CHUNK = 16
+#: Lines of at most this many chunks are searched whole (measured: the pruning pays from about 250 segments).
+MIN_CHUNKS = 16
+#: Slack (m) on the chunk distance bounds: far above rounding errors, so pruning never drops the nearest segment.
+CHUNK_SLACK = 1e-6
+
 #: Projections a line remembers (it forgets them all when full: they are cheap to recompute).
 PROJECTION_CACHE = 256
 
@@ -78,6 +85,19 @@ class RefLine:
         self._dx = np.ascontiguousarray(seg[:, 0])
         self._dy = np.ascontiguousarray(seg[:, 1])
         self._L2 = np.maximum(seg_len ** 2, 1e-12)
+        # Chunks of CHUNK segments with a circle round each (centre of the vertices' box, radius to the farthest):
+        # `project_many` skips chunks that cannot hold the nearest segment.
+        nseg = len(seg)
+        starts = np.arange(0, nseg, CHUNK)
+        centres, radii = [], []
+        for a in starts:
+            v = self.xy[a:min(a + CHUNK, nseg) + 1]
+            c = 0.5 * (v.min(axis=0) + v.max(axis=0))
+            centres.append(c)
+            radii.append(float(np.hypot(v[:, 0] - c[0], v[:, 1] - c[1]).max()))
+        self._chunk_x = np.array([c[0] for c in centres])
+        self._chunk_y = np.array([c[1] for c in centres])
+        self._chunk_r = np.array(radii)
         # Projections by (x, y, first segment, end segment), which fully determine the answer: the planner projects
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
@@ -191,15 +211,41 @@ class RefLine:
         """Vectorised (s, offset) of many points (used for predicted object positions)."""
         xs = np.asarray(xs, dtype=float)[:, None]
         ys = np.asarray(ys, dtype=float)[:, None]
-        # Contiguous per-coordinate rows (precomputed) instead of strided column views; same values, same order.
-        x0, y0, dx, dy = self._x0, self._y0, self._dx, self._dy
-        u = np.minimum(np.maximum(((xs - x0) * dx + (ys - y0) * dy) / self._L2, 0.0), 1.0)
+        idx = self._candidate_segments(xs, ys)
+        if idx is None:
+            x0, y0, dx, dy, L2 = self._x0, self._y0, self._dx, self._dy, self._L2
+        else:
+            x0, y0, dx, dy, L2 = self._x0[idx], self._y0[idx], self._dx[idx], self._dy[idx], self._L2[idx]
+        # The plain formula's operations in its order, so each segment's distance is bit-identical to it.
+        u = np.minimum(np.maximum(((xs - x0) * dx + (ys - y0) * dy) / L2, 0.0), 1.0)
         px = x0 + u * dx
         py = y0 + u * dy
         dist2 = (xs - px) ** 2 + (ys - py) ** 2
-        j = np.argmin(dist2, axis=1)
-        rows = np.arange(len(j))
+        jj = np.argmin(dist2, axis=1)
+        rows = np.arange(len(jj))
+        j = jj if idx is None else idx[rows, jj]
         h = self._seg_heading[j]
-        s = self.s[j] + u[rows, j] * self._seg_len[j]
-        off = -(xs[:, 0] - px[rows, j]) * np.sin(h) + (ys[:, 0] - py[rows, j]) * np.cos(h)
+        s = self.s[j] + u[rows, jj] * self._seg_len[j]
+        off = -(xs[:, 0] - px[rows, jj]) * np.sin(h) + (ys[:, 0] - py[rows, jj]) * np.cos(h)
         return s, off
+
+    def _candidate_segments(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray | None:
+        """Per point (row), increasing segment indices covering every chunk that may hold its nearest segment
+        (None: search them all). A chunk is left out only when even its nearest possible point is farther than
+        the farthest possible point of another chunk, so the first nearest segment (np.argmin's answer over the
+        whole line) is always inside; extra segments in between change nothing. Rows are padded with the last
+        segment repeated, which comes after the real one and so never wins a tie."""
+        n_chunks = len(self._chunk_r)
+        if n_chunks <= MIN_CHUNKS:
+            return None                                   # a short line: the bounds would cost more than they save
+        dc = np.hypot(xs - self._chunk_x, ys - self._chunk_y)
+        lower = dc - self._chunk_r
+        upper = (dc + self._chunk_r).min(axis=1, keepdims=True)
+        cand = lower <= upper * (1.0 + 1e-9) + CHUNK_SLACK
+        first = np.argmax(cand, axis=1)
+        last = n_chunks - 1 - np.argmax(cand[:, ::-1], axis=1)
+        width = int((last - first).max()) + 1
+        if 2 * width > n_chunks:
+            return None                                   # little to gain: search the whole line
+        idx = first[:, None] * CHUNK + np.arange(width * CHUNK)[None, :]
+        return np.minimum(idx, self._last_seg)

@@ -155,3 +155,31 @@ def test_project_many_equals_the_plain_formula_bit_for_bit():
         s, off = line.project_many(pts[:, 0], pts[:, 1])
         ws, woff = _plain_project_many(line, pts[:, 0], pts[:, 1])
         assert s.tobytes() == ws.tobytes() and off.tobytes() == woff.tobytes()
+
+
+def _long_lines() -> list[RefLine]:
+    """Lines long enough for project_many's chunk pruning: the esmini junction's 300 m approaches, and a loop that
+    passes near itself (two turns of a slowly widening circle), where candidate chunks are far apart."""
+    lines = [line for line in _lines(FABRIKSGATAN) if len(line.s) > 400]
+    a = np.linspace(0.0, 4.0 * math.pi, 1200)
+    r = 40.0 + 0.3 * a
+    lines.append(RefLine(np.stack([r * np.cos(a), r * np.sin(a)], axis=1)))
+    return lines
+
+
+def test_project_many_with_chunk_pruning_equals_the_plain_formula_bit_for_bit():
+    rng = np.random.default_rng(5)
+    lines = _long_lines()
+    assert len(lines) >= 2
+    pruned = 0
+    for line in lines:
+        for _ in range(20):
+            # A predicted path: a straight run of 31 points from somewhere near the line, in some direction.
+            x, y, _ = line.position(rng.uniform(-20.0, line.length + 20.0), rng.normal(0.0, 6.0))
+            h = rng.uniform(-math.pi, math.pi)
+            xs, ys = x + np.arange(31) * 0.6 * math.cos(h), y + np.arange(31) * 0.6 * math.sin(h)
+            pruned += line._candidate_segments(xs[:, None], ys[:, None]) is not None
+            s, off = line.project_many(xs, ys)
+            ws, woff = _plain_project_many(line, xs, ys)
+            assert s.tobytes() == ws.tobytes() and off.tobytes() == woff.tobytes()
+    assert pruned > 20           # the pruned path is the one exercised
