@@ -29,6 +29,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("name", choices=sorted(benches), help="; ".join(f"{k}: {v}" for k, v in benches.items()))
     parser.add_argument("--quick", action="store_true", help="smaller sizes, for a smoke run")
     parser.add_argument("--seed", type=int, default=0, help="RNG seed for generated inputs (default 0)")
+    parser.add_argument("--scenarios", type=int, default=None,
+                        help="campaign: how many scenarios to run (default 4,000; --quick: 300)")
 
 
 def run(args: argparse.Namespace) -> int:
