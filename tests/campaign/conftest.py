@@ -1,4 +1,4 @@
-"""Shared inputs of the campaign tests: real seeds built from the first dev-gold sketches (never the holdout)."""
+"""Shared inputs of the campaign tests: real seeds built from the first dev-gold sketches (dev set only)."""
 
 from __future__ import annotations
 

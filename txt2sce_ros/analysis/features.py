@@ -65,16 +65,14 @@ def weather_label(root: etree._Element) -> str:
 
 def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:
     """The state the ego's signal shows in the first phase (running while the parties interact) of the first
-    controller: the first of `facing` (signal ids facing the ego) the phase sets, else the phase's first signal
-    ('none' without a controller) — the same signal the tree's TLS mutation changes."""
-    ctrl = root.find(".//TrafficSignalController")
-    if ctrl is None:
+    controller ('none' without one): the signal `tree.environment.primary_signal` picks, the one the tree's TLS
+    mutation changes."""
+    from ..tree.environment import primary_signal
+
+    phase = root.find(".//TrafficSignalController/Phase")
+    state = primary_signal(phase, facing) if phase is not None else None
+    if state is None:
         return "none"
-    states = ctrl.findall("Phase[1]/TrafficSignalState")
-    if not states:
-        return "none"
-    by_id = {s.get("trafficSignalId"): s for s in states}
-    state = next((by_id[f] for f in facing if f in by_id), states[0])
     value = state.get("state", "").lower()
     for colour in ("red", "yellow", "green"):
         if colour in value:
@@ -193,7 +191,7 @@ def elements_of_file(path: str) -> frozenset[str]:
         if xodr is not None and xodr.is_file():
             net = load_network(str(xodr))
             if b"TrafficSignalController" in data:
-                from ..tree.context import build_context
+                from ..seed.context import build_context
 
                 facing = build_context(etree.fromstring(data, _PARSER), source=path, seed_path=Path(path)).ego_signals
     except Exception:   # the elements that need no map are still worth having

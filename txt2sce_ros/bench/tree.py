@@ -69,7 +69,7 @@ def _deepcopy_baseline(seeds: list[str], out: str, cfg: dict) -> tuple[int, int]
     from lxml import etree
 
     from txt2sce_ros.tree.build import seed_key
-    from txt2sce_ros.tree.context import build_context
+    from txt2sce_ros.seed.context import build_context
     from txt2sce_ros.tree.disassembly import disassemble
     from txt2sce_ros.tree.mutate import block_variants
     from txt2sce_ros.tree.xml import parse_bytes, parse_fragment
