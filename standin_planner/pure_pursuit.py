@@ -64,8 +64,15 @@ def curve_targets(line: RefLine, s_ego: float, v: float, v_max: float, p: Latera
     limit is below `v_max` (the speed the ego would otherwise aim for)."""
     horizon = max(p.curve_preview, v * v / (2.0 * decel) + 3.0 * v + 5.0)
     limits = curve_speed_profile(line, p)
+    # The vertices whose limit is below v_max, once per line and v_max (the planner's v_max is its desired speed).
+    key = ("curve_below", p.max_lateral_accel, p.max_yaw_rate, v_max)
+    below = line.cache.get(key)
+    if below is None:
+        below = [i for i, vc in enumerate(limits) if vc < v_max]
+        line.cache[key] = below
     s_all = line.s_list
-    # The vertices with s0 <= s <= s1, as `max_abs_curvature` selects them (s is sorted).
+    # The vertices with s0 <= s <= s1, as `max_abs_curvature` selects them (s is sorted): index range [lo, hi).
     lo = bisect.bisect_left(s_all, s_ego - 2.0)
     hi = bisect.bisect_right(s_all, s_ego + horizon)
-    return [(max(s_all[i] - s_ego, 0.0), limits[i]) for i in range(lo, hi) if limits[i] < v_max]
+    return [(max(s_all[i] - s_ego, 0.0), limits[i])
+            for i in below[bisect.bisect_left(below, lo):bisect.bisect_left(below, hi)]]
