@@ -12,7 +12,7 @@ from txt2sce_ros.contract import Frame, Goal, RunStatus
 
 from .params import OracleParams
 from .records import Category, Rule, RunVerdict, Violation
-from .safety import ContactOracle, JerkCollisionOracle
+from .safety import Contact, ContactOracle, JerkCollisionOracle, struck_while_stopped
 from .signals import Differentiator
 from .smartness import SmartnessOracle
 from .smoothness import SmoothnessOracle
@@ -61,8 +61,8 @@ class Oracle:
         self.frames += 1
         self.t_last = frame.t
         new: list[Violation] = []
-        for t, obj, depth in self.contact.observe(frame):
-            new.append(self._classify_contact(t, obj, depth, frame))
+        for contact in self.contact.observe(frame):
+            new.append(self._classify_contact(contact, frame))
         jerk = self.jerk.observe(sample, frame)
         if jerk:
             new.append(jerk)
@@ -71,7 +71,11 @@ class Oracle:
         self.violations.extend(new)
         return new
 
-    def _classify_contact(self, t: float, obj: Any, depth: float, frame: Frame) -> Violation:
+    def _classify_contact(self, contact: Contact, frame: Frame) -> Violation:
+        struck = struck_while_stopped(contact, self.params.safety)
+        if struck is not None:
+            return struck
+        t, obj, depth = contact.t, contact.entity, contact.depth
         ego = frame.ego
         rel = ego.speed - obj.speed
         seen = self.smart.visible_for(obj.name, t)
@@ -113,7 +117,8 @@ class Oracle:
             notes.append(f"jerk rule computed over {self.jerk.coarse_interval * 1000:.0f} ms frames (paper: "
                          f"5–15 ms)")
         contacts = [v for v in self.violations if v.rule in (Rule.CONTACT, Rule.STATIC_OBSTACLE_HIT)]
-        if self._end_reason == "collision" and not contacts:
+        struck = [v for v in self.violations if v.rule is Rule.STRUCK_WHILE_STOPPED]
+        if self._end_reason == "collision" and not contacts and not struck:
             notes.append("the player ended the run on a collision that the footprints never showed (check the "
                          "entities' bounding boxes)")
         jerks = [v for v in self.violations if v.rule is Rule.JERK_COLLISION]

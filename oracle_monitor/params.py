@@ -20,6 +20,7 @@ class SafetyParams:
     jerk_max_interval: float = 0.015       # s
     contact_refine_steps: int = 12
     jerk_match_window: float = 0.5         # s
+    struck_speed: float = 0.1              # m/s, an ego slower than this at contact was standing still: struck
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,6 +86,8 @@ class OracleParams:
         if self.smoothness.jerk_mode not in JERK_MODES:
             raise InputError(f"jerk_mode must be one of {JERK_MODES}, got {self.smoothness.jerk_mode!r}",
                              source=source, element="smoothness.jerk_mode")
+        if self.safety.struck_speed < 0:
+            raise InputError("struck_speed must not be negative", source=source, element="safety.struck_speed")
         if self.smoothness.window <= 0:
             raise InputError("window must be positive", source=source, element="smoothness.window")
         return self

@@ -38,6 +38,7 @@ class Rule(str, enum.Enum):
     GOAL_NOT_REACHED = "goal_not_reached"        # run over (time out or end of story) with the goal not reached
     RED_LIGHT = "red_light"                      # crossed a stop line whose signal showed red
     STATIC_OBSTACLE_HIT = "static_obstacle_hit"  # contact with a static object that had been in view
+    STRUCK_WHILE_STOPPED = "struck_while_stopped"  # contact while the ego stood still (reported beside)
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,6 +4,11 @@ Contact is the ground truth a simulator can offer: two oriented rectangles overl
 contact is placed between the last frame apart and the first frame in contact by bisection on poses interpolated
 linearly between the two frames, so it does not depend on the step size.
 
+A contact in which the ego stood still (|speed| below `struck_speed` in the frames either side of it) is not
+the ego's collision: Table VI's Collisions is "the vehicle crashes into a static object or a dynamic road user", and
+an ego standing still was struck — typically by a non-reactive NPC replaying the accident. Such contacts are
+reported beside the verdict (rule `struck_while_stopped`, no category) so a planner fault is not masked by them.
+
 The jerk rule is the paper's (§III-D.2, after Sequeira et al.): a collision is flagged when |jerk| exceeds
 T_cj = 300 m/s³ over a short interval (5–15 ms there). Here the interval is the frame period (50 ms for the
 player's default step): the finest a recording offers. The rule is kept beside the contact oracle so the two can be
@@ -12,7 +17,7 @@ compared run by run; `collision_rule` in the configuration chooses which one dec
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, NamedTuple
 
 from txt2sce_ros.contract import EntityState, Frame
 
@@ -22,6 +27,15 @@ from .records import Category, Rule, Violation
 from .signals import Sample
 
 
+class Contact(NamedTuple):
+    """One contact between the ego and another entity, at its onset."""
+
+    t: float                  # s, contact time refined between frames
+    entity: EntityState       # the other entity, as in the first frame in contact
+    depth: float              # m, overlap depth in that frame
+    ego_speed: float          # m/s, the ego's largest |speed| in the last frame apart and the first in contact
+
+
 class ContactOracle:
     """Ego vs every entity. Reports each contact once, at its start; a new contact after separation is new."""
 
@@ -29,12 +43,15 @@ class ContactOracle:
         self.params = params
         self._prev: Frame | None = None
         self._in_contact: set[str] = set()
-        self.contacts: list[tuple[float, EntityState, float]] = []   # (t, entity at first contact frame, depth)
+        self.contacts: list[Contact] = []
 
-    def observe(self, frame: Frame) -> list[tuple[float, EntityState, float]]:
-        """New contacts in this frame: (contact time, the entity hit, overlap depth in m)."""
+    def observe(self, frame: Frame) -> list[Contact]:
+        """New contacts in this frame."""
         ego_box = footprint(frame.ego)
-        new: list[tuple[float, EntityState, float]] = []
+        ego_speed = abs(frame.ego.speed)
+        if self._prev is not None:
+            ego_speed = max(ego_speed, abs(self._prev.ego.speed))
+        new: list[Contact] = []
         touching: set[str] = set()
         for obj in frame.objects:
             box = footprint(obj)
@@ -44,7 +61,7 @@ class ContactOracle:
             if obj.name in self._in_contact:
                 continue
             t = self._contact_time(frame, obj)
-            item = (t, obj, penetration(ego_box, box))
+            item = Contact(t, obj, penetration(ego_box, box), ego_speed)
             new.append(item)
             self.contacts.append(item)
         self._in_contact = touching
@@ -66,6 +83,17 @@ class ContactOracle:
         if touching(0.0):                         # was already touching at the previous frame
             return frame.t
         return _bisect(touching, prev.t, frame.t, self.params.contact_refine_steps)
+
+
+def struck_while_stopped(contact: Contact, params: SafetyParams) -> Violation | None:
+    """The contact as an event reported beside the verdict when the ego stood still in it (it was struck), else
+    None (the caller judges it as the ego's contact)."""
+    if contact.ego_speed >= params.struck_speed:
+        return None
+    obj = contact.entity
+    return Violation(Rule.STRUCK_WHILE_STOPPED, None, contact.t, contact.ego_speed, params.struck_speed, "m/s",
+                     (obj.name,), f"struck by {obj.category} {obj.name} while standing still (ego "
+                     f"{contact.ego_speed:.2f} m/s, {obj.name} {obj.speed:.2f} m/s, overlap {contact.depth:.2f} m)")
 
 
 def _box_between(e0: EntityState, e1: EntityState, u: float) -> Box:

@@ -10,6 +10,10 @@ exclusive"):
   one — the one whose first event came first (a red light run at 5 s that ends in a crash at 6 s is Misinterp:
   the earliest misbehaviour is the cause). Ties break in the order Collisions, Misinterp, StartFail.
 - Otherwise PlanFail and Smooth, either or both.
+- Struck while standing still (`struck_while_stopped`, reported beside): when the player ended the run on that
+  contact (end reason `collision`, no contact of the ego's own), the goal was not reached because the run was cut
+  short, not because the ego failed to plan: that goal-not-reached event is kept in `violations` but decides no
+  category.
 Categories that fired but are excluded stay visible in `RunVerdict.suppressed`; every event in `violations`.
 """
 
@@ -20,7 +24,7 @@ from typing import Iterable
 
 from txt2sce_ros.contract import RunStatus, Verdict
 
-from .records import EXCLUSIVE, Category, Finding, RunVerdict, Violation
+from .records import EXCLUSIVE, Category, Finding, Rule, RunVerdict, Violation
 
 #: end reasons that mean the harness, not the system under test, ended the run
 ERROR_END_REASONS = frozenset({"planner_not_responding", "invalid_scenario", "simulation_fault", "player_error",
@@ -55,13 +59,29 @@ def findings(violations: Iterable[Violation]) -> dict[Category, Finding]:
     return out
 
 
+def _judged(violations: tuple[Violation, ...], status: RunStatus | None) -> tuple[Violation, ...]:
+    """The violations that decide categories: all of them, less a goal not reached because the run ended on the
+    ego being struck while standing still."""
+    if status is None or status.end_reason != "collision":
+        return violations
+    rules = {v.rule for v in violations}
+    struck = any(v.rule is Rule.STRUCK_WHILE_STOPPED for v in violations)
+    if not struck or rules & {Rule.CONTACT, Rule.STATIC_OBSTACLE_HIT}:
+        return violations
+    return tuple(v for v in violations if v.rule is not Rule.GOAL_NOT_REACHED)
+
+
 def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frames: int, t_end: float,
            scenario_id: str = "", notes: tuple[str, ...] = ()) -> RunVerdict:
     common = dict(scenario_id=scenario_id or (status.scenario_id if status else ""),
                   end_reason=status.end_reason if status else "", t_end=t_end, frames=frames,
                   violations=violations, notes=notes)
     why = error_reason(status, frames)
-    found = findings(violations)
+    judged = _judged(violations, status)
+    found = findings(judged)
+    if len(judged) < len(violations):
+        notes = notes + ("the run ended when the ego was struck while standing still: goal not reached not judged",)
+        common["notes"] = notes
     incomplete = status is None and frames > 0
     if why and not (incomplete and found):
         return RunVerdict(Verdict.ERROR, error=why, **common)

@@ -8,9 +8,10 @@ import pytest
 
 from oracle_monitor import Category, Oracle, OracleParams, Rule
 from oracle_monitor.geometry import box_at, footprint, overlaps, penetration
-from txt2sce_ros.contract import Verdict
+from txt2sce_ros.contract import Goal, Verdict
+from txt2sce_ros.errors import InputError
 
-from .oracle_runs import car, ego, esmini_frames, judge, straight_run
+from .oracle_runs import car, ego, esmini_frames, finished, judge, straight_run
 
 PARAMS = OracleParams.from_config()
 
@@ -97,3 +98,53 @@ def test_esmini_slow_lead_vehicle_has_no_contact() -> None:
     frames = esmini_frames("slow-lead-vehicle")
     _, online = judge(Oracle(None, None, PARAMS), frames)
     assert not [v for v in online if v.rule in (Rule.CONTACT, Rule.JERK_COLLISION)]
+
+
+# --- struck while standing still (not the ego's collision) --------------------------------------------------------
+
+def _rear_ended(ego_speed: float) -> list:
+    """The ego waits (or creeps at `ego_speed`) at x = 0; a car from behind at 8 m/s runs into it at t ≈ 1.67 s."""
+    behind = lambda t: [car("npc1", t, -18.0 + 8.0 * t, speed=8.0)]
+    return straight_run(lambda t: ego_speed, 2.5, objects=behind)
+
+
+def test_stopped_ego_rear_ended_is_struck_not_collisions() -> None:
+    frames = _rear_ended(0.0)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames, finished(frames[-1].t, "collision"))
+    struck = [v for v in online if v.rule is Rule.STRUCK_WHILE_STOPPED]
+    assert len(struck) == 1 and struck[0].entities == ("npc1",) and struck[0].category is None
+    # Gap between the NPC's front bumper and the ego's rear bumper: 18 - 4.5 = 13.5 m at 8 m/s.
+    assert struck[0].t == pytest.approx(13.5 / 8.0, abs=1e-3)
+    assert not [v for v in online if v.rule is Rule.CONTACT]
+    assert verdict.verdict is Verdict.PASS, verdict.summary()
+
+
+def test_struck_run_ended_by_the_player_is_no_plan_fail() -> None:
+    # The player ends a run on any ego contact; the goal 100 m ahead is then out of reach through no fault of
+    # the ego: no PlanFail, and the event stays in the verdict's violations.
+    frames = _rear_ended(0.0)
+    goal = Goal(100.0, 0.0, 0.0, 2.0)
+    verdict, _ = judge(Oracle(None, goal, PARAMS), frames, finished(frames[-1].t, "collision"))
+    assert verdict.verdict is Verdict.PASS, verdict.summary()
+    assert any(v.rule is Rule.GOAL_NOT_REACHED for v in verdict.violations)
+    assert any("struck while standing still" in n for n in verdict.notes)
+    # The same run timing out without contact is still a PlanFail: only the struck ending is excused.
+    alone = straight_run(lambda t: 0.0, 2.5)
+    timed_out, _ = judge(Oracle(None, goal, PARAMS), alone, finished(alone[-1].t, "time_limit"))
+    assert "PlanFail" in timed_out.category_names()
+
+
+def test_moving_ego_in_the_same_contact_is_collisions() -> None:
+    # Creeping at 0.5 m/s (above struck_speed) the ego is a party to the crash: Table VI's Collisions.
+    frames = _rear_ended(0.5)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames, finished(frames[-1].t, "collision"))
+    assert [v.rule for v in online if v.entities == ("npc1",)][:1] == [Rule.CONTACT]
+    assert verdict.category_names() == ("Collisions",)
+
+
+def test_struck_speed_comes_from_the_config() -> None:
+    params = PARAMS.with_overrides(safety={"struck_speed": 0.0})   # nobody is ever "standing still enough"
+    verdict, online = judge(Oracle(None, None, params), _rear_ended(0.0))
+    assert verdict.category_names() == ("Collisions",)
+    with pytest.raises(InputError):
+        PARAMS.with_overrides(safety={"struck_speed": -1.0})
