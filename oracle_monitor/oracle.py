@@ -12,7 +12,7 @@ from txt2sce_ros.contract import Frame, Goal, RunStatus
 
 from .params import OracleParams
 from .records import Category, Rule, RunVerdict, Violation
-from .safety import Contact, ContactOracle, JerkCollisionOracle, struck_while_stopped
+from .safety import Contact, ContactOracle, JerkCollisionOracle, reported_beside
 from .signals import Differentiator
 from .smartness import SmartnessOracle
 from .smoothness import SmoothnessOracle
@@ -72,9 +72,9 @@ class Oracle:
         return new
 
     def _classify_contact(self, contact: Contact, frame: Frame) -> Violation:
-        struck = struck_while_stopped(contact, self.params.safety)
-        if struck is not None:
-            return struck
+        beside = reported_beside(contact, self.params.safety)
+        if beside is not None:
+            return beside
         t, obj, depth = contact.t, contact.entity, contact.depth
         ego = frame.ego
         rel = ego.speed - obj.speed

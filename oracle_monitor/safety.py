@@ -9,6 +9,9 @@ the ego's collision: Table VI's Collisions is "the vehicle crashes into a static
 an ego standing still was struck — typically by a non-reactive NPC replaying the accident. Such contacts are
 reported beside the verdict (rule `struck_while_stopped`, no category) so a planner fault is not masked by them.
 
+A contact already there in the first frame is the scenario's fault (entities placed overlapping, e.g. debris under
+the ego's start), so it is reported as `overlap_at_start` and the verdict is an error, never a fail.
+
 The jerk rule is the paper's (§III-D.2, after Sequeira et al.): a collision is flagged when |jerk| exceeds
 T_cj = 300 m/s³ over a short interval (5–15 ms there). Here the interval is the frame period (50 ms for the
 player's default step): the finest a recording offers. The rule is kept beside the contact oracle so the two can be
@@ -34,6 +37,7 @@ class Contact(NamedTuple):
     entity: EntityState       # the other entity, as in the first frame in contact
     depth: float              # m, overlap depth in that frame
     ego_speed: float          # m/s, the ego's largest |speed| in the last frame apart and the first in contact
+    at_start: bool = False    # already touching in the first frame of the run (the scenario placed them so)
 
 
 class ContactOracle:
@@ -61,7 +65,7 @@ class ContactOracle:
             if obj.name in self._in_contact:
                 continue
             t = self._contact_time(frame, obj)
-            item = Contact(t, obj, penetration(ego_box, box), ego_speed)
+            item = Contact(t, obj, penetration(ego_box, box), ego_speed, at_start=self._prev is None)
             new.append(item)
             self.contacts.append(item)
         self._in_contact = touching
@@ -85,12 +89,18 @@ class ContactOracle:
         return _bisect(touching, prev.t, frame.t, self.params.contact_refine_steps)
 
 
-def struck_while_stopped(contact: Contact, params: SafetyParams) -> Violation | None:
-    """The contact as an event reported beside the verdict when the ego stood still in it (it was struck), else
-    None (the caller judges it as the ego's contact)."""
+def reported_beside(contact: Contact, params: SafetyParams) -> Violation | None:
+    """The contact as an event that is not the ego's collision, or None (the caller judges it as the ego's).
+
+    - Already touching in the first frame: the scenario placed them overlapping (`overlap_at_start`; the verdict
+      turns it into an error of the scenario — nothing the ego did).
+    - The ego stood still in it: it was struck (`struck_while_stopped`, reported beside the verdict)."""
+    obj = contact.entity
+    if contact.at_start:
+        return Violation(Rule.OVERLAP_AT_START, None, contact.t, contact.depth, 0.0, "m", (obj.name,),
+                         f"ego and {obj.category} {obj.name} overlap by {contact.depth:.2f} m in the first frame")
     if contact.ego_speed >= params.struck_speed:
         return None
-    obj = contact.entity
     return Violation(Rule.STRUCK_WHILE_STOPPED, None, contact.t, contact.ego_speed, params.struck_speed, "m/s",
                      (obj.name,), f"struck by {obj.category} {obj.name} while standing still (ego "
                      f"{contact.ego_speed:.2f} m/s, {obj.name} {obj.speed:.2f} m/s, overlap {contact.depth:.2f} m)")

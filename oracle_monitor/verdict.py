@@ -2,6 +2,8 @@
 
 Rules (paper §IV RQ2, Table VI: "only the last two behaviour types may overlap, while others are mutually
 exclusive"):
+- error: the scenario placed the ego overlapping another entity in the first frame (`overlap_at_start`): an
+  invalid scenario, not a collision of the system under test.
 - error: the run itself broke (the player reports `verdict_hint: error`, e.g. planner not responding or an invalid
   scenario), or no frame was observed. "Nothing observed" is never a pass.
 - a run that never reported its end (killed, recording cut short) is a fail if a category fired in the part
@@ -45,6 +47,14 @@ def error_reason(status: RunStatus | None, frames: int) -> str:
     return ""
 
 
+def overlap_reason(violations: Iterable[Violation]) -> str:
+    """'invalid scenario: …' when the ego overlapped another entity in the first frame, else ''."""
+    names = [n for v in violations if v.rule is Rule.OVERLAP_AT_START for n in v.entities]
+    if not names:
+        return ""
+    return f"invalid scenario: entities overlap at start (ego and {', '.join(names)})"
+
+
 def findings(violations: Iterable[Violation]) -> dict[Category, Finding]:
     by_cat: dict[Category, list[Violation]] = defaultdict(list)
     for v in violations:
@@ -76,14 +86,16 @@ def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frame
     common = dict(scenario_id=scenario_id or (status.scenario_id if status else ""),
                   end_reason=status.end_reason if status else "", t_end=t_end, frames=frames,
                   violations=violations, notes=notes)
-    why = error_reason(status, frames)
+    # An overlap at start names the cause more precisely than the player's end reason ("collision" at step 1).
+    overlap = overlap_reason(violations)
+    why = overlap or error_reason(status, frames)
     judged = _judged(violations, status)
     found = findings(judged)
     if len(judged) < len(violations):
         notes = notes + ("the run ended when the ego was struck while standing still: goal not reached not judged",)
         common["notes"] = notes
     incomplete = status is None and frames > 0
-    if why and not (incomplete and found):
+    if why and (overlap or not (incomplete and found)):
         return RunVerdict(Verdict.ERROR, error=why, **common)
     if incomplete:
         # Cut short (crash, kill, damaged recording) after a misbehaviour: that failure is certain whatever

@@ -148,3 +148,39 @@ def test_struck_speed_comes_from_the_config() -> None:
     assert verdict.category_names() == ("Collisions",)
     with pytest.raises(InputError):
         PARAMS.with_overrides(safety={"struck_speed": -1.0})
+
+
+# --- contact already present in the first frame: an invalid scenario ----------------------------------------------
+
+def test_overlap_in_the_first_frame_is_an_error_never_a_fail() -> None:
+    debris = lambda t: [car("obs1", t, 1.0, category="obstacle", is_static=True)]
+    frames = straight_run(lambda t: 0.0, 2.0, objects=debris)
+    for status in (finished(frames[-1].t, "collision"), None):       # ended by the player, or cut short
+        verdict, online = judge(Oracle(None, None, PARAMS), frames, status)
+        assert [v.rule for v in online] == [Rule.OVERLAP_AT_START]
+        assert verdict.verdict is Verdict.ERROR and not verdict.categories
+        assert verdict.error == "invalid scenario: entities overlap at start (ego and obs1)"
+    # The same debris reached after the start is a contact judged as usual (a static hit in view: Misinterp).
+    later = straight_run(lambda t: 2.0, 4.0, objects=lambda t: [car("obs1", t, 8.0, category="obstacle",
+                                                                   is_static=True)])
+    verdict, online = judge(Oracle(None, None, PARAMS), later)
+    assert verdict.verdict is Verdict.FAIL and not any(v.rule is Rule.OVERLAP_AT_START for v in online)
+
+
+def test_seed_r512_debris_under_the_ego_is_an_invalid_scenario(tmp_path) -> None:
+    # The real case: seed r512 of dev_gold places debris obs1 under the ego's start; the closed loop run must be
+    # an error of the scenario, not a Collision of the planner.
+    from txt2sce_ros.closed_loop import run_closed_loop
+    from txt2sce_ros.paths import shared_dir
+    from txt2sce_ros.seed.generate import write_seeds
+    from txt2sce_ros.sketch import Sketch, load_sketches
+
+    gold = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
+    sketch = next(s for s in load_sketches(gold) if isinstance(s, Sketch)
+                  and s.report_id == "dmvca-ghostauton-20230814-r512")
+    manifest = write_seeds([sketch], tmp_path)
+    record, _ = run_closed_loop(tmp_path / manifest["built"][0]["file"], time_limit=5.0)
+    d = record.to_dict()
+    assert d["verdict"] == "error", d
+    why = d["details"]["error"]
+    assert "invalid scenario: entities overlap at start" in why and "obs1" in why and not d["categories"]
