@@ -57,4 +57,6 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(f"{n} reports -> {out}: {n - errors - incomplete} buildable sketches, {incomplete} incomplete "
               f"(missing facts), {errors} errors", file=sys.stderr)
-    return 0
+    # A batch carries on past bad rows (each has its error record), but a batch where nothing could be read is
+    # a failure the caller should see in the exit status.
+    return 1 if n and errors == n else 0
