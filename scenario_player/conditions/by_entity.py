@@ -94,37 +94,30 @@ class AccelerationCondition(EntityCheck):
 
 
 @dataclass(frozen=True, slots=True)
-class StandStillCondition(EntityCheck):
+class _DurationCheck(EntityCheck):
+    """A state that must have lasted `duration` seconds (StandStill, EndOfRoad, Offroad): one parser for all."""
+
     duration: float
 
     @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "StandStillCondition":
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "_DurationCheck":
         return cls(ctx.float(el, "duration"))
 
+
+@dataclass(frozen=True, slots=True)
+class StandStillCondition(_DurationCheck):
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.standstill_time >= self.duration - 1e-9 and abs(ent.speed) < 1e-3
 
 
 @dataclass(frozen=True, slots=True)
-class EndOfRoadCondition(EntityCheck):
-    duration: float
-
-    @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "EndOfRoadCondition":
-        return cls(ctx.float(el, "duration"))
-
+class EndOfRoadCondition(_DurationCheck):
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.end_of_road_time is not None and ent.end_of_road_time >= self.duration - 1e-9
 
 
 @dataclass(frozen=True, slots=True)
-class OffroadCondition(EntityCheck):
-    duration: float
-
-    @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "OffroadCondition":
-        return cls(ctx.float(el, "duration"))
-
+class OffroadCondition(_DurationCheck):
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.offroad_time is not None and ent.offroad_time >= self.duration - 1e-9
 
