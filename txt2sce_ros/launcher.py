@@ -42,6 +42,8 @@ def _param(value: Any) -> str:
         return "true" if value else "false"
     if isinstance(value, (list, tuple)):
         return "[" + ",".join(f"'{v}'" if isinstance(v, str) else str(v) for v in value) + "]"
+    if value == "":
+        return "''"  # `name:=` alone does not parse; an empty YAML string does
     return str(value)
 
 
