@@ -11,6 +11,7 @@ from lxml import etree
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.tree import BlockKind, assemble, disassemble
 from txt2sce_ros.tree.build import tree_config
+from txt2sce_ros.tree.environment import signal_timing
 from txt2sce_ros.seed.context import build_context, lane_pos
 from txt2sce_ros.tree.mutate import block_variants
 from txt2sce_ros.tree.trajectory import feasible_s
@@ -119,9 +120,52 @@ def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
     d, block, vs, _ = _variants(JUNCTION, cfg, "signal_ctrl_4")
     assert [v.features for v in vs] == [("signal", "green", "green/red/red"), ("signal", "yellow", "yellow/red/red"),
                                         ("signal", "red", "red/green/green")]
-    assert vs[0].changes == ()  # green is the seed's own state
+    timing = signal_timing()
+    expected = {  # (phase, duration, state of the primary signal 1, state of the conflicting signals 2 and 3)
+        "green": [("tls_green", timing.hold, "green", "red")],
+        "yellow": [("tls_yellow", timing.yellow, "yellow", "red"),
+                   ("tls_red", timing.red - timing.yellow, "red", "green"),
+                   ("tls_red_clear", timing.yellow, "red", "yellow"), ("tls_green", timing.hold, "green", "red")],
+        "red": [("tls_red", timing.red - timing.yellow, "red", "green"),
+                ("tls_red_clear", timing.yellow, "red", "yellow"), ("tls_green", timing.hold, "green", "red")],
+    }
     for v in vs:
+        ctrl = parse_fragment(v.fragments[0])
+        phases = [(p.get("name"), float(p.get("duration")),
+                   *[s.get("state") for s in p.findall("TrafficSignalState")]) for p in ctrl.findall("Phase")]
+        assert phases == [(n, dur, a, b, b) for n, dur, a, b in expected[v.features[1]]]
         assert _valid_with(d, block, v) == []
+    # Even green rewrites the seed's cycle (green 20 s, then yellow, then red): green now holds for the run.
+    assert [c.new for c in vs[0].changes] == [f"tls_green:{timing.hold:g} (green)"]
+
+
+def test_tls_states_hold_their_meaning_in_the_player(cfg):
+    # Played by the scenario player — a mutated yellow turns red after `yellow` s, a red turns green after `red` s.
+    # The ego gets no command (it stands); the NPC's scripted path hits it, so contact must not end the run.
+    from scenario_player import Simulation, SimulationConfig, load_scenario
+
+    d, block, vs, _ = _variants(JUNCTION, cfg, "signal_ctrl_4")
+    timing = signal_timing()
+    xodr = (JUNCTION.parent / etree.fromstring(JUNCTION.read_bytes()).find(".//LogicFile").get("filepath")).resolve()
+    seen = {}
+    for v in vs:
+        frags = d.originals()
+        for slot, frag in zip(block.slots, v.fragments):
+            frags[slot] = frag
+        sim = Simulation(load_scenario(assemble(d.template, frags), source=str(JUNCTION),
+                                       map_path=str(xodr)), SimulationConfig(ego_mode="planner", time_limit=30.0,
+                                                                        stop_on_ego_collision=False))
+        frame, states = sim.reset(), {}
+        while frame.t < timing.yellow + timing.red + 0.5 and not sim.done:
+            states[round(frame.t, 2)] = {l.id: l.state.value for l in frame.lights}["1"]
+            frame = sim.step()
+        seen[v.features[1]] = states
+        assert max(states) >= timing.yellow + timing.red, (v.features, max(states), sim.end_reason)
+    y, r = timing.yellow, timing.red
+    assert {seen["green"][t] for t in seen["green"]} == {"green"}
+    assert seen["yellow"][0.0] == seen["yellow"][y - 0.05] == "yellow"
+    assert seen["yellow"][y] == seen["yellow"][y + r - 0.05] == "red" and seen["yellow"][y + r] == "green"
+    assert seen["red"][0.0] == seen["red"][r - 0.05] == "red" and seen["red"][r] == "green"
 
 
 def test_wpm_lane_change_offset_keeps_entity_in_its_lane(cfg):

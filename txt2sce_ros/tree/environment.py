@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass, fields
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
 from lxml import etree
 
+from ..config import load_config
+from ..errors import InputError
 from ..seed.context import LanePos, SeedContext
 from .values import Recorder, uniform
 
@@ -69,23 +73,80 @@ def primary_signal(phase: etree._Element, facing: tuple[str, ...] = ()) -> etree
     return next((by_id[f] for f in facing if f in by_id), states[0])
 
 
-def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, ...] = ()) -> str:
-    """Traffic Signal Mutation: in the controller's first phase (running while the parties interact) the primary
-    signal — the first of `facing` (the signals facing the AV, per the map) the phase sets, else the phase's
-    first — shows `state`; signals that showed the primary's old state follow it, the others show the
-    conflicting state (red while the primary is green/yellow, green otherwise). Returns the old state."""
+@dataclass(frozen=True, slots=True)
+class SignalTiming:
+    """How long the phases the TLS mutation writes last (s); `config/effect.yaml`, section `tls`."""
+
+    yellow: float = 4.0
+    red: float = 12.0
+    hold: float = 3600.0
+
+
+@lru_cache(maxsize=1)
+def signal_timing() -> SignalTiming:
+    """The TLS phase timing from `config/effect.yaml` (defaults for keys left out; unknown keys are errors)."""
+    section = load_config("effect").get("tls", {}) or {}
+    known = {f.name for f in fields(SignalTiming)}
+    for key, value in section.items():
+        if key not in known:
+            raise InputError(f"unknown key (known: {', '.join(sorted(known))})", source="config/effect.yaml",
+                             element=f"tls.{key}")
+        if not isinstance(value, (int, float)) or value <= 0:
+            raise InputError(f"must be a positive number of seconds, got {value!r}", source="config/effect.yaml",
+                             element=f"tls.{key}")
+    timing = SignalTiming(**{k: float(v) for k, v in section.items()})
+    if timing.red <= timing.yellow:
+        raise InputError("tls.red must exceed tls.yellow (the conflicting signals' yellow is part of the red)",
+                         source="config/effect.yaml", element="tls.red")
+    return timing
+
+
+def _schedule(state: str, timing: SignalTiming) -> list[tuple[str, float, str, str]]:
+    """The phases that make `state` meaningful: (phase name, duration, primary's state, conflicting signals').
+
+    green: green for the run. yellow: yellow for `yellow` s, then red, then green. red: red for `red` s, then
+    green. While the primary is red the conflicting signals are green, and yellow for its last `yellow` s so
+    they clear before the primary turns green; the last phase holds for the rest of the run."""
+    red = [("tls_red", timing.red - timing.yellow, "red", "green"),
+           ("tls_red_clear", timing.yellow, "red", "yellow"),
+           ("tls_green", timing.hold, "green", "red")]
+    if state == "green":
+        return red[-1:]
+    if state == "yellow":
+        return [("tls_yellow", timing.yellow, "yellow", "red")] + red
+    return red
+
+
+def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, ...] = (),
+        timing: SignalTiming | None = None) -> str:
+    """Traffic Signal Mutation: the controller's primary signal — the first of `facing` (the signals facing the
+    AV, per the map) its first phase sets, else that phase's first — starts showing `state`, and the controller's
+    phases are rewritten so the state means something over the run (`_schedule`): a yellow turns red, a red turns
+    green after a while so the goal stays reachable, a green stays green. Signals that showed the primary's old
+    state in the first phase follow the primary; the others show the conflicting state. Returns the old state."""
     phase = ctrl.find("Phase")
     first = primary_signal(phase, facing) if phase is not None else None
     if first is None:
         return ""
-    states = phase.findall("TrafficSignalState")
+    timing = timing or signal_timing()
     lamps = ";" in (first.get("state") or "")
     old = signal_state_name(first.get("state", ""))
-    conflict = "green" if state == "red" else "red"
-    for s in states:
-        same = signal_state_name(s.get("state", "")) == old
-        target = state if (s is first or same) else conflict
-        rec.set(s, "state", _LAMP_STATES[target] if lamps else target)
+    follows = [signal_state_name(s.get("state", "")) == old or s is first for s in phase.findall("TrafficSignalState")]
+    ids = [s.get("trafficSignalId") for s in phase.findall("TrafficSignalState")]
+    before = [(p.get("name"), p.get("duration")) for p in ctrl.findall("Phase")]
+    for p in ctrl.findall("Phase"):
+        ctrl.remove(p)
+    for name, duration, primary, conflict in _schedule(state, timing):
+        ph = etree.SubElement(ctrl, "Phase", name=name)
+        ph.set("duration", rec.db.check_value("Phase", "duration", f"{duration:g}"))
+        for sid, same in zip(ids, follows):
+            shown = primary if same else conflict
+            etree.SubElement(ph, "TrafficSignalState", trafficSignalId=sid,
+                             state=_LAMP_STATES[shown] if lamps else shown)
+    rec.check_tree(ctrl)
+    after = [(p.get("name"), p.get("duration")) for p in ctrl.findall("Phase")]
+    rec.note(f"TrafficSignalController[@name='{ctrl.get('name')}']/Phase",
+             " ".join(f"{n}:{d}" for n, d in before), " ".join(f"{n}:{d}" for n, d in after) + f" ({state})")
     return old
 
 
