@@ -1,8 +1,9 @@
 """Regression fingerprints of closed-loop runs with the REAL stand-in planner, to prove that a speed-up of the
 planner changed no command. (`scenario_player.fingerprint` drives a toy policy, so it cannot see the planner.)
 
-Per run: SHA-256 of every trajectory row of every entity (raw float64 bytes) plus the verdict record (verdict,
-categories, end reason, steps, details). Also times the planner's `step` calls (CPU time) and the whole runs.
+Per run: SHA-256 of every trajectory row of every entity (raw float64 bytes), and SHA-256 of the verdict record
+(verdict, categories, end reason, steps, details). Record the reference with the old code and check the new one
+right after: the verdicts also depend on the oracle, which other people change. Also times the planner's `step` calls (CPU time) and the whole runs.
 
     python -m standin_planner.regress record REF.json FILE_OR_DIR...   # writes the digests
     python -m standin_planner.regress check REF.json FILE_OR_DIR...    # recomputes, lists runs that differ
@@ -60,25 +61,27 @@ def _install_timer() -> None:
     planner_mod.Planner.step = step  # type: ignore[method-assign]
 
 
-def digest_run(path: Path) -> tuple[str, int]:
-    """(hex digest, steps) of one closed-loop run of `path`."""
+def digest_run(path: Path) -> tuple[dict[str, str], int]:
+    """({"trajectory": hex digest, "verdict": hex digest}, steps) of one closed-loop run of `path`. Two digests, so
+    a change of the oracle (another package, edited meanwhile) is told apart from a change of the driving."""
     from txt2sce_ros.closed_loop import run_closed_loop
 
     rec, traj = run_closed_loop(path, keep_trajectory=True)
-    h = hashlib.sha256()
+    v = hashlib.sha256()
     summary = {"verdict": str(rec.verdict), "categories": list(rec.categories), "end_reason": rec.end_reason,
                "steps": rec.steps, "details": rec.details, "error": rec.error}
-    h.update(json.dumps(summary, sort_keys=True, default=str).encode())
+    v.update(json.dumps(summary, sort_keys=True, default=str).encode())
+    h = hashlib.sha256()
     for name in sorted(traj or {}):
         h.update(name.encode() + b"\0")
         h.update(np.ascontiguousarray(traj[name], dtype=np.float64).tobytes())
-    return h.hexdigest(), rec.steps
+    return {"trajectory": h.hexdigest(), "verdict": v.hexdigest()}, rec.steps
 
 
-def run_all(files: list[Path]) -> tuple[dict[str, str], int, float]:
+def run_all(files: list[Path]) -> tuple[dict[str, dict[str, str]], int, float]:
     """Digests by file, total steps, total CPU seconds."""
     _install_timer()
-    out: dict[str, str] = {}
+    out: dict[str, dict[str, str]] = {}
     steps = 0
     c0 = time.process_time()
     for f in files:
@@ -112,10 +115,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"recorded {len(digests)} digests -> {ref}")
     elif args.mode == "check":
         want = json.loads(Path(ref).read_text())
-        bad = [k for k in digests if want.get(k) != digests[k]]
-        for k in bad:
-            print(f"DIFFERS: {k}")
-        print(f"{len(digests) - len(bad)}/{len(digests)} identical")
+        bad = 0
+        for k, got in digests.items():
+            differ = [part for part in ("trajectory", "verdict") if (want.get(k) or {}).get(part) != got[part]]
+            if differ:
+                bad += 1
+                print(f"DIFFERS ({', '.join(differ)}): {k}")
+        print(f"{len(digests) - bad}/{len(digests)} identical (trajectories and verdicts)")
         return 1 if bad else 0
     return 0
 
