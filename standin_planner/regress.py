@@ -61,12 +61,12 @@ def _install_timer() -> None:
     planner_mod.Planner.step = step  # type: ignore[method-assign]
 
 
-def digest_run(path: Path) -> tuple[dict[str, str], int]:
+def digest_run(path: Path, faults: tuple[str, ...] = ()) -> tuple[dict[str, str], int]:
     """({"trajectory": hex digest, "verdict": hex digest}, steps) of one closed-loop run of `path`. Two digests, so
     a change of the oracle (another package, edited meanwhile) is told apart from a change of the driving."""
     from txt2sce_ros.closed_loop import run_closed_loop
 
-    rec, traj = run_closed_loop(path, keep_trajectory=True)
+    rec, traj = run_closed_loop(path, faults=faults, keep_trajectory=True)
     v = hashlib.sha256()
     summary = {"verdict": str(rec.verdict), "categories": list(rec.categories), "end_reason": rec.end_reason,
                "steps": rec.steps, "details": rec.details, "error": rec.error}
@@ -78,14 +78,14 @@ def digest_run(path: Path) -> tuple[dict[str, str], int]:
     return {"trajectory": h.hexdigest(), "verdict": v.hexdigest()}, rec.steps
 
 
-def run_all(files: list[Path]) -> tuple[dict[str, dict[str, str]], int, float]:
+def run_all(files: list[Path], faults: tuple[str, ...] = ()) -> tuple[dict[str, dict[str, str]], int, float]:
     """Digests by file, total steps, total CPU seconds."""
     _install_timer()
     out: dict[str, dict[str, str]] = {}
     steps = 0
     c0 = time.process_time()
     for f in files:
-        d, n = digest_run(f)
+        d, n = digest_run(f, faults)
         out[str(f)] = d
         steps += n
     return out, steps, time.process_time() - c0
@@ -103,12 +103,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("mode", choices=("record", "check", "time"))
     ap.add_argument("paths", nargs="+")
     ap.add_argument("--every", type=int, default=1)
+    ap.add_argument("--faults", default="", help="comma-separated fault modes switched on in every run")
     args = ap.parse_args(argv)
     ref = None
     if args.mode != "time":
         ref, *args.paths = args.paths
     files = _files(args.paths, args.every)
-    digests, steps, cpu = run_all(files)
+    digests, steps, cpu = run_all(files, tuple(f for f in args.faults.split(",") if f))
     _report(files, steps, cpu)
     if args.mode == "record":
         Path(ref).write_text(json.dumps(digests, indent=1, sort_keys=True))
