@@ -138,3 +138,30 @@ def test_bytes_do_not_depend_on_the_process(tmp_path, gold) -> None:
                         "--seed", "5"], check=True, env=env, capture_output=True)
         outs.append({p.relative_to(out).as_posix(): p.read_bytes() for p in sorted(out.rglob("*")) if p.is_file()})
     assert outs[0] == outs[1] and len(outs[0]) >= 4
+
+
+def test_parties_and_obstacles_carry_the_reported_position(out, gold) -> None:
+    # Every party and obstacle of every built seed carries the sketch's relative position, and its lane exactly
+    # for R5-R7; the ego carries none. Analysis reads them instead of guessing from Init poses.
+    from txt2sce_ros.analysis.features import scenario_elements
+    from txt2sce_ros.sketch import LANED_POSITIONS
+
+    d, manifest = out
+    checked = 0
+    for b in manifest["built"]:
+        sketch = gold[b["report_id"]]
+        root = etree.parse(str(d / b["file"]), safe_parser()).getroot()
+        props = {o.get("name"): {p.get("name"): p.get("value") for p in o.iter("Property")}
+                 for o in root.iter("ScenarioObject")}
+        assert "txt2sce:position" not in props["ego"] and "txt2sce:lane" not in props["ego"]
+        for party in (*sketch.npcs, *sketch.obstacles):
+            got = props[party.id]
+            assert got["txt2sce:position"] == party.position, (b["report_id"], party.id)
+            lane = party.lane if party.position in LANED_POSITIONS else None
+            assert got.get("txt2sce:lane") == lane, (b["report_id"], party.id)
+            checked += 1
+    assert checked >= 40
+    # r58 reports npc1 ahead in the ego's lane (R5/same) and npc2 behind on the left (R6/left): written labels.
+    b = next(x for x in manifest["built"] if x["report_id"] == "dmvca-cruise-20190807-r58")
+    elements = scenario_elements((d / b["file"]).read_bytes())
+    assert {"position:R5/same", "position:R6/left"} <= elements

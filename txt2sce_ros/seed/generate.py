@@ -15,7 +15,7 @@ import json
 import math
 import shutil
 import zlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Iterable
 
@@ -27,7 +27,7 @@ from ..xosc.validate import validate_xosc
 from .constraints import derive_constraints
 from .defaults import SeedDefaults, seed_defaults
 from .match import Match, match_site
-from .model import EnvironmentPlan, ScenarioPlan, SignalPhase, SignalPlan
+from .model import EntityPlan, EnvironmentPlan, ScenarioPlan, SignalPhase, SignalPlan
 from .plan import Planner, predicted_gap
 from .sites import JunctionSite
 from .writer import write_xosc
@@ -134,7 +134,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     rank = {name: k for k, name in enumerate(["ego"] + [n.id for n in sketch.npcs] + [o.id for o in sketch.obstacles])}
     ordered = sorted(actors, key=lambda a: rank.get(a.name, len(rank)))
     plan = ScenarioPlan(
-        report_id=sketch.report_id, map_ref=ref, entities=tuple(a.freeze() for a in ordered),
+        report_id=sketch.report_id, map_ref=ref, entities=tuple(_with_position(a.freeze(), sketch) for a in ordered),
         environment=environment_plan(sketch, D), goal=planner.goal, goal_tolerance=D.timing.goal_tolerance,
         time_limit=planner.time_limit, signals=signals, choices=choices)
     xosc = write_xosc(plan, performance=(D.max_acceleration, D.max_deceleration, D.max_speed))
@@ -152,6 +152,15 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
         "signals": [{"name": s.name, "phases": [[p.name, p.duration] for p in s.phases]} for s in signals],
     }
     return SeedResult(sketch.report_id, xosc, plan, map_path, manifest)
+
+
+def _with_position(e: EntityPlan, sketch: Sketch) -> EntityPlan:
+    """The entity with the sketch's relative position (and lane) of the party or obstacle it realises."""
+    src = {p.id: (p.position, p.lane) for p in sketch.npcs} | {o.id: (o.position, o.lane) for o in sketch.obstacles}
+    if e.name not in src:
+        return e
+    position, lane = src[e.name]
+    return replace(e, position=position, lane=lane)
 
 
 def fidelity_target(sketch: Sketch) -> str | None:

@@ -104,6 +104,8 @@ class EntityPlan:
     events: tuple[EventPlan, ...] = ()
     route: RouteAct | None = None  # assigned at Init (the ego's mission)
     external: bool = False         # driven by the system under test in closed loop
+    position: str | None = None    # the sketch's relative position R1-R7 (parties, obstacles), None for the ego
+    lane: str | None = None        # the sketch's lane relative to the ego, for R5-R7 only
 
 
 @dataclass(frozen=True, slots=True)

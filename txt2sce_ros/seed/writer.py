@@ -11,6 +11,7 @@ import math
 
 from lxml import etree
 
+from ..sketch import LANED_POSITIONS
 from ..xosc.entitydb import EntityDB, entity_db
 from .model import (
     EntityPlan, EnvironmentPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, Pose, RouteAct, ScenarioPlan,
@@ -84,6 +85,12 @@ def _bounding_box(x: _Xml, parent: etree._Element, e: EntityPlan) -> None:
 def _entity(x: _Xml, ents: etree._Element, e: EntityPlan, d_perf: tuple[float, float, float]) -> None:
     so = x.el(ents, "ScenarioObject", {"name": e.name})
     props = [("txt2sce:category", e.category)]
+    # The report's relative position, so analysis labels a party by what the report said rather than by its Init
+    # pose (a pedestrian crossing from R1 starts beside the road, which a pose-based guess cannot tell apart).
+    if e.position:
+        props.append(("txt2sce:position", e.position))
+        if e.lane and e.position in LANED_POSITIONS:
+            props.append(("txt2sce:lane", e.lane))
     if e.kind == "vehicle":
         v = x.el(so, "Vehicle", {"name": f"{e.name}_vehicle", "vehicleCategory": e.xosc_category})
         _bounding_box(x, v, e)
