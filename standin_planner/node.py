@@ -66,6 +66,8 @@ class PlannerNode(Node):
         self.fresh_scenario = False         # an envelope came after the last answered frame
         self.awaiting_scenario = True       # frames of a new run wait for its envelope (not with a fixed map)
         self.assembler = FrameAssembler()
+        self.unsent: TwistStamped | None = None   # a command waiting for the player's subscription to match
+        self.retry_timer = None
         self.fixed_map = str(self.get_parameter("map").value)
         if self.fixed_map:
             self.network = load_network(self.fixed_map)     # raises InputError naming the file: fail at start-up
@@ -149,7 +151,27 @@ class PlannerNode(Node):
         frame, self.pending = self.pending, None
         self.last_key = stamp_key(to_stamp(frame.t))
         self.fresh_scenario = False
-        self.pub.publish(command_to_twist(self.planner.step(frame)))
+        self._send(command_to_twist(self.planner.step(frame)))
+
+    def _send(self, msg: TwistStamped) -> None:
+        """Publish a command; while discovery has not yet matched the player's subscription (the player can see
+        us before we see it), hold it and retry, since a volatile message sent to nobody is lost and lock-step
+        would stall until the player's timeout."""
+        if self.pub.get_subscription_count() > 0:
+            self.pub.publish(msg)
+            return
+        self.unsent = msg
+        if self.retry_timer is None:
+            self.retry_timer = self.create_timer(0.01, self._flush_unsent)
+
+    def _flush_unsent(self) -> None:
+        if self.unsent is not None and self.pub.get_subscription_count() > 0:
+            self.pub.publish(self.unsent)
+            self.unsent = None
+        if self.unsent is None and self.retry_timer is not None:
+            self.retry_timer.cancel()
+            self.destroy_timer(self.retry_timer)
+            self.retry_timer = None
 
 
 def main(args: list[str] | None = None) -> int:
