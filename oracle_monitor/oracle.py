@@ -117,7 +117,7 @@ class Oracle:
             notes.append(f"jerk rule computed over {self.jerk.coarse_interval * 1000:.0f} ms frames (paper: "
                          f"5–15 ms)")
         contacts = [v for v in self.violations if v.rule in (Rule.CONTACT, Rule.STATIC_OBSTACLE_HIT)]
-        struck = [v for v in self.violations if v.rule is Rule.STRUCK_WHILE_STOPPED]
+        struck = [v for v in self.violations if v.rule in (Rule.STRUCK_WHILE_STOPPED, Rule.STRUCK_FROM_BEHIND)]
         if self._end_reason == "collision" and not contacts and not struck:
             notes.append("the player ended the run on a collision that the footprints never showed (check the "
                          "entities' bounding boxes)")

@@ -21,6 +21,7 @@ class SafetyParams:
     contact_refine_steps: int = 12
     jerk_match_window: float = 0.5         # s
     struck_speed: float = 0.1              # m/s, an ego slower than this at contact was standing still: struck
+    struck_from_behind: bool = True        # a rear-end by a faster entity behind, in line, is not the ego's crash
 
 
 @dataclass(frozen=True, slots=True)

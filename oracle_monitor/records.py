@@ -39,6 +39,7 @@ class Rule(str, enum.Enum):
     RED_LIGHT = "red_light"                      # crossed a stop line whose signal showed red
     STATIC_OBSTACLE_HIT = "static_obstacle_hit"  # contact with a static object that had been in view
     STRUCK_WHILE_STOPPED = "struck_while_stopped"  # contact while the ego stood still (reported beside)
+    STRUCK_FROM_BEHIND = "struck_from_behind"    # rear-ended: the other closed from behind, in line (beside)
     OVERLAP_AT_START = "overlap_at_start"        # contact in the first frame: invalid scenario (verdict error)
 
 

@@ -20,6 +20,7 @@ compared run by run; `collision_rule` in the configuration chooses which one dec
 
 from __future__ import annotations
 
+import math
 from typing import Callable, NamedTuple
 
 from txt2sce_ros.contract import EntityState, Frame
@@ -38,6 +39,7 @@ class Contact(NamedTuple):
     depth: float              # m, overlap depth in that frame
     ego_speed: float          # m/s, the ego's largest |speed| in the last frame apart and the first in contact
     at_start: bool = False    # already touching in the first frame of the run (the scenario placed them so)
+    ego: EntityState | None = None   # the ego in the first frame in contact
 
 
 class ContactOracle:
@@ -65,7 +67,7 @@ class ContactOracle:
             if obj.name in self._in_contact:
                 continue
             t = self._contact_time(frame, obj)
-            item = Contact(t, obj, penetration(ego_box, box), ego_speed, at_start=self._prev is None)
+            item = Contact(t, obj, penetration(ego_box, box), ego_speed, at_start=self._prev is None, ego=frame.ego)
             new.append(item)
             self.contacts.append(item)
         self._in_contact = touching
@@ -94,16 +96,40 @@ def reported_beside(contact: Contact, params: SafetyParams) -> Violation | None:
 
     - Already touching in the first frame: the scenario placed them overlapping (`overlap_at_start`; the verdict
       turns it into an error of the scenario — nothing the ego did).
-    - The ego stood still in it: it was struck (`struck_while_stopped`, reported beside the verdict)."""
+    - The ego stood still in it: it was struck (`struck_while_stopped`, reported beside the verdict).
+    - With `struck_from_behind`: the other came up from behind, in line, faster than the ego (a rear-end: the
+      ego did not crash into it), reported beside as `struck_from_behind`."""
     obj = contact.entity
     if contact.at_start:
         return Violation(Rule.OVERLAP_AT_START, None, contact.t, contact.depth, 0.0, "m", (obj.name,),
                          f"ego and {obj.category} {obj.name} overlap by {contact.depth:.2f} m in the first frame")
     if contact.ego_speed >= params.struck_speed:
-        return None
+        closing = rear_closing_speed(contact.ego, obj) if params.struck_from_behind and contact.ego else None
+        if closing is None or closing <= params.struck_speed:
+            return None
+        return Violation(Rule.STRUCK_FROM_BEHIND, None, contact.t, closing, params.struck_speed, "m/s",
+                         (obj.name,), f"rear-ended by {obj.category} {obj.name} closing at {closing:.2f} m/s (ego "
+                         f"{contact.ego.speed:.2f} m/s, overlap {contact.depth:.2f} m)")
     return Violation(Rule.STRUCK_WHILE_STOPPED, None, contact.t, contact.ego_speed, params.struck_speed, "m/s",
                      (obj.name,), f"struck by {obj.category} {obj.name} while standing still (ego "
                      f"{contact.ego_speed:.2f} m/s, {obj.name} {obj.speed:.2f} m/s, overlap {contact.depth:.2f} m)")
+
+
+def rear_closing_speed(ego: EntityState, other: EntityState) -> float | None:
+    """How fast `other` closes on the ego from behind (m/s, its speed along the ego's heading less the ego's
+    forward speed), or None when it is not behind the ego in line: its box centre behind the ego's rear bumper,
+    laterally within their half widths, heading the same way (within 45°)."""
+    h = ego.heading
+    c, s = math.cos(h), math.sin(h)
+    ex, ey = ego.x + ego.center_x * c, ego.y + ego.center_x * s
+    ox = other.x + other.center_x * math.cos(other.heading)
+    oy = other.y + other.center_x * math.sin(other.heading)
+    lon = (ox - ex) * c + (oy - ey) * s
+    lat = -(ox - ex) * s + (oy - ey) * c
+    dh = math.remainder(other.heading - h, math.tau)
+    if lon >= -0.5 * ego.length or abs(lat) > 0.5 * (ego.width + other.width) or abs(dh) > math.pi / 4:
+        return None
+    return other.speed * math.cos(dh) - max(ego.speed, 0.0)
 
 
 def _box_between(e0: EntityState, e1: EntityState, u: float) -> Box:

@@ -12,7 +12,7 @@ exclusive"):
   one — the one whose first event came first (a red light run at 5 s that ends in a crash at 6 s is Misinterp:
   the earliest misbehaviour is the cause). Ties break in the order Collisions, Misinterp, StartFail.
 - Otherwise PlanFail and Smooth, either or both.
-- Struck while standing still (`struck_while_stopped`, reported beside): when the player ended the run on that
+- Struck (`struck_while_stopped`, `struck_from_behind`, reported beside): when the player ended the run on that
   contact (end reason `collision`, no contact of the ego's own), the goal was not reached because the run was cut
   short, not because the ego failed to plan: that goal-not-reached event is kept in `violations` but decides no
   category.
@@ -71,11 +71,11 @@ def findings(violations: Iterable[Violation]) -> dict[Category, Finding]:
 
 def _judged(violations: tuple[Violation, ...], status: RunStatus | None) -> tuple[Violation, ...]:
     """The violations that decide categories: all of them, less a goal not reached because the run ended on the
-    ego being struck while standing still."""
+    ego being struck (standing still, or rear-ended)."""
     if status is None or status.end_reason != "collision":
         return violations
     rules = {v.rule for v in violations}
-    struck = any(v.rule is Rule.STRUCK_WHILE_STOPPED for v in violations)
+    struck = any(v.rule in (Rule.STRUCK_WHILE_STOPPED, Rule.STRUCK_FROM_BEHIND) for v in violations)
     if not struck or rules & {Rule.CONTACT, Rule.STATIC_OBSTACLE_HIT}:
         return violations
     return tuple(v for v in violations if v.rule is not Rule.GOAL_NOT_REACHED)
@@ -92,7 +92,7 @@ def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frame
     judged = _judged(violations, status)
     found = findings(judged)
     if len(judged) < len(violations):
-        notes = notes + ("the run ended when the ego was struck while standing still: goal not reached not judged",)
+        notes = notes + ("the run ended when the ego was struck (standing still or rear-ended): goal not reached not judged",)
         common["notes"] = notes
     incomplete = status is None and frames > 0
     if why and (overlap or not (incomplete and found)):

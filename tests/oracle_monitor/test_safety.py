@@ -127,23 +127,41 @@ def test_struck_run_ended_by_the_player_is_no_plan_fail() -> None:
     verdict, _ = judge(Oracle(None, goal, PARAMS), frames, finished(frames[-1].t, "collision"))
     assert verdict.verdict is Verdict.PASS, verdict.summary()
     assert any(v.rule is Rule.GOAL_NOT_REACHED for v in verdict.violations)
-    assert any("struck while standing still" in n for n in verdict.notes)
+    assert any("struck (standing still or rear-ended)" in n for n in verdict.notes)
     # The same run timing out without contact is still a PlanFail: only the struck ending is excused.
     alone = straight_run(lambda t: 0.0, 2.5)
     timed_out, _ = judge(Oracle(None, goal, PARAMS), alone, finished(alone[-1].t, "time_limit"))
     assert "PlanFail" in timed_out.category_names()
 
 
-def test_moving_ego_in_the_same_contact_is_collisions() -> None:
-    # Creeping at 0.5 m/s (above struck_speed) the ego is a party to the crash: Table VI's Collisions.
+def test_moving_ego_rear_ended_is_struck_from_behind() -> None:
+    # Creeping at 0.5 m/s (above struck_speed) the ego is rear-ended by a car closing at 7.5 m/s from behind, in
+    # its lane: it did not crash into anything (the case of an ego braking for a light in front of a scripted NPC).
     frames = _rear_ended(0.5)
     verdict, online = judge(Oracle(None, None, PARAMS), frames, finished(frames[-1].t, "collision"))
-    assert [v.rule for v in online if v.entities == ("npc1",)][:1] == [Rule.CONTACT]
+    hit = [v for v in online if v.entities == ("npc1",)]
+    assert [v.rule for v in hit] == [Rule.STRUCK_FROM_BEHIND] and hit[0].observed == pytest.approx(7.5)
+    assert verdict.verdict is Verdict.PASS, verdict.summary()
+    # Switched off, the same contact is the ego's Collision (exact contact, as before).
+    off = PARAMS.with_overrides(safety={"struck_from_behind": False})
+    verdict, online = judge(Oracle(None, None, off), frames, finished(frames[-1].t, "collision"))
+    assert [v.rule for v in online if v.entities == ("npc1",)] == [Rule.CONTACT]
     assert verdict.category_names() == ("Collisions",)
 
 
-def test_struck_speed_comes_from_the_config() -> None:
-    params = PARAMS.with_overrides(safety={"struck_speed": 0.0})   # nobody is ever "standing still enough"
+def test_ego_driving_into_a_car_or_beside_one_is_not_struck() -> None:
+    # Ego at 10 m/s into a slower car ahead: the other is ahead, not behind — the ego's Collision.
+    ahead = straight_run(lambda t: 10.0, 3.0, objects=lambda t: [car("lead", t, 20.0 + 2.0 * t, speed=2.0)])
+    verdict, _ = judge(Oracle(None, None, PARAMS), ahead)
+    assert verdict.category_names() == ("Collisions",)
+    # A car drifting in from the next lane alongside the ego (centre beside it, not behind): not a rear-end.
+    side = lambda t: [car("npc1", t, 0.5 + 4.0 * t, y=max(0.9, 3.5 - 1.0 * t), speed=4.0)]
+    verdict, online = judge(Oracle(None, None, PARAMS), straight_run(lambda t: 4.0, 3.0, objects=side))
+    assert [v.rule for v in online if v.entities == ("npc1",)][:1] == [Rule.CONTACT]
+
+
+def test_struck_rules_come_from_the_config() -> None:
+    params = PARAMS.with_overrides(safety={"struck_speed": 0.0, "struck_from_behind": False})
     verdict, online = judge(Oracle(None, None, params), _rear_ended(0.0))
     assert verdict.category_names() == ("Collisions",)
     with pytest.raises(InputError):
