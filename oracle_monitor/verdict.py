@@ -92,7 +92,8 @@ def decide(violations: tuple[Violation, ...], status: RunStatus | None, *, frame
     judged = _judged(violations, status)
     found = findings(judged)
     if len(judged) < len(violations):
-        notes = notes + ("the run ended when the ego was struck (standing still or rear-ended): goal not reached not judged",)
+        notes = notes + ("the run ended when the ego was struck (standing still or rear-ended): goal not reached "
+                         "not judged",)
         common["notes"] = notes
     incomplete = status is None and frames > 0
     if why and (overlap or not (incomplete and found)):
