@@ -112,17 +112,16 @@ def test_derived_position_follows_the_sketch_definitions() -> None:
 def test_written_position_wins_and_weather_is_read(gold_seeds: dict[str, tuple[Path, dict]]) -> None:
     path, _ = gold_seeds["dmvca-apple-20211111-r241"]
     xml = path.read_bytes()
-    assert b"txt2sce:position" not in xml
-    with_prop = xml.replace(b'<Property name="txt2sce:category" value="van"/>',
-                            b'<Property name="txt2sce:category" value="van"/>'
-                            b'<Property name="txt2sce:position" value="R2"/>')
-    assert with_prop != xml
+    written = b'<Property name="txt2sce:position" value="R6"/>'
+    assert written in xml                                        # the seed writes the report's reading
+    without = xml.replace(written, b"")
+    other = xml.replace(written, b'<Property name="txt2sce:position" value="R2"/>')
     from txt2sce_ros.road import load_network
     from txt2sce_ros.scenario_source import logic_file
 
     net = load_network(str(logic_file(path, xml)))
-    assert "position:R6" in scenario_elements(xml, net)          # derived on the map
-    assert "position:R2" in scenario_elements(with_prop, net)    # the written one wins
-    assert "position:R6" not in scenario_elements(with_prop, net)
+    assert "position:R6" in scenario_elements(without, net)      # derived on the map when not written
+    assert "position:R2" in scenario_elements(other, net)        # a written one wins over the derived one
+    assert "position:R6" not in scenario_elements(other, net)
     rainy = xml.replace(b'precipitationType="dry" intensity="0.0"', b'precipitationType="rain" intensity="0.8"')
     assert "weather:rain" in scenario_elements(rainy) and "weather:clear" in scenario_elements(xml)

@@ -7,8 +7,9 @@ ranking can name what the paper's table names ("R7, ah", "R7, km, 2", bicycle, f
 They are read from the file itself (names per docs/seed_format.md, properties `txt2sce:category` and
 `txt2sce:position` on the ScenarioObjects), so any scenario the tree wrote can be analysed without its history.
 
-Positions: the seeds do not write `txt2sce:position` yet, and mutations move parties anyway (ILM shifts the Init
-positions), so when the scenario's map is at hand each party's position is *derived* from the Init teleports in
+Positions: seeds write `txt2sce:position` (the report's reading); for files without it (third-party scenarios)
+and for closeness at the start (mutations move parties), when the scenario's map is at hand each party's position
+is *derived* from the Init teleports in
 the ego's frame (`derived_position`), by the sketch spec's definitions of R1-R7; plus `near_start:yes` when a party
 starts within `NEAR_START` metres ahead of or behind the ego in its lane corridor (what a "too close to start"
 fault depends on). A written `txt2sce:position` wins over the derived one.
@@ -149,14 +150,18 @@ def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ())
     ego_pose = poses.get("ego")
     if ego_pose is not None:
         for name, props in npcs.items():
-            if name in poses and not props.get("txt2sce:position"):
-                code, lane = derived_position(ego_pose, poses[name])
+            if name not in poses:
+                continue
+            # Derived from the (possibly mutated) start poses: closeness at the start is a fact of this file,
+            # while a written position (the report's reading) wins as the party's R1-R7 label.
+            code, lane = derived_position(ego_pose, poses[name])
+            dist = math.hypot(poses[name][0] - ego_pose[0], poses[name][1] - ego_pose[1])
+            if code in ("R5", "R6") and lane == "same" and dist <= NEAR_START:
+                out.add("near_start:yes")
+            if not props.get("txt2sce:position"):
                 props["txt2sce:position"] = code
                 if lane:
                     props["txt2sce:lane"] = lane
-                dist = math.hypot(poses[name][0] - ego_pose[0], poses[name][1] - ego_pose[1])
-                if code in ("R5", "R6") and lane == "same" and dist <= NEAR_START:
-                    out.add("near_start:yes")
     out.add(f"npcs:{len(npcs)}")
     out.add("obstacle:yes" if obstacles else "obstacle:no")
     for name, props in npcs.items():
