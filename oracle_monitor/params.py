@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
-from txt2sce_ros.config import load_config
+from txt2sce_ros.config import load_config, section_from_mapping
 from txt2sce_ros.errors import InputError
 
 COLLISION_RULES = ("contact", "jerk", "either")
@@ -68,9 +68,9 @@ class OracleParams:
         data = load_config("oracle", path)
         source = path or "config/oracle.yaml"
         return cls(
-            safety=_section(SafetyParams, data.get("safety", {}), source, "safety"),
-            smoothness=_section(SmoothnessParams, data.get("smoothness", {}), source, "smoothness"),
-            smartness=_section(SmartnessParams, data.get("smartness", {}), source, "smartness"),
+            safety=section_from_mapping(SafetyParams, data.get("safety", {}), source, "safety"),
+            smoothness=section_from_mapping(SmoothnessParams, data.get("smoothness", {}), source, "smoothness"),
+            smartness=section_from_mapping(SmartnessParams, data.get("smartness", {}), source, "smartness"),
         )._checked(source)
 
     def with_overrides(self, **sections: Mapping[str, Any]) -> "OracleParams":
@@ -92,26 +92,3 @@ class OracleParams:
         if self.smoothness.window <= 0:
             raise InputError("window must be positive", source=source, element="smoothness.window")
         return self
-
-
-def _section(cls: type, values: Mapping[str, Any], source: str, name: str) -> Any:
-    if not isinstance(values, Mapping):
-        raise InputError("must be a mapping", source=source, element=name)
-    known = {f.name: f for f in fields(cls)}
-    kwargs: dict[str, Any] = {}
-    for key, value in values.items():
-        if key not in known:
-            raise InputError(f"unknown key (known: {', '.join(known)})", source=source, element=f"{name}.{key}")
-        default = getattr(cls(), key)
-        try:
-            if isinstance(default, bool):
-                kwargs[key] = bool(value)
-            elif isinstance(default, tuple):
-                kwargs[key] = tuple(value)
-            elif isinstance(default, (int, float)) and not isinstance(default, bool):
-                kwargs[key] = type(default)(value)
-            else:
-                kwargs[key] = value
-        except (TypeError, ValueError) as exc:
-            raise InputError(f"bad value {value!r}: {exc}", source=source, element=f"{name}.{key}") from exc
-    return cls(**kwargs)

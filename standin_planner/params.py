@@ -9,9 +9,9 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any
 
-from txt2sce_ros.config import load_config
+from txt2sce_ros.config import load_config, section_from_mapping
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.paths import config_dir
 
@@ -95,27 +95,6 @@ class FaultParams:
     late_brake_decel: float = 6.5
 
 
-_T = TypeVar("_T")
-
-
-def _section(cls: type[_T], data: Any, source: str, name: str) -> _T:
-    if data is None:
-        return cls()
-    if not isinstance(data, dict):
-        raise InputError("must be a mapping", source=source, element=name)
-    known = {f.name: f for f in fields(cls)}  # type: ignore[arg-type]
-    values: dict[str, Any] = {}
-    for key, value in data.items():
-        if key not in known:
-            raise InputError(f"unknown parameter (known: {', '.join(sorted(known))})", source=source,
-                             element=f"{name}.{key}")
-        want = int if known[key].type in ("int", int) else float
-        try:
-            values[key] = want(value)
-        except (TypeError, ValueError) as exc:
-            raise InputError(f"not a number: {value!r}", source=source, element=f"{name}.{key}") from exc
-    return cls(**values)
-
 
 @dataclass(frozen=True, slots=True)
 class PlannerParams:
@@ -135,7 +114,7 @@ class PlannerParams:
                                  element=key)
         kinds = {"longitudinal": LongitudinalParams, "lateral": LateralParams, "comfort": ComfortParams,
                  "behaviour": BehaviourParams, "perception": PerceptionParams, "faults": FaultParams}
-        return cls(**{name: _section(kind, data.get(name), source, name) for name, kind in kinds.items()})
+        return cls(**{name: section_from_mapping(kind, data.get(name), source, name) for name, kind in kinds.items()})
 
     @classmethod
     def from_config(cls, path: str | Path | None = None) -> "PlannerParams":

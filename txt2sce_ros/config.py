@@ -2,14 +2,18 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from dataclasses import fields
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import yaml
 
 from .errors import InputError
 from .paths import config_dir
+
+_T = TypeVar("_T")
 
 
 @lru_cache(maxsize=None)
@@ -30,3 +34,33 @@ def load_config(name: str, path: str | Path | None = None) -> dict[str, Any]:
     """Return the parameters of `config/<name>.yaml` (or of `path` when given). Cached; treat as read-only."""
     target = Path(path) if path else config_dir() / f"{name}.yaml"
     return _load(str(target))
+
+
+def section_from_mapping(cls: type[_T], values: Mapping[str, Any] | None, source: str, name: str) -> _T:
+    """One frozen parameter dataclass from one YAML section: keys left out keep their defaults, an unknown key or
+    a value of the wrong kind is an InputError naming the file and `section.key`. Values are coerced to the type
+    of the field's default (bool, int, float, tuple; others as given)."""
+    if values is None:
+        return cls()
+    if not isinstance(values, Mapping):
+        raise InputError("must be a mapping", source=source, element=name)
+    known = {f.name for f in fields(cls)}  # type: ignore[arg-type]
+    defaults = cls()
+    kwargs: dict[str, Any] = {}
+    for key, value in values.items():
+        if key not in known:
+            raise InputError(f"unknown key (known: {', '.join(sorted(known))})", source=source,
+                             element=f"{name}.{key}")
+        default = getattr(defaults, key)
+        try:
+            if isinstance(default, bool):
+                kwargs[key] = bool(value)
+            elif isinstance(default, tuple):
+                kwargs[key] = tuple(value)
+            elif isinstance(default, (int, float)):
+                kwargs[key] = type(default)(value)
+            else:
+                kwargs[key] = value
+        except (TypeError, ValueError) as exc:
+            raise InputError(f"bad value {value!r}: {exc}", source=source, element=f"{name}.{key}") from exc
+    return cls(**kwargs)
