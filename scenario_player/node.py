@@ -13,7 +13,8 @@ Parameters (defaults from config/player.yaml `node:`):
 - `scenario_files` (string[]): .xosc files to run at start-up.
 - `lock_step` (bool): lock-step (true) or real-time mode (false).
 - `planner_timeout` (double, s wall): no command in time -> run ends, verdict_hint 'error',
-  end_reason 'planner_not_responding'.
+  end_reason 'planner_not_responding'. The first frame of a run may take up to `startup_timeout` (the stack
+  loads the map and plans then).
 - `run_timeout` (double, s wall): a run never takes longer (end_reason 'wall_clock_limit', 'error').
 - `realtime_factor` (double): real-time mode speed (sim s per wall s).
 - `ego_mode` ('planner' | 'storyboard'), `time_limit` (double, sim s; <= 0: config default), `dt`, `seed`.
@@ -169,13 +170,17 @@ class PlayerNode(Node):
             sim.abort("planner_not_responding")
         wall0 = time.monotonic()
         next_wall = wall0
+        # The first frame of a run waits as long as start-up may take: the stack loads the new map and plans its
+        # route then, which on a loaded machine can outlast the per-step limit without anything being wrong.
+        timeout = max(self.planner_timeout, self.startup_timeout)
         while not sim.done:
             self.publish_frame(sim, frame)
             cmd: ControlCommand | None = None
             if needs_planner:
                 key = stamp_key(to_stamp(frame.t))
                 if self.lock_step:
-                    cmd = self._await_command(executor, key, wall0)
+                    cmd = self._await_command(executor, key, wall0, timeout)
+                    timeout = self.planner_timeout
                     if cmd is None:
                         break
                 else:
@@ -213,8 +218,9 @@ class PlayerNode(Node):
         self.get_logger().info(f"run {env.id}: {status.end_reason} at t={status.t:.2f}s")
         return status
 
-    def _await_command(self, executor: SingleThreadedExecutor, key: int, wall0: float) -> ControlCommand | None:
-        deadline = time.monotonic() + self.planner_timeout
+    def _await_command(self, executor: SingleThreadedExecutor, key: int, wall0: float,
+                       timeout: float) -> ControlCommand | None:
+        deadline = time.monotonic() + timeout
         while key not in self.commands:
             now = time.monotonic()
             if now > deadline:
