@@ -54,14 +54,19 @@ class ByEntityCondition(Check):
 
 
 @dataclass(frozen=True, slots=True)
-class SpeedCondition(EntityCheck):
+class _ValueCheck(EntityCheck):
+    """A quantity of the entity compared with `value` by `rule` (Speed, Acceleration): one parser for both."""
+
     value: float
     rule: Rule
 
     @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "SpeedCondition":
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "_ValueCheck":
         return cls(ctx.float(el, "value"), Rule.from_xml(ctx, el))
 
+
+@dataclass(frozen=True, slots=True)
+class SpeedCondition(_ValueCheck):
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return self.rule(ent.speed, self.value)
 
@@ -81,14 +86,7 @@ class RelativeSpeedCondition(EntityCheck):
 
 
 @dataclass(frozen=True, slots=True)
-class AccelerationCondition(EntityCheck):
-    value: float
-    rule: Rule
-
-    @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "AccelerationCondition":
-        return cls(ctx.float(el, "value"), Rule.from_xml(ctx, el))
-
+class AccelerationCondition(_ValueCheck):
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return self.rule(ent.accel, self.value)
 

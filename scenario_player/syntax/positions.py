@@ -68,17 +68,23 @@ class WorldPosition:
 
 
 @dataclass(frozen=True, slots=True)
-class RelativeWorldPosition:
+class _EntityOffset:
+    """An (dx, dy) offset from an entity with an optional orientation: the shared syntax of RelativeWorldPosition
+    and RelativeObjectPosition (they differ only in the frame the offset is taken in)."""
+
     entity: str
     dx: float
     dy: float
     orientation: Orientation | None
 
     @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "RelativeWorldPosition":
+    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "_EntityOffset":
         return cls(ctx.req(el, "entityRef"), ctx.float(el, "dx"), ctx.float(el, "dy"),
                    Orientation.from_xml(ctx, el.find("Orientation")))
 
+
+@dataclass(frozen=True, slots=True)
+class RelativeWorldPosition(_EntityOffset):
     def resolve(self, world: "World") -> Pose:
         ref = world.entity(self.entity)
         h = self.orientation.apply(ref.h) if self.orientation else ref.h
@@ -86,17 +92,7 @@ class RelativeWorldPosition:
 
 
 @dataclass(frozen=True, slots=True)
-class RelativeObjectPosition:
-    entity: str
-    dx: float
-    dy: float
-    orientation: Orientation | None
-
-    @classmethod
-    def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "RelativeObjectPosition":
-        return cls(ctx.req(el, "entityRef"), ctx.float(el, "dx"), ctx.float(el, "dy"),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
-
+class RelativeObjectPosition(_EntityOffset):
     def resolve(self, world: "World") -> Pose:
         ref = world.entity(self.entity)
         c, s = math.cos(ref.h), math.sin(ref.h)
