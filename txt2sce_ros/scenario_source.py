@@ -12,20 +12,13 @@ import json
 from pathlib import Path
 from typing import Iterator
 
-from lxml import etree
-
 from .contract import ScenarioEnvelope
 from .errors import InputError
-
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=False)
-
+from .xosc.schema import parse_document
 
 def logic_file(xosc_path: Path, xosc_text: bytes) -> Path | None:
     """The map a scenario names, resolved like esmini does: relative to the scenario's directory."""
-    try:
-        root = etree.fromstring(xosc_text, _PARSER)
-    except etree.XMLSyntaxError as exc:
-        raise InputError(f"malformed XML: {exc}", source=str(xosc_path), line=exc.lineno) from exc
+    root = parse_document(xosc_text, source=str(xosc_path))
     node = root.find("RoadNetwork/LogicFile")
     if node is None or not node.get("filepath"):
         return None

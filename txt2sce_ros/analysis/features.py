@@ -25,7 +25,8 @@ from typing import Any
 
 from lxml import etree
 
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=True)
+from ..xosc.schema import parse_document
+
 
 #: Event-name suffix -> sketch action code (docs/seed_format.md).
 ACTION_NAMES = {
@@ -129,7 +130,7 @@ def derived_position(ego: tuple[float, float, float], other: tuple[float, float,
 def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ()) -> frozenset[str]:
     """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports,
     `facing` names the signals facing the ego (see `signal_label`)."""
-    root = etree.fromstring(xml, _PARSER)
+    root = parse_document(xml)
     out: set[str] = set()
     npcs: dict[str, dict[str, str]] = {}
     obstacles = 0
@@ -198,7 +199,7 @@ def elements_of_file(path: str) -> frozenset[str]:
             if b"TrafficSignalController" in data:
                 from ..seed.context import build_context
 
-                facing = build_context(etree.fromstring(data, _PARSER), source=path, seed_path=Path(path)).ego_signals
+                facing = build_context(parse_document(data, source=path), source=path, seed_path=Path(path)).ego_signals
     except Exception:   # the elements that need no map are still worth having
         pass
     return scenario_elements(data, net, facing)

@@ -22,6 +22,7 @@ from lxml import etree
 
 from ..errors import Txt2SceError
 from ..paths import REPO_ROOT
+from ..xosc.schema import safe_parser
 
 HELP = "run the stand-in planner on benign scenarios; print runs, goals reached and oracle violations"
 
@@ -94,14 +95,13 @@ def _min_gap(frame) -> float:
     return best
 
 
-_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_blank_text=False)
 
 
 def strip_npcs(path: Path, out_dir: Path, ego: str = "ego") -> Path:
     """Write the benign variant of scenario `path` into `out_dir`: every entity but the ego removed with its Init
     actions, stories and stop conditions; the map reference made absolute so the copy loads from anywhere."""
     try:
-        tree = etree.parse(str(path), _PARSER)
+        tree = etree.parse(str(path), safe_parser())
     except (OSError, etree.XMLSyntaxError) as exc:
         raise Txt2SceError(f"cannot read scenario: {exc}", source=str(path)) from exc
     root = tree.getroot()
