@@ -117,7 +117,10 @@ class Planner:
             # Tuned on dry roads: stops start late, at a deceleration only a dry road gives, and brake hard.
             # (stop_accel starts a stop at stop_onset_ratio x the planned deceleration: scale so that is the onset)
             plan = fp.late_brake_decel / lp.stop_onset_ratio
-            stop = StopPlan(decel=plan, cruise=cruise, lag=0.0, hard=True, braking=braking)
+            # Its dry-road tuning does know its own brake build-up (at the emergency jerk): without it the stop
+            # overruns on any road, and the fault would no longer depend on friction (its ground truth).
+            lag = 0.5 * v * max(0.0, fp.late_brake_decel + self._accel) / self.params.comfort.emergency_jerk
+            stop = StopPlan(decel=plan, cruise=cruise, lag=lag, hard=True, braking=braking)
         else:
             plan = braking_decel(lp, friction)
             # Distance the jerk-limited build-up of braking to the planned deceleration still costs (from the
