@@ -1,6 +1,8 @@
 """Closed loop (real scenario player + planner + oracle, in-process) on the scenarios built to expose each fault
 mode (examples/scenarios/fault_*.xosc): with the fault on, the intended unexpected behaviour; with it off, not."""
 
+import re
+
 import pytest
 
 from txt2sce_ros.cli.cmd_planner_check import DEFAULT_DIR, run_scenario
@@ -34,3 +36,19 @@ def test_stale_tracking_nominal_brakes_hard_but_safely():
     # The cut-in forces an emergency stop on any stack; the nominal one comes through it with a gap.
     nominal = run_scenario(DEFAULT_DIR / "fault_stale_tracking.xosc")
     assert nominal.min_gap > 1.0
+
+
+def test_late_braking_depends_on_friction(tmp_path):
+    # The same stop on a dry road: the late, hard stop is abrupt but it holds (the fault's ground truth is that it
+    # overruns only where friction cannot give its dry-road deceleration).
+    src = DEFAULT_DIR / "fault_late_braking_low_friction.xosc"
+    text = src.read_text(encoding="utf-8")
+    assert 'frictionScaleFactor="0.3"' in text
+    dry = tmp_path / src.name
+    # the map is referenced relative to the scenario: make it absolute for the copy
+    text = re.sub(r'(LogicFile filepath=")([^"]+)"',
+                  lambda m: f'{m.group(1)}{(src.parent / m.group(2)).resolve()}"', text)
+    dry.write_text(text.replace('frictionScaleFactor="0.3"', 'frictionScaleFactor="1.0"'), encoding="utf-8")
+    run = run_scenario(dry, faults=("late_braking_low_friction",))
+    assert run.verdict != "error", run.summary
+    assert "Collisions" not in run.categories and run.goal_reached, run.summary
