@@ -134,3 +134,22 @@ def test_node_validation_reports_schema_errors():
     assert bad and "drizzle" in bad[0]
     cut = _node_problems(text[:-40], "1.0")  # not well-formed: reported, not raised
     assert cut and cut[0].startswith("line ") and "not well-formed" in cut[0]
+
+
+def test_node_budget_keeps_every_value_of_enumerated_blocks(tmp_path):
+    # Cut-in seed: weather (5 types) and npc1 (7 categories) are enumerated. A budget far below the full tree
+    # (1,065 nodes) must still insert every weather type and every category (a cyclist is a test condition of its
+    # own), while staying within the cap and still inserting the deeper (event, obstacle) blocks.
+    cap = 30
+    res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=tree_config(prune_share=1.0, mutations=2, max_nodes=cap))
+    assert res.truncated and res.nodes <= cap
+    manifest = json.loads((tmp_path / "t" / "manifest.json").read_text())
+    counts = dict(zip(manifest["insertion"], manifest["block_counts"]))
+    seen: dict[int, set[int]] = {}
+    for n in manifest["nodes"][1:]:
+        seen.setdefault(n["block"], set()).add(n["variant"])
+    kinds = {n["block"]: n["block_kind"] for n in manifest["nodes"][1:]}
+    assert set(kinds.values()) >= {"weather", "npc", "event"}
+    for block, kind in kinds.items():
+        if kind in ("weather", "npc"):
+            assert seen[block] == set(range(counts[block])), (kind, seen[block])

@@ -31,7 +31,7 @@ from ..seed.context import SeedContext, build_context
 from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
-from .prune import prune, spread
+from .prune import prune, spread, spread_covering
 from .xml import parse_bytes
 
 MANIFEST_SCHEMA = "txt2sce.tree/1"
@@ -156,8 +156,15 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
         # many distinct categories as the budget allows.
         layers_left = len(used) - depth + 1
         allowed = max(1, (cap - written) // layers_left) if layers_left > 1 else max(0, cap - written)
+        enumerated = block.kind.value in cfg["tree"]["enumerate"]
+        if enumerated:
+            # Every value of an enumerated block is a test condition of its own (a cyclist, a yellow light, snow):
+            # keep one node per value while the cap still leaves a node for each layer to come.
+            allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
         if len(keep) > allowed:
-            keep = spread(keep, [vectors[i] for i in keep], allowed)
+            kept_vectors = [vectors[i] for i in keep]
+            keep = (spread_covering(keep, kept_vectors, [cands[i][1] for i in keep], allowed) if enumerated
+                    else spread(keep, kept_vectors, allowed))
             truncated = True
         frontier = []
         for ci in keep:

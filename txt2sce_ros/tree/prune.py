@@ -53,3 +53,30 @@ def spread(indices: Sequence[int], vectors: Sequence[Hashable], limit: int) -> l
                 out.append(indices[g[rank]])
         rank += 1
     return sorted(out)
+
+
+def spread_covering(indices: Sequence[int], vectors: Sequence[Hashable], labels: Sequence[Hashable],
+                    limit: int) -> list[int]:
+    """Like `spread`, but first one member of every `labels` value (the variant an enumerated block takes: a
+    bicycle, a yellow light), in `spread`'s round-robin order, then the rest by `spread`. Sorted."""
+    if len(indices) <= limit:
+        return list(indices)
+    ranked = sorted(range(len(indices)), key=_round_robin_rank(vectors))
+    first: dict[Hashable, int] = {}
+    for pos in ranked:
+        first.setdefault(labels[pos], pos)
+    chosen = sorted(first.values(), key=ranked.index)[:limit]
+    taken = set(chosen)
+    rest = [pos for pos in range(len(indices)) if pos not in taken]
+    if len(chosen) < limit and rest:
+        chosen += spread(rest, [vectors[p] for p in rest], limit - len(chosen))
+    return sorted(indices[p] for p in chosen)
+
+
+def _round_robin_rank(vectors: Sequence[Hashable]):
+    """Sort key: the round in which `spread` takes a position (first members of clusters first), then cluster."""
+    rank: dict[int, tuple[int, int]] = {}
+    for ci, group in enumerate(clusters(vectors)):
+        for r, pos in enumerate(group):
+            rank[pos] = (r, ci)
+    return rank.__getitem__
