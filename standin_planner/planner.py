@@ -140,7 +140,8 @@ class Planner:
         out: list[Constraint] = [Constraint(Reason.CRUISE, sp.cruise)]
         for dist, v_curve in curve_targets(line, me.s, v, v0, self.params.lateral, sp.decel):
             a = slow_down_accel(v, v_curve, dist, lp, plan_decel=sp.decel, lag=sp.lag, cruise=sp.cruise)
-            out.append(Constraint(Reason.CURVE, a, "", dist))
+            # A late, hard plan (fault late_braking_low_friction) brakes at the emergency jerk its lag allows for.
+            out.append(Constraint(Reason.CURVE, a, "", dist, urgent=sp.hard and a < 0.0))
         ego = frame.ego
         measured = [measure(o, line, me.s) for o in objects
                     if math.hypot(o.x - ego.x, o.y - ego.y) < PERCEPTION_RANGE]
