@@ -63,7 +63,9 @@ def environment_plan(sketch: Sketch, D: SeedDefaults) -> EnvironmentPlan:
 def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_action: float,
                 time_limit: float | None = None) -> SignalPlan | None:
     """Controller for the junction's lights: the AV's approach (and the opposite one) show the reported state when
-    the AV's first action begins; the crossing legs show the conflicting state. `unknown` counts as green."""
+    the AV's first action begins; the crossing legs show the conflicting state. `unknown` counts as green. A red
+    turns green after the AV's first action (it moved off) or else after the conflict (signal_phase_before s
+    later)."""
     if not site.signalised or sketch.road.control != "signal":
         return None
     axis = set(site.ego.signals) | (set(site.legs["opposite"].signals) if "opposite" in site.legs else set())
@@ -90,7 +92,10 @@ def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_a
         # "an AV stopped at a red light that moves off on green has red": green at its first action
         phases = (phase("phase_red", max(ego_first_action, 0.5), "red"), phase("phase_green", limit, "green"))
     else:
-        phases = (phase("phase_red", limit, "red"),)
+        # held at red: red over the reported conflict, then green, so that a planner standing at the line (behind
+        # it, where it belongs) can still reach its goal beyond the junction
+        hold = D.timing.time_to_conflict + D.timing.signal_phase_before
+        phases = (phase("phase_red", hold, "red"), phase("phase_green", limit, "green"))
     return SignalPlan(f"signal_ctrl_{site.junction_id}", phases)
 
 

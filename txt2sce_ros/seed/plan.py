@@ -8,7 +8,11 @@ solved so that it reaches its conflict point with the AV at the moment the AV do
   meet; the AV's time to it comes from its own profile, the party starts `D_party(T)` before it;
 - parallel paths (same road, R5–R7): the party is placed so that, at the conflict time, its box touches the AV's
   box (front to rear for rear-ends, side by side for lane changes and passes, front to front head-on);
-- a party that cannot start early enough waits and is released by a distance-to-AV trigger.
+- a party that cannot start early enough waits and is released by a distance-to-AV trigger;
+- an AV standing at a junction waits with its front bumper 1 m behind the map's stop line of its lane (inside the
+  junction only when the report gives it right of way there), and a party that cannot reach it swings toward it;
+- finally no two footprints may touch at t=0 (the closed loop would call the scenario invalid): starts are moved
+  apart along their paths, never past the AV, keeping the reported contact where a shift allows it.
 
 Everything random is drawn from the caller's numpy Generator (the site pick); the placement is deterministic.
 """
@@ -20,12 +24,13 @@ import math
 import numpy as np
 
 from ..errors import InputError
+from ..mapdb.classify import approach_signals
 from ..sketch import Party, Sketch
 from .actor import Actor, center_x, predicted_gap
 from .constraints import first_turn
 from .defaults import SeedDefaults
 from .events import EGO_ROUTE_PLACEHOLDER, TURN_CODES, EventRealiser
-from .kinematics import lateral_profile, speed_profile, time_to_reach
+from .kinematics import box_corners, boxes_gap, lateral_profile, speed_profile, time_to_reach
 from .lanes import CURB, case1_lane, ego_lane, party_lane
 from .linetrack import LineTrack, perpendicular
 from .model import EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger
@@ -33,6 +38,16 @@ from .sites import JunctionSite, RoadSite, site_network
 from .track import Track
 
 __all__ = ["Actor", "Planner", "predicted_gap"]
+
+#: m between a standing AV's front bumper and the stop line that holds it
+STOP_LINE_GAP = 1.0
+#: m where the AV's lane has no stop line: its front this far before the junction
+JUNCTION_EDGE_GAP = 2.0
+#: m kept between any two footprints at t=0: a contact in the first frame is an invalid scenario, not a collision.
+#: 0.3 m asked for, plus 5 cm for the player placing a lane position a little differently from the plan's samples.
+START_CLEARANCE = 0.35
+#: m a start may be moved along its path to clear another entity
+MAX_START_SHIFT = 30.0
 
 
 class Planner:
@@ -169,10 +184,81 @@ class Planner:
         for o in sk.obstacles:
             self._plan_obstacle(o)
         self.ev.check_lane_changes(ego)
+        self._separate_at_start()
         self._relative_triggers()
         # the ego's mission: route through its path, goal beyond the conflict
         self._ego_mission(ego_routes)
         return self.actors
+
+    # ---- nobody overlaps at t=0
+    def _start_box(self, a: Actor, d0: float | None = None) -> np.ndarray:
+        p = a.track.world(a.d0 if d0 is None else d0, a.lat0)
+        return box_corners(p.x, p.y, p.h, a.length, a.width, a.cx)
+
+    def _separate_at_start(self) -> None:
+        """Keep every two footprints START_CLEARANCE apart at t=0. The placement rules each put one entity where it
+        meets the AV, so two can land on one spot (two obstacles ahead, a parked car where a reversing car starts)
+        or a party can start touching the AV (a reversing car whose run-up is shorter than a car length); the
+        player would then start in a collision. Entities are settled one by one — the AV, the reported party, then
+        the rest in planning order — each moved along its path just clear of those already settled."""
+        target = self.sketch.collision.with_
+        order = sorted(self.actors, key=lambda a: (a is not self.ego, a.name != target))
+        settled: list[tuple[Actor, np.ndarray]] = []
+        for actor in order:
+            box = self._start_box(actor)
+            hit = next((a for a, b in settled if boxes_gap(box, b) < START_CLEARANCE - 1e-6), None)
+            if hit is not None and not (isinstance(actor.track, Track) and self._shift_start(actor, hit, settled)):
+                self.choices.setdefault("start_overlap", []).append(f"{hit.name}-{actor.name}")
+            settled.append((actor, self._start_box(actor)))
+
+    def _shift_start(self, actor: Actor, hit: Actor, settled: list[tuple[Actor, np.ndarray]]) -> bool:
+        """Move `actor` along its path by the smallest distance that clears the settled footprints, away from `hit`
+        first, never past the AV (a party reported behind it stays behind). A party reported to touch the AV must
+        still do so later in the plan; when no shift allows that, the smallest clearing one is taken and noted."""
+        def lon(box: np.ndarray, of: np.ndarray, h: float) -> float:
+            """How far the centre of `box` lies ahead of the centre of `of` along heading h."""
+            c, ref = box.mean(axis=0), of.mean(axis=0)
+            return float((c[0] - ref[0]) * math.cos(h) + (c[1] - ref[1]) * math.sin(h))
+
+        own_h = actor.track.world(actor.d0, actor.lat0).h
+        away = -1.0 if lon(self._start_box(hit), self._start_box(actor), own_h) > 0 else 1.0
+        ego_box, ego_h = self._start_box(self.ego), self.ego.track.world(self.ego.d0).h
+        side = math.copysign(1.0, lon(self._start_box(actor), ego_box, ego_h))
+        contact = self.sketch.collision.with_ == actor.name
+        d_orig, fallback = actor.d0, None
+        for mag in np.arange(0.25, MAX_START_SHIFT + 1e-9, 0.25):
+            for sign in (away, -away):
+                d = d_orig + sign * float(mag)
+                if not 0.0 <= d <= actor.track.length:
+                    continue
+                box = self._start_box(actor, d)
+                if any(boxes_gap(box, b) < START_CLEARANCE for _, b in settled) or \
+                        lon(box, ego_box, ego_h) * side < 0:
+                    continue
+                if contact:
+                    actor.d0 = d
+                    gap, _ = predicted_gap(self.actors, actor.name, self.horizon)
+                    actor.d0 = d_orig
+                    if gap > 0.0:
+                        fallback = d if fallback is None else fallback
+                        continue
+                self._moved(actor, d, d_orig, "")
+                return True
+        if fallback is None:
+            return False
+        self._moved(actor, fallback, d_orig, "; the reported contact no longer happens in the plan")
+        return True
+
+    def _moved(self, actor: Actor, d: float, d_orig: float, why: str) -> None:
+        actor.d0 = d
+        actor.notes.append(f"start moved {d - d_orig:+.2f} m along its path: it overlapped another entity at "
+                           f"t=0{why}")
+        self.ev.check_lane_changes(actor)
+        if actor.name in self.choices.get("parties", {}):
+            self.choices["parties"][actor.name]["start_d"] = round(d, 2)
+        elif actor.name in self.choices.get("obstacles", {}):
+            self.choices["obstacles"][actor.name]["d"] = round(d, 2)
+            self.choices["obstacles"][actor.name]["note"] = actor.notes[-1]
 
     def _relative_triggers(self) -> None:
         """The collision party's critical later manoeuvre (a lane change, stop, slow-down or reversing) fires by
@@ -204,7 +290,8 @@ class Planner:
         run = float(np.max(self.ego_d[self.ego_t <= self.T + 1e-9])) if len(self.ego_d) else 0.0
         back = -float(np.min(self.ego_d))
         if math.isfinite(self.d_entry):
-            ego.d0 = max(back + 2.0, self.d_entry - run - 8.0) if ego.v0 > 0 or run > 0 else max(self.d_entry - 2.0, 0)
+            ego.d0 = max(back + 2.0, self.d_entry - run - 8.0) if ego.v0 > 0 or run > 0 else \
+                max(self._hold_front_d() - (ego.cx + ego.length / 2), 0.0)
         else:
             ego.d0 = min(max(40.0, back + 15.0), max(ego.track.length - run - 40.0, 5.0))
         self.choices["ego_start_d"] = round(ego.d0, 2)
@@ -316,7 +403,7 @@ class Planner:
         # Parallel rear-end: the faster one must close the gap.
         ego_v_T = float(np.interp(T, self.ego_t, speed_profile(ego.v0, ego.speed_steps, self.horizon)[1]))
         if mode in ("parallel", "exit") and p.position in ("R6",) and p.lane == "same" and actor.v0 > 0 and \
-                not set(p.actions) & set("hck"):
+                not set(p.actions) & set("hck") and is_collision:
             if actor.v0 < ego_v_T + 2.0:
                 actor.v0 = cruise = round(ego_v_T + 3.0, 2)
                 actor.notes.append("speed raised so that it closes on the AV")
@@ -363,6 +450,40 @@ class Planner:
     def _ego_d_at(self, T: float) -> float:
         return float(np.interp(T, self.ego_t, self.ego_d))
 
+    def _stop_line_d(self) -> float | None:
+        """Distance along the AV's path of the first stop line (traffic light or stop sign of the map) that governs
+        its lane on the approach to the junction, or None (no junction ahead, or an uncontrolled lane)."""
+        track = self.ego.track
+        if not math.isfinite(self.d_entry) or not isinstance(track, Track):
+            return None
+        k = next((k for k, r in enumerate(track.refs) if self.net.roads[r.road_id].in_junction), None)
+        if not k:
+            return None
+        ref = track.refs[k - 1]
+        road = self.net.roads[ref.road_id]
+        sigs = approach_signals(self.net, road, self.net.lane_forward(ref.road_id, ref.lane_id), [ref.lane_id])
+        on = track.seg == k - 1
+        if not sigs or on.sum() < 2:
+            return None
+        order = np.argsort(track.s[on])
+        return min(float(np.interp(sg.s, track.s[on][order], track.d[on][order])) for sg in sigs)
+
+    def _hold_front_d(self) -> float:
+        """Where a standing AV's front bumper is held: STOP_LINE_GAP before the stop line of its lane, else
+        JUNCTION_EDGE_GAP before the junction. (The map's stop line, not the junction entry: the map draws the
+        line a metre or so before the junction, and an AV standing at a red light is behind it.)"""
+        line = self._stop_line_d()
+        if line is not None:
+            self.choices["ego_stop_line_d"] = round(line, 2)
+            return line - STOP_LINE_GAP
+        return self.d_entry - JUNCTION_EDGE_GAP
+
+    def _ego_in_junction(self) -> bool:
+        """Whether the report has the standing AV inside the junction. The sketch has no field for it: an AV held
+        by a red light, a stop sign or an unknown control stood at the line; only one that had a green or yellow
+        light (waiting inside to turn, or caught in the junction) may stand past it."""
+        return self.sketch.signal_state in ("green", "yellow")
+
     def _meet_crossing(self, actor: Actor, T: float, primary: bool, t: np.ndarray, dn: np.ndarray) -> None:
         ego = self.ego
         pts = actor.track.world_array(actor.track.d, actor.lat0)
@@ -386,22 +507,26 @@ class Planner:
                 if ego.d0 == 0.0:
                     actor.notes.append("AV run-up shortened by the map")
             else:  # the AV stands: the party comes to it
-                ego.d0 = max(min(self.d_entry - 2.0 - front, d_e_star - front - 1.0), 0.0)
+                ego.d0 = max(min(self._hold_front_d() - front, d_e_star - front - 1.0), 0.0)
                 at_line = ego.track.world(ego.d0 + front)
                 miss = float(np.min(np.hypot(pts[:, 0] - at_line.x, pts[:, 1] - at_line.y)))
-                if self.sketch.collision.with_ == actor.name and dist[i, j] < 1.0 and miss > 3.0:
+                if self.sketch.collision.with_ == actor.name and dist[i, j] < 1.0 and miss > 3.0 and \
+                        self._ego_in_junction():
                     # the party's path crosses inside the junction, far from the stop line, yet they touched:
                     # the AV stood past the line, its front in the party's path
                     ego.d0 = max(d_e_star - front + actor.width / 2 - 0.3, 0.0)
                     actor.notes.append("AV standing inside the junction, its front in the party's path")
             self.choices["ego_start_d"] = round(ego.d0, 2)
         t_e = time_to_reach(self.ego_t, self.ego_d, d_e_star - front - ego.d0)
+        at_av = False
         if t_e is None:
             # the AV never gets there: meet at the AV itself, where it is at the conflict time
             stand = ego.d0 + self._ego_d_at(T) + front
             wp = ego.track.world(stand)
             d_n_star = float(actor.track.project(wp.x, wp.y)) if isinstance(actor.track, Track) else d_n_star
             t_e = T
+            near = actor.track.world(d_n_star, actor.lat0)
+            at_av = math.hypot(near.x - wp.x, near.y - wp.y) >= 1.0
         reach = float(np.interp(t_e, t, dn))
         actor.d0 = d_n_star - reach - actor.cx
         if actor.d0 < 0:
@@ -415,14 +540,16 @@ class Planner:
             else:
                 actor.notes.append(f"party start clamped ({actor.d0:.1f} m before its path)")
             actor.d0 = 0.0
-        if dist[i, j] >= 1.0 and self.sketch.collision.with_ == actor.name and actor.events:
-            self._graze(actor, d_n_star, t_e)
+        if (dist[i, j] >= 1.0 or at_av) and self.sketch.collision.with_ == actor.name and actor.events:
+            # an AV that stays behind its line is met where it stands: the party swings wide toward it (up to a
+            # lane and a half, as a turning truck's corner cut does)
+            self._graze(actor, d_n_star, t_e, limit=1.5 * self.lane_w if at_av else 4.0)
         self._conflict_times = getattr(self, "_conflict_times", {})
         self._conflict_times[actor.name] = t_e
 
-    def _graze(self, actor: Actor, d_n_star: float, t_e: float) -> None:
-        """The paths pass side by side but the report says they touched: shift the party toward the AV (a
-        LaneOffsetAction in the event before the conflict), at most 2.5 m."""
+    def _graze(self, actor: Actor, d_n_star: float, t_e: float, *, limit: float = 4.0) -> None:
+        """The paths pass side by side but the report says they touched: bend the party's path toward the AV over
+        the 15 m before the meeting point, by at most `limit` m."""
         ego = self.ego
         e_pose = ego.track.world(ego.d0 + self._ego_d_at(t_e) + ego.cx)
         p_pose = actor.track.world(d_n_star)
@@ -431,7 +558,7 @@ class Planner:
         need = abs(left) - (ego.width / 2 + actor.width / 2) + 0.3
         if need <= 0:
             return
-        shift = math.copysign(min(need, 4.0), left)
+        shift = math.copysign(min(need, limit), left)
         # Realised as a trajectory: the party's own path, bent toward the AV over the 15 m before the meeting
         # point. (A LaneOffsetAction would do, but its sign is tied to the road's +t and flips when the path
         # turns onto a road drawn the other way; world points are unambiguous.)
@@ -489,6 +616,8 @@ class Planner:
         d_target = actor.track.project(wp.x, wp.y)
         travelled = float(np.interp(T, t, dn))
         actor.d0 = d_target - travelled
+        if p.id != self.sketch.collision.with_ and p.position in ("R5", "R6") and not reversing:
+            self._keep_reported_side(p, actor)
         if actor.d0 < 0 or actor.d0 > actor.track.length:
             actor.notes.append(f"start {actor.d0:.1f} m outside its lane; clamped")
             actor.d0 = float(np.clip(actor.d0, 0.0, actor.track.length))
@@ -508,6 +637,22 @@ class Planner:
                 same_dir = math.cos(p_pose.h - e_pose.h) >= 0.0
                 actor.lat0 += (desired - rel) * (1.0 if same_dir else -1.0)
                 actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+
+    def _keep_reported_side(self, p: Party, actor: Actor) -> None:
+        """A party reported behind (R6) or ahead of (R5) the AV that did not touch it starts there, clear of it:
+        meeting the AV at the conflict time alone would start a follower that stops early ahead of the AV."""
+        ego = self.ego
+        pose = actor.track.world(actor.d0, actor.lat0)
+        d_on_ego = float(ego.track.project(pose.x, pose.y))
+        if p.position == "R6":   # its front behind the AV's rear
+            shift = min(ego.d0 + ego.cx - ego.length / 2 - START_CLEARANCE - (actor.cx + actor.length / 2) - d_on_ego,
+                        0.0)
+        else:                    # its rear ahead of the AV's front
+            shift = max(ego.d0 + ego.cx + ego.length / 2 + START_CLEARANCE - (actor.cx - actor.length / 2) - d_on_ego,
+                        0.0)
+        if shift:
+            actor.d0 += shift
+            actor.notes.append(f"start moved {shift:+.1f} m: reported {'behind' if shift < 0 else 'ahead of'} the AV")
 
     def _release_if_needed(self, actor: Actor) -> None:
         """Keep a start on the map; nothing else to do: events are timed from the plan."""
