@@ -321,11 +321,15 @@ def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, li
             state = SignalState.GREEN                    # fault red_light_misread
         if state not in (SignalState.RED, SignalState.YELLOW):
             continue
-        if light.road_id and light.lane_ids and line.lanes and not any(
-                ref.road_id == light.road_id and ref.lane_id in light.lane_ids for ref in line.lanes):
+        lane_known = bool(light.road_id and light.lane_ids and line.lanes)
+        if lane_known and not any(ref.road_id == light.road_id and ref.lane_id in light.lane_ids
+                                  for ref in line.lanes):
             continue                                     # the signal governs lanes the route does not use
         pp = line.project(light.stop_x, light.stop_y, near_s=ego.s, window=bp.signal_lookahead + 20.0)
-        if abs(pp.offset) > bp.signal_lateral_tolerance or abs(wrap_angle(light.heading - pp.heading)) > 0.8:
+        # The stop point marks one of the lanes it governs: when the route's lane is known to be one of them it
+        # may lie a lane or two to the side; otherwise only a stop point on the route's own lane counts.
+        if (not lane_known and abs(pp.offset) > bp.signal_lateral_tolerance) \
+                or abs(wrap_angle(light.heading - pp.heading)) > 0.8:
             continue
         dist = pp.s - ego.s_front
         if dist < -0.5 or dist > bp.signal_lookahead:

@@ -7,7 +7,7 @@ import pytest
 
 from standin_planner import Faults, Planner, PlannerParams
 from standin_planner.behaviour import Reason
-from txt2sce_ros.contract import SignalState
+from txt2sce_ros.contract import SignalState, TrafficLightState
 from txt2sce_ros.paths import BUNDLED_MAPS
 from txt2sce_ros.road import load_network
 
@@ -237,3 +237,20 @@ def test_blocking_parked_car_is_passed_in_the_free_lane_beside_or_waited_for():
     waits = [c for c in p.decision.constraints if c.reason is Reason.OBSTACLE and c.entity == "obs1"]
     assert waits and waits[0].accel < 0.0
     assert abs(p.decision.offset) < 0.05
+
+
+def test_red_light_marked_on_a_neighbour_lane_it_governs_still_stops_the_ego():
+    # A signal's stop point sits on one of the lanes it governs (the player picks one); an ego in another lane of
+    # that set must stop for it even 3.5 m to the side. Without lane information only its own lane's point counts.
+    ego = on_lane(N, "ego", "2", -1, STOP_LINE_S - 60.0, speed=8.0)
+    x, y, h = N.lane_to_world("2", -1, STOP_LINE_S)
+    side_x, side_y = x - 3.5 * math.sin(h), y + 3.5 * math.cos(h)      # 3.5 m to the left of the ego's lane
+    governed = TrafficLightState(id="sig", state=SignalState.RED, stop_x=side_x, stop_y=side_y, heading=h,
+                                 road_id="2", lane_ids=(-1, 1))
+    unknown = TrafficLightState(id="sig", state=SignalState.RED, stop_x=side_x, stop_y=side_y, heading=h)
+    p = planner()
+    p.step(frame(0.0, ego, lights=(governed,)))
+    assert Reason.RED in reasons(p)
+    q = planner()
+    q.step(frame(0.0, ego, lights=(unknown,)))
+    assert Reason.RED not in reasons(q)
