@@ -185,9 +185,13 @@ def test_overlap_in_the_first_frame_is_an_error_never_a_fail() -> None:
     assert verdict.verdict is Verdict.FAIL and not any(v.rule is Rule.OVERLAP_AT_START for v in online)
 
 
-def test_seed_r512_debris_under_the_ego_is_an_invalid_scenario(tmp_path) -> None:
-    # The real case: seed r512 of dev_gold places debris obs1 under the ego's start; the closed loop run must be
-    # an error of the scenario, not a Collision of the planner.
+def test_real_seed_with_debris_moved_under_the_ego_is_an_invalid_scenario(tmp_path) -> None:
+    # A real seed (r512 of dev_gold) with its debris obs1 teleported onto the ego's start: the closed-loop run must
+    # be an error of the scenario, not a Collision of the planner. (The seed generator itself keeps starts apart.)
+    import copy
+
+    from lxml import etree
+
     from txt2sce_ros.closed_loop import run_closed_loop
     from txt2sce_ros.paths import shared_dir
     from txt2sce_ros.seed.generate import write_seeds
@@ -197,7 +201,18 @@ def test_seed_r512_debris_under_the_ego_is_an_invalid_scenario(tmp_path) -> None
     sketch = next(s for s in load_sketches(gold) if isinstance(s, Sketch)
                   and s.report_id == "dmvca-ghostauton-20230814-r512")
     manifest = write_seeds([sketch], tmp_path)
-    record, _ = run_closed_loop(tmp_path / manifest["built"][0]["file"], time_limit=5.0)
+    path = tmp_path / manifest["built"][0]["file"]
+    clean, _ = run_closed_loop(path, time_limit=5.0)
+    assert clean.to_dict()["verdict"] != "error"
+    root = etree.parse(str(path))
+
+    def teleport(name: str) -> etree._Element:
+        return root.find(f"Storyboard/Init/Actions/Private[@entityRef='{name}']//TeleportAction/Position")
+
+    target = teleport("obs1")
+    target.getparent().replace(target, copy.deepcopy(teleport("ego")))
+    root.write(str(path))
+    record, _ = run_closed_loop(path, time_limit=5.0)
     d = record.to_dict()
     assert d["verdict"] == "error", d
     why = d["details"]["error"]
