@@ -141,6 +141,8 @@ def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
 
 def test_tls_states_hold_their_meaning_in_the_player(cfg):
     # Played by the scenario player — a mutated yellow turns red after `yellow` s, a red turns green after `red` s.
+    # The fixture's ego faces none of the map's signals, so its yellow shows from t = 0 (no dilemma-zone trigger;
+    # that one is tested in test_dilemma_yellow.py).
     # The ego gets no command (it stands); the NPC's scripted path hits it, so contact must not end the run.
     from scenario_player import Simulation, SimulationConfig, load_scenario
 

@@ -7,10 +7,13 @@ Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_fo
 | weather | `Storyboard/Init/Actions/GlobalAction/EnvironmentAction/Environment` |
 | ego | `Init/Actions/Private[@entityRef='ego']` (its ScenarioObject stays in T: the AV is not mutated) |
 | npc | `Entities/ScenarioObject[@name=X]` + `Init/Actions/Private[@entityRef=X]` for each party X |
-| signal | each `RoadNetwork/TrafficSignals/TrafficSignalController` |
+| signal | each `RoadNetwork/TrafficSignals/TrafficSignalController` + two empty slots (Init GlobalAction, Story) |
 | event | each `Story/Act/ManeuverGroup/Maneuver/Event` |
 | obstacle | `ScenarioObject[@name='obs…']` + its Private |
 | new_obstacle | an empty ScenarioObject slot after the last entity and an empty Private slot after the last Private |
+
+A signal's empty slots (after the last Init GlobalAction, after the last Story) take the Init action and the Story
+with which a yellow waits for the ego's dilemma zone (`environment.dilemma_yellow`).
 
 Each block element is replaced in the tree by a comment marker (keeping the element's tail whitespace), the tree is
 serialised once, and the text is cut at the markers. Assembly is then a string join (fast: no tree per node).
@@ -54,8 +57,9 @@ class _Cutter:
         el.getparent().replace(el, marker)
         return slot
 
-    def empty_after(self, parent: etree._Element, after: etree._Element | None) -> int:
-        """An empty insertion point after `after` (or first in `parent`): where OIM puts a new obstacle."""
+    def empty_after(self, parent: etree._Element, after: etree._Element | None) -> tuple[int, etree._Element]:
+        """An empty insertion point after `after` (or first in `parent`): where OIM puts a new obstacle. Returns
+        the slot and its marker (the place for the next slot that must follow this one)."""
         slot = len(self.fragments)
         self.fragments.append("")
         marker = etree.Comment(f"{_MARK}{slot}")
@@ -65,7 +69,7 @@ class _Cutter:
         else:
             marker.tail = after.tail
             after.addnext(marker)
-        return slot
+        return slot, marker
 
 
 def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, ...] = DEFAULT_ORDER,
@@ -104,17 +108,27 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
 
     cutter = _Cutter()
     cut: dict[BlockKind, list[tuple[str, tuple[int, ...]]]] = {k: [] for k in BlockKind}
+    storyboard = root.find("Storyboard")
+    # Where a signal's extra slots go: after the last Init GlobalAction (the schema puts them before any Private)
+    # and after the last Story (before the StopTrigger); each new slot after the previous one, in document order.
+    init_at = next(iter(actions.findall("GlobalAction")[-1:]), None)
+    story_at = next(iter(storyboard.findall("Story")[-1:]), storyboard.find("Init"))
     for kind in BlockKind:
         if kind is BlockKind.NEW_OBSTACLE or kind not in wanted:
             continue
         for key, parts in found[kind]:
-            cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
+            slots = tuple(cutter.cut(el) for el in parts)
+            if kind is BlockKind.SIGNAL:
+                s_init, init_at = cutter.empty_after(actions, init_at)
+                s_story, story_at = cutter.empty_after(storyboard, story_at)
+                slots += (s_init, s_story)
+            cut[kind].append((key, slots))
     if BlockKind.NEW_OBSTACLE in wanted:
         for _ in range(new_obstacle_slots):
             last_obj = _last_element(entities)
             last_priv = _last_element(actions)
-            s_obj = cutter.empty_after(entities, last_obj)
-            s_priv = cutter.empty_after(actions, last_priv)
+            s_obj, _ = cutter.empty_after(entities, last_obj)
+            s_priv, _ = cutter.empty_after(actions, last_priv)
             cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken), (s_obj, s_priv)))
 
     text = etree.tostring(root, encoding="unicode")

@@ -80,6 +80,7 @@ class SignalTiming:
     yellow: float = 4.0
     red: float = 12.0
     hold: float = 3600.0
+    margin: float = 0.7     # the yellow starts when the ego is `yellow + margin` s from the stop line
 
 
 @lru_cache(maxsize=1)
@@ -123,7 +124,8 @@ def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, .
     AV, per the map) its first phase sets, else that phase's first — starts showing `state`, and the controller's
     phases are rewritten so the state means something over the run (`_schedule`): a yellow turns red, a red turns
     green after a while so the goal stays reachable, a green stays green. Signals that showed the primary's old
-    state in the first phase follow the primary; the others show the conflicting state. Returns the old state."""
+    state in the first phase follow the primary; the others show the conflicting state. Returns the old state.
+    A yellow is then moved to the ego's dilemma zone by `dilemma_yellow` where the ego can reach the line."""
     phase = ctrl.find("Phase")
     first = primary_signal(phase, facing) if phase is not None else None
     if first is None:
@@ -148,6 +150,109 @@ def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, .
     rec.note(f"TrafficSignalController[@name='{ctrl.get('name')}']/Phase",
              " ".join(f"{n}:{d}" for n, d in before), " ".join(f"{n}:{d}" for n, d in after) + f" ({state})")
     return old
+
+
+def stop_line(ctx: SeedContext, sid: str, *, slack: float = 0.0) -> LanePos | None:
+    """Where the ego's route crosses the stop line of signal `sid` (its road, the ego's lane there when the signal
+    controls it, the signal's s), or None when the ego cannot reach that line: no map, no such signal, the ego's
+    front bumper is not more than `slack` m before the line on its start road (a node may start the ego up to
+    that much further ahead, WPM-init), or the signal's road is neither the ego's start road nor a later road of
+    its route (an AV standing past the line, inside the junction, faces its approach's light but never drives to
+    it)."""
+    net = ctx.network
+    ego = ctx.starts.get("ego")
+    sig = net.signals.get(sid) if net is not None else None
+    if sig is None or ego is None or ctx.map is None or not ctx.map.has_road(sig.road_id):
+        return None
+    road = str(sig.road_id)
+    lanes = tuple(getattr(sig, "controlled_lanes", ()) or ())
+    if road == ego.road:
+        ahead = ctx.map.direction(ego.road, ego.lane) * (sig.s - ego.s)
+        if ahead <= _ego_front(ctx) + slack:
+            return None               # the bumper is (or may be moved) over the line: the ego never reaches it
+        lane = ego.lane
+    else:
+        on_route = [wp.lane for wp in ctx.ego_route[1:] if wp.road == road]
+        if not on_route:
+            return None
+        lane = on_route[0]
+    if lanes and lane not in lanes:
+        lane = lanes[0]
+    return LanePos(road=road, lane=int(lane), s=float(sig.s))
+
+
+def _ego_front(ctx: SeedContext) -> float:
+    """m from the ego's reference point to its front bumper (BoundingBox center x + half length; 0 unknown)."""
+    bb = ctx.root.find("Entities/ScenarioObject[@name='ego']/*/BoundingBox")
+    if bb is None or bb.find("Center") is None or bb.find("Dimensions") is None:
+        return 0.0
+    return float(bb.find("Center").get("x", "0")) + float(bb.find("Dimensions").get("length", "0")) / 2.0
+
+
+def _controller_action(ctrl: str, phase: str) -> etree._Element:
+    ga = etree.Element("GlobalAction")
+    tsa = etree.SubElement(etree.SubElement(ga, "InfrastructureAction"), "TrafficSignalAction")
+    etree.SubElement(tsa, "TrafficSignalControllerAction", trafficSignalControllerRef=ctrl, phase=phase)
+    return ga
+
+
+def dilemma_yellow(ctrl: etree._Element, ctx: SeedContext, rec: Recorder, *, timing: SignalTiming | None = None,
+                   slack: float = 0.0) -> tuple[etree._Element, etree._Element] | None:
+    """For a controller `tls` set to yellow: an Init action that starts it in its final green phase, and a Story
+    that switches it to its yellow phase once the ego is in the dilemma zone — then red, then green as `_schedule`
+    says. None (the yellow then shows from t = 0, as `tls` wrote it) when the ego cannot reach the primary
+    signal's stop line (`stop_line`; `slack`: how far ahead another block may move the ego's start).
+
+    A yellow tests a stack only where stopping and going are both possible: shown from t = 0 to an ego 50 m away
+    it turns red long before the ego arrives, and a stack that reads yellow as green still stops for the red.
+    Started `yellow + margin` s of travel before the line, a stack that stops at yellow needs ~1 m/s^2, while
+    one that keeps going meets red a fraction of a second (~6 m at 9 m/s) before the line, cannot stop and enters
+    on red (config/effect.yaml `tls.margin` says how the margin was chosen). The trigger is a
+    TimeToCollisionCondition to the stop line (front bumper, `freespace`) rather than a distance, because the
+    stack under test drives at its own speed: the time to the line is what fixes where red finds it. `alongRoute`
+    is false (distance along the ego's heading): the approach to a stop line is straight, and every player
+    measures that the same way. The phases stay in `tls`'s order (yellow first), so the scenario is still
+    labelled by its yellow (tree features, analysis `signal_label`); only the Init action starts it in green."""
+    timing = timing or signal_timing()
+    phase = ctrl.find("Phase")
+    first = primary_signal(phase, ctx.ego_signals) if phase is not None else None
+    names = [p.get("name") for p in ctrl.findall("Phase")]
+    if first is None or names[:1] != ["tls_yellow"] or names[-1] != "tls_green":
+        return None
+    line = stop_line(ctx, first.get("trafficSignalId", ""), slack=slack)
+    if line is None:
+        return None
+    name = ctrl.get("name", "")
+    init = _controller_action(name, "tls_green")
+    story = etree.Element("Story", name=f"tls_{name}_story")
+    act = etree.SubElement(story, "Act", name=f"tls_{name}_act")
+    mg = etree.SubElement(act, "ManeuverGroup", name=f"tls_{name}_mg", maximumExecutionCount="1")
+    etree.SubElement(mg, "Actors", selectTriggeringEntities="false")
+    man = etree.SubElement(mg, "Maneuver", name=f"tls_{name}_maneuver")
+    ev = etree.SubElement(man, "Event", name=f"tls_{name}_yellow", priority="parallel", maximumExecutionCount="1")
+    etree.SubElement(ev, "Action", name=f"tls_{name}_yellow_action").append(_controller_action(name, "tls_yellow"))
+    cond = etree.SubElement(etree.SubElement(etree.SubElement(ev, "StartTrigger"), "ConditionGroup"), "Condition",
+                            name=f"tls_{name}_dilemma_zone", delay="0", conditionEdge="none")
+    by = etree.SubElement(cond, "ByEntityCondition")
+    etree.SubElement(etree.SubElement(by, "TriggeringEntities", triggeringEntitiesRule="any"), "EntityRef",
+                     entityRef="ego")
+    ttc = etree.SubElement(etree.SubElement(by, "EntityCondition"), "TimeToCollisionCondition",
+                           value=f"{timing.yellow + timing.margin:g}", freespace="true", alongRoute="false",
+                           rule="lessThan")
+    etree.SubElement(etree.SubElement(etree.SubElement(ttc, "TimeToCollisionConditionTarget"), "Position"),
+                     "LanePosition", roadId=line.road, laneId=str(line.lane), s=f"{line.s:.3f}", offset="0")
+    act_start = etree.SubElement(etree.SubElement(etree.SubElement(act, "StartTrigger"), "ConditionGroup"),
+                                 "Condition", name=f"tls_{name}_act_start", delay="0", conditionEdge="none")
+    etree.SubElement(etree.SubElement(act_start, "ByValueCondition"), "SimulationTimeCondition", value="0",
+                     rule="greaterThan")
+    rec.check_tree(init)
+    rec.check_tree(story)
+    rec.note(f"Init/GlobalAction/TrafficSignalControllerAction[@trafficSignalControllerRef='{name}']", None,
+             "tls_green")
+    rec.note(f"Story[@name='tls_{name}_story']", None,
+             f"tls_yellow when ego TTC to stop line road {line.road} lane {line.lane} s {line.s:.2f} < "
+             f"{timing.yellow + timing.margin:g} s")
+    return init, story
 
 
 def oim_position(ctx: SeedContext, obstacle_width: float, rng: np.random.Generator, cfg: dict[str, Any],

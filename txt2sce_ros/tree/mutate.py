@@ -5,7 +5,7 @@
 | weather | WM | enumerate every weather type, parameters drawn per type |
 | ego | WPM (initial location, context-aware) | `mutations_per_block` |
 | npc | NCM (+ DM, VPM follow the category) + WPM initial location | enumerate every category |
-| signal | TLS | enumerate green / yellow / red |
+| signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate green / yellow / red |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
 | new_obstacle | OIM (inserted on the AV's path, random dimensions) | `mutations_per_block` |
@@ -25,7 +25,7 @@ from ..errors import InputError
 from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
 from .dynamics import dtm, tsm
-from .environment import obstacle_fragments, oim_position, tls, wm
+from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
 from .trajectory import shift_init_location, wpm_lane_change
@@ -94,6 +94,10 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
             for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
                 tls(els[0], state, rec, facing=ctx.ego_signals)
+                extra = (dilemma_yellow(els[0], ctx, rec, slack=cfg["trajectory"]["init_location"]["max_shift"])
+                         if state == "yellow" and len(els) == 3 else None)
+                if extra is not None:  # Init action + Story into the block's two storyboard slots
+                    els[1], els[2] = extra
                 emit(els, "TLS", rec)
         elif block.kind is BlockKind.EVENT:
             entity, action = split_event_name(block.key)
