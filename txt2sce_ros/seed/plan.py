@@ -11,6 +11,9 @@ solved so that it reaches its conflict point with the AV at the moment the AV do
 - a party that cannot start early enough waits and is released by a distance-to-AV trigger;
 - an AV standing at a junction waits with its front bumper 1 m behind the map's stop line of its lane (inside the
   junction only when the report gives it right of way there), and a party that cannot reach it swings toward it;
+- a party that touches the AV but would start on the other side of it than reported (R5/R6) gets there faster,
+  slower, earlier or later instead; a party reported behind the AV that crosses (`m`) crosses behind it; every start
+  that still does not read as its reported position (`sides.start_position`) says why in the manifest;
 - finally no two footprints may touch at t=0 (the closed loop would call the scenario invalid): starts are moved
   apart along their paths, never past the AV, keeping the reported contact where a shift allows it.
 
@@ -34,6 +37,7 @@ from .kinematics import box_corners, boxes_gap, lateral_profile, speed_profile, 
 from .lanes import CURB, case1_lane, ego_lane, party_lane
 from .linetrack import LineTrack, perpendicular
 from .model import EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger
+from .sides import on_reported_side, reported_code, start_position
 from .sites import JunctionSite, RoadSite, site_network
 from .track import Track
 
@@ -48,6 +52,13 @@ JUNCTION_EDGE_GAP = 2.0
 START_CLEARANCE = 0.35
 #: m a start may be moved along its path to clear another entity
 MAX_START_SHIFT = 30.0
+#: the fastest a party may drive, as a multiple of its category's cruise speed, to come from the side of the AV the
+#: report puts it (a cyclist overtaking a turning AV from behind at 2 x 3 m/s is still an ordinary cyclist)
+MAX_SPEED_FACTOR = 2.0
+#: m beside the AV's lane a party pulling into the road behind the AV starts (a driveway, a parking lot's exit)
+PULL_IN_RUN = 10.0
+#: m between its front and the AV's rear where it turns in (it then runs along the AV's side into its rear corner)
+PULL_IN_BEHIND = 2.0
 
 
 class Planner:
@@ -186,6 +197,7 @@ class Planner:
         self.ev.check_lane_changes(ego)
         self._separate_at_start()
         self._relative_triggers()
+        self._note_reported_sides()
         # the ego's mission: route through its path, goal beyond the conflict
         self._ego_mission(ego_routes)
         return self.actors
@@ -259,6 +271,44 @@ class Planner:
         elif actor.name in self.choices.get("obstacles", {}):
             self.choices["obstacles"][actor.name]["d"] = round(d, 2)
             self.choices["obstacles"][actor.name]["note"] = actor.notes[-1]
+
+    def _note_reported_sides(self) -> None:
+        """Every party whose start does not read as its reported position (R1-R7 + lane, by the one definition in
+        analysis.features.derived_position; a crossing party by where it stands) says so, and why, in its notes."""
+        for p in self.sketch.npcs:
+            actor = next((a for a in self.actors if a.name == p.id), None)
+            if actor is None:
+                continue
+            crossing = p.actions[:1] == "m"
+            got = start_position(self.ego, actor, by_place=crossing)
+            want = reported_code(p.position, p.lane)
+            if got == want:
+                continue
+            actor.notes.append(f"starts at {'/'.join(x for x in got if x)} by its start pose (reported "
+                               f"{'/'.join(x for x in want if x)}): {self._side_reason(p, actor, got, crossing)}")
+            self.choices["parties"].setdefault(p.id, {})["notes"] = actor.notes
+
+    def _side_reason(self, p: Party, actor: Actor, got: tuple[str, str | None], crossing: bool) -> str:
+        """Why a party cannot start where the report puts it (see _note_reported_sides)."""
+        travel = float(np.max(self.ego_d[self.ego_t <= self.T + 2.0 + 1e-9])) if len(self.ego_d) else 0.0
+        if crossing and got[0] == p.position:
+            return "a crossing party waits beside the road; the lane reported is the one it crosses"
+        if crossing and p.position == "R6" and travel > 1.0:
+            if self._reversing_time(self.T) is not None:
+                return (f"the AV moves {travel:.0f} m forward before it backs into the party, which crosses behind "
+                        "where it reverses: ahead of the AV's start")
+            return (f"the AV drives {travel:.0f} m to where the party pulls in behind it: the party waits beside "
+                    "the road ahead of the AV's start and pulls in once the AV has passed")
+        if got[0] == p.position and any(n.startswith("lateral offset") for n in actor.notes):
+            return ("no lane change is reported, so its whole path runs beside the AV's box for the reported "
+                    "contact, within a lane half-width of the AV's centreline")
+        if p.position == "R2" and got[0] == "R7":
+            return "an oncoming party on the approach facing the AV reads as R7 while within a road's width of its lane"
+        if isinstance(actor.track, Track) and self.net.roads[actor.track.lane_at(actor.d0).road_id].in_junction:
+            return "it meets the AV inside the junction and starts there (its run-up is shorter than its way in)"
+        if any(n.startswith("no ") and "keeps the reported contact" in n for n in actor.notes):
+            return "no re-timing keeps the reported contact from there"
+        return "placed where it meets the AV at the conflict time"
 
     def _relative_triggers(self) -> None:
         """The collision party's critical later manoeuvre (a lane change, stop, slow-down or reversing) fires by
@@ -389,25 +439,47 @@ class Planner:
         return Track(self.net, [onc[0]]), 0.0, "parallel"
 
     def _plan_party(self, p: Party, *, primary: bool) -> None:
-        D, ego = self.D, self.ego
         track, lat, mode = self._party_track(p)
-        cruise = D.speed(p.category)
+        cruise = self.D.speed(p.category)
         is_collision = self.sketch.collision.with_ == p.id
         T = self.T if primary or is_collision else self.T * 0.7
         if mode == "line":
             self._plan_crossing(p, T, cruise, primary)
             return
+
+        def build(speed: float | None = None, shift: float = 0.0) -> Actor:
+            return self._realise(p, track, lat, mode, T, primary, speed=speed, shift=shift)
+
+        actor = build()
+        if is_collision and p.position in ("R5", "R6") and mode in ("parallel", "cross") and \
+                not actor.track.reverse and not on_reported_side(self.ego, actor, p.position):
+            actor = self._retime_to_reported_side(p, actor, build)
+        self.actors.append(actor)
+        self.choices["parties"].setdefault(p.id, {}).update({
+            "mode": mode, "start_d": round(actor.d0, 2), "speed": actor.v0, "conflict_time": round(T, 2),
+            "notes": actor.notes})
+
+    def _realise(self, p: Party, track: Track | LineTrack, lat: float, mode: str, T: float, primary: bool, *,
+                 speed: float | None = None, shift: float = 0.0) -> Actor:
+        """The party on its path, its events, and the start that meets the AV at T. `speed` overrides its cruise
+        speed (and the closing-speed rules), `shift` moves its event schedule later (> 0) or earlier."""
+        D, ego = self.D, self.ego
+        cruise = D.speed(p.category)
+        is_collision = self.sketch.collision.with_ == p.id
         actor = self._actor(p.id, p.category, track)
         actor.lat0 = lat
         actor.v0 = cruise if p.start == "moving" else 0.0
         # Parallel rear-end: the faster one must close the gap.
         ego_v_T = float(np.interp(T, self.ego_t, speed_profile(ego.v0, ego.speed_steps, self.horizon)[1]))
-        if mode in ("parallel", "exit") and p.position in ("R6",) and p.lane == "same" and actor.v0 > 0 and \
+        if speed is not None:
+            cruise = speed
+            actor.v0 = speed if p.start == "moving" else 0.0
+        elif mode in ("parallel", "exit") and p.position in ("R6",) and p.lane == "same" and actor.v0 > 0 and \
                 not set(p.actions) & set("hck") and is_collision:
             if actor.v0 < ego_v_T + 2.0:
                 actor.v0 = cruise = round(ego_v_T + 3.0, 2)
                 actor.notes.append("speed raised so that it closes on the AV")
-        if mode in ("parallel", "exit") and p.position in ("R5", "R4") and p.lane in ("same", None) and \
+        elif mode in ("parallel", "exit") and p.position in ("R5", "R4") and p.lane in ("same", None) and \
                 actor.v0 > 0 and not set(p.actions) & set("hckfg") and ego_v_T > 0:
             if actor.v0 > 0.6 * ego_v_T:
                 actor.v0 = cruise = round(0.5 * ego_v_T, 2)
@@ -417,6 +489,8 @@ class Planner:
             traj = TrajectoryAct(f"{p.id}_path", track.vertices())
             routes = {c: traj for c in p.actions if c in TURN_CODES}
         sched = self.ev.schedule(actor, p.actions, t_first=0.0, t_critical=T)
+        if shift:
+            sched = [(c, round(max(t + shift, 0.0), 2)) for c, t in sched]
         self.ev.apply(actor, sched, cruise=cruise, route_for=routes)
         t, _, dn = actor.profile(self.horizon)
         # ---- the meeting
@@ -427,10 +501,51 @@ class Planner:
         self._release_if_needed(actor)
         self.ev.check_lane_changes(actor)
         self.ev.trim_trajectories(actor)
-        self.actors.append(actor)
-        self.choices["parties"].setdefault(p.id, {}).update({
-            "mode": mode, "start_d": round(actor.d0, 2), "speed": actor.v0, "conflict_time": round(T, 2),
-            "notes": actor.notes})
+        return actor
+
+    def _retime_to_reported_side(self, p: Party, actor: Actor, build) -> Actor:
+        """The party that touches the AV would start on the wrong side of it (a side-swiping car reported behind
+        the AV starting ahead of it, a cyclist reported coming from behind starting ahead, a car reported beside it
+        at the light starting behind): keep the meeting, change how it gets there. A moving party drives faster
+        (to come from behind) or slower (to be caught up with), up to MAX_SPEED_FACTOR of its cruise speed; a
+        standing one moves off later or earlier. The first candidate that starts on the reported side and still
+        touches the AV in the plan wins; without one the original plan stays and the manifest says why."""
+        ego = self.ego
+        saved = (ego.d0, self.choices.get("ego_start_d"))
+        base_gap, _ = predicted_gap([ego, actor], actor.name, self.horizon)
+        behind = p.position == "R6"
+        if actor.v0 > 0:
+            steps = np.arange(0.1, MAX_SPEED_FACTOR - 1.0 + 1e-9, 0.1) if behind else np.arange(0.1, 0.71, 0.1)
+            cands = [("speed", round(actor.v0 * (1.0 + f if behind else 1.0 - f), 2)) for f in steps]
+        else:
+            cands = [("shift", round(-s if behind else s, 2)) for s in np.arange(0.25, self.T + 1e-9, 0.25)]
+        chosen = None
+        for kind, value in cands:
+            ego.d0 = saved[0]
+            cand = build(speed=value) if kind == "speed" else build(shift=value)
+            gap, _ = predicted_gap([ego, cand], cand.name, self.horizon)
+            if on_reported_side(ego, cand, p.position) and gap <= max(base_gap, 0.0):
+                chosen = (kind, value)
+                break
+        ego.d0 = saved[0]
+        if saved[1] is not None:
+            self.choices["ego_start_d"] = saved[1]
+        if chosen is None:
+            actor = build()
+            how = f"no speed up to {MAX_SPEED_FACTOR:g}x its own" if actor.v0 > 0 else "no other time to move off"
+            actor.notes.append(f"{how} starts it {'behind' if behind else 'beside or ahead of'} the AV (reported "
+                               f"{p.position}) and keeps the reported contact")
+            return actor
+        kind, value = chosen
+        actor = build(speed=value) if kind == "speed" else build(shift=value)
+        if kind == "speed":
+            actor.notes.append(f"speed {value:g} m/s so that it starts {'behind' if behind else 'ahead of'} the AV "
+                               f"(reported {p.position}) and still meets it")
+        else:
+            actor.notes.append(f"moves off {abs(value):g} s {'earlier' if value < 0 else 'later'} so that it starts "
+                               f"{'behind' if behind else 'beside or ahead of'} the AV (reported {p.position}) and "
+                               "still meets it")
+        return actor
 
     def _party_routes(self, p: Party, actor: Actor) -> dict[str, RouteAct]:
         if not isinstance(actor.track, Track) or len(actor.track.refs) < 2:
@@ -626,7 +741,11 @@ class Planner:
             # in the AV's frame at the meeting, so it holds for neighbour lanes, curb riders and oncoming lanes.
             if p.lane == "same" and p.position != "R7":
                 return
-            e_pose = ego.track.world(de_T)
+            # where the AV is across its lane at T: its own lane change toward the party closes part of the gap
+            # (or all of it), and the party keeps to its lane as far as it can
+            t_e = self.ego_t
+            ego_lat_T = float(np.interp(T, t_e, lateral_profile(ego.lat0, ego.lat_steps, t_e)))
+            e_pose = ego.track.world(de_T, ego_lat_T)
             p_pose = actor.track.world(d_target, actor.lat0)
             vx, vy = p_pose.x - e_pose.x, p_pose.y - e_pose.y
             rel = -math.sin(e_pose.h) * vx + math.cos(e_pose.h) * vy      # party left of the AV: > 0
@@ -659,31 +778,52 @@ class Planner:
         actor.d0 = round(float(np.clip(actor.d0, 0.0, actor.track.length)), 3)
 
     def _plan_crossing(self, p: Party, T: float, cruise: float, primary: bool) -> None:
-        """`m` first: a path perpendicular to the AV's lane through the point the AV's front reaches at T."""
+        """`m` first: a path perpendicular to the AV's lane through the point the AV's front reaches at T. A party
+        reported behind the AV (R6) crosses behind it instead: where the reversing AV's rear comes back to, or
+        (an AV going forward or standing) into the road behind it and along its side (`_pull_in`)."""
         ego = self.ego
         if not getattr(self, "_ego_placed", False) and ego.d0 == 0.0:
             self._place_ego_default()
             self._ego_placed = True
         front = ego.cx + ego.length / 2
-        travelled = self._ego_d_at(T)
-        if travelled < 0.5:  # the AV stands: cross right in front of it
-            travelled = 0.0
         dims = self.D.dims(p.category)
-        # moving AV: the party's centre crosses the point the AV's front reaches at T; standing AV: the party's
-        # side passes 0.3 m into the AV's front
-        d_p = ego.d0 + travelled + front + (dims[0] / 2 - 0.3 if travelled == 0.0 else 0.0)
-        if p.position in ("R4",) and math.isfinite(self.d_entry):
-            d_p = max(d_p, self.d_entry + 4.0)
-        px = ego.track.world(d_p)
         side = "left" if (p.lane == "left" or p.position in ("R1", "R2")) else "right"
         v = cruise
-        before_needed = v * T
-        max_before = 12.0 if p.category in ("pedestrian", "bicycle", "scooter") else 20.0
-        before = min(before_needed, max_before)
-        line = perpendicular(px.x, px.y, px.h, side, before, 12.0)
+        # a rider or pedestrian, or a party reported on the AV's road (R5-R7), waits within PULL_IN_RUN m of the
+        # AV's lane: beside the road, not beyond it
+        rider = p.category in ("pedestrian", "bicycle", "scooter")
+        max_before = PULL_IN_RUN if rider or p.position in ("R5", "R6", "R7") else 20.0
+        t_rev = self._reversing_time(T)
+        is_collision = self.sketch.collision.with_ == p.id
+        if p.position == "R6" and t_rev is None and is_collision:
+            line, reach = self._pull_in(p, T, side)
+            before = reach
+        else:
+            if p.position == "R6" and not is_collision:
+                # a bystander reported behind the AV crosses behind where the AV is at T, clear of it
+                d_p = ego.d0 + max(self._ego_d_at(T), 0.0) + ego.cx - ego.length / 2 - dims[1] / 2 - \
+                    PULL_IN_BEHIND
+            elif p.position == "R6":
+                # the AV backs into it: it crosses just behind where the AV's rear is once it reverses (half a
+                # metre: the AV, not the pedestrian, closes the gap)
+                T = t_rev
+                d_p = ego.d0 + self._ego_d_at(T) + ego.cx - ego.length / 2 - 0.5
+            else:
+                travelled = self._ego_d_at(T)
+                if travelled < 0.5:  # the AV stands: cross right in front of it
+                    travelled = 0.0
+                # moving AV: the party's centre crosses the point the AV's front reaches at T; standing AV: the
+                # party's side passes 0.3 m into the AV's front
+                d_p = ego.d0 + travelled + front + (dims[0] / 2 - 0.3 if travelled == 0.0 else 0.0)
+                if p.position in ("R4",) and math.isfinite(self.d_entry):
+                    d_p = max(d_p, self.d_entry + 4.0)
+            px = ego.track.world(d_p)
+            before = min(v * T, max_before)
+            line = perpendicular(px.x, px.y, px.h, side, before, 12.0)
+            reach = before
         actor = self._actor(p.id, p.category, line)
         actor.world_start = True
-        delay = max(0.0, T - before / v) if v > 0 else 0.0
+        delay = max(0.0, T - reach / v) if v > 0 else 0.0
         moving = p.start == "moving" and delay == 0.0
         actor.v0 = v if moving else 0.0
         traj = TrajectoryAct(f"{p.id}_crossing", line.vertices())
@@ -702,7 +842,37 @@ class Planner:
         self.actors.append(actor)
         self.choices["parties"].setdefault(p.id, {}).update({
             "mode": "crossing", "side": side, "run_up": round(before, 2), "release_time": round(delay, 2),
-            "speed": v, "conflict_time": round(T, 2)})
+            "speed": v, "conflict_time": round(T, 2), "notes": actor.notes})
+
+    def _reversing_time(self, T: float) -> float | None:
+        """When the AV backs up (at or after T, at nine tenths of its reversing speed), or None if it never does."""
+        _, v, _ = speed_profile(self.ego.v0, self.ego.speed_steps, self.horizon)
+        if v.min() >= -0.1:
+            return None
+        k = np.nonzero((v <= 0.9 * v.min()) & (self.ego_t >= T - 1e-9))[0]
+        return float(self.ego_t[k[0]]) if k.size else None
+
+    def _pull_in(self, p: Party, T: float, side: str) -> tuple[LineTrack, float]:
+        """(path, its length up to the contact) of a party that comes out beside the road behind the AV (a
+        driveway, a parking lot) into the road and along the AV's side: it turns in PULL_IN_BEHIND m behind the
+        AV's rear at T, runs on the side of its later lane change (else the side it came from), its box 0.3 m
+        into the AV's, and touches the AV's rear corner."""
+        ego = self.ego
+        at = ego.track.world(ego.d0 + max(self._ego_d_at(T), 0.0))
+        kind = "pedestrian" if p.category in self.D.raw["pedestrian_category"] else "vehicle"
+        width, length = self.D.dims(p.category)[:2]
+        p_front = center_x(kind, length) + length / 2
+        later = p.actions[1:]
+        pass_side = "left" if "f" in later else "right" if "g" in later else side
+        lat_in = (1.0 if side == "left" else -1.0) * PULL_IN_RUN
+        lat_run = (1.0 if pass_side == "left" else -1.0) * (ego.width / 2 + width / 2 - 0.3)
+        rear = ego.cx - ego.length / 2
+        lon_in = rear - p_front - PULL_IN_BEHIND
+        lon_end = ego.cx + ego.length / 2 + 12.0
+        c, s = math.cos(at.h), math.sin(at.h)
+        pts = [(at.x + lon * c - lat * s, at.y + lon * s + lat * c)
+               for lon, lat in ((lon_in, lat_in), (lon_in, lat_run), (lon_end, lat_run))]
+        return LineTrack(pts), abs(lat_run - lat_in) + PULL_IN_BEHIND
 
     # ---- obstacles
     def _plan_obstacle(self, o) -> None:
