@@ -12,22 +12,30 @@ Parameters:
 
 Thin adapter: subscriptions take the serialized bytes (`raw=True`), which are recorded unchanged and decoded with
 the same `cdr.decode` the offline judge uses, then handed to the `JudgeSession` the offline judge uses —
-so `txt2sce judge` on the recording reproduces the live verdicts. On SIGINT/SIGTERM a run still open is judged as
-incomplete, its verdict recorded and the bag closed (metadata.yaml written); a kill -9 leaves the flushed prefix.
+so `txt2sce judge` on the recording reproduces the live verdicts. On SIGINT/SIGTERM the monitor first takes what
+DDS already delivered to it (until nothing came for `DRAIN_IDLE` s, at most `DRAIN_LIMIT` s; a second signal stops
+at once): a monitor lagging behind the lock-step loop would otherwise lose the last frames of the last run when
+the launcher stops the graph right after the player's 'finished' (a verdict on a truncated run). Then a run still
+open is judged as incomplete, its verdict recorded and the bag closed (metadata.yaml written); a kill -9 leaves the
+flushed prefix.
 """
 
 from __future__ import annotations
 
 import json
+import signal
 import sys
+import time
 from pathlib import Path
+from typing import Callable
 
 import rclpy
 from diagnostic_msgs.msg import DiagnosticArray
-from rclpy.executors import ExternalShutdownException
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.serialization import serialize_message
+from rclpy.signals import SignalHandlerOptions
 
 from txt2sce_ros import contract as c
 from txt2sce_ros.errors import Txt2SceError
@@ -43,6 +51,10 @@ from .topics import TOPIC_TYPES
 
 SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 STREAM_QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE)
+
+#: Shutdown drain: stop taking messages once none came for this long (s), or after this long in all (s).
+DRAIN_IDLE = 0.3
+DRAIN_LIMIT = 5.0
 
 
 class OracleMonitorNode(Node):
@@ -62,8 +74,11 @@ class OracleMonitorNode(Node):
         self.typestore = typestore()
         self.recorder: BagRecorder | None = None
         self.verdict_count = 0
+        self.received = 0                 # messages taken (the shutdown drain watches it)
         self.pub = self.create_publisher(DiagnosticArray, c.TOPIC_VIOLATIONS, STREAM_QOS)
-        for topic in c.CONTRACT_TOPICS:
+        # The ego topic last: endpoints are announced in creation order, so a player that sees this node on the
+        # ego topic (its `await_subscribers`) knows all its other subscriptions, and waits until they matched.
+        for topic in sorted(c.CONTRACT_TOPICS, key=lambda t: t == c.TOPIC_EGO_ODOM):
             qos = SCENARIO_QOS if topic == c.TOPIC_SCENARIO else STREAM_QOS
             self.create_subscription(message_class(TOPIC_TYPES[topic]), topic,
                                      lambda data, topic=topic: self._on_raw(topic, data), qos, raw=True)
@@ -75,6 +90,7 @@ class OracleMonitorNode(Node):
     # --- messages ------------------------------------------------------------------------------------------------
 
     def _on_raw(self, topic: str, data: bytes) -> None:
+        self.received += 1
         try:
             msg = decode(data, TOPIC_TYPES[topic], self.typestore)
         except Exception as exc:          # a malformed message must not stop the monitor
@@ -124,6 +140,18 @@ class OracleMonitorNode(Node):
         if self.recorder is not None:
             self.recorder.flush()
 
+    def drain(self, executor: SingleThreadedExecutor, give_up: Callable[[], bool]) -> None:
+        """Take the messages DDS already delivered, until none came for DRAIN_IDLE s (at most DRAIN_LIMIT s)."""
+        start = idle_since = time.monotonic()
+        seen = self.received
+        while not give_up() and time.monotonic() - start < DRAIN_LIMIT:
+            executor.spin_once(timeout_sec=0.05)
+            now = time.monotonic()
+            if self.received != seen:
+                seen, idle_since = self.received, now
+            elif now - idle_since >= DRAIN_IDLE:
+                return
+
     def shutdown(self) -> None:
         """Judge the runs still open (as incomplete if they never ended) and finalise the recording."""
         self.session.close()
@@ -133,14 +161,25 @@ class OracleMonitorNode(Node):
 
 
 def main(args: list[str] | None = None) -> int:
-    rclpy.init(args=args)
+    # Our own signal handling: rclpy's would shut the context down at once, and the messages already delivered
+    # (the end of the last run, when the monitor lags) could no longer be taken.
+    rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
     node = OracleMonitorNode()
+    executor = SingleThreadedExecutor()
+    executor.add_node(node)
+    signals: list[int] = []
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, lambda signum, _frame: signals.append(signum))
     try:
-        rclpy.spin(node)
+        while rclpy.ok() and not signals:
+            executor.spin_once(timeout_sec=0.1)
+        if rclpy.ok():
+            node.drain(executor, give_up=lambda: len(signals) > 1)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
         node.shutdown()
+        executor.remove_node(node)
         node.destroy_node()
         if rclpy.ok():
             rclpy.shutdown()

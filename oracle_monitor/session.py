@@ -219,8 +219,7 @@ class JudgeSession:
         elif topic == c.TOPIC_OBJECTS_MARKERS:
             frame = asm.add_markers(msg)
         else:
-            asm.add_lights(msg)
-            frame = None
+            frame = asm.add_lights(msg)         # a step's lights may be the message that completes its frame
         if frame is not None:
             sink(frame)
 

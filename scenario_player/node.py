@@ -15,10 +15,20 @@ Parameters (defaults from config/player.yaml `node:`):
 - `planner_timeout` (double, s wall): no command in time -> run ends, verdict_hint 'error',
   end_reason 'planner_not_responding'. The first frame of a run may take up to `startup_timeout` (the stack
   loads the map and plans then).
+- `startup_timeout` (double, s wall): how long a run waits for its subscribers before the first frame (below).
+- `await_subscribers` (string[]): names of nodes (e.g. 'oracle_monitor') that must subscribe `/sim/ego/odom`
+  before a run starts; default `node.await_subscribers` of config/player.yaml, else none.
 - `run_timeout` (double, s wall): a run never takes longer (end_reason 'wall_clock_limit', 'error').
 - `realtime_factor` (double): real-time mode speed (sim s per wall s).
 - `ego_mode` ('planner' | 'storyboard'), `time_limit` (double, sim s; <= 0: config default), `dt`, `seed`.
 - `exit_when_idle` (bool): shut down once the queue is empty and every file has run (default false).
+
+Start of a run: frames are volatile, so a subscriber matched after frame k never gets frames 0..k (a monitor that
+matched two frames late judged a run without its first frames). Before the 'started' status and the first frame the
+player therefore waits (up to `startup_timeout`) until, on every topic it publishes, each subscription the graph
+knows of (QoS-compatible) has matched its publisher, a planner is there (planner mode) and every
+`await_subscribers` node subscribes the ego topic. Missing planner -> 'planner_not_responding' (error); other
+subscribers still missing -> a warning, and the run goes ahead.
 """
 
 from __future__ import annotations
@@ -33,7 +43,7 @@ from geometry_msgs.msg import PoseStamped, TwistStamped
 from nav_msgs.msg import Odometry
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.qos import DurabilityPolicy, QoSCompatibility, QoSProfile, ReliabilityPolicy, qos_check_compatible
 from rosgraph_msgs.msg import Clock
 from diagnostic_msgs.msg import DiagnosticArray
 from std_msgs.msg import String
@@ -72,6 +82,7 @@ class PlayerNode(Node):
         self.declare_parameter("dt", float(sim_cfg.get("dt", 0.05)))
         self.declare_parameter("seed", int(sim_cfg.get("seed", 0)))
         self.declare_parameter("exit_when_idle", False)
+        self.declare_parameter("await_subscribers", [str(n) for n in node_cfg.get("await_subscribers") or [""]])
         p = self.get_parameter
         self.lock_step = bool(p("lock_step").value)
         self.planner_timeout = float(p("planner_timeout").value)
@@ -81,6 +92,7 @@ class PlayerNode(Node):
         self.ego_mode = str(p("ego_mode").value)
         self.time_limit = float(p("time_limit").value)
         self.exit_when_idle = bool(p("exit_when_idle").value)
+        self.await_subscribers = [str(n) for n in p("await_subscribers").value or [] if n]
         self.base_config = SimulationConfig.from_config(dt=float(p("dt").value), seed=int(p("seed").value),
                                                         ego_mode=self.ego_mode)
         depth = int(node_cfg.get("qos_depth", 100))
@@ -91,6 +103,13 @@ class PlayerNode(Node):
         self.pub_goal = self.create_publisher(PoseStamped, TOPIC_GOAL, qos(10, latched=True))
         self.pub_ego = self.create_publisher(Odometry, TOPIC_EGO_ODOM, qos(depth))
         self.pub_status = self.create_publisher(String, TOPIC_RUN_STATUS, qos(50, latched=True))
+        # What a run publishes, with its QoS: every subscription to these must have matched before a run starts.
+        self.outputs = [
+            (TOPIC_CLOCK, self.pub_clock, qos(10)), (TOPIC_TRAFFIC_LIGHTS, self.pub_lights, qos(depth)),
+            (TOPIC_OBJECTS_ODOM, self.pub_objects, qos(depth)), (TOPIC_OBJECTS_MARKERS, self.pub_markers, qos(depth)),
+            (TOPIC_GOAL, self.pub_goal, qos(10, latched=True)), (TOPIC_EGO_ODOM, self.pub_ego, qos(depth)),
+            (TOPIC_RUN_STATUS, self.pub_status, qos(50, latched=True)),
+        ]
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, qos(10, latched=True))
         self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
         self.queue: collections.deque[ScenarioEnvelope] = collections.deque()
@@ -144,13 +163,40 @@ class PlayerNode(Node):
                       time_limit=self.time_limit if self.time_limit > 0 else None)
         return Simulation(scenario, cfg)
 
-    def wait_for_planner(self, executor: SingleThreadedExecutor) -> bool:
+    def missing_planner(self) -> str:
+        """Why no planner can answer the first frame yet ('' when one can)."""
+        if self.count_publishers(TOPIC_COMMAND) == 0:
+            return f"no publisher on {TOPIC_COMMAND}"
+        if self.pub_ego.get_subscription_count() == 0:
+            return f"no subscriber on {TOPIC_EGO_ODOM}"
+        return ""
+
+    def missing_subscribers(self) -> str:
+        """Which known subscriber would miss the first frame ('' when none would)."""
+        ego_nodes = {i.node_name for i in self.get_subscriptions_info_by_topic(TOPIC_EGO_ODOM)}
+        for name in self.await_subscribers:
+            if name not in ego_nodes:
+                return f"node {name!r} not subscribed to {TOPIC_EGO_ODOM}"
+        for topic, pub, offered in self.outputs:
+            # The graph may list a subscription before discovery matched it to our publisher (or never: an
+            # incompatible QoS never matches, so it is not waited for).
+            known = sum(qos_check_compatible(offered, i.qos_profile)[0] != QoSCompatibility.ERROR
+                        for i in self.get_subscriptions_info_by_topic(topic))
+            matched = pub.get_subscription_count()
+            if matched < known:
+                return f"{topic}: {matched} of {known} subscriptions matched"
+        return ""
+
+    def wait_for_subscribers(self, executor: SingleThreadedExecutor, needs_planner: bool) -> tuple[str, str]:
+        """Wait (up to `startup_timeout`) until the first frame reaches everyone; (planner missing, others
+        missing) when the time runs out, ('', '') when all is ready."""
         deadline = time.monotonic() + self.startup_timeout
-        while time.monotonic() < deadline:
-            if self.count_publishers(TOPIC_COMMAND) > 0 and self.pub_ego.get_subscription_count() > 0:
-                return True
+        while True:
+            planner = self.missing_planner() if needs_planner else ""
+            others = self.missing_subscribers()
+            if not (planner or others) or time.monotonic() >= deadline:
+                return planner, others
             executor.spin_once(timeout_sec=0.02)
-        return False
 
     def run_one(self, env: ScenarioEnvelope, executor: SingleThreadedExecutor) -> RunStatus:
         try:
@@ -165,8 +211,12 @@ class PlayerNode(Node):
         self.commands.clear()
         self.latest = None              # a command of the previous run must not drive this one
         frame = sim.reset()
+        # 'started' goes out after the wait too: the run status is volatile for some subscribers (the monitor).
+        no_planner, others = self.wait_for_subscribers(executor, needs_planner)
+        if others:
+            self.get_logger().warn(f"run {env.id} starts although {others} (waited {self.startup_timeout:g} s)")
         self._status(replace(sim.status, state="started"))
-        if needs_planner and not self.wait_for_planner(executor):
+        if no_planner:
             sim.abort("planner_not_responding")
         wall0 = time.monotonic()
         next_wall = wall0

@@ -72,14 +72,19 @@ class PlannerNode(Node):
         if self.fixed_map:
             self.network = load_network(self.fixed_map)     # raises InputError naming the file: fail at start-up
             self.awaiting_scenario = False
-        self.pub = self.create_publisher(TwistStamped, TOPIC_COMMAND, STREAM_QOS)
+        # Creation order matters: the player starts a run once a /control/command publisher exists and the ego topic
+        # has a subscriber, and then waits only for the subscriptions the graph already knows. Endpoints are
+        # announced in creation order, so with the ego subscription last and the command publisher after it, every
+        # other input of frame 0 is known (and waited for) by then: a planner that missed frame 0's lights or
+        # markers never answered it, and the run ended 'planner_not_responding' at t = 0.
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, LATCHED_QOS)
         # Volatile subscription: matches a goal publisher of either durability.
         self.create_subscription(PoseStamped, TOPIC_GOAL, self._on_goal, STREAM_QOS)
-        self.create_subscription(Odometry, TOPIC_EGO_ODOM, self._on_odom, STREAM_QOS)
-        self.create_subscription(Odometry, TOPIC_OBJECTS_ODOM, self._on_odom, STREAM_QOS)
+        self.create_subscription(DiagnosticArray, TOPIC_TRAFFIC_LIGHTS, self._on_lights, STREAM_QOS)
         self.create_subscription(MarkerArray, TOPIC_OBJECTS_MARKERS, self._on_markers, STREAM_QOS)
-        self.create_subscription(DiagnosticArray, TOPIC_TRAFFIC_LIGHTS, self.assembler.add_lights, STREAM_QOS)
+        self.create_subscription(Odometry, TOPIC_OBJECTS_ODOM, self._on_odom, STREAM_QOS)
+        self.create_subscription(Odometry, TOPIC_EGO_ODOM, self._on_odom, STREAM_QOS)
+        self.pub = self.create_publisher(TwistStamped, TOPIC_COMMAND, STREAM_QOS)
         if self.faults.active():
             self.get_logger().warn(f"fault modes on: {', '.join(self.faults.active())}")
 
@@ -123,6 +128,11 @@ class PlannerNode(Node):
     def _on_odom(self, msg: Odometry) -> None:
         self._new_run_check(stamp_key(msg.header.stamp))
         self._handle(self.assembler.add_odometry(msg))
+
+    def _on_lights(self, msg: DiagnosticArray) -> None:
+        # Part of the step (ros_io.FrameAssembler): it may complete the frame, and it may be a new run's first.
+        self._new_run_check(stamp_key(msg.header.stamp))
+        self._handle(self.assembler.add_lights(msg))
 
     # --- stepping -----------------------------------------------------------------------------------------------
 

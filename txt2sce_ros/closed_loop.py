@@ -10,7 +10,7 @@ from __future__ import annotations
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -43,8 +43,12 @@ class RunRecord:
 
 def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, faults: tuple[str, ...] = (),
                     seed: int = 0, dt: float | None = None, time_limit: float | None = None,
-                    keep_trajectory: bool = False) -> tuple[RunRecord, dict[str, np.ndarray] | None]:
-    """Run one scenario file against the stand-in planner (with `faults` switched on) and judge it."""
+                    keep_trajectory: bool = False, on_frame: Callable[[Frame], None] | None = None,
+                    ) -> tuple[RunRecord, dict[str, np.ndarray] | None]:
+    """Run one scenario file against the stand-in planner (with `faults` switched on) and judge it.
+
+    `on_frame` gets every frame the oracle judges, in order: the frames a recording of the same run over ROS holds
+    (one per dt from t = 0, each once)."""
     from oracle_monitor import Oracle, OracleParams
     from scenario_player import Simulation, SimulationConfig, load_scenario
     from standin_planner import Faults, Planner, PlannerParams, friction_from_xosc
@@ -65,13 +69,23 @@ def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, fau
         planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults.from_names(faults),
                           road_friction=friction)
         oracle = Oracle(sim.network, sim.goal, OracleParams.from_config())
-        oracle.observe(frame)
+
+        def observe(f: Frame) -> None:
+            if on_frame is not None:
+                on_frame(f)
+            oracle.observe(f)
+
+        observe(frame)
         steps = 0
         while not sim.done:
             cmd = planner.step(frame)
-            frame = sim.step(cmd)
-            oracle.observe(frame)
-            steps += 1
+            nxt = sim.step(cmd)
+            # A stop trigger ends the run at the start of a step: the last frame comes again with the same time.
+            # The wire carries it once (receivers drop a repeated stamp), so the oracle sees it once here too.
+            if nxt.t > frame.t:
+                observe(nxt)
+                steps += 1
+            frame = nxt
         status: RunStatus = sim.status
         verdict = oracle.finish(status)
     except Txt2SceError as exc:

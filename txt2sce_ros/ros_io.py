@@ -244,26 +244,30 @@ def make_diagnostics(t: float, statuses: Iterable[tuple[str, int, str, Mapping[s
 
 
 class FrameAssembler:
-    """Collects one step's messages (markers, per-entity odometry, lights, ego odometry) and yields the Frame once
+    """Collects one step's messages (lights, per-entity odometry, markers, ego odometry) and yields the Frame once
     everything stamped with the same time has arrived, whatever the order DDS delivered them in.
 
     Used by the planner node (to answer step k), the monitor node and the offline judge, so all three see exactly
-    the frames the player produced. Lights are taken from the latest message at or before the frame's time.
+    the frames the player produced. The lights message is part of the step like the odometry: a player publishes
+    one per step (an empty array when the map has no signals), and frame k carries the lights stamped t_k. (Taking
+    the latest lights received instead gave the previous step's lights whenever an executor handled the step's
+    odometry first, which it does when the messages wait together: the planner then reacted to a signal change one
+    step late, nondeterministically, and the run could end a step later than in-process.)
     """
 
     def __init__(self, ego_name: str = EGO_NAME) -> None:
         self.ego_name = ego_name
         self._markers: dict[int, dict[str, dict[str, Any]]] = {}
         self._odom: dict[int, dict[str, Odometry]] = defaultdict(dict)
-        self._lights: tuple[TrafficLightState, ...] = ()
-        self._lights_key = -1
+        self._lights: dict[int, tuple[TrafficLightState, ...]] = {}
         self._done_up_to = -1
 
-    def add_lights(self, msg: DiagnosticArray) -> None:
+    def add_lights(self, msg: DiagnosticArray) -> Frame | None:
         key = stamp_key(msg.header.stamp)
-        if key >= self._lights_key:
-            self._lights_key = key
-            self._lights = diagnostics_to_lights(msg)
+        if key <= self._done_up_to:
+            return None
+        self._lights[key] = diagnostics_to_lights(msg)
+        return self._try(key)
 
     def add_markers(self, msg: MarkerArray) -> Frame | None:
         if not msg.markers:
@@ -284,7 +288,8 @@ class FrameAssembler:
     def _try(self, key: int) -> Frame | None:
         dims = self._markers.get(key)
         odom = self._odom.get(key)
-        if dims is None or odom is None or self.ego_name not in odom:
+        lights = self._lights.get(key)
+        if dims is None or odom is None or lights is None or self.ego_name not in odom:
             return None
         if any(name not in odom for name in dims):
             return None
@@ -292,14 +297,14 @@ class FrameAssembler:
         objects = tuple(odometry_to_entity(odom[n], dims[n]) for n in dims if n != self.ego_name)
         # Forget everything up to this step: late duplicates of older steps are ignored.
         self._done_up_to = key
-        for k in [k for k in self._markers if k <= key]:
-            del self._markers[k]
-        for k in [k for k in self._odom if k <= key]:
-            del self._odom[k]
-        return Frame(t=ego.t, ego=ego, objects=objects, lights=self._lights)
+        for store in (self._markers, self._odom, self._lights):
+            for k in [k for k in store if k <= key]:
+                del store[k]
+        return Frame(t=ego.t, ego=ego, objects=objects, lights=lights)
 
     def reset(self) -> None:
         """Forget everything (a new scenario starts at t = 0 again)."""
         self._markers.clear()
         self._odom.clear()
-        self._lights, self._lights_key, self._done_up_to = (), -1, -1
+        self._lights.clear()
+        self._done_up_to = -1

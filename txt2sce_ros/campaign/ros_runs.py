@@ -1,63 +1,144 @@
 """One campaign run over the ROS 2 node graph (`--ros`): player, planner and monitor as separate processes.
 
-The graph runs in a ROS domain of its own (derived from the worker's pid, so parallel workers never hear each
-other), the monitor records the run to a bag, and the verdict stored is the *offline judge's* verdict of that bag:
-the same `JudgeSession` the live monitor runs, so what the campaign stores can be re-derived from the recording.
-A graph that records nothing (bring-up failed, planner never answered) is an *error*, never a failure.
+The graph runs in a ROS domain of its own (one no other `run_over_ros` on this machine holds at the same time: a
+lock file per domain id, so parallel workers never hear each other), the monitor records the run to a bag, and the
+verdict stored is the *offline judge's* verdict of that bag: the same `JudgeSession` the live monitor runs, so what
+the campaign stores can be re-derived from the recording.
+
+A verdict must be the one the in-process path gives (issue 9), so a graph fault never yields a verdict:
+- the graph recorded no bag, or not exactly one run (another graph on the same domain);
+- the recording lacks frames of the run: a run has one frame per dt from t = 0 to its end, each once, and a
+  monitor that matched late misses the first ones (a verdict on part of a run can lose or gain categories);
+- the run broke on wall-clock timing (`planner_not_responding`, `wall_clock_limit`), which in-process runs never do.
+Such a run is run again (lock-step runs are deterministic, so a rerun is the run the graph should have given), up
+to `attempts` times; if every attempt faults, the record is an *error* saying why, never a failure.
 """
 
 from __future__ import annotations
 
+import fcntl
 import os
 import shutil
 import tempfile
 import time
+from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
+from typing import Iterator
 
 from ..closed_loop import RunRecord
+from ..config import load_config
 from ..contract import Verdict
+
+#: Attempts per run before a graph fault is stored as an error.
+ATTEMPTS = 3
+
+#: End reasons that are the graph's timing, not the scenario's (an in-process run never ends on them).
+GRAPH_END_REASONS = frozenset({"planner_not_responding", "wall_clock_limit"})
+
+#: ROS domain ids handed out (Fast DDS maps domains to UDP ports; ids above ~101 overflow the range on Linux).
+DOMAIN_IDS = range(1, 101)
+
+
+def expected_frames(t_end: float, dt: float | None = None) -> int:
+    """Frames of a whole run that ended at `t_end`: t = 0, dt, ..., t_end (the player's step, config/player.yaml)."""
+    if dt is None:
+        dt = float(load_config("player").get("simulation", {}).get("dt", 0.05))
+    return int(round(t_end / dt)) + 1
+
+
+@contextmanager
+def reserved_domain(tag: str) -> Iterator[int]:
+    """A ROS domain id no other holder on this machine has while the block runs (an exclusive lock file per id in
+    the temp directory), starting the search at the id `tag` hashes to. Two graphs on one domain hear each other:
+    a planner answering another player's frames, a monitor recording two runs."""
+    from ..ros_env import pick_domain_id
+
+    lock_dir = Path(tempfile.gettempdir()) / "txt2sce_ros_domains"
+    lock_dir.mkdir(exist_ok=True)
+    first = pick_domain_id(tag)
+    ids = [d for d in DOMAIN_IDS if d >= first] + [d for d in DOMAIN_IDS if d < first]
+    while True:
+        for domain in ids:
+            fh = open(lock_dir / f"{domain}.lock", "a+")
+            try:
+                fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                fh.close()
+                continue
+            try:
+                yield domain
+            finally:
+                fcntl.flock(fh, fcntl.LOCK_UN)
+                fh.close()
+            return
+        time.sleep(0.5)                 # every id taken (100 graphs at once): wait for one to finish
 
 
 def run_over_ros(scenario: str | Path, *, scenario_id: str | None = None, faults: tuple[str, ...] = (),
-                 keep_bag: str | Path | None = None, run_timeout: float = 120.0) -> RunRecord:
-    """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline.
+                 keep_bag: str | Path | None = None, run_timeout: float = 120.0,
+                 attempts: int = ATTEMPTS) -> RunRecord:
+    """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline; a graph fault
+    (module docstring) runs it again, up to `attempts` times. `details['ros_attempts']` says how many it took.
 
     `keep_bag`: copy the recording there (otherwise it is deleted with the temporary directory)."""
+    sid = scenario_id or Path(scenario).stem
+    t0 = time.perf_counter()
+    faults_seen: list[str] = []
+    record = RunRecord(sid, Verdict.ERROR, error="no attempt made")
+    for attempt in range(1, max(1, attempts) + 1):
+        record, fault = _attempt(scenario, sid, faults, keep_bag, run_timeout)
+        if not fault:
+            break
+        faults_seen.append(fault)
+    details = {**record.details, "ros_attempts": attempt}
+    if faults_seen:
+        details["ros_graph_faults"] = faults_seen
+    return replace(record, details=details, wall_time=time.perf_counter() - t0)
+
+
+def _attempt(scenario: str | Path, sid: str, faults: tuple[str, ...], keep_bag: str | Path | None,
+             run_timeout: float) -> tuple[RunRecord, str]:
+    """One graph run: (record, why it is a graph fault, '' when it is not)."""
     from oracle_monitor.judge import judge_bag
 
     from ..errors import Txt2SceError
     from ..launcher import GraphConfig, run_graph
-    from ..ros_env import pick_domain_id
 
-    sid = scenario_id or Path(scenario).stem
-    t0 = time.perf_counter()
     work = Path(tempfile.mkdtemp(prefix="txt2sce_ros_run_"))
     try:
         bag_dir = work / "bags"
-        cfg = GraphConfig(scenarios=[str(scenario)], bag_dir=str(bag_dir), faults=list(faults),
-                          run_timeout=run_timeout, log_dir=str(work / "log"),
-                          # one graph per worker process at a time: the pid keeps concurrent workers apart
-                          domain_id=pick_domain_id(f"campaign:{os.getpid()}:{work.name}"))
-        codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
+        with reserved_domain(f"campaign:{os.getpid()}:{work.name}") as domain:
+            cfg = GraphConfig(scenarios=[str(scenario)], bag_dir=str(bag_dir), faults=list(faults),
+                              run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain)
+            codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
         bags = sorted(p for p in bag_dir.rglob("metadata.yaml")) if bag_dir.exists() else []
         if not bags:
-            return RunRecord(sid, Verdict.ERROR, error=f"the graph recorded no bag (exit codes {codes})",
-                             wall_time=time.perf_counter() - t0)
+            why = f"the graph recorded no bag (exit codes {codes})"
+            return RunRecord(sid, Verdict.ERROR, error=why), why
         verdicts = []
         for meta in bags:
             try:
                 verdicts += judge_bag(meta.parent).verdicts
             except Txt2SceError as exc:
-                return RunRecord(sid, Verdict.ERROR, error=f"bag not judgeable: {exc}",
-                                 wall_time=time.perf_counter() - t0)
+                why = f"bag not judgeable: {exc}"
+                return RunRecord(sid, Verdict.ERROR, error=why), why
         if keep_bag is not None:
             shutil.copytree(bags[0].parent, Path(keep_bag), dirs_exist_ok=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if len(verdicts) != 1:
-        return RunRecord(sid, Verdict.ERROR, error=f"expected one judged run in the bag, found {len(verdicts)}",
-                         wall_time=time.perf_counter() - t0)
+        why = f"expected one judged run in the bag, found {len(verdicts)}"
+        return RunRecord(sid, Verdict.ERROR, error=why), why
     v = verdicts[0]
+    # steps = frames after the first, as the in-process run counts them
+    common = dict(end_reason=v.end_reason, sim_time=v.t_end, steps=max(0, v.frames - 1), details=v.to_dict())
+    if v.end_reason in GRAPH_END_REASONS:
+        return RunRecord(sid, Verdict.ERROR, error=v.error or v.end_reason, **common), f"run broke: {v.end_reason}"
+    want = expected_frames(v.t_end)
+    if Verdict(v.verdict) is not Verdict.ERROR and v.frames != want:
+        why = f"recording incomplete: {v.frames} of {want} frames judged"
+        return RunRecord(sid, Verdict.ERROR, error=f"{why} (its verdict would have been {Verdict(v.verdict).value} "
+                                                   f"{list(v.category_names())})", **common), why
     return RunRecord(scenario_id=sid, verdict=Verdict(v.verdict), categories=tuple(v.category_names()),
-                     end_reason=v.end_reason, sim_time=v.t_end, wall_time=time.perf_counter() - t0,
-                     steps=v.frames, details=v.to_dict(), error=v.error)
+                     error=v.error, **common), ""
