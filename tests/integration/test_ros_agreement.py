@@ -95,6 +95,6 @@ def test_dev_gold_seeds_get_the_same_verdict_both_ways(seeds: list[Path]) -> Non
         assert over_ros.verdict.value != "error", f"{f.name}: {over_ros.error}"
         results[f.stem] = (over_ros.verdict, over_ros.categories, over_ros.end_reason, over_ros.sim_time)
         assert results[f.stem] == (rec.verdict, rec.categories, rec.end_reason, rec.sim_time), f.name
-    # The sample covers what the bench disagreed on and the ends a run can have.
-    assert any(set(r[1]) == {"PlanFail", "Smooth"} for r in results.values()), results
-    assert {r[2] for r in results.values()} >= {"stop_trigger", "collision", "goal_reached"}, results
+    # Not a trivial sample: failures with categories, and runs ending in different ways (today: PlanFail + Smooth
+    # at the stop trigger, a collision, Smooth at the goal; seeds change as the seed writer evolves).
+    assert any(r[1] for r in results.values()) and len({r[2] for r in results.values()}) >= 2, results
