@@ -34,13 +34,10 @@ ALLOWED: dict[tuple[str, str], tuple[str, str | None]] = {
     # reported lane is the one they cross
     ("dmvca-cruise-20190807-r58", "npc1"): ("R5", "right"),
     ("dmvca-cruise-20230617-r484", "npc1"): ("R5", "right"),
-    # side-swipes without a reported lane change: the whole path runs 0.3 m into the AV's box width, 0.9-1.5 m
-    # off the AV's centreline, which derived_position (1.8 m lane half-width) reads as the AV's lane
-    ("dmvca-cruise-20230814-r511", "npc1"): ("R7", "same"),
+    # a side-swipe without a reported lane change by a car that stands until it reverses 3.5 s in: too late to
+    # drift toward the AV before the conflict (the moving ones do), so its whole path runs 0.3 m into the AV's box
+    # width, 1.5 m off the AV's centreline, which derived_position (1.8 m lane half-width) reads as the AV's lane
     ("dmvca-waymo-20211219-r262", "npc1"): ("R5", "same"),
-    ("dmvca-waymo-20230729-r504", "npc1"): ("R6", "same"),
-    ("nhtsa-sgo-ads-30270-10449-v1", "npc1"): ("R6", "same"),
-    ("nhtsa-sgo-ads-30270-9212-v1", "npc1"): ("R6", "same"),
     # R2 (opposite approach, facing the AV) reads as R7 while within 12 m of the AV's lane: derived_position has
     # no notion of the junction, and the bundled maps' opposite approaches lie 10.5 m across
     ("dmvca-waymo-20210712-r196", "npc1"): ("R7", "left"),

@@ -33,7 +33,7 @@ from .actor import Actor, center_x, predicted_gap
 from .constraints import first_turn
 from .defaults import SeedDefaults
 from .events import EGO_ROUTE_PLACEHOLDER, TURN_CODES, EventRealiser
-from .kinematics import box_corners, boxes_gap, lateral_profile, speed_profile, time_to_reach
+from .kinematics import LateralStep, box_corners, boxes_gap, lateral_profile, speed_profile, time_to_reach
 from .lanes import CURB, case1_lane, ego_lane, party_lane
 from .linetrack import LineTrack, perpendicular
 from .model import EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, RouteAct, SpeedAct, TrajectoryAct, Trigger
@@ -300,8 +300,9 @@ class Planner:
             return (f"the AV drives {travel:.0f} m to where the party pulls in behind it: the party waits beside "
                     "the road ahead of the AV's start and pulls in once the AV has passed")
         if got[0] == p.position and any(n.startswith("lateral offset") for n in actor.notes):
-            return ("no lane change is reported, so its whole path runs beside the AV's box for the reported "
-                    "contact, within a lane half-width of the AV's centreline")
+            return ("no lane change is reported and its first move comes too late to drift toward the AV, so its "
+                    "whole path runs beside the AV's box for the reported contact, within a lane half-width of the "
+                    "AV's centreline")
         if p.position == "R2" and got[0] == "R7":
             return "an oncoming party on the approach facing the AV reads as R7 while within a road's width of its lane"
         if isinstance(actor.track, Track) and self.net.roads[actor.track.lane_at(actor.d0).road_id].in_junction:
@@ -754,8 +755,31 @@ class Planner:
             desired = math.copysign(ego.width / 2 + actor.width / 2 - 0.3, rel)   # 0.3 m of overlap: they touch
             if abs(rel) > abs(desired):
                 same_dir = math.cos(p_pose.h - e_pose.h) >= 0.0
-                actor.lat0 += (desired - rel) * (1.0 if same_dir else -1.0)
-                actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+                delta = (desired - rel) * (1.0 if same_dir else -1.0)
+                if not self._drift(actor, delta, T):
+                    actor.lat0 += delta
+                    actor.notes.append(f"lateral offset {actor.lat0:.2f} m toward the AV (reported contact)")
+
+    def _drift(self, actor: Actor, delta: float, T: float) -> bool:
+        """Let the party start in its own lane and drift `delta` m toward the AV (a LaneOffsetAction beside its first
+        event's action, sinusoidal at the configured lateral acceleration), done before the meeting at T: its start
+        then reads as the lane the report gives. False (nothing changed) when the first event comes too late, or the
+        party already has a lane offset of its own."""
+        if not isinstance(actor.track, Track) or not actor.events or \
+                any(isinstance(a, LaneOffsetAct) for ev in actor.events for a in ev.actions):
+            return False
+        acc = self.D.lane_offset_max_lat_acc
+        # the player's sinusoidal offset takes pi * sqrt(|delta| / (2 a_lat)) s at peak lateral acceleration a_lat
+        dur = math.pi * math.sqrt(abs(delta) / (2.0 * acc))
+        first = actor.events[0]
+        if first.planned_time + dur > T - 0.5:
+            return False
+        target = actor.lat0 + delta
+        act = LaneOffsetAct(round(self.ev.offset_t(actor, target), 3), acc)
+        actor.events[0] = EventPlan(first.name, first.code, first.actions + (act,), first.trigger, first.planned_time)
+        actor.lat_steps.append(LateralStep(first.planned_time, delta, round(dur, 2)))
+        actor.notes.append(f"drifts {delta:+.2f} m toward the AV from its lane over {dur:.1f} s (reported contact)")
+        return True
 
     def _keep_reported_side(self, p: Party, actor: Actor) -> None:
         """A party reported behind (R6) or ahead of (R5) the AV that did not touch it starts there, clear of it:
