@@ -50,11 +50,15 @@ from .session import JudgeSession
 from .topics import TOPIC_TYPES
 
 SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-STREAM_QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE)
+#: Deep: the monitor is outside the lock-step loop, and on a loaded machine it falls behind by hundreds of steps
+#: (one odometry per entity per step); a keep-last history that overflows drops frames from the middle of a run.
+STREAM_QOS = QoSProfile(depth=5000, reliability=ReliabilityPolicy.RELIABLE)
+VIOLATIONS_QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE)
 
-#: Shutdown drain: stop taking messages once none came for this long (s), or after this long in all (s).
+#: Shutdown drain: stop taking messages once none came for this long (s), or after this long in all (s) — below
+#: the launcher's 10 s grace before it escalates to SIGTERM.
 DRAIN_IDLE = 0.3
-DRAIN_LIMIT = 5.0
+DRAIN_LIMIT = 8.0
 
 
 class OracleMonitorNode(Node):
@@ -75,7 +79,7 @@ class OracleMonitorNode(Node):
         self.recorder: BagRecorder | None = None
         self.verdict_count = 0
         self.received = 0                 # messages taken (the shutdown drain watches it)
-        self.pub = self.create_publisher(DiagnosticArray, c.TOPIC_VIOLATIONS, STREAM_QOS)
+        self.pub = self.create_publisher(DiagnosticArray, c.TOPIC_VIOLATIONS, VIOLATIONS_QOS)
         # The ego topic last: endpoints are announced in creation order, so a player that sees this node on the
         # ego topic (its `await_subscribers`) knows all its other subscriptions, and waits until they matched.
         for topic in sorted(c.CONTRACT_TOPICS, key=lambda t: t == c.TOPIC_EGO_ODOM):
