@@ -313,12 +313,18 @@ def _time_to_cover(d: float, v: float, v_max: float, a: float) -> float:
 
 def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, line: RefLine,
                        lp: LongitudinalParams, bp: BehaviourParams, sp: StopPlan, emergency_decel: float, *,
-                       misread_yellow: bool) -> list[Constraint]:
+                       misread_yellow: bool, yellow_stops: set[str] | None = None) -> list[Constraint]:
+    """Stops for red and yellow lights on the route. `yellow_stops` (the planner's memory, updated here) holds the
+    lights the ego decided to stop for at yellow onset: that decision is kept through the yellow (re-deciding
+    while braking gently finds the stop "no longer comfortable", gives up and meets the red)."""
     out: list[Constraint] = []
+    memory = yellow_stops if yellow_stops is not None else set()
     for light in lights:
         state = light.state
         if misread_yellow and state is SignalState.YELLOW:
             state = SignalState.GREEN                    # fault red_light_misread
+        if state is not SignalState.YELLOW:
+            memory.discard(light.id)
         if state not in (SignalState.RED, SignalState.YELLOW):
             continue
         lane_known = bool(light.road_id and light.lane_ids and line.lanes)
@@ -338,8 +344,12 @@ def signal_constraints(lights: tuple[TrafficLightState, ...], ego: EgoOnPath, li
         need = ego.speed * ego.speed / (2.0 * d_stop)
         # Yellow: stop only if the stop is comfortable, counting the jerk-limited build-up of braking.
         need_planned = ego.speed * ego.speed / (2.0 * max(d_stop - min(sp.lag, 0.5 * d_stop), 0.01))
-        if state is SignalState.YELLOW and need_planned > bp.yellow_clear_decel:
-            continue                                     # cannot stop comfortably: clear the junction
+        if state is SignalState.YELLOW and light.id not in memory:
+            if need_planned > bp.yellow_clear_decel:
+                continue                                 # cannot stop comfortably: clear the junction
+            memory.add(light.id)
+        if state is SignalState.YELLOW and need > emergency_decel:
+            continue                                     # committed, but cannot stop at all any more: clear it
         if state is SignalState.RED and need > emergency_decel:
             continue                                     # cannot stop before the line at all: clear it
         out.append(stop_constraint(Reason.RED if state is SignalState.RED else Reason.YELLOW, dist, ego, lp, sp,

@@ -76,6 +76,7 @@ class Planner:
         self._accel = 0.0
         self._offset = 0.0
         self._last_t: float | None = None
+        self._yellow_stops: set[str] = set()       # lights it decided to stop for at yellow onset
 
     # --- public -------------------------------------------------------------------------------------------------
 
@@ -152,7 +153,7 @@ class Planner:
             out.append(lead)
         out += yield_constraints(measured, me, line, lp, bp, sp, v0)
         out += signal_constraints(frame.lights, me, line, lp, bp, sp, br.max_decel,
-                                  misread_yellow=self.faults.red_light_misread)
+                                  misread_yellow=self.faults.red_light_misread, yellow_stops=self._yellow_stops)
         goal_d = self.route.goal_s + bp.goal_overshoot - me.s
         out.append(Constraint(Reason.GOAL, stop_accel(v, goal_d, lp, plan_decel=br.goal_decel, cruise=sp.cruise,
                                                       lag=sp.lag, braking=sp.braking, hold=False), "goal", goal_d))

@@ -254,3 +254,20 @@ def test_red_light_marked_on_a_neighbour_lane_it_governs_still_stops_the_ego():
     q = planner()
     q.step(frame(0.0, ego, lights=(unknown,)))
     assert Reason.RED not in reasons(q)
+
+
+def test_a_stop_decided_at_yellow_onset_is_kept_through_the_yellow():
+    # Yellow appears 60 m out: a comfortable stop, so the planner stops. Later in the same yellow the remaining stop
+    # is no longer "comfortable" (it braked gently, the line came closer): it must not change its mind and run into
+    # the red; a planner that first sees the yellow that close clears the junction instead.
+    yellow = (light_on_lane(N, "2", -1, STOP_LINE_S, SignalState.YELLOW),)
+    far = on_lane(N, "ego", "2", -1, STOP_LINE_S - 60.0, speed=10.0)
+    near = on_lane(N, "ego", "2", -1, STOP_LINE_S - 19.0, speed=10.0, t=0.05)
+    p = planner()
+    p.step(frame(0.0, far, lights=yellow))
+    assert Reason.YELLOW in reasons(p)
+    p.step(frame(0.05, near, lights=yellow))
+    assert Reason.YELLOW in reasons(p)
+    fresh = planner()
+    fresh.step(frame(0.05, near, lights=yellow))
+    assert Reason.YELLOW not in reasons(fresh)
