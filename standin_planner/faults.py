@@ -14,8 +14,8 @@ against known ground truth. What each should trigger (the oracle category in bra
   or behind (even when the path is clear) -> the ego never moves [StartFail] (paper: 91.5 % of start failures had
   an NPC placed in front of or behind Autoware).
 - `stale_tracking`: object states reach the planner `stale_tracking_delay` seconds late and are predicted to the
-  present at constant velocity, so a lead that brakes or cuts in is seen late (still where it would have been)
-  -> rear-end collisions [Collisions].
+  present at constant velocity, so a lead that brakes, or a party that cuts in or starts to cross the ego's path,
+  is seen late (still where it would have been) -> rear-end collisions, or hitting the crossing party [Collisions].
 - `aggressive_start`: from standstill, commands high throttle (`aggressive_start_accel`) with a large steering yaw
   rate; the player models wheel slip when the traction demand exceeds friction·g -> on low friction (below ~0.71)
   the ego spins its wheels and does not move [StartFail]; on dry roads it starts with a jolt [Smooth].

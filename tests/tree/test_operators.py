@@ -255,3 +255,25 @@ def test_obstacle_block_dm_and_relocation(cfg):
     for v in vs:
         assert v.operator == "DM+OIM"
         assert _valid_with(d, block, v) == []
+
+
+def test_one_weather_classifier_reads_every_wm_variant_back(cfg):
+    # The tree's features and the analysis's `weather:` elements share tree.environment.weather_type: every
+    # weather the WM operator writes is read back as its own type, and the analysis labels it the same way.
+    from lxml import etree
+
+    from txt2sce_ros.analysis.features import WEATHER_LABELS, weather_label
+    from txt2sce_ros.tree.environment import weather_type
+
+    for seed in range(4):
+        _, _, vs, _ = _variants(JUNCTION, cfg, "environment", seed=seed)
+        for v in vs:
+            env = parse_fragment(v.fragments[0])
+            assert weather_type(env) == v.features[1]
+            wrapped = etree.fromstring("<Init><EnvironmentAction/></Init>")
+            wrapped[0].append(env)
+            assert weather_label(wrapped) == WEATHER_LABELS[v.features[1]]
+    # fog is visibility under 1 km on a dry road; a rain type with zero intensity is dry
+    dry_fog = etree.fromstring('<Environment><Weather cloudState="free"><Fog visualRange="600"/>'
+                               '<Precipitation precipitationType="rain" intensity="0"/></Weather></Environment>')
+    assert weather_type(dry_fog) == "foggy"

@@ -41,28 +41,18 @@ def _props(obj: etree._Element) -> dict[str, str]:
     return {p.get("name", ""): p.get("value", "") for p in obj.iter("Property")}
 
 
+#: The analysis's names for the WM weather types (tree.environment.weather_type, the one classifier).
+WEATHER_LABELS = {"sunny": "clear", "cloudy": "cloudy", "rainy": "rain", "snowy": "snow", "foggy": "fog"}
+
+
 def weather_label(root: etree._Element) -> str:
-    """clear / cloudy / rain / snow / fog, from the Init environment (the weather block)."""
+    """clear / cloudy / rain / snow / fog from the Init environment (the weather block); 'default' without one."""
+    from ..tree.environment import weather_type
+
     env = root.find(".//EnvironmentAction/Environment")
     if env is None:
         return "default"
-    w = env.find("Weather")
-    if w is None:
-        return "default"
-    precip = w.find("Precipitation")
-    kind = ""
-    if precip is not None:
-        kind = precip.get("precipitationType", "dry")
-        intensity = float(precip.get("intensity", precip.get("precipitationIntensity", "0")) or 0)
-        if kind in ("rain", "snow") and intensity > 0:
-            return kind
-    fog = w.find("Fog")
-    if fog is not None and float(fog.get("visualRange", "100000") or 100000) < 1000:
-        return "fog"
-    cloud = w.get("cloudState", w.get("fractionalCloudCover", ""))
-    if cloud in ("cloudy", "overcast", "rainy") or cloud.startswith("oktas") and cloud not in ("oktas0", "oktas1"):
-        return "cloudy"
-    return "clear"
+    return WEATHER_LABELS[weather_type(env)]
 
 
 def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:

@@ -32,8 +32,10 @@ FAULTS: tuple[FaultSpec, ...] = (
               "braking distance ignores road friction"),
     FaultSpec("no_start_when_close", "StartFail", ("near_start:yes", "position:R5/same", "position:R6/same"),
               "refuses to start with a party within a few metres ahead or behind"),
-    FaultSpec("stale_tracking", "Collisions", ("position:R5", "events:ah", "events:ac", "events:h", "events:c"),
-              "object states delayed: a braking lead vehicle is seen late"),
+    FaultSpec("stale_tracking", "Collisions", ("position:R5", "events:ah", "events:ac", "events:h", "events:c",
+                                              "events:m", "events:f", "events:g"),
+              "object states delayed: a lead that brakes, or a party that cuts in or crosses into the path, is "
+              "seen late"),
     FaultSpec("aggressive_start", "StartFail", ("weather:rain", "weather:fog", "weather:snow"),
               "high throttle and steering at start slip on low friction"),
     FaultSpec("red_light_misread", "Misinterp", ("signal:yellow",),

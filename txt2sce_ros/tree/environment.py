@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, fields
 from functools import lru_cache
 from typing import Any
@@ -39,23 +41,40 @@ def wm(env: etree._Element, weather: str, rng: np.random.Generator, cfg: dict[st
     rec.set(road, "frictionScaleFactor", uniform(rng, *spec["friction"]), digits=3)
 
 
+#: Visibility below which a dry scene is fog (m): the meteorological definition of fog (WMO: under 1 km).
+FOG_VISIBILITY = 1000.0
+
+
 def weather_type(env: etree._Element | None) -> str:
-    """The seed's weather as one of the WM types (for Table V's abstract representations)."""
+    """The one weather classifier of the project: an `Environment` as one of the WM types (sunny, cloudy, rainy,
+    snowy, foggy). Precipitation first (rain or snow with a non-zero intensity, 1.0 `intensity` or 1.2
+    `precipitationIntensity`), then fog by visibility, then cloud (1.0 `cloudState` or 1.2 `fractionalCloudCover`
+    above 1 okta). The tree's features and the analysis's `weather:` elements both read it."""
     if env is None:
         return "sunny"
     w = env.find("Weather")
     if w is None:
         return "sunny"
     prec = w.find("Precipitation")
+    if prec is not None:
+        ptype = prec.get("precipitationType", "dry")
+        raw = prec.get("intensity", prec.get("precipitationIntensity"))
+        if ptype in ("rain", "snow") and (raw is None or _number(raw) > 0.0):
+            return "rainy" if ptype == "rain" else "snowy"
     fog = w.find("Fog")
-    ptype = prec.get("precipitationType", "dry") if prec is not None else "dry"
-    if ptype == "rain":
-        return "rainy"
-    if ptype == "snow":
-        return "snowy"
-    if fog is not None and float(fog.get("visualRange", "1e9")) < 200:
+    if fog is not None and _number(fog.get("visualRange"), math.inf) < FOG_VISIBILITY:
         return "foggy"
-    return "cloudy" if w.get("cloudState") in ("cloudy", "overcast", "rainy") else "sunny"
+    cloud = w.get("cloudState", w.get("fractionalCloudCover", ""))
+    if cloud in ("cloudy", "overcast", "rainy") or (cloud.startswith("oktas") and cloud not in ("oktas0", "oktas1")):
+        return "cloudy"
+    return "sunny"
+
+
+def _number(text: str | None, default: float = 0.0) -> float:
+    try:
+        return float(text) if text is not None else default
+    except ValueError:
+        return default
 
 
 def signal_state_name(state: str) -> str:
