@@ -22,7 +22,8 @@ def generate_launch_description() -> LaunchDescription:
         Node(package="txt2sce_ros", executable="planner_node", name="standin_planner",
              condition=LaunchConfigurationEquals("planner", "standin")),
         Node(package="txt2sce_ros", executable="scenario_player_node", name="scenario_player",
-             parameters=[{"lock_step": True}]),
+             # frames are volatile: a run starts only once the monitor listens (else its verdict misses frames)
+             parameters=[{"lock_step": True, "await_subscribers": ["oracle_monitor"]}]),
         Node(package="txt2sce_ros", executable="generator_node", name="txt2sce_generator",
              parameters=[{"scenarios": [scenarios]}]),
     ])

@@ -78,6 +78,8 @@ def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
         cmds["planner"] = node_command("planner_node", {"faults": cfg.faults or [""]})
     cmds["player"] = node_command("scenario_player_node", {
         "lock_step": cfg.lock_step, "planner_timeout": cfg.planner_timeout, "run_timeout": cfg.run_timeout,
+        # frames are volatile: a run starts only once the monitor listens, or its verdict misses the first frames
+        "await_subscribers": ["oracle_monitor"],
     })
     cmds["generator"] = node_command("generator_node", {"scenarios": cfg.scenarios, "wait_for_result": True})
     return cmds
