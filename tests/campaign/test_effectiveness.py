@@ -54,3 +54,14 @@ def test_study_shares_nominal_runs_and_writes_the_table(seed_dir: Path, tmp_path
     assert all(f in table for f in faults)
     # resumed: nothing reruns, the same rows come back
     assert run_study([seed_dir], cfg) == rows
+
+
+def test_a_combined_element_names_the_triggers_of_its_parts() -> None:
+    from txt2sce_ros.campaign.effectiveness import names_trigger
+
+    stale = next(f for f in FAULTS if f.name == "stale_tracking")
+    assert names_trigger("R5+m", stale.triggers) and names_trigger("R6+ah", stale.triggers)   # events:ah
+    assert names_trigger("position:R5/same", stale.triggers)
+    assert not names_trigger("R2+a", stale.triggers) and not names_trigger("weather:rain", stale.triggers)
+    cyclists = next(f for f in FAULTS if f.name == "ignore_cyclists")
+    assert not names_trigger("R5+m", cyclists.triggers)

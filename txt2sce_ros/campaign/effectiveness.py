@@ -55,6 +55,16 @@ class EffectivenessRow:
     right_rank: int | None          # rank of the first right trigger in the differential lift ranking
 
 
+def names_trigger(element: str, triggers: Sequence[str]) -> bool:
+    """Whether a lift element names one of the fault's triggers. A combined element `R5+m` (a party at R5 doing
+    m) names what its parts `position:R5` and `events:m` name."""
+    parts = [element]
+    head, plus, codes = element.partition("+")
+    if plus and head.startswith("R") and ":" not in head:
+        parts += [f"position:{head}", f"events:{codes}"]
+    return any(t in p for p in parts for t in triggers)
+
+
 def assess(spec: FaultSpec, nominal: Mapping[str, frozenset[str]], faulty: Mapping[str, frozenset[str]],
            elements: Mapping[str, frozenset[str]], *, min_support: int = 2) -> tuple[EffectivenessRow, list[LiftRow]]:
     """`nominal`/`faulty`: scenario id -> categories shown; `elements`: scenario id -> its scenario elements."""
@@ -64,7 +74,7 @@ def assess(spec: FaultSpec, nominal: Mapping[str, frozenset[str]], faulty: Mappi
     diff = {i for i in ids if spec.category in faulty[i] and spec.category not in nominal[i]}
     runs = [(elements[i], frozenset({spec.category}) if i in diff else frozenset()) for i in ids]
     rows = lift_table(runs, min_support=min_support).get(spec.category, [])
-    rank = next((k for k, r in enumerate(rows, 1) if any(t in r.element for t in spec.triggers)), None)
+    rank = next((k for k, r in enumerate(rows, 1) if names_trigger(r.element, spec.triggers)), None)
     top = f"{rows[0].element} ({rows[0].lift:.2f}×)" if rows else "–"
     return EffectivenessRow(spec.name, spec.category, bool(diff), with_fault, without, len(diff), top, rank), rows
 
@@ -83,8 +93,8 @@ def format_table(rows: Sequence[EffectivenessRow]) -> str:
 @dataclass
 class StudyConfig:
     out: Path
-    seeds: int = 6                  # seeds grown into trees (picked to cover the most scenario elements)
-    nodes: int = 40                 # node budget per tree (every block kind still gets its variants)
+    seeds: int = 10                 # seeds grown into trees (picked to cover the most scenario elements)
+    nodes: int = 150                # node budget per tree (every enumerated value still gets its nodes)
     mutations: int = 1              # per non-enumerated block; weather, signal and NPC category are enumerated
     time_limit: float | None = 25.0
     executor: str = "pool"

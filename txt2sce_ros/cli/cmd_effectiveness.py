@@ -15,9 +15,11 @@ def register(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("inputs", nargs="+", help="reports (.jsonl/.txt/.pdf), a sketch JSONL or a seed directory")
     parser.add_argument("--out", required=True, help="study directory (rerun the same command to resume)")
-    parser.add_argument("--seeds", type=int, default=6, help="seeds grown into trees, picked to cover the most "
-                                                             "scenario elements (default 6)")
-    parser.add_argument("--nodes", type=int, default=40, help="node budget per tree (default 40)")
+    parser.add_argument("--seeds", type=int, default=10, help="seeds grown into trees, picked to cover the most "
+                                                              "scenario elements (default 10)")
+    parser.add_argument("--nodes", type=int, default=150,
+                        help="node budget per tree (default 150: a yellow light needs its dilemma-zone variants "
+                             "under several parents; with 40 the study misses red_light_misread)")
     parser.add_argument("--mutations", type=int, default=1,
                         help="mutations per non-enumerated block (default 1; weather, signal and NPC category "
                              "are enumerated)")
