@@ -107,3 +107,17 @@ def test_tls_sets_the_signal_facing_the_av(seeds):
             assert states[mine] == v.features[1]          # the 'ego' feature is the AV's light
         checked += 1
     assert checked >= 3
+
+
+def test_moved_starts_never_land_on_a_party_beside_them(seeds, tmp_path):
+    # r262: a standing car in the next lane is written offset toward the AV's lane (a side swipe); an ego start
+    # moved ahead by WPM-init used to land on it (60 of 115 nodes were invalid scenarios: overlap at t = 0).
+    from txt2sce_ros.closed_loop import run_closed_loop
+
+    seed = next(s for s in seeds if s.stem == "dmvca-waymo-20211219-r262")
+    res = build_trees([seed], tmp_path, seed=0, cfg=tree_config(max_nodes=150, validate=False), jobs=1)[0]
+    nodes = sorted((res.out_dir / "nodes").glob("*.xosc"))
+    assert len(nodes) > 50
+    for node in nodes:
+        record, _ = run_closed_loop(node, time_limit=0.2)
+        assert record.verdict.value != "error", (node.name, record.to_dict()["details"].get("error"))

@@ -7,6 +7,8 @@ reach (its route waypoints and the ReachPosition triggers it fires), so the scen
 
 from __future__ import annotations
 
+import math
+
 from typing import Any
 
 import numpy as np
@@ -71,11 +73,43 @@ def feasible_s(ctx: SeedContext, entity: str, start: LanePos, new_s: float, marg
         before, after = start.s - pos.s, new_s - pos.s
         if before * after <= 0 or abs(after) < min_gap:
             return False
+    if not _clear_of_neighbours(ctx, entity, start, new_s, min_gap):
+        return False
     for target in ctx.must_reach.get(entity, []):
         if target.road != start.road:
             continue
         ahead_before = sign * (target.s - start.s)
         if ahead_before >= 0 and sign * (target.s - new_s) < min(margin, ahead_before):
+            return False
+    return True
+
+
+#: m: parties in other lanes whose centres are laterally closer than this to a moved start count as beside it
+#: (two car half-widths and a margin: a party offset toward the lane line, as a side-swipe seed writes it).
+BESIDE = 2.5
+
+
+def _clear_of_neighbours(ctx: SeedContext, entity: str, start: LanePos, new_s: float, min_gap: float) -> bool:
+    """No party starting in another lane sits beside the moved start: within BESIDE m across and `min_gap` m
+    along (in the moved start's frame). A shift must not push one start onto another (an overlap at t = 0 is an
+    invalid scenario, not a test)."""
+    net = ctx.network
+    if net is None:
+        return True
+    try:
+        x, y, h = net.lane_to_world(start.road, start.lane, new_s, start.offset)
+    except (KeyError, IndexError, ValueError):
+        return True
+    c, s_ = math.cos(h), math.sin(h)
+    for other, pos in ctx.starts.items():
+        if other == entity or (pos.road, pos.lane) == (start.road, start.lane):
+            continue                  # same lane: the queue check of `feasible_s`
+        try:
+            ox, oy, _ = net.lane_to_world(pos.road, pos.lane, pos.s, pos.offset)
+        except (KeyError, IndexError, ValueError):
+            continue
+        dx, dy = ox - x, oy - y
+        if abs(-s_ * dx + c * dy) < BESIDE and abs(c * dx + s_ * dy) < min_gap:
             return False
     return True
 
