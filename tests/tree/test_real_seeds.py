@@ -109,12 +109,14 @@ def test_tls_sets_the_signal_facing_the_av(seeds):
     assert checked >= 3
 
 
-def test_moved_starts_never_land_on_a_party_beside_them(seeds, tmp_path):
+@pytest.mark.parametrize("report", ["dmvca-waymo-20211219-r262", "dmvca-cruise-20210421-r176"])
+def test_mutated_starts_never_overlap_a_party(seeds, tmp_path, report):
     # r262: a standing car in the next lane is written offset toward the AV's lane (a side swipe); an ego start
     # moved ahead by WPM-init used to land on it (60 of 115 nodes were invalid scenarios: overlap at t = 0).
+    # r176: the car queued close behind the AV, turned into an 11 m bus by NCM, reached into the AV (64 nodes).
     from txt2sce_ros.closed_loop import run_closed_loop
 
-    seed = next(s for s in seeds if s.stem == "dmvca-waymo-20211219-r262")
+    seed = next(s for s in seeds if s.stem == report)
     res = build_trees([seed], tmp_path, seed=0, cfg=tree_config(max_nodes=150, validate=False), jobs=1)[0]
     nodes = sorted((res.out_dir / "nodes").glob("*.xosc"))
     assert len(nodes) > 50

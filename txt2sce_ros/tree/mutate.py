@@ -28,7 +28,7 @@ from .dynamics import dtm, tsm
 from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
-from .trajectory import shift_init_location, wpm_lane_change
+from .trajectory import keep_clear_of_queue, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
 from .xml import parse_fragment, to_text
 
@@ -89,6 +89,8 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 if priv is not None and shift_init_location(priv, block.key, rng,
                                                             cfg["trajectory"]["init_location"], ctx, rec):
                     ops += "+WPM-init"
+                if priv is not None:
+                    keep_clear_of_queue(priv, block.key, els[0], ctx, rec, cfg["trajectory"]["init_location"])
                 emit(els, ops, rec)
         elif block.kind is BlockKind.SIGNAL:
             for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):

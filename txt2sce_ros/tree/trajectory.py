@@ -137,3 +137,45 @@ def shift_init_location(private: etree._Element, entity: str, rng: np.random.Gen
                     rec.set(wp, "s", text)
             return float(text) - start.s
     return 0.0
+
+
+def _extent(obj: etree._Element | None) -> tuple[float, float]:
+    """(rear, front) m of a ScenarioObject's footprint from its reference point along its heading (0, 0 unknown)."""
+    bb = obj.find("*/BoundingBox") if obj is not None else None
+    if bb is None or bb.find("Center") is None or bb.find("Dimensions") is None:
+        return 0.0, 0.0
+    cx, half = float(bb.find("Center").get("x", "0")), 0.5 * float(bb.find("Dimensions").get("length", "0"))
+    return cx - half, cx + half
+
+
+def keep_clear_of_queue(private: etree._Element, entity: str, obj: etree._Element, ctx: SeedContext,
+                        rec: Recorder, cfg: dict[str, Any], *, gap: float = 0.5) -> float:
+    """After NCM/DM changed a party's size (a car becoming an 11 m bus), move its start along its lane just far
+    enough that its footprint keeps `gap` m from every party starting in the same lane: away from the one it now
+    reaches, never past it (the queue's order is part of the scenario). Returns the shift (m); 0 when none was
+    needed or no feasible one exists (the node then starts overlapped and the player reports it)."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
+    if tele is None or ctx.map is None or not ctx.map.has_road(lane_pos(tele).road):
+        return 0.0
+    start = lane_pos(tele)
+    sign = ctx.map.direction(start.road, start.lane)
+    rear, front = _extent(obj)
+    shift = 0.0
+    for other, pos in ctx.starts.items():
+        if other == entity or (pos.road, pos.lane) != (start.road, start.lane):
+            continue
+        o_rear, o_front = _extent(ctx.root.find(f"Entities/ScenarioObject[@name='{other}']"))
+        u, u_o = sign * (start.s + shift), sign * pos.s       # along the lane's driving direction
+        if u <= u_o:                                          # behind it: our front must stay behind its rear
+            need = (u + front + gap) - (u_o + o_rear)
+            shift -= max(need, 0.0) * sign
+        else:                                                 # ahead of it: our rear must stay ahead of its front
+            need = (u_o + o_front + gap) - (u + rear)
+            shift += max(need, 0.0) * sign
+    if abs(shift) < 1e-6:
+        return 0.0
+    new_s = start.s + shift
+    if not feasible_s(ctx, entity, start, new_s, cfg["margin"], min_gap=0.0):
+        return 0.0
+    rec.set(tele, "s", new_s, digits=3)
+    return shift
