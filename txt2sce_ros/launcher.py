@@ -67,6 +67,8 @@ class GraphConfig:
     run_timeout: float = 300.0          # wall-clock seconds per run
     domain_id: int | None = None
     log_dir: str | None = None
+    time_limit: float | None = None     # simulated seconds per run (None: the scenario's / player's own limit)
+    seed: int | None = None             # player seed (None: config/player.yaml)
 
 
 def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
@@ -76,11 +78,16 @@ def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
     }
     if cfg.planner == "standin":
         cmds["planner"] = node_command("planner_node", {"faults": cfg.faults or [""]})
-    cmds["player"] = node_command("scenario_player_node", {
+    player: dict[str, object] = {
         "lock_step": cfg.lock_step, "planner_timeout": cfg.planner_timeout, "run_timeout": cfg.run_timeout,
         # frames are volatile: a run starts only once the monitor listens, or its verdict misses the first frames
         "await_subscribers": ["oracle_monitor"],
-    })
+    }
+    if cfg.time_limit is not None:
+        player["time_limit"] = float(cfg.time_limit)
+    if cfg.seed is not None:
+        player["seed"] = int(cfg.seed)
+    cmds["player"] = node_command("scenario_player_node", player)
     cmds["generator"] = node_command("generator_node", {"scenarios": cfg.scenarios, "wait_for_result": True})
     return cmds
 

@@ -98,3 +98,15 @@ def test_dev_gold_seeds_get_the_same_verdict_both_ways(seeds: list[Path]) -> Non
     # Not a trivial sample: failures with categories, and runs ending in different ways (today: PlanFail + Smooth
     # at the stop trigger, a collision, Smooth at the goal; seeds change as the seed writer evolves).
     assert any(r[1] for r in results.values()) and len({r[2] for r in results.values()}) >= 2, results
+
+
+@pytest.mark.timeout(300)
+def test_a_campaign_time_limit_reaches_the_ros_player(tmp_path: Path) -> None:
+    # `--ros --time-limit`: the player in the graph must end the run where the in-process run ends it.
+    rec, _ = run_closed_loop(DILEMMA, time_limit=4.0)
+    assert rec.end_reason == "time_limit" and rec.sim_time == pytest.approx(4.0)
+    over_ros = run_over_ros(DILEMMA, time_limit=4.0, seed=0)
+    assert over_ros.verdict.value != "error", over_ros.error
+    assert (over_ros.verdict, over_ros.categories, over_ros.end_reason) == (rec.verdict, rec.categories,
+                                                                            rec.end_reason)
+    assert over_ros.sim_time == pytest.approx(rec.sim_time)

@@ -77,17 +77,18 @@ def reserved_domain(tag: str) -> Iterator[int]:
 
 def run_over_ros(scenario: str | Path, *, scenario_id: str | None = None, faults: tuple[str, ...] = (),
                  keep_bag: str | Path | None = None, run_timeout: float = 120.0,
-                 attempts: int = ATTEMPTS) -> RunRecord:
+                 attempts: int = ATTEMPTS, time_limit: float | None = None, seed: int | None = None) -> RunRecord:
     """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline; a graph fault
     (module docstring) runs it again, up to `attempts` times. `details['ros_attempts']` says how many it took.
 
-    `keep_bag`: copy the recording there (otherwise it is deleted with the temporary directory)."""
+    `keep_bag`: copy the recording there (otherwise it is deleted with the temporary directory). `time_limit`
+    (simulated s) and `seed` go to the player, as `run_closed_loop` takes them, so both paths run the same run."""
     sid = scenario_id or Path(scenario).stem
     t0 = time.perf_counter()
     faults_seen: list[str] = []
     record = RunRecord(sid, Verdict.ERROR, error="no attempt made")
     for attempt in range(1, max(1, attempts) + 1):
-        record, fault = _attempt(scenario, sid, faults, keep_bag, run_timeout)
+        record, fault = _attempt(scenario, sid, faults, keep_bag, run_timeout, time_limit, seed)
         if not fault:
             break
         faults_seen.append(fault)
@@ -98,7 +99,7 @@ def run_over_ros(scenario: str | Path, *, scenario_id: str | None = None, faults
 
 
 def _attempt(scenario: str | Path, sid: str, faults: tuple[str, ...], keep_bag: str | Path | None,
-             run_timeout: float) -> tuple[RunRecord, str]:
+             run_timeout: float, time_limit: float | None, seed: int | None) -> tuple[RunRecord, str]:
     """One graph run: (record, why it is a graph fault, '' when it is not)."""
     from oracle_monitor.judge import judge_bag
 
@@ -110,7 +111,8 @@ def _attempt(scenario: str | Path, sid: str, faults: tuple[str, ...], keep_bag: 
         bag_dir = work / "bags"
         with reserved_domain(f"campaign:{os.getpid()}:{work.name}") as domain:
             cfg = GraphConfig(scenarios=[str(scenario)], bag_dir=str(bag_dir), faults=list(faults),
-                              run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain)
+                              run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain,
+                              time_limit=time_limit, seed=seed)
             codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
         bags = sorted(p for p in bag_dir.rglob("metadata.yaml")) if bag_dir.exists() else []
         if not bags:

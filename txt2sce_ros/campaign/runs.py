@@ -34,7 +34,8 @@ def execute(task: RunTask) -> StoredRun:
     if task.ros:
         from .ros_runs import run_over_ros
 
-        record = run_over_ros(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults)
+        record = run_over_ros(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults,
+                              time_limit=task.time_limit, seed=task.seed)
     else:
         from ..closed_loop import run_closed_loop
 
