@@ -31,7 +31,7 @@ from typing import Callable
 
 import rclpy
 from diagnostic_msgs.msg import DiagnosticArray
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.serialization import serialize_message
@@ -39,6 +39,7 @@ from rclpy.signals import SignalHandlerOptions
 
 from txt2sce_ros import contract as c
 from txt2sce_ros.errors import Txt2SceError
+from txt2sce_ros.nodes.lifetime import node_lifetime
 
 from .cdr import decode
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
@@ -174,19 +175,16 @@ def main(args: list[str] | None = None) -> int:
     signals: list[int] = []
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda signum, _frame: signals.append(signum))
-    try:
+
+    def leave() -> None:
+        node.shutdown()                 # the bag is closed before the node goes
+        executor.remove_node(node)
+
+    with node_lifetime(node, on_exit=leave):
         while rclpy.ok() and not signals:
             executor.spin_once(timeout_sec=0.1)
         if rclpy.ok():
             node.drain(executor, give_up=lambda: len(signals) > 1)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        node.shutdown()
-        executor.remove_node(node)
-        node.destroy_node()
-        if rclpy.ok():
-            rclpy.shutdown()
     return 0
 
 

@@ -41,7 +41,7 @@ from dataclasses import replace
 import rclpy
 from geometry_msgs.msg import PoseStamped, TwistStamped
 from nav_msgs.msg import Odometry
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSCompatibility, QoSProfile, ReliabilityPolicy, qos_check_compatible
 from rosgraph_msgs.msg import Clock
@@ -54,6 +54,7 @@ from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EG
                                   TOPIC_OBJECTS_MARKERS, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS, TOPIC_SCENARIO,
                                   TOPIC_TRAFFIC_LIGHTS, ControlCommand, Frame, RunStatus, ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
+from txt2sce_ros.nodes.lifetime import node_lifetime
 from txt2sce_ros.ros_io import (clock_msg, entity_to_odometry, frame_to_markers, goal_to_pose, lights_to_diagnostics,
                                 stamp_key, string_msg, to_stamp, twist_to_command)
 
@@ -297,15 +298,8 @@ def main(args: list[str] | None = None) -> int:
     node = PlayerNode()
     executor = SingleThreadedExecutor()
     executor.add_node(node)
-    try:
+    with node_lifetime(node, on_exit=lambda: executor.remove_node(node)):
         node.serve(executor)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        executor.remove_node(node)
-        node.destroy_node()
-        if rclpy.ok():
-            rclpy.shutdown()
     return 0
 
 

@@ -20,7 +20,6 @@ import rclpy
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PoseStamped, TwistStamped
 from nav_msgs.msg import Odometry
-from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
@@ -30,6 +29,7 @@ from txt2sce_ros.contract import (TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL, TOP
                                   TOPIC_OBJECTS_ODOM, TOPIC_SCENARIO, TOPIC_TRAFFIC_LIGHTS, Frame, Goal,
                                   ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
+from txt2sce_ros.nodes.lifetime import node_lifetime
 from txt2sce_ros.road import RoadNetwork, load_network
 from txt2sce_ros.ros_io import FrameAssembler, command_to_twist, pose_to_goal, stamp_key, to_stamp
 
@@ -186,15 +186,8 @@ class PlannerNode(Node):
 
 def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
-    node = PlannerNode()
-    try:
+    with node_lifetime(PlannerNode()) as node:
         rclpy.spin(node)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        node.destroy_node()
-        if rclpy.ok():
-            rclpy.shutdown()
     return 0
 
 
