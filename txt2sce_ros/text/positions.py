@@ -134,11 +134,6 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
     if fre.search(r"\bbehind\b", ctx, re.I):
         return "R6", "same", True
-    if e.idx == d.partner and fre.search(r"[fg]", ego_actions) and not fre.search(r"[fg]", "".join(
-            a.code for a in d.acts if a.who == e.idx)):
-        return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
-    if fore == "rear":
-        return "R6", "same", True
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
