@@ -14,6 +14,7 @@ from lxml import etree
 from ..config import load_config
 from ..errors import InputError
 from ..seed.context import LanePos, SeedContext
+from .trajectory import footprint_extent
 from .values import Recorder, uniform
 
 #: esmini-style lamp encodings (red;yellow;green lamps), used when a seed writes states that way.
@@ -187,7 +188,7 @@ def stop_line(ctx: SeedContext, sid: str, *, slack: float = 0.0) -> LanePos | No
     lanes = tuple(getattr(sig, "controlled_lanes", ()) or ())
     if road == ego.road:
         ahead = ctx.map.direction(ego.road, ego.lane) * (sig.s - ego.s)
-        if ahead <= _ego_front(ctx) + slack:
+        if ahead <= footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))[1] + slack:
             return None               # the bumper is (or may be moved) over the line: the ego never reaches it
         lane = ego.lane
     else:
@@ -198,14 +199,6 @@ def stop_line(ctx: SeedContext, sid: str, *, slack: float = 0.0) -> LanePos | No
     if lanes and lane not in lanes:
         lane = lanes[0]
     return LanePos(road=road, lane=int(lane), s=float(sig.s))
-
-
-def _ego_front(ctx: SeedContext) -> float:
-    """m from the ego's reference point to its front bumper (BoundingBox center x + half length; 0 unknown)."""
-    bb = ctx.root.find("Entities/ScenarioObject[@name='ego']/*/BoundingBox")
-    if bb is None or bb.find("Center") is None or bb.find("Dimensions") is None:
-        return 0.0
-    return float(bb.find("Center").get("x", "0")) + float(bb.find("Dimensions").get("length", "0")) / 2.0
 
 
 def _controller_action(ctrl: str, phase: str) -> etree._Element:

@@ -139,7 +139,7 @@ def shift_init_location(private: etree._Element, entity: str, rng: np.random.Gen
     return 0.0
 
 
-def _extent(obj: etree._Element | None) -> tuple[float, float]:
+def footprint_extent(obj: etree._Element | None) -> tuple[float, float]:
     """(rear, front) m of a ScenarioObject's footprint from its reference point along its heading (0, 0 unknown)."""
     bb = obj.find("*/BoundingBox") if obj is not None else None
     if bb is None or bb.find("Center") is None or bb.find("Dimensions") is None:
@@ -159,12 +159,12 @@ def keep_clear_of_queue(private: etree._Element, entity: str, obj: etree._Elemen
         return 0.0
     start = lane_pos(tele)
     sign = ctx.map.direction(start.road, start.lane)
-    rear, front = _extent(obj)
+    rear, front = footprint_extent(obj)
     shift = 0.0
     for other, pos in ctx.starts.items():
         if other == entity or (pos.road, pos.lane) != (start.road, start.lane):
             continue
-        o_rear, o_front = _extent(ctx.root.find(f"Entities/ScenarioObject[@name='{other}']"))
+        o_rear, o_front = footprint_extent(ctx.root.find(f"Entities/ScenarioObject[@name='{other}']"))
         u, u_o = sign * (start.s + shift), sign * pos.s       # along the lane's driving direction
         if u <= u_o:                                          # behind it: our front must stay behind its rear
             need = (u + front + gap) - (u_o + o_rear)
