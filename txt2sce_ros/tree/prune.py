@@ -65,7 +65,7 @@ def spread_covering(indices: Sequence[int], vectors: Sequence[Hashable], labels:
     first: dict[Hashable, int] = {}
     for pos in ranked:
         first.setdefault(labels[pos], pos)
-    chosen = sorted(first.values(), key=ranked.index)[:limit]
+    chosen = list(first.values())[:limit]            # filled in round-robin order
     taken = set(chosen)
     rest = [pos for pos in range(len(indices)) if pos not in taken]
     if len(chosen) < limit and rest:
