@@ -120,17 +120,21 @@ class Planner:
             plan = fp.late_brake_decel / lp.stop_onset_ratio
             # Its dry-road tuning does know its own brake build-up (at the emergency jerk): without it the stop
             # overruns on any road, and the fault would no longer depend on friction (its ground truth).
-            lag = 0.5 * v * max(0.0, fp.late_brake_decel + self._accel) / self.params.comfort.emergency_jerk
+            lag = self._build_up(v, fp.late_brake_decel, self.params.comfort.emergency_jerk)
             stop = StopPlan(decel=plan, cruise=cruise, lag=lag, hard=True, braking=braking)
         else:
             plan = braking_decel(lp, friction)
             # Distance the jerk-limited build-up of braking to the planned deceleration still costs (from the
             # current acceleration: while still accelerating the build-up is longer).
-            lag = 0.5 * v * max(0.0, plan + self._accel) / self.params.comfort.max_jerk
+            lag = self._build_up(v, plan, self.params.comfort.max_jerk)
             stop = StopPlan(decel=plan, cruise=cruise, lag=lag, braking=braking)
         return _Braking(stop=stop, goal_decel=braking_decel(lp, friction),
                         idm_decel=min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity),
                         max_decel=min(lp.max_decel, friction * lp.gravity))
+
+    def _build_up(self, v: float, decel: float, jerk: float) -> float:
+        """m travelled while braking builds up from the current acceleration to `decel` at `jerk`."""
+        return 0.5 * v * max(0.0, decel + self._accel) / jerk
 
     def _constraints(self, frame: Frame, objects: tuple[EntityState, ...], me: EgoOnPath, br: "_Braking"
                      ) -> tuple[list[Constraint], float]:
