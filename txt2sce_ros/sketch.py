@@ -146,6 +146,9 @@ class Sketch:
     obstacles: tuple[Obstacle, ...] = ()
     collision: Collision = field(default_factory=Collision)
     missing: tuple[MissingItem, ...] = ()
+    #: Where each slot was read: (slot path, ((start, end), ...)) pairs in slot order; offsets index the narrative
+    #: as given. Never compared (sketch.md: evidence is not scored), so two readings of a slot stay equal.
+    evidence: tuple[tuple[str, tuple[tuple[int, int], ...]], ...] = field(default=(), compare=False)
 
     @property
     def is_buildable(self) -> bool:
@@ -176,7 +179,12 @@ class Sketch:
                           for o in self.obstacles],
             "collision": {"with": self.collision.with_, "type": self.collision.type},
             "missing": list(self.missing),
+            **({"evidence": {k: [list(sp) for sp in spans] for k, spans in self.evidence}} if self.evidence else {}),
         }
+
+    def evidence_for(self, slot: str) -> tuple[tuple[int, int], ...]:
+        """The narrative spans a slot was read from (empty when the extractor recorded none)."""
+        return next((spans for k, spans in self.evidence if k == slot), ())
 
     def to_json(self) -> str:
         """One compact JSON line (a JSONL row)."""
@@ -205,6 +213,8 @@ class Sketch:
                             for o in d["obstacles"]),
             collision=Collision(with_=c["with"], type=c["type"]),
             missing=tuple(d["missing"]),
+            evidence=tuple((str(k), tuple((int(a), int(b)) for a, b in v))
+                           for k, v in (d.get("evidence") or {}).items()),
         )
 
 
