@@ -16,6 +16,8 @@ NODES = {
     "txt2sce_launch": "txt2sce_ros.launcher:main",
 }
 
+DATA_PACKAGES = ["txt2sce_ros.data", "txt2sce_ros.data.maps", "txt2sce_ros.data.reports"]
+
 
 def _tree(src: str, dst: str) -> list[tuple[str, list[str]]]:
     """data_files entries that mirror the files under `src` into share/<pkg>/`dst`."""
@@ -31,10 +33,13 @@ def _tree(src: str, dst: str) -> list[tuple[str, list[str]]]:
 setup(
     name=PACKAGE,
     version="0.1.0",
-    packages=find_packages(exclude=["tests", "tests.*", "bench", "bench.*"]),
-    # Bundled data ships inside the package (txt2sce_ros/data has no __init__.py, so name its files here).
+    # The bundled data directories hold no code (no __init__.py) but are importable as namespace packages; naming
+    # them here is what setuptools asks for, instead of warning at every `pip install -e .` that they are absent.
+    packages=find_packages(exclude=["tests", "tests.*", "bench", "bench.*"]) + DATA_PACKAGES,
     package_data={
-        "txt2sce_ros": ["data/*.json", "data/reports/*.jsonl", "data/maps/*.xodr", "data/maps/*.md"],
+        "txt2sce_ros.data": ["*.json"],
+        "txt2sce_ros.data.reports": ["*.jsonl"],
+        "txt2sce_ros.data.maps": ["*.xodr", "*.md"],
         "": ["*.yaml", "*.json", "*.jsonl", "*.xodr", "*.xosc", "*.txt", "*.md"],
     },
     include_package_data=True,

@@ -76,3 +76,22 @@ def test_limit_stops_and_resume_completes(seed_files: list[Path], tmp_path: Path
     assert rest.runs is not None and (rest.runs.skipped, rest.runs.ran) == (1, 3)
     rows = _rows(tmp_path / "c" / "results.sqlite")
     assert len({k for k, _, _ in rows}) == len(rows) == 4
+
+
+def test_counts_add_up_with_duplicates_and_limit(seed_files: list[Path], tmp_path: Path) -> None:
+    # Two byte-identical scenarios under different names: judged once, and the summary says so (issue 18). The
+    # copy sits beside the original so its relative map path still resolves.
+    twin = seed_files[0].with_name(f"{seed_files[0].stem}_twin_{tmp_path.name}.xosc")
+    twin.write_bytes(seed_files[0].read_bytes())
+    try:
+        files = [*seed_files[:3], twin]
+        first = run_campaign(files, _cfg(tmp_path / "c", limit=1))
+        r = first.runs
+        assert r is not None and (r.total, r.duplicates, r.ran, r.left, r.skipped) == (4, 1, 1, 2, 0)
+        rest = run_campaign(files, _cfg(tmp_path / "c"))
+        r = rest.runs
+        assert r is not None and (r.total, r.duplicates, r.skipped, r.ran, r.left) == (4, 1, 1, 2, 0)
+        assert r.total == r.skipped + r.duplicates + r.ran + r.left
+        assert "error" not in r.verdicts
+    finally:
+        twin.unlink()

@@ -153,3 +153,31 @@ def test_node_budget_keeps_every_value_of_enumerated_blocks(tmp_path):
     for block, kind in kinds.items():
         if kind in ("weather", "npc"):
             assert seen[block] == set(range(counts[block])), (kind, seen[block])
+
+
+def test_estimate_counts_exactly_what_the_build_writes(tmp_path):
+    from txt2sce_ros.tree.build import estimate_tree
+
+    for settings in ({"prune_share": 0.5, "max_nodes": 0}, {"prune_share": 1.0, "max_nodes": 300}):
+        cfg = tree_config(**settings)
+        est = estimate_tree(JUNCTION, seed=3, cfg=cfg)
+        assert not any((tmp_path / "t").rglob("*.xosc"))          # the estimate writes nothing
+        res = build_tree(JUNCTION, tmp_path / "t", seed=3, cfg=cfg)
+        assert est.nodes == res.nodes
+        written = sum(f.stat().st_size for f in (tmp_path / "t").rglob("*") if f.is_file())
+        assert 0.8 * written < est.bytes < 1.25 * written
+        for f in (tmp_path / "t").rglob("*"):
+            if f.is_file():
+                f.unlink()
+
+
+def test_tree_cli_says_how_much_it_writes_and_dry_run_writes_nothing(tmp_path, capsys):
+    from txt2sce_ros.cli.main import main
+
+    assert main(["tree", str(JUNCTION), "--out", str(tmp_path / "dry"), "--dry-run"]) == 0
+    assert "files" in capsys.readouterr().err and not (tmp_path / "dry").exists()
+    assert main(["tree", str(JUNCTION), "--out", str(tmp_path / "t"), "--max-nodes", "40"]) == 0
+    err = capsys.readouterr().err
+    said = int(err.split("about ")[1].split(" files")[0].replace(",", ""))
+    assert said == sum(1 for f in (tmp_path / "t").rglob("*") if f.is_file())
+    assert str((tmp_path / "t").resolve()) in err

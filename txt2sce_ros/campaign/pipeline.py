@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any, Sequence
 
 from ..errors import InputError
-from .runs import RunsSummary, make_tasks, run_all
+from .runs import RunsSummary, count_duplicates, make_tasks, run_all
 from .store import ResultStore
 
 STAGES = ("reports", "sketches", "seeds", "trees", "scenarios")
@@ -172,8 +172,10 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
     tasks = make_tasks(scenario_inputs, faults=cfg.faults, seed=cfg.seed, ros=cfg.ros, time_limit=cfg.time_limit)
     summary.scenarios = len(tasks)
     summary.trees = len({t.tree for t in tasks if t.tree})
-    _log(cfg, f"closed loop: {len(tasks)} scenarios, executor {cfg.executor}"
-              + (f", faults {', '.join(cfg.faults)}" if cfg.faults else ""))
+    dup = count_duplicates(tasks)
+    _log(cfg, f"closed loop: {len(tasks)} scenarios"
+              + (f" ({dup} byte-identical to another one, judged once: {len(tasks) - dup} runs)" if dup else "")
+              + f", executor {cfg.executor}" + (f", faults {', '.join(cfg.faults)}" if cfg.faults else ""))
     with ResultStore(cfg.out / "results.sqlite") as store:
         store.set_meta("faults", list(cfg.faults))
         summary.runs = run_all(tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,

@@ -61,10 +61,19 @@ def make_tasks(inputs: Sequence[str | Path], *, faults: tuple[str, ...] = (), se
 
 @dataclass(frozen=True)
 class RunsSummary:
-    total: int
-    skipped: int
-    ran: int
-    verdicts: dict[str, int]
+    """What the run stage did with its scenarios: total = skipped + duplicates + ran + left (by `limit`)."""
+
+    total: int                 # scenario files given
+    skipped: int               # already judged in the store (a resumed campaign), not run again
+    ran: int                   # run now
+    verdicts: dict[str, int]   # of the runs done now
+    duplicates: int = 0        # byte-identical to another scenario of this batch: judged once, by that run
+    left: int = 0              # not run because of `limit` (rerun without it to finish)
+
+
+def count_duplicates(tasks: Sequence[RunTask]) -> int:
+    """Scenarios whose run key (bytes + planner set-up + seed) another task of the list already has."""
+    return len(tasks) - len({t.key for t in tasks})
 
 
 def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "pool", workers: int | None = None,
@@ -73,15 +82,22 @@ def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "po
     campaign resumes where it stopped (`limit` stops after that many new runs: used to test exactly that)."""
     tasks = list(tasks)
     done = store.done_keys()
-    todo = [t for t in tasks if t.key not in done]
-    # A task listed twice (identical scenario bytes) runs once.
-    seen: set[str] = set()
-    todo = [t for t in todo if not (t.key in seen or seen.add(t.key))]
+    # A scenario listed twice (identical bytes, e.g. two tree nodes whose mutations came out equal) runs once; the
+    # duplicates are counted apart so that total = skipped + duplicates + ran + left always adds up.
+    first: dict[str, RunTask] = {}
+    for t in tasks:
+        first.setdefault(t.key, t)
+    distinct = list(first.values())
+    duplicates = len(tasks) - len(distinct)
+    skipped = sum(1 for t in distinct if t.key in done)
+    todo = [t for t in distinct if t.key not in done]
+    left = 0
     if limit is not None:
+        left = max(0, len(todo) - limit)
         todo = todo[:limit]
-    if progress and done:
-        print(f"[campaign] resuming: {sum(t.key in done for t in tasks)} of {len(tasks)} runs already stored",
-              file=sys.stderr)
+    if progress and skipped:
+        print(f"[campaign] resuming: {skipped} of {len(distinct)} distinct scenarios already judged in "
+              f"{store.path}, {len(todo)} to run", file=sys.stderr)
     # fixed key order so the bar's counts do not jump around as verdicts first appear
     verdicts: dict[str, int] = {"pass": 0, "fail": 0, "error": 0}
     bar = tqdm(total=len(todo), desc="closed-loop runs", unit="run", disable=not progress, file=sys.stderr,
@@ -96,6 +112,6 @@ def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "po
             bar.set_postfix(verdicts, refresh=False)
     finally:
         bar.close()
-    skipped = sum(1 for t in tasks if t.key in done)
     verdicts = {k: v for k, v in verdicts.items() if v}
-    return RunsSummary(total=len(tasks), skipped=skipped, ran=sum(verdicts.values()), verdicts=verdicts)
+    return RunsSummary(total=len(tasks), skipped=skipped, ran=sum(verdicts.values()), verdicts=verdicts,
+                       duplicates=duplicates, left=left)

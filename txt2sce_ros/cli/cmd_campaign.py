@@ -9,6 +9,8 @@ HELP = "reports/sketches/seeds/trees/scenarios -> closed-loop runs -> verdicts -
 
 
 def add_campaign_options(parser: argparse.ArgumentParser) -> None:
+    from standin_planner.faults import Faults
+
     from ..campaign.executors import EXECUTORS
 
     parser.add_argument("--seed", type=int, default=0, help="RNG seed of every stage (default 0)")
@@ -25,7 +27,8 @@ def add_campaign_options(parser: argparse.ArgumentParser) -> None:
                         help="serial | pool (local processes, default) | ray (RAY_ADDRESS or a local instance)")
     parser.add_argument("--workers", type=int, default=None, help="parallel workers (default: CPU count)")
     parser.add_argument("--fault", action="append", default=[], metavar="NAME",
-                        help="switch on a stand-in planner fault mode (repeatable; see `txt2sce planner-check`)")
+                        help="switch on a stand-in planner fault mode (repeatable): "
+                             f"{', '.join(Faults.names())}")
     parser.add_argument("--ros", action="store_true",
                         help="run each scenario over the ROS 2 node graph (separate processes, DDS) instead of "
                              "the in-process cores")
@@ -64,7 +67,12 @@ def print_summary(summary) -> None:
     print(f"scenarios:  {summary.scenarios}" + (f" in {summary.trees} trees" if summary.trees else ""))
     if runs is not None:
         verdicts = ", ".join(f"{v} {n}" for v, n in sorted(runs.verdicts.items())) or "none new"
-        print(f"runs:       {runs.ran} new ({verdicts}), {runs.skipped} already done")
+        line = f"runs:       {runs.ran} new ({verdicts}), {runs.skipped} already judged in an earlier run"
+        if runs.duplicates:
+            line += f", {runs.duplicates} duplicates (same bytes as another scenario, judged once)"
+        if runs.left:
+            line += f", {runs.left} left for later (--limit; rerun without it to finish)"
+        print(line)
     if summary.report:
         print(f"report:     {summary.report} (+ report.html)")
 

@@ -6,6 +6,9 @@ import argparse
 import sys
 from pathlib import Path
 
+#: Error reasons printed on the console; the rest are counted (all of them are in the output file).
+MAX_ERRORS_SHOWN = 10
+
 HELP = "read accident reports (.txt, dir, JSONL {id,text}, OL 316 PDF) into report sketches (JSONL)"
 
 
@@ -52,8 +55,14 @@ def run(args: argparse.Namespace) -> int:
             n += 1
             if isinstance(r, ErrorRecord):
                 errors += 1
+                # the reason belongs on the console, not only in the output file (quiet or not: it is an error)
+                if errors <= MAX_ERRORS_SHOWN:
+                    print(f"txt2sce extract: error: {r.report_id}: {r.error}", file=sys.stderr)
             elif not r.is_buildable:
                 incomplete += 1
+    if errors > MAX_ERRORS_SHOWN:
+        print(f"txt2sce extract: ... and {errors - MAX_ERRORS_SHOWN} more errors (every one is in {out})",
+              file=sys.stderr)
     if not args.quiet:
         print(f"{n} reports -> {out}: {n - errors - incomplete} buildable sketches, {incomplete} incomplete "
               f"(missing facts), {errors} errors", file=sys.stderr)

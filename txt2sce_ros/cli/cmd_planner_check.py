@@ -150,7 +150,10 @@ def scenario_files(inputs: list[str] | None, pattern: str = "benign_*.xosc") -> 
 def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--scenarios", nargs="*", metavar="PATH",
                         help=f"scenario files or directories (default: {DEFAULT_DIR}/benign_*.xosc)")
-    parser.add_argument("--faults", default="", help="comma-separated fault modes to switch on (default: none)")
+    from standin_planner.faults import Faults
+
+    parser.add_argument("--faults", default="", help="comma-separated fault modes to switch on (default: none): "
+                                                     f"{', '.join(Faults.names())}")
     parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
     parser.add_argument("--time-limit", type=float, default=None, help="override the runs' time limit (s)")
     parser.add_argument("--fault-matrix", action="store_true",

@@ -32,6 +32,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-validate", action="store_true", help="skip XSD validation of generated files")
     parser.add_argument("--check-sample", type=int, default=0, metavar="N",
                         help="after building, run the ASAM quality checker and the scenario player on N random files")
+    parser.add_argument("--dry-run", action="store_true",
+                        help="only say how many files and MB the trees would take, and where; write nothing")
     parser.add_argument("--png", help="show: PNG path (default TREE_DIR/tree.png)")
     parser.add_argument("--depth", type=int, default=3, help="show: outline depth (default 3)")
 
@@ -67,6 +69,29 @@ def _show(args: argparse.Namespace) -> int:
     return 0
 
 
+def _announce(seeds: list[Path], out: Path, *, seed: int, cfg: dict, dry_run: bool) -> bool:
+    """Say how much the build will write and where before writing it (the dev seeds make ~37k files, ~0.8 GB);
+    False when nothing should be written (a dry run, or not enough free disk)."""
+    import shutil
+
+    from ..tree.build import FILES_PER_TREE, estimate_trees
+
+    est = estimate_trees(seeds, seed=seed, cfg=cfg)
+    files = sum(e.nodes for e in est) + FILES_PER_TREE * len(est)
+    mb = sum(e.bytes for e in est) / 1e6
+    where = out.resolve()
+    probe = next((p for p in (where, *where.parents) if p.exists()), Path("/"))
+    free_mb = shutil.disk_usage(probe).free / 1e6
+    print(f"tree: {len(seeds)} seeds -> about {files:,} files, {mb:,.0f} MB in {where}/<seed>/ "
+          f"({free_mb:,.0f} MB free there)", file=sys.stderr, flush=True)
+    if dry_run:
+        return False
+    if mb > free_mb:
+        raise InputError(f"not enough disk: the trees need about {mb:,.0f} MB, {free_mb:,.0f} MB free",
+                         source=str(where))
+    return True
+
+
 def run(args: argparse.Namespace) -> int:
     if args.inputs[0] == "show":
         return _show(args)
@@ -77,6 +102,8 @@ def run(args: argparse.Namespace) -> int:
     cfg = tree_config(args.config, mutations=args.mutations, prune_share=args.prune,
                       validate=False if args.no_validate else None, max_nodes=args.max_nodes)
     seeds = _seed_files(args.inputs)
+    if not _announce(seeds, Path(args.out), seed=args.seed, cfg=cfg, dry_run=args.dry_run):
+        return 0
     t0 = time.perf_counter()
     results = build_trees(seeds, args.out, seed=args.seed, cfg=cfg, jobs=args.jobs)
     wall = time.perf_counter() - t0

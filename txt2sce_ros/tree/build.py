@@ -147,25 +147,11 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
         block = dis.blocks[bi]
         vs = variants[bi]
         cands = [(p, j) for p in frontier for j in range(len(vs))]
-        vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(p.path)) + (vs[j].features,)
-                   for p, j in cands]
-        keep = prune(vectors, share, prune_rng)
+        keep, cut = _select_layer([p.path for p, _ in cands], [j for _, j in cands], variants, used, depth,
+                                  enumerated=block.kind.value in cfg["tree"]["enumerate"], share=share, cap=cap,
+                                  written=written, rng=prune_rng)
         pruned += len(cands) - len(keep)
-        # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
-        # (a plain cut would drop the deepest layers: events and obstacles). Round robin over clusters keeps as
-        # many distinct categories as the budget allows.
-        layers_left = len(used) - depth + 1
-        allowed = max(1, (cap - written) // layers_left) if layers_left > 1 else max(0, cap - written)
-        enumerated = block.kind.value in cfg["tree"]["enumerate"]
-        if enumerated:
-            # Every value of an enumerated block is a test condition of its own (a cyclist, a yellow light, snow):
-            # keep one node per value while the cap still leaves a node for each layer to come.
-            allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
-        if len(keep) > allowed:
-            kept_vectors = [vectors[i] for i in keep]
-            keep = (spread_covering(keep, kept_vectors, [cands[i][1] for i in keep], allowed) if enumerated
-                    else spread(keep, kept_vectors, allowed))
-            truncated = True
+        truncated = truncated or cut
         frontier = []
         for ci in keep:
             parent, j = cands[ci]
@@ -224,6 +210,98 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     return TreeResult(seed=str(seed_path), out_dir=out, block_counts=counts, expected=expected_nodes(counts),
                       nodes=written, pruned=pruned, invalid=invalid, truncated=truncated,
                       seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))
+
+
+def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], variants: list[list[Variant]],
+                  used: list[int], depth: int, *, enumerated: bool, share: float, cap: int, written: int,
+                  rng: np.random.Generator) -> tuple[list[int], bool]:
+    """Which candidates of one layer become nodes (indices into the candidate list), and whether the node budget
+    cut some: diversity-aware pruning, then the budget. One candidate = a parent's path + a version `choice` of
+    the layer's block. Shared by `build_tree` and `estimate_tree`, so an estimate prunes exactly as a build."""
+    vs = variants[used[depth - 1]]
+    vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(path)) + (vs[j].features,)
+               for path, j in zip(parent_paths, choices)]
+    keep = prune(vectors, share, rng)
+    # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
+    # (a plain cut would drop the deepest layers: events and obstacles). Round robin over clusters keeps as
+    # many distinct categories as the budget allows.
+    layers_left = len(used) - depth + 1
+    allowed = max(1, (cap - written) // layers_left) if layers_left > 1 else max(0, cap - written)
+    if enumerated:
+        # Every value of an enumerated block is a test condition of its own (a cyclist, a yellow light, snow):
+        # keep one node per value while the cap still leaves a node for each layer to come.
+        allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
+    if len(keep) <= allowed:
+        return keep, False
+    kept_vectors = [vectors[i] for i in keep]
+    return (spread_covering(keep, kept_vectors, [choices[i] for i in keep], allowed) if enumerated
+            else spread(keep, kept_vectors, allowed)), True
+
+
+@dataclass(frozen=True)
+class TreeEstimate:
+    """What `build_tree` would write for one seed, found without assembling or writing any node: `nodes` counts
+    the generated files (root excluded, as in TreeResult), `bytes` their size plus the tree's exports. Nodes
+    that would fail validation (none in practice) are counted as written."""
+
+    seed: str
+    nodes: int
+    bytes: int
+
+
+def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None) -> TreeEstimate:
+    """Run the layer selection of `build_tree` (same variants, pruning, budget, RNG) without writing anything;
+    the size is the seed's own size per node plus a measured allowance for the manifest and the graph exports."""
+    cfg = cfg or tree_config()
+    seed_path = Path(seed_path)
+    try:
+        data = seed_path.read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read seed: {exc.strerror}", source=str(seed_path)) from exc
+    root = parse_bytes(data, str(seed_path))
+    ctx = build_context(root, source=str(seed_path), seed_path=seed_path)
+    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
+                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]))
+    key = seed_key(seed_path.name)
+    variants = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
+    used = [i for i, v in enumerate(variants) if v]
+    share = float(cfg["tree"]["prune_share"])
+    cap = int(cfg["tree"]["max_nodes_per_tree"]) or sys.maxsize
+    rng = np.random.default_rng(np.random.SeedSequence([int(seed), key, 0x70726E]))
+    frontier: list[tuple[int, ...]] = [()]
+    written = 0
+    for depth, bi in enumerate(used, start=1):
+        cands = [(p, j) for p in frontier for j in range(len(variants[bi]))]
+        keep, _ = _select_layer([p for p, _ in cands], [j for _, j in cands], variants, used, depth,
+                                enumerated=dis.blocks[bi].kind.value in cfg["tree"]["enumerate"], share=share,
+                                cap=cap, written=written, rng=rng)
+        frontier = [cands[i][0] + (cands[i][1],) for i in keep]
+        written += len(frontier)
+        if not frontier or written >= cap:
+            break
+    # a node is the seed with a few attributes changed, so about the seed's size; the manifest, GraphML and DOT
+    # files add about 1 kB per node together
+    per_node = len(data) + EXPORT_BYTES_PER_NODE
+    return TreeEstimate(seed=str(seed_path), nodes=written, bytes=(written + 1) * per_node)
+
+
+#: Bytes of manifest.json + tree.graphml + tree.dot per node: 945-1,125 measured on trees of six dev-gold seeds.
+EXPORT_BYTES_PER_NODE = 1100
+
+#: Files a tree writes besides its nodes: root.xosc, manifest.json, tree.graphml, tree.dot.
+FILES_PER_TREE = 4
+
+
+def estimate_trees(seed_paths: Sequence[str | Path], *, seed: int = 0, cfg: dict[str, Any] | None = None,
+                   ) -> list[TreeEstimate]:
+    """`estimate_tree` for each seed; a seed that cannot be read counts as 0 (the build will report it)."""
+    out = []
+    for p in seed_paths:
+        try:
+            out.append(estimate_tree(p, seed=seed, cfg=cfg))
+        except Txt2SceError:
+            out.append(TreeEstimate(seed=str(p), nodes=0, bytes=0))
+    return out
 
 
 def _node_problems(text: str, version: str) -> list[str]:
