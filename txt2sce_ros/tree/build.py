@@ -96,6 +96,16 @@ def _node_id(path: tuple[int, ...]) -> str:
     return "n" + "_".join(str(j) for j in path) if path else "root"
 
 
+def _read_seed(seed_path: Path) -> tuple[bytes, etree._Element, SeedContext]:
+    """The seed's bytes, parsed tree and context (map, roads, parties) for mutation."""
+    try:
+        data = seed_path.read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read seed: {exc.strerror}", source=str(seed_path)) from exc
+    root = parse_bytes(data, str(seed_path))
+    return data, root, build_context(root, source=str(seed_path), seed_path=seed_path)
+
+
 def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None,
                ) -> TreeResult:
     """Build the scenario tree of one seed under `out_dir` (`nodes/*.xosc`, `manifest.json`, `tree.graphml`,
@@ -108,12 +118,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     nodes_dir.mkdir(parents=True, exist_ok=True)
     for stale in nodes_dir.glob("*.xosc"):  # a rebuild into the same directory must not leave old nodes behind
         stale.unlink()
-    try:
-        data = seed_path.read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read seed: {exc.strerror}", source=str(seed_path)) from exc
-    root = parse_bytes(data, str(seed_path))
-    ctx = build_context(root, source=str(seed_path), seed_path=seed_path)
+    data, root, ctx = _read_seed(seed_path)
     logic = root.find("RoadNetwork/LogicFile")
     if logic is not None and ctx.map_path is not None:
         # Generated files live elsewhere: point them at the same map, relative to where they are written.
@@ -254,12 +259,7 @@ def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] |
     the size is the seed's own size per node plus a measured allowance for the manifest and the graph exports."""
     cfg = cfg or tree_config()
     seed_path = Path(seed_path)
-    try:
-        data = seed_path.read_bytes()
-    except OSError as exc:
-        raise InputError(f"cannot read seed: {exc.strerror}", source=str(seed_path)) from exc
-    root = parse_bytes(data, str(seed_path))
-    ctx = build_context(root, source=str(seed_path), seed_path=seed_path)
+    data, root, ctx = _read_seed(seed_path)
     dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
                       order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]))
     key = seed_key(seed_path.name)
