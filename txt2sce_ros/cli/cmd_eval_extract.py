@@ -22,7 +22,7 @@ def register(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..errors import InputError
     from ..sketch import Sketch, load_sketches
-    from ..text.evaluate import TARGETS, evaluate, format_table
+    from ..text.evaluate import TARGETS, evaluate, evaluate_by_source, format_diagnostics, format_table
     from ..text.forms import form_agreement, format_agreement, load_form_labels
 
     if not args.gold and not args.form_labels:
@@ -50,6 +50,8 @@ def run(args: argparse.Namespace) -> int:
         if len(scored) < len(gold):
             print(f"({len(gold) - len(scored)} gold reports not among the predictions: left out)")
         print(format_table(ev, worst=args.worst))
+        print()
+        print(format_diagnostics(ev, evaluate_by_source(scored, preds)))
         if args.check_targets and any(ev.accuracy(k) < v for k, v in TARGETS.items()):
             status = 1
     if args.form_labels:

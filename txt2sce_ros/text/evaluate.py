@@ -49,9 +49,21 @@ class Evaluation:
     slots: dict[str, SlotTally] = field(default_factory=lambda: defaultdict(SlotTally))
     reports: int = 0
     unmatched_gold: list[str] = field(default_factory=list)  # gold ids with no prediction (an error record)
+    #: (gold, predicted) position-with-lane of every paired or unpaired NPC ("-" for no partner): the confusion.
+    positions: list[tuple[str, str]] = field(default_factory=list)
+    #: Complete gold reports (empty `missing`) and those whose conflict a seed would reproduce (`conflict_exact`).
+    complete: list[str] = field(default_factory=list)
+    conflict_ok: list[str] = field(default_factory=list)
+    over_refused: list[str] = field(default_factory=list)  # complete in gold, `missing` in the prediction
+    under_refused: list[str] = field(default_factory=list)  # incomplete in gold, buildable in the prediction
 
     def accuracy(self, slot: str) -> float:
         return self.slots[slot].accuracy
+
+    @property
+    def conflict_rate(self) -> float:
+        """The user's figure: complete reports whose sketch reproduces the reported conflict exactly."""
+        return len(self.conflict_ok) / len(self.complete) if self.complete else float("nan")
 
 
 def _pos(p: Party | Obstacle) -> str:
@@ -140,6 +152,32 @@ def compare(gold: Sketch, pred: Sketch, ev: Evaluation) -> None:
         s[name].add(gv == pv, gv, pv, rid)
     s["completeness"].add(bool(gold.missing) == bool(pred.missing), sorted(gold.missing) or "[]",
                           sorted(pred.missing) or "[]", rid)
+    ev.positions += [((_pos(g) if g else "-"), (_pos(p) if p else "-")) for g, p in npc_pairs]
+    if not gold.missing:
+        ev.complete.append(rid)
+        if pred.missing:
+            ev.over_refused.append(rid)
+        elif conflict_exact(gold, pred):
+            ev.conflict_ok.append(rid)
+    elif not pred.missing:
+        ev.under_refused.append(rid)
+
+
+def _party_key(p: Party | Obstacle | None) -> tuple[object, ...] | None:
+    if p is None:
+        return None
+    return (p.category, p.position, p.lane, getattr(p, "actions", None))
+
+
+def conflict_exact(gold: Sketch, pred: Sketch) -> bool:
+    """Does the prediction give the conflict a seed is built to reproduce: the AV's collision party exactly
+    (category, position, lane, actions), the AV's start and actions, and the road layout?"""
+    if (gold.ego.start, gold.ego.actions, gold.road.layout) != (pred.ego.start, pred.ego.actions, pred.road.layout):
+        return False
+    gw, pw = gold.collision.with_, pred.collision.with_
+    if gw is None or pw is None:
+        return gw is None and pw is None
+    return _party_key(gold.party(gw)) == _party_key(pred.party(pw))
 
 
 def evaluate(gold: Iterable[Sketch], predicted: dict[str, Sketch]) -> Evaluation:
@@ -153,6 +191,44 @@ def evaluate(gold: Iterable[Sketch], predicted: dict[str, Sketch]) -> Evaluation
             p = Sketch(report_id=g.report_id, missing=("npcs",))
         compare(g, p, ev)
     return ev
+
+
+def evaluate_by_source(gold: Iterable[Sketch], predicted: dict[str, Sketch]) -> dict[str, Evaluation]:
+    """One evaluation per report source (the id's prefix: `dmvca`, `nhtsa`, ...)."""
+    groups: dict[str, list[Sketch]] = defaultdict(list)
+    for g in gold:
+        groups[g.report_id.split("-", 1)[0]].append(g)
+    return {src: evaluate(gs, predicted) for src, gs in sorted(groups.items())}
+
+
+def format_diagnostics(ev: Evaluation, by_source: dict[str, Evaluation] | None = None, *, top: int = 12) -> str:
+    """Where the extractor fails: the user's figure, refusals, the position confusion table, the most frequent
+    action-string errors, and the main slots per source."""
+    lines = [f"Conflict reproduced exactly (collision party category/position/lane/actions + AV start/actions + "
+             f"layout): {len(ev.conflict_ok)}/{len(ev.complete)} complete reports = {ev.conflict_rate:.1%}",
+             f"Over-refusals (complete in gold, `missing` predicted): {len(ev.over_refused)}"
+             + (f"  {', '.join(ev.over_refused[:6])}" if ev.over_refused else ""),
+             f"Under-refusals (incomplete in gold, predicted buildable): {len(ev.under_refused)}"
+             + (f"  {', '.join(ev.under_refused[:6])}" if ev.under_refused else ""), ""]
+    labels = sorted({x for pair_ in ev.positions for x in pair_}, key=lambda v: (v == "-", v))
+    conf = Counter(ev.positions)
+    width = max(7, *(len(x) + 1 for x in labels)) if labels else 7
+    lines.append("Position confusion (rows gold, columns predicted; '-' = no partner)")
+    lines.append(" " * width + "".join(f"{x:>{width}}" for x in labels))
+    for g in labels:
+        lines.append(f"{g:<{width}}" + "".join(f"{(conf[(g, p)] or '.'):>{width}}" for p in labels))
+    for slot in ("npc_events", "ego_actions"):
+        errs = Counter((g, p) for g, p, _ in ev.slots[slot].misses)
+        if errs:
+            lines += ["", f"Most frequent {slot} errors (gold -> predicted x count)"]
+            lines += [f"  {g:>8} -> {p:<8} x{k}" for (g, p), k in errs.most_common(top)]
+    if by_source:
+        keys = ("npc_quantity", "npc_type", "npc_position", "npc_events", "obstacle_quantity", "completeness")
+        lines += ["", "Per source" + " " * 8 + "".join(f"{k[:13]:>14}" for k in keys) + "      conflict"]
+        for src, e in by_source.items():
+            lines.append(f"  {src:<8}({e.reports:>3})  " + "".join(f"{e.accuracy(k):>14.1%}" for k in keys)
+                         + f"  {len(e.conflict_ok):>4}/{len(e.complete):<4}")
+    return "\n".join(lines)
 
 
 def format_table(ev: Evaluation, *, worst: int = 4, examples: int = 6) -> str:
