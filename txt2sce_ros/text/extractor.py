@@ -16,6 +16,7 @@ from . import fastre as fre
 from .actions import find_acts
 from .mentions import find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
+from .relations import place
 from .scene import environment, is_junction, road, signal_state
 from .sequences import collision_type, ego_sequence, prepend_modifier_acts, sequence
 from .story import (BOILERPLATE, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
@@ -66,6 +67,8 @@ def extract(text: str, report_id: str) -> Sketch:
     behind: set[str] = set()
     for k, e in enumerate(parties, 1):
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
+        placed = place(d, e, (pos, lane), ego_actions)
+        pos, lane = placed.position, placed.lane
         if pos == "R6":
             behind |= e.heads
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]

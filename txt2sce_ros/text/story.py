@@ -301,8 +301,10 @@ def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
     parts += [m.group(1) for m in _EGOS_PART.finditer(s)]
     text = " ".join(parts).lower()
-    fore = "rear" if fre.search(r"\brear\b|\bback\b|\btail", text) else "front" if fre.search(r"\bfront\b|\bhood\b",
-                                                                                          text) else None
+    rear = fre.search(r"\brear\b|\bback\b|\btail", text)
+    front = fre.search(r"\bfront\b|\bhood\b", text)
+    # "the driver side front and rear passenger door": both halves touched, neither end decides.
+    fore = None if (rear and front) else "rear" if rear else "front" if front else None
     side = "left" if fre.search(r"\bdriver|\bleft\b", text) else "right" if fre.search(r"\bpassenger|\bright\b",
                                                                                      text) else None
     return fore, side

@@ -1,0 +1,187 @@
+"""A party's place relative to the AV, read from the scene as a person reads it, with explicit precedence.
+
+`positions.party_position` gives a first reading from phrase patterns. Here the evidence a person weighs is
+gathered as `Cue`s, each from one kind of fact the narrative states about the party:
+
+| kind | values | read from |
+|---|---|---|
+| `lane` | left / right / same | "in the lane to the left of EGO", "left adjacent lane", "bike lane" (right), "on EGO's right" |
+| `along` | behind / ahead | "behind", "following", "from the rear", "ahead of EGO", "in front of EGO" |
+| `passing` | behind (+ side) | "passing/overtaking EGO on the left": a same-direction party that passes comes from behind |
+| `contact` | front / rear, left / right | the part of the AV the party touched ("left rear corner", "passenger door") |
+| `direction` | opposite | "oncoming", "opposite direction", opposed compass headings |
+
+and combined in a fixed order, highest first, so a rule can be read and its weight seen:
+
+1. A party travelling the other way keeps the first reading (R2 at a junction, R7 elsewhere).
+2. Along the AV's road (R5/R6): an explicit `along` cue decides front/behind; else `passing` (behind); else the
+   contact on the AV's rear half (behind) or front half (ahead) for a party not backing up; else the first reading.
+3. The lane: an explicit `lane` cue; else the side the `passing` cue names; else the side of the AV the party
+   touched, for a contact on the AV's side (not a squarely rear or front bumper hit); else the first reading.
+
+Each decision records the rule that made it and the cue spans (offsets into the normalised text) as evidence.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from . import fastre as fre
+from .fastre import compile_gated
+from .mentions import Entity
+from .story import TURN_WORDS, Doc, context, ego_contact_part
+
+_SIDE = r"(left|right|driver(?:'s)?|passenger)"
+# Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
+_LANE_CUES = compile_gated(
+    r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+)?(left|right)(?:\s+of\s+(?:EGO|it))?|"
+    r"\b(left|right)(?:-hand|most)?\s+(?:adjacent\s+|neighbou?ring\s+|parallel\s+)?(?:travel\s+)?lane\b|"
+    r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
+    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+EGO\b|\bon\s+(?:EGO's|its)\s+(left|right)\b|"
+    r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
+    r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder)\b", re.I)
+# A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
+_PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
+_BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
+# A lane the party moved into is where it went, not where it was.
+_INTO = compile_gated(r"\b(?:into|onto|entered|entering|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
+_SAME_LANE = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
+                           r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO)\b", re.I)
+_BEHIND = compile_gated(r"\b(?:behind\s+(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
+                        r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
+                        r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv)))", re.I)
+_AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO)\b", re.I)
+_PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
+                         r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
+                         r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
+_ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
+                          r"\bon-?coming\b", re.I)
+_BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
+
+
+@dataclass(frozen=True)
+class Cue:
+    kind: str  # "lane", "along", "passing", "contact", "direction"
+    value: str
+    span: tuple[int, int]  # offsets into the normalised text (Doc.text)
+
+
+@dataclass(frozen=True)
+class Placement:
+    position: str
+    lane: str | None
+    rule: str  # which cue decided it ("first reading" when none did)
+    cues: tuple[Cue, ...]
+
+
+def _side(word: str | None) -> str | None:
+    if not word:
+        return None
+    w = word.lower()
+    if w.startswith(("left", "driver")):
+        return "left"
+    if w.startswith(("right", "passenger")):
+        return "right"
+    if w.startswith(("bike", "bicycle", "sidewalk", "parking", "curb", "shoulder")):
+        return "right"  # right-hand traffic: bike lanes, curbs and sidewalks lie to the right
+    return None
+
+
+def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
+    """(sentence, start, end) windows where the text speaks of the party before the contact: from its mention to the
+    next other party named (or the sentence end), and the clause leading up to it."""
+    out = []
+    for m in e.mentions:
+        if m.sent in d.summary and any(x.sent not in d.summary for x in e.mentions):
+            continue
+        s = d.sents[m.sent]
+        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and x.kind in ("party", "obstacle")
+               and x.entity != e.idx]
+        end = min(nxt) if nxt else len(s)
+        # The words just before the name belong to it only within its clause ("As EGO proceeded in the far right
+        # lane, an SUV ..." places the AV, not the SUV).
+        pre = s[max(0, m.start - 40):m.start]
+        cut = list(fre.finditer(r"[,;]|\b(?:when|as|while|and|then|after|before)\b", pre, re.I))
+        start = max(0, m.start - 40) + (cut[-1].end() if cut else 0)
+        out.append((m.sent, start, end))
+    return out
+
+
+def _sent_offset(d: Doc, sent: int) -> int:
+    """Offset of sentence `sent` in `d.text` (sentences are consecutive substrings of the normalised text)."""
+    return d.text.find(d.sents[sent][:40]) if sent < len(d.sents) else 0
+
+
+def gather(d: Doc, e: Entity) -> list[Cue]:
+    """Every cue the narrative states about party `e`, in text order."""
+    cues: list[Cue] = []
+    for sent, a, b in _mention_windows(d, e):
+        s = d.sents[sent]
+        win = TURN_WORDS.sub(lambda m: " " * len(m.group(0)), s[a:b])
+        base = _sent_offset(d, sent) + a
+        for m in _LANE_CUES.finditer(win):
+            side = _side(next(g for g in m.groups() if g))
+            if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
+                cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
+        for m in _SAME_LANE.finditer(win):
+            if not _INTO.search(win[max(0, m.start() - 25):m.start()]):
+                cues.append(Cue("lane", "same", (base + m.start(), base + m.end())))
+        for m in _BEHIND.finditer(win):
+            cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
+        for m in _AHEAD.finditer(win):
+            cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
+        for m in _PASSING.finditer(win):
+            cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
+        for m in _ONCOMING.finditer(win):
+            cues.append(Cue("direction", "opposite", (base + m.start(), base + m.end())))
+    if e.idx == d.partner and d.contact_sent is not None:
+        fore, _ = ego_contact_part(d)
+        s = d.sents[d.contact_sent]
+        base = _sent_offset(d, d.contact_sent)
+        body = _BODY_SIDE.search(s)
+        side = _side(next((g for g in body.groups() if g), None)) if body else None
+        span = (base + body.start(), base + body.end()) if body else (base, base + len(s))
+        cues.append(Cue("contact", f"{fore or ''}/{side or ''}", span))
+    return cues
+
+
+def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
+    """Cues said after the party's name (its own phrase) before those said before it, nearest first."""
+    starts = sorted(_sent_offset(d, m.sent) + m.end for m in e.mentions)
+
+    def key(c: Cue) -> tuple[int, int]:
+        after = [c.span[0] - p for p in starts if c.span[0] >= p]
+        return (0, min(after)) if after else (1, min(abs(p - c.span[1]) for p in starts))
+    return sorted(cues, key=key)
+
+
+def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) -> Placement:
+    """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
+    pos, lane = first
+    cues = gather(d, e)
+    if pos not in ("R5", "R6"):
+        return Placement(pos, lane, "first reading", tuple(cues))
+    if any(c.kind == "direction" for c in cues):
+        return Placement(pos, lane, "first reading", tuple(cues))
+    rule = "first reading"
+    backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(context(d, e)))
+    along = [c for c in cues if c.kind == "along"]
+    passing = [c for c in cues if c.kind == "passing"]
+    contact = next((c for c in cues if c.kind == "contact"), None)
+    fore, cside = (contact.value.split("/") if contact else ("", ""))
+    if along:
+        pos, rule = ("R6" if along[0].value == "behind" else "R5"), "along"
+    elif passing and not backing and "k" not in ego_actions:
+        pos, rule = "R6", "passing"
+    elif fore == "rear" and not backing and "k" not in ego_actions:
+        pos, rule = "R6", "contact on the AV's rear"
+    lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
+    pass_side = next((c.value for c in passing if c.value), "")
+    if lanes:
+        lane, rule = lanes[0].value, rule + "; lane"
+    elif pass_side:
+        lane, rule = pass_side, rule + "; passing side"
+    elif cside and lane == "same":
+        lane, rule = cside, rule + "; contact side"
+    return Placement(pos, lane, rule, tuple(cues))
