@@ -21,6 +21,9 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
+    ("O", r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
+          r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
+          r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
@@ -42,12 +45,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"into\s+the\s+(?:left|center|middle)\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered)\s+(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
-          r"(?:to\s+the\s+)?left\b"),
+          r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
+          r"double\s+(?:yellow|solid)|median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
           r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
-          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b"),
+          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
@@ -60,10 +64,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)?|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
           r"lanes)|\b(?:pull(?:ed|ing)\s+"
-          r"out\s+of|exit(?:ed|ing)|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+(?:\w+\s+)?(?:driveway|"
+          r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"
+          r"(?:\w+\s+)?(?:driveway|garage|"
           r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
           r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)"),
-    ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b"),
+    ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
+          r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:to|speed))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b|\bapplied\s+the\s+brakes?|\bhard\s+brak"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
@@ -78,9 +84,11 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
-    "i": ("began", "begin", "start", "forward", "proceed"), "f": ("left", "oncoming", "opposing", "opposite", "merg"),
+    "i": ("began", "begin", "start", "forward", "proceed"),
+    "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
+    "O": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
-    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding"),
+    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}

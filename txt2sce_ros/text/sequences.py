@@ -26,6 +26,12 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 c = "f"
         if c == "T":
             continue
+        if c == "O":
+            # Out of a parking spot at the curb: it stood, moved off, and moved left into the traffic lane.
+            if not codes:
+                start = "stopped"
+            codes += ["i", "f"]
+            continue
         if c == "S":
             if not codes and not any(x in _FORWARD for x in codes):
                 start = "stopped"
