@@ -77,4 +77,25 @@ def run(args: argparse.Namespace) -> int:
     print(f"offline extractor: {ext:.0f} reports/s wall, {ext_cpu:.0f} per CPU second "
           f"({'>=' if ext >= target else 'BELOW'} target {target} wall; load average "
           f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores)")
+    _scaling(rows, quick=getattr(args, "quick", False))
     return 0
+
+
+def _scaling(rows: list[dict], *, quick: bool) -> None:
+    """Time per character on one long narrative made of the dev texts, at growing lengths up to the limit: linear
+    time keeps the per-character cost flat (the baseline is the shortest length)."""
+    from ..text.extractor import MAX_NARRATIVE_CHARS, extract
+
+    joined = " ".join(r["text"] for r in rows)
+    while len(joined) < MAX_NARRATIVE_CHARS:
+        joined += " " + joined
+    sizes = [MAX_NARRATIVE_CHARS // 8, MAX_NARRATIVE_CHARS // 2] if quick else \
+        [MAX_NARRATIVE_CHARS // 8, MAX_NARRATIVE_CHARS // 4, MAX_NARRATIVE_CHARS // 2, MAX_NARRATIVE_CHARS]
+    base = None
+    print("scaling (one narrative, dev texts joined):")
+    for n in sizes:
+        t0 = time.process_time()
+        extract(joined[:n], "scaling")
+        per = (time.process_time() - t0) / n * 1e6
+        base = base or per
+        print(f"  {n:>8} chars  {per:6.1f} us/char CPU  x{per / base:.2f} of the {sizes[0]}-char cost")
