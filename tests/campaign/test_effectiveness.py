@@ -65,3 +65,49 @@ def test_a_combined_element_names_the_triggers_of_its_parts() -> None:
     assert not names_trigger("R2+a", stale.triggers) and not names_trigger("weather:rain", stale.triggers)
     cyclists = next(f for f in FAULTS if f.name == "ignore_cyclists")
     assert not names_trigger("R5+m", cyclists.triggers)
+
+
+def test_draws_are_seeded_random_subsets(seed_files: list[Path]) -> None:
+    from txt2sce_ros.campaign.effectiveness import draw_seeds
+
+    draws = draw_seeds(seed_files, 3, 4, draw_seed=7)
+    assert len(draws) == 4 and all(len(d) == 3 and len(set(d)) == 3 for d in draws)
+    assert all(set(d) <= set(seed_files) for d in draws)
+    assert draw_seeds(list(reversed(seed_files)), 3, 4, draw_seed=7) == draws     # listing order does not matter
+    assert len({tuple(d) for d in draws}) > 1                                     # draws differ from each other
+    assert draw_seeds(seed_files, 3, 4, draw_seed=8) != draws                     # and with the draw seed
+
+
+def test_study_over_draws_assesses_each_draw_on_its_own_trees(seed_dir: Path, tmp_path: Path) -> None:
+    from txt2sce_ros.campaign.effectiveness import format_draws, run_draws
+
+    cfg = StudyConfig(out=tmp_path / "draws", seeds=1, nodes=4, time_limit=TIME_LIMIT,
+                      faults=("no_start_when_close",), workers=2, progress=False, draws=3, draw_seed=1)
+    draws = run_draws([seed_dir], cfg)
+    assert [d.index for d in draws] == [0, 1, 2] and all(len(d.seeds) == 1 for d in draws)
+    data = json.loads((tmp_path / "draws" / "effectiveness.json").read_text(encoding="utf-8"))
+    assert [d["seeds"] for d in data["draws"]] == [list(d.seeds) for d in draws]
+    # each draw counts only the scenarios of its own seed's tree
+    trees = {p.name for p in (tmp_path / "draws" / "trees").iterdir() if p.is_dir()}
+    assert trees == {Path(s).stem for d in draws for s in d.seeds}
+    for d, entry in zip(draws, data["draws"]):
+        tree = tmp_path / "draws" / "trees" / Path(d.seeds[0]).stem
+        assert entry["scenarios"] == len(list((tree / "nodes").glob("*.xosc")))
+    text = format_draws(draws)
+    assert text.splitlines()[-2].startswith("min") and text.splitlines()[-1].startswith("med")
+    assert run_draws([seed_dir], cfg) == draws                                    # resumed: same results
+
+
+def test_format_draws_prints_min_and_median() -> None:
+    from txt2sce_ros.campaign.effectiveness import DrawResult, EffectivenessRow, format_draws
+
+    def row(found: bool, rank: int | None) -> EffectivenessRow:
+        return EffectivenessRow("f", "Collisions", found, 1, 0, int(found), "-", rank)
+
+    draws = [DrawResult(0, ("a",), (row(True, 1), row(True, 2))), DrawResult(1, ("b",), (row(False, None),
+             row(True, None))), DrawResult(2, ("c",), (row(True, 1), row(True, 1)))]
+    lines = format_draws(draws).splitlines()
+    assert lines[2].split()[1:3] == ["2/2", "1/2"] and lines[2].endswith("1 2")
+    assert lines[3].endswith("- x")
+    assert lines[-2].split()[1:3] == ["1/2", "0/2"]            # min found, min right-first
+    assert lines[-1].split()[1:3] == ["2/2", "1/2"]            # medians

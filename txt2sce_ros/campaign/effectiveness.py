@@ -102,6 +102,8 @@ class StudyConfig:
     faults: tuple[str, ...] = tuple(f.name for f in FAULTS)
     seed: int = 0
     progress: bool = True
+    draws: int = 0                  # random draws of `seeds` seeds (0: one covering pick, `pick_seeds`)
+    draw_seed: int = 0              # seeds the draws' Generator
 
 
 def pick_seeds(seed_files: Sequence[Path], n: int) -> list[Path]:
@@ -123,11 +125,118 @@ def pick_seeds(seed_files: Sequence[Path], n: int) -> list[Path]:
     return chosen
 
 
+def draw_seeds(seed_files: Sequence[Path], n: int, draws: int, draw_seed: int) -> list[list[Path]]:
+    """`draws` independent random draws of `n` seeds each (without replacement within a draw), from a Generator
+    seeded by `draw_seed`: the honest test of whether the study finds the faults from *any* seeds, not only from
+    seeds picked to hold the triggers. Files are sorted first, so the draws do not depend on listing order."""
+    import numpy as np
+
+    files = sorted(seed_files)
+    rng = np.random.default_rng(np.random.SeedSequence([int(draw_seed), 0x64726177]))
+    k = min(n, len(files))
+    return [[files[int(i)] for i in sorted(rng.choice(len(files), size=k, replace=False))] for _ in range(draws)]
+
+
+@dataclass(frozen=True)
+class DrawResult:
+    """One draw of a study: the seeds drawn and one row per fault."""
+
+    index: int
+    seeds: tuple[str, ...]
+    rows: tuple[EffectivenessRow, ...]
+
+    @property
+    def found(self) -> int:
+        return sum(r.found for r in self.rows)
+
+    @property
+    def right_first(self) -> int:
+        return sum(r.right_rank == 1 for r in self.rows)
+
+
+def format_draws(draws: Sequence[DrawResult]) -> str:
+    """One line per draw (found, right trigger first, each fault's rank: `-` = not found, `x` = found but the
+    right trigger unranked), then the minimum and median over draws."""
+    import statistics
+
+    if not draws:
+        return "no draws"
+    names = [r.fault for r in draws[0].rows]
+    n = len(names)
+    out = ["per fault: " + ", ".join(f"{i + 1}={name}" for i, name in enumerate(names)),
+           f"{'draw':<5} {'found':>6} {'right 1st':>9}  ranks"]
+    for d in draws:
+        ranks = " ".join("-" if not r.found else ("x" if r.right_rank is None else str(r.right_rank))
+                         for r in d.rows)
+        out.append(f"{d.index:<5} {d.found:>4}/{n} {d.right_first:>7}/{n}  {ranks}")
+    found = [d.found for d in draws]
+    first = [d.right_first for d in draws]
+    out.append(f"{'min':<5} {min(found):>4}/{n} {min(first):>7}/{n}")
+    out.append(f"{'med':<5} {statistics.median(found):>4g}/{n} {statistics.median(first):>7g}/{n}")
+    return "\n".join(out)
+
+
+def _seed_dir(inputs: Sequence[str | Path], ccfg: Any) -> Path:
+    """Reports or sketches are brought to a seed directory under the study directory; a seed directory is used as
+    it is."""
+    from ..errors import InputError
+    from .pipeline import detect_stage, extract_stage, seed_stage
+
+    stage = detect_stage(inputs)
+    if stage == "reports":
+        sketches, _ = extract_stage(inputs, ccfg)
+        inputs, stage = [sketches], "sketches"
+    if stage == "sketches" and len(inputs) > 1:
+        # several sketch sets (dev_gold + dev_gold_study) are one pool to draw from
+        joined = ccfg.out / "sketches_joined.jsonl"
+        joined.write_text("".join(Path(f).read_text(encoding="utf-8").rstrip("\n") + "\n" for f in inputs),
+                          encoding="utf-8")
+        inputs = [joined]
+    if stage == "sketches":
+        seed_dir, _ = seed_stage(Path(inputs[0]), ccfg)
+        inputs, stage = [seed_dir], "seeds"
+    if stage != "seeds":
+        raise InputError(f"effectiveness starts from reports, sketches or a seed directory, not {stage}",
+                         source=str(inputs[0]))
+    return Path(inputs[0])
+
+
+def _chosen_seeds(seed_dir: Path, cfg: StudyConfig) -> list[list[Path]]:
+    """The seeds of every draw (one covering pick without draws). Stored on first use, so a resumed study grows
+    the same trees whatever a changed feature reader or seed set would pick now."""
+    picked = cfg.out / "picked_seeds"
+    record = picked / "draws.json"
+    if record.is_file():
+        return [[Path(f) for f in d] for d in json.loads(record.read_text(encoding="utf-8"))["draws"]]
+    if not cfg.draws and (picked / "manifest.json").is_file():   # a study written before draws existed
+        return [[Path(e["file"]) for e in json.loads((picked / "manifest.json").read_text(encoding="utf-8"))["built"]]]
+    manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
+    files = [seed_dir / e["file"] for e in manifest["built"]]
+    if cfg.draws:
+        draws = draw_seeds(files, cfg.seeds, cfg.draws, cfg.draw_seed)
+    else:
+        draws = [pick_seeds(files, cfg.seeds)]
+    union = sorted({p.resolve() for d in draws for p in d})
+    picked.mkdir(parents=True, exist_ok=True)
+    # the tree stage reads a seed manifest: the union of all draws, each tree grown once
+    (picked / "manifest.json").write_text(json.dumps(
+        {"built": [{"file": str(p)} for p in union], "refused": []}, indent=1), encoding="utf-8")
+    record.write_text(json.dumps({"draws": [[str(p.resolve()) for p in d] for d in draws],
+                                  "draw_seed": cfg.draw_seed}, indent=1), encoding="utf-8")
+    return [[p.resolve() for p in d] for d in draws]
+
+
 def run_study(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[EffectivenessRow]:
     """Reports/sketches/seeds -> trees from a few covering seeds -> every scenario nominal and with each fault
-    (one resumable store; nominal runs are shared by all faults) -> one row per fault."""
-    from ..errors import InputError
-    from .pipeline import CampaignConfig, detect_stage, extract_stage, seed_stage, tree_stage
+    (one resumable store; nominal runs are shared by all faults) -> one row per fault. With `cfg.draws`, the
+    rows of the first draw (`run_draws` gives them all)."""
+    return list(run_draws(inputs, cfg)[0].rows)
+
+
+def run_draws(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[DrawResult]:
+    """The study once per draw of seeds (once, on covering seeds, without `cfg.draws`). Trees and runs are shared
+    by draws that share a seed (one store); each draw is assessed on its own trees only."""
+    from .pipeline import CampaignConfig, tree_stage
     from .runs import make_tasks, run_all
     from .store import ResultStore
 
@@ -138,28 +247,8 @@ def run_study(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[Effectiven
     cfg.out.mkdir(parents=True, exist_ok=True)
     ccfg = CampaignConfig(out=cfg.out, seed=cfg.seed, mutations=cfg.mutations, max_nodes=cfg.nodes,
                           executor=cfg.executor, workers=cfg.workers, progress=cfg.progress)
-    stage = detect_stage(inputs)
-    if stage == "reports":
-        sketches, _ = extract_stage(inputs, ccfg)
-        inputs, stage = [sketches], "sketches"
-    if stage == "sketches":
-        seed_dir, _ = seed_stage(Path(inputs[0]), ccfg)
-        inputs, stage = [seed_dir], "seeds"
-    if stage != "seeds":
-        raise InputError(f"effectiveness starts from reports, sketches or a seed directory, not {stage}",
-                         source=str(inputs[0]))
-    seed_dir = Path(inputs[0])
-    manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
-    picked = cfg.out / "picked_seeds"
-    if (picked / "manifest.json").is_file():
-        # resuming: the seeds the trees were grown from, whatever a changed feature reader would pick now
-        chosen = [Path(e["file"]) for e in json.loads((picked / "manifest.json").read_text(encoding="utf-8"))["built"]]
-    else:
-        chosen = pick_seeds([seed_dir / e["file"] for e in manifest["built"]], cfg.seeds)
-        picked.mkdir(exist_ok=True)
-        (picked / "manifest.json").write_text(json.dumps(
-            {"built": [{"file": str(p.resolve())} for p in chosen], "refused": []}, indent=1), encoding="utf-8")
-    tree_dir = tree_stage(picked, ccfg)
+    draws = _chosen_seeds(_seed_dir(inputs, ccfg), cfg)
+    tree_dir = tree_stage(cfg.out / "picked_seeds", ccfg)
 
     by_config: dict[str, list[Any]] = {}
     for fault in ("", *(s.name for s in specs)):
@@ -172,21 +261,35 @@ def run_study(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[Effectiven
 
     from ..analysis.features import elements_of_file
 
-    def cats(tasks: Sequence[Any]) -> dict[str, frozenset[str]]:
+    def cats(tasks: Sequence[Any], trees: set[str]) -> dict[str, frozenset[str]]:
         # errors are not judged: a scenario the player could not run counts for neither side
         return {f"{t.tree}/{t.scenario_id}": frozenset(stored[t.key].categories) for t in tasks
-                if t.key in stored and stored[t.key].verdict != "error"}
+                if t.tree in trees and t.key in stored and stored[t.key].verdict != "error"}
 
-    nominal = cats(by_config[""])
-    elements = {f"{t.tree}/{t.scenario_id}": elements_of_file(t.scenario_path) for t in by_config[""]}
-    rows, details = [], {}
-    for spec in specs:
-        row, lift = assess(spec, nominal, cats(by_config[spec.name]), elements)
-        rows.append(row)
-        details[spec.name] = {"row": asdict(row), "why": spec.why, "right_triggers": list(spec.triggers),
-                              "lift": [asdict(r) for r in lift[:10]]}
-    (cfg.out / "effectiveness.json").write_text(json.dumps(
-        {"scenarios": len(by_config[""]), "seeds": [p.name for p in chosen], "time_limit": cfg.time_limit,
-         "faults": details}, indent=1, sort_keys=True), encoding="utf-8")
-    (cfg.out / "effectiveness.txt").write_text(format_table(rows) + "\n", encoding="utf-8")
-    return rows
+    results: list[DrawResult] = []
+    report: list[dict[str, Any]] = []
+    for k, seeds in enumerate(draws):
+        trees = {p.stem for p in seeds}
+        nominal = cats(by_config[""], trees)
+        elements = {f"{t.tree}/{t.scenario_id}": elements_of_file(t.scenario_path) for t in by_config[""]
+                    if t.tree in trees}
+        rows, details = [], {}
+        for spec in specs:
+            row, lift = assess(spec, nominal, cats(by_config[spec.name], trees), elements)
+            rows.append(row)
+            details[spec.name] = {"row": asdict(row), "why": spec.why, "right_triggers": list(spec.triggers),
+                                  "lift": [asdict(r) for r in lift[:10]]}
+        results.append(DrawResult(k, tuple(p.name for p in seeds), tuple(rows)))
+        report.append({"draw": k, "scenarios": len(elements), "seeds": [p.name for p in seeds], "faults": details})
+    head = {"time_limit": cfg.time_limit, "nodes": cfg.nodes}
+    if cfg.draws:
+        (cfg.out / "effectiveness.json").write_text(json.dumps(
+            {**head, "draw_seed": cfg.draw_seed, "draws": report}, indent=1, sort_keys=True), encoding="utf-8")
+        (cfg.out / "effectiveness.txt").write_text(
+            "\n\n".join(f"draw {d.index}: {', '.join(d.seeds)}\n{format_table(d.rows)}" for d in results)
+            + "\n\n" + format_draws(results) + "\n", encoding="utf-8")
+    else:
+        (cfg.out / "effectiveness.json").write_text(json.dumps({**head, **report[0]}, indent=1, sort_keys=True),
+                                                    encoding="utf-8")
+        (cfg.out / "effectiveness.txt").write_text(format_table(results[0].rows) + "\n", encoding="utf-8")
+    return results

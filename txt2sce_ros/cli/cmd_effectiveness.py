@@ -17,6 +17,10 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", required=True, help="study directory (rerun the same command to resume)")
     parser.add_argument("--seeds", type=int, default=10, help="seeds grown into trees, picked to cover the most "
                                                               "scenario elements (default 10)")
+    parser.add_argument("--draws", type=int, default=0,
+                        help="draw the seeds at random this many times (each draw --seeds seeds) instead of "
+                             "picking covering seeds; prints each draw's result and the min and median over draws")
+    parser.add_argument("--draw-seed", type=int, default=0, help="seed of the random draws (default 0)")
     parser.add_argument("--nodes", type=int, default=150,
                         help="node budget per tree (default 150: a yellow light needs its dilemma-zone variants "
                              "under several parents; with 40 the study misses red_light_misread)")
@@ -33,13 +37,23 @@ def register(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..campaign.effectiveness import FAULTS, StudyConfig, format_table, run_study
+    from ..campaign.effectiveness import FAULTS, StudyConfig, format_draws, format_table, run_draws
+    from ..errors import InputError
+
+    if args.draws < 0 or args.seeds < 1:
+        raise InputError("--draws must be >= 0 and --seeds >= 1")
 
     cfg = StudyConfig(out=Path(args.out), seeds=args.seeds, nodes=args.nodes, mutations=args.mutations,
                       time_limit=args.time_limit, executor=args.executor, workers=args.workers,
                       faults=tuple(args.fault) or tuple(f.name for f in FAULTS), seed=args.seed,
-                      progress=not args.no_progress)
-    rows = run_study(args.inputs, cfg)
-    print(format_table(rows))
+                      progress=not args.no_progress, draws=args.draws, draw_seed=args.draw_seed)
+    draws = run_draws(args.inputs, cfg)
+    if args.draws:
+        for d in draws:
+            print(f"draw {d.index}: {', '.join(d.seeds)}")
+            print(format_table(d.rows) + "\n")
+        print(format_draws(draws))
+    else:
+        print(format_table(draws[0].rows))
     print(f"(details: {cfg.out / 'effectiveness.json'})")
     return 0
