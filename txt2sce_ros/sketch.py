@@ -77,6 +77,24 @@ ACTION_CODES: dict[str, str] = {
 }
 ACTION_NAMES: dict[str, str] = {name: code for code, name in ACTION_CODES.items()}
 
+#: What each action code means, in words (sketch.md, "Actions"): legends of the report and the review page.
+ACTION_MEANINGS: dict[str, str] = {
+    "a": "go straight", "b": "accelerate", "c": "decelerate", "d": "turn left", "e": "turn right",
+    "f": "change lane to the left", "g": "change lane to the right", "h": "stop", "i": "start from standstill",
+    "j": "U-turn", "k": "reverse", "l": "pull over / park", "m": "cross the AV's path",
+}
+
+#: What each relative position means, in the AV's frame (sketch.md, "Relative positions").
+POSITION_MEANINGS: dict[str, str] = {
+    "R1": "junction, crossing road to the AV's left",
+    "R2": "junction, opposite approach facing the AV",
+    "R3": "junction, crossing road to the AV's right",
+    "R4": "junction, the road the AV exits onto",
+    "R5": "same road and direction, ahead of or beside the AV",
+    "R6": "same road and direction, behind the AV",
+    "R7": "same road, oncoming",
+}
+
 
 def action_names(actions: str) -> list[str]:
     """The action string `"ad"` as names `["go_straight", "turn_left"]`; raises InputError on an unknown code."""

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+from pathlib import Path
 from typing import Mapping, Sequence
 
 import matplotlib
@@ -144,3 +145,26 @@ def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.n
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     return _png(fig)
+
+
+def lane_borders_near(scenario_file: str | Path, traj: Mapping[str, np.ndarray]) -> list[np.ndarray]:
+    """Borders of the driving lanes of the scenario's map within 60 m of the trajectories (a plot's background);
+    [] when the scenario names no map."""
+    from ..road import load_network
+    from ..scenario_source import logic_file
+
+    path = Path(scenario_file)
+    xodr = logic_file(path, path.read_bytes())
+    if xodr is None:
+        return []
+    net = load_network(str(xodr))
+    pts = np.vstack([t[:, 1:3] for t in traj.values() if len(t)])
+    lo, hi = pts.min(axis=0) - 60, pts.max(axis=0) + 60
+    borders = []
+    for rid, road in net.roads.items():
+        for lane_id in net.lane_ids(rid, 0.0, types=("driving",)):
+            left, right = net.lane_borders(rid, lane_id, ds=1.0)
+            for b in (left, right):
+                if len(b) and ((b >= lo) & (b <= hi)).all(axis=1).any():
+                    borders.append(b)
+    return borders

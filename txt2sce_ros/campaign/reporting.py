@@ -45,7 +45,7 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
     """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
     import numpy as np
 
-    from ..analysis.plots import trajectory_plot
+    from ..analysis.plots import lane_borders_near, trajectory_plot
     from ..closed_loop import run_closed_loop
 
     picked: list[dict[str, Any]] = []
@@ -63,7 +63,7 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
                                        time_limit=time_limit)
         if traj is None:
             continue
-        lanes = _lane_borders(r["file"], traj)
+        lanes = lane_borders_near(r["file"], traj)
         marks = []
         for v in record.details.get("violations", []):
             if len(marks) >= 3:
@@ -80,30 +80,6 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
         caption = f"{where}: {', '.join(r['categories'])}"
         out.append((caption, trajectory_plot(traj, lanes, caption, marks)))
     return out
-
-
-def _lane_borders(scenario_file: str, traj: dict[str, Any]) -> list[Any]:
-    """Borders of the driving lanes near the trajectories (for the plot background)."""
-    import numpy as np
-
-    from ..road import load_network
-    from ..scenario_source import logic_file
-
-    path = Path(scenario_file)
-    xodr = logic_file(path, path.read_bytes())
-    if xodr is None:
-        return []
-    net = load_network(str(xodr))
-    pts = np.vstack([t[:, 1:3] for t in traj.values() if len(t)])
-    lo, hi = pts.min(axis=0) - 60, pts.max(axis=0) + 60
-    borders = []
-    for rid, road in net.roads.items():
-        for lane_id in net.lane_ids(rid, 0.0, types=("driving",)):
-            left, right = net.lane_borders(rid, lane_id, ds=1.0)
-            for b in (left, right):
-                if len(b) and ((b >= lo) & (b <= hi)).all(axis=1).any():
-                    borders.append(b)
-    return borders
 
 
 def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path,

@@ -86,27 +86,35 @@ def check_frames(frames: Iterable, target: str) -> tuple[str, float | None, floa
 
 def check_seed(result: SeedResult, *, dt: float = 0.05, target: str | None = None) -> FidelityResult:
     """Run one generated seed in the player (storyboard AV) and judge it."""
-    from scenario_player import Simulation, SimulationConfig, load_scenario
-
     tgt = target or result.manifest.get("fidelity_target")
-    if tgt is None:
-        return FidelityResult(result.report_id, None, False, "no_target", None, None, None, "nothing to meet")
     with tempfile.TemporaryDirectory(prefix="txt2sce_fid_") as tmp:
         path = Path(tmp) / "seed.xosc"
         path.write_bytes(result.xosc)
-        try:
-            scenario = load_scenario(path, source=result.report_id)
-            sim = Simulation(scenario, SimulationConfig(dt=dt, ego_mode="storyboard",
-                                                        time_limit=result.plan.time_limit))
-            frames = [sim.reset()]
-            while not sim.done:
-                frames.append(sim.step(None))
-        except Txt2SceError as exc:
-            return FidelityResult(result.report_id, tgt, False, "error", None, None, None, str(exc))
+        res, _ = check_file(path, tgt, report_id=result.report_id, dt=dt, time_limit=result.plan.time_limit)
+    return res
+
+
+def check_file(path: str | Path, target: str | None, *, report_id: str | None = None, dt: float = 0.05,
+               time_limit: float | None = None) -> tuple[FidelityResult, dict[str, np.ndarray]]:
+    """Run a seed file in the player (storyboard AV) and judge it; also returns the trajectories (per entity: rows
+    of t, x, y, heading, speed) so a caller can draw what was judged. `time_limit` None: the player's default."""
+    from scenario_player import Simulation, SimulationConfig, load_scenario
+
+    rid = report_id or Path(path).stem
+    if target is None:
+        return FidelityResult(rid, None, False, "no_target", None, None, None, "nothing to meet"), {}
+    try:
+        scenario = load_scenario(path, source=rid)
+        sim = Simulation(scenario, SimulationConfig(dt=dt, ego_mode="storyboard", time_limit=time_limit))
+        frames = [sim.reset()]
+        while not sim.done:
+            frames.append(sim.step(None))
+    except Txt2SceError as exc:
+        return FidelityResult(rid, target, False, "error", None, None, None, str(exc)), {}
     unsupported = "; ".join(sim.unsupported[:3])
-    kind, when, gap, tt = check_frames(frames, tgt)
-    return FidelityResult(result.report_id, tgt, kind in ("contact", "ttc"), kind, when, gap, tt,
-                          f"unsupported: {unsupported}" if unsupported else "")
+    kind, when, gap, tt = check_frames(frames, target)
+    return (FidelityResult(rid, target, kind in ("contact", "ttc"), kind, when, gap, tt,
+                           f"unsupported: {unsupported}" if unsupported else ""), sim.trajectory)
 
 
 def fidelity_batch(items: Iterable[Sketch | ErrorRecord], *, seed: int = 0, maps: str | Path | None = None,
