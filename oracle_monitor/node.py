@@ -55,6 +55,7 @@ SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, dura
 #: (one odometry per entity per step); a keep-last history that overflows drops frames from the middle of a run.
 STREAM_QOS = QoSProfile(depth=5000, reliability=ReliabilityPolicy.RELIABLE)
 VIOLATIONS_QOS = QoSProfile(depth=1000, reliability=ReliabilityPolicy.RELIABLE)
+VIEW_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 
 #: Shutdown drain: stop taking messages once none came for this long (s), or after this long in all (s) — below
 #: the launcher's 10 s grace before it escalates to SIGTERM.
@@ -81,6 +82,11 @@ class OracleMonitorNode(Node):
         self.verdict_count = 0
         self.received = 0                 # messages taken (the shutdown drain watches it)
         self.pub = self.create_publisher(DiagnosticArray, c.TOPIC_VIOLATIONS, VIOLATIONS_QOS)
+        # The view topics (the road, goal and light markers) are recorded only, never decoded: latched, so a
+        # monitor that matches after the player published them still gets them.
+        for topic in c.VIEW_TOPICS:
+            self.create_subscription(message_class(TOPIC_TYPES[topic]), topic,
+                                     lambda data, topic=topic: self._on_view(topic, data), VIEW_QOS, raw=True)
         # The ego topic last: endpoints are announced in creation order, so a player that sees this node on the
         # ego topic (its `await_subscribers`) knows all its other subscriptions, and waits until they matched.
         for topic in sorted(c.CONTRACT_TOPICS, key=lambda t: t == c.TOPIC_EGO_ODOM):
@@ -108,6 +114,10 @@ class OracleMonitorNode(Node):
             self.session.on_message(topic, msg)
         except (Txt2SceError, ValueError, KeyError, TypeError) as exc:
             self.get_logger().error(f"bad message on {topic}: {exc}")
+
+    def _on_view(self, topic: str, data: bytes) -> None:
+        self.received += 1
+        self._record(topic, data)
 
     def _record(self, topic: str, data: bytes) -> None:
         if self.bag_dir is None:

@@ -4,7 +4,8 @@ a planner under test, Foxglove, a second monitor.
 `schedule()` is the timing core (no rclpy): each message's wall-clock offset from the start, (log time - first log
 time) / rate. `replay_bag()` publishes the recorded CDR bytes unchanged (rclpy publishes serialized bytes as they
 are), so what consumers receive is exactly what was recorded. `/txt2sce/scenario` is offered transient-local, as
-the generator offers it, so a consumer that subscribes late still gets the scenario.
+the generator offers it, and so are the road and scenario markers (depth 1, as the player offers them), so a
+consumer that subscribes late still gets the scenario, and a viewer joining mid-replay still draws the road.
 """
 
 from __future__ import annotations
@@ -58,11 +59,12 @@ def replay_bag(path: str | Path, *, rate: float = 1.0, topics: frozenset[str] | 
     publishers: dict[str, Any] = {}
     normal = QoSProfile(depth=100, reliability=ReliabilityPolicy.RELIABLE)
     latched = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    view = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     # Read the whole recording first: publishers exist before the first message and discovery can complete.
     msgs = [m for m in reading.messages(topics) if m.topic != c.TOPIC_VIOLATIONS or topics is not None]
     for m in msgs:
         if m.topic not in publishers:
-            qos = latched if m.topic == c.TOPIC_SCENARIO else normal
+            qos = latched if m.topic == c.TOPIC_SCENARIO else view if m.topic in c.VIEW_TOPICS else normal
             publishers[m.topic] = node.create_publisher(message_class(m.msgtype), m.topic, qos)
     deadline = time.monotonic() + discovery_timeout
     while time.monotonic() < deadline and not any(p.get_subscription_count() for p in publishers.values()):

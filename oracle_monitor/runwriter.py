@@ -3,6 +3,8 @@
 `RunWriter` turns contract records into the messages the player, planner and monitor publish (via `ros_io`), in
 the lock-step order of `contract.py` — /clock, /sim/traffic_lights, one /sim/objects/odom per entity,
 /sim/objects/markers, /sim/ego/odom, then the planner's /control/command — and writes them to a `BagRecorder`.
+Like the player node it records the road once per run (/sim/map/markers, the same cached bytes the node
+publishes) and the goal and light markers (/sim/scenario/markers) at the start and when a light changes.
 So an in-process campaign run gets the same recording a node-graph run gets, and `txt2sce judge` re-judges both.
 """
 
@@ -16,7 +18,8 @@ from rclpy.serialization import serialize_message
 
 from txt2sce_ros import contract as c
 from txt2sce_ros import ros_io
-from txt2sce_ros.contract import ControlCommand, Frame, Goal, RunStatus, ScenarioEnvelope
+from txt2sce_ros.contract import ControlCommand, Frame, Goal, RunStatus, ScenarioEnvelope, TrafficLightState
+from txt2sce_ros.road import RoadNetwork
 
 from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
@@ -39,11 +42,16 @@ class RunWriter:
         self._k = 0
         self._steps: list[tuple[int, Frame, ControlCommand | None]] = []
         self._drained = time.monotonic()
+        self._goal: Goal | None = None
+        self._shown_lights: tuple[TrafficLightState, ...] | None = None
 
     def _w(self, topic: str, msg: object) -> None:
+        self._raw_ordered(topic, serialize_message(msg))
+
+    def _raw_ordered(self, topic: str, data: bytes) -> None:
         if self._steps:
             self._drain()                         # keep the order of the stream
-        self._raw(topic, serialize_message(msg))
+        self._raw(topic, data)
 
     def _raw(self, topic: str, data: bytes) -> None:
         ns = None
@@ -52,9 +60,19 @@ class RunWriter:
             self._k += 1
         self.rec.write(topic, data, log_time_ns=ns)
 
-    def begin(self, envelope: ScenarioEnvelope | None, goal: Goal | None, scenario_id: str = "") -> None:
+    def begin(self, envelope: ScenarioEnvelope | None, goal: Goal | None, scenario_id: str = "", *,
+              network: RoadNetwork | None = None, lights: tuple[TrafficLightState, ...] = ()) -> None:
+        """Start a run: its envelope, then (given the network) the road and the goal and `lights` markers, the
+        'started' status and the goal, in the order the player node publishes them."""
+        if self._steps:
+            self._drain()                         # the previous run's steps, with the previous run's goal
         if envelope is not None:
             self._w(c.TOPIC_SCENARIO, ros_io.string_msg(envelope.to_json()))
+        self._goal, self._shown_lights = goal, None
+        if network is not None:
+            self._raw_ordered(c.TOPIC_MAP_MARKERS, ros_io.road_markers_bytes(network))
+            self._w(c.TOPIC_SCENARIO_MARKERS, ros_io.scenario_markers(goal, lights, 0.0))
+            self._shown_lights = lights
         sid = envelope.id if envelope else scenario_id
         self._w(c.TOPIC_RUN_STATUS, ros_io.string_msg(RunStatus(sid, "started").to_json()))
         if goal is not None:
@@ -75,6 +93,8 @@ class RunWriter:
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
         self._drained = time.monotonic()
+        self._goal: Goal | None = None
+        self._shown_lights: tuple[TrafficLightState, ...] | None = None
         for ns, frame, command in steps:
             self._encode(frame, command, ns)
 
@@ -86,6 +106,11 @@ class RunWriter:
                  (c.TOPIC_TRAFFIC_LIGHTS, cdr.encode_lights(frame.lights, frame.t))]
         items.extend((c.TOPIC_OBJECTS_ODOM, odom(obj)) for obj in frame.objects)
         items.append((c.TOPIC_OBJECTS_MARKERS, cdr.encode_markers(frame)))
+        if self._shown_lights is not None and frame.lights != self._shown_lights:
+            # A light changed: redraw the goal and lights (rare; the comparison is all a step pays).
+            items.append((c.TOPIC_SCENARIO_MARKERS,
+                          serialize_message(ros_io.scenario_markers(self._goal, frame.lights, frame.t))))
+            self._shown_lights = frame.lights
         items.append((c.TOPIC_EGO_ODOM, odom(frame.ego)))
         if command is not None:
             items.append((c.TOPIC_COMMAND, cdr.encode_command(command)))

@@ -15,8 +15,11 @@ TOPIC_TYPES: dict[str, str] = {
     c.TOPIC_GOAL: "geometry_msgs/msg/PoseStamped",
     c.TOPIC_COMMAND: "geometry_msgs/msg/TwistStamped",
     c.TOPIC_VIOLATIONS: "diagnostic_msgs/msg/DiagnosticArray",
+    c.TOPIC_MAP_MARKERS: "visualization_msgs/msg/MarkerArray",
+    c.TOPIC_SCENARIO_MARKERS: "visualization_msgs/msg/MarkerArray",
 }
 
-#: What the oracle reads to judge; the others (/clock, /control/command, /oracle/violations) are recorded only.
+#: What the oracle reads to judge; the others (/clock, /control/command, /oracle/violations, the view topics) are
+#: recorded only.
 JUDGED_TOPICS = frozenset({c.TOPIC_SCENARIO, c.TOPIC_RUN_STATUS, c.TOPIC_EGO_ODOM, c.TOPIC_OBJECTS_ODOM,
                            c.TOPIC_OBJECTS_MARKERS, c.TOPIC_TRAFFIC_LIGHTS, c.TOPIC_GOAL})

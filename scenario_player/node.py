@@ -6,7 +6,10 @@ parameter; they are queued and run one after the other.
 
 Per step k (lock-step protocol of txt2sce_ros.contract): `/clock`, `/sim/traffic_lights`, one `/sim/objects/odom`
 per entity, `/sim/objects/markers`, `/planning/goal`, then `/sim/ego/odom`; then the player waits for the
-`/control/command` stamped t_k and steps. Run life cycle on `/txt2sce/run_status` (JSON RunStatus: 'started',
+`/control/command` stamped t_k and steps. For viewers, once per scenario before its first frame: the road on
+`/sim/map/markers` (latched; the serialised message is built once per map), and the goal with the lights' states
+on `/sim/scenario/markers` (latched; again in a step whose lights changed state: a comparison per step, a message
+only on change). Run life cycle on `/txt2sce/run_status` (JSON RunStatus: 'started',
 then 'finished' with end_reason, verdict_hint and the unsupported elements).
 
 Parameters (defaults from config/player.yaml `node:`):
@@ -51,12 +54,14 @@ from visualization_msgs.msg import MarkerArray
 
 from txt2sce_ros.config import load_config
 from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL,
-                                  TOPIC_OBJECTS_MARKERS, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS, TOPIC_SCENARIO,
-                                  TOPIC_TRAFFIC_LIGHTS, ControlCommand, Frame, RunStatus, ScenarioEnvelope)
+                                  TOPIC_MAP_MARKERS, TOPIC_OBJECTS_MARKERS, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS,
+                                  TOPIC_SCENARIO, TOPIC_SCENARIO_MARKERS, TOPIC_TRAFFIC_LIGHTS, ControlCommand, Frame,
+                                  RunStatus, ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
 from txt2sce_ros.nodes.lifetime import node_lifetime
 from txt2sce_ros.ros_io import (clock_msg, entity_to_odometry, frame_to_markers, goal_to_pose, lights_to_diagnostics,
-                                stamp_key, string_msg, to_stamp, twist_to_command)
+                                road_markers_bytes, scenario_markers, stamp_key, string_msg, to_stamp,
+                                twist_to_command)
 
 from .simulation import Simulation, SimulationConfig
 from .syntax.scenario import load_scenario
@@ -104,12 +109,16 @@ class PlayerNode(Node):
         self.pub_goal = self.create_publisher(PoseStamped, TOPIC_GOAL, qos(10, latched=True))
         self.pub_ego = self.create_publisher(Odometry, TOPIC_EGO_ODOM, qos(depth))
         self.pub_status = self.create_publisher(String, TOPIC_RUN_STATUS, qos(50, latched=True))
+        self.pub_map = self.create_publisher(MarkerArray, TOPIC_MAP_MARKERS, qos(1, latched=True))
+        self.pub_scene = self.create_publisher(MarkerArray, TOPIC_SCENARIO_MARKERS, qos(1, latched=True))
         # What a run publishes, with its QoS: every subscription to these must have matched before a run starts.
         self.outputs = [
             (TOPIC_CLOCK, self.pub_clock, qos(10)), (TOPIC_TRAFFIC_LIGHTS, self.pub_lights, qos(depth)),
             (TOPIC_OBJECTS_ODOM, self.pub_objects, qos(depth)), (TOPIC_OBJECTS_MARKERS, self.pub_markers, qos(depth)),
             (TOPIC_GOAL, self.pub_goal, qos(10, latched=True)), (TOPIC_EGO_ODOM, self.pub_ego, qos(depth)),
             (TOPIC_RUN_STATUS, self.pub_status, qos(50, latched=True)),
+            (TOPIC_MAP_MARKERS, self.pub_map, qos(1, latched=True)),
+            (TOPIC_SCENARIO_MARKERS, self.pub_scene, qos(1, latched=True)),
         ]
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, qos(10, latched=True))
         self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
@@ -120,6 +129,7 @@ class PlayerNode(Node):
         self.commands: dict[int, ControlCommand] = {}
         self.latest: ControlCommand | None = None
         self.latest_wall = 0.0
+        self.shown_lights: tuple | None = None    # the lights last drawn on /sim/scenario/markers
 
     # -- callbacks ------------------------------------------------------------------------------------------------
     def _on_scenario(self, msg: String) -> None:
@@ -148,6 +158,9 @@ class PlayerNode(Node):
         for obj in frame.objects:
             self.pub_objects.publish(entity_to_odometry(obj))
         self.pub_markers.publish(frame_to_markers(frame))
+        if frame.lights != self.shown_lights:
+            self.pub_scene.publish(scenario_markers(sim.goal, frame.lights, t))
+            self.shown_lights = frame.lights
         if sim.goal is not None:
             self.pub_goal.publish(goal_to_pose(sim.goal, t))
         self.pub_ego.publish(entity_to_odometry(frame.ego))
@@ -216,6 +229,10 @@ class PlayerNode(Node):
         no_planner, others = self.wait_for_subscribers(executor, needs_planner)
         if others:
             self.get_logger().warn(f"run {env.id} starts although {others} (waited {self.startup_timeout:g} s)")
+        # The road and the goal for viewers, before 'started': a recorder then has them with the run's start.
+        self.pub_map.publish(road_markers_bytes(sim.network))
+        self.pub_scene.publish(scenario_markers(sim.goal, frame.lights, frame.t))
+        self.shown_lights = frame.lights
         self._status(replace(sim.status, state="started"))
         if no_planner:
             sim.abort("planner_not_responding")

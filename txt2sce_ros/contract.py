@@ -32,6 +32,8 @@ TOPIC_TRAFFIC_LIGHTS = "/sim/traffic_lights"  # diagnostic_msgs/DiagnosticArray,
 TOPIC_GOAL = "/planning/goal"                 # geometry_msgs/PoseStamped
 TOPIC_COMMAND = "/control/command"            # geometry_msgs/TwistStamped (linear.x speed, angular.z yaw rate)
 TOPIC_VIOLATIONS = "/oracle/violations"       # diagnostic_msgs/DiagnosticArray
+TOPIC_MAP_MARKERS = "/sim/map/markers"        # visualization_msgs/MarkerArray, the road; latched, once per scenario
+TOPIC_SCENARIO_MARKERS = "/sim/scenario/markers"  # visualization_msgs/MarkerArray, goal + light states; latched
 
 MAP_FRAME = "map"
 EGO_NAME = "ego"
@@ -41,6 +43,9 @@ CONTRACT_TOPICS = (
     TOPIC_SCENARIO, TOPIC_RUN_STATUS, TOPIC_CLOCK, TOPIC_EGO_ODOM, TOPIC_OBJECTS_ODOM, TOPIC_OBJECTS_MARKERS,
     TOPIC_TRAFFIC_LIGHTS, TOPIC_GOAL, TOPIC_COMMAND,
 )
+
+#: Topics for people watching (Foxglove, RViz): recorded and replayed, never needed to judge a run.
+VIEW_TOPICS = (TOPIC_MAP_MARKERS, TOPIC_SCENARIO_MARKERS)
 
 #: Categories of traffic participants (sketch vocabulary) and of static objects.
 PARTY_CATEGORIES = ("car", "van", "truck", "bus", "motorcycle", "bicycle", "scooter", "pedestrian")

@@ -15,17 +15,25 @@ recorder and by the offline judge. Encodings (also in the README's topic table):
 - `/control/command` — `geometry_msgs/TwistStamped`: twist.linear.x = speed to reach by the next step (m/s),
   twist.angular.z = yaw rate (rad/s); header.stamp = the time of the frame it answers.
 - `/planning/goal` — `geometry_msgs/PoseStamped` in `map`.
+- `/sim/map/markers` — `visualization_msgs/MarkerArray`, the road for viewers (once per scenario, latched): a
+  DELETEALL (clears the previous scenario's road), then one LINE_STRIP per polyline of `road.outline`: ns = kind
+  (`border`, `centre`, `stop_line`), text = `road <id> lane <id>`, points in `map` (z = 0), stamp t = 0.
+- `/sim/scenario/markers` — `visualization_msgs/MarkerArray`, what changes per scenario and during it (latched,
+  at the start and whenever a light changes state): a DELETEALL, the goal (ARROW, ns `goal`, and a flat CYLINDER of
+  the goal tolerance), one CYLINDER per traffic light at its stop line coloured by state (ns `traffic_light`,
+  text = `<signal id> <state>`).
 """
 
 from __future__ import annotations
 
 import math
+import weakref
 from collections import defaultdict
 from typing import Any, Iterable, Mapping
 
 from builtin_interfaces.msg import Time
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus, KeyValue
-from geometry_msgs.msg import PoseStamped, TwistStamped
+from geometry_msgs.msg import Point, PoseStamped, TwistStamped
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Clock
 from std_msgs.msg import String
@@ -42,6 +50,7 @@ from .contract import (
     SignalState,
     TrafficLightState,
 )
+from .road.outline import Polyline, outline_of
 
 # --- time ----------------------------------------------------------------------------------------------------------
 
@@ -218,6 +227,99 @@ def goal_to_pose(goal: Goal, t: float = 0.0) -> PoseStamped:
 def pose_to_goal(msg: PoseStamped, tolerance: float = 3.0) -> Goal:
     p = msg.pose.position
     return Goal(x=p.x, y=p.y, heading=quat_to_yaw(msg.pose.orientation), tolerance=tolerance)
+
+
+# --- what viewers draw: the road, the goal, the lights ----------------------------------------------------------
+
+#: Line width (m) and colour (r, g, b, a) per polyline kind; the centre lane's border (lane 0) is drawn yellow.
+_LINE_STYLE = {
+    "border": (0.12, (0.85, 0.85, 0.85, 1.0)),
+    "centre": (0.05, (0.35, 0.55, 0.9, 0.6)),
+    "stop_line": (0.4, (1.0, 1.0, 1.0, 1.0)),
+}
+_CENTRE_BORDER = (0.95, 0.8, 0.1, 1.0)
+_LIGHT_COLOURS = {"red": (1.0, 0.1, 0.1), "yellow": (1.0, 0.85, 0.0), "green": (0.1, 0.9, 0.2),
+                  "off": (0.4, 0.4, 0.4)}
+
+
+def _marker(kind: int, ns: str, marker_id: int, t: float) -> Marker:
+    m = Marker()
+    m.header.stamp = to_stamp(t)
+    m.header.frame_id = MAP_FRAME
+    m.ns, m.id, m.type, m.action = ns, marker_id, kind, Marker.ADD
+    m.pose.orientation.w = 1.0
+    return m
+
+
+def _delete_all(t: float) -> Marker:
+    m = _marker(Marker.ARROW, "", 0, t)
+    m.action = Marker.DELETEALL
+    return m
+
+
+def road_markers(lines: Iterable[Polyline], t: float = 0.0) -> MarkerArray:
+    """The road as line strips (see the module docstring); ids count up from 1 in the order of `lines`."""
+    markers = [_delete_all(t)]
+    for i, line in enumerate(lines, start=1):
+        m = _marker(Marker.LINE_STRIP, line.kind, i, t)
+        m.text = f"road {line.road_id} lane {line.lane_id}"
+        width, rgba = _LINE_STYLE.get(line.kind, _LINE_STYLE["border"])
+        if line.kind == "border" and line.lane_id == 0:
+            rgba = _CENTRE_BORDER
+        m.scale.x = width
+        m.color.r, m.color.g, m.color.b, m.color.a = rgba
+        m.points = [Point(x=x, y=y, z=0.0) for x, y in line.points.tolist()]
+        markers.append(m)
+    return MarkerArray(markers=markers)
+
+
+_ROAD_BYTES: "weakref.WeakKeyDictionary[Any, bytes]" = weakref.WeakKeyDictionary()
+
+
+def road_markers_bytes(net: Any) -> bytes:
+    """`road_markers` of a RoadNetwork's outline, serialised, once per network object: the message is the same for
+    every scenario on that map (stamp t = 0), and building it costs tens of ms on a large map, which a recorder
+    must not pay per run. The player node publishes these bytes and the in-process recorder writes them, so both
+    paths carry identical messages."""
+    data = _ROAD_BYTES.get(net)
+    if data is None:
+        from rclpy.serialization import serialize_message
+
+        data = _ROAD_BYTES[net] = bytes(serialize_message(road_markers(outline_of(net))))
+    return data
+
+
+def scenario_markers(goal: Goal | None, lights: Iterable[TrafficLightState], t: float) -> MarkerArray:
+    """The goal and the lights' states at t (see the module docstring)."""
+    markers = [_delete_all(t)]
+    if goal is not None:
+        arrow = _marker(Marker.ARROW, "goal", 1, t)
+        arrow.pose.position.x, arrow.pose.position.y, arrow.pose.position.z = float(goal.x), float(goal.y), 0.5
+        qx, qy, qz, qw = yaw_to_quat(goal.heading)
+        o = arrow.pose.orientation
+        o.x, o.y, o.z, o.w = qx, qy, qz, qw
+        arrow.scale.x, arrow.scale.y, arrow.scale.z = 4.0, 0.8, 0.8
+        arrow.color.r, arrow.color.g, arrow.color.b, arrow.color.a = 0.1, 0.9, 0.3, 1.0
+        arrow.text = "goal"
+        area = _marker(Marker.CYLINDER, "goal", 2, t)
+        area.pose.position.x, area.pose.position.y, area.pose.position.z = float(goal.x), float(goal.y), 0.02
+        area.scale.x = area.scale.y = 2.0 * float(goal.tolerance)
+        area.scale.z = 0.04
+        area.color.r, area.color.g, area.color.b, area.color.a = 0.1, 0.9, 0.3, 0.3
+        area.text = "goal"
+        markers += [arrow, area]
+    for i, light in enumerate(lights, start=3):
+        if not (math.isfinite(light.stop_x) and math.isfinite(light.stop_y)):
+            continue                              # a light the map gives no position: nothing to place
+        m = _marker(Marker.CYLINDER, "traffic_light", i, t)
+        m.pose.position.x, m.pose.position.y, m.pose.position.z = float(light.stop_x), float(light.stop_y), 0.15
+        m.scale.x = m.scale.y = 1.5
+        m.scale.z = 0.3
+        r, g, b = _LIGHT_COLOURS.get(light.state.value, _LIGHT_COLOURS["off"])
+        m.color.r, m.color.g, m.color.b, m.color.a = r, g, b, 1.0
+        m.text = f"{light.id} {light.state.value}"
+        markers.append(m)
+    return MarkerArray(markers=markers)
 
 
 def string_msg(text: str) -> String:

@@ -52,7 +52,7 @@ def _lockstep(name: str, writer: Any | None) -> tuple[float, int, Any]:
     steps = 0
     t0 = time.process_time()
     if writer is not None:
-        writer.begin(env, sim.goal)
+        writer.begin(env, sim.goal, network=sim.network, lights=frame.lights)
     new = oracle.observe(frame)
     while not sim.done:
         cmd = planner.step(frame)
