@@ -93,8 +93,6 @@ class RunWriter:
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
         self._drained = time.monotonic()
-        self._goal: Goal | None = None
-        self._shown_lights: tuple[TrafficLightState, ...] | None = None
         for ns, frame, command in steps:
             self._encode(frame, command, ns)
 
