@@ -196,6 +196,53 @@ def _encode_lights_body(lights: tuple[TrafficLightState, ...]) -> bytes:
     return bytes(w.b[start:])
 
 
+_f32x2 = struct.Struct("<2f")
+
+
+def encode_marker_array(msg: Any) -> bytes:
+    """Any `visualization_msgs/MarkerArray` (an rclpy message or one with its attribute names), every field written,
+    padding zeroed: `serialize_message` leaves padding bytes uninitialised, so the same message would give
+    different bytes from run to run, and a recording would not be byte-for-byte reproducible. Used for the view
+    markers (the road, the goal and lights), which are built once per map or on a light change, not per step."""
+    w = _W()
+    w.pack(_u32, 4, len(msg.markers))
+    for m in msg.markers:
+        w.pack(_i32u32, 4, m.header.stamp.sec, m.header.stamp.nanosec)
+        w.string(m.header.frame_id)
+        w.string(m.ns)
+        w.pack(_i32x3, 4, m.id, m.type, m.action)
+        p, q = m.pose.position, m.pose.orientation
+        w.pack(_f64x7, 8, p.x, p.y, p.z, q.x, q.y, q.z, q.w)
+        w.pack(_f64x3, 8, m.scale.x, m.scale.y, m.scale.z)
+        w.pack(_f32x4, 4, m.color.r, m.color.g, m.color.b, m.color.a)
+        w.pack(_i32u32, 4, m.lifetime.sec, m.lifetime.nanosec)
+        w.b += b"\x01" if m.frame_locked else b"\x00"
+        w.pack(_u32, 4, len(m.points))
+        if m.points:
+            w.align(8)
+            w.b += struct.pack(f"<{3 * len(m.points)}d", *(v for pt in m.points for v in (pt.x, pt.y, pt.z)))
+        w.pack(_u32, 4, len(m.colors))
+        for col in m.colors:
+            w.pack(_f32x4, 4, col.r, col.g, col.b, col.a)
+        w.string(m.texture_resource)
+        tex = m.texture
+        w.pack(_i32u32, 4, tex.header.stamp.sec, tex.header.stamp.nanosec)
+        w.string(tex.header.frame_id)
+        w.string(tex.format)
+        w.pack(_u32, 4, len(tex.data))
+        w.b += bytes(tex.data)
+        w.pack(_u32, 4, len(m.uv_coordinates))
+        for uv in m.uv_coordinates:
+            w.pack(_f32x2, 4, uv.u, uv.v)
+        w.string(m.text)
+        w.string(m.mesh_resource)
+        w.string(m.mesh_file.filename)
+        w.pack(_u32, 4, len(m.mesh_file.data))
+        w.b += bytes(m.mesh_file.data)
+        w.b += b"\x01" if m.mesh_use_embedded_materials else b"\x00"
+    return bytes(w.b)
+
+
 def encode_clock(t: float) -> bytes:
     return HEADER + _stamp(t)
 

@@ -280,12 +280,12 @@ def road_markers_bytes(net: Any) -> bytes:
     """`road_markers` of a RoadNetwork's outline, serialised, once per network object: the message is the same for
     every scenario on that map (stamp t = 0), and building it costs tens of ms on a large map, which a recorder
     must not pay per run. The player node publishes these bytes and the in-process recorder writes them, so both
-    paths carry identical messages."""
+    paths carry identical messages, byte for byte (the encoder zeroes the padding rclpy leaves uninitialised)."""
     data = _ROAD_BYTES.get(net)
     if data is None:
-        from rclpy.serialization import serialize_message
+        from oracle_monitor.cdr import encode_marker_array      # the recorder's CDR writer; lazy like its users
 
-        data = _ROAD_BYTES[net] = bytes(serialize_message(road_markers(outline_of(net))))
+        data = _ROAD_BYTES[net] = encode_marker_array(road_markers(outline_of(net)))
     return data
 
 

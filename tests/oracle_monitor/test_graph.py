@@ -1,5 +1,6 @@
 """End to end over DDS: generator -> player <-> stand-in planner, the monitor node recording; then every recording
-re-judged offline must give the verdict the live monitor gave (and wrote to verdicts.jsonl and into the bag)."""
+re-judged offline must give the verdict the live monitor gave (and wrote to verdicts.jsonl and into the bag), and the
+bag holds each run's road once, as the player node published it."""
 
 from __future__ import annotations
 
@@ -10,8 +11,11 @@ import pytest
 
 pytest.importorskip("rclpy")
 
+from oracle_monitor.bagread import read_bag  # noqa: E402
 from oracle_monitor.judge import judge_bag  # noqa: E402
-from txt2sce_ros.contract import Verdict  # noqa: E402
+from scenario_player import Simulation, SimulationConfig, load_scenario  # noqa: E402
+from txt2sce_ros.contract import TOPIC_MAP_MARKERS, TOPIC_SCENARIO_MARKERS, VIEW_TOPICS, Verdict  # noqa: E402
+from txt2sce_ros.ros_io import road_markers_bytes  # noqa: E402
 from txt2sce_ros.launcher import GraphConfig, run_graph  # noqa: E402
 
 from .oracle_runs import ESMINI  # noqa: E402
@@ -41,3 +45,14 @@ def test_graph_runs_rejudged_offline_match_live(tmp_path: Path) -> None:
                                      for v in result.verdicts]
         # A run the player ended because the planner did not answer is an error, never a failure of the stack.
         assert (offline.verdict is Verdict.ERROR) == (offline.end_reason == "planner_not_responding"), offline
+
+    # The road of each run, recorded once per run from the live player node: the very bytes the in-process
+    # recorder writes for that map (one road model, one message), and the goal/light markers with each run.
+    bag = Path(json.loads((bags / "verdicts.jsonl").read_text().splitlines()[0])["bag"])
+    views = {t: [bytes(m.data) for m in read_bag(bag).messages(frozenset({t}))] for t in VIEW_TOPICS}
+    expected = [road_markers_bytes(Simulation(load_scenario(str(ESMINI / "xosc" / s)), SimulationConfig()).network)
+                for s in SCENARIOS]
+    # The player node publishes the encoded bytes; DDS may pad a payload to a multiple of 4 bytes on the wire.
+    assert [v[:len(e)] for v, e in zip(views[TOPIC_MAP_MARKERS], expected)] == expected
+    assert [len(v) - len(e) for v, e in zip(views[TOPIC_MAP_MARKERS], expected)] == [(-len(e)) % 4 for e in expected]
+    assert len(views[TOPIC_SCENARIO_MARKERS]) >= len(SCENARIOS)
