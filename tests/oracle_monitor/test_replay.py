@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import threading
 import time
 from pathlib import Path
 
@@ -17,10 +16,11 @@ from oracle_monitor import cdr  # noqa: E402
 from oracle_monitor.bagread import RawMessage  # noqa: E402
 from oracle_monitor.recorder import BagRecorder  # noqa: E402
 from oracle_monitor.replay import replay_bag, schedule  # noqa: E402
-from tests.integration.rosproc import ros_test_env  # noqa: E402
 from txt2sce_ros import contract as c  # noqa: E402
 from txt2sce_ros.contract import EntityState  # noqa: E402
 from txt2sce_ros.errors import InputError  # noqa: E402
+
+from .replaying import viewer_and_replayer  # noqa: E402
 
 BASE = 1_700_000_000_000_000_000
 
@@ -41,42 +41,16 @@ def test_schedule_scales_gaps_and_never_reorders() -> None:
 
 
 def test_replay_publishes_the_recorded_messages_with_scaled_timing(tmp_path: Path, monkeypatch) -> None:
-    env = ros_test_env(tmp_path)
-    for key in ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_DOMAIN_ID", "ROS_LOG_DIR", "FASTRTPS_DEFAULT_PROFILES_FILE",
-                "RMW_IMPLEMENTATION"):
-        monkeypatch.setenv(key, env[key])
     _bag(tmp_path / "bag")                                        # 21 odometries over 1.0 s
     got: list[tuple[float, float]] = []
-    ctx = rclpy.Context()
-    rclpy.init(context=ctx)
-    try:
-        node = rclpy.create_node("replay_test", context=ctx)
+    with viewer_and_replayer(tmp_path, monkeypatch) as (node, pub_node):
         node.create_subscription(Odometry, c.TOPIC_EGO_ODOM,
                                  lambda m: got.append((time.monotonic(), m.pose.pose.position.x)),
                                  QoSProfile(depth=100, reliability=ReliabilityPolicy.RELIABLE))
-        ex = rclpy.executors.SingleThreadedExecutor(context=ctx)
-        ex.add_node(node)
-        stop = threading.Event()
-
-        def spin() -> None:
-            while not stop.is_set():
-                ex.spin_once(timeout_sec=0.01)
-
-        spinner = threading.Thread(target=spin)
-        spinner.start()
-        pub_node = rclpy.create_node("txt2sce_replay", context=ctx)
-        try:
-            count, issues = replay_bag(tmp_path / "bag", rate=4.0, node=pub_node, discovery_timeout=10.0)
-            deadline = time.monotonic() + 5.0
-            while len(got) < 21 and time.monotonic() < deadline:
-                time.sleep(0.01)
-        finally:
-            stop.set()
-            spinner.join()
-            pub_node.destroy_node()
-            node.destroy_node()
-    finally:
-        rclpy.shutdown(context=ctx)
+        count, issues = replay_bag(tmp_path / "bag", rate=4.0, node=pub_node, discovery_timeout=10.0)
+        deadline = time.monotonic() + 5.0
+        while len(got) < 21 and time.monotonic() < deadline:
+            time.sleep(0.01)
     assert count == 21 and issues == []
     assert [x for _, x in got] == [float(k) for k in range(21)]  # all, in order, the recorded values
     span = got[-1][0] - got[0][0]

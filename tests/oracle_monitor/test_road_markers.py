@@ -5,7 +5,6 @@ bag alone; a replay offers the same bytes, latched, to a viewer that joins late.
 from __future__ import annotations
 
 import math
-import threading
 import time
 from pathlib import Path
 
@@ -19,13 +18,13 @@ from oracle_monitor.recorder import typestore  # noqa: E402
 from oracle_monitor.runwriter import RunWriter  # noqa: E402
 from scenario_player import Simulation, SimulationConfig, load_scenario  # noqa: E402
 from standin_planner import Faults, Planner, PlannerParams  # noqa: E402
-from tests.integration.rosproc import ros_test_env  # noqa: E402
 from txt2sce_ros import contract as c  # noqa: E402
 from txt2sce_ros.cli.main import main  # noqa: E402
 from txt2sce_ros.road.outline import road_outline, thin  # noqa: E402
 from txt2sce_ros.ros_io import road_markers_bytes  # noqa: E402
 
 from .oracle_runs import ESMINI  # noqa: E402
+from .replaying import viewer_and_replayer  # noqa: E402
 
 MARKER_ARRAY = "visualization_msgs/msg/MarkerArray"
 
@@ -185,52 +184,26 @@ def test_replay_offers_the_recorded_road_latched_to_a_late_viewer(lights_run, tm
     from oracle_monitor.replay import replay_bag
 
     bag, _ = lights_run
-    env = ros_test_env(tmp_path)
-    for key in ("ROS_AUTOMATIC_DISCOVERY_RANGE", "ROS_DOMAIN_ID", "ROS_LOG_DIR", "FASTRTPS_DEFAULT_PROFILES_FILE",
-                "RMW_IMPLEMENTATION"):
-        monkeypatch.setenv(key, env[key])
     recorded = {t: [bytes(m.data) for m in read_bag(bag).messages(frozenset({t}))] for t in c.VIEW_TOPICS}
     latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     keep = QoSProfile(depth=100, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     got: dict[str, list[bytes]] = {t: [] for t in c.VIEW_TOPICS}
     late: list[bytes] = []
-    ctx = rclpy.Context()
-    rclpy.init(context=ctx)
-    try:
-        node = rclpy.create_node("viewer", context=ctx)
+    with viewer_and_replayer(tmp_path, monkeypatch) as (node, pub_node):
         for t in c.VIEW_TOPICS:
             node.create_subscription(MarkerArray, t, lambda data, t=t: got[t].append(bytes(data)), keep, raw=True)
-        ex = rclpy.executors.SingleThreadedExecutor(context=ctx)
-        ex.add_node(node)
-        stop = threading.Event()
-
-        def spin() -> None:
-            while not stop.is_set():
-                ex.spin_once(timeout_sec=0.01)
-
-        spinner = threading.Thread(target=spin)
-        spinner.start()
-        pub_node = rclpy.create_node("txt2sce_replay", context=ctx)
-        try:
-            count, issues = replay_bag(bag, rate=50.0, node=pub_node, topics=frozenset(c.VIEW_TOPICS),
-                                       discovery_timeout=10.0)
-            deadline = time.monotonic() + 5.0
-            while len(got[c.TOPIC_SCENARIO_MARKERS]) < len(recorded[c.TOPIC_SCENARIO_MARKERS]) \
-                    and time.monotonic() < deadline:
-                time.sleep(0.01)
-            # A viewer that joins after the replay published the road still gets it (latched).
-            node.create_subscription(MarkerArray, c.TOPIC_MAP_MARKERS, lambda data: late.append(bytes(data)),
-                                     latched, raw=True)
-            deadline = time.monotonic() + 5.0
-            while not late and time.monotonic() < deadline:
-                time.sleep(0.01)
-        finally:
-            stop.set()
-            spinner.join()
-            pub_node.destroy_node()
-            node.destroy_node()
-    finally:
-        rclpy.shutdown(context=ctx)
+        count, issues = replay_bag(bag, rate=50.0, node=pub_node, topics=frozenset(c.VIEW_TOPICS),
+                                   discovery_timeout=10.0)
+        deadline = time.monotonic() + 5.0
+        while len(got[c.TOPIC_SCENARIO_MARKERS]) < len(recorded[c.TOPIC_SCENARIO_MARKERS]) \
+                and time.monotonic() < deadline:
+            time.sleep(0.01)
+        # A viewer that joins after the replay published the road still gets it (latched).
+        node.create_subscription(MarkerArray, c.TOPIC_MAP_MARKERS, lambda data: late.append(bytes(data)),
+                                 latched, raw=True)
+        deadline = time.monotonic() + 5.0
+        while not late and time.monotonic() < deadline:
+            time.sleep(0.01)
     assert issues == [] and count == sum(len(v) for v in recorded.values())
     # Replayed == recorded, byte for byte (DDS may pad a payload to a multiple of 4 bytes on the wire).
     unpadded = {t: [d[:len(r)] for d, r in zip(got[t], recorded[t])] for t in got}
