@@ -65,3 +65,33 @@ def test_seed_directory_campaign_writes_the_report(seed_dir: Path, tmp_path: Pat
     again = run_campaign([seed_dir], cfg)
     assert again.runs is not None and again.runs.ran == 0
     assert json.loads((out / "report" / "analysis.json").read_text(encoding="utf-8")) == analysis
+
+
+def test_report_says_what_was_tested_explains_codes_and_marks_a_partial_campaign(seed_dir: Path,
+                                                                                 tmp_path: Path) -> None:
+    out = tmp_path / "c"
+    cfg = dict(out=out, executor="serial", progress=False, mutations=1, max_nodes=6, max_seeds=1,
+               time_limit=TIME_LIMIT, faults=("stale_tracking",), seed=7)
+    first = run_campaign([seed_dir], CampaignConfig(limit=2, **cfg))
+    assert first.runs is not None and first.runs.ran == 2 and first.runs.left > 0
+    md = (out / "report" / "report.md").read_text(encoding="utf-8")     # --limit writes a report too ...
+    assert f"partial campaign: 2 of {2 + first.runs.left} distinct scenarios judged" in md   # ... marked partial
+    page = (out / "report" / "report.html").read_text(encoding="utf-8")
+    assert "class='banner'" in page
+    tested = md.split("## What was tested")[1].split("\n## ")[0]
+    for what in ("stand-in planner", "faults switched on | stale_tracking", "RNG seed 7", "node budget 6",
+                 f"simulated time limit {TIME_LIMIT}", "txt2sce 0.1.0 (git ", "Python 3.", "1: "):
+        assert what in tested, what
+    legend = md.split("## Legend: the codes in this report")[1]
+    for code in ("R5+ag", "| R1 | junction, crossing road to the AV's left |", "| g | change lane to the right |"):
+        assert code in legend
+    done = run_campaign([seed_dir], CampaignConfig(**cfg))
+    assert done.runs is not None and done.runs.left == 0
+    md = (out / "report" / "report.md").read_text(encoding="utf-8")
+    assert "partial campaign" not in md
+    assert "## Scenario trees" in md and "### Tree " in md
+    # every lift row carries its element in words
+    for line in md.split("## Trigger conditions by lift")[1].split("## Derivation")[0].splitlines():
+        if line.startswith("| ") and not line.startswith("| element"):
+            element, meaning = [c.strip() for c in line.strip("|").split("|")][:2]
+            assert meaning and (meaning != element or ":" not in element), line

@@ -60,6 +60,11 @@ def lift_bars(table: Mapping[str, Sequence[LiftRow]], top: int = 6) -> bytes:
 
 def tree_view(nodes: Mapping[str, Mapping], verdicts: Mapping[str, str], title: str) -> bytes:
     """The derivation tree laid out by depth; failing nodes red, passing green, errors grey, not run white."""
+    return _png(tree_figure(nodes, verdicts, title))
+
+
+def tree_figure(nodes: Mapping[str, Mapping], verdicts: Mapping[str, str], title: str) -> plt.Figure:
+    """`tree_view`'s figure (open; the caller closes it)."""
     children: dict[str | None, list[str]] = {}
     for nid, node in nodes.items():
         children.setdefault(node.get("parent"), []).append(nid)
@@ -94,18 +99,25 @@ def tree_view(nodes: Mapping[str, Mapping], verdicts: Mapping[str, str], title: 
         ax.scatter(xs, ys, c=cols, s=14, edgecolors="k", linewidths=0.3, zorder=2)
     for verdict, colour in (*VERDICT_COLOURS.items(), ("not run", "white")):
         ax.scatter([], [], c=colour, s=14, edgecolors="k", linewidths=0.3, label=verdict)
-    ax.legend(fontsize=7, loc="upper right", frameon=False)
+    # beside the drawing, never on it: a wide tree fills its axes to both edges
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False)
     ax.set_title(title, fontsize=10)
     ax.set_yticks([])
     ax.set_xticks([])
     for s in ax.spines.values():
         s.set_visible(False)
-    return _png(fig)
+    return fig
 
 
 def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.ndarray], title: str,
                     marks: Sequence[tuple[float, float, str]] = ()) -> bytes:
     """Top-down view: lane borders in grey, each entity's path (columns t, x, y, …) with start and end marked."""
+    return _png(trajectory_figure(trajectories, lanes, title, marks))
+
+
+def trajectory_figure(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.ndarray], title: str,
+                      marks: Sequence[tuple[float, float, str]] = ()) -> plt.Figure:
+    """`trajectory_plot`'s figure (open; the caller closes it)."""
     fig, ax = plt.subplots(figsize=(6, 6))
     for border in lanes:
         ax.plot(border[:, 0], border[:, 1], color="#cfcfcf", lw=0.6)
@@ -127,10 +139,16 @@ def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.n
     spots: dict[tuple[int, int], tuple[float, float, list[str]]] = {}
     for x, y, text in marks:
         spots.setdefault((round(x / 4.0), round(y / 4.0)), (x, y, []))[2].append(text)
-    for x, y, texts in spots.values():
+    # Labels stack in a column right of the axes, each with a leader line to its cross: labels of nearby spots
+    # placed beside their crosses overprinted each other and the paths.
+    top = 1.0
+    for x, y, texts in sorted(spots.values(), key=lambda s: -s[1]):
         ax.plot(x, y, "x", color="#e53935", ms=11, mew=2.2, zorder=5)
-        ax.annotate("\n".join(texts), (x, y), xytext=(8, 8), textcoords="offset points", fontsize=8,
-                    color="#c62828", bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="#e53935", alpha=0.85))
+        ax.annotate("\n".join(texts), (x, y), xytext=(1.04, top), textcoords="axes fraction", va="top",
+                    fontsize=8, color="#c62828", annotation_clip=False,
+                    bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="#e53935"),
+                    arrowprops=dict(arrowstyle="-", color="#e53935", lw=0.6, shrinkB=6))
+        top -= 0.045 * len(texts) + 0.04
     ax.plot([], [], "ko", ms=4, label="start")
     ax.plot([], [], "ks", ms=4, label="end")
     allpts = np.vstack([tr[:, 1:3] for tr in trajectories.values() if len(tr)]) if trajectories else np.zeros((1, 2))
@@ -140,11 +158,12 @@ def trajectory_plot(trajectories: Mapping[str, np.ndarray], lanes: Sequence[np.n
     ax.set_xlim(mid[0] - span / 2, mid[0] + span / 2)
     ax.set_ylim(mid[1] - span / 2, mid[1] + span / 2)
     ax.set_aspect("equal")
-    ax.legend(fontsize=7, loc="best")
+    # the legend below the violation labels, outside the axes too, so neither hides a path or the other
+    ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(1.04, 0.0), borderaxespad=0.0)
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    return _png(fig)
+    return fig
 
 
 def lane_borders_near(scenario_file: str | Path, traj: Mapping[str, np.ndarray]) -> list[np.ndarray]:

@@ -12,6 +12,7 @@ from typing import Any, Mapping, Sequence
 from .behaviours import BehaviourRow, behaviour_table
 from .derivation import TriggerCandidate, aggregate, trigger_candidates
 from .features import elements_of_file
+from .legend import explain, legend_rows
 from .lift import LiftRow, lift_table
 from . import plots
 
@@ -25,6 +26,8 @@ class CampaignResults:
     diversity: list[tuple[str, int, int]] = field(default_factory=list)            # level, abstract, variants
     unique_categories: int | None = None
     failure_plots: list[tuple[str, bytes]] = field(default_factory=list)           # caption, PNG
+    tested: list[tuple[str, str]] = field(default_factory=list)   # what was tested: planner, faults, seeds, settings
+    partial: str | None = None                                    # set when the campaign is not finished
 
 
 @dataclass
@@ -58,8 +61,13 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
              images: Mapping[str, str] | None = None) -> str:
     images = images or {}
     parts = [f"# {title}", ""]
+    if res.partial:
+        parts += [f"**{res.partial}**", ""]
     total = sum(an.verdicts.values())
     parts.append(f"{total} runs: " + ", ".join(f"{an.verdicts.get(v, 0)} {v}" for v in ("pass", "fail", "error")))
+    if res.tested:
+        parts += ["", "## What was tested", ""]
+        parts.append(_md_table(["what", "value"], [(k, v.replace("|", "/")) for k, v in res.tested]))
     parts += ["", "## Unexpected behaviours (paper Table VI)", ""]
     top = {c: ", ".join(f"{r.element} ({r.lift:.2f}×, n={r.support})" for r in an.lift.get(c, [])[:3])
            for c in (b.category for b in an.behaviours)}
@@ -71,12 +79,12 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
         parts += ["", f"![categories]({images['categories']})"]
     parts += ["", "## Trigger conditions by lift", "",
               "lift = P(category given element) / P(category); confidence = P(category given element); "
-              "support = runs with both."]
+              "support = runs with both. Element codes are explained in the legend at the end."]
     for cat, rows in an.lift.items():
         parts += ["", f"### {cat}", ""]
-        parts.append(_md_table(["element", "lift", "support", "runs with element", "confidence"],
-                               [(r.element, f"{r.lift:.2f}", r.support, r.with_element, f"{r.confidence:.2f}")
-                                for r in rows[:10]]))
+        parts.append(_md_table(["element", "meaning", "lift", "support", "runs with element", "confidence"],
+                               [(r.element, explain(r.element), f"{r.lift:.2f}", r.support, r.with_element,
+                                 f"{r.confidence:.2f}") for r in rows[:10]]))
     if "lift" in images:
         parts += ["", f"![lift]({images['lift']})"]
     parts += ["", "## Derivation triggers", "",
@@ -92,10 +100,25 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
                                res.diversity))
         if res.unique_categories is not None:
             parts += ["", f"Unique scenario categories: {res.unique_categories}"]
-    for key in sorted(k for k in images if k.startswith("tree:")):
-        parts += ["", f"![{key}]({images[key]})"]
-    for key in sorted(k for k in images if k.startswith("failure:")):
-        parts += ["", f"![{key}]({images[key]})"]
+    trees = sorted(k for k in images if k.startswith("tree:"))
+    if trees:
+        parts += ["", "## Scenario trees", "",
+                  "Each dot is a scenario; the seed at the top, one row per block inserted (depth = blocks added); "
+                  "green = pass, red = fail, grey = error, white = not run."]
+        for key in trees:
+            parts += ["", f"### Tree {key.split(':', 1)[1]}", "", f"![{key}]({images[key]})"]
+    failures = sorted(k for k in images if k.startswith("failure:"))
+    if failures:
+        parts += ["", "## Trajectories of representative failures", "",
+                  "One failing run per category, re-run to draw it (runs are deterministic): top-down view over the "
+                  "map's lanes; the AV (ego) in blue; circles mark starts, squares ends; red crosses mark "
+                  "violations, labelled beside the plot."]
+        for key in failures:
+            parts += ["", f"### {key.split(' ', 1)[1]}", "", f"![{key}]({images[key]})"]
+    parts += ["", "## Legend: the codes in this report", "",
+              "Positions are relative to the AV when the interaction begins (right-hand traffic); action strings "
+              "list a party's manoeuvres in order, one letter each."]
+    parts.append(_md_table(["code", "meaning"], legend_rows()))
     return "\n".join(parts) + "\n"
 
 
@@ -154,11 +177,14 @@ def _html(md: str, title: str) -> str:
         elif line.startswith("!["):
             alt, src = line[2:].split("](", 1)
             body.append(f'<figure><img src="{src[:-1]}" alt="{html.escape(alt)}"/></figure>')
+        elif line.startswith("**") and line.endswith("**"):
+            body.append(f"<p class='banner'>{html.escape(line.strip('*'))}</p>")
         elif line.strip():
             body.append(f"<p>{html.escape(line)}</p>")
         i += 1
     style = ("body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
              "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}"
-             "th{background:#f0f0f0}img{max-width:100%}")
+             "th{background:#f0f0f0}img{max-width:100%}"
+             ".banner{background:#fff3cd;border:1px solid #e0a800;padding:.5em;font-weight:bold}")
     return (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
             f"<style>{style}</style></head><body>{''.join(body)}</body></html>\n")

@@ -178,10 +178,22 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
               + f", executor {cfg.executor}" + (f", faults {', '.join(cfg.faults)}" if cfg.faults else ""))
     with ResultStore(cfg.out / "results.sqlite") as store:
         store.set_meta("faults", list(cfg.faults))
+        # what the report says was tested (settings of the run that wrote it; the run key covers the rest)
+        store.set_meta("settings", {
+            "inputs": [str(p) for p in inputs], "start_stage": summary.start_stage, "rng_seed": cfg.seed,
+            "backend": cfg.backend, "mutations": cfg.mutations, "prune": cfg.prune, "max_nodes": cfg.max_nodes,
+            "max_seeds": cfg.max_seeds, "time_limit": cfg.time_limit, "executor": cfg.executor, "ros": cfg.ros})
         summary.runs = run_all(tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,
                                limit=cfg.limit)
-        if cfg.report and cfg.limit is None:
+        if cfg.report:
             from .reporting import report_from_store
 
-            summary.report = report_from_store(store, scenario_inputs, cfg.out / "report", tasks=tasks)
+            partial = None
+            if summary.runs.left:
+                # a --limit run still gets its report, marked partial, so the first look needs no second command
+                judged = summary.runs.total - summary.runs.duplicates - summary.runs.left
+                partial = (f"partial campaign: {judged} of {judged + summary.runs.left} distinct scenarios judged "
+                           f"so far (--limit {cfg.limit}); rerun without --limit to finish and update this report")
+            summary.report = report_from_store(store, scenario_inputs, cfg.out / "report", tasks=tasks,
+                                               partial=partial)
     return summary

@@ -40,6 +40,12 @@ def _tree_dirs(inputs: Sequence[str | Path]) -> list[Path]:
     return out
 
 
+def _violation_label(v: dict[str, Any]) -> str:
+    """'Smooth: smooth_jerk'; a violation of no category (reported beside the verdict) by its rule alone."""
+    cat, rule = v.get("category"), v.get("rule")
+    return f"{cat}: {rule}" if cat and rule else str(cat or rule or "violation")
+
+
 def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS, *,
                   time_limit: float | None = None) -> list[tuple[str, bytes]]:
     """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
@@ -69,34 +75,97 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
             if len(marks) >= 3:
                 break
             if "x" in v and "y" in v:
-                marks.append((float(v["x"]), float(v["y"]), str(v.get("category", ""))))
+                marks.append((float(v["x"]), float(v["y"]), _violation_label(v)))
             elif "t" in v and len(traj.get("ego", ())):
                 # violations carry a time, not a place: mark where the ego was then
                 ego = traj["ego"]
                 t = float(v["t"])
                 marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
-                              f"{v.get('category', '')} @ {t:.1f} s"))
+                              f"{_violation_label(v)} @ {t:.1f} s"))
         where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
         caption = f"{where}: {', '.join(r['categories'])}"
         out.append((caption, trajectory_plot(traj, lanes, caption, marks)))
     return out
 
 
+def _git_commit() -> str:
+    """The checkout's commit (with '+changes' when the tree differs from it), or 'unknown' outside a checkout."""
+    import subprocess
+
+    from ..paths import REPO_ROOT
+
+    try:
+        head = subprocess.run(["git", "-C", str(REPO_ROOT), "rev-parse", "--short=10", "HEAD"], capture_output=True,
+                              text=True, timeout=10, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(REPO_ROOT), "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, timeout=10, check=True).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    return head + (" +changes" if dirty else "")
+
+
+def _config_digest(name: str) -> str:
+    import hashlib
+
+    from ..paths import config_dir
+
+    path = config_dir() / f"{name}.yaml"
+    try:
+        return f"{path} (sha256 {hashlib.sha256(path.read_bytes()).hexdigest()[:12]})"
+    except OSError:
+        return f"{path} (not found)"
+
+
+def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence[RunTask],
+                trees: Sequence[str]) -> list[tuple[str, str]]:
+    """What the campaign tested, as (what, value) rows: planner, faults, seeds, settings, versions."""
+    import platform
+    import sys
+
+    from .. import __version__
+
+    def opt(key: str, default: str) -> str:
+        value = settings.get(key)
+        return default if value is None else str(value)
+
+    shown = ", ".join(trees[:12]) + (f" and {len(trees) - 12} more" if len(trees) > 12 else "")
+    return [
+        ("system under test", "stand-in planner (standin_planner: IDM + pure pursuit), "
+                              + _config_digest("planner")),
+        ("faults switched on", ", ".join(faults) or "none (nominal planner)"),
+        ("inputs", ", ".join(settings.get("inputs", [])) or "–"),
+        ("seeds / trees", f"{len(trees)}: {shown}" if trees else "none (plain scenario files)"),
+        ("scenarios", f"{len(tasks)} files, {len({t.key for t in tasks})} distinct runs"),
+        ("tree settings", f"mutations per block {opt('mutations', 'config default')}, prune share "
+                          f"{opt('prune', 'config default')}, node budget {opt('max_nodes', 'config default')}, "
+                          f"first {opt('max_seeds', 'all')} seeds; {_config_digest('mutation')}"),
+        ("run settings", f"RNG seed {opt('rng_seed', '0')}, simulated time limit {opt('time_limit', 'player default')}"
+                         f" s, {'ROS 2 node graph over DDS' if settings.get('ros') else 'in-process cores'}, "
+                         f"executor {opt('executor', '?')}, extractor {opt('backend', 'offline')}"),
+        ("oracle", _config_digest("oracle")),
+        ("versions", f"txt2sce {__version__} (git {_git_commit()}), Python {sys.version.split()[0]}, "
+                     f"{platform.system()} {platform.machine()}"),
+    ]
+
+
 def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path,
-                      tasks: Sequence[RunTask] = ()) -> Path:
+                      tasks: Sequence[RunTask] = (), *, partial: str | None = None) -> Path:
+    """Write the campaign report from the stored runs; `partial` (a sentence) marks a report of an unfinished
+    campaign."""
     files = {t.key: t.scenario_path for t in tasks}
     runs = [{"scenario_id": r.scenario_id, "tree": r.tree, "parent": r.parent, "verdict": r.verdict,
              "categories": list(r.categories), "file": files.get(r.run_key), "record": r.record}
             for r in store.runs() if not files or r.run_key in files]
     trees = {d.name: _tree_nodes(d) for d in _tree_dirs(inputs)}
-    res = CampaignResults(runs=runs, trees=trees)
+    faults = tuple(store.meta("faults", []) or ())
+    res = CampaignResults(runs=runs, trees=trees, partial=partial,
+                          tested=tested_rows(store.meta("settings", {}) or {}, faults, tasks, sorted(trees)))
     if trees:
         from ..tree.diversity import diversity
 
         table = diversity(list(_tree_dirs(inputs)))
         res.diversity = [(row.level, row.abstract, row.variants) for row in table.rows]
         res.unique_categories = table.unique_categories
-    faults = tuple(store.meta("faults", []) or ())
     # the same time limit as the stored runs, so the re-run draws what was judged
     time_limit = next((t.time_limit for t in tasks), None)
     res.failure_plots = failure_plots(runs, faults, time_limit=time_limit)

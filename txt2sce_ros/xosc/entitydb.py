@@ -326,8 +326,8 @@ def entity_db(version: str = DEFAULT_VERSION) -> EntityDB:
             graph = pickle.load(fh)
         if graph.graph.get("format") == _GRAPH_FORMAT:
             return EntityDB(graph)
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
-        pass  # missing or stale cache: rebuild
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError, ValueError, IndexError):
+        pass  # missing, stale or damaged cache (a damaged pickle can raise ValueError/IndexError too): rebuild
     graph = _Builder(xsd_tree(ver)).build(ver)
     tmp = f"{path}.tmp"
     with open(tmp, "wb") as fh:
