@@ -17,7 +17,8 @@ and combined in a fixed order, highest first, so a rule can be read and its weig
 2. Along the AV's road (R5/R6): an explicit `along` cue decides front/behind; else `passing` (behind); else the
    contact on the AV's rear half (behind) or front half (ahead) for a party not backing up; else the first reading.
 3. The lane: an explicit `lane` cue; else the side the `passing` cue names; else the side of the AV the party
-   touched, for a contact on the AV's side (not a squarely rear or front bumper hit); else the first reading.
+   touched, for a party ahead or passing (one behind that strikes a rear corner was most often right behind);
+   else the first reading.
 
 Each decision records the rule that made it and the cue spans (offsets into the normalised text) as evidence.
 """
@@ -142,7 +143,9 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         body = _BODY_SIDE.search(s)
         side = _side(next((g for g in body.groups() if g), None)) if body else None
         span = (base + body.start(), base + body.end()) if body else (base, base + len(s))
-        cues.append(Cue("contact", f"{fore or ''}/{side or ''}", span))
+        # A side panel touched (door, quarter panel, fender, mirror) puts the party beside the AV, not behind it.
+        flank = "flank" if fre.search(r"\b(?:door|quarter|fender|mirror|panel)\b", s[d.contact_pos:], re.I) else ""
+        cues.append(Cue("contact", f"{fore or ''}/{side or ''}/{flank}", span))
     return cues
 
 
@@ -169,7 +172,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
     along = [c for c in cues if c.kind == "along"]
     passing = [c for c in cues if c.kind == "passing"]
     contact = next((c for c in cues if c.kind == "contact"), None)
-    fore, cside = (contact.value.split("/") if contact else ("", ""))
+    fore, cside, flank = (contact.value.split("/") if contact else ("", "", ""))
     if along:
         pos, rule = ("R6" if along[0].value == "behind" else "R5"), "along"
     elif passing and not backing and "k" not in ego_actions:
@@ -182,6 +185,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
         lane, rule = lanes[0].value, rule + "; lane"
     elif pass_side:
         lane, rule = pass_side, rule + "; passing side"
-    elif cside and lane == "same":
+    elif cside and lane == "same" and (pos == "R5" or passing or flank):
+        # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
+        # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
     return Placement(pos, lane, rule, tuple(cues))
