@@ -14,10 +14,11 @@ from ..errors import InputError
 from ..sketch import Collision, EgoInfo, Obstacle, Party, Sketch
 from . import fastre as fre
 from .actions import find_acts
-from .mentions import find_mentions, mark_parked, normalise, resolve, sentences
+from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
 from .relations import place
-from .scene import environment, is_junction, road, signal_state
+from .spans import OffsetMap
+from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import collision_type, ego_sequence, prepend_modifier_acts, sequence
 from .story import (BOILERPLATE, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
@@ -27,6 +28,49 @@ from .story import (BOILERPLATE, Doc, add_doors, attach_towed, before_contact, c
 #: time grows linearly up to this bound (`txt2sce bench extract` prints the per-character cost), and a longer text
 #: is refused rather than left to run: it is no single accident narrative.
 MAX_NARRATIVE_CHARS = 100_000
+
+
+def sentence_starts(t: str, sents: list[str]) -> list[int]:
+    """Offset of each sentence in the normalised text (sentences are its consecutive, stripped pieces)."""
+    out, pos = [], 0
+    for s in sents:
+        found = t.find(s[:60], pos)
+        pos = found if found >= 0 else pos
+        out.append(pos)
+        pos += len(s)
+    return out
+
+
+class Evidence:
+    """Slot path -> normalised-text spans the slot was read from; mapped to the narrative as given at the end."""
+
+    def __init__(self, d: Doc) -> None:
+        self.d = d
+        self.slots: dict[str, list[tuple[int, int]]] = {}
+
+    def spans(self, slot: str, spans: list[tuple[int, int]] | None, *, fallback: Entity | None = None) -> None:
+        if not spans and fallback is not None:
+            self.mention(slot, fallback)
+            return
+        if spans:
+            self.slots.setdefault(slot, []).extend(spans)
+
+    def mention(self, slot: str, e: Entity) -> None:
+        m = next((x for x in e.mentions if x.sent not in self.d.summary), e.first)
+        self.spans(slot, [(self.d.offset(m.sent) + m.start, self.d.offset(m.sent) + m.end)])
+
+    def acts(self, slot: str, acts: list) -> None:
+        self.spans(slot, [(self.d.offset(a.sent) + a.pos, self.d.offset(a.sent) + a.pos + max(1, len(a.text)))
+                          for a in acts if a.text])
+
+    def mapped(self, original: str) -> tuple[tuple[str, tuple[tuple[int, int], ...]], ...]:
+        omap = OffsetMap(original, self.d.text)
+        out = []
+        for slot, spans in self.slots.items():
+            got = sorted({sp for a, b in spans if (sp := omap.to_original(a, b)) is not None})
+            if got:
+                out.append((slot, tuple(got)))
+        return tuple(out)
 
 
 def extract(text: str, report_id: str) -> Sketch:
@@ -44,7 +88,8 @@ def extract(text: str, report_id: str) -> Sketch:
     flat = [m for ms in ments for m in ms]
     ents = resolve(flat, summary, sents)
     mark_parked(ents, sents)
-    d = Doc(text=t, sents=sents, ments=ments, ents=ents, acts=[], summary=summary, junction=False)
+    d = Doc(text=t, sents=sents, ments=ments, ents=ents, acts=[], summary=summary, junction=False,
+            starts=sentence_starts(t, sents))
     add_doors(d)
     attach_towed(d)
     fallback: int | None = None
@@ -71,6 +116,8 @@ def extract(text: str, report_id: str) -> Sketch:
     ego_heading = heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(r"\bturn(?:ed|ing)\b", t)) and junction
     npcs: list[Party] = []
+    ev = Evidence(d)
+    ev.acts("ego.actions", [a for a in d.acts if a.who == -1 and before_contact(d, a.sent, a.pos)])
     missing: list[str] = []
     idmap: dict[int, str] = {}
     behind: set[str] = set()
@@ -78,6 +125,9 @@ def extract(text: str, report_id: str) -> Sketch:
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
         placed = place(d, e, (pos, lane), ego_actions)
         pos, lane = placed.position, placed.lane
+        slot = f"npcs[{k - 1}]"
+        ev.mention(f"{slot}.category", e)
+        ev.spans(f"{slot}.position", [c.span for c in placed.cues] or None, fallback=e)
         if pos == "R6":
             behind |= e.heads
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]
@@ -98,6 +148,7 @@ def extract(text: str, report_id: str) -> Sketch:
             lane = None
         if not known and not pacts:
             missing += ["position", "actions"]
+        ev.acts(f"{slot}.actions", pacts)
         npcs.append(Party(id=f"npc{k}", category=e.category, position=pos, lane=lane,  # type: ignore[arg-type]
                           start=start, actions=acts))  # type: ignore[arg-type]
         idmap[e.idx] = f"npc{k}"
@@ -105,6 +156,7 @@ def extract(text: str, report_id: str) -> Sketch:
     for k, e in enumerate(obstacles, 1):
         pos, lane = obstacle_position(d, e, ego_actions, ego_turning)
         cat = "door" if e.idx in d.doors else ("parked_vehicle" if e.kind == "party" else e.category)
+        ev.mention(f"obstacles[{k - 1}].category", e)
         obs.append(Obstacle(id=f"obs{k}", category=cat, position=pos, lane=lane))  # type: ignore[arg-type]
         idmap[e.idx] = f"obs{k}"
     partner = d.ents[d.partner] if d.partner is not None else None
@@ -126,8 +178,14 @@ def extract(text: str, report_id: str) -> Sketch:
     if r.layout == "unknown":
         missing.append("road")
     sig = signal_state(t, layout=r.layout, control=r.control)
-    return Sketch(report_id=report_id, road=r, environment=environment(t), signal_state=sig,  # type: ignore[arg-type]
+    env = environment(t)
+    for slot, spans in scene_spans(t, r, env, sig).items():
+        ev.spans(slot, spans)
+    if d.contact_sent is not None:
+        ev.spans("collision.with", [(d.offset(d.contact_sent), d.offset(d.contact_sent) + len(sents[d.contact_sent]))])
+    return Sketch(report_id=report_id, road=r, environment=env, signal_state=sig,  # type: ignore[arg-type]
                   ego=EgoInfo(start=ego_start, actions=ego_actions),  # type: ignore[arg-type]
                   npcs=tuple(npcs), obstacles=tuple(obs),
                   collision=Collision(with_=with_id, type=ctype),  # type: ignore[arg-type]
-                  missing=tuple(dict.fromkeys(missing)))  # type: ignore[arg-type]
+                  missing=tuple(dict.fromkeys(missing)),  # type: ignore[arg-type]
+                  evidence=ev.mapped(text))

@@ -73,7 +73,7 @@ class Placement:
     position: str
     lane: str | None
     rule: str  # which cue decided it ("first reading" when none did)
-    cues: tuple[Cue, ...]
+    cues: tuple[Cue, ...]  # the cues that decided (all gathered ones when the first reading stood)
 
 
 def _side(word: str | None) -> str | None:
@@ -109,18 +109,13 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
     return out
 
 
-def _sent_offset(d: Doc, sent: int) -> int:
-    """Offset of sentence `sent` in `d.text` (sentences are consecutive substrings of the normalised text)."""
-    return d.text.find(d.sents[sent][:40]) if sent < len(d.sents) else 0
-
-
 def gather(d: Doc, e: Entity) -> list[Cue]:
     """Every cue the narrative states about party `e`, in text order."""
     cues: list[Cue] = []
     for sent, a, b in _mention_windows(d, e):
         s = d.sents[sent]
         win = TURN_WORDS.sub(lambda m: " " * len(m.group(0)), s[a:b])
-        base = _sent_offset(d, sent) + a
+        base = d.offset(sent) + a
         for m in _LANE_CUES.finditer(win):
             side = _side(next(g for g in m.groups() if g))
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
@@ -139,10 +134,11 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
     if e.idx == d.partner and d.contact_sent is not None:
         fore, _ = ego_contact_part(d)
         s = d.sents[d.contact_sent]
-        base = _sent_offset(d, d.contact_sent)
+        base = d.offset(d.contact_sent)
         body = _BODY_SIDE.search(s)
         side = _side(next((g for g in body.groups() if g), None)) if body else None
-        span = (base + body.start(), base + body.end()) if body else (base, base + len(s))
+        span = (base + body.start(), base + body.end()) if body else \
+            (base + min(d.contact_pos, len(s)), base + min(len(s), d.contact_pos + 60))
         # A side panel touched (door, quarter panel, fender, mirror) puts the party beside the AV, not behind it.
         flank = "flank" if fre.search(r"\b(?:door|quarter|fender|mirror|panel)\b", s[d.contact_pos:], re.I) else ""
         cues.append(Cue("contact", f"{fore or ''}/{side or ''}/{flank}", span))
@@ -151,7 +147,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
 
 def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
     """Cues said after the party's name (its own phrase) before those said before it, nearest first."""
-    starts = sorted(_sent_offset(d, m.sent) + m.end for m in e.mentions)
+    starts = sorted(d.offset(m.sent) + m.end for m in e.mentions)
 
     def key(c: Cue) -> tuple[int, int]:
         after = [c.span[0] - p for p in starts if c.span[0] >= p]
@@ -173,20 +169,27 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
     passing = [c for c in cues if c.kind == "passing"]
     contact = next((c for c in cues if c.kind == "contact"), None)
     fore, cside, flank = (contact.value.split("/") if contact else ("", "", ""))
+    used: list[Cue] = []
     if along:
         pos, rule = ("R6" if along[0].value == "behind" else "R5"), "along"
+        used.append(along[0])
     elif passing and not backing and "k" not in ego_actions:
         pos, rule = "R6", "passing"
-    elif fore == "rear" and not backing and "k" not in ego_actions:
+        used.append(passing[0])
+    elif fore == "rear" and not backing and "k" not in ego_actions and contact is not None:
         pos, rule = "R6", "contact on the AV's rear"
+        used.append(contact)
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
     pass_side = next((c.value for c in passing if c.value), "")
     if lanes:
         lane, rule = lanes[0].value, rule + "; lane"
+        used.append(lanes[0])
     elif pass_side:
         lane, rule = pass_side, rule + "; passing side"
-    elif cside and lane == "same" and (pos == "R5" or passing or flank):
+        used.append(next(c for c in passing if c.value))
+    elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None:
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
         # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
-    return Placement(pos, lane, rule, tuple(cues))
+        used.append(contact)
+    return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues))

@@ -179,3 +179,31 @@ def signal_state(t: str, *, layout: str, control: str) -> str:
         if fre.search(rf"\b{colour}\b", t, re.I):
             return colour
     return "unknown"
+
+
+_LAYOUT_WORDS = {"roundabout": _ROUNDABOUT, "parking": _PARKING, "junction3": _T_JUNCTION, "junction4": _JUNCTION,
+                 "curve": _CURVE, "straight": _ROADWAY}
+
+
+def scene_spans(t: str, road_info: RoadInfo, env: Environment, signal: str) -> dict[str, list[tuple[int, int]]]:
+    """Where the road, environment and signal fields were read (first match of the pattern that gave each value);
+    fields left `unknown` have no evidence."""
+    out: dict[str, list[tuple[int, int]]] = {}
+
+    def first(slot: str, rx: re.Pattern[str] | None) -> None:
+        m = rx.search(t) if rx is not None else None
+        if m:
+            out[slot] = [m.span()]
+
+    first("road.layout", _LAYOUT_WORDS.get(road_info.layout))
+    first("road.control", {"signal": _SIGNAL, "stop_sign": _STOP_SIGN}.get(road_info.control))
+    if road_info.one_way is not None:
+        first("road.one_way", _ONE_WAY if road_info.one_way else _TWO_WAY)
+    if road_info.lanes:
+        first("road.lanes", _LANE_ORD if _LANE_ORD.search(t) else _LANES_N if _LANES_N.search(t) else _LANE_SIDE)
+    first("environment.weather", dict(_WEATHER).get(env.weather))
+    first("environment.surface", dict(_SURFACE).get(env.surface))
+    first("environment.lighting", dict(_LIGHT).get(env.lighting) or (_CLOCK if env.lighting == "day" else None))
+    if signal in ("green", "yellow", "red"):
+        first("signal_state", compile_gated(rf"\b{signal}\b", re.I))
+    return out

@@ -54,6 +54,11 @@ class Doc:
     partner: int | None = None  # entity index; None with contact_sent set = contact with nothing
     doors: dict[int, int] = field(default_factory=dict)  # door entity -> owner entity
     struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
+    starts: list[int] = field(default_factory=list)  # offset of each sentence in `text`
+
+    def offset(self, sent: int) -> int:
+        """Where sentence `sent` starts in the normalised text."""
+        return self.starts[sent] if sent < len(self.starts) else 0
 
 
 _FORM_FIELD = compile_gated(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s")  # "Weather: ", "Lighting Conditions: "
