@@ -1,0 +1,111 @@
+"""Issue 13: the scene-reading placement, the evidence map, the length bound, and the figures held on the study and
+check sets (the check set is scored only: its sketches are never read to write rules)."""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import replace
+
+import pytest
+
+from txt2sce_ros.errors import InputError
+from txt2sce_ros.paths import shared_dir
+from txt2sce_ros.sketch import Sketch, load_sketches, validate_sketch_dict
+from txt2sce_ros.text.evaluate import conflict_exact, evaluate, evaluate_by_source, format_diagnostics
+from txt2sce_ros.text.extractor import MAX_NARRATIVE_CHARS, extract
+from txt2sce_ros.text.spans import OffsetMap
+
+REPORTS = shared_dir() / "data" / "reports"
+
+#: What the extractor reaches on each gold set (fractions), held so a change cannot quietly lose it. The check
+#: set's floors are below the issue's targets: see the closing note; raise them as the extractor improves.
+HELD = {
+    "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.85, "npc_events": 0.85,
+                 "obstacle_quantity": 0.95, "completeness": 0.95},
+    "dev_gold_study": {"npc_quantity": 0.92, "npc_type": 0.86, "npc_position": 0.59, "npc_events": 0.58,
+                       "obstacle_quantity": 0.95, "completeness": 0.95},
+    "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.44, "npc_events": 0.52,
+                       "obstacle_quantity": 0.87, "completeness": 0.90},
+}
+
+
+@pytest.fixture(scope="module")
+def dev() -> dict[str, str]:
+    rows = [json.loads(x) for x in (REPORTS / "dev.jsonl").read_text(encoding="utf-8").splitlines() if x.strip()]
+    return {r["id"]: r["text"] for r in rows}
+
+
+@pytest.fixture(scope="module")
+def predicted(dev: dict[str, str]) -> dict[str, Sketch]:
+    return {rid: extract(text, rid) for rid, text in dev.items()}
+
+
+@pytest.mark.parametrize("name", sorted(HELD))
+def test_figures_hold_on_every_gold_set(name: str, predicted: dict[str, Sketch]) -> None:
+    gold = [s for s in load_sketches(REPORTS / f"{name}.jsonl") if isinstance(s, Sketch)]
+    ev = evaluate(gold, predicted)
+    below = {k: round(ev.accuracy(k), 3) for k, v in HELD[name].items() if ev.accuracy(k) < v}
+    assert not below, f"{name}: below what was reached: {below}"
+
+
+def test_diagnostics_name_the_users_figure_and_the_confusions(predicted: dict[str, Sketch]) -> None:
+    gold = [s for s in load_sketches(REPORTS / "dev_gold_study.jsonl") if isinstance(s, Sketch)]
+    ev = evaluate(gold, predicted)
+    text = format_diagnostics(ev, evaluate_by_source(gold, predicted))
+    assert f"{len(ev.conflict_ok)}/{len(ev.complete)} complete reports" in text
+    assert "Position confusion" in text and "dmvca" in text and "nhtsa" in text
+    assert len(ev.complete) == sum(1 for g in gold if not g.missing)
+    # Every complete report is counted once: reproduced, over-refused, or neither.
+    assert len(ev.conflict_ok) + len(ev.over_refused) <= len(ev.complete)
+
+
+def test_conflict_needs_the_collision_party_exactly() -> None:
+    gold = [s for s in load_sketches(REPORTS / "dev_gold.jsonl") if isinstance(s, Sketch)]
+    g = next(s for s in gold if s.collision.with_ and s.collision.with_.startswith("npc") and s.npcs[0].lane)
+    assert conflict_exact(g, g)
+    other = {"left": "right", "right": "left", "same": "left"}[g.npcs[0].lane]
+    moved = replace(g, npcs=(replace(g.npcs[0], lane=other), *g.npcs[1:]))
+    if g.collision.with_ == "npc1":
+        assert not conflict_exact(g, moved)
+    assert not conflict_exact(g, replace(g, ego=replace(g.ego, actions=g.ego.actions + "h")))
+
+
+def test_evidence_points_at_the_narrative(dev: dict[str, str], predicted: dict[str, Sketch]) -> None:
+    head = re.compile(r"[a-z]{3,}", re.I)
+    with_party = 0
+    for rid, sk in predicted.items():
+        text = dev[rid]
+        assert validate_sketch_dict(sk.to_dict()) == [], rid
+        assert Sketch.from_dict(sk.to_dict()).evidence == sk.evidence  # survives the JSON round trip
+        for slot, spans in sk.evidence:
+            for a, b in spans:
+                assert 0 <= a < b <= len(text), (rid, slot)
+        for k, party in enumerate(sk.npcs):
+            spans = sk.evidence_for(f"npcs[{k}].category")
+            assert spans, (rid, k)
+            named = " ".join(text[a:b] for a, b in spans)
+            assert head.search(named) and "EGO" not in named, (rid, named)
+            assert sk.evidence_for(f"npcs[{k}].position"), (rid, k)
+            with_party += 1
+    assert with_party > 150
+
+
+def test_offset_map_survives_the_normaliser() -> None:
+    original = 'A Waymo Autonomous Vehicle (“Waymo AV”)   was struck  by a white  minivan (Vehicle 2).'
+    normalised = "EGO was struck by a white minivan."
+    omap = OffsetMap(original, normalised)
+    a = normalised.index("white minivan")
+    span = omap.to_original(a, a + len("white minivan"))
+    assert span is not None and original[span[0]:span[1]] == "white  minivan"
+    ego = omap.to_original(0, 3)
+    assert ego is not None and "Waymo" in original[ego[0]:ego[1]]
+
+
+def test_over_long_narrative_is_refused_clearly() -> None:
+    with pytest.raises(InputError, match="over the limit"):
+        extract("The AV was struck by a car. " * (MAX_NARRATIVE_CHARS // 20), "long")
+    # Just under the limit it is read (linear time; `txt2sce bench extract` prints the per-character cost).
+    sk = extract(("The AV was traveling north when a car struck its rear bumper. " * 2000)[:MAX_NARRATIVE_CHARS // 4],
+                 "long-ok")
+    assert sk.npcs
