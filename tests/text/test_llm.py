@@ -88,7 +88,8 @@ class _Handler(BaseHTTPRequestHandler):
             self.wfile.write(b'{"error": "recorded failure"}')
             return
         users = [m["content"] for m in body["messages"] if m["role"] == "user"]
-        step = next(s for s in ("STEP 5", "STEP 4", "STEP 3", "STEP 2", "STEP 1") if any(s in u for u in users))
+        step = next(s for s in ("WEAK SLOTS", "STEP 5", "STEP 4", "STEP 3", "STEP 2", "STEP 1")
+                    if any(s in u for u in users))
         content = self.server.answers[step]
         if step in self.server.garbage_once and "not valid" not in users[-1]:
             self.server.garbage_once.discard(step)
@@ -215,6 +216,32 @@ def test_hybrid_asks_only_for_incomplete_reports(server: ChatServer, tmp_path: P
     vague = ReportInput(RID, "The AV was damaged. No injuries were reported.", "mem")
     out = sketch_report(vague, backend="hybrid", llm=ex)
     assert isinstance(out, Sketch) and out == _gold() and len(server.log) == 5
+
+
+def test_hybrid_asks_only_for_weak_slots_and_keeps_valid_answers(server: ChatServer, tmp_path: Path) -> None:
+    from txt2sce_ros.text.extractor import extract_weighed
+
+    # Two lanes said of one car: its place is read, but the evidence conflicts.
+    text = "The AV was traveling northbound on Main Street when a car in the left lane, then in the right lane, " \
+           "struck the AV."
+    rules, weak = extract_weighed(text, "weak-1")
+    assert rules.is_buildable and "npcs[0].position" in weak
+    server.answers["WEAK SLOTS"] = json.dumps({"npcs[0].position": "R6", "npcs[0].lane": "left",
+                                               "npcs[0].actions": "af", "npcs[0].category": "bus"})
+    ex = _extractor(server, tmp_path / "c")
+    out = sketch_report(ReportInput("weak-1", text, "mem"), backend="hybrid", llm=ex)
+    assert isinstance(out, Sketch) and len(server.log) == 1
+    asked = server.log[0]["body"]["messages"][-1]["content"]
+    assert "npcs[0].position" in asked and "Hard cases" in server.log[0]["body"]["messages"][0]["content"]
+    assert (out.npcs[0].position, out.npcs[0].lane) == ("R6", "left")
+    assert out.npcs[0].category == rules.npcs[0].category  # a slot not asked for is never taken
+    if "npcs[0].actions" in weak:
+        assert out.npcs[0].actions == "af"
+    # An answer that would break the sketch (a lane for a junction position) is dropped slot by slot.
+    server.answers["WEAK SLOTS"] = json.dumps({"npcs[0].position": "R9", "npcs[0].lane": "left"})
+    out2 = sketch_report(ReportInput("weak-1", text + " ", "mem"), backend="hybrid", llm=_extractor(
+        server, tmp_path / "d"))
+    assert isinstance(out2, Sketch) and out2.npcs[0].position == rules.npcs[0].position
 
 
 def test_cli_llm_backend_flags_and_env(server: ChatServer, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

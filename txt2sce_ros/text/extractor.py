@@ -76,6 +76,13 @@ class Evidence:
 def extract(text: str, report_id: str) -> Sketch:
     """Read one narrative into a sketch. Raises InputError for an empty or over-long text; otherwise always returns
     a sketch (with `missing` naming what the text lacks)."""
+    return extract_weighed(text, report_id)[0]
+
+
+def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]:
+    """The sketch and the slot paths whose evidence was weak or conflicting (`hybrid` asks a model for those):
+    a position no cue decided and the phrase patterns could not place, lane cues that disagree, or actions
+    defaulted because no manoeuvre was told of the party."""
     if not text or not text.strip():
         raise InputError("empty narrative", source=report_id)
     if len(text) > MAX_NARRATIVE_CHARS:
@@ -117,6 +124,7 @@ def extract(text: str, report_id: str) -> Sketch:
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(r"\bturn(?:ed|ing)\b", t)) and junction
     npcs: list[Party] = []
     ev = Evidence(d)
+    weak: list[str] = []
     ev.acts("ego.actions", [a for a in d.acts if a.who == -1 and before_contact(d, a.sent, a.pos)])
     missing: list[str] = []
     idmap: dict[int, str] = {}
@@ -126,6 +134,8 @@ def extract(text: str, report_id: str) -> Sketch:
         placed = place(d, e, (pos, lane), ego_actions)
         pos, lane = placed.position, placed.lane
         slot = f"npcs[{k - 1}]"
+        if not known or placed.conflicting:
+            weak += [f"{slot}.position", f"{slot}.lane"]
         ev.mention(f"{slot}.category", e)
         ev.spans(f"{slot}.position", [c.span for c in placed.cues] or None, fallback=e)
         if pos == "R6":
@@ -149,6 +159,8 @@ def extract(text: str, report_id: str) -> Sketch:
         if not known and not pacts:
             missing += ["position", "actions"]
         ev.acts(f"{slot}.actions", pacts)
+        if not pacts:
+            weak.append(f"{slot}.actions")
         npcs.append(Party(id=f"npc{k}", category=e.category, position=pos, lane=lane,  # type: ignore[arg-type]
                           start=start, actions=acts))  # type: ignore[arg-type]
         idmap[e.idx] = f"npc{k}"
@@ -183,9 +195,10 @@ def extract(text: str, report_id: str) -> Sketch:
         ev.spans(slot, spans)
     if d.contact_sent is not None:
         ev.spans("collision.with", [(d.offset(d.contact_sent), d.offset(d.contact_sent) + len(sents[d.contact_sent]))])
-    return Sketch(report_id=report_id, road=r, environment=env, signal_state=sig,  # type: ignore[arg-type]
+    sketch = Sketch(report_id=report_id, road=r, environment=env, signal_state=sig,  # type: ignore[arg-type]
                   ego=EgoInfo(start=ego_start, actions=ego_actions),  # type: ignore[arg-type]
                   npcs=tuple(npcs), obstacles=tuple(obs),
                   collision=Collision(with_=with_id, type=ctype),  # type: ignore[arg-type]
                   missing=tuple(dict.fromkeys(missing)),  # type: ignore[arg-type]
                   evidence=ev.mapped(text))
+    return sketch, tuple(weak)

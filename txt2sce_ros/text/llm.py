@@ -265,16 +265,45 @@ class LlmExtractor:
                 ids = [p["id"] for p in answers[step]["parties"]]
         return merge_answers(report_id, answers)
 
-    def refine(self, offline: Sketch, narrative: str) -> Sketch:
-        """Hybrid mode: keep the rules' sketch when it is complete; ask the LLM only for reports the rules flag as
-        incomplete, and take its answer only if that one is complete."""
-        if offline.is_buildable:
+    def refine(self, offline: Sketch, narrative: str, weak: tuple[str, ...] = ()) -> Sketch:
+        """Hybrid mode. A report the rules flag incomplete gets the whole dialogue (its answer is taken only if
+        complete); a complete one with weak slots gets one question about those slots only, and each answer that
+        keeps the sketch valid replaces the rules' value; otherwise the rules' sketch stands."""
+        if not offline.is_buildable:
+            try:
+                asked = self.extract(narrative, offline.report_id)
+            except InputError:
+                return offline
+            return asked if asked.is_buildable else offline
+        if not weak:
             return offline
+        return self.ask_slots(offline, narrative, weak)
+
+    def ask_slots(self, offline: Sketch, narrative: str, slots: tuple[str, ...]) -> Sketch:
+        """One question for the listed slot paths (`npcs[K].position|lane|actions`); answers merged slot by slot."""
+        prompt = (load_prompt("hybrid").replace("{narrative}", narrative.strip())
+                  .replace("{sketch}", json.dumps({k: v for k, v in offline.to_dict().items() if k != "evidence"}))
+                  .replace("{slots}", ", ".join(slots)))
+        messages = [{"role": "system", "content": load_prompt("system")}, {"role": "user", "content": prompt}]
         try:
-            asked = self.extract(narrative, offline.report_id)
+            answer = parse_answer(self.client.complete(messages))
         except InputError:
             return offline
-        return asked if asked.is_buildable else offline
+        if not isinstance(answer, dict):
+            return offline
+        d = offline.to_dict()
+        for slot in slots:
+            m = re.fullmatch(r"npcs\[(\d+)\]\.(position|lane|actions)", slot)
+            if not m or slot not in answer or int(m.group(1)) >= len(d["npcs"]):
+                continue
+            trial = json.loads(json.dumps(d))
+            npc = trial["npcs"][int(m.group(1))]
+            npc[m.group(2)] = answer[slot]
+            if m.group(2) == "position" and npc["position"] not in ("R5", "R6", "R7"):
+                npc["lane"] = None
+            if not validate_sketch_dict(trial):
+                d = trial
+        return Sketch.from_dict(d) if d != offline.to_dict() else offline
 
 
 def merge_answers(report_id: str, answers: dict[str, Any]) -> Sketch:

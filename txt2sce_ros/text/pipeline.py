@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Literal
 
 from ..errors import Txt2SceError
 from ..sketch import ErrorRecord, Sketch, validate_sketch_dict
-from .extractor import extract
+from .extractor import extract, extract_weighed
 from .forms import merge_form
 from .readers import ReportInput
 
@@ -42,7 +42,8 @@ def sketch_report(inp: ReportInput, *, backend: Backend = "offline", llm: LlmExt
             llm = llm or default_llm()
             sk = llm.extract(inp.text, inp.report_id)
         else:
-            sk = (llm or default_llm()).refine(extract(inp.text, inp.report_id), inp.text)
+            rules, weak = extract_weighed(inp.text, inp.report_id)
+            sk = (llm or default_llm()).refine(rules, inp.text, weak)
         sk = merge_form(sk, inp.form)
     except Txt2SceError as exc:
         return ErrorRecord(inp.report_id, str(exc), inp.source)

@@ -74,6 +74,12 @@ class Placement:
     lane: str | None
     rule: str  # which cue decided it ("first reading" when none did)
     cues: tuple[Cue, ...]  # the cues that decided (all gathered ones when the first reading stood)
+    seen: tuple[Cue, ...] = ()  # every cue gathered
+
+    @property
+    def conflicting(self) -> bool:
+        """Lane cues that disagree: the reading is weak (hybrid mode asks a model)."""
+        return len({c.value for c in self.seen if c.kind == "lane"}) > 1
 
 
 def _side(word: str | None) -> str | None:
@@ -160,9 +166,9 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
     pos, lane = first
     cues = gather(d, e)
     if pos not in ("R5", "R6"):
-        return Placement(pos, lane, "first reading", tuple(cues))
+        return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     if any(c.kind == "direction" for c in cues):
-        return Placement(pos, lane, "first reading", tuple(cues))
+        return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     rule = "first reading"
     backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(context(d, e)))
     along = [c for c in cues if c.kind == "along"]
@@ -192,4 +198,4 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
         # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
-    return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues))
+    return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues), tuple(cues))
