@@ -126,6 +126,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
         # a party that then follows the AV turned into its direction, so the sides swap.
         follows = fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)
+        onto_ours = _onto_av_street(d, ctx)
+        if turns[0] == "d" and not follows and "d" not in ego_actions and not onto_ours:
+            # A left turn across the path of an AV going through: the classic conflict comes from the opposite
+            # approach (left turn across path, opposite direction) more often than from the crossing road.
+            return "R2", None, True
         from_right = (turns[0] == "d") != bool(follows)
         return ("R3" if from_right else "R1"), None, True
     if d.junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
@@ -137,6 +142,24 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+_STREET = r"((?:[A-Z0-9][\w.'-]*\s+){1,3}?)(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|Dr\b|Way\b|" \
+          r"Lane\b|Parkway|Highway|Hwy|Expressway|Place|Court|Terrace)"
+
+
+def av_street(d: Doc) -> str | None:
+    """The street the AV travels on, from the first clause that puts it on one ("EGO was traveling westbound on
+    Vallejo Street"); the name's words without the suffix, lower-cased."""
+    m = fre.search(rf"\bEGO\b[^.]{{0,80}}?\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
+    return m.group(1).strip().lower() if m else None
+
+
+def _onto_av_street(d: Doc, ctx: str) -> bool:
+    """Does the party turn onto the AV's own street (so it came from a crossing road)?"""
+    street = av_street(d)
+    m = fre.search(rf"\bonto\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", ctx)
+    return bool(street and m and m.group(1).strip().lower() == street)
 
 
 def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> tuple[str, str]:

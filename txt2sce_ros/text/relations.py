@@ -56,6 +56,11 @@ _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
                          r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
+# Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
+# AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
+_ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
+                          r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?",
+                          re.I)
 _ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                           r"\bon-?coming\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
@@ -115,15 +120,52 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
     return out
 
 
+def _lane_rank(m: re.Match[str]) -> float:
+    mod, side, from_side = (g.lower() if g else "" for g in m.groups())
+    if side in ("middle", "center", "centre"):
+        return 4.5
+    if from_side:  # "the second lane from the left"
+        k = {"second": 1, "third": 2}.get(mod, 0)
+        return k if from_side == "left" else 9 - k
+    if mod in ("second", "third"):
+        k = {"second": 1, "third": 2}[mod]
+        return k if side == "left" else 9 - k
+    return 0 if side == "left" else 9
+
+
+def av_lane_rank(d: Doc) -> float | None:
+    """The AV's own lane on the 0 (leftmost) .. 9 (rightmost) scale, when a clause about the AV names it."""
+    for i, s in enumerate(d.sents):
+        for m in fre.finditer(r"\bEGO\b", s):
+            clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", s[m.end():m.end() + 120])[0]
+            lm = _ABS_LANE.search(clause)
+            if lm and not fre.search(r"\b(?:into|onto|toward)\s+the\s+\S+\s*$", clause[:lm.start() + 5], re.I):
+                return _lane_rank(lm)
+    return None
+
+
 def gather(d: Doc, e: Entity) -> list[Cue]:
     """Every cue the narrative states about party `e`, in text order."""
     cues: list[Cue] = []
+    own = av_lane_rank(d)
     for sent, a, b in _mention_windows(d, e):
         s = d.sents[sent]
         win = TURN_WORDS.sub(lambda m: " " * len(m.group(0)), s[a:b])
         base = d.offset(sent) + a
+        absolute = []
+        if own is not None:
+            for m in _ABS_LANE.finditer(win):
+                if fre.search(r"\b(?:adjacent|neighbou?ring)\b", m.group(0), re.I) or \
+                        _INTO.search(win[max(0, m.start() - 25):m.start() + 5]):
+                    continue
+                rank = _lane_rank(m)
+                side = "same" if rank == own else "left" if rank < own else "right"
+                absolute.append((m.start(), m.end()))
+                cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         for m in _LANE_CUES.finditer(win):
             side = _side(next(g for g in m.groups() if g))
+            if any(a0 <= m.start() < b0 for a0, b0 in absolute):
+                continue  # read against the AV's own lane above
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         for m in _SAME_LANE.finditer(win):
@@ -136,7 +178,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         for m in _PASSING.finditer(win):
             cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
         for m in _ONCOMING.finditer(win):
-            cues.append(Cue("direction", "opposite", (base + m.start(), base + m.end())))
+            path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane", win[m.end():], re.I)
+            cues.append(Cue("direction", "opposite-lane" if path else "opposite", (base + m.start(), base + m.end())))
     if e.idx == d.partner and d.contact_sent is not None:
         fore, _ = ego_contact_part(d)
         s = d.sents[d.contact_sent]
@@ -165,9 +208,15 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
     """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
     pos, lane = first
     cues = gather(d, e)
-    if pos not in ("R5", "R6"):
+    passing_path = [c for c in cues if c.value == "opposite-lane"]
+    overtakes = any(c.kind == "passing" or (c.kind == "along" and c.value == "behind") for c in cues)
+    if passing_path and overtakes and not any(c.value == "opposite" for c in cues) and pos in ("R2", "R7", "R5", "R6"):
+        # "passed EGO by driving in the oncoming lane": the lane is its path, the party goes the AV's way.
+        pos = "R6"
+        lane = lane if pos in ("R5", "R6") and lane not in (None, "same") else "left"
+    elif pos not in ("R5", "R6"):
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
-    if any(c.kind == "direction" for c in cues):
+    if any(c.kind == "direction" and c.value == "opposite" for c in cues):
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     rule = "first reading"
     backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(context(d, e)))
