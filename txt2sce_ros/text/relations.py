@@ -47,7 +47,8 @@ _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|pane
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
 # A lane the party moved into is where it went, not where it was.
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
-_SAME_LANE = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
+_SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+EGO\b"
+                           r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO)\b", re.I)
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
@@ -242,6 +243,9 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) ->
     elif pass_side:
         lane, rule = pass_side, rule + "; passing side"
         used.append(next(c for c in passing if c.value))
+    elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fg"]):
+        # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round.
+        lane, rule = ("right" if changes[0] == "f" else "left"), rule + "; cut in"
     elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None:
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
         # passing or splitting lanes was beside the AV on the side it touched.
