@@ -104,7 +104,15 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
                          side=None)
     if pre:
         last = pre[-1]
-        if last.code in ("h", "S"):
+        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and not fre.search(
+                r"yield", last.text, re.I) and not fre.search(
+                r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b",
+                d.sents[last.sent][last.pos:last.pos + 60], re.I):
+            # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
+            # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
+            # state ("was stopped") is where the AV waited when it began.
+            prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
+        elif last.code in ("h", "S"):
             stopped = True
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F"):
             prefix = [last]
