@@ -1,0 +1,71 @@
+"""Section 5 of an OL 316: the narrative, from the caption (or the mode boxes under it) to where the text ends.
+
+Both revisions put the "Autonomous Mode / Conventional Mode" boxes right under the caption and close the
+narrative with an "Additional information attached" box; REV. 2/2017 goes on with the check-box tables on the next
+page, which are not narrative. So the narrative is the lines after the mode boxes up to the first closing line:
+that box, section 6, the form's footer or the tables' heading. Scanner OCR damages captions ("SECT ION 5",
+"ACCIDENT DETAILS- DESCRIPTION"), so they are matched on their letters only.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+from .layout import Page, Piece
+
+
+class Section5(NamedTuple):
+    text: str  # whitespace collapsed
+    closed: bool  # its closing line was seen (an OCR pass reads pages until it is)
+    from_fields: bool  # all of it came from a fillable form's field values
+    page: int  # the page it is on
+
+
+def compact(text: str) -> str:
+    """Upper-case letters and digits only: "ROA DWAY SU RFACE" -> "ROADWAYSURFACE"."""
+    return re.sub(r"[^A-Z0-9]", "", text.upper())
+
+
+_CAPTION = re.compile(r"SECTION5|ACCIDENTDETAILS")
+#: The mode boxes' labels, OCR slips allowed ("Conventional Modo", "ventlonal Moda").
+_MODE = re.compile(r"(?:NOMOUS|ENTIONAL|ENTLONAL|NTIONAL)MOD[A-Z]")
+_END = re.compile(r"ADDITIONALINF|SECTION6|CERTIFICATION|CERTIFY|FOREGOING|PENALTYOFPERJURY|316(?:NEW|REV)"
+                  r"|ITEMSMARKEDBELOW|PAGE\d+OF\d+")
+#: A gap this many line heights wide after the narrative's last line ends it (a scan's garbled captions below).
+_GAP = 4.0
+_SHORT = 70  # a mode-box line is short; a narrative sentence that says "autonomous mode" is long
+
+
+def _is_mode_line(line: Piece) -> bool:
+    return bool(_MODE.search(compact(line.text))) and len(line.text) <= _SHORT and line.kind != "field"
+
+
+def find_narrative(pages: list[Page]) -> Section5 | None:
+    """Section 5's narrative, or None when there is none."""
+    lines = [(page.number, ln) for page in pages for ln in page.lines]
+    start = next((i for i, (_, ln) in enumerate(lines) if _CAPTION.search(compact(ln.text))
+                  and ln.kind != "field"), None)
+    if start is None:
+        # An OCR layer may have lost the caption; the mode boxes under it still mark the section.
+        start = next((i - 1 for i, (_, ln) in enumerate(lines) if _is_mode_line(ln)), None)
+        if start is None:
+            return None
+    body: list[Piece] = []
+    closed = False
+    page = lines[start][0]
+    for number, ln in lines[start + 1:]:
+        if not body and _is_mode_line(ln):
+            continue
+        if ln.kind != "field" and _END.search(compact(ln.text)):
+            closed = True
+            break
+        if body and (number != page or body[-1].y0 - ln.y1 > _GAP * max(body[-1].height, 8.0)):
+            # The narrative box ends on its page; REV. 2/2017's tables follow on the next one.
+            closed = True
+            break
+        if not body:
+            page = number
+        body.append(ln)
+    text = re.sub(r"\s+", " ", " ".join(ln.text for ln in body)).strip()
+    return Section5(text, closed, all(ln.kind == "field" for ln in body), page) if text else None
