@@ -29,7 +29,7 @@ def run(args: argparse.Namespace) -> int:
     from ..config import load_config
     from ..sketch import ErrorRecord
     from ..text.pipeline import run_batch
-    from ..text.readers import count_inputs, iter_inputs
+    from ..text.readers import ReportInput, count_inputs, iter_inputs
 
     cfg = load_config("extract")
     backend = args.backend or cfg.get("backend", "offline")
@@ -40,7 +40,8 @@ def run(args: argparse.Namespace) -> int:
         llm = LlmExtractor.from_config(LlmConfig.from_settings(cfg.get("llm"), base_url=args.base_url,
                                                                model=args.model, timeout_s=args.timeout))
     total = count_inputs(args.inputs)
-    results = run_batch(iter_inputs(args.inputs), backend=backend, llm=llm)
+    inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
+    results = run_batch(inputs, backend=backend, llm=llm)
     if not args.quiet and total and total >= int(cfg.get("progress_min_reports", 50)):
         from tqdm import tqdm
 
@@ -49,6 +50,7 @@ def run(args: argparse.Namespace) -> int:
     if out.parent and not out.parent.exists():
         out.parent.mkdir(parents=True, exist_ok=True)
     n = errors = incomplete = 0
+    failed_pdfs: list[str] = []
     with open(out, "w", encoding="utf-8") as fh:
         for r in results:
             fh.write(r.to_json() + "\n")
@@ -58,14 +60,46 @@ def run(args: argparse.Namespace) -> int:
                 # the reason belongs on the console, not only in the output file (quiet or not: it is an error)
                 if errors <= MAX_ERRORS_SHOWN:
                     print(f"txt2sce extract: error: {r.report_id}: {r.error}", file=sys.stderr)
+                if str(r.source or "").lower().endswith(".pdf"):
+                    failed_pdfs.append(r.report_id)
             elif not r.is_buildable:
                 incomplete += 1
     if errors > MAX_ERRORS_SHOWN:
         print(f"txt2sce extract: ... and {errors - MAX_ERRORS_SHOWN} more errors (every one is in {out})",
               file=sys.stderr)
+    forms = [i for i in inputs if isinstance(i, ReportInput) and i.form is not None]
+    if forms:
+        _write_form_readings(out, forms)
     if not args.quiet:
         print(f"{n} reports -> {out}: {n - errors - incomplete} buildable sketches, {incomplete} incomplete "
               f"(missing facts), {errors} errors", file=sys.stderr)
+        if forms:
+            print(f"OL 316 form readings beside the sketches: {_forms_path(out)}", file=sys.stderr)
+        if failed_pdfs:
+            print(f"no narrative read from {len(failed_pdfs)} PDF(s): {', '.join(failed_pdfs)}", file=sys.stderr)
     # A batch carries on past bad rows (each has its error record), but a batch where nothing could be read is
-    # a failure the caller should see in the exit status.
-    return 1 if n and errors == n else 0
+    # a failure the caller should see in the exit status; so is a PDF whose narrative could not be read (its
+    # sketch would be empty).
+    return 1 if (n and errors == n) or failed_pdfs else 0
+
+
+def _forms_path(out: Path) -> Path:
+    return out.with_name(f"{out.stem}.ol316.jsonl")
+
+
+def _write_form_readings(out: Path, inputs: list) -> None:
+    """Beside the sketches: each OL 316 PDF's own reading (its boxes, the company's collision type and movements,
+    how it was read) and where it disagrees with the narrative, which decided."""
+    import json
+
+    from ..sketch import Sketch, load_sketches
+    from ..text.forms import form_disagreements, form_sketch_fields
+
+    sketches = {s.report_id: s for s in load_sketches(out) if isinstance(s, Sketch)}
+    with open(_forms_path(out), "w", encoding="utf-8") as fh:
+        for inp in inputs:
+            sk = sketches.get(inp.report_id)
+            notes = list(inp.form.notes) + (form_disagreements(sk, inp.form) if sk else [])
+            fh.write(json.dumps({"report_id": inp.report_id, "source": inp.source, "read_as": inp.form.read_as,
+                                 "form": inp.form.to_dict(), "form_reading": form_sketch_fields(inp.form),
+                                 "notes": notes}, ensure_ascii=False) + "\n")

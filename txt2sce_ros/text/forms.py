@@ -23,7 +23,8 @@ LIGHTING = {"daylight": "day", "dusk-dawn": "dusk_dawn", "dawn or dusk": "dusk_d
             "dark-street lights": "night_lit", "dark - lighted": "night_lit",
             "dark-no street lights": "night_dark", "dark - not lighted": "night_dark",
             "dark-street lights not functioning": "night_dark"}
-SURFACE = {"dry": "dry", "wet": "wet", "snowy-icy": "snow_ice", "snow": "snow_ice", "ice": "snow_ice"}
+SURFACE = {"dry": "dry", "wet": "wet", "snowy-icy": "snow_ice", "snow": "snow_ice", "ice": "snow_ice",
+           "slippery (muddy, oily, etc.)": "wet"}
 COLLISION = {"head-on": "head_on", "side swipe": "side_swipe", "rear end": "rear_end", "broadside": "broadside",
              "hit object": "hit_object", "vehicle/pedestrian": "pedestrian", "overturned": "other",
              "other*": "other", "other": "other"}
@@ -49,23 +50,54 @@ def _first(values: Iterable[str], table: dict[str, str]) -> str | None:
     return None
 
 
+def form_sketch_fields(form: FormFields) -> dict[str, str | None]:
+    """The form's own reading in the sketch vocabulary: environment, collision type (VEH 1's column, else VEH 2's:
+    companies tick it per vehicle and often only for one) and the AV's start (the movement table, else section 2's
+    "Vehicle was" box). None where the form leaves it blank."""
+    ctype = _first(form.get("type_of_collision"), COLLISION) or _first(form.get("type_of_collision", 2), COLLISION)
+    moves = [m.lower() for m in form.get("movement_preceding_collision")]
+    was = form.get("vehicle_was")
+    start: str | None = None
+    if moves:
+        start = "stopped" if all(m in _STATIC for m in moves) else "moving"
+    elif was:
+        start = "stopped" if was == ("stopped in traffic",) else "moving"
+    return {"weather": _first(form.get("weather"), WEATHER), "lighting": _first(form.get("lighting"), LIGHTING),
+            "surface": _first(form.get("roadway_surface"), SURFACE), "collision_type": ctype, "ego_start": start}
+
+
 def merge_form(sketch: Sketch, form: FormFields | None) -> Sketch:
     """Fill the environment fields the narrative left `unknown` from the form's boxes (the narrative wins where it
     speaks), and a collision type the text could not tell."""
     if form is None:
         return sketch
     env = sketch.environment
+    boxes = form_sketch_fields(form)
     new_env = Environment(
-        weather=env.weather if env.weather != "unknown" else (_first(form.get("weather"), WEATHER) or "unknown"),
-        lighting=env.lighting if env.lighting != "unknown" else (_first(form.get("lighting"), LIGHTING) or "unknown"),
-        surface=env.surface if env.surface != "unknown" else (_first(form.get("roadway_surface"), SURFACE)
-                                                              or "unknown"),
+        weather=env.weather if env.weather != "unknown" else (boxes["weather"] or "unknown"),
+        lighting=env.lighting if env.lighting != "unknown" else (boxes["lighting"] or "unknown"),
+        surface=env.surface if env.surface != "unknown" else (boxes["surface"] or "unknown"),
     )  # type: ignore[arg-type]
     out = replace(sketch, environment=new_env)
-    ctype = _first(form.get("type_of_collision"), COLLISION)
+    ctype = boxes["collision_type"]
     if ctype and sketch.collision.with_ is not None and sketch.collision.type == "other":
         out = replace(out, collision=replace(sketch.collision, type=ctype))  # type: ignore[arg-type]
     return out
+
+
+def form_disagreements(sketch: Sketch, form: FormFields) -> list[str]:
+    """Where the narrative's reading (the sketch before the boxes were merged) and the form's boxes differ; the
+    narrative decides, these notes say so."""
+    boxes = form_sketch_fields(form)
+    told = {"weather": sketch.environment.weather, "lighting": sketch.environment.lighting,
+            "surface": sketch.environment.surface, "collision_type": sketch.collision.type,
+            "ego_start": sketch.ego.start}
+    notes = []
+    for key, said in told.items():
+        ticked = boxes[key]
+        if ticked and said not in ("unknown", "none", "other") and ticked != said:
+            notes.append(f"{key}: the form ticks {ticked}, the narrative reads {said}; the narrative's reading is kept")
+    return notes
 
 
 @dataclass

@@ -23,6 +23,9 @@ class FormFields:
 
     fields: dict[str, tuple[str, ...]] = field(default_factory=dict)
     vehicle_2: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: How the PDF was read (`text`, `form_fields`, `ocr`) and what the reader noted (OCR used, ...).
+    read_as: str = "text"
+    notes: tuple[str, ...] = ()
 
     def get(self, name: str, vehicle: int = 1) -> tuple[str, ...]:
         """The ticks of one vehicle's column; the shared conditions fall back to the other column when blank."""
@@ -49,5 +52,5 @@ def read_ol316(path: str | Path) -> Ol316:
     from .ol316.reader import read
 
     r = read(path)
-    return Ol316(narrative=r.narrative, form=FormFields(dict(r.vehicle_1), dict(r.vehicle_2)), source=str(path),
-                 text_source=r.text_source, notes=r.notes)
+    form = FormFields(dict(r.vehicle_1), dict(r.vehicle_2), read_as=r.text_source, notes=r.notes)
+    return Ol316(narrative=r.narrative, form=form, source=str(path), text_source=r.text_source, notes=r.notes)
