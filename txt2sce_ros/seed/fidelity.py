@@ -84,6 +84,21 @@ def check_frames(frames: Iterable, target: str) -> tuple[str, float | None, floa
     return "none", None, gap_out, ttc_out
 
 
+def first_contacts(frames: Iterable) -> list[tuple[str, str, float]]:
+    """Every pair of entities whose footprints touched during a run, with the first time they did, in time order
+    (the ego first in its pairs)."""
+    seen: dict[tuple[str, str], float] = {}
+    for fr in frames:
+        states = [fr.ego, *fr.objects]
+        corners = [_corners(e) for e in states]
+        for i in range(len(states)):
+            for j in range(i + 1, len(states)):
+                pair = (states[i].name, states[j].name)
+                if pair not in seen and boxes_gap(corners[i], corners[j]) <= 0.0:
+                    seen[pair] = fr.t
+    return sorted(((a, b, t) for (a, b), t in seen.items()), key=lambda c: (c[2], c[0], c[1]))
+
+
 def check_seed(result: SeedResult, *, dt: float = 0.05, target: str | None = None) -> FidelityResult:
     """Run one generated seed in the player (storyboard AV) and judge it."""
     tgt = target or result.manifest.get("fidelity_target")
