@@ -228,3 +228,31 @@ def test_marker_array_encoder_matches_rclpy_and_zeroes_padding(lights_run) -> No
         assert data == encode_marker_array(msg)                    # same message, same bytes
         assert len(data) == len(serialize_message(msg))
         assert deserialize_message(data, MarkerArray) == deserialize_message(serialize_message(msg), MarkerArray)
+
+
+def test_foxglove_layout_names_topics_and_fields_the_bag_has(lights_run) -> None:
+    import json
+
+    from oracle_monitor.topics import TOPIC_TYPES
+
+    layout = json.loads((Path(__file__).parents[2] / "docs" / "foxglove_layout.json").read_text())
+    panels = layout["configById"]
+    three_d = next(v for k, v in panels.items() if k.startswith("3D!"))
+    assert three_d["followTf"] == c.MAP_FRAME
+    assert set(c.VIEW_TOPICS) | {c.TOPIC_OBJECTS_MARKERS} <= {t for t, s in three_d["topics"].items() if s["visible"]}
+    # Every topic a panel reads is one the recorder writes, and the plotted fields exist in the recorded messages.
+    ts = typestore()
+    bag, _ = lights_run
+    first = {}
+    for m in read_bag(bag).messages():
+        first.setdefault(m.topic, ts.deserialize_cdr(bytes(m.data), m.msgtype))
+    plot = next(v for k, v in panels.items() if k.startswith("Plot!"))
+    for path in [p["value"] for p in plot["paths"]] + [v["topicPath"] for k, v in panels.items()
+                                                       if k.startswith("Table!")]:
+        topic, _, fields = path.partition(".")
+        assert topic in TOPIC_TYPES, path
+        if topic in first:
+            value = first[topic]
+            for f in fields.split("."):
+                value = getattr(value, f)              # raises if the layout names a field the type lacks
+    assert set(three_d["topics"]) <= set(TOPIC_TYPES)
