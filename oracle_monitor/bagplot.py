@@ -153,8 +153,17 @@ def draw(run: RunPicture, out: str | Path, *, t: float | None = None, whole_map:
     if pts:
         xs, ys = [p[0] for p in pts], [p[1] for p in pts]
         pad = 5.0 if whole_map or not focus else 25.0
-        ax.set_xlim(min(xs) - pad, max(xs) + pad)
-        ax.set_ylim(min(ys) - pad, max(ys) + pad)
+        x0, x1, y0, y1 = min(xs) - pad, max(xs) + pad, min(ys) - pad, max(ys) + pad
+        # Widen the narrower side to the axes' shape: the picture fills the figure at equal scale.
+        shape = 1.25
+        if (x1 - x0) < shape * (y1 - y0):
+            grow = (shape * (y1 - y0) - (x1 - x0)) / 2.0
+            x0, x1 = x0 - grow, x1 + grow
+        else:
+            grow = ((x1 - x0) / shape - (y1 - y0)) / 2.0
+            y0, y1 = y0 - grow, y1 + grow
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
     ax.set_aspect("equal", adjustable="box")
     ax.set_xlabel("map x (m)")
     ax.set_ylabel("map y (m)")
