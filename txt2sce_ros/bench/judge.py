@@ -161,7 +161,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {name:<22} {steps:5d} steps  plain {plain * 1000:8.1f} ms  recording {rec * 1000:8.1f} ms  "
                   f"overhead {100 * (rec / plain - 1):+6.1f} %   verdict: {verdict.summary()}")
         print(f"  total overhead {100 * (total_rec / total_plain - 1):+.1f} %  (goal <= 10 %)")
-        _view_share(tmp, repeats, plain_of)
+        _view_share(tmp, 3 * repeats, plain_of)       # short runs: more repeats to see past the noise
         _road_cost(repeats)
         # The recorder alone on the frames of one run: encode + write per message, for scale.
         frames = _frames(SCENARIOS[1])[1]
