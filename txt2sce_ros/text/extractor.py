@@ -156,7 +156,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
         if pos not in ("R5", "R6", "R7"):
             lane = None
-        if not known and not pacts:
+        if not known and not pacts and (e.idx == d.partner or d.partner is None):
+            # Only the party the conflict is about can leave a scenario unbuildable: a bystander the text does
+            # not place still gets its best reading (sketch.md: refuse only what is truly missing).
             missing += ["position", "actions"]
         ev.acts(f"{slot}.actions", pacts)
         if not pacts:

@@ -37,6 +37,9 @@ _AROUND_ONLY = compile_gated(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+sid
                           r"(?:[\w-]+\s+){0,3}$|\baround\s+(?:a|an|the)\s+[\w\s-]{0,30}\band\s+(?:a|an|the)?\s*$", re.I)
 
 
+_THROWN = r"(?:projected|thrown|threw|kicked\s+up|kicked|launched|flung|propelled|flew|sent\s+flying)"
+_THROWN_AFTER = compile_gated(rf"^[\s,]*(?:(?:which|that)\s+)?(?:(?:was|were)\s+)?{_THROWN}\b", re.I)
+_THROWN_BEFORE = compile_gated(rf"\b{_THROWN}\s+(?:up\s+)?(?:a|an|the|some)?\s*(?:[\w-]+\s+){{0,3}}$", re.I)
 _CONTACT_NOTHING = compile_gated(r"\b(?:pavement|undercarriage|pothole|road\s+surface|ground|speed\s+bump|dip)\b", re.I)
 
 
@@ -102,6 +105,13 @@ def find_contact(d: Doc) -> None:
                 else:
                     best = min(others, key=lambda x: abs(x.end - m.start()))
                     partner = best.entity
+                # Debris a party threw up ("ran over road debris, which was projected onto EGO") is what touched
+                # the AV, not the party that threw it.
+                for x in others:
+                    if x.kind == "obstacle" and (_THROWN_AFTER.match(s[x.end:x.end + 50]) or
+                                                 _THROWN_BEFORE.search(s[max(0, x.start - 40):x.start])):
+                        partner = x.entity
+                        break
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
                     if d.ents[door].first.sent == i or (owner == partner and fre.search(r"\bdoor", s[:m.start()])):
