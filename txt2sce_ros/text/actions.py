@@ -43,7 +43,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("f", r"\b(?:left|leftward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+(?:left|center|middle)\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
-          r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered)\s+(?:into\s+)?the\s+(?:oncoming|"
+          r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
+          r"(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),

@@ -141,6 +141,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if pos == "R6":
             behind |= e.heads
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]
+        if not any(a.code in "defgjkmFT" for a in pacts):
+            # The telling gives no manoeuvre of the party but the summary does ("A Nissan made a left turn into
+            # the AV"): the summary is the narrative's own account of it.
+            pacts = sorted(pacts + [a for a in d.acts if a.who == e.idx and a.sent in summary and a.code in "defgjkm"],
+                           key=lambda a: (a.sent, a.pos))
         pacts = prepend_modifier_acts(d, e, pacts)
         first_sent = ([m.sent for m in e.mentions if m.sent not in summary] or [e.first.sent])[0]
         setup_stop = [k for k, a in enumerate(pacts) if a.code == "S" and a.sent == first_sent]
@@ -154,6 +159,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             acts = "a" + acts  # it travelled along the AV's road before turning off it
         if start == "moving" and not acts:
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
+        side = next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")
+        if pos == "R6" and lane == "same" and side and not set(acts) & set("fg"):
+            # Passing the AV from behind it in its own lane takes a move to the side it passed on.
+            acts = (acts or "a") + ("f" if side == "left" else "g")
         if pos not in ("R5", "R6", "R7"):
             lane = None
         if not known and not pacts and (e.idx == d.partner or d.partner is None):
