@@ -190,6 +190,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
             continue
         if _NEGATED.search(before):
             continue  # "did not immediately proceed"
+        if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
+                fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
+            continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
         inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
         # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
