@@ -20,9 +20,9 @@ TABLE_IV = ("npc_quantity", "npc_type", "npc_position", "npc_events",
 EXTRA = ("weather", "lighting", "surface", "layout", "control", "one_way", "lanes", "signal_state",
          "ego_start", "ego_actions", "collision_type", "collision_with", "completeness")
 
-#: The issue's targets on dev_gold.jsonl (fractions).
-TARGETS: dict[str, float] = {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.85, "npc_events": 0.80,
-                             "obstacle_quantity": 0.95, "completeness": 0.90}
+#: The floors every gold set is held to (issue 13; fractions): `eval-extract` marks a slot below its floor.
+TARGETS: dict[str, float] = {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.85, "npc_events": 0.85,
+                             "obstacle_quantity": 0.95, "completeness": 0.95}
 
 
 @dataclass
