@@ -52,8 +52,12 @@ _SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:d
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO)\b", re.I)
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
-                        r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv)))", re.I)
-_AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO)\b", re.I)
+                        r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
+                        r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
+                        r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
+                        r"from\s+behind)", re.I)
+_AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
+                       r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
                          r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
