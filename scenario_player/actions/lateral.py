@@ -16,7 +16,7 @@ from lxml import etree
 from txt2sce_ros.errors import InputError
 
 from ..syntax.xml import ParseContext
-from .base import LATERAL, ActionRun, TransitionDynamics, shape_value
+from .base import LATERAL, SHAPE_PEAK, ActionRun, TransitionDynamics, shape_value
 
 if TYPE_CHECKING:
     from ..world.entity import Entity
@@ -101,7 +101,12 @@ class OffsetRun(ActionRun):
             self.total = duration
             self.by_distance = False
         elif dyn.dimension == "rate":
-            self.total = abs(end - start) / dyn.value if dyn.value > 0 else 0.0   # lateral m/s
+            # The rate is the lateral speed (m/s) the change may reach: the shape's peak, not its mean. OpenSCENARIO
+            # (TransitionDynamics, DynamicsDimension "rate") gives only "the rate at which the target value is
+            # acquired"; a shaped change has no single rate, and the reading that stays within the stated value is
+            # the peak, as esmini does. So a sinusoidal change of |Δ| lasts π·|Δ|/(2·rate), a cubic 1.5·|Δ|/rate,
+            # a linear |Δ|/rate (conformance case lane_change_rate).
+            self.total = SHAPE_PEAK[dyn.shape] * abs(end - start) / dyn.value if dyn.value > 0 else 0.0
             self.by_distance = False
         else:
             self.total = dyn.value

@@ -79,6 +79,9 @@ def test_names_follow_the_seed_format(out, gold) -> None:
     assert dict(goal.attrib) == dict(last.attrib)
     ctrl = root.find(".//ScenarioObject[@name='ego']/ObjectController/Controller")
     assert ctrl.get("name") == "ads_under_test"
+    # esmini reads the controller type from this property; without it the name is an unknown type ([error]).
+    props = {p.get("name"): p.get("value") for p in ctrl.iter("Property")}
+    assert props == {"esminiController": "ExternalController", "txt2sce:controller": "external"}
 
 
 def test_signal_phases_follow_the_reported_state(gold) -> None:

@@ -117,7 +117,10 @@ def _entity(x: _Xml, ents: etree._Element, e: EntityPlan, d_perf: tuple[float, f
     if e.external:
         oc = x.el(so, "ObjectController")
         c = x.el(oc, "Controller", {"name": "ads_under_test"})
-        _properties(x, c, [("txt2sce:controller", "external")])
+        # esminiController: esmini knows the controller type by this property (a name it does not know is an
+        # [error]); its ExternalController means "driven from outside", as ours is, and, never activated, leaves
+        # the storyboard driving the ego there exactly as before. Our player reads only txt2sce:controller.
+        _properties(x, c, [("esminiController", "ExternalController"), ("txt2sce:controller", "external")])
 
 
 def _environment(x: _Xml, parent: etree._Element, env: EnvironmentPlan) -> None:
