@@ -66,6 +66,7 @@ class ActionRun:
     domains: frozenset[str] = frozenset()
     moves_entity = False          # True: the run places the entity itself (default motion skips it)
     consumes_travel = False       # True: its sideways motion takes part of the step's travel (lane changes)
+    travels_at_offset = True      # the entity advances at the radius of its offset path, not the lane centre's
 
     def __init__(self, entity: "Entity") -> None:
         self.entity = entity

@@ -197,6 +197,9 @@ class LateralDistanceAction:
 
 class LateralDistanceRun(ActionRun):
     domains = frozenset({LATERAL})
+    # esmini advances an entity keeping a lateral distance along the lane centre (keep_lateral_distance agrees to
+    # 0.38 m this way, 0.75 m at the offset radius), unlike offsets set by lane changes and LaneOffsetActions.
+    travels_at_offset = False
 
     def __init__(self, ent: "Entity", spec: LateralDistanceAction, world: "World") -> None:
         super().__init__(ent)

@@ -92,6 +92,20 @@ class LaneTrack:
         i, f = self._idx(self._al, a)
         return self._sl[i] + f * (self._sl[i + 1] - self._sl[i])
 
+    def centre_per_offset_path(self, s: float, offset: float) -> float:
+        """Metres of lane centre per metre travelled at `offset` (toward +t) from it, at road s. On a curve of
+        curvature k (dh/ds of the reference line) a path at lateral position t is (1 - k·t) m long per m of s, so
+        an entity driving with an offset advances along the lane at the radius of its own path (esmini does)."""
+        if not offset:
+            return 1.0
+        i, _ = self._idx(self._sl, s)
+        ds = self._sl[i + 1] - self._sl[i]
+        if ds <= 0:
+            return 1.0
+        centre = (self._al[i + 1] - self._al[i]) / ds        # lane centre m per m of s
+        path = centre - (self.h[i + 1] - self.h[i]) / ds * offset
+        return centre / path if path > 1e-6 else 1.0
+
     def travel(self, s: float, distance: float) -> tuple[float, float]:
         """Move `distance` along the driving direction from road s: (new s clamped to the track, leftover m)."""
         a = self.s_to_arc(s) + (distance if self.forward else -distance)

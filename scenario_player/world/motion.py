@@ -75,6 +75,9 @@ def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
     """Advance `dist` along the lane's driving direction (negative: against it); False when the lane network
     ends (the entity stays at the end)."""
     assert ent.track is not None
+    lateral = ent.runs.get("lateral")
+    if lateral is None or lateral.travels_at_offset:
+        dist *= ent.track.centre_per_offset_path(ent.s, ent.offset)
     track, s, ok, flips = lane_walk(world, ent.track, ent.s, dist, ent.route_lanes)
     if flips % 2:
         ent.offset = -ent.offset        # +t of the new road points the other way relative to travel

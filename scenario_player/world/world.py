@@ -295,13 +295,31 @@ def _wrap(a: float) -> float:
 __all__ = ["World", "UnsupportedFeature"]
 
 
+#: Lanes an entity leaving a trajectory is put back on (esmini's choice in the conformance cases: a pedestrian
+#: beside a sidewalk joins the sidewalk, one on a border strip the driving lane next to it).
+REATTACH_LANE_TYPES = ("driving", "sidewalk")
+
+
 def _reattach_impl(self: "World", ent: Entity) -> None:
-    """After a trajectory: follow the lane under the entity again (either way along it), else go on straight."""
-    lp = self.net.locate(ent.x, ent.y, ent.h)
-    if lp is not None and lp.inside:
-        track = self.tracks.at(lp.road_id, lp.lane_id, lp.s)
-        against = abs(_wrap(lp.heading - ent.h)) > math.pi / 2
-        ent.place_on_lane(track, lp.s, lp.offset, lp.heading + math.pi if against else None)
-    else:
+    """After a trajectory the entity goes on along the road under it, as esmini does: on the nearest driving lane
+    or sidewalk (also from beside it, e.g. a pedestrian who ended on a border strip: the lateral offset keeps it
+    where it is; on a sidewalk without successor it stops at the road's end, as there), toward
+    the road's +s when its heading points within 90 degrees of the reference line's direction, else toward -s (a
+    crossing exactly square to the road goes +s, as there). Off every road (no lane projects onto the point) it
+    goes on straight."""
+    lp = self.net.locate(ent.x, ent.y, ent.h, lane_types=REATTACH_LANE_TYPES)
+    if lp is None:
         ent.track = None
         ent.lane_locked = False
+        return
+    track = self.tracks.at(lp.road_id, lp.lane_id, lp.s)
+    x, y, _ = track.pose(lp.s, lp.offset)
+    if math.hypot(x - ent.x, y - ent.y) > 0.5:
+        # The point lies beyond the road's ends: there is no road position to keep.
+        ent.track = None
+        ent.lane_locked = False
+        return
+    road_h = lp.heading if track.forward else lp.heading + math.pi
+    plus_s = math.cos(ent.h - road_h) >= -1e-9        # square to the road, up to rounding: +s
+    against = plus_s != track.forward
+    ent.place_on_lane(track, lp.s, lp.offset, lp.heading + math.pi if against else None)

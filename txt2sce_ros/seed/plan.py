@@ -493,6 +493,8 @@ class Planner:
         if shift:
             sched = [(c, round(max(t + shift, 0.0), 2)) for c, t in sched]
         self.ev.apply(actor, sched, cruise=cruise, route_for=routes)
+        if not routes:
+            actor.route = self._through_route(actor)
         t, _, dn = actor.profile(self.horizon)
         # ---- the meeting
         if mode == "cross":
@@ -562,6 +564,19 @@ class Planner:
                     LanePose(mid_ref.road_id, mid_ref.lane_id, round(s_mid, 3)),
                     LanePose(end.road_id, end.lane_id, end.s)))
         return out
+
+    def _through_route(self, actor: Actor) -> RouteAct | None:
+        """The route of a party whose planned path passes a junction without a turn of its own (assigned at Init):
+        the connecting lane it takes and the end of its path. Without it each player would pick its own branch
+        there (esmini picks at random, ours the straightest), and the reported path would be left to chance."""
+        mid_ref = self._junction_ref(actor.track)
+        if mid_ref is None:
+            return None
+        mid = self.net.lane_centerline(mid_ref.road_id, mid_ref.lane_id, 0.5, section=mid_ref.section)
+        end = actor.track.lane_pose(actor.track.length - 5.0)
+        return RouteAct(f"{actor.name}_route", (
+            LanePose(mid_ref.road_id, mid_ref.lane_id, round(float(mid[len(mid) // 2, 2]), 3)),
+            LanePose(end.road_id, end.lane_id, end.s)))
 
     def _ego_d_at(self, T: float) -> float:
         return float(np.interp(T, self.ego_t, self.ego_d))
