@@ -13,24 +13,11 @@ from typing import TYPE_CHECKING, Callable, Protocol
 
 from lxml import etree
 
+from ..world.pose import Pose
 from .xml import ParseContext
 
 if TYPE_CHECKING:
     from ..world.world import World
-
-
-@dataclass(frozen=True, slots=True)
-class Pose:
-    """A resolved position. Lane fields are set when the position lies on a lane (offset: OpenSCENARIO sense,
-    positive toward +t of the road)."""
-
-    x: float
-    y: float
-    h: float
-    road_id: str | None = None
-    lane_id: int | None = None
-    s: float | None = None
-    offset: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)

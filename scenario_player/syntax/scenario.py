@@ -15,7 +15,7 @@ from txt2sce_ros.road import RoadNetwork, load_network
 
 from ..world.signals import Phase, SignalController
 from .document import ResolvedDocument, resolve_document
-from .entities import EntitySpec
+from .entities import EntitySpec, entity_spec_from_xml
 from .xml import ParseContext
 
 #: attributes that name entities (validated at load).
@@ -117,7 +117,7 @@ def load_scenario(path_or_text: str | Path, *, source: str | None = None, map_te
     specs = []
     for obj in entities_el:
         if obj.tag == "ScenarioObject":
-            specs.append(EntitySpec.from_xml(ctx, obj))
+            specs.append(entity_spec_from_xml(ctx, obj))
         elif isinstance(obj.tag, str):
             ctx.note_unsupported(obj)
     names = {s.name for s in specs}

@@ -9,11 +9,11 @@ from typing import TYPE_CHECKING
 
 from txt2sce_ros.contract import EntityState
 
-from ..syntax.entities import EntitySpec
 from .lanes import LaneTrack
+from .spec import EntitySpec
 
 if TYPE_CHECKING:
-    from ..actions.base import ActionRun
+    from .protocols import Run
 
 
 class Entity:
@@ -31,7 +31,7 @@ class Entity:
         self.track: LaneTrack | None = None       # lane the entity follows (None: free motion)
         self.s = 0.0                              # road s on `track`
         self.offset = 0.0                         # from the lane centre toward +t
-        self.runs: dict[str, "ActionRun"] = {}    # control domain -> run holding it
+        self.runs: dict[str, "Run"] = {}    # control domain -> run holding it
         self.route_lanes: set = set()             # LaneRefs of an assigned route (junction choices)
         self.odometer = 0.0
         self.standstill_time = 0.0

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from ..syntax.positions import Pose
+from .pose import Pose
 
 if TYPE_CHECKING:
     from .entity import Entity

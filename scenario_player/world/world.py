@@ -7,22 +7,19 @@ storyboard index answers StoryboardElementStateConditions. Motion itself lives i
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Iterable
+from typing import Any, Iterable
 
 import numpy as np
 
 from txt2sce_ros.errors import InputError, UnsupportedFeature
 from txt2sce_ros.road import LanePath, LaneRef, RoadNetwork
 
-from ..syntax.positions import Orientation, Pose
 from .entity import Entity
 from .lanes import TrackCache
 from .measure import Measure
+from .pose import HeadingRule, Pose
+from .protocols import Change, Element, Run, Startable
 from .signals import SignalBoard
-
-if TYPE_CHECKING:
-    from ..actions.base import ActionRun, ActionSpec
-    from ..storyboard.element import StoryboardElement, Transition
 
 STATIC_POSITIONS = ("WorldPosition", "LanePosition", "RoadPosition", "RoutePosition")
 
@@ -45,13 +42,13 @@ class World:
         self.source = source
         self.signals = SignalBoard(net)
         self.measure = Measure(self)
-        self.elements: dict[tuple[str, str], "StoryboardElement"] = {}
+        self.elements: dict[tuple[str, str], Element] = {}
         self.notes: list[str] = []                 # e.g. storyboard actions ignored on the planner-driven ego
         self.transitions: list[tuple[float, str, str, str]] = []
         self._static_cache: dict[int, Pose] = {}
         self._routes: dict[int, tuple[LanePath, list[LaneRef]]] = {}
-        self.running: list["ActionRun"] = []
-        self.global_runs: list["ActionRun"] = []
+        self.running: list[Run] = []
+        self.global_runs: list[Run] = []
 
     # -- lookups --------------------------------------------------------------------------------------------------
     def entity(self, name: str) -> Entity:
@@ -65,13 +62,13 @@ class World:
             raise InputError(f"unknown parameter '{name}'", source=self.source, element="parameterRef")
         return self.parameters[name]
 
-    def storyboard_element(self, kind: str, name: str) -> "StoryboardElement":
+    def storyboard_element(self, kind: str, name: str) -> Element:
         el = self.elements.get((kind, name))
         if el is None:
             raise InputError(f"no {kind} named '{name}'", source=self.source, element="storyboardElementRef")
         return el
 
-    def log_transition(self, element: "StoryboardElement", transition: "Transition") -> None:
+    def log_transition(self, element: Element, transition: Change) -> None:
         self.transitions.append((self.t, element.kind, element.name, transition.value))
 
     def note(self, text: str) -> None:
@@ -91,7 +88,7 @@ class World:
         return position.resolve(self)
 
     def lane_pose(self, road_id: str, lane_id: int, s: float, offset: float,
-                  orientation: Orientation | None = None) -> Pose:
+                  orientation: HeadingRule | None = None) -> Pose:
         try:
             track = self.tracks.at(str(road_id), int(lane_id), s)
         except (InputError, KeyError) as exc:
@@ -103,7 +100,7 @@ class World:
             h = orientation.apply(h)
         return Pose(x, y, h, str(road_id), int(lane_id), s, offset)
 
-    def road_pose(self, road_id: str, s: float, t: float, orientation: Orientation | None = None) -> Pose:
+    def road_pose(self, road_id: str, s: float, t: float, orientation: HeadingRule | None = None) -> Pose:
         try:
             road = self.net.road(road_id)
         except (InputError, KeyError) as exc:
@@ -131,7 +128,7 @@ class World:
         return ent.road_id, ent.road_s, ent.road_t
 
     def relative_lane_pose(self, name: str, d_lane: int, ds: float, offset: float,
-                           orientation: Orientation | None) -> Pose:
+                           orientation: HeadingRule | None) -> Pose:
         ent = self.entity(name)
         if ent.track is not None:
             road_id, lane_id, s0, forward = ent.track.ref.road_id, ent.track.ref.lane_id, ent.s, ent.track.forward
@@ -207,11 +204,9 @@ class World:
         return path, refs
 
     # -- actions (facade) -----------------------------------------------------------------------------------------
-    def start_action(self, element: "StoryboardElement", spec: "ActionSpec",
-                     actors: Iterable[str]) -> list["ActionRun"]:
-        from ..actions.base import ActionRun
-
-        runs: list[ActionRun] = []
+    def start_action(self, element: Element, spec: Startable,
+                     actors: Iterable[str]) -> list[Run]:
+        runs: list[Run] = []
         if not spec.is_private:
             run = spec.start(self, None)
             if run is not None:
@@ -230,7 +225,7 @@ class World:
                     runs.append(run)
         return runs
 
-    def take(self, ent: Entity, run: "ActionRun") -> None:
+    def take(self, ent: Entity, run: Run) -> None:
         """Give `run` its control domains on `ent`, ending the runs that held them."""
         for dom in run.domains:
             old = ent.runs.get(dom)
@@ -245,7 +240,7 @@ class World:
         else:
             self.running.append(run)
 
-    def cancel_runs(self, runs: Iterable["ActionRun"]) -> None:
+    def cancel_runs(self, runs: Iterable[Run]) -> None:
         for run in runs:
             run.cancel()
 
