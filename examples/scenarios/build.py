@@ -78,6 +78,7 @@ def _vehicle(name: str, category: str, external: bool = False) -> str:
       <ObjectController>
         <Controller name="ads_under_test">
           <Properties>
+            <Property name="esminiController" value="ExternalController"/>
             <Property name="txt2sce:controller" value="external"/>
           </Properties>
         </Controller>
