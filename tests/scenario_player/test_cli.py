@@ -36,3 +36,27 @@ def test_conformance_prints_per_entity_errors(esmini, capsys) -> None:
     text = capsys.readouterr().out
     assert "OverTaker" in text and "Car1" in text and "Car2" in text
     assert "ran 2/2; RMS < 0.5 m: 2/2" in text
+
+
+def test_esmini_check_prints_errors_and_agreement(tmp_path, capsys) -> None:
+    import pytest
+
+    from scenario_player.esmini import available
+    from txt2sce_ros.paths import REPO_ROOT
+
+    if not available():
+        pytest.skip("the shared esmini is not present")
+    good = REPO_ROOT / "examples" / "scenarios" / "benign_straight.xosc"
+    assert main(["esmini-check", str(good)]) == 0
+    out = capsys.readouterr().out
+    assert "benign_straight.xosc" in out and "1/1 files: no esmini [error]" in out
+    # The ego's controller without the esminiController property: esmini logs an [error], the check fails.
+    old = tmp_path / "old.xosc"
+    old.write_text(good.read_text(encoding="utf-8").replace(
+        '<Property name="esminiController" value="ExternalController"/>', "").replace(
+        'filepath="', f'filepath="{good.parent}/'), encoding="utf-8")
+    assert main(["esmini-check", str(old)]) == 1
+    assert "Unsupported controller type" in capsys.readouterr().out
+    assert main(["esmini-check", str(tmp_path / "missing.xosc")]) == 2
+    err = capsys.readouterr().err
+    assert "missing.xosc" in err and "Traceback" not in err
