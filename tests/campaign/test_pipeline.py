@@ -93,3 +93,18 @@ def test_scenario_stage_campaign_stores_a_verdict_per_file(seed_files: list[Path
     assert stored[seed_files[0].stem].categories == rec.categories
     assert json.dumps(stored[seed_files[0].stem].record["details"], sort_keys=True) == \
         json.dumps(rec.details, sort_keys=True)
+
+
+def test_campaign_extraction_prints_why_a_report_gave_no_sketch(tmp_path: Path,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    from txt2sce_ros.campaign.pipeline import extract_stage
+
+    good = json.loads(DEV.open(encoding="utf-8").readline())
+    reports = tmp_path / "reports.jsonl"
+    reports.write_text(json.dumps(good) + "\n" + json.dumps({"id": "empty-one", "text": ""}) + "\n",
+                       encoding="utf-8")
+    (tmp_path / "c").mkdir()
+    _, count = extract_stage([reports], CampaignConfig(out=tmp_path / "c", progress=False))
+    assert count == 1
+    err = capsys.readouterr().err
+    assert "txt2sce campaign: error: empty-one:" in err and "missing or empty narrative" in err

@@ -100,20 +100,23 @@ def _log(cfg: CampaignConfig, text: str) -> None:
 
 
 def extract_stage(inputs: Sequence[str | Path], cfg: CampaignConfig) -> tuple[Path, int]:
-    from ..sketch import ErrorRecord
-    from ..text.pipeline import run_batch
+    from ..sketch import SCHEMA_ID
+    from ..text.pipeline import echo_errors, run_batch
     from ..text.readers import iter_inputs
 
     out = cfg.out / "sketches.jsonl"
     if not _stamp(out).exists():
-        n = 0
         with out.open("w", encoding="utf-8") as fh:
-            for item in run_batch(iter_inputs(inputs), backend=cfg.backend):
+            for item in echo_errors(run_batch(iter_inputs(inputs), backend=cfg.backend), "txt2sce campaign",
+                                    where=str(out)):
                 fh.write(json.dumps(item.to_dict(), sort_keys=True) + "\n")
-                n += not isinstance(item, ErrorRecord)
         _stamp(out).touch()
-    count = sum(1 for line in out.open(encoding="utf-8") if '"schema"' in line)
-    _log(cfg, f"sketches: {count} -> {out}")
+    # sketches only: the error records written in place of unreadable reports carry a "schema" key too
+    schemas = [json.loads(line).get("schema") for line in out.open(encoding="utf-8") if line.strip()]
+    count = schemas.count(SCHEMA_ID)
+    unread = len(schemas) - count
+    _log(cfg, f"sketches: {count} -> {out}" + (f" ({unread} reports unreadable, see the errors above)" if unread
+                                               else ""))
     return out, count
 
 

@@ -28,7 +28,7 @@ def register(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..config import load_config
     from ..sketch import ErrorRecord
-    from ..text.pipeline import run_batch
+    from ..text.pipeline import echo_errors, run_batch
     from ..text.readers import ReportInput, count_inputs, iter_inputs
 
     cfg = load_config("extract")
@@ -41,12 +41,13 @@ def run(args: argparse.Namespace) -> int:
                                                                model=args.model, timeout_s=args.timeout))
     total = count_inputs(args.inputs)
     inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
-    results = run_batch(inputs, backend=backend, llm=llm)
+    out = Path(args.out)
+    results = echo_errors(run_batch(inputs, backend=backend, llm=llm), "txt2sce extract", where=str(out),
+                          limit=MAX_ERRORS_SHOWN)
     if not args.quiet and total and total >= int(cfg.get("progress_min_reports", 50)):
         from tqdm import tqdm
 
         results = tqdm(results, total=total, unit="report", file=sys.stderr, desc="extract")
-    out = Path(args.out)
     if out.parent and not out.parent.exists():
         out.parent.mkdir(parents=True, exist_ok=True)
     n = errors = incomplete = 0
@@ -57,16 +58,10 @@ def run(args: argparse.Namespace) -> int:
             n += 1
             if isinstance(r, ErrorRecord):
                 errors += 1
-                # the reason belongs on the console, not only in the output file (quiet or not: it is an error)
-                if errors <= MAX_ERRORS_SHOWN:
-                    print(f"txt2sce extract: error: {r.report_id}: {r.error}", file=sys.stderr)
                 if str(r.source or "").lower().endswith(".pdf"):
                     failed_pdfs.append(r.report_id)
             elif not r.is_buildable:
                 incomplete += 1
-    if errors > MAX_ERRORS_SHOWN:
-        print(f"txt2sce extract: ... and {errors - MAX_ERRORS_SHOWN} more errors (every one is in {out})",
-              file=sys.stderr)
     forms = [i for i in inputs if isinstance(i, ReportInput) and i.form is not None]
     if forms:
         _write_form_readings(out, forms)

@@ -59,3 +59,20 @@ def run_batch(inputs: Iterable[ReportInput | ErrorRecord], **kw: object) -> Iter
     """Sketches (or error records) for every input, in order."""
     for inp in inputs:
         yield inp if isinstance(inp, ErrorRecord) else sketch_report(inp, **kw)  # type: ignore[arg-type]
+
+
+def echo_errors(items: Iterable[Sketch | ErrorRecord], prog: str, *, where: str, limit: int = 10,
+                ) -> Iterator[Sketch | ErrorRecord]:
+    """Pass `items` through, printing each error record's reason on stderr (the first `limit`, then a count): a
+    report that could not be read must be visible on the console, not only in the output file `where`."""
+    import sys
+
+    errors = 0
+    for item in items:
+        if isinstance(item, ErrorRecord):
+            errors += 1
+            if errors <= limit:
+                print(f"{prog}: error: {item.report_id}: {item.error}", file=sys.stderr)
+        yield item
+    if errors > limit:
+        print(f"{prog}: ... and {errors - limit} more errors (every one is in {where})", file=sys.stderr)
