@@ -14,7 +14,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from .contract import Frame, RunStatus, Verdict
+from .contract import Frame, RunStatus, ScenarioEnvelope, Verdict
 from .errors import Txt2SceError
 
 
@@ -41,11 +41,12 @@ class RunRecord:
         return d
 
 
-def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, faults: tuple[str, ...] = (),
-                    seed: int = 0, dt: float | None = None, time_limit: float | None = None,
-                    keep_trajectory: bool = False, on_frame: Callable[[Frame], None] | None = None,
+def run_closed_loop(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | None = None,
+                    faults: tuple[str, ...] = (), seed: int = 0, dt: float | None = None,
+                    time_limit: float | None = None, keep_trajectory: bool = False, on_frame: Callable[[Frame], None] | None = None,
                     ) -> tuple[RunRecord, dict[str, np.ndarray] | None]:
-    """Run one scenario file against the stand-in planner (with `faults` switched on) and judge it.
+    """Run one scenario (a file, or an envelope carrying the scenario's and its map's text: what a campaign ships to
+    a worker) against the stand-in planner (with `faults` switched on) and judge it.
 
     `on_frame` gets every frame the oracle judges, in order: the frames a recording of the same run over ROS holds
     (one per dt from t = 0, each once)."""
@@ -53,10 +54,20 @@ def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, fau
     from scenario_player import Simulation, SimulationConfig, load_scenario
     from standin_planner import Faults, Planner, PlannerParams, friction_from_xosc
 
-    sid = scenario_id or Path(scenario).stem
+    envelope = scenario if isinstance(scenario, ScenarioEnvelope) else None
+    sid = scenario_id or (envelope.id if envelope else Path(scenario).stem)
     t0 = time.perf_counter()
     try:
-        scen = load_scenario(str(scenario))
+        if envelope is not None:
+            # Messages name the driver's file (`meta['file']`) as a file-path run's would. Only catalogs are looked
+            # up beside it (they are not shipped: on a cluster they must sit at the same path on every node).
+            file = envelope.meta.get("file") or ""
+            scen = load_scenario(envelope.xosc, source=file or envelope.id, map_text=envelope.map_xodr or None,
+                                 map_path=envelope.map_path or None, base_dir=Path(file).parent if file else None)
+            xosc_text = envelope.xosc
+        else:
+            scen = load_scenario(str(scenario))
+            xosc_text = Path(scenario).read_text(encoding="utf-8")
         cfg_kwargs: dict[str, Any] = {"ego_mode": "planner", "seed": seed}
         if dt is not None:
             cfg_kwargs["dt"] = dt
@@ -65,7 +76,7 @@ def run_closed_loop(scenario: str | Path, *, scenario_id: str | None = None, fau
         sim = Simulation(scen, SimulationConfig(**cfg_kwargs))
         frame: Frame = sim.reset()
         # The planner node reads the road friction from the scenario envelope; do the same here so both paths agree.
-        friction = friction_from_xosc(Path(scenario).read_text(encoding="utf-8"))
+        friction = friction_from_xosc(xosc_text)
         planner = Planner(sim.network, sim.goal, PlannerParams.from_config(), faults=Faults.from_names(faults),
                           road_friction=friction)
         oracle = Oracle(sim.network, sim.goal, OracleParams.from_config())

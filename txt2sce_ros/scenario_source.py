@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Iterator
+from typing import Callable, Iterator
 
 from .contract import ScenarioEnvelope
 from .errors import InputError
@@ -25,9 +25,14 @@ def logic_file(xosc_path: Path, xosc_text: bytes) -> Path | None:
     return (xosc_path.parent / node.get("filepath")).resolve()
 
 
+def _read_text(path: str) -> str:
+    return Path(path).read_text(encoding="utf-8")
+
+
 def envelope_for(path: Path, *, scenario_id: str | None = None, parent: str | None = None,
-                 tree: str | None = None) -> ScenarioEnvelope:
-    """Read one scenario file and its map into an envelope."""
+                 tree: str | None = None, read_map: Callable[[str], str] = _read_text) -> ScenarioEnvelope:
+    """Read one scenario file and its map into an envelope (`read_map`: path -> text, e.g. a cache when many
+    scenarios share a map)."""
     try:
         data = path.read_bytes()
     except OSError as exc:
@@ -36,13 +41,39 @@ def envelope_for(path: Path, *, scenario_id: str | None = None, parent: str | No
     map_text = ""
     if map_path is not None:
         try:
-            map_text = map_path.read_text(encoding="utf-8")
+            map_text = read_map(str(map_path))
         except OSError as exc:
             raise InputError(f"map {map_path} named by RoadNetwork/LogicFile cannot be read",
                              source=str(path), element="LogicFile") from exc
     return ScenarioEnvelope(id=scenario_id or path.stem, xosc=data.decode("utf-8"),
                             map_path=str(map_path or ""), map_xodr=map_text, parent=parent, tree=tree,
                             meta={"file": str(path)})
+
+
+def write_envelope(env: ScenarioEnvelope, directory: Path) -> Path:
+    """The inverse of `envelope_for` on another machine: write the scenario and its map under `directory` so that
+    the scenario's `LogicFile` names the map; returns the scenario file. The scenario's bytes stay as shipped when
+    its map path is relative (the directories it climbs with `..` are made inside `directory`); an absolute map
+    path, which cannot be recreated, is pointed at the copy beside the scenario."""
+    xosc = env.xosc
+    root = parse_document(xosc.encode("utf-8"), source=env.id)
+    node = root.find("RoadNetwork/LogicFile")
+    rel = Path(node.get("filepath", "")) if node is not None else Path()
+    scen_dir = directory / "scenario"
+    if env.map_xodr and str(rel) not in ("", "."):
+        if rel.is_absolute():
+            xosc = xosc.replace(f'filepath="{node.get("filepath")}"', f'filepath="{rel.name}"', 1)
+            rel = Path(rel.name)
+        ups = sum(1 for part in rel.parts if part == "..")
+        scen_dir = directory.joinpath("scenario", *(["d"] * ups))
+        map_file = scen_dir / rel
+        map_file.parent.mkdir(parents=True, exist_ok=True)
+        map_file.write_text(env.map_xodr, encoding="utf-8")
+    scen_dir.mkdir(parents=True, exist_ok=True)
+    # the driver's file name (the graph's generator names the run by it), never its directories
+    out = scen_dir / (Path(str(env.meta.get("file", ""))).name or "scenario.xosc")
+    out.write_text(xosc, encoding="utf-8")
+    return out
 
 
 def _from_manifest(d: Path, data: dict) -> Iterator[tuple[Path, str, str | None, str | None]]:

@@ -91,9 +91,10 @@ def _check_references(ctx: ParseContext, root: etree._Element, names: set[str]) 
 
 
 def load_scenario(path_or_text: str | Path, *, source: str | None = None, map_text: str | None = None,
-                  map_path: str | None = None) -> Scenario:
+                  map_path: str | None = None, base_dir: str | Path | None = None) -> Scenario:
     """Parse a scenario completely. `path_or_text`: a file path, or the XML text itself (then `source` names it
-    and relative paths resolve against the current directory)."""
+    and relative paths — catalogs, a map not given as `map_text` — resolve against `base_dir`, default the current
+    directory)."""
     text: str | bytes
     if isinstance(path_or_text, Path) or (isinstance(path_or_text, str) and "<" not in path_or_text[:512]):
         p = Path(path_or_text)
@@ -103,7 +104,7 @@ def load_scenario(path_or_text: str | Path, *, source: str | None = None, map_te
             raise InputError(f"cannot read scenario: {exc}", source=str(p)) from exc
         src, base = source or str(p), p.resolve().parent
     else:
-        text, src, base = path_or_text, source or "<scenario>", Path.cwd()
+        text, src, base = path_or_text, source or "<scenario>", Path(base_dir) if base_dir else Path.cwd()
     doc = resolve_document(text, source=src, base_dir=base)
     ctx = ParseContext(src)
     root = doc.root

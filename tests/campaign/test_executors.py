@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 
 from txt2sce_ros.campaign.executors import run_tasks
-from txt2sce_ros.campaign.runs import execute, make_tasks
+from txt2sce_ros.campaign.runs import execute, jobs, make_tasks
 from txt2sce_ros.errors import InputError
 
 from .conftest import TIME_LIMIT
@@ -26,15 +26,15 @@ def _comparable(runs: Any) -> dict[str, tuple[str, tuple[str, ...], str]]:
 def test_serial_pool_and_ray_give_the_same_results(seed_files: list[Path]) -> None:
     # A fault switched on so the runs differ from the nominal ones in their keys and (for some) their verdicts.
     tasks = make_tasks(seed_files[:4], faults=("aggressive_start",), time_limit=TIME_LIMIT)
-    serial = _comparable(run_tasks(execute, tasks, executor="serial"))
-    pool = _comparable(run_tasks(execute, tasks, executor="pool", workers=2))
+    serial = _comparable(run_tasks(execute, jobs(tasks), executor="serial"))
+    pool = _comparable(run_tasks(execute, jobs(tasks), executor="pool", workers=2))
     assert len(serial) == 4
     assert pool == serial
     pytest.importorskip("ray")
-    ray = _comparable(run_tasks(execute, tasks, executor="ray", workers=2))
+    ray = _comparable(run_tasks(execute, jobs(tasks), executor="ray", workers=2))
     assert ray == serial
 
 
 def test_unknown_executor_is_an_input_error(seed_files: list[Path]) -> None:
     with pytest.raises(InputError, match="unknown executor 'threads'"):
-        list(run_tasks(execute, make_tasks(seed_files[:1]), executor="threads"))
+        list(run_tasks(execute, jobs(make_tasks(seed_files[:1])), executor="threads"))

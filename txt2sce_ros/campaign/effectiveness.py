@@ -99,6 +99,7 @@ class StudyConfig:
     time_limit: float | None = 25.0
     executor: str = "pool"
     workers: int | None = None
+    ray_address: str | None = None
     faults: tuple[str, ...] = tuple(f.name for f in FAULTS)
     seed: int = 0
     progress: bool = True
@@ -246,7 +247,8 @@ def run_draws(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[DrawResult
     specs = [s for s in FAULTS if s.name in cfg.faults]
     cfg.out.mkdir(parents=True, exist_ok=True)
     ccfg = CampaignConfig(out=cfg.out, seed=cfg.seed, mutations=cfg.mutations, max_nodes=cfg.nodes,
-                          executor=cfg.executor, workers=cfg.workers, progress=cfg.progress)
+                          executor=cfg.executor, workers=cfg.workers, ray_address=cfg.ray_address,
+                          progress=cfg.progress)
     draws = _chosen_seeds(_seed_dir(inputs, ccfg), cfg)
     tree_dir = tree_stage(cfg.out / "picked_seeds", ccfg)
 
@@ -256,7 +258,8 @@ def run_draws(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[DrawResult
                                       time_limit=cfg.time_limit)
     all_tasks = [t for ts in by_config.values() for t in ts]
     with ResultStore(cfg.out / "results.sqlite") as store:
-        run_all(all_tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress)
+        run_all(all_tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,
+                ray_address=cfg.ray_address)
         stored = {r.run_key: r for r in store.runs()}
 
     from ..analysis.features import elements_of_file

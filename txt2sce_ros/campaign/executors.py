@@ -3,7 +3,8 @@
 Every executor takes the same picklable tasks and the same module-level worker function and yields results as
 they finish (in completion order; the store, not the order, is what is compared). A run is a pure function of its
 task, so the results are the same whatever the executor. In-flight work is bounded so memory stays flat on long
-campaigns.
+campaigns, and tasks are drawn from the iterable only as they are submitted (a lazy iterable keeps the driver small).
+Ray specifics (which cluster, shared parts in the object store) live in `ray_cluster.py`.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import multiprocessing as mp
 import os
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
-from typing import Any, Callable, Iterable, Iterator, TypeVar
+from typing import Any, Callable, Hashable, Iterable, Iterator, Protocol, TypeVar
 
 from ..errors import InputError
 
@@ -20,10 +21,29 @@ R = TypeVar("R")
 
 EXECUTORS = ("serial", "pool", "ray")
 
+#: Tasks in flight per worker process on the pool (Ray sizes from the cluster's CPUs: `ray_cluster`).
+IN_FLIGHT_PER_WORKER = 4
+
+
+class SharesPart(Protocol):
+    """A task with a large part other tasks share (a run's map). Ray ships the part once per key through its object
+    store; the other executors ship the task whole."""
+
+    def shared_part(self) -> tuple[Hashable, Any, "SharesPart"]:
+        """(key naming the part, the part, this task without it)."""
+        ...
+
+    def with_shared(self, part: Any) -> "SharesPart":
+        """This task with the part put back (called on the worker)."""
+        ...
+
 
 def run_tasks(fn: Callable[[T], R], tasks: Iterable[T], *, executor: str = "pool", workers: int | None = None,
-              ray_address: str | None = None) -> Iterator[R]:
-    """Apply `fn` to every task with the chosen executor, yielding results as they complete."""
+              ray_address: str | None = None, note: Callable[[str], None] = lambda _: None) -> Iterator[R]:
+    """Apply `fn` to every task with the chosen executor, yielding results as they complete.
+
+    `workers`: processes of the pool, CPUs of a Ray instance started here (a running cluster brings its own);
+    `ray_address`: the cluster to use (`ray_cluster.find_address`); `note`: one-line messages (which cluster)."""
     workers = workers or max(1, os.cpu_count() or 1)
     if executor == "serial" or (executor == "pool" and workers == 1):
         for task in tasks:
@@ -31,7 +51,9 @@ def run_tasks(fn: Callable[[T], R], tasks: Iterable[T], *, executor: str = "pool
     elif executor == "pool":
         yield from _pool(fn, tasks, workers)
     elif executor == "ray":
-        yield from _ray(fn, tasks, workers, ray_address)
+        from .ray_cluster import run_on_ray
+
+        yield from run_on_ray(fn, tasks, workers=workers, address=ray_address, note=note)
     else:
         raise InputError(f"unknown executor {executor!r}; choose one of {', '.join(EXECUTORS)}")
 
@@ -39,7 +61,7 @@ def run_tasks(fn: Callable[[T], R], tasks: Iterable[T], *, executor: str = "pool
 def _pool(fn: Callable[[T], R], tasks: Iterable[T], workers: int) -> Iterator[R]:
     # fork: the cores import no rclpy and hold no threads, so children start in milliseconds.
     ctx = mp.get_context("fork")
-    limit = workers * 4
+    limit = workers * IN_FLIGHT_PER_WORKER
     with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
         pending: set[Future[R]] = set()
         it = iter(tasks)
@@ -55,39 +77,3 @@ def _pool(fn: Callable[[T], R], tasks: Iterable[T], workers: int) -> Iterator[R]
             done, pending = wait(pending, return_when=FIRST_COMPLETED)
             for fut in done:
                 yield fut.result()
-
-
-def _ray(fn: Callable[[T], R], tasks: Iterable[T], workers: int, address: str | None) -> Iterator[R]:
-    try:
-        import ray
-    except ImportError as exc:  # pragma: no cover - ray is in requirements-dev
-        raise InputError("--executor ray needs the 'ray' package (pip install ray)") from exc
-    started_here = False
-    if not ray.is_initialized():
-        address = address or os.environ.get("RAY_ADDRESS")
-        kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False}
-        if address:
-            ray.init(address=address, **kwargs)
-        else:
-            ray.init(num_cpus=workers, **kwargs)
-        started_here = True
-    try:
-        remote = ray.remote(fn)
-        limit = workers * 4
-        pending: list[Any] = []
-        it = iter(tasks)
-        exhausted = False
-        while pending or not exhausted:
-            while not exhausted and len(pending) < limit:
-                try:
-                    pending.append(remote.remote(next(it)))
-                except StopIteration:
-                    exhausted = True
-            if not pending:
-                break
-            done, pending = ray.wait(pending, num_returns=1)
-            for ref in done:
-                yield ray.get(ref)
-    finally:
-        if started_here:
-            ray.shutdown()

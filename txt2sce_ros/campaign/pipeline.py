@@ -32,6 +32,7 @@ class CampaignConfig:
     prune: float | None = None            # kept share per cluster; None = config (0.5)
     executor: str = "pool"
     workers: int | None = None
+    ray_address: str | None = None        # --executor ray: the cluster (None: RAY_ADDRESS, `ray start`'s, local)
     faults: tuple[str, ...] = ()
     ros: bool = False
     max_seeds: int | None = None          # the first N seeds only (quick demos)
@@ -187,7 +188,7 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
             "backend": cfg.backend, "mutations": cfg.mutations, "prune": cfg.prune, "max_nodes": cfg.max_nodes,
             "max_seeds": cfg.max_seeds, "time_limit": cfg.time_limit, "executor": cfg.executor, "ros": cfg.ros})
         summary.runs = run_all(tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,
-                               limit=cfg.limit)
+                               limit=cfg.limit, ray_address=cfg.ray_address)
         if cfg.report:
             from .reporting import report_from_store
 

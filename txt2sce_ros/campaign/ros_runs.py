@@ -28,7 +28,7 @@ from typing import Iterator
 
 from ..closed_loop import RunRecord
 from ..config import load_config
-from ..contract import Verdict
+from ..contract import ScenarioEnvelope, Verdict
 
 #: Attempts per run before a graph fault is stored as an error.
 ATTEMPTS = 3
@@ -75,15 +75,16 @@ def reserved_domain(tag: str) -> Iterator[int]:
         time.sleep(0.5)                 # every id taken (100 graphs at once): wait for one to finish
 
 
-def run_over_ros(scenario: str | Path, *, scenario_id: str | None = None, faults: tuple[str, ...] = (),
-                 keep_bag: str | Path | None = None, run_timeout: float = 120.0,
+def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | None = None,
+                 faults: tuple[str, ...] = (), keep_bag: str | Path | None = None, run_timeout: float = 120.0,
                  attempts: int = ATTEMPTS, time_limit: float | None = None, seed: int | None = None) -> RunRecord:
     """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline; a graph fault
     (module docstring) runs it again, up to `attempts` times. `details['ros_attempts']` says how many it took.
 
     `keep_bag`: copy the recording there (otherwise it is deleted with the temporary directory). `time_limit`
-    (simulated s) and `seed` go to the player, as `run_closed_loop` takes them, so both paths run the same run."""
-    sid = scenario_id or Path(scenario).stem
+    (simulated s) and `seed` go to the player, as `run_closed_loop` takes them, so both paths run the same run.
+    An envelope (what a campaign ships to a worker) is written to the run's temporary directory first."""
+    sid = scenario_id or (scenario.id if isinstance(scenario, ScenarioEnvelope) else Path(scenario).stem)
     t0 = time.perf_counter()
     faults_seen: list[str] = []
     record = RunRecord(sid, Verdict.ERROR, error="no attempt made")
@@ -98,8 +99,8 @@ def run_over_ros(scenario: str | Path, *, scenario_id: str | None = None, faults
     return replace(record, details=details, wall_time=time.perf_counter() - t0)
 
 
-def _attempt(scenario: str | Path, sid: str, faults: tuple[str, ...], keep_bag: str | Path | None,
-             run_timeout: float, time_limit: float | None, seed: int | None) -> tuple[RunRecord, str]:
+def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[str, ...],
+             keep_bag: str | Path | None, run_timeout: float, time_limit: float | None, seed: int | None) -> tuple[RunRecord, str]:
     """One graph run: (record, why it is a graph fault, '' when it is not)."""
     from oracle_monitor.judge import judge_bag
 
@@ -109,6 +110,10 @@ def _attempt(scenario: str | Path, sid: str, faults: tuple[str, ...], keep_bag: 
     work = Path(tempfile.mkdtemp(prefix="txt2sce_ros_run_"))
     try:
         bag_dir = work / "bags"
+        if isinstance(scenario, ScenarioEnvelope):
+            from ..scenario_source import write_envelope
+
+            scenario = write_envelope(scenario, work / "input")
         with reserved_domain(f"campaign:{os.getpid()}:{work.name}") as domain:
             cfg = GraphConfig(scenarios=[str(scenario)], bag_dir=str(bag_dir), faults=list(faults),
                               run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain,

@@ -3,20 +3,24 @@
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import lru_cache
 from pathlib import Path
-from typing import Iterable, Sequence
+from typing import Iterable, Iterator, Sequence
 
 from tqdm import tqdm
 
-from ..scenario_source import iter_scenario_files
+from ..contract import ScenarioEnvelope
+from ..errors import Txt2SceError
+from ..scenario_source import envelope_for, iter_scenario_files
 from .executors import run_tasks
 from .store import ResultStore, StoredRun, run_key
 
 
 @dataclass(frozen=True)
 class RunTask:
-    """One closed-loop run to do: picklable, so any executor can ship it to a worker."""
+    """One closed-loop run to do, as the driver plans it: where its scenario is on the driver's disk. What a worker
+    gets is the `RunJob` made from it (`jobs`), which carries the content instead."""
 
     key: str
     scenario_path: str
@@ -29,20 +33,65 @@ class RunTask:
     time_limit: float | None = None     # simulated seconds per run (None: the scenario's / player's own limit)
 
 
-def execute(task: RunTask) -> StoredRun:
+@dataclass(frozen=True)
+class RunJob:
+    """One run as shipped to a worker: self-contained (the scenario's and its map's text in `scenario`), so a worker
+    on another machine, or in another directory, needs none of the driver's files. The paths in the envelope
+    (`map_path`, `meta['file']`) only name the files in messages."""
+
+    key: str
+    scenario: ScenarioEnvelope
+    faults: tuple[str, ...]
+    seed: int
+    ros: bool = False
+    time_limit: float | None = None
+    error: str = ""         # the driver could not read the scenario or its map: the run is an error, saying why
+
+    def shared_part(self) -> tuple[str, str, "RunJob"]:
+        """The map, which every run on the same map shares (`executors.SharesPart`)."""
+        env = self.scenario
+        return f"{env.map_path}\0{len(env.map_xodr)}", env.map_xodr, replace(self, scenario=replace(env, map_xodr=""))
+
+    def with_shared(self, part: str) -> "RunJob":
+        return replace(self, scenario=replace(self.scenario, map_xodr=part))
+
+
+def jobs(tasks: Iterable[RunTask]) -> Iterator[RunJob]:
+    """The jobs of `tasks`, read lazily as an executor draws them (the driver holds only what is in flight); a map
+    many scenarios share is read once while they come one after the other."""
+    read_map = lru_cache(maxsize=16)(lambda path: Path(path).read_text(encoding="utf-8"))
+    for t in tasks:
+        error = ""
+        try:
+            env = envelope_for(Path(t.scenario_path), scenario_id=t.scenario_id, parent=t.parent, tree=t.tree,
+                               read_map=read_map)
+        except (Txt2SceError, ValueError) as exc:
+            # one unreadable file is that run's error verdict; the campaign carries on with the rest
+            env = ScenarioEnvelope(id=t.scenario_id, xosc="", parent=t.parent, tree=t.tree,
+                                   meta={"file": t.scenario_path})
+            error = str(exc) if isinstance(exc, Txt2SceError) else f"{t.scenario_path}: {exc}"
+        yield RunJob(t.key, env, t.faults, t.seed, t.ros, t.time_limit, error)
+
+
+def execute(job: RunJob) -> StoredRun:
     """Worker entry point (module level so process pools and Ray can pickle it)."""
-    if task.ros:
+    env = job.scenario
+    if job.error:
+        from ..closed_loop import RunRecord
+        from ..contract import Verdict
+
+        record = RunRecord(env.id, Verdict.ERROR, error=job.error)
+    elif job.ros:
         from .ros_runs import run_over_ros
 
-        record = run_over_ros(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults,
-                              time_limit=task.time_limit, seed=task.seed)
+        record = run_over_ros(env, scenario_id=env.id, faults=job.faults, time_limit=job.time_limit, seed=job.seed)
     else:
         from ..closed_loop import run_closed_loop
 
-        record, _ = run_closed_loop(task.scenario_path, scenario_id=task.scenario_id, faults=task.faults,
-                                    seed=task.seed, time_limit=task.time_limit)
-    return StoredRun(task.key, task.scenario_id, task.tree, task.parent, record.verdict.value,
-                     tuple(record.categories), record.to_dict())
+        record, _ = run_closed_loop(env, scenario_id=env.id, faults=job.faults, seed=job.seed,
+                                    time_limit=job.time_limit)
+    return StoredRun(job.key, env.id, env.tree, env.parent, record.verdict.value, tuple(record.categories),
+                     record.to_dict())
 
 
 def make_tasks(inputs: Sequence[str | Path], *, faults: tuple[str, ...] = (), seed: int = 0,
@@ -77,7 +126,7 @@ def count_duplicates(tasks: Sequence[RunTask]) -> int:
 
 
 def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "pool", workers: int | None = None,
-            progress: bool = True, limit: int | None = None) -> RunsSummary:
+            progress: bool = True, limit: int | None = None, ray_address: str | None = None) -> RunsSummary:
     """Run every task whose key the store does not hold yet; each result is committed as it arrives, so a killed
     campaign resumes where it stopped (`limit` stops after that many new runs: used to test exactly that)."""
     tasks = list(tasks)
@@ -104,8 +153,14 @@ def run_all(tasks: Iterable[RunTask], store: ResultStore, *, executor: str = "po
                dynamic_ncols=True, mininterval=0.5, smoothing=0.05,
                bar_format="{desc}: {percentage:3.0f}%|{bar}| {n_fmt}/{total_fmt} [{elapsed}<{remaining} ETA, "
                           "{rate_fmt}{postfix}]")
+
+    def note(text: str) -> None:
+        if progress:
+            bar.write(f"[campaign] {text}", file=sys.stderr)    # above the bar, not through it
+
     try:
-        for run in run_tasks(execute, todo, executor=executor, workers=workers):
+        for run in run_tasks(execute, jobs(todo), executor=executor, workers=workers, ray_address=ray_address,
+                             note=note):
             store.add(run)
             verdicts[run.verdict] = verdicts.get(run.verdict, 0) + 1
             bar.update(1)

@@ -24,8 +24,14 @@ def add_campaign_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--max-nodes", type=int, default=None,
                         help="node budget per tree (default: config/mutation.yaml)")
     parser.add_argument("--executor", choices=EXECUTORS, default="pool",
-                        help="serial | pool (local processes, default) | ray (RAY_ADDRESS or a local instance)")
-    parser.add_argument("--workers", type=int, default=None, help="parallel workers (default: CPU count)")
+                        help="serial | pool (local processes, default) | ray (a Ray cluster: --ray-address, "
+                             "RAY_ADDRESS, the one `ray start` started on this machine, else a local instance)")
+    parser.add_argument("--ray-address", default=None, metavar="HOST:PORT",
+                        help="Ray cluster to run on with --executor ray (default: RAY_ADDRESS, else the cluster "
+                             "`ray start` recorded on this machine, else a local instance)")
+    parser.add_argument("--workers", type=int, default=None,
+                        help="parallel workers (default: CPU count); with --executor ray only the CPUs of a local "
+                             "instance started here (a running cluster brings its own)")
     parser.add_argument("--fault", action="append", default=[], metavar="NAME",
                         help="switch on a stand-in planner fault mode (repeatable): "
                              f"{', '.join(Faults.names())}")
@@ -52,6 +58,7 @@ def config_from_args(args: argparse.Namespace, out: Path):
 
     return CampaignConfig(out=out, seed=args.seed, backend=args.backend, mutations=args.mutations,
                           prune=args.prune, executor=args.executor, workers=args.workers,
+                          ray_address=args.ray_address,
                           faults=tuple(args.fault), ros=args.ros, max_seeds=args.max_seeds,
                           limit=args.limit, time_limit=args.time_limit, max_nodes=args.max_nodes,
                           progress=not args.no_progress, report=not getattr(args, "no_report", False))

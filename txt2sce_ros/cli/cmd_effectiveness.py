@@ -31,6 +31,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fault", action="append", default=[], choices=[f.name for f in FAULTS],
                         help="study only these faults (repeatable; default all)")
     parser.add_argument("--executor", choices=EXECUTORS, default="pool")
+    parser.add_argument("--ray-address", default=None, metavar="HOST:PORT",
+                        help="Ray cluster for --executor ray (default: as `txt2sce campaign`)")
     parser.add_argument("--workers", type=int, default=None)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--no-progress", action="store_true")
@@ -45,6 +47,7 @@ def run(args: argparse.Namespace) -> int:
 
     cfg = StudyConfig(out=Path(args.out), seeds=args.seeds, nodes=args.nodes, mutations=args.mutations,
                       time_limit=args.time_limit, executor=args.executor, workers=args.workers,
+                      ray_address=args.ray_address,
                       faults=tuple(args.fault) or tuple(f.name for f in FAULTS), seed=args.seed,
                       progress=not args.no_progress, draws=args.draws, draw_seed=args.draw_seed)
     draws = run_draws(args.inputs, cfg)
