@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import logging
 import os
+import socket
 import time
 from pathlib import Path
 from typing import Any, Callable, Hashable, Iterable, Iterator, TypeVar
@@ -56,9 +57,27 @@ def find_address(address: str | None) -> tuple[str | None, str]:
     return None, "no running cluster found"
 
 
+#: Seconds to wait for a cluster's GCS port to accept a connection (`ray.init` itself retries for many minutes).
+PROBE_TIMEOUT = 10.0
+
+
+def _probe(address: str, origin: str) -> None:
+    """Fail fast, in one line, when nothing listens at a HOST:PORT address."""
+    host, sep, port = address.rpartition(":")
+    if not sep or not port.isdigit() or "://" in address:
+        return                      # "auto", ray:// client addresses, malformed ones: ray.init says what is wrong
+    try:
+        socket.create_connection((host or "127.0.0.1", int(port)), timeout=PROBE_TIMEOUT).close()
+    except OSError as exc:
+        raise InputError(f"no Ray cluster answers at {address} ({origin}): {exc.strerror or exc}; start one with "
+                         "`ray start --head` or give another address", source="--executor ray") from exc
+
+
 def connect(ray: Any, address: str | None, workers: int, note: Callable[[str], None]) -> None:
     """`ray.init` on the cluster `find_address` picks, or on a new local instance of `workers` CPUs."""
     target, origin = find_address(address)
+    if target is not None:
+        _probe(target, origin)
     # The driver's logs would garble the progress bar; Ray's own INFO lines say nothing the note does not.
     kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
     # Ray's own warnings at connection (token authentication on or off) would land in the middle of the bar.
