@@ -55,11 +55,27 @@ def _comparable(runs: Any) -> dict[str, tuple[str, tuple[str, ...], str]]:
             for r in runs}
 
 
+def _two_node_cluster(attempts: int = 3) -> Any:
+    """A head of 1 CPU and a second node of 2 CPUs (retried like `_ray_start_head`: Ray's 30 s node start-up)."""
+    from ray.cluster_utils import Cluster
+
+    for attempt in range(attempts):
+        cluster = Cluster()
+        try:
+            cluster.add_node(num_cpus=1, gcs_server_port=_free_port(), include_dashboard=False,
+                             dashboard_agent_listen_port=_free_port(), object_store_memory=80 * 1024 * 1024)
+            cluster.add_node(num_cpus=2, object_store_memory=80 * 1024 * 1024)
+            return cluster
+        except Exception:
+            cluster.shutdown()
+            if attempt == attempts - 1:
+                raise
+    raise AssertionError("unreachable")
+
+
 def test_two_node_cluster_runs_self_contained_jobs_as_the_pool_does(seed_files: list[Path], tmp_path: Path,
                                                                     ray_tmp: Path,
                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
-    from ray.cluster_utils import Cluster
-
     # The driver's scenario directory: a copy that is removed once the jobs are made, before anything runs.
     scen_dir = tmp_path / "driver_scenarios"
     scen_dir.mkdir()
@@ -77,11 +93,8 @@ def test_two_node_cluster_runs_self_contained_jobs_as_the_pool_does(seed_files: 
     real_put = ray.put
     monkeypatch.setattr(ray, "put", lambda value, **kw: puts.append(len(value)) or real_put(value, **kw))
     # 1 + 2 logical CPUs: not this machine's core count, so the in-flight bound must come from the cluster
-    cluster = Cluster(initialize_head=True, head_node_args={
-        "num_cpus": 1, "gcs_server_port": _free_port(), "include_dashboard": False,
-        "dashboard_agent_listen_port": _free_port(), "object_store_memory": 80 * 1024 * 1024})
+    cluster = _two_node_cluster()
     try:
-        cluster.add_node(num_cpus=2, object_store_memory=80 * 1024 * 1024)
         notes: list[str] = []
         on_ray = _comparable(run_tasks(execute, shipped, executor="ray", workers=1, ray_address=cluster.address,
                                        note=notes.append))
@@ -140,6 +153,27 @@ def _kill_group(proc: subprocess.Popen[bytes]) -> None:
             time.sleep(0.2)
 
 
+def _ray_start_head(env: dict[str, str], recorded: Path, attempts: int = 3) -> subprocess.Popen[bytes]:
+    """`ray start --head --block` in a process group of its own, up once it has recorded its address. Ray gives a
+    node 30 s to register (hard-coded): on a loaded 2-core machine that can run out, so a failed start is retried."""
+    why = ""
+    for _ in range(attempts):
+        head = subprocess.Popen(
+            [str(VENV_BIN / "ray"), "start", "--head", "--block", "--num-cpus", "2", "--port", str(_free_port()),
+             "--include-dashboard=false", "--dashboard-agent-listen-port", str(_free_port()),
+             "--disable-usage-stats"],
+            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
+        deadline = time.monotonic() + 120
+        while not recorded.is_file() and head.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.5)
+        if recorded.is_file() and head.poll() is None:
+            return head
+        why = head.stderr.read().decode()[-1500:] if head.poll() is not None else "no address after 120 s"
+        _kill_group(head)
+        recorded.unlink(missing_ok=True)
+    pytest.fail(f"ray start --head did not come up in {attempts} attempts: {why}")
+
+
 def test_campaign_finds_a_cluster_started_with_ray_start_head(seed_files: list[Path], tmp_path: Path,
                                                                ray_tmp: Path) -> None:
     env = {**os.environ, "RAY_TMPDIR": str(ray_tmp), "PYTHONPATH": os.pathsep.join(sys.path)}
@@ -149,19 +183,8 @@ def test_campaign_finds_a_cluster_started_with_ray_start_head(seed_files: list[P
     with ResultStore(tmp_path / "pool.sqlite") as store:
         run_all(make_tasks(inputs, time_limit=TIME_LIMIT), store, executor="serial", progress=False)
 
-    head = subprocess.Popen(
-        [str(VENV_BIN / "ray"), "start", "--head", "--block", "--num-cpus", "2", "--port", str(_free_port()),
-         "--include-dashboard=false", "--dashboard-agent-listen-port", str(_free_port()),
-         "--disable-usage-stats"],
-        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
+    head = _ray_start_head(env, ray_tmp / "ray" / "ray_current_cluster")
     try:
-        recorded = ray_tmp / "ray" / "ray_current_cluster"
-        deadline = time.monotonic() + 120
-        while not recorded.is_file() and head.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.5)
-        if not recorded.is_file():
-            why = head.stderr.read().decode()[-2000:] if head.poll() is not None else "no address after 120 s"
-            pytest.fail(f"ray start --head did not come up: {why}")
         # a driver in another directory, without RAY_ADDRESS, as Ray's docs run one on the head node
         res = subprocess.run([str(VENV_BIN / "txt2sce"), "campaign", *inputs, "--out", str(tmp_path / "ray"),
                               "--executor", "ray", "--time-limit", str(TIME_LIMIT), "--no-report"],
