@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import itertools
+import shutil
+import tempfile
 from pathlib import Path
+from typing import Iterator
 
 import pytest
 
@@ -29,3 +32,15 @@ def seed_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.fixture(scope="session")
 def seed_files(seed_dir: Path) -> list[Path]:
     return sorted(seed_dir.glob("*.xosc"))[:6]
+
+
+@pytest.fixture
+def ray_tmp(monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
+    """A private Ray temp dir and no RAY_ADDRESS: `--executor ray` then finds no cluster of anyone else's (another
+    `ray start` on this machine records itself in the default temp dir) and starts its own. Short, because Ray's
+    socket paths under it must fit in 107 bytes."""
+    d = Path(tempfile.mkdtemp(prefix="t2s_ray_", dir="/tmp"))
+    monkeypatch.setenv("RAY_TMPDIR", str(d))
+    monkeypatch.delenv("RAY_ADDRESS", raising=False)
+    yield d
+    shutil.rmtree(d, ignore_errors=True)

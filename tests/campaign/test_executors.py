@@ -23,7 +23,7 @@ def _comparable(runs: Any) -> dict[str, tuple[str, tuple[str, ...], str]]:
     return out
 
 
-def test_serial_pool_and_ray_give_the_same_results(seed_files: list[Path]) -> None:
+def test_serial_pool_and_ray_give_the_same_results(seed_files: list[Path], ray_tmp: Path) -> None:
     # A fault switched on so the runs differ from the nominal ones in their keys and (for some) their verdicts.
     tasks = make_tasks(seed_files[:4], faults=("aggressive_start",), time_limit=TIME_LIMIT)
     serial = _comparable(run_tasks(execute, jobs(tasks), executor="serial"))

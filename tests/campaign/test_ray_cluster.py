@@ -10,18 +10,17 @@ from __future__ import annotations
 import os
 import shutil
 import signal
-import socket
 import sqlite3
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 import pytest
 
 from txt2sce_ros.campaign.executors import run_tasks
+from txt2sce_ros.campaign.ray_cluster import IN_FLIGHT_PER_CPU, free_port, simulated_cluster
 from txt2sce_ros.campaign.runs import RunJob, execute, jobs, make_tasks, run_all
 from txt2sce_ros.campaign.store import ResultStore
 from txt2sce_ros.errors import InputError
@@ -33,44 +32,10 @@ ray = pytest.importorskip("ray")
 VENV_BIN = Path(sys.executable).parent
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
-@pytest.fixture
-def ray_tmp(monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    """A private Ray temp dir (short: Ray's socket paths must fit in 107 bytes) and no RAY_ADDRESS."""
-    d = Path(tempfile.mkdtemp(prefix="t2s_ray_", dir="/tmp"))
-    monkeypatch.setenv("RAY_TMPDIR", str(d))
-    monkeypatch.delenv("RAY_ADDRESS", raising=False)
-    yield d
-    shutil.rmtree(d, ignore_errors=True)
-
-
 def _comparable(runs: Any) -> dict[str, tuple[str, tuple[str, ...], str]]:
     # wall_time is the one field that legitimately differs between executors
     return {r.run_key: (r.verdict, r.categories, repr(sorted((k, v) for k, v in r.record.items() if k != "wall_time")))
             for r in runs}
-
-
-def _two_node_cluster(attempts: int = 3) -> Any:
-    """A head of 1 CPU and a second node of 2 CPUs (retried like `_ray_start_head`: Ray's 30 s node start-up)."""
-    from ray.cluster_utils import Cluster
-
-    for attempt in range(attempts):
-        cluster = Cluster()
-        try:
-            cluster.add_node(num_cpus=1, gcs_server_port=_free_port(), include_dashboard=False,
-                             dashboard_agent_listen_port=_free_port(), object_store_memory=80 * 1024 * 1024)
-            cluster.add_node(num_cpus=2, object_store_memory=80 * 1024 * 1024)
-            return cluster
-        except Exception:
-            cluster.shutdown()
-            if attempt == attempts - 1:
-                raise
-    raise AssertionError("unreachable")
 
 
 def test_two_node_cluster_runs_self_contained_jobs_as_the_pool_does(seed_files: list[Path], tmp_path: Path,
@@ -93,20 +58,17 @@ def test_two_node_cluster_runs_self_contained_jobs_as_the_pool_does(seed_files: 
     real_put = ray.put
     monkeypatch.setattr(ray, "put", lambda value, **kw: puts.append(len(value)) or real_put(value, **kw))
     # 1 + 2 logical CPUs: not this machine's core count, so the in-flight bound must come from the cluster
-    cluster = _two_node_cluster()
-    try:
+    with simulated_cluster([1, 2]) as cluster:
         notes: list[str] = []
         on_ray = _comparable(run_tasks(execute, shipped, executor="ray", workers=1, ray_address=cluster.address,
                                        note=notes.append))
         assert on_ray == pool
-        assert notes and "2 node(s), 3 CPUs" in notes[0], notes
+        assert notes and f"2 node(s), 3 CPUs, up to {3 * IN_FLIGHT_PER_CPU} runs in flight" in notes[0], notes
         # the map went into the object store once per distinct map, not once per run
         maps = {j.shared_part()[0] for j in shipped}
         assert len(puts) == len(maps) < len(shipped)
         assert not ray.is_initialized()          # the driver disconnected; the cluster is still up
-        assert len([n for n in cluster.list_all_nodes()]) == 2
-    finally:
-        cluster.shutdown()
+        assert len(cluster.list_all_nodes()) == 2
 
 
 def test_a_job_ships_its_map_once_and_is_whole_again_on_the_worker(seed_files: list[Path]) -> None:
@@ -127,7 +89,7 @@ def test_unreadable_scenario_is_that_runs_error_not_the_campaigns(tmp_path: Path
 
 
 def test_unreachable_cluster_is_one_clear_error(seed_files: list[Path], ray_tmp: Path) -> None:
-    port = _free_port()       # nothing listens there
+    port = free_port()       # nothing listens there
     with pytest.raises(InputError, match=f"no Ray cluster answers at 127.0.0.1:{port} \\(--ray-address\\)"):
         list(run_tasks(execute, jobs(make_tasks(seed_files[:1])), executor="ray", ray_address=f"127.0.0.1:{port}"))
 
@@ -159,8 +121,8 @@ def _ray_start_head(env: dict[str, str], recorded: Path, attempts: int = 3) -> s
     why = ""
     for _ in range(attempts):
         head = subprocess.Popen(
-            [str(VENV_BIN / "ray"), "start", "--head", "--block", "--num-cpus", "2", "--port", str(_free_port()),
-             "--include-dashboard=false", "--dashboard-agent-listen-port", str(_free_port()),
+            [str(VENV_BIN / "ray"), "start", "--head", "--block", "--num-cpus", "2", "--port", str(free_port()),
+             "--include-dashboard=false", "--dashboard-agent-listen-port", str(free_port()),
              "--disable-usage-stats"],
             env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
         deadline = time.monotonic() + 120

@@ -19,10 +19,13 @@ from __future__ import annotations
 
 import logging
 import os
+import shutil
 import socket
+import tempfile
 import time
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Callable, Hashable, Iterable, Iterator, TypeVar
+from typing import Any, Callable, Hashable, Iterable, Iterator, Sequence, TypeVar
 
 from ..errors import InputError, SimulationFault, Txt2SceError
 
@@ -57,6 +60,9 @@ def find_address(address: str | None) -> tuple[str | None, str]:
     return None, "no running cluster found"
 
 
+#: Tries to start a local instance (see `connect`).
+LOCAL_START_ATTEMPTS = 3
+
 #: Seconds to wait for a cluster's GCS port to accept a connection (`ray.init` itself retries for many minutes).
 PROBE_TIMEOUT = 10.0
 
@@ -87,7 +93,15 @@ def connect(ray: Any, address: str | None, workers: int, note: Callable[[str], N
     try:
         if target is None:
             # num_cpus only when starting an instance: Ray refuses it when connecting to an existing cluster.
-            ray.init(address="local", num_cpus=workers, **kwargs)
+            # Ray gives the new node 30 s to register (hard-coded); a loaded machine can miss that: try again.
+            for attempt in range(LOCAL_START_ATTEMPTS):
+                try:
+                    ray.init(address="local", num_cpus=workers, **kwargs)
+                    break
+                except Exception as exc:  # noqa: BLE001 - Ray raises a bare Exception on that time-out
+                    ray.shutdown()
+                    if attempt == LOCAL_START_ATTEMPTS - 1 or "timed out during startup" not in str(exc):
+                        raise
         else:
             ray.init(address=target, **kwargs)
     except Exception as exc:  # noqa: BLE001 - ray raises ConnectionError, ValueError, RuntimeError, TimeoutError
@@ -95,13 +109,14 @@ def connect(ray: Any, address: str | None, workers: int, note: Callable[[str], N
         raise InputError(f"cannot connect to {where}: {_first_line(exc)}", source="--executor ray") from exc
     finally:
         ray_log.setLevel(level)
-    res = ray.cluster_resources()
+    cpus = int(ray.cluster_resources().get("CPU", 0))
     nodes = sum(1 for n in ray.nodes() if n.get("Alive"))
+    sizing = f"up to {in_flight(ray)} runs in flight"
     if target is None:
-        note(f"ray: {origin}; started a local instance ({int(res.get('CPU', 0))} CPUs)")
+        note(f"ray: {origin}; started a local instance ({cpus} CPUs, {sizing})")
     else:
         where = ray.get_runtime_context().gcs_address
-        note(f"ray: connected to {where} ({origin}): {nodes} node(s), {int(res.get('CPU', 0))} CPUs")
+        note(f"ray: connected to {where} ({origin}): {nodes} node(s), {cpus} CPUs, {sizing}")
 
 
 def _first_line(exc: BaseException) -> str:
@@ -114,7 +129,8 @@ def _rejoin(fn: Callable[[Any], R], task: Any, part: Any) -> R:
     return fn(task.with_shared(part))
 
 
-def _in_flight(ray: Any) -> int:
+def in_flight(ray: Any) -> int:
+    """Tasks to keep submitted: IN_FLIGHT_PER_CPU per CPU of the whole cluster (not of the driver's machine)."""
     return max(1, int(ray.cluster_resources().get("CPU", 1))) * IN_FLIGHT_PER_CPU
 
 
@@ -134,7 +150,7 @@ def run_on_ray(fn: Callable[[T], R], tasks: Iterable[T], *, workers: int, addres
         plain = ray.remote(max_retries=3)(fn)
         joined = ray.remote(max_retries=3)(_rejoin)
         parts: dict[Hashable, Any] = {}         # shared-part key -> object ref, put once per campaign
-        limit, sized_at = _in_flight(ray), time.monotonic()
+        limit, sized_at = in_flight(ray), time.monotonic()
         pending: list[Any] = []
         it = iter(tasks)
         exhausted = False
@@ -171,7 +187,52 @@ def run_on_ray(fn: Callable[[T], R], tasks: Iterable[T], *, workers: int, addres
                                           "node needs the project installed the same way; see the README)",
                                           source="--executor ray") from exc
             if time.monotonic() - sized_at > RESIZE_EVERY:
-                limit, sized_at = _in_flight(ray), time.monotonic()
+                limit, sized_at = in_flight(ray), time.monotonic()
     finally:
         if initialised_here:
             ray.shutdown()
+
+
+def free_port() -> int:
+    """A TCP port nothing listens on now (for a private cluster's GCS and agents)."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@contextmanager
+def simulated_cluster(cpus_per_node: Sequence[int], *, attempts: int = 3) -> Iterator[Any]:
+    """Several Ray nodes on this machine (`ray.cluster_utils.Cluster`; a node per entry of `cpus_per_node`), in a
+    private temp dir with free ports, so nothing meets another Ray instance on the machine; shut down on leaving.
+    For tests and `txt2sce bench ray`: what a multi-machine cluster looks like to the driver. Ray gives a node 30 s
+    to register (hard-coded), which a loaded 2-core machine can miss: a failed start is retried."""
+    from ray.cluster_utils import Cluster
+
+    old_tmp = os.environ.get("RAY_TMPDIR")
+    # short: Ray's socket paths under it must fit in 107 bytes
+    tmp = tempfile.mkdtemp(prefix="t2s_ray_", dir="/tmp")
+    os.environ["RAY_TMPDIR"] = tmp
+    cluster = None
+    try:
+        for attempt in range(attempts):
+            cluster = Cluster()
+            try:
+                for i, cpus in enumerate(cpus_per_node):
+                    head = {"gcs_server_port": free_port(), "include_dashboard": False,
+                            "dashboard_agent_listen_port": free_port()} if i == 0 else {}
+                    cluster.add_node(num_cpus=cpus, object_store_memory=80 * 1024 * 1024, **head)
+                break
+            except Exception:  # noqa: BLE001 - Ray raises a bare Exception on a node start-up timeout
+                cluster.shutdown()
+                cluster = None
+                if attempt == attempts - 1:
+                    raise
+        yield cluster
+    finally:
+        if cluster is not None:
+            cluster.shutdown()
+        if old_tmp is None:
+            os.environ.pop("RAY_TMPDIR", None)
+        else:
+            os.environ["RAY_TMPDIR"] = old_tmp
+        shutil.rmtree(tmp, ignore_errors=True)
