@@ -43,4 +43,7 @@ def ray_tmp(monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     monkeypatch.setenv("RAY_TMPDIR", str(d))
     monkeypatch.delenv("RAY_ADDRESS", raising=False)
     yield d
+    from txt2sce_ros.campaign.ray_cluster import stop_processes_under
+
+    stop_processes_under(str(d))      # what a half-started instance left (a shut-down one left nothing)
     shutil.rmtree(d, ignore_errors=True)

@@ -72,6 +72,8 @@ def run(args: argparse.Namespace) -> int:
         rows.append(("pool, 2 workers", *_timed(shipped, executor="pool", workers=2)))
         rows.append(("ray, 1 node x 1 CPU", *_on_cluster([1], shipped, warm)))
         rows.append(("ray, 2 nodes x 1 CPU", *_on_cluster([1, 1], shipped, warm)))
+        # the baseline again: how far the machine's load drifted while the rows above were measured
+        rows.append(("serial again (drift)", *_timed(shipped, executor="serial")))
         base = rows[0][1]
         print(f"{'executor':<24}{'wall s':>9}{'runs/s':>9}{'vs serial':>11}")
         for name, secs, _ in rows:

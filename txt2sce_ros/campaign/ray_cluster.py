@@ -20,6 +20,7 @@ from __future__ import annotations
 import logging
 import os
 import shutil
+import signal
 import socket
 import tempfile
 import time
@@ -200,6 +201,48 @@ def free_port() -> int:
         return int(s.getsockname()[1])
 
 
+def _alive_under(directory: str) -> list[int]:
+    """Processes (not zombies, not this one) whose command line or environment names `directory` (Ray's workers
+    and agents rename their command line, `ray::IDLE`; they inherit RAY_TMPDIR)."""
+    out = []
+    for proc in Path("/proc").iterdir():
+        if not proc.name.isdigit() or int(proc.name) == os.getpid():
+            continue
+        try:
+            if (proc / "stat").read_text().rsplit(")", 1)[1].split()[0] == "Z":
+                continue
+            needle = directory.encode()
+            if needle in (proc / "cmdline").read_bytes() or needle in (proc / "environ").read_bytes():
+                out.append(int(proc.name))
+        except (OSError, IndexError):
+            continue
+    return out
+
+
+def stop_processes_under(directory: str, timeout: float = 5.0) -> int:
+    """SIGKILL every process whose command line or environment names `directory` (a private Ray temp dir: the GCS,
+    raylets, agents and workers of the instances started under it, and nothing else) and reap those that are our children.
+    Needed because a node that missed Ray's start-up window is known to neither `Cluster.shutdown` nor
+    `ray.shutdown` and would live on. Returns how many were stopped."""
+    pids = _alive_under(directory)
+    for pid in pids:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+    deadline = time.monotonic() + timeout
+    while pids and time.monotonic() < deadline:
+        for pid in pids:
+            try:
+                os.waitpid(pid, os.WNOHANG)     # our child: reaped; anyone else's: ChildProcessError
+            except ChildProcessError:
+                pass
+        if not _alive_under(directory):
+            break
+        time.sleep(0.1)
+    return len(pids)
+
+
 @contextmanager
 def simulated_cluster(cpus_per_node: Sequence[int], *, attempts: int = 3) -> Iterator[Any]:
     """Several Ray nodes on this machine (`ray.cluster_utils.Cluster`; a node per entry of `cpus_per_node`), in a
@@ -225,12 +268,14 @@ def simulated_cluster(cpus_per_node: Sequence[int], *, attempts: int = 3) -> Ite
             except Exception:  # noqa: BLE001 - Ray raises a bare Exception on a node start-up timeout
                 cluster.shutdown()
                 cluster = None
+                stop_processes_under(tmp)
                 if attempt == attempts - 1:
                     raise
         yield cluster
     finally:
         if cluster is not None:
             cluster.shutdown()
+        stop_processes_under(tmp)
         if old_tmp is None:
             os.environ.pop("RAY_TMPDIR", None)
         else:
