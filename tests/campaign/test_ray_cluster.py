@@ -94,6 +94,17 @@ def test_unreachable_cluster_is_one_clear_error(seed_files: list[Path], ray_tmp:
         list(run_tasks(execute, jobs(make_tasks(seed_files[:1])), executor="ray", ray_address=f"127.0.0.1:{port}"))
 
 
+def test_a_recorded_cluster_that_is_gone_is_one_clear_error(seed_files: list[Path], ray_tmp: Path) -> None:
+    # what a head node killed without `ray stop` leaves behind: ray.init("auto") would retry it for minutes
+    recorded = ray_tmp / "ray" / "ray_current_cluster"
+    recorded.parent.mkdir()
+    port = free_port()
+    recorded.write_text(f"127.0.0.1:{port}", encoding="utf-8")
+    with pytest.raises(InputError, match=f"no Ray cluster answers at 127.0.0.1:{port} \\(the cluster `ray start` "
+                                         "recorded in"):
+        list(run_tasks(execute, jobs(make_tasks(seed_files[:1])), executor="ray"))
+
+
 def _stored(db: Path) -> list[tuple[str, str, str]]:
     with sqlite3.connect(db) as con:
         return list(con.execute("SELECT run_key, verdict, categories FROM runs ORDER BY run_key"))

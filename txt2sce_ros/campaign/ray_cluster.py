@@ -83,7 +83,10 @@ def _probe(address: str, origin: str) -> None:
 def connect(ray: Any, address: str | None, workers: int, note: Callable[[str], None]) -> None:
     """`ray.init` on the cluster `find_address` picks, or on a new local instance of `workers` CPUs."""
     target, origin = find_address(address)
-    if target is not None:
+    if target == "auto" and origin.startswith("the cluster `ray start` recorded"):
+        # a file left by a cluster that died without `ray stop` would have ray.init retry for minutes
+        _probe(address_file().read_text(encoding="utf-8").strip(), origin)
+    elif target is not None:
         _probe(target, origin)
     # The driver's logs would garble the progress bar; Ray's own INFO lines say nothing the note does not.
     kwargs: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
