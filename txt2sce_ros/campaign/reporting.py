@@ -128,6 +128,9 @@ def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence
         value = settings.get(key)
         return default if value is None else str(value)
 
+    from ..tree.build import tree_config
+
+    tree = tree_config()["tree"]      # the defaults the campaign used where no option was given
     shown = ", ".join(trees[:12]) + (f" and {len(trees) - 12} more" if len(trees) > 12 else "")
     return [
         ("system under test", "stand-in planner (standin_planner: IDM + pure pursuit), "
@@ -136,9 +139,10 @@ def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence
         ("inputs", ", ".join(settings.get("inputs", [])) or "–"),
         ("seeds / trees", f"{len(trees)}: {shown}" if trees else "none (plain scenario files)"),
         ("scenarios", f"{len(tasks)} files, {len({t.key for t in tasks})} distinct runs"),
-        ("tree settings", f"mutations per block {opt('mutations', 'config default')}, prune share "
-                          f"{opt('prune', 'config default')}, node budget {opt('max_nodes', 'config default')}, "
-                          f"first {opt('max_seeds', 'all')} seeds; {_config_digest('mutation')}"),
+        ("tree settings", f"mutations per block {opt('mutations', str(tree['mutations_per_block']))}, prune share "
+                          f"{opt('prune', str(tree['prune_share']))}, node budget "
+                          f"{opt('max_nodes', str(tree['max_nodes_per_tree']))}, first {opt('max_seeds', 'all')} "
+                          f"seeds; {_config_digest('mutation')}"),
         ("run settings", f"RNG seed {opt('rng_seed', '0')}, simulated time limit {opt('time_limit', 'player default')}"
                          f" s, {'ROS 2 node graph over DDS' if settings.get('ros') else 'in-process cores'}, "
                          f"executor {opt('executor', '?')}, extractor {opt('backend', 'offline')}"),
