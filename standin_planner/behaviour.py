@@ -274,13 +274,19 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
             continue
         if in_path(po, ego, 0.0, bp) and abs(po.rel_heading) <= bp.lead_heading_tolerance:
             continue                                     # a lead or a follower: IDM's business, not a crossing
-        if abs(math.sin(po.rel_heading)) < PARALLEL_SIN and abs(o.yaw_rate) < 0.05:
-            continue                                     # keeps to a parallel lane (same way or oncoming)
+        parallel = abs(math.sin(po.rel_heading)) < PARALLEL_SIN and abs(o.yaw_rate) < 0.05
+        if parallel and not line.turns_across(o.heading, ego.s_front - 1.0, ego.s_front + 80.0, PARALLEL_SIN):
+            continue                                     # keeps to a lane the route runs beside
         traj = predict(o, bp.prediction_horizon, bp.prediction_step)
         s, off = line.project_many(traj[:, 1], traj[:, 2])
         radius = 0.5 * max(o.length, o.width)
         hit = (np.abs(off) < ego.half_width + po.half_lat + bp.conflict_margin) & (s > ego.s_front - 1.0) \
             & (s < ego.s_front + 80.0)
+        if parallel:
+            # A mover keeping to a parallel lane (same way or oncoming) meets the route only where the route turns
+            # across its course: the right turn across a cyclist riding on in the bike lane beside the ego. Where
+            # the route runs beside it, it is not a crossing.
+            hit &= np.array([abs(math.sin(line.heading(float(x)) - o.heading)) >= PARALLEL_SIN for x in s])
         idx = np.flatnonzero(hit)
         if len(idx) == 0:
             continue

@@ -125,6 +125,12 @@ class RefLine:
     def heading(self, s: float) -> float:
         return float(self._seg_heading[self._index(s)])
 
+    def turns_across(self, heading: float, s0: float, s1: float, min_sin: float) -> bool:
+        """Whether the line runs across `heading` anywhere in [s0, s1] (|sin(difference)| at least `min_sin`): a
+        turn across the course of a party travelling on beside it or towards it."""
+        i0, i1 = self._index(s0), self._index(s1)
+        return bool(np.any(np.abs(np.sin(self._seg_heading[i0:i1 + 1] - heading)) >= min_sin))
+
     def curvature_at(self, s: float) -> float:
         return float(np.interp(s, self.s, self.curvature))
 

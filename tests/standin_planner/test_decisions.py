@@ -271,3 +271,22 @@ def test_a_stop_decided_at_yellow_onset_is_kept_through_the_yellow():
     fresh = planner()
     fresh.step(frame(0.05, near, lights=yellow))
     assert Reason.YELLOW not in reasons(fresh)
+
+
+def test_right_turn_yields_to_a_cyclist_riding_on_beside_unless_cyclists_are_ignored():
+    # a right turn (south on road 2, west onto road 3) across a cyclist riding straight on at the lane's right
+    # edge, just ahead of or behind the ego: the route turns across its course, so it is a crossing
+    right_turn = goal_on_lane(N, "3", 1, 60.0)
+    for s_cyc in (292.0, 286.0):
+        ego = on_lane(N, "ego", "2", -1, 290.0, speed=4.0)
+        bike = on_lane(N, "bike", "2", -1, s_cyc, speed=5.0, category="bicycle", offset=-1.7, length=1.8, width=0.6)
+        p = Planner(N, right_turn, PlannerParams.from_config())
+        p.step(frame(0.0, ego, bike))
+        assert "bike" in entities(p, Reason.YIELD)
+        p = Planner(N, right_turn, PlannerParams.from_config(), faults=Faults(ignore_cyclists=True))
+        p.step(frame(0.0, ego, bike))
+        assert "bike" not in entities(p, Reason.YIELD)
+        # going straight on beside it is no crossing
+        p = planner()
+        p.step(frame(0.0, ego, bike))
+        assert "bike" not in entities(p, Reason.YIELD)
