@@ -31,9 +31,10 @@ def test_expected_nodes_is_the_papers_sum():
 def test_unpruned_node_count_equals_sum_formula(tmp_path):
     cfg = tree_config(prune_share=1.0, mutations=2)
     res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=cfg)
-    # weather 5 types, ego 2, npc1 7 categories, 2 events x 2, new obstacle 2
-    assert res.block_counts == (5, 2, 7, 2, 2, 2)
-    assert res.expected == 5 + 10 + 70 + 140 + 280 + 560
+    # weather 5 types, ego 2, npc1 7 categories + one started close to the ego (WPM-near), 2 events x 2,
+    # new obstacle 2
+    assert res.block_counts == (5, 2, 8, 2, 2, 2)
+    assert res.expected == 5 + 10 + 80 + 160 + 320 + 640
     assert res.nodes == res.expected and res.invalid == 0 and not res.truncated
     files = list((tmp_path / "t" / "nodes").glob("n*.xosc"))
     assert len(files) == res.expected
@@ -42,12 +43,12 @@ def test_unpruned_node_count_equals_sum_formula(tmp_path):
     by_depth = {}
     for n in manifest["nodes"]:
         by_depth[n["depth"]] = by_depth.get(n["depth"], 0) + 1
-    assert [by_depth[d] for d in range(1, 7)] == [5, 10, 70, 140, 280, 560]
+    assert [by_depth[d] for d in range(1, 7)] == [5, 10, 80, 160, 320, 640]
 
 
 def test_mutation_count_changes_the_tree(tmp_path):
     res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=tree_config(prune_share=1.0, mutations=1))
-    assert res.block_counts == (5, 1, 7, 1, 1, 1)
+    assert res.block_counts == (5, 1, 8, 1, 1, 1)          # npc1: 7 categories + WPM-near
     assert res.nodes == expected_nodes(res.block_counts)
 
 

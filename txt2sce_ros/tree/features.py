@@ -87,7 +87,20 @@ def npc_features(obj: etree._Element, private: etree._Element | None, ctx: SeedC
         out[a] = bin_of(_f(dims, a), lo, hi, n)
     out["max_speed"] = bin_of(_f(perf, "maxSpeed", spec["perf"][0]), lo_s * spec["perf"][0], hi_s * spec["perf"][0], n)
     out["shift"] = _shift_bin(private, obj.get("name", ""), ctx, cfg, n)
+    out["start"] = _start_kind(private, obj.get("name", ""), ctx, cfg)
     return out
+
+
+def _start_kind(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any]) -> str:
+    """`near` when the party starts within the WPM-near distance of the ego's start along the same road (the
+    version `trajectory.place_near_ego` makes), else `seed`: a party close to the AV is a condition of its own."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition") if private is not None else None
+    ego = ctx.starts.get("ego")
+    if tele is None or ego is None:
+        return "seed"
+    pos = lane_pos(tele)
+    reach = 2 * cfg["trajectory"]["init_location"]["near_gap"] + 10.0   # gap + two vehicles' bumper-to-axle
+    return "near" if pos.road == ego.road and abs(pos.s - ego.s) <= reach else "seed"
 
 
 def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, Any], n: int) -> dict[str, Any]:

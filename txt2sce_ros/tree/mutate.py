@@ -4,7 +4,7 @@
 |---|---|---|
 | weather | WM | enumerate every weather type, parameters drawn per type |
 | ego | WPM (initial location, context-aware) | `mutations_per_block` |
-| npc | NCM (+ DM, VPM follow the category) + WPM initial location | enumerate every category |
+| npc | NCM (+ DM, VPM follow the category) + WPM initial location; WPM-near (close to the AV) | enumerate every category, + 1 |
 | signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate green / yellow / red |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
@@ -28,7 +28,7 @@ from .dynamics import dtm, tsm
 from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
-from .trajectory import keep_clear_of_queue, shift_init_location, wpm_lane_change
+from .trajectory import keep_clear_of_queue, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
 from .xml import parse_fragment, to_text
 
@@ -92,6 +92,11 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 if priv is not None:
                     keep_clear_of_queue(priv, block.key, els[0], ctx, rec, cfg["trajectory"]["init_location"])
                 emit(els, ops, rec)
+            # one more version: the party as in the seed, started close to the AV (where the road allows)
+            els, rec = _parse(block.fragments), Recorder()
+            if len(els) > 1 and els[1] is not None and place_near_ego(els[1], block.key, els[0], ctx, rec,
+                                                                      cfg["trajectory"]["init_location"]):
+                emit(els, "WPM-near", rec)
         elif block.kind is BlockKind.SIGNAL:
             for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()

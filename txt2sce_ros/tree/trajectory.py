@@ -179,3 +179,36 @@ def keep_clear_of_queue(private: etree._Element, entity: str, obj: etree._Elemen
         return 0.0
     rec.set(tele, "s", new_s, digits=3)
     return shift
+
+
+def place_near_ego(private: etree._Element, entity: str, obj: etree._Element, ctx: SeedContext, rec: Recorder,
+                   cfg: dict[str, Any]) -> float:
+    """WPM on the initial location, toward the AV: a party starting on the ego's road and travelling its way
+    (R5/R6, any lane) is moved along its own lane so that `near_gap` m of bumper gap separate it from the ego at
+    the start, on the side it already was (ahead stays ahead, so the queue's order and the report's position
+    hold). A party close to the AV at the start is the condition of start refusals and of a cyclist or a car
+    riding beside the ego as it turns; a seed rarely places one, so the tree brings it in. Returns the shift (m);
+    0 when the party is elsewhere, already that close, or the new start is not feasible (`feasible_s`)."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
+    ego = ctx.starts.get("ego")
+    if tele is None or ego is None or ctx.map is None or not ctx.map.has_road(ego.road):
+        return 0.0
+    start = lane_pos(tele)
+    if start.road != ego.road:
+        return 0.0
+    sign = ctx.map.direction(start.road, start.lane)
+    if sign != ctx.map.direction(ego.road, ego.lane):
+        return 0.0                                         # oncoming: closeness at the start is no condition
+    e_rear, e_front = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))
+    p_rear, p_front = footprint_extent(obj)
+    gap = float(cfg["near_gap"])
+    ahead = sign * (start.s - ego.s) > 0
+    # reference-point distance along the lane that leaves `gap` between the facing bumpers
+    dist = (e_front - p_rear + gap) if ahead else (p_front - e_rear + gap)
+    new_s = ego.s + sign * (dist if ahead else -dist)
+    if abs(new_s - start.s) < 0.5 or abs(start.s - ego.s) < abs(new_s - ego.s):
+        return 0.0                                         # already at least that close
+    if not feasible_s(ctx, entity, start, new_s, cfg["margin"], min_gap=0.0):
+        return 0.0
+    text = rec.set(tele, "s", new_s, digits=3)
+    return float(text) - start.s
