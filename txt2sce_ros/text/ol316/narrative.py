@@ -30,6 +30,8 @@ def compact(text: str) -> str:
 _CAPTION = re.compile(r"SECTION5|ACCIDENTDETAILS")
 #: The mode boxes' labels, OCR slips allowed ("Conventional Modo", "ventlonal Moda").
 _MODE = re.compile(r"(?:NOMOUS|ENTIONAL|ENTLONAL|NTIONAL)MOD[A-Z]")
+#: Both mode boxes in running text: what precedes them on an OCR line is the scanned caption's debris.
+_MODES_INLINE = re.compile(r"a\w*onomous\s+mod\w\W{0,15}\w{0,3}\W{0,10}c\w{2,4}[ei]nt[il]onal\s+mod\w", re.I)
 _END = re.compile(r"ADDITIONALINF|SECTION6|CERTIFICATION|CERTIFY|FOREGOING|PENALTYOFPERJURY|316(?:NEW|REV)"
                   r"|ITEMSMARKEDBELOW|PAGE\d+OF\d+")
 #: A gap this many line heights wide after the narrative's last line ends it (a scan's garbled captions below).
@@ -67,5 +69,14 @@ def find_narrative(pages: list[Page]) -> Section5 | None:
         if not body:
             page = number
         body.append(ln)
-    text = re.sub(r"\s+", " ", " ".join(ln.text for ln in body)).strip()
+    parts = [ln.text for ln in body]
+    # A scan's garbled caption can come before the mode boxes: the narrative starts after them.
+    cut = None
+    for i, ln in enumerate(body[:3]):
+        m = _MODES_INLINE.search(ln.text) if ln.kind != "field" else None
+        if m or (ln.kind != "field" and _is_mode_line(ln)):
+            cut = (i, m.end() if m else len(ln.text))
+    if cut:
+        parts = [parts[cut[0]][cut[1]:]] + parts[cut[0] + 1:]
+    text = re.sub(r"\s+", " ", " ".join(parts)).strip()
     return Section5(text, closed, all(ln.kind == "field" for ln in body), page) if text else None
