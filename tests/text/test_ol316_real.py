@@ -143,3 +143,25 @@ def test_extract_exits_nonzero_when_a_pdf_gives_no_narrative(tmp_path: Path) -> 
     assert reading["read_as"] == "form_fields"
     assert reading["form_reading"]["collision_type"] == "rear_end"
     assert reading["form"]["vehicle_1"]["movement_preceding_collision"] == ["making left turn"]
+
+
+def test_ticks_drawn_on_the_scan_are_seen_without_the_ocr_layer_glyphs() -> None:
+    """A hand tick the scanner's OCR did not turn into a glyph is still ink in its VEH column's cell: with the
+    mark glyphs removed, the page image alone gives each OCR-layer REV. 2/2017 form's environment ticks."""
+    from dataclasses import replace
+
+    from txt2sce_ros.text.ol316 import boxes, raster
+    from txt2sce_ros.text.pdf import FormFields
+
+    rows = [r for r in ROWS if r["text_layer"] == "yes" and r["form"]["weather"] is not None]
+    assert len(rows) >= 5
+    for r in rows:
+        pages = read_pages(OL316 / r["file"])
+        (page,) = [p for p in pages if boxes.has_tables(p)]
+        bare = replace(page, pieces=tuple(p for p in page.pieces if p.kind != "mark"))
+        assert boxes.read_tables(bare) == ({}, {})  # no glyphs, no image: nothing
+        v1, v2 = boxes.read_tables(bare, raster.render(OL316 / r["file"], page.number, 150))
+        got = form_sketch_fields(FormFields(v1, v2))
+        assert [got[k] for k in ("weather", "lighting", "surface")] == \
+            [r["sketch_fields"][k] for k in ("weather", "lighting", "surface")], r["file"]
+        assert list(v1.get("movement_preceding_collision", ())) == [m.lower() for m in r["form"]["movement_v1"]]

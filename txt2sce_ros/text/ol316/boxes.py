@@ -16,6 +16,7 @@ import re
 
 from .layout import Page, Piece
 from .narrative import compact
+from .raster import PageImage
 
 #: Table caption (letters only) -> field name, and the options each table prints (labels normalised as `label()`).
 TABLES: dict[str, tuple[str, tuple[str, ...]]] = {
@@ -119,14 +120,29 @@ def _vehicle_headers(page: Page) -> list[tuple[float, float, int]]:
     return out
 
 
-def read_tables(page: Page) -> tuple[Boxes, Boxes]:
-    """The ticked options of section 5's tables on one page: (VEH 1 column, VEH 2 column)."""
+def has_tables(page: Page) -> bool:
+    return bool(_captions(page))
+
+
+def read_tables(page: Page, image: PageImage | None = None) -> tuple[Boxes, Boxes]:
+    """The ticked options of section 5's tables on one page: (VEH 1 column, VEH 2 column). Ticks are mark pieces
+    and, given the page image, ink in a tick column's cell on the option's row (a hand tick no OCR turned into a
+    glyph)."""
     captions = _captions(page)
     if not captions:
         return {}, {}
     options = _options(page, captions)
     headers = _vehicle_headers(page)
     cols: tuple[dict[str, list[str]], dict[str, list[str]]] = ({}, {})
+    if image is not None:
+        starts = sorted({round(p.x0) for p, _, _ in options})
+        for p, field, opt in options:
+            right = next((x for x in starts if x > p.x0 + 25), page.width)
+            for hx, hy, vehicle in headers:
+                if p.x0 < hx < right and hy > p.yc and image.ticked(hx - 7, p.yc - 5, hx + 7, p.yc + 5):
+                    got = cols[vehicle - 1].setdefault(field, [])
+                    if opt not in got:
+                        got.append(opt)
     for mark in (p for p in page.pieces if p.kind == "mark"):
         # The mark's column of options is the nearest one to its left; a mark right of another column's labels
         # (the CITED YES/NO boxes of OTHER ASSOCIATED FACTORS) is no tick of this column.

@@ -11,8 +11,8 @@ import shutil
 from functools import lru_cache
 from pathlib import Path
 
-from ...errors import InputError
 from .layout import MARK_GLYPHS, Page, Piece, reading_order
+from .raster import render
 
 #: Render resolution: Tesseract reads 10-point form print best near 300 dpi.
 DPI = 300
@@ -45,20 +45,12 @@ def ocr_page(path: Path, number: int, *, dpi: int = DPI) -> Page:
     """Render page `number` of `path` and read it with Tesseract."""
     import os
 
-    import pypdfium2 as pdfium
     import pytesseract
 
     # One thread per Tesseract: on a shared machine its OpenMP threads only contend (and are slower in total).
     os.environ.setdefault("OMP_THREAD_LIMIT", "1")
-    doc = pdfium.PdfDocument(str(path))
-    try:
-        page = doc[number]
-        width, height = page.get_size()
-        image = page.render(scale=dpi / 72).to_pil().convert("L")
-    except Exception as exc:  # PDFium raises its own error type on damaged files
-        raise InputError(f"cannot render page {number + 1} for OCR ({exc})", source=str(path)) from exc
-    finally:
-        doc.close()
+    rendered = render(path, number, dpi)
+    image, width, height = rendered.image, rendered.width_pt, rendered.height_pt
     data = pytesseract.image_to_data(image, lang="eng", config="--psm 3",
                                      output_type=pytesseract.Output.DICT)
     k = 72 / dpi

@@ -11,10 +11,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ...errors import InputError
-from . import ocr
-from .boxes import Boxes, read_inline, read_tables, read_vehicle_was
+from . import ocr, raster
+from .boxes import Boxes, has_tables, read_inline, read_tables, read_vehicle_was
 from .layout import Page, read_pages
-from .narrative import Section5, find_narrative
+from .narrative import Section5, compact, find_narrative
 
 #: Below this share of word-like tokens a narrative is OCR garbage ("A eruiSe anh:nlonious vchklc").
 READABLE = 0.85
@@ -50,15 +50,20 @@ def _text_chars(pages: list[Page]) -> int:
 
 
 def _ocr_pages(path: Path, only: int | None = None) -> tuple[list[Page], Section5 | None]:
-    """OCR page `only`, or page after page until section 5's narrative has closed (the rest of the form holds
-    nothing a sketch uses, but for REV. 2/2017's tables on the page after, which a scan's OCR reads too poorly)."""
+    """OCR page `only`, or page after page until section 5's narrative has closed (and, on REV. 2/2017, the
+    tables' page after it); the rest of the form holds nothing a sketch uses."""
     pages: list[Page] = []
     found = None
-    for number in ([only] if only is not None else range(ocr.page_count(path))):
+    total = ocr.page_count(path)
+    for number in ([only] if only is not None else range(total)):
         pages.append(ocr.ocr_page(path, number))
         found = find_narrative(pages)
         if found and found.closed:
             break
+    if only is None and found and pages[-1].number + 1 < total and any(
+            "316REV" in compact(ln.text) for pg in pages for ln in pg.lines):
+        # REV. 2/2017 prints section 5's check-box tables on the page after the narrative.
+        pages.append(ocr.ocr_page(path, pages[-1].number + 1))
     return pages, found
 
 
@@ -89,7 +94,8 @@ def read(path: str | Path) -> ReadResult:
     v1: dict[str, tuple[str, ...]] = {}
     v2: dict[str, tuple[str, ...]] = {}
     for page in pages:
-        t1, t2 = read_tables(page)
+        image = raster.render(p, page.number, 150) if has_tables(page) else None
+        t1, t2 = read_tables(page, image)
         v1.update(t1)
         v2.update(t2)
     if not v1 and not v2:
