@@ -29,18 +29,20 @@ def compact(text: str) -> str:
 
 _CAPTION = re.compile(r"SECTION5|ACCIDENTDETAILS")
 #: The mode boxes' labels, OCR slips allowed ("Conventional Modo", "ventlonal Moda").
-_MODE = re.compile(r"(?:NOMOUS|ENTIONAL|ENTLONAL|NTIONAL)MOD[A-Z]")
+_MODE = re.compile(r"[A-Z]*(?:NOMOUS|ENTIONAL|ENTLONAL|NTIONAL)MOD[A-Z]")
 #: Both mode boxes in running text: what precedes them on an OCR line is the scanned caption's debris.
 _MODES_INLINE = re.compile(r"a\w*onomous\s+mod\w\W{0,15}\w{0,3}\W{0,10}c\w{2,4}[ei]nt[il]onal\s+mod\w", re.I)
 _END = re.compile(r"ADDITIONALINF|SECTION6|CERTIFICATION|CERTIFY|FOREGOING|PENALTYOFPERJURY|316(?:NEW|REV)"
                   r"|ITEMSMARKEDBELOW|PAGE\d+OF\d+")
 #: A gap this many line heights wide after the narrative's last line ends it (a scan's garbled captions below).
 _GAP = 4.0
-_SHORT = 70  # a mode-box line is short; a narrative sentence that says "autonomous mode" is long
 
 
 def _is_mode_line(line: Piece) -> bool:
-    return bool(_MODE.search(compact(line.text))) and len(line.text) <= _SHORT and line.kind != "field"
+    """The mode boxes' line: their labels and box glyphs only (a narrative line that says "was operating in
+    Autonomous Mode" has much more)."""
+    c = compact(line.text)
+    return line.kind != "field" and bool(_MODE.search(c)) and len(_MODE.sub("", c)) <= 4
 
 
 def find_narrative(pages: list[Page]) -> Section5 | None:
