@@ -29,7 +29,7 @@ def compact(text: str) -> str:
 
 _CAPTION = re.compile(r"SECTION5|ACCIDENTDETAILS")
 #: The mode boxes' labels, OCR slips allowed ("Conventional Modo", "ventlonal Moda").
-_MODE = re.compile(r"[A-Z]*(?:NOMOUS|ENTIONAL|ENTLONAL|NTIONAL)MOD[A-Z]")
+_MODE = re.compile(r"[A-Z]*(?:NOMOUS|NTIONA[A-Z]|NTLONA[A-Z])M[A-Z]D[A-Z]")
 #: Both mode boxes in running text: what precedes them on an OCR line is the scanned caption's debris.
 _MODES_INLINE = re.compile(r"a\w*onomous\s+mod\w\W{0,15}\w{0,3}\W{0,10}c\w{2,4}[ei]nt[il]onal\s+mod\w", re.I)
 _END = re.compile(r"ADDITIONALINF|SECTION6|CERTIFICATION|CERTIFY|FOREGOING|PENALTYOFPERJURY|316(?:NEW|REV)"

@@ -72,12 +72,18 @@ def read(path: str | Path) -> ReadResult:
     p = Path(path)
     pages = read_pages(p)
     notes: list[str] = []
-    found = find_narrative(pages) if _text_chars(pages) >= _MIN_TEXT else None
+    has_text = _text_chars(pages) >= _MIN_TEXT
+    found = find_narrative(pages) if has_text else None
     source = "form_fields" if found and found.from_fields else "text"
-    if _text_chars(pages) < _MIN_TEXT or (found and readability(found.text) < READABLE):
-        why = "no text layer (a scanned form)" if _text_chars(pages) < _MIN_TEXT else \
-            f"an unreadable OCR layer ({readability(found.text):.0%} word-like tokens)"  # type: ignore[union-attr]
+    if not has_text or found is None or readability(found.text) < READABLE:
+        # No text, a text layer without section 5 (an OCR layer that lost it), or one that reads as garbage.
+        why = ("no text layer (a scanned form)" if not has_text else
+               "no section 5 narrative in its text layer" if found is None else
+               f"an unreadable OCR layer ({readability(found.text):.0%} word-like tokens)")
         if not ocr.available():
+            if found is None and has_text:
+                raise InputError("no section 5 narrative (ACCIDENT DETAILS - DESCRIPTION) found in the PDF",
+                                 source=str(p), element="section 5")
             raise InputError(f"PDF has {why}; install Tesseract (Debian: apt-get install tesseract-ocr) to read it "
                              "by OCR", source=str(p))
         ocr_pages, ocr_found = _ocr_pages(p, found.page if found else None)
@@ -85,7 +91,7 @@ def read(path: str | Path) -> ReadResult:
             raise InputError(f"PDF has {why} and OCR found no section 5 narrative in it", source=str(p),
                              element="section 5")
         notes.append(f"PDF has {why}: narrative read by Tesseract OCR (may carry OCR slips)")
-        if _text_chars(pages) < _MIN_TEXT:
+        if not has_text:
             pages = ocr_pages  # the boxes too can only come from the OCR
         found, source = ocr_found, "ocr"
     if found is None:
