@@ -121,7 +121,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     if ego_start == "moving" and not ego_actions:
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
     ego_heading = heading(d, -1)
-    ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(r"\bturn(?:ed|ing)\b", t)) and junction
+    ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(
+        r"\bturn(?:ed|ing)\b|\b(?:make|making|complete|completing|execute|executing)\s+(?:a|an|its|the)\s+"
+        r"(?:\w+\s+)?(?:left|right)\s+turn", t)) and junction
     npcs: list[Party] = []
     ev = Evidence(d)
     weak: list[str] = []
@@ -131,7 +133,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     behind: set[str] = set()
     for k, e in enumerate(parties, 1):
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
-        placed = place(d, e, (pos, lane), ego_actions)
+        placed = place(d, e, (pos, lane), ego_actions, ego_turning)
         pos, lane = placed.position, placed.lane
         slot = f"npcs[{k - 1}]"
         if not known or placed.conflicting:

@@ -13,6 +13,8 @@ gathered as `Cue`s, each from one kind of fact the narrative states about the pa
 
 and combined in a fixed order, highest first, so a rule can be read and its weight seen:
 
+0. A pedestrian or rider the turning AV meets at a junction, in a crosswalk or yielded to, is on the leg the AV
+   turns onto (R4).
 1. A party travelling the other way keeps the first reading (R2 at a junction, R7 elsewhere).
 2. Along the AV's road (R5/R6): an explicit `along` cue decides front/behind; else `passing` (behind); else the
    contact on the AV's rear half (behind) or front half (ahead) for a party not backing up; else the first reading.
@@ -47,10 +49,11 @@ _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|pane
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
 # A lane the party moved into is where it went, not where it was.
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
-_SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+EGO\b"
+_SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+"
+                           r"(?:the\s+(?:first\s+|second\s+)?)?EGO\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO)\b", re.I)
-_BEHIND = compile_gated(r"\b(?:behind\s+(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
+_BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
                         r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
@@ -59,6 +62,8 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:EGO|it|us)|following\s+(?:EGO|it|us|b
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
+                         r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
+                         r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
                          r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
@@ -209,10 +214,33 @@ def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
     return sorted(cues, key=key)
 
 
-def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str) -> Placement:
+_YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|to)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}$",
+                            re.I)
+
+
+def _on_exit_crosswalk(d: Doc, e: Entity) -> Cue | None:
+    """A pedestrian or rider the turning AV meets at a junction is on the leg it turns onto (R4): said by "in the
+    crosswalk", or by the AV yielding to it."""
+    if e.category not in ("pedestrian", "bicycle", "scooter"):
+        return None
+    for m in e.mentions:
+        s = d.sents[m.sent]
+        win = s[max(0, m.start - 40):min(len(s), m.end + 60)]
+        cw = fre.search(r"\bcrosswalk\b", win, re.I)
+        if cw or _YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
+            a = d.offset(m.sent) + max(0, m.start - 40)
+            return Cue("junction", "exit leg", (a + cw.start(), a + cw.end()) if cw else
+                       (d.offset(m.sent) + m.start, d.offset(m.sent) + m.end))
+    return None
+
+
+def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
+          ego_turning: bool = False) -> Placement:
     """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
     pos, lane = first
     cues = gather(d, e)
+    if d.junction and ego_turning and pos in ("R3", "R1", "R5") and (exit_leg := _on_exit_crosswalk(d, e)):
+        return Placement("R4", None, "crossing on the AV's exit leg", (exit_leg,), tuple(cues) + (exit_leg,))
     passing_path = [c for c in cues if c.value == "opposite-lane"]
     overtakes = any(c.kind == "passing" or (c.kind == "along" and c.value == "behind") for c in cues)
     if passing_path and overtakes and not any(c.value == "opposite" for c in cues) and pos in ("R2", "R7", "R5", "R6"):
