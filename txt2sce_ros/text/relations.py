@@ -194,7 +194,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         fore, _ = ego_contact_part(d)
         s = d.sents[d.contact_sent]
         base = d.offset(d.contact_sent)
-        body = _BODY_SIDE.search(s)
+        body = _ego_body_side(s)
         side = _side(next((g for g in body.groups() if g), None)) if body else None
         span = (base + body.start(), base + body.end()) if body else \
             (base + min(d.contact_pos, len(s)), base + min(len(s), d.contact_pos + 60))
@@ -202,6 +202,20 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         flank = "flank" if fre.search(r"\b(?:door|quarter|fender|mirror|panel)\b", s[d.contact_pos:], re.I) else ""
         cues.append(Cue("contact", f"{fore or ''}/{side or ''}/{flank}", span))
     return cues
+
+
+def _ego_body_side(s: str) -> re.Match[str] | None:
+    """The side of the AV's body named in the contact sentence: a part "of EGO" or "EGO's" part first; a part
+    said of the other party ("the passenger side of the van made contact with ...") never."""
+    found = list(_BODY_SIDE.finditer(s))
+    for m in found:
+        if fre.match(r"[\w\s-]{0,30}?\bof\s+(?:the\s+)?(?:stopped\s+|stationary\s+)?EGO\b", s[m.end():]) or \
+                fre.search(r"\bEGO's\s+(?:[\w-]+\s+){0,2}$", s[max(0, m.start() - 30):m.start()]):
+            return m
+    for m in found:
+        if not fre.match(r"[\w\s-]{0,30}?\bof\s+(?:the|a|an|its|their)\s+(?!EGO)", s[m.end():]):
+            return m
+    return None
 
 
 def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
