@@ -68,7 +68,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"
           r"(?:\w+\s+)?(?:driveway|garage|"
           r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
-          r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)"),
+          r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
+          r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding)\s+(?:out\s+)?"
+          r"(?:off\s+the\s+(?:curb|sidewalk)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
+          r"out\s+(?:from\s+(?:between|behind)|in\s+front)|across\s+(?:the\s+)?(?:street|road|roadway|lanes?|"
+          r"intersection|crosswalk))"),
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:to|speed))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"

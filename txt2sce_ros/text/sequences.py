@@ -135,8 +135,11 @@ def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:
     for code, rx in _MOD_ACTS:
         if rx.search(first.mods) and not any(a.code == code for a in pacts[:1]):
             return [Act(first.sent, first.start, code, e.idx, first.mods)] + pacts
-    if not pacts and e.category == "pedestrian" and fre.search(r"\bcross", context(d, e), re.I):
-        return [Act(first.sent, first.start, "m", e.idx, "cross")]
+    if e.category == "pedestrian" and not any(a.code in "mkhS" for a in pacts) and \
+            fre.search(r"\bcross|\bjaywalk", context(d, e), re.I):
+        # A pedestrian crossing, or in a crosswalk, crosses the AV's path: that is its manoeuvre, whatever verb
+        # ("walking", "traveling") the text moved it with.
+        return [Act(first.sent, first.start, "m", e.idx, "cross")] + [a for a in pacts if a.code not in "aA"]
     return pacts
 
 
