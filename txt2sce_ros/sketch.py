@@ -304,20 +304,31 @@ def validate_sketch_dict(d: Any) -> list[str]:
 
 
 def iter_jsonl(path: str | Path) -> Iterator[tuple[int, Any | InputError]]:
-    """(line number, parsed object or InputError) for each non-blank line of a JSON Lines file."""
+    """(line number, parsed object or InputError) for each non-blank line of a JSON Lines file.
+
+    The file is read as bytes and each line decoded on its own, so one row with a byte that is not UTF-8 becomes
+    an InputError for that row and the rows before and after it are still read."""
     p = Path(path)
     try:
-        fh = open(p, encoding="utf-8")
+        fh = open(p, "rb")
     except OSError as exc:
         raise InputError(f"cannot read: {exc.strerror}", source=str(p)) from exc
     with fh:
-        for lineno, line in enumerate(fh, 1):
+        for lineno, raw in enumerate(fh, 1):
+            try:
+                line = raw.decode("utf-8")
+            except UnicodeDecodeError as exc:
+                yield lineno, InputError(f"not UTF-8 (byte 0x{raw[exc.start]:02x} at column {exc.start + 1})",
+                                         source=str(p), line=lineno)
+                continue
             if not line.strip():
                 continue
             try:
                 yield lineno, json.loads(line)
             except json.JSONDecodeError as exc:
                 yield lineno, InputError(f"invalid JSON: {exc.msg}", source=str(p), line=lineno)
+            except RecursionError:
+                yield lineno, InputError("invalid JSON: nested too deeply", source=str(p), line=lineno)
 
 
 def load_sketches(path: str | Path) -> Iterator[Sketch | ErrorRecord]:

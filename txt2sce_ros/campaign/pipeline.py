@@ -69,7 +69,7 @@ def _kind(p: Path) -> str:
     if p.is_dir():
         manifest = p / "manifest.json"
         if manifest.is_file():
-            data = json.loads(manifest.read_text(encoding="utf-8"))
+            data = _read_manifest(manifest)
             return "trees" if "nodes" in data else "seeds"
         if any(c.is_dir() and (c / "manifest.json").is_file() for c in p.iterdir()):
             return "trees"
@@ -79,16 +79,24 @@ def _kind(p: Path) -> str:
     if p.suffix == ".xosc":
         return "scenarios"
     if p.suffix == ".jsonl":
-        with p.open(encoding="utf-8") as fh:
-            for line in fh:
-                if line.strip():
-                    try:
-                        first = json.loads(line)
-                    except ValueError as exc:
-                        raise InputError(f"first line is not JSON: {exc}", source=str(p)) from exc
-                    return "sketches" if str(first.get("schema", "")).startswith("txt2sce.sketch") else "reports"
-        raise InputError("empty JSON Lines file", source=str(p))
+        from ..sketch import iter_jsonl
+
+        # The first row that is a JSON object decides; bad rows are recorded later by the stage that reads them.
+        for _lineno, first in iter_jsonl(p):
+            if isinstance(first, dict):
+                return "sketches" if str(first.get("schema", "")).startswith("txt2sce.sketch") else "reports"
+        raise InputError("no row is a JSON object", source=str(p))
     return "reports"
+
+
+def _read_manifest(path: Path) -> dict[str, Any]:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        raise InputError(f"unreadable manifest: {exc}", source=str(path)) from exc
+    if not isinstance(data, dict):
+        raise InputError("a manifest must be a JSON object", source=str(path))
+    return data
 
 
 def _stamp(path: Path) -> Path:
@@ -138,8 +146,11 @@ def tree_stage(seed_dir: Path, cfg: CampaignConfig) -> Path:
     from ..tree.build import build_trees, tree_config
 
     out = cfg.out / "trees"
-    manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
-    seeds = [seed_dir / e["file"] for e in manifest["built"]]
+    manifest = _read_manifest(seed_dir / "manifest.json")
+    try:
+        seeds = [seed_dir / e["file"] for e in manifest["built"]]
+    except (KeyError, TypeError) as exc:
+        raise InputError("not a seed manifest (no built[].file)", source=str(seed_dir / "manifest.json")) from exc
     if cfg.max_seeds is not None:
         seeds = seeds[: cfg.max_seeds]
     if not _stamp(out).exists():

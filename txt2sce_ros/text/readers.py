@@ -5,13 +5,12 @@ Every input row yields a `ReportInput` or an `ErrorRecord`; a bad row never stop
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import InputError
-from ..sketch import ErrorRecord
+from ..sketch import ErrorRecord, iter_jsonl
 from .pdf import FormFields, read_ol316
 
 
@@ -24,26 +23,20 @@ class ReportInput:
 
 
 def _read_jsonl(p: Path) -> Iterator[ReportInput | ErrorRecord]:
-    with open(p, encoding="utf-8") as fh:
-        for lineno, line in enumerate(fh, 1):
-            if not line.strip():
-                continue
-            src = f"{p}:{lineno}"
-            try:
-                row = json.loads(line)
-            except json.JSONDecodeError as exc:
-                yield ErrorRecord(f"{p.stem}-line{lineno}", str(InputError(f"invalid JSON: {exc.msg}", source=str(p),
-                                                                             line=lineno)), src)
-                continue
-            if not isinstance(row, dict):
-                yield ErrorRecord(f"{p.stem}-line{lineno}", f"{src}: a row must be an object {{id, text}}", src)
-                continue
-            rid = str(row.get("id") or row.get("report_id") or f"{p.stem}-line{lineno}")
-            text = row.get("text")
-            if not isinstance(text, str) or not text.strip():
-                yield ErrorRecord(rid, f"{src}: <text>: missing or empty narrative", src)
-                continue
-            yield ReportInput(report_id=rid, text=text, source=src)
+    for lineno, row in iter_jsonl(p):
+        src = f"{p}:{lineno}"
+        if isinstance(row, InputError):
+            yield ErrorRecord(f"{p.stem}-line{lineno}", str(row), src)
+            continue
+        if not isinstance(row, dict):
+            yield ErrorRecord(f"{p.stem}-line{lineno}", f"{src}: a row must be an object {{id, text}}", src)
+            continue
+        rid = str(row.get("id") or row.get("report_id") or f"{p.stem}-line{lineno}")
+        text = row.get("text")
+        if not isinstance(text, str) or not text.strip():
+            yield ErrorRecord(rid, f"{src}: <text>: missing or empty narrative", src)
+            continue
+        yield ReportInput(report_id=rid, text=text, source=src)
 
 
 def _read_one(p: Path) -> Iterator[ReportInput | ErrorRecord]:
