@@ -6,7 +6,7 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Any, Mapping
 
-from txt2sce_ros.config import load_config, section_from_mapping
+from txt2sce_ros.config import check_sections, load_config, section_from_mapping
 from txt2sce_ros.errors import InputError
 
 COLLISION_RULES = ("contact", "jerk", "either")
@@ -67,6 +67,7 @@ class OracleParams:
         """Read `config/oracle.yaml` (or `path`); keys left out keep the paper's defaults, unknown keys are errors."""
         data = load_config("oracle", path)
         source = path or "config/oracle.yaml"
+        check_sections(data, ("safety", "smoothness", "smartness"), source)
         return cls(
             safety=section_from_mapping(SafetyParams, data.get("safety", {}), source, "safety"),
             smoothness=section_from_mapping(SmoothnessParams, data.get("smoothness", {}), source, "smoothness"),

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from txt2sce_ros.contract import EGO_NAME, ControlCommand, Frame, Goal, RunStatus
+from txt2sce_ros.errors import InputError
 from txt2sce_ros.road import RoadNetwork
 
 from .actions.longitudinal import SpeedAction
@@ -51,12 +52,43 @@ class SimulationConfig:
     scenario_id: str = ""
     locate_free: bool | None = None        # locate free-moving entities every step (None: only if the
                                            # scenario has an OffroadCondition; otherwise on demand)
+    max_steps: int = 200_000               # bound on time_limit / dt: memory and time stay bounded
+    max_entities: int = 256                # bound on entities per scenario (the step is O(n^2) in collisions)
+
+    def __post_init__(self) -> None:
+        # Refuse settings that would hang (dt <= 0), blow up (NaN positions read as a collision) or run for days,
+        # before anything runs: a bad setting is the user's input error, never a verdict against the stack.
+        where = "simulation settings"
+        if not (isinstance(self.dt, (int, float)) and math.isfinite(self.dt) and 0.0 < self.dt <= 1.0):
+            raise InputError(f"dt must be a finite step in (0, 1] s, got {self.dt!r}", source=where, element="dt")
+        for name in ("time_limit", "default_time_limit"):
+            value = getattr(self, name)
+            if value is None and name == "time_limit":
+                continue
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0.0):
+                raise InputError(f"{name.replace('_', ' ')} must be a finite number of seconds > 0, got {value!r}",
+                                 source=where, element=name)
+            if value / self.dt > self.max_steps:
+                raise InputError(f"{name.replace('_', ' ')} {value:g} s at dt {self.dt:g} s is "
+                                 f"{value / self.dt:.3g} steps, more than the limit of {self.max_steps} "
+                                 f"(config/player.yaml simulation.max_steps)", source=where, element=name)
+        if self.ego_mode not in ("planner", "storyboard"):
+            raise InputError(f"ego mode must be 'planner' or 'storyboard', got {self.ego_mode!r}", source=where,
+                             element="ego_mode")
 
     @classmethod
     def from_config(cls, **overrides: object) -> "SimulationConfig":
-        from txt2sce_ros.config import load_config
+        from dataclasses import fields
 
-        cfg = dict(load_config("player").get("simulation", {}))
+        from txt2sce_ros.config import load_config
+        from txt2sce_ros.paths import config_dir
+
+        cfg = dict(load_config("player").get("simulation", {}) or {})
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(cfg) - known)
+        if unknown:
+            raise InputError(f"unknown key {unknown[0]!r} (known: {', '.join(sorted(known))})",
+                             source=str(config_dir() / "player.yaml"), element=f"simulation.{unknown[0]}")
         cfg.update({k: v for k, v in overrides.items() if v is not None})
         return cls(**cfg)  # type: ignore[arg-type]
 
@@ -90,8 +122,10 @@ class Simulation:
     def __init__(self, scenario: Scenario, config: SimulationConfig | None = None) -> None:
         self.scenario = scenario
         self.config = config or SimulationConfig()
-        if self.config.ego_mode not in ("planner", "storyboard"):
-            raise ValueError("ego_mode must be 'planner' or 'storyboard'")
+        if len(scenario.entity_names) > self.config.max_entities:
+            raise InputError(f"{len(scenario.entity_names)} entities, more than the limit of "
+                             f"{self.config.max_entities} (config/player.yaml simulation.max_entities)",
+                             source=scenario.source, element="Entities")
         self.network: RoadNetwork = scenario.network
         self.ego_name = _pick_ego(scenario.entity_names, self.config.ego_name)
         self.goal: Goal | None = None

@@ -10,6 +10,7 @@ from __future__ import annotations
 from lxml import etree
 
 from txt2sce_ros.errors import InputError
+from txt2sce_ros.xmlsafe import refuse_doctype
 
 _PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_comments=True)
 
@@ -17,6 +18,7 @@ _PARSER = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=Fal
 def friction_from_xosc(xosc: str | bytes, *, source: str = "<scenario>") -> float | None:
     """The first `RoadCondition/@frictionScaleFactor` in the scenario (its Init environment), or None."""
     data = xosc.encode("utf-8") if isinstance(xosc, str) else xosc
+    refuse_doctype(data, source)
     try:
         root = etree.fromstring(data, _PARSER)
     except etree.XMLSyntaxError as exc:

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from txt2sce_ros.config import load_config, section_from_mapping
+from txt2sce_ros.config import check_sections, load_config, section_from_mapping
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.paths import config_dir
 
@@ -107,11 +107,7 @@ class PlannerParams:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, source: str = "<dict>") -> "PlannerParams":
-        sections = {f.name: f for f in fields(cls)}
-        for key in data:
-            if key not in sections:
-                raise InputError(f"unknown section (known: {', '.join(sorted(sections))})", source=source,
-                                 element=key)
+        check_sections(data, (f.name for f in fields(cls)), source)
         kinds = {"longitudinal": LongitudinalParams, "lateral": LateralParams, "comfort": ComfortParams,
                  "behaviour": BehaviourParams, "perception": PerceptionParams, "faults": FaultParams}
         return cls(**{name: section_from_mapping(kind, data.get(name), source, name) for name, kind in kinds.items()})

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import math
+from collections.abc import Iterable, Mapping
 from dataclasses import fields
 from functools import lru_cache
 from pathlib import Path
@@ -36,6 +37,24 @@ def load_config(name: str, path: str | Path | None = None) -> dict[str, Any]:
     return _load(str(target))
 
 
+def check_sections(data: Mapping[str, Any], known: Iterable[str], source: str) -> None:
+    """A misspelled section would silently leave every key in it at its default: refuse unknown sections."""
+    names = sorted(known)
+    for key in data:
+        if key not in names:
+            raise InputError(f"unknown section (known: {', '.join(names)})", source=source, element=str(key))
+
+
+def _checked_number(value: int | float, default: int | float, source: str, element: str) -> int | float:
+    """Numbers must be finite, and a parameter whose default is not negative (a threshold, a duration, a distance)
+    cannot be made negative: a NaN or negative threshold silently turns an oracle or a planner rule off."""
+    if not math.isfinite(value):
+        raise InputError(f"must be a finite number, got {value!r}", source=source, element=element)
+    if default >= 0 and value < 0:
+        raise InputError(f"must be >= 0, got {value!r}", source=source, element=element)
+    return value
+
+
 def section_from_mapping(cls: type[_T], values: Mapping[str, Any] | None, source: str, name: str) -> _T:
     """One frozen parameter dataclass from one YAML section: keys left out keep their defaults, an unknown key or
     a value of the wrong kind is an InputError naming the file and `section.key`. Values are coerced to the type
@@ -58,7 +77,7 @@ def section_from_mapping(cls: type[_T], values: Mapping[str, Any] | None, source
             elif isinstance(default, tuple):
                 kwargs[key] = tuple(value)
             elif isinstance(default, (int, float)):
-                kwargs[key] = type(default)(value)
+                kwargs[key] = _checked_number(type(default)(value), default, source, f"{name}.{key}")
             else:
                 kwargs[key] = value
         except (TypeError, ValueError) as exc:

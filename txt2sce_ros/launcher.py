@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .lifeline import preexec
 from .ros_env import pick_domain_id, ros_environment
 
 
@@ -92,26 +93,53 @@ def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
     return cmds
 
 
-def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) -> dict[str, int]:
+class GraphCodes(dict):
+    """Each process's exit code, plus what ended the graph: `early` the nodes that exited before the generator
+    was done (name -> exit code), `timed_out` whether the generator outlived the timeout."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.early: dict[str, int] = {}
+        self.timed_out = False
+
+
+def describe_exit(code: int) -> str:
+    """'exit status 3' or 'killed by SIGKILL'."""
+    if code < 0:
+        try:
+            return f"killed by {signal.Signals(-code).name}"
+        except ValueError:
+            return f"killed by signal {-code}"
+    return f"exit status {code}"
+
+
+def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) -> GraphCodes:
     """Run the graph until the generator exits (or `timeout`), stop the rest, return each process's exit code."""
     log_dir = Path(cfg.log_dir or tempfile.mkdtemp(prefix="txt2sce_ros_log_"))
     domain = cfg.domain_id if cfg.domain_id is not None else pick_domain_id(f"{log_dir}:{os.getpid()}")
     env = ros_environment(domain_id=domain, log_dir=log_dir)
     procs: dict[str, subprocess.Popen[bytes]] = {}
-    codes: dict[str, int] = {}
+    codes = GraphCodes()
     try:
         for name, cmd in graph_commands(cfg).items():
             out = open(log_dir / f"{name}.log", "wb")
+            # Own session (so a stop reaches the node's whole group) but tied to this process: if it dies, so
+            # does the node.
             procs[name] = subprocess.Popen(cmd, env=env, stdout=out, stderr=subprocess.STDOUT,
-                                           start_new_session=True)
+                                           start_new_session=True, preexec_fn=preexec())
             if not quiet:
                 print(f"[launch] {name}: pid {procs[name].pid}, log {log_dir / (name + '.log')}", file=sys.stderr)
         deadline = time.monotonic() + timeout
         gen = procs["generator"]
-        while gen.poll() is None and time.monotonic() < deadline:
+        while gen.poll() is None:
+            if time.monotonic() >= deadline:
+                codes.timed_out = True
+                break
             dead = [n for n, p in procs.items() if n != "generator" and p.poll() is not None]
             if dead:
-                print(f"[launch] {', '.join(dead)} exited early; stopping the graph", file=sys.stderr)
+                codes.early = {n: int(procs[n].returncode) for n in dead}
+                if not quiet:
+                    print(f"[launch] {', '.join(dead)} exited early; stopping the graph", file=sys.stderr)
                 break
             time.sleep(0.1)
     finally:

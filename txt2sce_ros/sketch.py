@@ -38,6 +38,10 @@ ObstacleCategory = Literal["parked_vehicle", "door", "debris", "cone", "barrier"
 ObstaclePosition = Literal["R4", "R5", "R6", "R7"]
 ObstacleLane = Literal["same", "left", "right", "shoulder"]
 CollisionType = Literal["rear_end", "side_swipe", "head_on", "broadside", "hit_object", "pedestrian", "other", "none"]
+#: Parties (NPCs, and obstacles, each) per sketch: no report names more than a handful; the bound keeps every
+#: scenario grown from a sketch small (the player bounds entities per scenario too, config/player.yaml).
+MAX_PARTIES = 32
+
 MissingItem = Literal["npcs", "position", "actions", "road"]
 
 LAYOUTS: tuple[str, ...] = get_args(Layout)
@@ -213,6 +217,12 @@ class Sketch:
         """Build a sketch from its JSON form; raises InputError naming the report id and the first bad field."""
         rid = d.get("report_id") if isinstance(d, dict) else None
         where = source or (str(rid) if rid else None)
+        if isinstance(d, dict):
+            # Bound before validating: every party becomes an entity in every scenario grown from the sketch.
+            for key in ("npcs", "obstacles"):
+                if isinstance(d.get(key), list) and len(d[key]) > MAX_PARTIES:
+                    raise InputError(f"{len(d[key])} {key}: more parties than the limit of {MAX_PARTIES} per sketch",
+                                     source=where or "sketch", element=key)
         problems = validate_sketch_dict(d)
         if problems:
             path, _, msg = problems[0].partition(": ")

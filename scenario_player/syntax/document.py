@@ -14,6 +14,7 @@ from pathlib import Path
 from lxml import etree
 
 from txt2sce_ros.errors import InputError
+from txt2sce_ros.xmlsafe import refuse_doctype
 
 from .params import ParameterScope
 
@@ -24,6 +25,7 @@ def parse_xml(data: str | bytes, source: str) -> etree._Element:
     """Parse XML text safely; a syntax error becomes an InputError naming the file and line."""
     parser = etree.XMLParser(**_PARSER_KW)
     raw = data.encode("utf-8") if isinstance(data, str) else data
+    refuse_doctype(raw, source)
     try:
         root = etree.fromstring(raw, parser)
     except etree.XMLSyntaxError as exc:

@@ -124,6 +124,9 @@ def _classify(case: Case, code: int, stdout: str, stderr: str, timed_out: bool, 
     if "Traceback (most recent call last)" in stderr + stdout:
         last = [ln for ln in stderr.splitlines() if ln.strip()][-1:] or ["?"]
         return "crash", f"traceback: {last[0][:160]}"
+    internal = [ln for ln in stderr.splitlines() if "internal error" in ln]
+    if internal:
+        return "crash", internal[0][:200]
     if code < 0:
         return "crash", f"killed by signal {-code}"
     if code not in case.exit:

@@ -12,7 +12,7 @@ def test_seed_cli_writes_seeds_maps_and_manifest(tmp_path, gold, capsys) -> None
     picked = [gold["dmvca-apple-20211111-r241"], next(s for s in gold.values() if s.missing)]
     src.write_text("".join(s.to_json() + "\n" for s in picked))
     out = tmp_path / "out"
-    assert main(["seed", str(src), "--out", str(out), "--qc"]) == 0
+    assert main(["seed", str(src), "--out", str(out), "--qc"]) == 1     # one sketch refused (recorded)
     text = capsys.readouterr().out
     assert "1 seed(s) written" in text and "1 sketch(es) refused" in text and "1/1 clean" in text
     manifest = json.loads((out / "manifest.json").read_text())

@@ -72,7 +72,7 @@ def test_bundled_demo_reports_are_real_dev_rows_with_complete_gold() -> None:
 
 def test_extract_prints_the_reason_of_a_missing_input(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     missing = tmp_path / "no_such_report.txt"
-    assert main(["extract", str(missing), "--out", str(tmp_path / "o.jsonl")]) == 1
+    assert main(["extract", str(missing), "--out", str(tmp_path / "o.jsonl")]) == 2   # nothing usable (README)
     err = capsys.readouterr().err
     # the reason is on the console, not only in the output file
     assert "no_such_report" in err and "file not found" in err and "1 errors" in err

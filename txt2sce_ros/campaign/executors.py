@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import multiprocessing as mp
 import os
+import signal
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from typing import Any, Callable, Hashable, Iterable, Iterator, Protocol, TypeVar
 
 from ..errors import InputError
+from ..lifeline import die_with_parent
 
 T = TypeVar("T")
 R = TypeVar("R")
@@ -62,7 +64,9 @@ def _pool(fn: Callable[[T], R], tasks: Iterable[T], workers: int) -> Iterator[R]
     # fork: the cores import no rclpy and hold no threads, so children start in milliseconds.
     ctx = mp.get_context("fork")
     limit = workers * IN_FLIGHT_PER_WORKER
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+    # Workers die with the campaign process, however it dies: no orphan keeps running (or holding a DDS domain).
+    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx, initializer=die_with_parent,
+                             initargs=(signal.SIGTERM, os.getpid())) as pool:
         pending: set[Future[R]] = set()
         it = iter(tasks)
         exhausted = False

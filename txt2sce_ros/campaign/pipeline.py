@@ -41,6 +41,7 @@ class CampaignConfig:
     max_nodes: int | None = None          # node budget per tree; None = config/mutation.yaml
     progress: bool = True
     report: bool = True
+    retry_errors: bool = False            # run again the runs stored with verdict error
 
 
 @dataclass
@@ -87,6 +88,22 @@ def _kind(p: Path) -> str:
                 return "sketches" if str(first.get("schema", "")).startswith("txt2sce.sketch") else "reports"
         raise InputError("no row is a JSON object", source=str(p))
     return "reports"
+
+
+def _check_settings(cfg: CampaignConfig) -> None:
+    """Every run reads the player, planner and oracle settings: a bad one is the user's error, said once now,
+    not an *error* verdict on every run (nor, worse, a *fail* recorded against the stack)."""
+    from oracle_monitor import OracleParams
+    from scenario_player import SimulationConfig
+    from standin_planner import PlannerParams
+
+    SimulationConfig.from_config(time_limit=cfg.time_limit)
+    PlannerParams.from_config()
+    OracleParams.from_config()
+    if cfg.workers is not None and cfg.workers < 1:
+        raise InputError(f"workers must be >= 1, got {cfg.workers}", element="--workers")
+    if cfg.prune is not None and not 0.0 < cfg.prune <= 1.0:
+        raise InputError(f"prune share must be in (0, 1], got {cfg.prune}", element="--prune")
 
 
 def _read_manifest(path: Path) -> dict[str, Any]:
@@ -168,6 +185,7 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
 
     # An unknown fault name is the user's mistake: say so now, not as an 'error' verdict on every run.
     Faults.from_names(cfg.faults)
+    _check_settings(cfg)
     if not inputs:
         raise InputError("no inputs given")
     stage = detect_stage(inputs)
@@ -192,6 +210,8 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
               + (f" ({dup} byte-identical to another one, judged once: {len(tasks) - dup} runs)" if dup else "")
               + f", executor {cfg.executor}" + (f", faults {', '.join(cfg.faults)}" if cfg.faults else ""))
     with ResultStore(cfg.out / "results.sqlite") as store:
+        if cfg.retry_errors:
+            _log(cfg, f"retrying {store.drop_errors()} stored error run(s)")
         store.set_meta("faults", list(cfg.faults))
         # what the report says was tested (settings of the run that wrote it; the run key covers the rest)
         store.set_meta("settings", {

@@ -6,6 +6,8 @@ verdict stored is the *offline judge's* verdict of that bag: the same `JudgeSess
 the campaign stores can be re-derived from the recording.
 
 A verdict must be the one the in-process path gives (issue 9), so a graph fault never yields a verdict:
+- a node process (player, planner, monitor) exited during the run, or the graph outlived its wall-clock bound:
+  the error names the process and its exit status or signal;
 - the graph recorded no bag, or not exactly one run (another graph on the same domain);
 - the recording lacks frames of the run: a run has one frame per dt from t = 0 to its end, each once, and a
   monitor that matched late misses the first ones (a verdict on part of a run can lose or gain categories);
@@ -96,6 +98,8 @@ def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | 
     details = {**record.details, "ros_attempts": attempt}
     if faults_seen:
         details["ros_graph_faults"] = faults_seen
+        if len(faults_seen) == attempt:
+            record = replace(record, error=f"{record.error} (graph fault on every one of {attempt} attempts)")
     return replace(record, details=details, wall_time=time.perf_counter() - t0)
 
 
@@ -105,7 +109,7 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
     from oracle_monitor.judge import judge_bag
 
     from ..errors import Txt2SceError
-    from ..launcher import GraphConfig, run_graph
+    from ..launcher import GraphConfig, describe_exit, run_graph
 
     work = Path(tempfile.mkdtemp(prefix="txt2sce_ros_run_"))
     try:
@@ -119,6 +123,15 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                               run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain,
                               time_limit=time_limit, seed=seed)
             codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
+        # A node that died under the run (crashed, killed, out of memory) is a graph fault, whatever the bag says:
+        # name it and how it ended, so the stored error says which process to look at.
+        if codes.early:
+            why = "; ".join(f"{name} process {describe_exit(code)} during the run"
+                            for name, code in sorted(codes.early.items()))
+            return RunRecord(sid, Verdict.ERROR, error=why), why
+        if codes.timed_out:
+            why = f"the graph did not finish within {run_timeout + 60.0:g} s (stuck process; exit codes {dict(codes)})"
+            return RunRecord(sid, Verdict.ERROR, error=why), why
         bags = sorted(p for p in bag_dir.rglob("metadata.yaml")) if bag_dir.exists() else []
         if not bags:
             why = f"the graph recorded no bag (exit codes {codes})"

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable, Iterator
 
+from ..errors import InputError
+
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS runs (
     run_key     TEXT PRIMARY KEY,
@@ -54,10 +56,18 @@ class ResultStore:
     def __init__(self, path: str | Path) -> None:
         self.path = Path(path)
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        self.db = sqlite3.connect(self.path)
-        self.db.execute("PRAGMA journal_mode=WAL")
-        self.db.executescript(SCHEMA)
-        self.db.commit()
+        try:
+            self.db = sqlite3.connect(self.path)
+            self.db.execute("PRAGMA journal_mode=WAL")
+            self.db.executescript(SCHEMA)
+            self.db.commit()
+            (check,) = self.db.execute("PRAGMA quick_check").fetchone()
+            if check != "ok":
+                raise sqlite3.DatabaseError(check)
+        except sqlite3.DatabaseError as exc:
+            # Never overwrite it: its finished runs may still be recoverable with sqlite3's .recover.
+            raise InputError(f"not a readable results database ({exc}); move it away to start afresh, or choose "
+                             f"another --out", source=str(self.path)) from exc
 
     def close(self) -> None:
         self.db.close()
@@ -92,6 +102,12 @@ class ResultStore:
     def runs(self) -> Iterator[StoredRun]:
         for row in self.db.execute("SELECT * FROM runs ORDER BY scenario_id, run_key"):
             yield StoredRun(row[0], row[1], row[2], row[3], row[4], tuple(json.loads(row[5])), json.loads(row[6]))
+
+    def drop_errors(self) -> int:
+        """Forget the runs stored with verdict *error* (a harness or graph fault), so that they run again."""
+        cur = self.db.execute("DELETE FROM runs WHERE verdict = 'error'")
+        self.db.commit()
+        return cur.rowcount
 
     def count(self) -> int:
         return int(self.db.execute("SELECT COUNT(*) FROM runs").fetchone()[0])

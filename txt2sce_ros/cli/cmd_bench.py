@@ -10,6 +10,8 @@ import argparse
 import importlib
 import pkgutil
 
+from .argtypes import count
+
 HELP = "run a benchmark (maps, extract, player, tree, judge, campaign) and print its figures"
 
 
@@ -28,8 +30,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     benches = _benches()
     parser.add_argument("name", choices=sorted(benches), help="; ".join(f"{k}: {v}" for k, v in benches.items()))
     parser.add_argument("--quick", action="store_true", help="smaller sizes, for a smoke run")
-    parser.add_argument("--seed", type=int, default=0, help="RNG seed for generated inputs (default 0)")
-    parser.add_argument("--scenarios", type=int, default=None,
+    parser.add_argument("--seed", type=count(ge=0), default=0, help="RNG seed for generated inputs (default 0)")
+    parser.add_argument("--scenarios", type=count(), default=None,
                         help="campaign: how many scenarios to run (default 4,000; --quick: 300)")
 
 

@@ -6,6 +6,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from .argtypes import count, TIME_LIMIT
+
 HELP = "fault-injection study: per planner fault mode, found? and the rank of the right trigger (ground truth)"
 
 
@@ -15,26 +17,26 @@ def register(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("inputs", nargs="+", help="reports (.jsonl/.txt/.pdf), a sketch JSONL or a seed directory")
     parser.add_argument("--out", required=True, help="study directory (rerun the same command to resume)")
-    parser.add_argument("--seeds", type=int, default=10, help="seeds grown into trees, picked to cover the most "
+    parser.add_argument("--seeds", type=count(), default=10, help="seeds grown into trees, picked to cover the most "
                                                               "scenario elements (default 10)")
-    parser.add_argument("--draws", type=int, default=0,
+    parser.add_argument("--draws", type=count(ge=0), default=0,
                         help="draw the seeds at random this many times (each draw --seeds seeds) instead of "
                              "picking covering seeds; prints each draw's result and the min and median over draws")
-    parser.add_argument("--draw-seed", type=int, default=0, help="seed of the random draws (default 0)")
-    parser.add_argument("--nodes", type=int, default=150,
+    parser.add_argument("--draw-seed", type=count(ge=0), default=0, help="seed of the random draws (default 0)")
+    parser.add_argument("--nodes", type=count(), default=150,
                         help="node budget per tree (default 150: a yellow light needs its dilemma-zone variants "
                              "under several parents; with 40 the study misses red_light_misread)")
-    parser.add_argument("--mutations", type=int, default=1,
+    parser.add_argument("--mutations", type=count(ge=0), default=1,
                         help="mutations per non-enumerated block (default 1; weather, signal and NPC category "
                              "are enumerated)")
-    parser.add_argument("--time-limit", type=float, default=25.0, help="simulated seconds per run (default 25)")
+    parser.add_argument("--time-limit", type=TIME_LIMIT, default=25.0, help="simulated seconds per run (default 25)")
     parser.add_argument("--fault", action="append", default=[], choices=[f.name for f in FAULTS],
                         help="study only these faults (repeatable; default all)")
     parser.add_argument("--executor", choices=EXECUTORS, default="pool")
     parser.add_argument("--ray-address", default=None, metavar="HOST:PORT",
                         help="Ray cluster for --executor ray (default: as `txt2sce campaign`)")
-    parser.add_argument("--workers", type=int, default=None)
-    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--workers", type=count(), default=None)
+    parser.add_argument("--seed", type=count(ge=0), default=0)
     parser.add_argument("--no-progress", action="store_true")
 
 

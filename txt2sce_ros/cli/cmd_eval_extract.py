@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import argparse
 
+from .argtypes import count
+
 HELP = "measure extraction against gold sketches (paper's Table IV) and/or company form labels"
 
 
@@ -14,7 +16,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     src.add_argument("--pred", help="predicted sketches (JSONL written by `txt2sce extract`)")
     src.add_argument("--input", help="reports to extract now (JSONL {id, text}, .txt, dir, PDF)")
     parser.add_argument("--form-labels", help="company-filed labels (dev_form_labels.jsonl): agreement, separately")
-    parser.add_argument("--worst", type=int, default=4, help="slots in the confusion listing (default 4)")
+    parser.add_argument("--worst", type=count(ge=0), default=4, help="slots in the confusion listing (default 4)")
     parser.add_argument("--check-targets", action="store_true",
                         help="exit 1 when a slot with a target (issue 3) falls below it")
 

@@ -6,6 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from .argtypes import POSITIVE
+
 #: Error reasons printed on the console; the rest are counted (all of them are in the output file).
 MAX_ERRORS_SHOWN = 10
 
@@ -21,7 +23,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--base-url", default=None, help="OpenAI-compatible server (default DeepSeek; env "
                                                           "TXT2SCE_LLM_BASE_URL)")
     parser.add_argument("--model", default=None, help="model name (default deepseek-chat; env TXT2SCE_LLM_MODEL)")
-    parser.add_argument("--timeout", type=float, default=None, help="LLM request timeout, s")
+    parser.add_argument("--timeout", type=POSITIVE, default=None, help="LLM request timeout, s")
     parser.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
 
 
@@ -72,10 +74,11 @@ def run(args: argparse.Namespace) -> int:
             print(f"OL 316 form readings beside the sketches: {_forms_path(out)}", file=sys.stderr)
         if failed_pdfs:
             print(f"no narrative read from {len(failed_pdfs)} PDF(s): {', '.join(failed_pdfs)}", file=sys.stderr)
-    # A batch carries on past bad rows (each has its error record), but a batch where nothing could be read is
-    # a failure the caller should see in the exit status; so is a PDF whose narrative could not be read (its
-    # sketch would be empty).
-    return 1 if (n and errors == n) or failed_pdfs else 0
+    # A batch carries on past bad rows (each has its error record): 1 when some failed (a PDF whose narrative
+    # could not be read counts: its sketch would be empty), 2 when nothing at all was usable.
+    if errors and errors == n:
+        return 2
+    return 1 if errors or failed_pdfs else 0
 
 
 def _forms_path(out: Path) -> Path:

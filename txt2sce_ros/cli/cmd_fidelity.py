@@ -6,26 +6,39 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
+
+from .argtypes import count, STEP
 
 HELP = "fidelity of generated seeds: does the reported party meet the AV (contact or TTC < 1.5 s) in the player?"
 
 
 def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("sketches", type=Path, help="JSONL of txt2sce.sketch/1 records")
-    parser.add_argument("--seed", type=int, default=0, help="RNG seed for the map pick (default 0)")
+    parser.add_argument("--seed", type=count(ge=0), default=0, help="RNG seed for the map pick (default 0)")
     parser.add_argument("--maps", type=Path, default=None, help="directory of .xodr maps (default: bundled)")
-    parser.add_argument("--dt", type=float, default=0.05, help="player step, s (default 0.05)")
+    parser.add_argument("--dt", type=STEP, default=0.05, help="player step, s (default 0.05)")
     parser.add_argument("--json", type=Path, default=None, help="also write every result as JSON lines here")
 
 
 def run(args: argparse.Namespace) -> int:
     from dataclasses import asdict
 
-    from ..sketch import load_sketches
+    from ..sketch import ErrorRecord, load_sketches
     from ..seed.fidelity import fidelity_batch
 
-    results = fidelity_batch(load_sketches(args.sketches), seed=args.seed, maps=args.maps, dt=args.dt)
+    unreadable: list[ErrorRecord] = []
+
+    def items():
+        for item in load_sketches(args.sketches):
+            if isinstance(item, ErrorRecord):
+                unreadable.append(item)     # recorded and reported below; the batch carries on
+            yield item
+
+    results = fidelity_batch(items(), seed=args.seed, maps=args.maps, dt=args.dt)
+    for bad in unreadable:
+        print(f"txt2sce fidelity: error: {bad.report_id}: {bad.error}", file=sys.stderr)
     ok = [r for r in results if r.faithful]
     for r in results:
         if not r.faithful:
@@ -40,4 +53,4 @@ def run(args: argparse.Namespace) -> int:
             for r in results:
                 fh.write(json.dumps({k: (float(v) if hasattr(v, "item") else v) for k, v in asdict(r).items()})
                          + "\n")
-    return 0
+    return 1 if unreadable else 0

@@ -10,6 +10,8 @@ from pathlib import Path
 from ..errors import InputError
 from ..paths import BUNDLED_MAPS
 
+from .argtypes import count
+
 HELP = "map database: build-maps (regenerate bundled .xodr), show FILE (summary), query FILE (road matching)"
 
 _LAYOUTS = ["straight", "curve", "junction4", "junction3", "roundabout", "parking", "junction"]
@@ -35,7 +37,7 @@ def register(parser: argparse.ArgumentParser) -> None:
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     q.add_argument("file", help="an .xodr path, or the name of a bundled map")
     q.add_argument("--layout", choices=_LAYOUTS, default=None)
-    q.add_argument("--lanes", type=int, default=None, help="at least this many driving lanes in the direction")
+    q.add_argument("--lanes", type=count(), default=None, help="at least this many driving lanes in the direction")
     q.add_argument("--control", choices=["signal", "stop_sign", "none"], default=None, help="junction approaches")
     way = q.add_mutually_exclusive_group()
     way.add_argument("--one-way", dest="one_way", action="store_const", const=True, default=None)

@@ -19,6 +19,8 @@ import numpy as np
 
 from ..errors import InputError, Txt2SceError
 
+from .argtypes import number, COORD, POSITIVE
+
 HELP = "inspect OpenDRIVE maps (info, locate) and check the road model against esmini (check)"
 
 
@@ -32,16 +34,16 @@ def register(parser: argparse.ArgumentParser) -> None:
     chk.add_argument("dir", type=Path, help="folder of OpenDRIVE maps")
     chk.add_argument("--reference", type=Path, required=True, help="folder of esmini reference CSVs")
     chk.add_argument("--scenarios", type=Path, default=None, help="folder of the scenarios (.xosc) of the CSVs")
-    chk.add_argument("--tol", type=float, default=0.05, help="tolerance in metres (default 0.05)")
-    chk.add_argument("--min-share", type=float, default=0.99,
+    chk.add_argument("--tol", type=POSITIVE, default=0.05, help="tolerance in metres (default 0.05)")
+    chk.add_argument("--min-share", type=number(ge=0.0, le=1.0), default=0.99,
                      help="exit status 1 if a file's share is below this (default 0.99)")
     info = sub.add_parser("info", help="summarise one OpenDRIVE map")
     info.add_argument("file", type=Path)
     loc = sub.add_parser("locate", help="the lane under a world point")
     loc.add_argument("file", type=Path)
-    loc.add_argument("x", type=float)
-    loc.add_argument("y", type=float)
-    loc.add_argument("--heading", type=float, default=None, help="prefer lanes driving this way (radians)")
+    loc.add_argument("x", type=COORD)
+    loc.add_argument("y", type=COORD)
+    loc.add_argument("--heading", type=COORD, default=None, help="prefer lanes driving this way (radians)")
     loc.add_argument("--all-types", action="store_true", help="consider every lane type, not only driving")
 
 
@@ -84,6 +86,10 @@ def _check(args: argparse.Namespace) -> int:
     low = 0
     tot = Counter()
     for r in results:
+        if r.error:
+            low += 1
+            print(f"{r.name:34s} FAIL  {r.error}")
+            continue
         worst = max(r.road_max_err, r.lane_max_err)
         print(f"{r.name:34s} {r.map_name:30s} {r.rows:6d} {r.skipped:5d} {100 * r.road_share:10.2f}% "
               f"{100 * r.lane_share:12.2f}% {worst:10.4f} {100 * r.inverse_share:7.2f}%")

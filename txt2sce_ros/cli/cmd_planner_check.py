@@ -24,6 +24,8 @@ from ..errors import Txt2SceError
 from ..paths import REPO_ROOT
 from ..xosc.schema import safe_parser
 
+from .argtypes import count, TIME_LIMIT
+
 HELP = "run the stand-in planner on benign scenarios; print runs, goals reached and oracle violations"
 
 #: The benign check scenarios written by examples/scenarios/build.py.
@@ -154,8 +156,8 @@ def register(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("--faults", default="", help="comma-separated fault modes to switch on (default: none): "
                                                      f"{', '.join(Faults.names())}")
-    parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
-    parser.add_argument("--time-limit", type=float, default=None, help="override the runs' time limit (s)")
+    parser.add_argument("--seed", type=count(ge=0), default=0, help="simulation seed (default 0)")
+    parser.add_argument("--time-limit", type=TIME_LIMIT, default=None, help="override the runs' time limit (s)")
     parser.add_argument("--fault-matrix", action="store_true",
                         help="run each fault_<mode>.xosc of the shipped set with its fault off and on; print both")
     parser.add_argument("--strip-npcs", action="store_true",

@@ -15,6 +15,8 @@ import sys
 import time
 from pathlib import Path
 
+from .argtypes import count, STEP, TIME_LIMIT
+
 HELP = "run one OpenSCENARIO file in the batch player and print its result (optionally write a CSV trajectory)"
 
 #: --ego-mode values -> what drives the ego (the player's own mode names are 'planner' and 'storyboard').
@@ -34,9 +36,10 @@ def register(parser: argparse.ArgumentParser) -> None:
                         help="who drives the ego: keep-speed (default), storyboard, or standin (see below)")
     parser.add_argument("--fault", action="append", default=[], metavar="NAME",
                         help=f"standin: switch on a planner fault (repeatable): {', '.join(Faults.names())}")
-    parser.add_argument("--time-limit", type=float, help="s of simulation time (default: config/player.yaml)")
-    parser.add_argument("--dt", type=float, default=0.05, help="step in s (default 0.05)")
-    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--time-limit", type=TIME_LIMIT, help="s of simulation time (default: config/player.yaml)")
+    parser.add_argument("--dt", type=STEP, default=None,
+                        help="step in s, in (0, 1] (default: config/player.yaml, 0.05)")
+    parser.add_argument("--seed", type=count(ge=0), default=0)
     parser.add_argument("--map", type=Path, help="OpenDRIVE file to use instead of RoadNetwork/LogicFile")
 
 

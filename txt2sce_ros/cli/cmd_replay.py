@@ -11,15 +11,17 @@ import argparse
 import sys
 import time
 
+from .argtypes import number, POSITIVE
+
 HELP = "re-publish a recorded run on its ROS 2 topics with its original timing (× --rate)"
 
 
 def register(parser: argparse.ArgumentParser) -> None:
     parser.epilog = __doc__
     parser.add_argument("bag", metavar="BAG", help="rosbag2 directory or .mcap file")
-    parser.add_argument("--rate", type=float, default=1.0, help="speed factor (2.0 = twice as fast; default 1.0)")
+    parser.add_argument("--rate", type=POSITIVE, default=1.0, help="speed factor (2.0 = twice as fast; default 1.0)")
     parser.add_argument("--topics", nargs="+", default=None, help="only these topics (default: all but violations)")
-    parser.add_argument("--discovery-timeout", type=float, default=3.0,
+    parser.add_argument("--discovery-timeout", type=number(ge=0.0), default=3.0,
                         help="wait up to this many seconds for a subscriber before starting (default 3)")
 
 

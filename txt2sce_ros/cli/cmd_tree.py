@@ -14,6 +14,8 @@ from pathlib import Path
 
 from ..errors import InputError
 
+from .argtypes import count, SHARE
+
 HELP = "build scenario trees from seeds (δ, Table III mutations, α, pruning) — or `tree show DIR` to draw one"
 
 
@@ -22,20 +24,20 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("inputs", nargs="+", metavar="SEEDS",
                         help="seed .xosc files or directories of them; or `show TREE_DIR`")
     parser.add_argument("--out", help="output directory: one tree per seed in OUT/<seed name>/")
-    parser.add_argument("--seed", type=int, default=0, help="RNG seed (default 0)")
-    parser.add_argument("--mutations", type=int, default=None, help="M(b) for non-enumerated blocks (default 2)")
-    parser.add_argument("--prune", type=float, default=None, help="share kept per cluster, 1 = no pruning (0.5)")
-    parser.add_argument("--max-nodes", type=int, default=None,
+    parser.add_argument("--seed", type=count(ge=0), default=0, help="RNG seed (default 0)")
+    parser.add_argument("--mutations", type=count(ge=0), default=None, help="M(b) for non-enumerated blocks (default 2)")
+    parser.add_argument("--prune", type=SHARE, default=None, help="share kept per cluster, 1 = no pruning (0.5)")
+    parser.add_argument("--max-nodes", type=count(), default=None,
                         help="node budget per tree, 0 = none (default 2000: later layers share what is left)")
-    parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
+    parser.add_argument("--jobs", type=count(), default=2, help="processes (default 2)")
     parser.add_argument("--config", help="mutation config YAML (default config/mutation.yaml)")
     parser.add_argument("--no-validate", action="store_true", help="skip XSD validation of generated files")
-    parser.add_argument("--check-sample", type=int, default=0, metavar="N",
+    parser.add_argument("--check-sample", type=count(ge=0), default=0, metavar="N",
                         help="after building, run the ASAM quality checker and the scenario player on N random files")
     parser.add_argument("--dry-run", action="store_true",
                         help="only say how many files and MB the trees would take, and where; write nothing")
     parser.add_argument("--png", help="show: PNG path (default TREE_DIR/tree.png)")
-    parser.add_argument("--depth", type=int, default=3, help="show: outline depth (default 3)")
+    parser.add_argument("--depth", type=count(ge=0), default=3, help="show: outline depth (default 3)")
 
 
 def _seed_files(items: list[str]) -> list[Path]:
@@ -135,4 +137,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"  {p}")
         if chk.qc_failed or chk.player_failed:
             return 1
-    return 1 if failed and failed == len(results) else 0
+    # 2: no seed could be grown (unusable input); 1: some failed (each printed), the other trees are written.
+    if failed and failed == len(results):
+        return 2
+    return 1 if failed else 0

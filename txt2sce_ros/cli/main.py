@@ -6,16 +6,23 @@ Each module `txt2sce_ros/cli/cmd_<name>.py` defines:
     def register(parser: argparse.ArgumentParser) -> None   # add the subcommand's arguments
     def run(args: argparse.Namespace) -> int                # do the work, return the exit code
 
-so each stage owns its own command without touching a central file. Errors raised on purpose (`Txt2SceError`)
-print as one line naming the file and element, without a traceback, and exit with status 2.
+so each stage owns its own command without touching a central file.
+
+Exit status, the same for every command: 0 all good; 1 some items (rows, files, bags, runs) failed and were
+recorded, the rest kept; 2 unusable input or arguments. Errors raised on purpose (`Txt2SceError`) print as one line
+naming the file and element; a file that cannot be opened or written prints its path and the system's reason.
+Anything else is a bug: it still prints one line (`internal error`), with the traceback only when
+`TXT2SCE_DEBUG=1`.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import pkgutil
 import sys
+import traceback
 from types import ModuleType
 
 from .. import __version__
@@ -69,6 +76,21 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"txt2sce {args.command}: interrupted", file=sys.stderr)
         return 130
+    except OSError as exc:
+        # A path that cannot be opened or written (--out naming a directory, a full disk, no permission).
+        where = exc.filename if exc.filename is not None else ""
+        print(f"txt2sce {args.command}: error: {where}{': ' if where else ''}{exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print(f"txt2sce {args.command}: error: out of memory", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - the last guard: no traceback reaches a user
+        if os.environ.get("TXT2SCE_DEBUG"):
+            traceback.print_exc()
+        text = " ".join(str(exc).split())[:300]
+        print(f"txt2sce {args.command}: internal error: {type(exc).__name__}: {text} "
+              f"(please report it; TXT2SCE_DEBUG=1 shows the traceback)", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

@@ -2,18 +2,18 @@
 
 The key also carries a fingerprint of the code that builds it (this package and the road model), so an entry
 written by an older version is never read. Writes go through a temporary file and `os.replace`, so concurrent
-builders never see half a pickle.
+builders never see half a pickle; entries are signed and verified before they are unpickled
+(`txt2sce_ros.signed_cache`).
 """
 
 from __future__ import annotations
 
 import hashlib
 import os
-import pickle
-import tempfile
 from functools import lru_cache
 from pathlib import Path
 
+from .. import signed_cache
 from ..errors import InputError
 from ..paths import cache_dir
 from ..road import RoadNetwork
@@ -49,15 +49,11 @@ def load_map_database(path: str | os.PathLike[str], *, cache: bool = True) -> Ma
     sha = hashlib.sha256(data).hexdigest()
     target = cache_path(sha)
     if cache and target.is_file():
-        try:
-            with open(target, "rb") as fh:
-                db = pickle.load(fh)
-            if isinstance(db, MapDatabase) and db.sha256 == sha:
-                db.source = str(p)  # the same content may live under another name
-                db.from_cache = True
-                return db
-        except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
-            pass  # a cache from another code version or a broken write: rebuild below
+        db = signed_cache.load(target)   # None: missing, not ours (tag), or from another code version
+        if isinstance(db, MapDatabase) and db.sha256 == sha:
+            db.source = str(p)  # the same content may live under another name
+            db.from_cache = True
+            return db
     net = RoadNetwork.from_string(data, source=str(p))
     db = build_map_database(net, xodr_bytes=data, sha256=sha)
     if cache:
@@ -66,11 +62,4 @@ def load_map_database(path: str | os.PathLike[str], *, cache: bool = True) -> Ma
 
 
 def _store(target: Path, db: MapDatabase) -> None:
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            pickle.dump(db, fh, protocol=pickle.HIGHEST_PROTOCOL)
-        os.replace(tmp, target)
-    except OSError:
-        Path(tmp).unlink(missing_ok=True)  # a read-only cache only costs speed
+    signed_cache.store(target, db)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from lxml import etree
 
 from ..errors import InputError
+from ..xmlsafe import refuse_doctype
 
 #: Mark types that forbid crossing when the map gives no explicit `laneChange`.
 _NO_CROSS = {"solid", "solid solid", "curb", "grass", "edge"}
@@ -40,6 +41,7 @@ MarkTable = dict[tuple[str, int, int], tuple[Mark, ...]]
 
 def read_marks(data: bytes, source: str) -> MarkTable:
     """Every lane's road marks, keyed by road, lane-section index (sorted by s) and lane id."""
+    refuse_doctype(data, source)
     parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, remove_comments=True)
     try:
         root = etree.fromstring(data, parser)

@@ -27,6 +27,7 @@ import numpy as np
 from lxml import etree
 
 from ..errors import InputError
+from ..xmlsafe import refuse_doctype
 from .network import RoadNetwork, load_network
 
 TOLERANCE_M = 0.05
@@ -46,6 +47,7 @@ class FileConformance:
     inverse_ok: int           # (x, y) -> same road with s and t within tolerance
     road_max_err: float
     lane_max_err: float
+    error: str = ""           # the map or reference could not be read: nothing was compared
 
     @property
     def road_share(self) -> float:
@@ -65,6 +67,7 @@ def scenario_map(xosc: Path, xodr_dir: Path) -> Path:
     (falling back to the path relative to the scenario)."""
     parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False, load_dtd=False)
     try:
+        refuse_doctype(xosc.read_bytes(), str(xosc))
         root = etree.parse(str(xosc), parser).getroot()
     except (OSError, etree.XMLSyntaxError) as exc:
         raise InputError(f"cannot read scenario: {exc}", source=str(xosc)) from exc
@@ -154,5 +157,9 @@ def check_reference(xodr_dir: str | Path, reference_dir: str | Path, scenario_di
         xosc = scen_dir / f"{ref.stem}.xosc"
         if not xosc.is_file():
             raise InputError(f"no scenario {xosc.name} for reference {ref.name}", source=str(scen_dir))
-        out.append(check_file(load_network(scenario_map(xosc, xodr_dir)), ref, tol=tol))
+        try:
+            out.append(check_file(load_network(scenario_map(xosc, xodr_dir)), ref, tol=tol))
+        except InputError as exc:
+            # One unreadable map or reference is that file's failure; the other files are still checked.
+            out.append(FileConformance(ref.stem, "", 0, 0, 0, 0, 0, math.inf, math.inf, error=str(exc)))
     return out

@@ -17,11 +17,15 @@ from ..errors import InputError
 from .geometry import Arc, Geometry, Line, ParamPoly3, PlanView, Poly3, Spiral
 from .lanes import Cubic, Lane, LaneLink, LaneSection
 from .model import Connection, Controller, Junction, Road, RoadLink, Signal, SignalValidity
+from ..xmlsafe import refuse_doctype
 
 _PARSER_OPTS = dict(resolve_entities=False, no_network=True, huge_tree=False, load_dtd=False,
                     remove_comments=True, remove_pis=True)
 
 _SPEED_UNITS = {"m/s": 1.0, "km/h": 1 / 3.6, "mph": 0.44704}
+
+#: Longest road, geometry or s coordinate accepted, m (the longest real roads in OpenDRIVE maps are a few km).
+MAX_LENGTH = 100_000.0
 
 
 @dataclass(slots=True)
@@ -63,6 +67,16 @@ class _Ctx:
             raise self.error(el, f"attribute {name}={raw!r} is not finite")
         return value
 
+    def length(self, el: etree._Element, name: str = "length") -> float:
+        """A length in [0, MAX_LENGTH] m: the road model samples every road, so an absurd length is refused here,
+        where `maps check`, `maps info` and the player all load maps, with one message."""
+        value = self.num(el, name)
+        if value < 0:
+            raise self.error(el, f"negative {name} {value}")
+        if value > MAX_LENGTH:
+            raise self.error(el, f"{name} {value:g} m is longer than the limit of {MAX_LENGTH:g} m")
+        return value
+
     def int_(self, el: etree._Element, name: str, default: int | None = None) -> int:
         raw = el.get(name)
         if raw is None or raw.strip() == "":
@@ -99,6 +113,7 @@ def _child(el: etree._Element, name: str) -> etree._Element | None:
 
 def parse_xml(data: bytes, source: str) -> etree._Element:
     """Parse bytes into the <OpenDRIVE> root element, refusing entity declarations."""
+    refuse_doctype(data, source)
     ctx = _Ctx(source)
     parser = etree.XMLParser(**_PARSER_OPTS)
     try:
@@ -169,9 +184,7 @@ def _check_links(ctx: _Ctx, root: etree._Element, roads: dict[str, Road], juncti
 
 def _parse_road(ctx: _Ctx, el: etree._Element) -> Road:
     rid = ctx.text(el, "id")
-    length = ctx.num(el, "length")
-    if length < 0:
-        raise ctx.error(el, f"road {rid}: negative length {length}")
+    length = ctx.length(el)
     pv_el = _child(el, "planView")
     if pv_el is None:
         raise ctx.error(el, f"road {rid}: missing <planView>")
@@ -235,10 +248,8 @@ def _parse_road_link(ctx: _Ctx, el: etree._Element) -> RoadLink:
 
 
 def _parse_geometry(ctx: _Ctx, el: etree._Element) -> Geometry:
-    base = dict(s=ctx.num(el, "s"), x=ctx.num(el, "x"), y=ctx.num(el, "y"), hdg=ctx.num(el, "hdg"),
-                length=ctx.num(el, "length"))
-    if base["length"] < 0:
-        raise ctx.error(el, f"negative geometry length {base['length']}")
+    base = dict(s=ctx.length(el, "s"), x=ctx.num(el, "x"), y=ctx.num(el, "y"), hdg=ctx.num(el, "hdg"),
+                length=ctx.length(el))
     kinds = [c for c in el if _tag(c)]
     if len(kinds) != 1:
         raise ctx.error(el, f"expected exactly one primitive inside <geometry>, found {len(kinds)}")

@@ -201,9 +201,17 @@ def write_seeds(items: Iterable[Sketch | ErrorRecord], out_dir: str | Path, *, s
     out = Path(out_dir)
     (out / MAPS_SUBDIR).mkdir(parents=True, exist_ok=True)
     built, refused = [], []
+    files: dict[str, str] = {}            # seed file name -> report id written there
     for item in items:
         if isinstance(item, ErrorRecord):
             refused.append({"report_id": item.report_id, "error": item.error})
+            continue
+        name = f"{safe_file_name(item.report_id)}.xosc"
+        if name in files:
+            # Never overwrite a seed written in this batch: the second sketch of an id is refused, with the reason.
+            refused.append({"report_id": item.report_id,
+                            "error": f"duplicate report_id (seed {name} already "
+                                     f"written from report {files[name]!r})"})
             continue
         try:
             res = generate_seed(item, seed=seed, maps=maps, map_ref=None)
@@ -215,7 +223,7 @@ def write_seeds(items: Iterable[Sketch | ErrorRecord], out_dir: str | Path, *, s
             shutil.copyfile(res.map_path, local_map)
         # rewrite with the relative reference so the output directory is self-contained
         res = generate_seed(item, seed=seed, maps=maps, map_ref=f"{MAPS_SUBDIR}/{res.map_path.name}")
-        name = f"{safe_file_name(item.report_id)}.xosc"
+        files[name] = item.report_id
         (out / name).write_bytes(res.xosc)
         entry = dict(res.manifest)
         entry["file"] = name

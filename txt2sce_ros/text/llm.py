@@ -15,11 +15,13 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import os
 import re
 import socket
 import time
 import urllib.error
+import urllib.parse
 import urllib.request
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -48,6 +50,24 @@ class LlmConfig:
     max_tokens: int = 800
     cache: Path | None = None  # None: <cache_dir>/llm
 
+    def __post_init__(self) -> None:
+        where = "LLM settings"
+        url = urllib.parse.urlsplit(str(self.base_url))
+        if url.scheme not in ("http", "https") or not url.hostname:
+            raise InputError(f"base URL must be http:// or https:// with a host, got {self.base_url!r}",
+                             source=where, element="base_url")
+        for name, low, high in (("timeout_s", 0.0, 3600.0), ("backoff_s", -1e-12, 600.0),
+                                ("temperature", -1e-12, 2.0)):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and low < value <= high):
+                raise InputError(f"{name} must be a finite number in ({max(low, 0):g}, {high:g}], got {value!r}",
+                                 source=where, element=name)
+        for name, high in (("retries", 10), ("max_reasks", 10), ("max_tokens", 100_000)):
+            value = getattr(self, name)
+            if not (isinstance(value, int) and 0 <= value <= high):
+                raise InputError(f"{name} must be an integer in [0, {high}], got {value!r}", source=where,
+                                 element=name)
+
     @classmethod
     def from_settings(cls, settings: dict[str, Any] | None = None, **overrides: Any) -> LlmConfig:
         """Config file values (`config/extract.yaml`, section `llm`), then env (`TXT2SCE_LLM_BASE_URL`,
@@ -68,6 +88,20 @@ class LlmConfig:
         return cls(**s)
 
 
+#: Largest answer read from the server (a chat answer is a few kB; the bound keeps memory flat).
+MAX_ANSWER_BYTES = 4 * 1024 * 1024
+
+
+class _NoRedirect(urllib.request.HTTPRedirectHandler):
+    """Refuse every redirect: urllib would re-send the Authorization header to wherever a 30x points."""
+
+    def redirect_request(self, req, fp, code, msg, headers, newurl):  # type: ignore[no-untyped-def]
+        return None
+
+
+_OPENER = urllib.request.build_opener(_NoRedirect)
+
+
 def api_key() -> str | None:
     for name in KEY_ENV:
         if os.environ.get(name):
@@ -86,8 +120,9 @@ class ChatClient:
 
     def _cache_path(self, messages: list[dict[str, str]]) -> Path:
         root = self.config.cache or (cache_dir() / "llm")
-        key = hashlib.sha256(json.dumps({"model": self.config.model, "messages": messages,
-                                         "temperature": self.config.temperature},
+        # Keyed by server too: the same model name on another server is another model (and another trust).
+        key = hashlib.sha256(json.dumps({"server": self.config.base_url.rstrip("/"), "model": self.config.model,
+                                         "messages": messages, "temperature": self.config.temperature},
                                         sort_keys=True, ensure_ascii=False).encode()).hexdigest()
         safe_model = re.sub(r"[^\w.-]+", "_", self.config.model)
         return root / safe_model / key[:2] / f"{key}.json"
@@ -124,11 +159,18 @@ class ChatClient:
             self.requests_made += 1
             req = urllib.request.Request(url, data=body, headers=headers, method="POST")
             try:
-                with urllib.request.urlopen(req, timeout=self.config.timeout_s) as resp:
-                    payload = json.loads(resp.read().decode("utf-8"))
+                with _OPENER.open(req, timeout=self.config.timeout_s) as resp:
+                    raw = resp.read(MAX_ANSWER_BYTES + 1)
+                if len(raw) > MAX_ANSWER_BYTES:
+                    raise SimulationFault(f"LLM server answer longer than {MAX_ANSWER_BYTES} bytes", source=url)
+                payload = json.loads(raw.decode("utf-8"))
                 return str(payload["choices"][0]["message"]["content"])
             except urllib.error.HTTPError as exc:
                 last = f"HTTP {exc.code}"
+                if 300 <= exc.code < 400:
+                    raise SimulationFault(f"LLM server redirected ({last} to {exc.headers.get('Location', '?')}); "
+                                          "redirects are not followed, so the API key never goes to another "
+                                          "address: set --base-url to the final address", source=url) from exc
                 if exc.code in (429,) or exc.code >= 500:
                     continue
                 raise SimulationFault(f"LLM server refused the request ({last}; check model name and API key)",
@@ -143,7 +185,7 @@ class ChatClient:
                     continue
                 last = f"connection failed ({exc.reason})"
                 continue
-            except (json.JSONDecodeError, KeyError, IndexError, TypeError) as exc:
+            except (json.JSONDecodeError, UnicodeDecodeError, KeyError, IndexError, TypeError) as exc:
                 raise SimulationFault(f"LLM server answered outside the chat-completions protocol ({exc!r})",
                                       source=url) from exc
         raise SimulationFault(f"LLM server failed after {self.config.retries + 1} attempts (last: {last})",

@@ -27,13 +27,13 @@ The XSD carries no `xsd:documentation` in 1.0–1.3, so `documentation` holds a 
 from __future__ import annotations
 
 import hashlib
-import pickle
 from dataclasses import dataclass
 from functools import lru_cache
 
 import networkx as nx
 from lxml import etree
 
+from .. import signed_cache
 from ..errors import InputError
 from ..paths import cache_dir
 from .ranges import BASE_TYPE_RANGES, DOCUMENTED_RANGES
@@ -321,18 +321,9 @@ def entity_db(version: str = DEFAULT_VERSION) -> EntityDB:
     the XSD's hash) and in memory."""
     ver = normalise_version(version)
     path, _ = _cache_file(ver)
-    try:
-        with open(path, "rb") as fh:
-            graph = pickle.load(fh)
-        if graph.graph.get("format") == _GRAPH_FORMAT:
-            return EntityDB(graph)
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError, ValueError, IndexError):
-        pass  # missing, stale or damaged cache (a damaged pickle can raise ValueError/IndexError too): rebuild
+    graph = signed_cache.load(path)      # None: missing, not ours (tag) or stale: rebuild
+    if graph is not None and getattr(graph, "graph", {}).get("format") == _GRAPH_FORMAT:
+        return EntityDB(graph)
     graph = _Builder(xsd_tree(ver)).build(ver)
-    tmp = f"{path}.tmp"
-    with open(tmp, "wb") as fh:
-        pickle.dump(graph, fh, protocol=pickle.HIGHEST_PROTOCOL)
-    import os
-
-    os.replace(tmp, path)  # atomic: parallel workers never read a half-written cache
+    signed_cache.store(path, graph)      # atomic: parallel workers never read a half-written cache
     return EntityDB(graph)

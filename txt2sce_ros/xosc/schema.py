@@ -11,6 +11,7 @@ from pathlib import Path
 from lxml import etree
 
 from ..errors import InputError, UnsupportedFeature
+from ..xmlsafe import refuse_doctype
 
 #: The version every seed and mutant is written in (see docs/seed_format.md).
 DEFAULT_VERSION = "1.0"
@@ -36,6 +37,7 @@ def safe_parser() -> etree.XMLParser:
 def parse_document(data: bytes | str, *, source: str | None = None) -> etree._Element:
     """Root element of an XML text; InputError naming the source and line when it is not well-formed."""
     raw = data.encode("utf-8") if isinstance(data, str) else data
+    refuse_doctype(raw, source)
     try:
         return etree.fromstring(raw, safe_parser())
     except etree.XMLSyntaxError as exc:

@@ -19,6 +19,7 @@ from typing import Union
 from lxml import etree
 
 from ..errors import InputError
+from ..xmlsafe import refuse_doctype
 from .schema import normalise_version, parse_document, xml_schema
 
 XmlInput = Union[bytes, str, etree._ElementTree, etree._Element]
@@ -101,6 +102,8 @@ def qc_check(path: str | Path) -> list[QcIssue]:
     p = Path(path)
     if not p.is_file():
         raise InputError("file not found", source=str(p))
+    # The checker parses with lxml's defaults (entities resolved): it must never see a DOCTYPE.
+    refuse_doctype(p.read_bytes(), str(p))
     config = Configuration()
     config.set_config_param(name="InputFile", value=str(p.resolve()))
     config.register_checker_bundle(checker_bundle_name=constants.BUNDLE_NAME)
