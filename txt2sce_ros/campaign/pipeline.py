@@ -83,10 +83,15 @@ def _kind(p: Path) -> str:
         from ..sketch import iter_jsonl
 
         # The first row that is a JSON object decides; bad rows are recorded later by the stage that reads them.
-        for _lineno, first in iter_jsonl(p):
+        first_problem = ""
+        for lineno, first in iter_jsonl(p):
             if isinstance(first, dict):
                 return "sketches" if str(first.get("schema", "")).startswith("txt2sce.sketch") else "reports"
-        raise InputError("no row is a JSON object", source=str(p))
+            if not first_problem:
+                first_problem = (f"first line is not JSON ({first.message})" if isinstance(first, InputError)
+                                 else f"line {lineno} is not a JSON object")
+        raise InputError(f"no row is a JSON object: {first_problem}" if first_problem else "empty JSON Lines file",
+                         source=str(p))
     return "reports"
 
 
