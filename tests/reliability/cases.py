@@ -255,8 +255,7 @@ def cases() -> list[Case]:
     add(Case("extract-out-unwritable", lambda ws, d: T("extract", str(REPORTS(ws)), "--out", str(_write(d, "afile", "x") / "sub" / "o.jsonl")),
              message=r"error: .*(not a directory|cannot write)"))
     add(Case("extract-huge-narrative", lambda ws, d: T("extract", str(_write(d, "huge.txt", ("The AV was traveling north on Main Street when a vehicle made a left turn. " * 70000))), "--out", "out.jsonl"),
-             exit=(2,), message=r"(narrative|text).*(longer|limit|too long)", timeout=60.0,
-             expected_to_fail_until="issue 13 (lead): extract refuses narratives over a documented limit"))
+             exit=(2,), message=r"(narrative|text).*(longer|limit|too long)", timeout=60.0))
     add(Case("extract-llm-unreachable", lambda ws, d: T("extract", str(REPORTS(ws)), "--out", "out.jsonl", "--backend", "llm", "--base-url", "http://127.0.0.1:9", "--timeout", "2"),
              exit=(1, 2), message=r"(connect|refused|unreachable|LLM)", env={"TXT2SCE_LLM_API_KEY": "k"}, timeout=120))
     add(Case("extract-llm-timeout-nan", lambda ws, d: T("extract", str(REPORTS(ws)), "--out", "out.jsonl", "--backend", "llm", "--timeout", "nan"),
