@@ -2,7 +2,8 @@
 
 The recorded bytes are published unchanged (ROS 2 CDR), with the gaps between log times divided by `--rate`. The
 recorded /oracle/violations are left out unless `--topics` names them (a live monitor listening would otherwise
-see two sets). DDS settings come from the environment (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ...).
+see two sets). The road and the goal/light markers (/sim/map/markers, /sim/scenario/markers) are offered latched, as
+the player offers them: a viewer that joins mid-replay still draws the road. DDS settings come from the environment (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE, ...).
 """
 
 from __future__ import annotations
