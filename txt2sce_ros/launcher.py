@@ -2,8 +2,9 @@
 
     txt2sce_launch --scenarios DIR_OR_FILES... [--bag-dir DIR] [--fault NAME]... [--planner none]
 
-starts the oracle monitor, the stand-in planner (unless `--planner none`, for a real ADS already running on the
-same domain), the scenario player and the generator, each as its own process with the DDS settings of
+starts the oracle monitor, the planner under test (the stand-in by default; `--planner commonroad` for CommonRoad's
+reactive planner in its own venv, see sut_adapters/commonroad; `--planner none` for a real ADS already running on
+the same domain), the scenario player and the generator, each as its own process with the DDS settings of
 `txt2sce_ros.ros_env`. It waits for the generator to finish the scenario list, then stops the others with SIGINT
 (so the monitor closes its recording), escalating to SIGTERM/SIGKILL after a grace period. The same graph is
 described for real ROS installs in `launch/txt2sce.launch.py`.
@@ -61,7 +62,7 @@ def node_command(executable: str, params: dict[str, Any]) -> list[str]:
 class GraphConfig:
     scenarios: list[str]
     bag_dir: str
-    planner: str = "standin"            # 'standin' or 'none' (an external stack serves the topics)
+    planner: str = "standin"            # 'standin', 'commonroad' (sut_adapters) or 'none' (an external stack)
     faults: list[str] = field(default_factory=list)
     lock_step: bool = True
     planner_timeout: float = 5.0        # wall-clock seconds the player waits for a command before 'error'
@@ -70,6 +71,15 @@ class GraphConfig:
     log_dir: str | None = None
     time_limit: float | None = None     # simulated seconds per run (None: the scenario's / player's own limit)
     seed: int | None = None             # player seed (None: config/player.yaml)
+    planner_settings: str = ""          # third-party adapter settings file ('' = its defaults)
+    planner_stats: str = ""             # where a third-party adapter writes its per-run statistics ('' = nowhere)
+
+#: Wall-clock seconds the player waits for a command, per planner: a sampling planner in Python on a loaded
+#: 2-core machine takes up to ~10 s for its first cycle (map, road boundary, route) and ~1 s per cycle after.
+PLANNER_TIMEOUTS = {"commonroad": 60.0}
+
+#: Planners the launcher can start: the stand-in, the adapters of sut_adapters/, or none (a user's stack).
+PLANNERS = ("standin", "commonroad", "none")
 
 
 def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
@@ -77,8 +87,16 @@ def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
     cmds = {
         "oracle": node_command("oracle_monitor_node", {"bag_dir": cfg.bag_dir}),
     }
+    if cfg.planner not in PLANNERS:
+        raise ValueError(f"unknown planner {cfg.planner!r} (choose from {', '.join(PLANNERS)})")
     if cfg.planner == "standin":
         cmds["planner"] = node_command("planner_node", {"faults": cfg.faults or [""]})
+    elif cfg.planner == "commonroad":
+        from sut_adapters.commonroad.venv import adapter_command
+
+        params = {"settings": cfg.planner_settings, "stats_file": cfg.planner_stats}
+        cmds["planner"] = adapter_command() + ["--ros-args"] + [
+            a for k, v in params.items() for a in ("-p", f"{k}:={_param(v)}")]
     player: dict[str, object] = {
         "lock_step": cfg.lock_step, "planner_timeout": cfg.planner_timeout, "run_timeout": cfg.run_timeout,
         # frames are volatile: a run starts only once the monitor listens, or its verdict misses the first frames
@@ -123,9 +141,14 @@ def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) 
     try:
         for name, cmd in graph_commands(cfg).items():
             out = open(log_dir / f"{name}.log", "wb")
+            child_env = env
+            if name == "planner" and cfg.planner == "commonroad":
+                from sut_adapters.commonroad.venv import adapter_environment
+
+                child_env = adapter_environment(env)
             # Own session (so a stop reaches the node's whole group) but tied to this process: if it dies, so
             # does the node.
-            procs[name] = subprocess.Popen(cmd, env=env, stdout=out, stderr=subprocess.STDOUT,
+            procs[name] = subprocess.Popen(cmd, env=child_env, stdout=out, stderr=subprocess.STDOUT,
                                            start_new_session=True, preexec_fn=preexec())
             if not quiet:
                 print(f"[launch] {name}: pid {procs[name].pid}, log {log_dir / (name + '.log')}", file=sys.stderr)
@@ -169,8 +192,10 @@ def main(argv: list[str] | None = None) -> int:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenarios", nargs="+", required=True, help=".xosc files, directories, or tree directories")
     ap.add_argument("--bag-dir", default="txt2sce_bags", help="where the monitor writes its recordings")
-    ap.add_argument("--planner", choices=("standin", "none"), default="standin",
-                    help="'none' leaves /control/command to your own stack")
+    ap.add_argument("--planner", choices=PLANNERS, default="standin",
+                    help="'commonroad' runs CommonRoad's reactive planner (make sut-commonroad); "
+                         "'none' leaves /control/command to your own stack")
+    ap.add_argument("--planner-settings", default="", help="settings YAML of a third-party planner adapter")
     ap.add_argument("--fault", action="append", default=[], help="stand-in planner fault mode (repeatable)")
     ap.add_argument("--real-time", action="store_true", help="real-time mode instead of lock-step")
     ap.add_argument("--timeout", type=float, default=600.0, help="wall-clock limit for the whole graph (s)")
@@ -178,7 +203,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--log-dir", default=None)
     a = ap.parse_args(argv)
     cfg = GraphConfig(scenarios=a.scenarios, bag_dir=a.bag_dir, planner=a.planner, faults=a.fault,
-                      lock_step=not a.real_time, domain_id=a.domain_id, log_dir=a.log_dir)
+                      lock_step=not a.real_time, domain_id=a.domain_id, log_dir=a.log_dir,
+                      planner_timeout=PLANNER_TIMEOUTS.get(a.planner, 5.0), planner_settings=a.planner_settings)
     codes = run_graph(cfg, timeout=a.timeout)
     print("[launch] exit codes: " + ", ".join(f"{k}={v}" for k, v in codes.items()), file=sys.stderr)
     return 0 if codes.get("generator") == 0 else 1
