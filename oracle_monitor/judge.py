@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from txt2sce_ros import contract as c
 from txt2sce_ros.errors import InputError
@@ -46,12 +46,14 @@ class JudgeResult:
         return [v.to_dict() for v in self.verdicts] == self.live
 
 
-def judge_bag(path: str | Path, params: OracleParams | None = None) -> JudgeResult:
+def judge_bag(path: str | Path, params: OracleParams | None = None, *,
+              on_frame: Callable[[Any], None] | None = None) -> JudgeResult:
     """Judge every run in a recording. A damaged or unfinished recording is judged up to where it is readable;
-    `issues` says what was lost. Raises InputError when nothing can be read at all."""
+    `issues` says what was lost. Raises InputError when nothing can be read at all. `on_frame` gets every judged
+    frame in order (e.g. to keep the trajectories)."""
     reading = read_bag(path)
     ts = typestore()
-    session = JudgeSession(params)
+    session = JudgeSession(params, on_frame=on_frame)
     live: list[dict[str, Any]] = []
     decode_errors = 0
     wanted = JUDGED_TOPICS | {c.TOPIC_VIOLATIONS}

@@ -84,8 +84,10 @@ class JudgeSession:
 
     def __init__(self, params: OracleParams | None = None, *,
                  on_violations: Callable[[float, list[Violation]], None] | None = None,
-                 on_verdict: Callable[[RunVerdict], None] | None = None) -> None:
+                 on_verdict: Callable[[RunVerdict], None] | None = None,
+                 on_frame: Callable[[Any], None] | None = None) -> None:
         self.params = params or OracleParams.from_config()
+        self.on_frame = on_frame                            # every judged frame, in order (trajectory keeping)
         self.on_violations = on_violations
         self.on_verdict = on_verdict
         self.assembler = FrameAssembler()
@@ -264,6 +266,8 @@ class JudgeSession:
         if run.oracle is None:
             run.oracle = Oracle(run.network, run.goal, self.params, scenario_id=run.scenario_id)
         self.frames_seen += 1
+        if self.on_frame is not None:
+            self.on_frame(frame)
         new = run.oracle.observe(frame)
         if new and self.on_violations:
             self.on_violations(frame.t, new)

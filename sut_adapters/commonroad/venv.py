@@ -53,3 +53,16 @@ def adapter_environment(env: dict[str, str]) -> dict[str, str]:
     for key in ("LD_LIBRARY_PATH", "_ROS_WHEELS_BOOTSTRAP_COMPLETE", "VIRTUAL_ENV"):
         out.pop(key, None)
     return out
+
+
+def planner_version() -> str:
+    """The installed reactive planner's version, asked of its own environment (the harness cannot import it)."""
+    import subprocess
+
+    code = "from importlib.metadata import version; print(version('commonroad-reactive-planner'))"
+    out = subprocess.run(adapter_command()[:1] + ["-c", code], capture_output=True, text=True, timeout=60,
+                         env=adapter_environment(dict(os.environ)))
+    if out.returncode != 0:
+        raise FileNotFoundError(f"the CommonRoad planner environment at {venv_dir()} cannot report its version: "
+                                f"{(out.stderr.strip().splitlines() or ['no output'])[-1]}")
+    return out.stdout.strip()

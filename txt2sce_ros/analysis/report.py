@@ -28,6 +28,9 @@ class CampaignResults:
     failure_plots: list[tuple[str, bytes]] = field(default_factory=list)           # caption, PNG
     tested: list[tuple[str, str]] = field(default_factory=list)   # what was tested: planner, faults, seeds, settings
     partial: str | None = None                                    # set when the campaign is not finished
+    planner: dict[str, Any] | None = None            # the planner under test: name, version, settings
+    baseline: dict[str, Any] | None = None           # the baseline planner of a differential campaign
+    differential: dict[str, list[dict[str, Any]]] | None = None   # campaign.reporting.differential
 
 
 @dataclass
@@ -64,7 +67,11 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
     if res.partial:
         parts += [f"**{res.partial}**", ""]
     total = sum(an.verdicts.values())
+    if res.planner:
+        parts.append(_planner_line("Planner under test", res.planner))
+        parts.append("")
     parts.append(f"{total} runs: " + ", ".join(f"{an.verdicts.get(v, 0)} {v}" for v in ("pass", "fail", "error")))
+    parts += _speed_lines(res)
     if res.tested:
         parts += ["", "## What was tested", ""]
         parts.append(_md_table(["what", "value"], [(k, v.replace("|", "/")) for k, v in res.tested]))
@@ -94,6 +101,8 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
                                [(c, k, n) for c, kv in an.derivation.items() for k, n in kv[:5]]))
     else:
         parts.append("No parent-passed / child-failed pair in this campaign.")
+    if res.differential is not None:
+        parts += _differential_section(res)
     if res.diversity:
         parts += ["", "## Diversity (paper Table V)", ""]
         parts.append(_md_table(["abstraction level", "abstract representations", "variants generated"],
@@ -120,6 +129,56 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
               "list a party's manoeuvres in order, one letter each."]
     parts.append(_md_table(["code", "meaning"], legend_rows()))
     return "\n".join(parts) + "\n"
+
+
+def _planner_line(label: str, p: Mapping[str, Any]) -> str:
+    settings = ", ".join(f"{k}={v}" for k, v in sorted(p.get("settings", {}).items()))
+    return f"{label}: **{p.get('name')}** {p.get('version', '')}" + (f" (settings: {settings})" if settings else "")
+
+
+def _speed_lines(res: CampaignResults) -> list[str]:
+    """Scenarios per hour of wall time, and the planner's replanning cadence when it reported its cycles."""
+    walls = [float(r["record"].get("wall_time", 0.0)) for r in res.runs if r.get("record")]
+    out: list[str] = []
+    if walls and sum(walls) > 0:
+        out += ["", f"Speed: {3600.0 * len(walls) / sum(walls):.0f} scenarios per hour of run wall time "
+                   f"(mean {sum(walls) / len(walls):.1f} s per run, one worker)."]
+    stats = [r["record"]["details"]["planner_stats"] for r in res.runs
+             if r.get("record") and "planner_stats" in r["record"].get("details", {})]
+    if stats:
+        cycles = {k: sum(s["cycles"].get(k, 0) for s in stats) for k in stats[0]["cycles"]}
+        sim = sum(float(r["record"].get("sim_time", 0.0)) for r in res.runs
+                  if "planner_stats" in r.get("record", {}).get("details", {}))
+        total = sum(cycles.values())
+        mean = sum(s["plan_time_mean_s"] * sum(s["cycles"].values()) for s in stats) / max(1, total)
+        out += ["", f"Replanning: {total} planning cycles over {sim:.0f} s of simulated time "
+                    f"({total / max(sim, 1e-9):.2f} Hz); mean planning time {mean:.2f} s wall; outcomes: "
+                + ", ".join(f"{k} {v}" for k, v in cycles.items())
+                + f"; runs with a braking fallback: {sum(1 for s in stats if s.get('braking_steps'))}."]
+    return out
+
+
+def _differential_section(res: CampaignResults) -> list[str]:
+    d = res.differential or {}
+    name = (res.planner or {}).get("name", "planner")
+    base = (res.baseline or {}).get("name", "baseline")
+    parts = ["", "## Differential triage", "", _planner_line("Baseline", res.baseline or {}), ""]
+    parts.append(_md_table(["outcome", "scenarios"], [
+        (f"{name} fails, {base} passes (the planner's own failures)", len(d.get("own", []))),
+        ("both fail (the scenario defeats both)", len(d.get("both", []))),
+        (f"{base} fails, {name} passes", len(d.get("baseline_only", []))),
+        ("both pass", len(d.get("both_pass", []))),
+        ("an error on either side", len(d.get("error", []))),
+    ]))
+    for key, title in (("own", f"{name}'s own failures"), ("both", "failures of both")):
+        cats: dict[str, int] = {}
+        for r in d.get(key, []):
+            for c in r["categories"]:
+                cats[c] = cats.get(c, 0) + 1
+        if cats:
+            parts += ["", f"{title} by category: " + ", ".join(f"{c} {n}" for c, n in
+                                                                sorted(cats.items(), key=lambda kv: -kv[1]))]
+    return parts
 
 
 def write_report(res: CampaignResults, out_dir: str | Path, *, title: str = "txt2sce campaign report",

@@ -11,6 +11,7 @@ tree directories or plain scenario files.
 from __future__ import annotations
 
 import json
+import os
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -42,6 +43,9 @@ class CampaignConfig:
     progress: bool = True
     report: bool = True
     retry_errors: bool = False            # run again the runs stored with verdict error
+    planner: str = "standin"              # the planner under test: standin | commonroad | none
+    planner_settings: str = ""            # a third-party adapter's settings YAML ('' = its defaults)
+    baseline: str | None = None           # also run this planner (the stand-in) on the same scenarios
 
 
 @dataclass
@@ -53,6 +57,8 @@ class CampaignSummary:
     trees: int = 0
     scenarios: int = 0
     runs: RunsSummary | None = None
+    baseline_runs: RunsSummary | None = None
+    planner: dict[str, Any] = field(default_factory=dict)
     report: Path | None = None
 
 
@@ -184,6 +190,38 @@ def tree_stage(seed_dir: Path, cfg: CampaignConfig) -> Path:
     return out
 
 
+def planner_info(name: str, settings_file: str = "", faults: Sequence[str] = ()) -> dict[str, Any]:
+    """What the result store, the console and the report say of the planner under test: name, version, settings.
+    Raises InputError (one line) when the planner cannot run here."""
+    if name == "standin":
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            ver = version("txt2sce_ros")
+        except PackageNotFoundError:
+            ver = "checkout"
+        return {"name": "standin", "version": ver, "settings": {"faults": sorted(faults),
+                                                               "config": "config/planner.yaml"}}
+    if name == "commonroad":
+        from sut_adapters.commonroad.settings import AdapterSettings
+        from sut_adapters.commonroad.venv import available, planner_version
+
+        why = available()
+        if why:
+            raise InputError(why)
+        try:
+            ver = planner_version()
+        except (FileNotFoundError, OSError) as exc:
+            raise InputError(str(exc)) from exc
+        settings = AdapterSettings.from_yaml(settings_file or None).to_dict()
+        return {"name": "commonroad", "package": "commonroad-reactive-planner", "version": ver,
+                "adapter": "sut_adapters/commonroad", "settings": settings}
+    if name == "none":
+        return {"name": "none", "version": "external", "settings": {"ROS_DOMAIN_ID": os.environ.get("ROS_DOMAIN_ID",
+                                                                                                  "0")}}
+    raise InputError(f"unknown planner {name!r} (choose standin, commonroad or none)")
+
+
 def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignSummary:
     """Run the campaign from whatever stage the inputs are at; resumable (see the module docstring)."""
     from standin_planner.faults import Faults
@@ -191,6 +229,11 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
     # An unknown fault name is the user's mistake: say so now, not as an 'error' verdict on every run.
     Faults.from_names(cfg.faults)
     _check_settings(cfg)
+    if cfg.planner != "standin" and cfg.faults:
+        raise InputError("--fault switches stand-in faults; it cannot be combined with --planner " + cfg.planner)
+    if cfg.baseline not in (None, "standin"):
+        raise InputError(f"--baseline {cfg.baseline}: only the stand-in can be the baseline")
+    planner = planner_info(cfg.planner, cfg.planner_settings, cfg.faults)
     if not inputs:
         raise InputError("no inputs given")
     stage = detect_stage(inputs)
@@ -207,23 +250,42 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
     if stage == "seeds":
         tree_dir = tree_stage(Path(scenario_inputs[0]), cfg)
         stage, scenario_inputs = "trees", [tree_dir]
-    tasks = make_tasks(scenario_inputs, faults=cfg.faults, seed=cfg.seed, ros=cfg.ros, time_limit=cfg.time_limit)
+    third_party = cfg.planner != "standin"
+    tasks = make_tasks(scenario_inputs, faults=cfg.faults, seed=cfg.seed, ros=cfg.ros, time_limit=cfg.time_limit,
+                       planner=cfg.planner, planner_settings=planner["settings"] if third_party else None,
+                       planner_settings_file=cfg.planner_settings,
+                       trajectory_dir=str(cfg.out / "trajectories") if third_party else None)
+    baseline_tasks = []
+    if cfg.baseline and cfg.baseline != cfg.planner:
+        # the stand-in in-process: the same verdicts as over ROS (tested), without slowing the campaign
+        baseline_tasks = make_tasks(scenario_inputs, seed=cfg.seed, time_limit=cfg.time_limit)
     summary.scenarios = len(tasks)
     summary.trees = len({t.tree for t in tasks if t.tree})
+    summary.planner = planner
     dup = count_duplicates(tasks)
     _log(cfg, f"closed loop: {len(tasks)} scenarios"
               + (f" ({dup} byte-identical to another one, judged once: {len(tasks) - dup} runs)" if dup else "")
-              + f", executor {cfg.executor}" + (f", faults {', '.join(cfg.faults)}" if cfg.faults else ""))
+              + f", executor {cfg.executor}, planner {planner['name']} {planner['version']}"
+              + (f", faults {', '.join(cfg.faults)}" if cfg.faults else "")
+              + (f", baseline {cfg.baseline}" if baseline_tasks else ""))
+    # a user's stack on one domain serves one run at a time
+    executor = "serial" if cfg.planner == "none" else cfg.executor
     with ResultStore(cfg.out / "results.sqlite") as store:
         if cfg.retry_errors:
             _log(cfg, f"retrying {store.drop_errors()} stored error run(s)")
         store.set_meta("faults", list(cfg.faults))
+        store.set_meta("planner", planner)
         # what the report says was tested (settings of the run that wrote it; the run key covers the rest)
         store.set_meta("settings", {
             "inputs": [str(p) for p in inputs], "start_stage": summary.start_stage, "rng_seed": cfg.seed,
             "backend": cfg.backend, "mutations": cfg.mutations, "prune": cfg.prune, "max_nodes": cfg.max_nodes,
             "max_seeds": cfg.max_seeds, "time_limit": cfg.time_limit, "executor": cfg.executor, "ros": cfg.ros})
-        summary.runs = run_all(tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,
+        if baseline_tasks:
+            store.set_meta("baseline", planner_info(cfg.baseline))
+            summary.baseline_runs = run_all(baseline_tasks, store, executor=cfg.executor, workers=cfg.workers,
+                                            progress=cfg.progress, limit=cfg.limit,
+                                            ray_address=cfg.ray_address)
+        summary.runs = run_all(tasks, store, executor=executor, workers=cfg.workers, progress=cfg.progress,
                                limit=cfg.limit, ray_address=cfg.ray_address)
         if cfg.report:
             from .reporting import report_from_store
@@ -235,5 +297,5 @@ def run_campaign(inputs: Sequence[str | Path], cfg: CampaignConfig) -> CampaignS
                 partial = (f"partial campaign: {judged} of {judged + summary.runs.left} distinct scenarios judged "
                            f"so far (--limit {cfg.limit}); rerun without --limit to finish and update this report")
             summary.report = report_from_store(store, scenario_inputs, cfg.out / "report", tasks=tasks,
-                                               partial=partial)
+                                               partial=partial, baseline_tasks=baseline_tasks)
     return summary

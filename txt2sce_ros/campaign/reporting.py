@@ -117,7 +117,7 @@ def _config_digest(name: str) -> str:
 
 
 def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence[RunTask],
-                trees: Sequence[str]) -> list[tuple[str, str]]:
+                trees: Sequence[str], planner: dict[str, Any] | None = None) -> list[tuple[str, str]]:
     """What the campaign tested, as (what, value) rows: planner, faults, seeds, settings, versions."""
     import platform
     import sys
@@ -134,7 +134,10 @@ def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence
     shown = ", ".join(trees[:12]) + (f" and {len(trees) - 12} more" if len(trees) > 12 else "")
     return [
         ("system under test", "stand-in planner (standin_planner: IDM + pure pursuit), "
-                              + _config_digest("planner")),
+                              + _config_digest("planner") if not planner or planner.get("name") == "standin" else
+                              f"{planner.get('package', planner.get('name'))} {planner.get('version', '')} through "
+                              f"{planner.get('adapter', 'the topic interface')}; settings "
+                              + ", ".join(f"{k}={v}" for k, v in sorted(planner.get("settings", {}).items()))),
         ("faults switched on", ", ".join(faults) or "none (nominal planner)"),
         ("inputs", ", ".join(settings.get("inputs", [])) or "–"),
         ("seeds / trees", f"{len(trees)}: {shown}" if trees else "none (plain scenario files)"),
@@ -152,26 +155,96 @@ def tested_rows(settings: dict[str, Any], faults: Sequence[str], tasks: Sequence
     ]
 
 
-def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path,
-                      tasks: Sequence[RunTask] = (), *, partial: str | None = None) -> Path:
-    """Write the campaign report from the stored runs; `partial` (a sentence) marks a report of an unfinished
-    campaign."""
+def _runs(store: ResultStore, tasks: Sequence[RunTask]) -> list[dict[str, Any]]:
     files = {t.key: t.scenario_path for t in tasks}
-    runs = [{"scenario_id": r.scenario_id, "tree": r.tree, "parent": r.parent, "verdict": r.verdict,
-             "categories": list(r.categories), "file": files.get(r.run_key), "record": r.record}
+    return [{"scenario_id": r.scenario_id, "tree": r.tree, "parent": r.parent, "verdict": r.verdict,
+             "categories": list(r.categories), "file": files.get(r.run_key), "record": r.record, "key": r.run_key}
             for r in store.runs() if not files or r.run_key in files]
+
+
+def differential(runs: list[dict[str, Any]], baseline: list[dict[str, Any]]) -> dict[str, Any]:
+    """Scenario by scenario, the planner under test against the baseline: its own failures (the baseline passes),
+    failures of both, the baseline's alone, and errors (either side), with the categories of each."""
+    base = {(r["tree"], r["scenario_id"]): r for r in baseline}
+    rows: dict[str, list[dict[str, Any]]] = {"own": [], "both": [], "baseline_only": [], "both_pass": [],
+                                            "error": [], "unmatched": []}
+    for r in runs:
+        b = base.get((r["tree"], r["scenario_id"]))
+        if b is None:
+            rows["unmatched"].append(r)
+        elif "error" in (r["verdict"], b["verdict"]):
+            rows["error"].append(r)
+        elif r["verdict"] == "fail" and b["verdict"] == "pass":
+            rows["own"].append(r)
+        elif r["verdict"] == "fail":
+            rows["both"].append({**r, "baseline_categories": b["categories"]})
+        elif b["verdict"] == "fail":
+            rows["baseline_only"].append({**r, "baseline_categories": b["categories"]})
+        else:
+            rows["both_pass"].append(r)
+    return rows
+
+
+def trajectory_failure_plots(runs: list[dict[str, Any]], traj_dir: Path, limit: int = FAILURE_PLOTS
+                             ) -> list[tuple[str, bytes]]:
+    """Failure plots of graph runs from the trajectories they kept (a third-party planner cannot be re-run
+    in-process): one per category, most frequent first."""
+    import numpy as np
+
+    from ..analysis.plots import trajectory_plot
+
+    out: list[tuple[str, bytes]] = []
+    seen: set[str] = set()
+    for r in runs:
+        cats = [c for c in r["categories"] if c not in seen]
+        path = traj_dir / f"{r['key']}.npz"
+        if r["verdict"] != "fail" or not cats or not r.get("file") or not path.is_file():
+            continue
+        seen.update(r["categories"])
+        with np.load(path) as data:
+            traj = {k: data[k] for k in data.files}
+        marks = []
+        ego = traj.get("ego")
+        for v in r["record"].get("details", {}).get("violations", [])[:3]:
+            if "t" in v and ego is not None and len(ego):
+                t = float(v["t"])
+                marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
+                              f"{v.get('category', '')} @ {t:.1f} s"))
+        where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
+        caption = f"{where}: {', '.join(r['categories'])}"
+        out.append((caption, trajectory_plot(traj, _lane_borders(r["file"], traj), caption, marks)))
+        if len(out) >= limit:
+            break
+    return out
+
+
+def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path,
+                      tasks: Sequence[RunTask] = (), *, partial: str | None = None,
+                      baseline_tasks: Sequence[RunTask] = ()) -> Path:
+    """Write the campaign report from the stored runs; `partial` (a sentence) marks a report of an unfinished
+    campaign; `baseline_tasks` (a differential campaign) adds the differential triage."""
+    runs = _runs(store, tasks)
     trees = {d.name: _tree_nodes(d) for d in _tree_dirs(inputs)}
     faults = tuple(store.meta("faults", []) or ())
     res = CampaignResults(runs=runs, trees=trees, partial=partial,
-                          tested=tested_rows(store.meta("settings", {}) or {}, faults, tasks, sorted(trees)))
+                          tested=tested_rows(store.meta("settings", {}) or {}, faults, tasks, sorted(trees),
+                                             store.meta("planner", None)))
     if trees:
         from ..tree.diversity import diversity
 
         table = diversity(list(_tree_dirs(inputs)))
         res.diversity = [(row.level, row.abstract, row.variants) for row in table.rows]
         res.unique_categories = table.unique_categories
-    # the same time limit as the stored runs, so the re-run draws what was judged
-    time_limit = next((t.time_limit for t in tasks), None)
-    res.failure_plots = failure_plots(runs, faults, time_limit=time_limit)
+    res.planner = store.meta("planner", None)
+    if baseline_tasks:
+        res.baseline = store.meta("baseline", None)
+        res.differential = differential(runs, _runs(store, baseline_tasks))
+    traj_dir = next((Path(t.trajectory_dir) for t in tasks if t.trajectory_dir), None)
+    if traj_dir is not None:
+        res.failure_plots = trajectory_failure_plots(runs, traj_dir)
+    else:
+        # the same time limit as the stored runs, so the re-run draws what was judged
+        time_limit = next((t.time_limit for t in tasks), None)
+        res.failure_plots = failure_plots(runs, faults, time_limit=time_limit)
     md, _html = write_report(res, out_dir)
     return md

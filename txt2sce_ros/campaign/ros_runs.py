@@ -19,12 +19,13 @@ to `attempts` times; if every attempt faults, the record is an *error* saying wh
 from __future__ import annotations
 
 import fcntl
+import json
 import os
 import shutil
 import tempfile
 import time
 from contextlib import contextmanager
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Iterator
 
@@ -77,22 +78,45 @@ def reserved_domain(tag: str) -> Iterator[int]:
         time.sleep(0.5)                 # every id taken (100 graphs at once): wait for one to finish
 
 
+@dataclass(frozen=True)
+class PlannerSpec:
+    """The planner under test in a graph run: its launcher name and, for a third-party adapter, its settings file."""
+
+    name: str = "standin"
+    settings: str = ""
+
+
+@contextmanager
+def _domain_for(planner: PlannerSpec, tag: str) -> Iterator[int]:
+    """A reserved domain of its own, except for `--planner none`: the user's stack listens on $ROS_DOMAIN_ID."""
+    if planner.name == "none":
+        yield int(os.environ.get("ROS_DOMAIN_ID", "0"))
+        return
+    with reserved_domain(tag) as domain:
+        yield domain
+
+
 def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | None = None,
                  faults: tuple[str, ...] = (), keep_bag: str | Path | None = None, run_timeout: float = 120.0,
-                 attempts: int = ATTEMPTS, time_limit: float | None = None, seed: int | None = None) -> RunRecord:
+                 attempts: int = ATTEMPTS, time_limit: float | None = None, seed: int | None = None,
+                 planner: PlannerSpec = PlannerSpec(), keep_trajectory: str | Path | None = None) -> RunRecord:
     """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline; a graph fault
     (module docstring) runs it again, up to `attempts` times. `details['ros_attempts']` says how many it took.
 
     `keep_bag`: copy the recording there (otherwise it is deleted with the temporary directory). `time_limit`
     (simulated s) and `seed` go to the player, as `run_closed_loop` takes them, so both paths run the same run.
-    An envelope (what a campaign ships to a worker) is written to the run's temporary directory first."""
+    `planner`: which planner answers (a third-party adapter's per-run statistics land in
+    `details['planner_stats']`; a crashed adapter is an error naming it, not retried). `keep_trajectory`: write
+    every entity's judged path (t, x, y, heading, speed) there as .npz, for plots. An envelope (what a campaign
+    ships to a worker) is written to the run's temporary directory first."""
     sid = scenario_id or (scenario.id if isinstance(scenario, ScenarioEnvelope) else Path(scenario).stem)
     t0 = time.perf_counter()
     faults_seen: list[str] = []
     record = RunRecord(sid, Verdict.ERROR, error="no attempt made")
     for attempt in range(1, max(1, attempts) + 1):
-        record, fault = _attempt(scenario, sid, faults, keep_bag, run_timeout, time_limit, seed)
-        if not fault:
+        record, fault = _attempt(scenario, sid, faults, keep_bag, run_timeout, time_limit, seed, planner,
+                                 keep_trajectory)
+        if not fault or record.details.get("adapter_crashed"):
             break
         faults_seen.append(fault)
     details = {**record.details, "ros_attempts": attempt}
@@ -103,48 +127,75 @@ def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | 
     return replace(record, details=details, wall_time=time.perf_counter() - t0)
 
 
-def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[str, ...],
-             keep_bag: str | Path | None, run_timeout: float, time_limit: float | None, seed: int | None) -> tuple[RunRecord, str]:
+def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[str, ...], keep_bag: str | Path | None,
+             run_timeout: float, time_limit: float | None, seed: int | None, planner: PlannerSpec,
+             keep_trajectory: str | Path | None) -> tuple[RunRecord, str]:
     """One graph run: (record, why it is a graph fault, '' when it is not)."""
     from oracle_monitor.judge import judge_bag
 
     from ..errors import Txt2SceError
-    from ..launcher import GraphConfig, describe_exit, run_graph
+    from ..launcher import PLANNER_TIMEOUTS, GraphConfig, describe_exit, run_graph
 
     work = Path(tempfile.mkdtemp(prefix="txt2sce_ros_run_"))
+    extra: dict[str, object] = {}
     try:
         bag_dir = work / "bags"
         if isinstance(scenario, ScenarioEnvelope):
             from ..scenario_source import write_envelope
 
             scenario = write_envelope(scenario, work / "input")
-        with reserved_domain(f"campaign:{os.getpid()}:{work.name}") as domain:
+        stats_file = work / "planner_stats.json"
+        with _domain_for(planner, f"campaign:{os.getpid()}:{work.name}") as domain:
             cfg = GraphConfig(scenarios=[str(scenario)], bag_dir=str(bag_dir), faults=list(faults),
                               run_timeout=run_timeout, log_dir=str(work / "log"), domain_id=domain,
-                              time_limit=time_limit, seed=seed)
+                              time_limit=time_limit, seed=seed, planner=planner.name,
+                              planner_timeout=PLANNER_TIMEOUTS.get(planner.name, 5.0),
+                              planner_settings=planner.settings,
+                              planner_stats=str(stats_file) if planner.name != "standin" else "")
             codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
+        if stats_file.is_file():
+            runs = json.loads(stats_file.read_text(encoding="utf-8")).get("runs", {})
+            if runs:
+                extra["planner_stats"] = next(iter(runs.values()))
+        if planner.name != "standin" and "planner" in codes.early:
+            # the adapter process died under the run (an exception, a segfault): the run says nothing of the planner;
+            # an error naming the adapter, not retried
+            tail = _log_tail(work / "log" / "planner.log")
+            why = (f"planner adapter '{planner.name}' crashed ({describe_exit(codes.early['planner'])}): {tail}")
+            return RunRecord(sid, Verdict.ERROR, error=why, details={**extra, "adapter_crashed": True}), why
         # A node that died under the run (crashed, killed, out of memory) is a graph fault, whatever the bag says:
         # name it and how it ended, so the stored error says which process to look at.
         if codes.early:
             why = "; ".join(f"{name} process {describe_exit(code)} during the run"
                             for name, code in sorted(codes.early.items()))
-            return RunRecord(sid, Verdict.ERROR, error=why), why
+            return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         if codes.timed_out:
             why = f"the graph did not finish within {run_timeout + 60.0:g} s (stuck process; exit codes {dict(codes)})"
-            return RunRecord(sid, Verdict.ERROR, error=why), why
+            return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         bags = sorted(p for p in bag_dir.rglob("metadata.yaml")) if bag_dir.exists() else []
         if not bags:
             why = f"the graph recorded no bag (exit codes {codes})"
-            return RunRecord(sid, Verdict.ERROR, error=why), why
+            return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         verdicts = []
+        paths: dict[str, list[tuple[float, float, float, float, float]]] = {}
+
+        def keep(frame) -> None:
+            for e in (frame.ego, *frame.objects):
+                paths.setdefault(e.name, []).append((frame.t, e.x, e.y, e.heading, e.speed))
+
         for meta in bags:
             try:
-                verdicts += judge_bag(meta.parent).verdicts
+                verdicts += judge_bag(meta.parent, on_frame=keep if keep_trajectory else None).verdicts
             except Txt2SceError as exc:
                 why = f"bag not judgeable: {exc}"
-                return RunRecord(sid, Verdict.ERROR, error=why), why
+                return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         if keep_bag is not None:
             shutil.copytree(bags[0].parent, Path(keep_bag), dirs_exist_ok=True)
+        if keep_trajectory is not None and paths:
+            import numpy as np
+
+            Path(keep_trajectory).parent.mkdir(parents=True, exist_ok=True)
+            np.savez_compressed(keep_trajectory, **{k: np.asarray(v) for k, v in paths.items()})
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if len(verdicts) != 1:
@@ -152,7 +203,8 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
         return RunRecord(sid, Verdict.ERROR, error=why), why
     v = verdicts[0]
     # steps = frames after the first, as the in-process run counts them
-    common = dict(end_reason=v.end_reason, sim_time=v.t_end, steps=max(0, v.frames - 1), details=v.to_dict())
+    common = dict(end_reason=v.end_reason, sim_time=v.t_end, steps=max(0, v.frames - 1),
+                  details={**v.to_dict(), **extra})
     if v.end_reason in GRAPH_END_REASONS:
         return RunRecord(sid, Verdict.ERROR, error=v.error or v.end_reason, **common), f"run broke: {v.end_reason}"
     want = expected_frames(v.t_end)
@@ -162,3 +214,13 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                                                    f"{list(v.category_names())})", **common), why
     return RunRecord(scenario_id=sid, verdict=Verdict(v.verdict), categories=tuple(v.category_names()),
                      error=v.error, **common), ""
+
+
+def _log_tail(path: Path, lines: int = 3) -> str:
+    """The last meaningful lines of a node's log, one line (for an error verdict)."""
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        return "no log"
+    keep = [t.strip() for t in text if t.strip() and "nanobind" not in t and "leaked" not in t]
+    return " | ".join(keep[-lines:])[:400] or "empty log"

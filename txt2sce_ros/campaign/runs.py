@@ -6,7 +6,7 @@ import sys
 from dataclasses import dataclass, replace
 from functools import lru_cache
 from pathlib import Path
-from typing import Iterable, Iterator, Sequence
+from typing import Any, Iterable, Iterator, Sequence
 
 from tqdm import tqdm
 
@@ -31,6 +31,9 @@ class RunTask:
     seed: int
     ros: bool = False
     time_limit: float | None = None     # simulated seconds per run (None: the scenario's / player's own limit)
+    planner: str = "standin"            # the planner under test: standin | commonroad | none (always over ROS)
+    planner_settings: str = ""          # a third-party adapter's settings file
+    trajectory_dir: str | None = None   # keep each graph run's judged trajectories here (<key>.npz) for plots
 
 
 @dataclass(frozen=True)
@@ -46,6 +49,9 @@ class RunJob:
     ros: bool = False
     time_limit: float | None = None
     error: str = ""         # the driver could not read the scenario or its map: the run is an error, saying why
+    planner: str = "standin"
+    planner_settings: str = ""
+    trajectory_dir: str | None = None
 
     def shared_part(self) -> tuple[str, str, "RunJob"]:
         """The map, which every run on the same map shares (`executors.SharesPart`)."""
@@ -70,7 +76,8 @@ def jobs(tasks: Iterable[RunTask]) -> Iterator[RunJob]:
             env = ScenarioEnvelope(id=t.scenario_id, xosc="", parent=t.parent, tree=t.tree,
                                    meta={"file": t.scenario_path})
             error = str(exc) if isinstance(exc, Txt2SceError) else f"{t.scenario_path}: {exc}"
-        yield RunJob(t.key, env, t.faults, t.seed, t.ros, t.time_limit, error)
+        yield RunJob(t.key, env, t.faults, t.seed, t.ros, t.time_limit, error, t.planner, t.planner_settings,
+                     t.trajectory_dir)
 
 
 def execute(job: RunJob) -> StoredRun:
@@ -81,10 +88,12 @@ def execute(job: RunJob) -> StoredRun:
         from ..contract import Verdict
 
         record = RunRecord(env.id, Verdict.ERROR, error=job.error)
-    elif job.ros:
-        from .ros_runs import run_over_ros
+    elif job.ros or job.planner != "standin":
+        from .ros_runs import PlannerSpec, run_over_ros
 
-        record = run_over_ros(env, scenario_id=env.id, faults=job.faults, time_limit=job.time_limit, seed=job.seed)
+        traj = str(Path(job.trajectory_dir) / f"{job.key}.npz") if job.trajectory_dir else None
+        record = run_over_ros(env, scenario_id=env.id, faults=job.faults, time_limit=job.time_limit, seed=job.seed,
+                              keep_trajectory=traj, planner=PlannerSpec(job.planner, job.planner_settings))
     else:
         from ..closed_loop import run_closed_loop
 
@@ -95,16 +104,23 @@ def execute(job: RunJob) -> StoredRun:
 
 
 def make_tasks(inputs: Sequence[str | Path], *, faults: tuple[str, ...] = (), seed: int = 0,
-               ros: bool = False, time_limit: float | None = None) -> list[RunTask]:
-    """One task per scenario file under `inputs` (files, directories, tree directories), keyed by content."""
+               ros: bool = False, time_limit: float | None = None, planner: str = "standin",
+               planner_settings: dict[str, Any] | None = None, planner_settings_file: str = "",
+               trajectory_dir: str | None = None) -> list[RunTask]:
+    """One task per scenario file under `inputs` (files, directories, tree directories), keyed by content and by
+    the planner set-up (name, settings), so runs of different planners never share a key."""
     tasks = []
-    config: dict[str, object] = {"planner": "standin", "faults": sorted(faults), "ros": ros}
+    ros = ros or planner != "standin"
+    config: dict[str, object] = {"planner": planner, "faults": sorted(faults), "ros": ros}
+    if planner_settings:
+        config["planner_settings"] = planner_settings
     if time_limit is not None:
         # only when set, so the keys of stores written without it stay valid
         config["time_limit"] = float(time_limit)
     for path, sid, parent, tree in iter_scenario_files(list(inputs)):
         key = run_key(Path(path).read_bytes(), config, seed)
-        tasks.append(RunTask(key, str(path), sid, tree, parent, tuple(sorted(faults)), seed, ros, time_limit))
+        tasks.append(RunTask(key, str(path), sid, tree, parent, tuple(sorted(faults)), seed, ros, time_limit,
+                             planner, planner_settings_file, trajectory_dir))
     return tasks
 
 

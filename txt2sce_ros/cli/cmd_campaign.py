@@ -41,6 +41,14 @@ def add_campaign_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fault", action="append", default=[], metavar="NAME",
                         help="switch on a stand-in planner fault mode (repeatable): "
                              f"{', '.join(Faults.names())}")
+    parser.add_argument("--planner", choices=("standin", "commonroad", "none"), default="standin",
+                        help="planner under test: the stand-in (default), CommonRoad's reactive planner "
+                             "(make sut-commonroad; runs over ROS), or none (your stack on $ROS_DOMAIN_ID)")
+    parser.add_argument("--planner-settings", default="", metavar="YAML",
+                        help="settings of a third-party planner adapter (default: its built-in settings)")
+    parser.add_argument("--baseline", choices=("standin",), default=None,
+                        help="also run the stand-in on the same scenarios; the report separates the planner's own "
+                             "failures (the baseline passes) from scenarios that defeat both")
     parser.add_argument("--ros", action="store_true",
                         help="run each scenario over the ROS 2 node graph (separate processes, DDS) instead of "
                              "the in-process cores")
@@ -70,7 +78,10 @@ def config_from_args(args: argparse.Namespace, out: Path):
                           faults=tuple(args.fault), ros=args.ros, max_seeds=args.max_seeds,
                           limit=args.limit, time_limit=args.time_limit, max_nodes=args.max_nodes,
                           progress=not args.no_progress, report=not getattr(args, "no_report", False),
-                          retry_errors=getattr(args, "retry_errors", False))
+                          retry_errors=getattr(args, "retry_errors", False),
+                          planner=getattr(args, "planner", "standin"),
+                          planner_settings=getattr(args, "planner_settings", ""),
+                          baseline=getattr(args, "baseline", None))
 
 
 def print_summary(summary) -> None:
@@ -93,6 +104,13 @@ def print_summary(summary) -> None:
         if runs.left:
             line += f", {runs.left} left for later (--limit; rerun without it to finish)"
         print(line)
+        p = summary.planner
+        settings = ", ".join(f"{k}={v}" for k, v in sorted(p.get("settings", {}).items()))
+        print(f"planner:    {p['name']} {p.get('version', '')} ({settings})")
+    for label, rs in (("runs:", runs), ("baseline:", summary.baseline_runs)):
+        if rs is not None:
+            verdicts = ", ".join(f"{v} {n}" for v, n in sorted(rs.verdicts.items())) or "none new"
+            print(f"{label:<11} {rs.ran} new ({verdicts}), {rs.skipped} already done")
     if summary.report:
         print(f"report:     {summary.report} (+ report.html)")
 
