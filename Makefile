@@ -1,12 +1,17 @@
 # Two commands do all the set-up on a fresh Debian 12 / Python 3.11 machine:
 #   make demo   -> creates .venv, installs everything from PyPI, runs the main job on bundled data
 #   make test   -> creates .venv, installs everything from PyPI, runs the test suite
+# and one for the third-party planner under test:
+#   make sut-commonroad -> creates .venv-commonroad (CommonRoad's reactive planner + the same ROS wheels)
 PY ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: setup demo test test-fast maps clean
+CR_VENV := .venv-commonroad
+CR_STAMP := $(CR_VENV)/.installed
+
+.PHONY: setup demo test test-fast maps clean sut-commonroad
 
 $(STAMP): requirements.txt requirements-dev.txt setup.py
 	$(PY) -m venv $(VENV)
@@ -17,11 +22,21 @@ $(STAMP): requirements.txt requirements-dev.txt setup.py
 
 setup: $(STAMP)
 
+# The planner's own environment (its protobuf pin clashes with ours); the adapter imports the checkout through
+# PYTHONPATH (sut_adapters/commonroad/venv.py), so only the planner stack and the ROS wheels are installed here.
+$(CR_STAMP): requirements-commonroad.txt
+	$(PY) -m venv $(CR_VENV)
+	$(CR_VENV)/bin/pip install -q --upgrade pip setuptools wheel
+	$(CR_VENV)/bin/pip install -q -r requirements-commonroad.txt
+	touch $(CR_STAMP)
+
+sut-commonroad: $(CR_STAMP)
+
 demo: $(STAMP)
 	$(BIN)/txt2sce demo --out demo_out
 
-test: $(STAMP)
+test: $(STAMP) $(CR_STAMP)
 	$(BIN)/python -m pytest -q tests
 
 clean:
-	rm -rf $(VENV) demo_out build install log .pytest_cache
+	rm -rf $(VENV) $(CR_VENV) demo_out build install log .pytest_cache

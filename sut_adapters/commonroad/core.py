@@ -67,6 +67,28 @@ class Stats:
                 "routes": self.routes, "setup_s": self.setup_s}
 
 
+#: Points of a reference path closer than this (m) are one point.
+MIN_SPACING = 0.1
+
+
+def clean_path(ref: np.ndarray) -> np.ndarray:
+    """The route planner's reference path without repeated points and without the back-and-forth folds that
+    appear where lanelet centre lines are joined (consecutive lanelets share their end points): the curvilinear
+    frame rejects any step turning by more than 90° ("Reference path misaligned")."""
+    pts = np.asarray(ref, dtype=float)
+    keep = [pts[0]]
+    for p in pts[1:]:
+        step = p - keep[-1]
+        if math.hypot(*step) < MIN_SPACING:
+            continue
+        if len(keep) >= 2:
+            prev = keep[-1] - keep[-2]
+            if float(step @ prev) <= 0.0:               # turns back: a fold, not a road
+                continue
+        keep.append(p)
+    return np.asarray(keep)
+
+
 class CommonRoadPlanner:
     """The reactive planner behind the `ControlCommand` interface of the closed loop (one instance per run)."""
 
@@ -146,7 +168,7 @@ class CommonRoadPlanner:
 
         self._pp = self._planning_problem(frame)
         self._planner.config.planning_problem = self._pp
-        ref = create_initial_ref_path(self.lmap.network, self._pp)
+        ref = clean_path(create_initial_ref_path(self.lmap.network, self._pp))
         self._co = create_coordinate_system(ref)
         self._planner.set_reference_path(coordinate_system=self._co)
         self.stats.routes += 1
