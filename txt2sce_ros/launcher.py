@@ -77,6 +77,8 @@ class GraphConfig:
 #: Wall-clock seconds the player waits for a command, per planner: a sampling planner in Python on a loaded
 #: 2-core machine takes up to ~10 s for its first cycle (map, road boundary, route) and ~1 s per cycle after.
 PLANNER_TIMEOUTS = {"commonroad": 60.0}
+#: Wall-clock seconds a whole campaign run may take, per planner (default 120 s; see campaign.ros_runs).
+RUN_TIMEOUTS = {"commonroad": 900.0}
 
 #: Planners the launcher can start: the stand-in, the adapters of sut_adapters/, or none (a user's stack).
 PLANNERS = ("standin", "commonroad", "none")

@@ -97,7 +97,7 @@ def _domain_for(planner: PlannerSpec, tag: str) -> Iterator[int]:
 
 
 def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | None = None,
-                 faults: tuple[str, ...] = (), keep_bag: str | Path | None = None, run_timeout: float = 120.0,
+                 faults: tuple[str, ...] = (), keep_bag: str | Path | None = None, run_timeout: float | None = None,
                  attempts: int = ATTEMPTS, time_limit: float | None = None, seed: int | None = None,
                  planner: PlannerSpec = PlannerSpec(), keep_trajectory: str | Path | None = None) -> RunRecord:
     """Run `scenario` through `txt2sce_ros.launcher.run_graph` and judge the recorded bag offline; a graph fault
@@ -108,8 +108,13 @@ def run_over_ros(scenario: str | Path | ScenarioEnvelope, *, scenario_id: str | 
     `planner`: which planner answers (a third-party adapter's per-run statistics land in
     `details['planner_stats']`; a crashed adapter is an error naming it, not retried). `keep_trajectory`: write
     every entity's judged path (t, x, y, heading, speed) there as .npz, for plots. An envelope (what a campaign
-    ships to a worker) is written to the run's temporary directory first."""
+    ships to a worker) is written to the run's temporary directory first. `run_timeout` (wall-clock s per run)
+    defaults per planner (`launcher.RUN_TIMEOUTS`, else 120 s)."""
+    from ..launcher import RUN_TIMEOUTS
+
     sid = scenario_id or (scenario.id if isinstance(scenario, ScenarioEnvelope) else Path(scenario).stem)
+    if run_timeout is None:
+        run_timeout = RUN_TIMEOUTS.get(planner.name, 120.0)
     t0 = time.perf_counter()
     faults_seen: list[str] = []
     record = RunRecord(sid, Verdict.ERROR, error="no attempt made")
