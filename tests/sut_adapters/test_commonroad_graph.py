@@ -18,16 +18,17 @@ WHY = available()
 pytestmark = pytest.mark.skipif(bool(WHY), reason=WHY)
 
 
-def _run(name: str, tmp_path: Path):
+def _run(name: str, tmp_path: Path, time_limit: float | None = None):
     traj = tmp_path / f"{name}.npz"
     rec = run_over_ros(SCENARIOS / f"{name}.xosc", planner=PlannerSpec("commonroad"), keep_trajectory=traj,
-                       run_timeout=400.0, attempts=2)
+                       run_timeout=800.0, attempts=1, time_limit=time_limit)
     assert rec.verdict.value != "error", rec.error
     with np.load(traj) as data:
         paths = {k: data[k] for k in data.files}
     return rec, paths
 
 
+@pytest.mark.timeout(1000)
 def test_parked_car_ahead_is_passed_clear_and_the_goal_reached(tmp_path: Path) -> None:
     rec, paths = _run("benign_parked_car", tmp_path)
     assert "Collision" not in rec.categories
@@ -45,12 +46,14 @@ def test_parked_car_ahead_is_passed_clear_and_the_goal_reached(tmp_path: Path) -
     assert stats["cycles"]["planned"] > 10
 
 
+@pytest.mark.timeout(1000)
 def test_red_light_is_never_entered_on_red(tmp_path: Path) -> None:
-    rec, paths = _run("benign_red_then_green", tmp_path)
-    # the oracle's red-light rule is a Misinterp violation; the ego must have stopped for the red and then gone
+    # red for the first 12 s, then green: 16 s simulated show the wait and the start
+    rec, paths = _run("benign_red_then_green", tmp_path, time_limit=16.0)
+    # the oracle's red-light rule is a Misinterp violation; the ego must have held at the line, then gone on green
     assert "Misinterp" not in rec.categories and "Collision" not in rec.categories
     ego = paths["ego"]
-    moving_after_stop = np.flatnonzero(ego[:, 4] < 0.1)
-    assert len(moving_after_stop), "the ego never stopped for the red light"
-    assert rec.details["planner_stats"]["stop_line_cycles"] > 0
-    assert rec.end_reason == "goal_reached"
+    red = ego[:, 0] < 11.5
+    assert ego[red, 4].max() < 0.5, "the ego moved on red"
+    assert rec.details["planner_stats"]["stop_line_cycles"] > 0       # it was the planner's stopping mode
+    assert ego[-1, 4] > 2.0, "the ego did not start on green"
