@@ -49,9 +49,6 @@ def _violation_label(v: dict[str, Any]) -> str:
 def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: int = FAILURE_PLOTS, *,
                   time_limit: float | None = None) -> list[tuple[str, bytes]]:
     """Re-run a few failures keeping trajectories (runs are deterministic) and draw them over the lanes."""
-    import numpy as np
-
-    from ..analysis.plots import lane_borders_near, trajectory_plot
     from ..closed_loop import run_closed_loop
 
     picked: list[dict[str, Any]] = []
@@ -69,23 +66,31 @@ def failure_plots(runs: list[dict[str, Any]], faults: tuple[str, ...], limit: in
                                        time_limit=time_limit)
         if traj is None:
             continue
-        lanes = lane_borders_near(r["file"], traj)
-        marks = []
-        for v in record.details.get("violations", []):
-            if len(marks) >= 3:
-                break
-            if "x" in v and "y" in v:
-                marks.append((float(v["x"]), float(v["y"]), _violation_label(v)))
-            elif "t" in v and len(traj.get("ego", ())):
-                # violations carry a time, not a place: mark where the ego was then
-                ego = traj["ego"]
-                t = float(v["t"])
-                marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
-                              f"{_violation_label(v)} @ {t:.1f} s"))
-        where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
-        caption = f"{where}: {', '.join(r['categories'])}"
-        out.append((caption, trajectory_plot(traj, lanes, caption, marks)))
+        out.append(_failure_plot(r, traj, record.details.get("violations", [])))
     return out
+
+
+def _failure_plot(r: dict[str, Any], traj: dict[str, Any], violations: list[dict[str, Any]]) -> tuple[str, bytes]:
+    """One failure's top-down plot: the lanes near it, every path, up to three violations marked."""
+    import numpy as np
+
+    from ..analysis.plots import lane_borders_near, trajectory_plot
+
+    marks = []
+    for v in violations:
+        if len(marks) >= 3:
+            break
+        if "x" in v and "y" in v:
+            marks.append((float(v["x"]), float(v["y"]), _violation_label(v)))
+        elif "t" in v and len(traj.get("ego", ())):
+            # violations carry a time, not a place: mark where the ego was then
+            ego = traj["ego"]
+            t = float(v["t"])
+            marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
+                          f"{_violation_label(v)} @ {t:.1f} s"))
+    where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
+    caption = f"{where}: {', '.join(r['categories'])}"
+    return caption, trajectory_plot(traj, lane_borders_near(r["file"], traj), caption, marks)
 
 
 def _git_commit() -> str:
@@ -191,8 +196,6 @@ def trajectory_failure_plots(runs: list[dict[str, Any]], traj_dir: Path, limit: 
     in-process): one per category, most frequent first."""
     import numpy as np
 
-    from ..analysis.plots import trajectory_plot
-
     out: list[tuple[str, bytes]] = []
     seen: set[str] = set()
     for r in runs:
@@ -203,16 +206,7 @@ def trajectory_failure_plots(runs: list[dict[str, Any]], traj_dir: Path, limit: 
         seen.update(r["categories"])
         with np.load(path) as data:
             traj = {k: data[k] for k in data.files}
-        marks = []
-        ego = traj.get("ego")
-        for v in r["record"].get("details", {}).get("violations", [])[:3]:
-            if "t" in v and ego is not None and len(ego):
-                t = float(v["t"])
-                marks.append((float(np.interp(t, ego[:, 0], ego[:, 1])), float(np.interp(t, ego[:, 0], ego[:, 2])),
-                              f"{v.get('category', '')} @ {t:.1f} s"))
-        where = f"{r['tree']}/{r['scenario_id']}" if r.get("tree") else r["scenario_id"]
-        caption = f"{where}: {', '.join(r['categories'])}"
-        out.append((caption, trajectory_plot(traj, _lane_borders(r["file"], traj), caption, marks)))
+        out.append(_failure_plot(r, traj, r["record"].get("details", {}).get("violations", [])))
         if len(out) >= limit:
             break
     return out
