@@ -165,7 +165,10 @@ class LockStepPlannerNode(Node):
     def _send(self, msg: TwistStamped) -> None:
         """Publish a command; while discovery has not yet matched the player's subscription (the player can see
         us before we see it), hold it and retry, since a volatile message sent to nobody is lost and lock-step
-        would stall until the player's timeout."""
+        would stall until the player's timeout. After shutdown (Ctrl-C while a slow planner was still planning)
+        the answer has no one to go to and is dropped, rather than raising in the middle of the node's exit."""
+        if not self.context.ok():
+            return
         if self.pub.get_subscription_count() > 0:
             self.pub.publish(msg)
             return
