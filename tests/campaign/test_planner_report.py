@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from txt2sce_ros.campaign.reporting import report_from_store
-from txt2sce_ros.campaign.runs import execute, make_tasks
+from txt2sce_ros.campaign.runs import execute, jobs, make_tasks
 from txt2sce_ros.campaign.store import ResultStore, StoredRun
 from txt2sce_ros.closed_loop import run_closed_loop
 
@@ -29,7 +29,7 @@ def test_report_names_the_planner_and_separates_own_failures(seed_dir: Path, tmp
     with ResultStore(tmp_path / "results.sqlite") as store:
         store.set_meta("planner", info)
         store.set_meta("baseline", {"name": "standin", "version": "x", "settings": {}})
-        base_verdicts = [store.add(run) and run.verdict for run in map(execute, baseline)]
+        base_verdicts = [store.add(run) and run.verdict for run in map(execute, jobs(baseline))]
         # the planner under test fails every scenario (Smooth), with the trajectory a graph run keeps: its own
         # failures are the scenarios the baseline passes, the rest defeat both
         for t in tasks:
