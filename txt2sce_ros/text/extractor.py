@@ -16,7 +16,7 @@ from . import fastre as fre
 from .actions import find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
-from .relations import place
+from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import collision_type, ego_sequence, prepend_modifier_acts, sequence
@@ -106,6 +106,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if subj:
             fallback = -1 if subj[-1].kind in ("ego", "egod") else subj[-1].entity
     find_contact(d)
+    d.av_lane = av_lane_rank(d)  # read once: every party's lane named on the road is compared with it
     parties, obstacles = counted(d)
     first_pos = None
     for e in parties + obstacles:

@@ -157,7 +157,7 @@ def av_lane_rank(d: Doc) -> float | None:
 def gather(d: Doc, e: Entity) -> list[Cue]:
     """Every cue the narrative states about party `e`, in text order."""
     cues: list[Cue] = []
-    own = av_lane_rank(d)
+    own = d.av_lane
     for sent, a, b in _mention_windows(d, e):
         s = d.sents[sent]
         win = TURN_WORDS.sub(lambda m: " " * len(m.group(0)), s[a:b])

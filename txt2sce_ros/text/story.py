@@ -58,6 +58,7 @@ class Doc:
     doors: dict[int, int] = field(default_factory=dict)  # door entity -> owner entity
     struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
     starts: list[int] = field(default_factory=list)  # offset of each sentence in `text`
+    av_lane: float | None = None  # the AV's own lane, 0 leftmost .. 9 rightmost (relations.av_lane_rank), if named
 
     def offset(self, sent: int) -> int:
         """Where sentence `sent` starts in the normalised text."""
