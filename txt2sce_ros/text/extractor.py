@@ -20,7 +20,7 @@ from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import collision_type, ego_sequence, prepend_modifier_acts, sequence
-from .story import (BOILERPLATE, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
+from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
 
 
@@ -160,6 +160,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         start, acts = sequence(pacts, stopped=stopped, ego=False, side=lane)
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5":
             acts = "a" + acts  # it travelled along the AV's road before turning off it
+        if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \
+                not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):
+            acts = "m"  # a pedestrian on the move in a collision report is crossing the AV's path (sketch.md, `m`)
         if start == "moving" and not acts:
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
         side = next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")

@@ -37,7 +37,7 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 start = "stopped"
                 continue
             c = "h"
-        if not codes and c == "k" and not ego:
+        if not codes and c == "k":  # backing away is from a standstill (sketch.md)
             start = "stopped"
         if not codes and c == "h" and not ego:
             start = "stopped"
