@@ -115,12 +115,36 @@ def graph_commands(cfg: GraphConfig) -> dict[str, list[str]]:
 
 class GraphCodes(dict):
     """Each process's exit code, plus what ended the graph: `early` the nodes that exited before the generator
-    was done (name -> exit code), `timed_out` whether the generator outlived the timeout."""
+    was done (name -> exit code), `timed_out` whether the generator outlived the timeout, and then `stuck`: each
+    process still running at the timeout -> what it was doing (`describe_live`), so an error can name it."""
 
     def __init__(self) -> None:
         super().__init__()
         self.early: dict[str, int] = {}
         self.timed_out = False
+        self.stuck: dict[str, str] = {}
+
+
+_STATES = {"R": "running", "S": "waiting", "D": "blocked on I/O", "T": "stopped by a signal", "t": "stopped by a tracer",
+           "Z": "exited, not reaped"}
+
+
+def describe_live(pid: int, log: Path | None = None) -> str:
+    """What a live process is doing, from /proc and its log: 'waiting, 1.2 s CPU, last log 40 s ago: "..."'.
+    A stopped or spinning process is the one to look at; one that has been waiting while its log went quiet
+    waits on another."""
+    parts = []
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        ticks = os.sysconf("SC_CLK_TCK")
+        parts += [_STATES.get(stat[0], stat[0]), f"{(int(stat[11]) + int(stat[12])) / ticks:.1f} s CPU"]
+    except (OSError, IndexError, ValueError):
+        parts.append("state unknown")
+    if log is not None and log.is_file():
+        lines = [ln for ln in log.read_text(encoding="utf-8", errors="replace").splitlines() if ln.strip()]
+        age = time.time() - log.stat().st_mtime
+        parts.append(f'last log {age:.0f} s ago: "{lines[-1].strip()[:120]}"' if lines else "no log output")
+    return ", ".join(parts)
 
 
 def describe_exit(code: int) -> str:
@@ -159,6 +183,8 @@ def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) 
         while gen.poll() is None:
             if time.monotonic() >= deadline:
                 codes.timed_out = True
+                codes.stuck = {n: describe_live(p.pid, log_dir / f"{n}.log") for n, p in procs.items()
+                               if p.poll() is None}
                 break
             dead = [n for n, p in procs.items() if n != "generator" and p.poll() is not None]
             if dead:

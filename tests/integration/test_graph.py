@@ -75,3 +75,45 @@ def test_graph_over_dds_moves_the_ego_records_and_judges_like_batch(seed_file: P
     batch, _ = run_closed_loop(seed_file)
     assert offline.verdict.value == batch.verdict.value, (offline.summary(), batch.to_dict())
     assert set(offline.category_names()) == set(batch.categories)
+
+
+@pytest.mark.timeout(120)
+def test_a_stuck_node_is_named_with_what_it_was_doing(seed_file: Path, tmp_path: Path) -> None:
+    """A node that hangs (here the player, frozen with SIGSTOP once it is up) stalls the graph until the timeout;
+    the graph's codes then name every process still running and its state, so the stored error says which one
+    to look at."""
+    import os
+    import signal
+    import threading
+    import time
+
+    env = ros_test_env(tmp_path)
+    log_dir = Path(env["ROS_LOG_DIR"])
+    frozen: list[int] = []
+
+    def freeze_player() -> None:
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and not frozen:
+            for entry in os.listdir("/proc"):
+                if entry.isdigit():
+                    try:
+                        cmd = Path(f"/proc/{entry}/cmdline").read_bytes()
+                        environ = Path(f"/proc/{entry}/environ").read_bytes()
+                    except OSError:
+                        continue
+                    if b"scenario_player_node" in cmd and f"ROS_LOG_DIR={log_dir}".encode() in environ:
+                        time.sleep(0.5)  # let it start; a frozen player stalls the graph whenever it stops
+                        os.kill(int(entry), signal.SIGSTOP)
+                        frozen.append(int(entry))
+                        break
+            time.sleep(0.2)
+
+    t = threading.Thread(target=freeze_player, daemon=True)
+    t.start()
+    codes = run_graph(GraphConfig(scenarios=[str(seed_file)], bag_dir=str(tmp_path / "bags"), log_dir=str(log_dir),
+                                  domain_id=int(env["ROS_DOMAIN_ID"])), timeout=25, quiet=True)
+    t.join(5)
+    assert frozen, "the player process was never seen"
+    assert codes.timed_out
+    assert "stopped by a signal" in codes.stuck.get("player", ""), codes.stuck
+    assert all(not what.startswith("stopped") for name, what in codes.stuck.items() if name != "player"), codes.stuck

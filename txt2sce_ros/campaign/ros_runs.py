@@ -175,7 +175,8 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                             for name, code in sorted(codes.early.items()))
             return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         if codes.timed_out:
-            why = f"the graph did not finish within {run_timeout + 60.0:g} s (stuck process; exit codes {dict(codes)})"
+            live = "; ".join(f"{name}: {what}" for name, what in codes.stuck.items()) or "none"
+            why = f"the graph did not finish within {run_timeout + 60.0:g} s; still running then: {live}"
             return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         bags = sorted(p for p in bag_dir.rglob("metadata.yaml")) if bag_dir.exists() else []
         if not bags:
