@@ -138,9 +138,9 @@ def test_dialogue_protocol_and_merge(server: ChatServer, tmp_path: Path, monkeyp
         assert [m["role"] for m in body["messages"]] == ["system"] + ["user", "assistant"] * k + ["user"]
         assert f"STEP {k + 1} of 5" in body["messages"][-1]["content"]
     assert "scooterist" in server.log[0]["body"]["messages"][1]["content"]  # the narrative goes in step 1
-    cached = list((tmp_path / "cache").rglob("*.json"))
+    cached = list((tmp_path / "cache").rglob("*.answer"))
     assert len(cached) == 5
-    assert all(KEY not in p.read_text(encoding="utf-8") for p in cached)
+    assert all(KEY.encode() not in p.read_bytes() for p in cached)
 
 
 def test_cache_hit_makes_no_request(server: ChatServer, tmp_path: Path) -> None:
@@ -155,6 +155,19 @@ def test_cache_hit_makes_no_request(server: ChatServer, tmp_path: Path) -> None:
     other_model.extract(_text(), RID)
     assert len(server.log) == 10  # the cache key includes the model
 
+
+
+def test_a_cache_entry_that_does_not_verify_is_asked_again(server: ChatServer, tmp_path: Path) -> None:
+    """An answer written into the cache by anyone without the key (or damaged) never reaches a sketch."""
+    import pickle
+
+    first = _extractor(server, tmp_path / "cache").extract(_text(), RID)
+    entries = sorted((tmp_path / "cache").rglob("*.answer"))
+    forged = pickle.dumps({"model": "recorded-model", "content": '{"npcs": []}'})
+    entries[0].write_bytes(b"\0" * 32 + forged)   # a well-formed entry with a tag made without the key
+    again = _extractor(server, tmp_path / "cache")
+    assert again.extract(_text(), RID) == first
+    assert again.client.requests_made == 1 and again.client.cache_hits == 4
 
 def test_retries_on_5xx_then_succeeds(server: ChatServer, tmp_path: Path) -> None:
     server.fail_status = [503, 500]
@@ -259,4 +272,4 @@ def test_cli_llm_backend_flags_and_env(server: ChatServer, tmp_path: Path, monke
     assert Sketch.from_dict(json.loads(line)) == _gold()
     assert {r["auth"] for r in server.log} == {f"Bearer {KEY}"} and len(server.log) == 5
     assert KEY not in out.read_text(encoding="utf-8")
-    assert all(KEY not in p.read_text(encoding="utf-8") for p in (tmp_path / "cache").rglob("*.json"))
+    assert all(KEY.encode() not in p.read_bytes() for p in (tmp_path / "cache").rglob("*.answer"))

@@ -6,9 +6,9 @@ contact -> road and conditions (prompts in `txt2sce_ros/text/prompts/`). Each an
 against its fragment of the sketch schema; an invalid answer is re-asked with the problem named (bounded), and the
 five answers are merged into one sketch, validated as a whole.
 
-Answers are cached on disk keyed by model + a hash of the whole prompt (all messages), so a rerun asks nothing and
-gives the same bytes. The API key comes only from the environment (`TXT2SCE_LLM_API_KEY`, else `DEEPSEEK_API_KEY`);
-it is sent in the Authorization header and never logged, cached or written.
+Answers are cached on disk keyed by server, model and a hash of the whole prompt (all messages), so a rerun asks
+nothing and gives the same bytes; entries are HMAC-signed (`signed_cache`), and one that does not verify is asked
+again. The API key comes only from the environment (`TXT2SCE_LLM_API_KEY`, else `DEEPSEEK_API_KEY`); it is sent in the Authorization header and never logged, cached or written.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InputError, SimulationFault
+from .. import signed_cache
 from ..paths import cache_dir
 from ..sketch import Sketch, load_schema, validate_sketch_dict
 
@@ -125,23 +126,19 @@ class ChatClient:
                                          "messages": messages, "temperature": self.config.temperature},
                                         sort_keys=True, ensure_ascii=False).encode()).hexdigest()
         safe_model = re.sub(r"[^\w.-]+", "_", self.config.model)
-        return root / safe_model / key[:2] / f"{key}.json"
+        return root / safe_model / key[:2] / f"{key}.answer"
 
     def complete(self, messages: list[dict[str, str]]) -> str:
         """The assistant's answer to `messages` (from the cache when this exact prompt was asked before)."""
         path = self._cache_path(messages)
-        if path.exists():
-            try:
-                self.cache_hits += 1
-                return json.loads(path.read_text(encoding="utf-8"))["content"]
-            except (json.JSONDecodeError, KeyError, OSError):
-                pass  # a damaged cache entry is asked again
+        # Signed like the map caches (signed_cache): an answer someone else put in the cache directory would
+        # become a sketch unchecked; one that does not verify (or is damaged) is asked again.
+        entry = signed_cache.load(path)
+        if isinstance(entry, dict) and isinstance(entry.get("content"), str):
+            self.cache_hits += 1
+            return entry["content"]
         content = self._post(messages)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(".tmp")
-        tmp.write_text(json.dumps({"model": self.config.model, "content": content}, ensure_ascii=False),
-                       encoding="utf-8")
-        tmp.replace(path)
+        signed_cache.store(path, {"model": self.config.model, "content": content})
         return content
 
     def _post(self, messages: list[dict[str, str]]) -> str:
