@@ -8,7 +8,8 @@ five answers are merged into one sketch, validated as a whole.
 
 Answers are cached on disk keyed by server, model and a hash of the whole prompt (all messages), so a rerun asks
 nothing and gives the same bytes; entries are HMAC-signed (`signed_cache`), and one that does not verify is asked
-again. The API key comes only from the environment (`TXT2SCE_LLM_API_KEY`, else `DEEPSEEK_API_KEY`); it is sent in the Authorization header and never logged, cached or written.
+again. The API key comes only from the environment (`TXT2SCE_LLM_API_KEY`, else `DEEPSEEK_API_KEY`); it is sent in
+the Authorization header and never logged, cached or written.
 """
 
 from __future__ import annotations
