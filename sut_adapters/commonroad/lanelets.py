@@ -24,8 +24,19 @@ from txt2sce_ros.road import LaneRef, RoadNetwork
 
 #: Border sample spacing (m): fine enough for the curvilinear frame on junction arcs.
 DS = 1.0
+#: Border points a straight chord passes within this distance (m) of are dropped: the planner's road boundary has
+#: one rectangle per border segment and its collision checker copies all of them for every pose it checks, so a
+#: 200 m straight sampled every metre made one planning cycle take seconds; arcs keep their points.
+SIMPLIFY_TOL = 0.01
+#: ... but never further apart than this (m), so that every lanelet keeps a centre line the route planner can
+#: resample and locate positions on.
+MAX_SPACING = 10.0
+#: Lane ends closer than this (m) are one point: ends sampled from two roads' geometries differ by rounding, and the
+#: union of the lanelets then keeps a slit at the seam that CommonRoad's road boundary turns into a wall across
+#: the lane (the planner would not drive into a junction).
+SNAP_TOL = 1e-3
 #: Bump when the construction changes, so stale cached networks are not reused.
-BUILD_VERSION = 2
+BUILD_VERSION = 3
 
 
 @dataclass
@@ -62,18 +73,64 @@ def _side_neighbour(net: RoadNetwork, ref: LaneRef, side: str, known: set[LaneRe
     return other, net.lane_forward(ref.road_id, lid, sec_s) == forward
 
 
+def _keep_points(left: np.ndarray, right: np.ndarray, tol: float) -> np.ndarray:
+    """Indices of the border points to keep (Douglas-Peucker on both borders at once, so they stay paired)."""
+    keep = np.zeros(len(left), dtype=bool)
+    keep[0] = keep[-1] = True
+    stack = [(0, len(left) - 1)]
+    while stack:
+        i, j = stack.pop()
+        if j - i < 2:
+            continue
+        worst, k_worst = 0.0, -1
+        for pts in (left, right):
+            a, b = pts[i], pts[j]
+            ab = b - a
+            n = float(np.hypot(*ab))
+            seg = pts[i + 1:j] - a
+            d = np.abs(ab[0] * seg[:, 1] - ab[1] * seg[:, 0]) / n if n > 1e-9 else np.hypot(seg[:, 0], seg[:, 1])
+            k = int(np.argmax(d))
+            if d[k] > worst:
+                worst, k_worst = float(d[k]), i + 1 + k
+        if worst > tol or float(np.hypot(*(left[j] - left[i]))) > MAX_SPACING:
+            k_worst = k_worst if worst > tol else (i + j) // 2
+            keep[k_worst] = True
+            stack += [(i, k_worst), (k_worst, j)]
+    return np.flatnonzero(keep)
+
+
+def _snap_ends(borders: dict[LaneRef, tuple[np.ndarray, np.ndarray]], tol: float) -> None:
+    """Make lane ends that coincide within `tol` the same point (in place), the first one seen standing for all."""
+    seen: list[np.ndarray] = []
+    for left, right in borders.values():
+        for pts in (left, right):
+            for idx in (0, -1):
+                p = pts[idx]
+                for q in seen:
+                    if abs(p[0] - q[0]) <= tol and abs(p[1] - q[1]) <= tol:
+                        pts[idx] = q
+                        break
+                else:
+                    seen.append(p.copy())
+
+
 def build_lanelet_map(net: RoadNetwork) -> LaneletMap:
     """Build the lanelet network of `net` (no cache; see `lanelet_map`)."""
     refs = _driving_refs(net)
     known = set(refs)
     ids = {ref: i + 1 for i, ref in enumerate(refs)}
-    lanelets = []
+    borders = {}
     for ref in refs:
         left, right = net.lane_borders(ref.road_id, ref.lane_id, DS, section=ref.section)
         n = min(len(left), len(right))
-        left, right = np.asarray(left[:n], dtype=float), np.asarray(right[:n], dtype=float)
         if n < 2:
             continue
+        left, right = np.asarray(left[:n], dtype=float), np.asarray(right[:n], dtype=float)
+        idx = _keep_points(left, right, SIMPLIFY_TOL)
+        borders[ref] = (left[idx], right[idx])
+    _snap_ends(borders, SNAP_TOL)
+    lanelets = []
+    for ref, (left, right) in borders.items():
         centre = 0.5 * (left + right)
         succ = [ids[s] for s in net.successors(ref) if s in ids]
         pred = [ids[p] for p in net.predecessors(ref) if p in ids]
