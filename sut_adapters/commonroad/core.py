@@ -106,6 +106,9 @@ class CommonRoadPlanner:
         self._co = None
         self._scenario = None
         self._road_boundary = None
+        self._boundary_shapes: list = []
+        self._boundary_centres = np.zeros((0, 2))
+        self._boundary_extents = np.zeros(0)
         self._pp = None
         self._last_t: float | None = None
         self._dt = 0.05                                  # until two frames show the player's step
@@ -141,6 +144,11 @@ class CommonRoadPlanner:
         cfg.update(scenario=self._scenario, planning_problem=self._pp)
         self._planner = ReactivePlanner(cfg)
         _, self._road_boundary = create_road_boundary_obstacle(self._scenario, method="obb_rectangles")
+        shapes = self._road_boundary.unpack()
+        if all(hasattr(sh, "r_x") for sh in shapes):
+            self._boundary_shapes = shapes
+            self._boundary_centres = np.array([sh.center() for sh in shapes], dtype=float).reshape(-1, 2)
+            self._boundary_extents = np.array([math.hypot(sh.r_x(), sh.r_y()) for sh in shapes], dtype=float)
         self._route(frame)
 
     def _planning_problem(self, frame: Frame):
@@ -216,6 +224,24 @@ class CommonRoadPlanner:
             self.stats.first_exception = f"t={frame.t:.2f}: {type(exc).__name__}: {exc}"[:300]
         self.plan, self.braking = None, True
 
+    def _boundary_near(self, frame: Frame):
+        """The road boundary's rectangles that a trajectory of this cycle can reach: the planner checks every pose
+        against a copy of the whole boundary (`time_slice`, linear in its rectangles), which made a cycle take
+        seconds on a junction map. Nothing beyond the reach can collide, so the answer is the same."""
+        import commonroad_dc.pycrcc as pycrcc
+
+        if not self._boundary_shapes:
+            return self._road_boundary
+        ego = frame.ego
+        horizon = self.s.planner_dt * self.s.horizon_steps
+        a_max = self._planner.vehicle_params.a_max          # trajectories above it fail the kinematic check first
+        reach = max(ego.speed, 0.0) * horizon + 0.5 * a_max * horizon ** 2 + ego.length + 1.0
+        dist = np.hypot(self._boundary_centres[:, 0] - ego.x, self._boundary_centres[:, 1] - ego.y)
+        group = pycrcc.ShapeGroup()
+        for i in np.flatnonzero(dist <= reach + self._boundary_extents):
+            group.add_shape(self._boundary_shapes[i])
+        return group
+
     def _ego_state(self, frame: Frame):
         from commonroad_rp.state import ReactivePlannerState
 
@@ -235,7 +261,7 @@ class CommonRoadPlanner:
             sc.remove_obstacle(o)
         for i, e in enumerate(frame.objects):
             sc.add_objects(obstacle(e, 100000 + i, self.s.planner_dt, self.s.horizon_steps))
-        p.set_collision_checker(scenario=sc, road_boundary_obstacle=self._road_boundary)
+        p.set_collision_checker(scenario=sc, road_boundary_obstacle=self._boundary_near(frame))
         x0 = self._ego_state(frame)
         s_d = self._co.convert_to_curvilinear_coords(frame.ego.x, frame.ego.y)
         if abs(s_d[1]) > self.s.reroute_offset:
