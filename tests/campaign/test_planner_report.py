@@ -53,5 +53,7 @@ def test_report_names_the_planner_and_separates_own_failures(seed_dir: Path, tmp
     assert f"| commonroad fails, standin passes (the planner's own failures) | {own} |" in text
     assert f"| both fail (the scenario defeats both) | {base_verdicts.count('fail')} |" in text
     assert "Replanning: 22 planning cycles" in text and "no_feasible_trajectory 2" in text
+    # the baseline's speed on the same scenarios, beside the planner's
+    assert "Speed: " in text and "Baseline speed (standin, in-process, same scenarios): " in text
     figures = sorted((tmp_path / "report").glob("fig_failure*.png"))
     assert len(figures) == 1            # one plot per category: both runs are Smooth

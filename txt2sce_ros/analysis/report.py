@@ -31,6 +31,7 @@ class CampaignResults:
     planner: dict[str, Any] | None = None            # the planner under test: name, version, settings
     baseline: dict[str, Any] | None = None           # the baseline planner of a differential campaign
     differential: dict[str, list[dict[str, Any]]] | None = None   # campaign.reporting.differential
+    baseline_runs: list[dict[str, Any]] = field(default_factory=list)   # the baseline's runs, same scenarios
 
 
 @dataclass
@@ -136,13 +137,25 @@ def _planner_line(label: str, p: Mapping[str, Any]) -> str:
     return f"{label}: **{p.get('name')}** {p.get('version', '')}" + (f" (settings: {settings})" if settings else "")
 
 
+def _per_hour(runs: list[dict[str, Any]]) -> str | None:
+    walls = [float(r["record"].get("wall_time", 0.0)) for r in runs if r.get("record")]
+    if not walls or sum(walls) <= 0:
+        return None
+    return (f"{3600.0 * len(walls) / sum(walls):.0f} scenarios per hour of run wall time "
+            f"(mean {sum(walls) / len(walls):.1f} s per run, one worker)")
+
+
 def _speed_lines(res: CampaignResults) -> list[str]:
-    """Scenarios per hour of wall time, and the planner's replanning cadence when it reported its cycles."""
-    walls = [float(r["record"].get("wall_time", 0.0)) for r in res.runs if r.get("record")]
+    """Scenarios per hour of wall time (beside the baseline's on the same scenarios, in the same campaign), and
+    the planner's replanning cadence when it reported its cycles."""
     out: list[str] = []
-    if walls and sum(walls) > 0:
-        out += ["", f"Speed: {3600.0 * len(walls) / sum(walls):.0f} scenarios per hour of run wall time "
-                   f"(mean {sum(walls) / len(walls):.1f} s per run, one worker)."]
+    speed = _per_hour(res.runs)
+    if speed:
+        out += ["", f"Speed: {speed}."]
+    base = _per_hour(res.baseline_runs)
+    if speed and base:
+        out += ["", f"Baseline speed ({(res.baseline or {}).get('name', 'baseline')}, in-process, same scenarios): "
+                    f"{base}."]
     stats = [r["record"]["details"]["planner_stats"] for r in res.runs
              if r.get("record") and "planner_stats" in r["record"].get("details", {})]
     if stats:
@@ -151,8 +164,10 @@ def _speed_lines(res: CampaignResults) -> list[str]:
                   if "planner_stats" in r.get("record", {}).get("details", {}))
         total = sum(cycles.values())
         mean = sum(s["plan_time_mean_s"] * sum(s["cycles"].values()) for s in stats) / max(1, total)
+        worst = max(float(s.get("plan_time_max_s", 0.0)) for s in stats)
         out += ["", f"Replanning: {total} planning cycles over {sim:.0f} s of simulated time "
-                    f"({total / max(sim, 1e-9):.2f} Hz); mean planning time {mean:.2f} s wall; outcomes: "
+                    f"({total / max(sim, 1e-9):.2f} Hz); mean planning time {mean:.2f} s wall, longest "
+                    f"{worst:.2f} s; outcomes: "
                 + ", ".join(f"{k} {v}" for k, v in cycles.items())
                 + f"; runs with a braking fallback: {sum(1 for s in stats if s.get('braking_steps'))}."]
     return out

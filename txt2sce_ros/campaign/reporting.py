@@ -232,7 +232,8 @@ def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir:
     res.planner = store.meta("planner", None)
     if baseline_tasks:
         res.baseline = store.meta("baseline", None)
-        res.differential = differential(runs, _runs(store, baseline_tasks))
+        res.baseline_runs = _runs(store, baseline_tasks)
+        res.differential = differential(runs, res.baseline_runs)
     traj_dir = next((Path(t.trajectory_dir) for t in tasks if t.trajectory_dir), None)
     if traj_dir is not None:
         res.failure_plots = trajectory_failure_plots(runs, traj_dir)
