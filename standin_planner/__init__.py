@@ -2,9 +2,11 @@
 swapping in a real ADS is visibly a swap. Core (no rclpy): `Planner(network, goal, params, faults=...)`,
 `planner.step(frame) -> ControlCommand`; the ROS 2 node is `standin_planner.node`."""
 
-from .environment import friction_from_xosc
-from .faults import Faults
-from .params import PlannerParams
-from .planner import Decision, Planner
+from txt2sce_ros.lazy import lazy_exports
+
+# Lazy: `txt2sce play` needs only the fault names; the planner (road model, numpy) loads when it is used.
+__getattr__, __dir__ = lazy_exports(__name__, {"friction_from_xosc": ".environment", "Faults": ".faults",
+                                               "PlannerParams": ".params", "Decision": ".planner",
+                                               "Planner": ".planner"})
 
 __all__ = ["Decision", "Faults", "Planner", "PlannerParams", "friction_from_xosc"]

@@ -36,7 +36,8 @@ class World:
         self.dt = dt
         self.t = 0.0
         self.step_index = 0
-        self.rng = np.random.default_rng(seed)
+        self.seed = seed
+        self._rng: np.random.Generator | None = None
         self.friction = 1.0
         self.parameters = dict(parameters)
         self.source = source
@@ -51,6 +52,14 @@ class World:
         self.global_runs: list[Run] = []
 
     # -- lookups --------------------------------------------------------------------------------------------------
+    @property
+    def rng(self) -> np.random.Generator:
+        """The run's seeded generator, made on first use: importing numpy.random is a cold start's cost, and no
+        element draws from it yet."""
+        if self._rng is None:
+            self._rng = np.random.default_rng(self.seed)
+        return self._rng
+
     def entity(self, name: str) -> Entity:
         try:
             return self.entities[name]

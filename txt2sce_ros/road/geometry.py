@@ -15,7 +15,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.special import fresnel
 
 #: Curvature rate below which a spiral is evaluated as an arc (Fresnel scaling becomes ill-conditioned).
 _MIN_CURV_RATE = 1e-12
@@ -131,6 +130,8 @@ class Spiral(Geometry):
         a = math.sqrt(math.pi / abs(c))
         sign = 1.0 if c > 0 else -1.0
         u0 = self.k0 / c
+        from scipy.special import fresnel   # here, not at import: scipy.special costs a cold start ~0.1 s
+
         s0, c0 = fresnel(u0 / a)
         s1, c1 = fresnel((u0 + ds) / a)
         dx = a * (c1 - c0)
@@ -275,7 +276,7 @@ class PlanView:
         if len(self.geometries) == 1:
             x[:], y[:], h[:] = self.geometries[0].evaluate(s_arr - self.geometries[0].s)
         else:
-            for gi in np.unique(idx):
+            for gi in sorted(set(idx.tolist())):   # = np.unique(idx), without importing numpy.ma
                 m = idx == gi
                 g = self.geometries[gi]
                 x[m], y[m], h[m] = g.evaluate(s_arr[m] - g.s)
@@ -285,7 +286,7 @@ class PlanView:
         s_arr = np.atleast_1d(np.asarray(s, dtype=float))
         out = np.empty_like(s_arr)
         idx = self._groups(s_arr)
-        for gi in np.unique(idx):
+        for gi in sorted(set(idx.tolist())):   # = np.unique(idx), without importing numpy.ma
             m = idx == gi
             g = self.geometries[gi]
             out[m] = g.curvature(s_arr[m] - g.s)

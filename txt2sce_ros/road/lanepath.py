@@ -11,12 +11,13 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from ..errors import InputError
 from .model import LaneRef
 
 if TYPE_CHECKING:   # pragma: no cover
+    from scipy.spatial import cKDTree
+
     from .network import RoadNetwork
 
 #: Sample spacing along the path (m).
@@ -180,6 +181,8 @@ class LanePath:
             i = lo + int(np.argmin((seg_x - x) ** 2 + (seg_y - y) ** 2))
         else:
             if self._tree is None:
+                from scipy.spatial import cKDTree   # on first use: scipy is a cold start's largest import
+
                 self._tree = cKDTree(np.column_stack([self._x, self._y]), balanced_tree=False, compact_nodes=False)
             i = int(self._tree.query([x, y])[1])
         best = (np.inf, 0.0, 0.0)

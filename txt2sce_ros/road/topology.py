@@ -13,13 +13,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-import networkx as nx
 import numpy as np
 
 from ..errors import InputError
 from .model import LaneRef, Road, RoadLink
 
 if TYPE_CHECKING:   # pragma: no cover
+    import networkx as nx
+
     from .network import RoadNetwork
 
 #: Lane types a vehicle may drive on and route through (OpenDRIVE 1.4–1.7 names).
@@ -207,6 +208,8 @@ def lane_length(net: "RoadNetwork", ref: LaneRef) -> float:
 def build_routing_graph(net: "RoadNetwork") -> nx.DiGraph:
     """Lane-level graph over drivable lanes: 'follow' edges (weight = length of the lane left behind) and
     'change_left'/'change_right' edges between same-direction neighbours (weight LANE_CHANGE_COST)."""
+    import networkx as nx   # on first use: a cold start that never routes does not pay for networkx
+
     succ, _ = _relations(net)
     g = nx.DiGraph()
     for ref in succ:
@@ -233,6 +236,8 @@ def route(net: "RoadNetwork", start: LaneRef, goal: LaneRef) -> list[LaneRef]:
     for ref in (start, goal):
         if ref not in g:
             raise InputError(f"lane {ref} is not drivable", source=net.source, element="lane")
+    import networkx as nx
+
     try:
         return list(nx.shortest_path(g, start, goal, weight="weight"))
     except nx.NetworkXNoPath:

@@ -18,14 +18,17 @@ import tempfile
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..contract import EntityState
 from ..errors import Txt2SceError
-from ..sketch import ErrorRecord, Sketch
-from .generate import SeedResult, fidelity_target, generate_seed
 from .kinematics import box_corners, boxes_gap
+
+if TYPE_CHECKING:   # pragma: no cover
+    from ..sketch import ErrorRecord, Sketch
+    from .generate import SeedResult
 
 TTC_LIMIT = 1.5
 TTC_STEP = 0.1
@@ -91,10 +94,20 @@ def first_contacts(frames: Iterable) -> list[tuple[str, str, float]]:
     for fr in frames:
         states = [fr.ego, *fr.objects]
         corners = [_corners(e) for e in states]
+        # Box centres and half-diagonals: two boxes whose enclosing circles are apart cannot touch, so the exact
+        # (and, on numpy's small arrays, slow) separating-axis test runs only for pairs that are close.
+        centres = [c.mean(axis=0) for c in corners]
+        radii = [0.5 * math.hypot(e.length, e.width) for e in states]
         for i in range(len(states)):
             for j in range(i + 1, len(states)):
                 pair = (states[i].name, states[j].name)
-                if pair not in seen and boxes_gap(corners[i], corners[j]) <= 0.0:
+                if pair in seen:
+                    continue
+                reach = radii[i] + radii[j] + 1e-6
+                dx, dy = centres[i] - centres[j]
+                if dx * dx + dy * dy > reach * reach:
+                    continue
+                if boxes_gap(corners[i], corners[j]) <= 0.0:
                     seen[pair] = fr.t
     return sorted(((a, b, t) for (a, b), t in seen.items()), key=lambda c: (c[2], c[0], c[1]))
 
@@ -135,6 +148,9 @@ def check_file(path: str | Path, target: str | None, *, report_id: str | None = 
 def fidelity_batch(items: Iterable[Sketch | ErrorRecord], *, seed: int = 0, maps: str | Path | None = None,
                    dt: float = 0.05) -> list[FidelityResult]:
     """Generate and check every buildable sketch (refused ones are skipped: they have no seed)."""
+    from ..sketch import ErrorRecord   # here, as the generator: `txt2sce play` needs first_contacts alone
+    from .generate import fidelity_target, generate_seed
+
     out = []
     for item in items:
         if isinstance(item, ErrorRecord) or item.missing:
