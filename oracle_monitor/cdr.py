@@ -1,5 +1,5 @@
 """Fast ROS 2 CDR for the closed loop's high-rate messages: Odometry, MarkerArray, DiagnosticArray, Clock,
-TwistStamped.
+TwistStamped, PoseStamped (the goal).
 
 Why hand-written: building rclpy message objects and serialising them costs ~60 µs per Odometry and ~140 µs per
 MarkerArray, more than a player step; rosbags' generic deserialiser spends ~100 µs on a MarkerArray. Recording a
@@ -21,7 +21,7 @@ import struct
 from types import SimpleNamespace as NS
 from typing import Any, Iterable
 
-from txt2sce_ros.contract import MAP_FRAME, ControlCommand, EntityState, Frame, TrafficLightState
+from txt2sce_ros.contract import MAP_FRAME, ControlCommand, EntityState, Frame, Goal, TrafficLightState
 
 HEADER = b"\x00\x01\x00\x00"
 
@@ -97,8 +97,9 @@ def _stamp(t: float) -> bytes:
     return _STAMP.pack(ns // 1_000_000_000, ns % 1_000_000_000)
 
 
-def encode_odometry(e: EntityState) -> bytes:
-    child = _cdr_string(e.name)
+def encode_odometry(e: EntityState, name: str | None = None) -> bytes:
+    """`name`: the child frame to use instead of `e.name` (the player's wire name of the ego)."""
+    child = _cdr_string(e.name if name is None else name)
     off = 16 + len(child)                   # stamp (8) + "map" (8) + child_frame_id
     h = e.heading
     return b"".join((HEADER, _stamp(e.t), _MAP, child, bytes((-off) % 8), _ODOM_BODY.pack(
@@ -106,7 +107,8 @@ def encode_odometry(e: EntityState) -> bytes:
         float(e.speed), float(e.accel), 0.0, 0.0, 0.0, float(e.yaw_rate))))
 
 
-def encode_markers(frame: Frame) -> bytes:
+def encode_markers(frame: Frame, ego_name: str | None = None) -> bytes:
+    """`ego_name`: the marker text of the ego instead of its own name (the player's wire name of the ego)."""
     from txt2sce_ros.ros_io import _CATEGORY_COLOURS   # the same colours the rclpy path uses
 
     entities = (frame.ego, *frame.objects)
@@ -120,10 +122,11 @@ def encode_markers(frame: Frame) -> bytes:
         off += pad2 + 12                    # id, type, action
         pad3 = (-off) % 8
         off += pad3 + 80                    # pose (7 doubles) + scale (3 doubles)
-        key = (e.category, e.name)
+        text = ego_name if i == 0 and ego_name is not None else e.name
+        key = (e.category, text)
         tail = _MARKER_TAIL.get(key)
         if tail is None:
-            tail = _marker_tail(e.category, e.name, _CATEGORY_COLOURS.get(e.category, (0.6, 0.6, 0.6)))
+            tail = _marker_tail(e.category, text, _CATEGORY_COLOURS.get(e.category, (0.6, 0.6, 0.6)))
             if len(_MARKER_TAIL) > 4096:
                 _MARKER_TAIL.clear()
             _MARKER_TAIL[key] = tail
@@ -245,6 +248,17 @@ def encode_marker_array(msg: Any) -> bytes:
 
 def encode_clock(t: float) -> bytes:
     return HEADER + _stamp(t)
+
+
+_POSE = struct.Struct("<7d")
+
+
+def encode_goal(goal: Goal, t: float = 0.0) -> bytes:
+    """`geometry_msgs/PoseStamped` of `ros_io.goal_to_pose(goal, t)`: stamp, "map", position, orientation (the
+    pose is 8-aligned right after the 16 bytes of header, so there is no padding)."""
+    h = goal.heading
+    return b"".join((HEADER, _stamp(t), _MAP, _POSE.pack(float(goal.x), float(goal.y), 0.0, 0.0, 0.0,
+                                                           math.sin(h / 2.0), math.cos(h / 2.0))))
 
 
 def encode_command(cmd: ControlCommand, frame_id: str = "ego") -> bytes:

@@ -52,6 +52,7 @@ from diagnostic_msgs.msg import DiagnosticArray
 from std_msgs.msg import String
 from visualization_msgs.msg import MarkerArray
 
+from oracle_monitor import cdr
 from txt2sce_ros.config import load_config
 from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EGO_ODOM, TOPIC_GOAL,
                                   TOPIC_MAP_MARKERS, TOPIC_OBJECTS_MARKERS, TOPIC_OBJECTS_ODOM, TOPIC_RUN_STATUS,
@@ -59,8 +60,8 @@ from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EG
                                   RunStatus, ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
 from txt2sce_ros.nodes.lifetime import node_lifetime
-from txt2sce_ros.ros_io import (clock_msg, entity_to_odometry, frame_to_markers, goal_to_pose, lights_to_diagnostics,
-                                road_markers_bytes, scenario_markers, stamp_key, string_msg, to_stamp,
+from txt2sce_ros.nodes.waiter import SubscriptionWaiter
+from txt2sce_ros.ros_io import (road_markers_bytes, scenario_markers, stamp_key, string_msg, to_stamp,
                                 twist_to_command)
 
 from .simulation import Simulation, SimulationConfig
@@ -121,7 +122,9 @@ class PlayerNode(Node):
             (TOPIC_SCENARIO_MARKERS, self.pub_scene, qos(1, latched=True)),
         ]
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, qos(10, latched=True))
-        self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
+        sub_command = self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
+        # Lock-step waits for commands on this subscription alone (an executor's spin_once costs a round trip).
+        self.command_wait = SubscriptionWaiter(self, sub_command)
         self.queue: collections.deque[ScenarioEnvelope] = collections.deque()
         for path in p("scenario_files").value or []:
             if path:
@@ -149,21 +152,23 @@ class PlayerNode(Node):
         self.pub_status.publish(string_msg(status.to_json()))
 
     def publish_frame(self, sim: Simulation, frame: Frame) -> None:
-        if frame.ego.name != EGO_NAME:
-            # The contract names the ego 'ego' on the wire (child frame, marker text), whatever the scenario calls it.
-            frame = replace(frame, ego=replace(frame.ego, name=EGO_NAME))
+        # The contract names the ego 'ego' on the wire (child frame, marker text), whatever the scenario calls it:
+        # the encoders take the wire name (a renamed copy of the frame cost more than all the encoding).
         t = frame.t
-        self.pub_clock.publish(clock_msg(t))
-        self.pub_lights.publish(lights_to_diagnostics(frame.lights, t))
+        # Every per-step message goes out already serialised (`Publisher.publish(bytes)`), by the fast CDR
+        # encoders that give rclpy's bytes for the same `ros_io` conversions (tested): building and serialising
+        # rclpy message objects cost more per step than the DDS round trip lock-step waits for.
+        self.pub_clock.publish(cdr.encode_clock(t))
+        self.pub_lights.publish(cdr.encode_lights(frame.lights, t))
         for obj in frame.objects:
-            self.pub_objects.publish(entity_to_odometry(obj))
-        self.pub_markers.publish(frame_to_markers(frame))
+            self.pub_objects.publish(cdr.encode_odometry(obj))
+        self.pub_markers.publish(cdr.encode_markers(frame, ego_name=EGO_NAME))
         if frame.lights != self.shown_lights:
             self.pub_scene.publish(scenario_markers(sim.goal, frame.lights, t))
             self.shown_lights = frame.lights
         if sim.goal is not None:
-            self.pub_goal.publish(goal_to_pose(sim.goal, t))
-        self.pub_ego.publish(entity_to_odometry(frame.ego))
+            self.pub_goal.publish(cdr.encode_goal(sim.goal, t))
+        self.pub_ego.publish(cdr.encode_odometry(frame.ego, name=EGO_NAME))
 
     # -- runs -----------------------------------------------------------------------------------------------------
     def load(self, env: ScenarioEnvelope) -> Simulation:
@@ -279,7 +284,7 @@ class PlayerNode(Node):
                 key = stamp_key(to_stamp(frame.t))
                 deadline = time.monotonic() + min(self.planner_timeout, 1.0)
                 while key not in self.commands and time.monotonic() < deadline:
-                    executor.spin_once(timeout_sec=0.01)
+                    self.command_wait.wait(0.01)
                 self.commands.clear()
         status = sim.status
         self._status(status)
@@ -297,7 +302,7 @@ class PlayerNode(Node):
             if now - wall0 > self.run_timeout:
                 self._current.abort("wall_clock_limit")
                 return None
-            executor.spin_once(timeout_sec=0.01)
+            self.command_wait.wait(0.01)
         return self.commands[key]
 
     def serve(self, executor: SingleThreadedExecutor) -> None:

@@ -10,7 +10,7 @@ from rclpy.serialization import serialize_message
 from oracle_monitor import cdr
 from oracle_monitor.recorder import typestore
 from txt2sce_ros import ros_io
-from txt2sce_ros.contract import ControlCommand, EntityState, Frame, SignalState, TrafficLightState
+from txt2sce_ros.contract import ControlCommand, EntityState, Frame, Goal, SignalState, TrafficLightState
 
 ENTS = [
     EntityState("Ego", "car", 12.35, 101.25, -7.5, 2.9, 8.25, accel=-1.5, yaw_rate=0.07),
@@ -57,6 +57,9 @@ def test_markers_and_lights_equal_rclpy(n: int) -> None:
 
 def test_clock_and_command_bytes_equal_rclpy() -> None:
     assert cdr.encode_clock(12.35) == serialize_message(ros_io.clock_msg(12.35))
+    goal = Goal(x=-12.5, y=301.25, heading=2.7, tolerance=3.0)
+    assert cdr.encode_goal(goal, 7.05) == serialize_message(ros_io.goal_to_pose(goal, 7.05))
+    assert cdr.encode_goal(goal, 7.05) != cdr.encode_goal(goal, 7.1)
     cmd = ControlCommand(12.35, 8.4, -0.03)
     assert cdr.encode_command(cmd) == serialize_message(ros_io.command_to_twist(cmd))
 
@@ -108,3 +111,16 @@ def test_truncated_message_is_an_error() -> None:
     data = cdr.encode_markers(Frame(1.0, ENTS[0], (ENTS[1],)))
     with pytest.raises(Exception):
         cdr.decode_markers(data[: len(data) - 40])
+
+
+def test_the_ego_goes_out_under_its_wire_name() -> None:
+    # The player node names the ego 'ego' on the wire by the encoders' name arguments instead of a renamed copy of
+    # the frame: the same bytes as encoding the renamed frame.
+    from dataclasses import replace
+
+    frame = Frame(12.35, ENTS[0], tuple(ENTS[1:3]), ())
+    renamed = replace(frame, ego=replace(frame.ego, name="ego"))
+    assert cdr.encode_markers(frame, ego_name="ego") == cdr.encode_markers(renamed)
+    assert cdr.encode_markers(frame, ego_name="ego") != cdr.encode_markers(frame)
+    assert cdr.encode_odometry(frame.ego, name="ego") == cdr.encode_odometry(renamed.ego)
+    assert cdr.encode_odometry(frame.objects[0], name=None) == cdr.encode_odometry(frame.objects[0])
