@@ -56,16 +56,25 @@ def weather_label(root: etree._Element) -> str:
 
 
 def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:
-    """The state the ego's signal shows in the first phase (running while the parties interact) of the first
-    controller ('none' without one): the signal `tree.environment.primary_signal` picks, the one the tree's TLS
-    mutation changes."""
+    """The state the ego's signal shows in the phase the scenario is labelled by (the first of its signal Story:
+    `seed.signal_story`), 'none' without one: the signal `tree.environment.primary_signal` picks, the one the
+    tree's TLS mutation changes. A scenario in the older form (a RoadNetwork TrafficSignalController) is labelled
+    by its controller's first phase."""
+    from ..seed.signal_story import colour_of, is_signal_init, is_signal_story, read_plan
     from ..tree.environment import primary_signal
 
-    phase = root.find(".//TrafficSignalController/Phase")
-    state = primary_signal(phase, facing) if phase is not None else None
-    if state is None:
+    story = next((s for s in root.iterfind("Storyboard/Story") if is_signal_story(s)), None)
+    if story is not None:
+        inits = [g for g in root.iterfind("Storyboard/Init/Actions/GlobalAction") if is_signal_init(g)]
+        states = read_plan(inits, story).tested
+    else:
+        phase = root.find(".//TrafficSignalController/Phase")
+        states = tuple((s.get("trafficSignalId", ""), s.get("state", ""))
+                       for s in (phase.iterfind("TrafficSignalState") if phase is not None else ()))
+    primary = primary_signal(states, facing)
+    if primary is None:
         return "none"
-    value = state.get("state", "").lower()
+    value = colour_of(primary[1]).lower()
     for colour in ("red", "yellow", "green"):
         if colour in value:
             return colour
@@ -186,7 +195,7 @@ def elements_of_file(path: str) -> frozenset[str]:
         xodr = logic_file(Path(path), data)
         if xodr is not None and xodr.is_file():
             net = load_network(str(xodr))
-            if b"TrafficSignalController" in data:
+            if b"TrafficSignalController" in data or b"TrafficSignalStateAction" in data:
                 from ..seed.context import build_context
 
                 facing = build_context(parse_document(data, source=path), source=path, seed_path=Path(path)).ego_signals

@@ -125,8 +125,12 @@ def _find(root, el):
         return root.find("Storyboard/Init/Actions/GlobalAction/EnvironmentAction/Environment")
     if tag == "ScenarioObject":
         return root.find(f"Entities/ScenarioObject[@name='{el.get('name')}']")
-    if tag == "TrafficSignalController":
-        return root.find(f"RoadNetwork/TrafficSignals/TrafficSignalController[@name='{el.get('name')}']")
+    if tag == "Story":
+        return root.find(f"Storyboard/Story[@name='{el.get('name')}']")
+    if tag == "GlobalAction":     # a signal block's Init action: the one setting the same light
+        sid = next(el.iter("TrafficSignalStateAction")).get("name")
+        return next(g for g in root.iterfind("Storyboard/Init/Actions/GlobalAction")
+                    if any(a.get("name") == sid for a in g.iter("TrafficSignalStateAction")))
     return root.find(f".//Maneuver/Event[@name='{el.get('name')}']")
 
 

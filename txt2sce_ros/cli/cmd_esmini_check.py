@@ -1,8 +1,10 @@
 """`txt2sce esmini-check PATHS... [--sample N]`: run scenarios in the reference player (esmini) and in ours.
 
 Per file it prints esmini's `[error]` lines (a portable scenario has none) and the largest position error of any
-entity at any step between the two players (storyboard driving every entity, 0.05 s step). Exit status 1 when a
-file logs an error or differs by `--target` m or more."""
+entity at any step between the two players (storyboard driving every entity, 0.05 s step). For a scenario that sets
+traffic lights it also runs a probe copy in esmini (`scenario_player.esmini.check_lights`) and checks that every
+light changes state at the same time there as in ours. Exit status 1 when a file logs an error, differs by
+`--target` m or more, or changes a light at another time."""
 
 from __future__ import annotations
 
@@ -44,7 +46,7 @@ def run(args: argparse.Namespace) -> int:
     if args.sample and args.sample < len(files):
         rng = np.random.default_rng(args.seed)
         files = sorted(files[i] for i in rng.choice(len(files), size=args.sample, replace=False))
-    bad = 0
+    bad = lit = lights_ok = 0
     worst = 0.0
     print(f"{'scenario':52s} {'errors':>6s} {'rms m':>8s} {'max m':>8s}  worst entity / first error")
     for f in files:
@@ -56,7 +58,12 @@ def run(args: argparse.Namespace) -> int:
             bad += 1
             continue
         ent = max(c.entities, key=lambda e: e.max).name if c.entities else "-"
-        note = res.run.errors[0] if res.run.errors else ent
+        lights = res.lights
+        if lights is not None:
+            lit += 1
+            lights_ok += lights.agree
+        note = (res.run.errors[0] if res.run.errors else
+                lights.first_difference() if lights is not None and not lights.agree else ent)
         flag = "" if res.ok(args.target) else "  FAIL"
         print(f"{f.name:52s} {len(res.run.errors):6d} {c.rms:8.3f} {c.max:8.3f}  {note}{flag}")
         worst = max(worst, c.max)
@@ -64,4 +71,5 @@ def run(args: argparse.Namespace) -> int:
     n = len(files)
     print(f"\n{n - bad}/{n} files: no esmini [error] and every entity within {args.target:g} m at every step "
           f"(worst {worst:.3f} m)")
+    print(f"{lights_ok}/{lit} files that set lights: every light change at the same time in esmini as in ours")
     return 1 if bad else 0

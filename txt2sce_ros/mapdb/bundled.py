@@ -25,9 +25,12 @@ STALL_W = 5.0  # perpendicular parking stalls in a lot
 SIDEWALK_W = 2.0
 RING_W = 4.5
 
-# OpenDRIVE signal catalogue (country DE, the catalogue esmini and most tools ship).
-TRAFFIC_LIGHT = "1000001"  # three-light signal
-ARROW_LIGHT = "1000011"    # arrow signal; subtype 10 = left
+# Signal codes. The lights carry the OpenDRIVE standard's own catalogue (country "OpenDRIVE"): esmini resolves a
+# TrafficSignalStateAction's name to a light by that country's codes (a country-DE light is "no matching traffic
+# signal" there, an [error]), so only these lights take the signal phases in both players. Signs stay German.
+LIGHT_COUNTRY = "OpenDRIVE"
+TRAFFIC_LIGHT = "1000001"  # three-light signal (red, yellow, green lamps)
+ARROW_LIGHT = "1000011"    # arrow signal, three lamps; subtype 10 = left
 STOP_SIGN = "206"
 YIELD_SIGN = "205"
 
@@ -155,9 +158,9 @@ def junction4_map() -> MapSpec:
         sid_main, sid_left = f"{1000 + 10 * (k + 1)}", f"{1000 + 10 * (k + 1) + 1}"
         signals = (
             SignalSpec(sid_main, f"{name}_light", length - 1.0, -(3 * DRIVING_W + SIDEWALK_W / 2), True, "+",
-                       TRAFFIC_LIGHT, valid_lanes=(-3, -2), height=3.0, z_offset=2.5),
+                       TRAFFIC_LIGHT, country=LIGHT_COUNTRY, valid_lanes=(-3, -2), height=3.0, z_offset=2.5),
             SignalSpec(sid_left, f"{name}_left_arrow", length - 1.0, DRIVING_W / 2, True, "+", ARROW_LIGHT, "10",
-                       valid_lanes=(-1, -1), height=3.0, z_offset=2.5),
+                       country=LIGHT_COUNTRY, valid_lanes=(-1, -1), height=3.0, z_offset=2.5),
         )
         controllers[f"{axis}_through"].append(sid_main)
         controllers[f"{axis}_left"].append(sid_left)

@@ -13,6 +13,7 @@ from lxml import etree
 
 from ..sketch import LANED_POSITIONS
 from ..xosc.entitydb import EntityDB, entity_db
+from .signal_story import write_plan
 from .model import (
     EntityPlan, EnvironmentPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, Pose, RouteAct, ScenarioPlan,
     SpeedAct, TrajectoryAct, Trigger,
@@ -259,14 +260,6 @@ def write_xosc(plan: ScenarioPlan, *, db: EntityDB | None = None,
     x.el(root, "CatalogLocations")
     rn = x.el(root, "RoadNetwork")
     x.el(rn, "LogicFile", {"filepath": plan.map_ref}, xsd_type="File")
-    if plan.signals:
-        ts = x.el(rn, "TrafficSignals")
-        for sig in plan.signals:
-            c = x.el(ts, "TrafficSignalController", {"name": sig.name, "delay": 0.0})
-            for ph in sig.phases:
-                p = x.el(c, "Phase", {"name": ph.name, "duration": float(ph.duration)})
-                for sid, state in ph.states:
-                    x.el(p, "TrafficSignalState", {"trafficSignalId": sid, "state": state})
     ents = x.el(root, "Entities")
     for e in plan.entities:
         _entity(x, ents, e, performance)
@@ -274,6 +267,12 @@ def write_xosc(plan: ScenarioPlan, *, db: EntityDB | None = None,
     init = x.el(sb, "Init")
     acts = x.el(init, "Actions", xsd_type="InitActions")
     _environment(x, acts, plan.environment)
+    # Signal phases as timed TrafficSignalStateActions (signal_story): the form esmini executes as well as ours.
+    signal_stories = []
+    for sig in plan.signals:
+        inits, story = write_plan(sig, time_limit=plan.time_limit)
+        acts.extend(inits)
+        signal_stories.append(story)
     for e in plan.entities:
         pr = x.el(acts, "Private", {"entityRef": e.name})
         pa = x.el(pr, "PrivateAction")
@@ -292,6 +291,7 @@ def write_xosc(plan: ScenarioPlan, *, db: EntityDB | None = None,
                               ego.speed, (hold,), ego.route, ego.external)]
     for e in stories:
         _story(x, sb, e)
+    sb.extend(signal_stories)
     stop = x.el(sb, "StopTrigger", xsd_type="Trigger")
     g1 = x.el(stop, "ConditionGroup")
     _condition(x, g1, "time_limit", Trigger("time", plan.time_limit))

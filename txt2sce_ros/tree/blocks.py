@@ -12,7 +12,7 @@ class BlockKind(str, Enum):
     WEATHER = "weather"            # Init GlobalAction/EnvironmentAction/Environment
     EGO = "ego"                    # the ego's Init Private (initial location; its ScenarioObject stays in T)
     NPC = "npc"                    # a party's ScenarioObject + its Init Private
-    SIGNAL = "signal"              # one RoadNetwork/TrafficSignals/TrafficSignalController
+    SIGNAL = "signal"              # the Init actions that set lights + the signal Story (seed.signal_story)
     EVENT = "event"                # one Event of a Maneuver (`<entity>_e<k>_<action>`)
     OBSTACLE = "obstacle"          # an obstacle's ScenarioObject + its Init Private
     NEW_OBSTACLE = "new_obstacle"  # an empty slot (ScenarioObject + Private) that OIM fills

@@ -7,13 +7,13 @@ Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_fo
 | weather | `Storyboard/Init/Actions/GlobalAction/EnvironmentAction/Environment` |
 | ego | `Init/Actions/Private[@entityRef='ego']` (its ScenarioObject stays in T: the AV is not mutated) |
 | npc | `Entities/ScenarioObject[@name=X]` + `Init/Actions/Private[@entityRef=X]` for each party X |
-| signal | each `RoadNetwork/TrafficSignals/TrafficSignalController` + two empty slots (Init GlobalAction, Story) |
+| signal | the Init `GlobalAction`s that set lights + the signal Story (`seed.signal_story`: timed state actions) |
 | event | each `Story/Act/ManeuverGroup/Maneuver/Event` |
 | obstacle | `ScenarioObject[@name='obs…']` + its Private |
 | new_obstacle | an empty ScenarioObject slot after the last entity and an empty Private slot after the last Private |
 
-A signal's empty slots (after the last Init GlobalAction, after the last Story) take the Init action and the Story
-with which a yellow waits for the ego's dilemma zone (`environment.dilemma_yellow`).
+A signal block's parts are rewritten whole by the TLS mutation (`environment.tls`, and `dilemma_yellow` for a yellow
+that waits for the ego's dilemma zone); the events of the signal Story are not event blocks of their own.
 
 Each block element is replaced in the tree by a comment marker (keeping the element's tail whitespace), the tree is
 serialised once, and the text is cut at the markers. Assembly is then a string join (fast: no tree per node).
@@ -26,6 +26,7 @@ import re
 from lxml import etree
 
 from ..errors import InputError
+from ..seed.signal_story import is_signal_init, is_signal_story
 from .blocks import Block, BlockKind, Disassembly, Template
 from .xml import parse_bytes, to_text
 
@@ -101,28 +102,23 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             continue
         parts = [obj] + ([privates[name]] if name in privates else [])
         found[kind].append((name, parts))
-    for ctrl in root.findall("RoadNetwork/TrafficSignals/TrafficSignalController"):
-        found[BlockKind.SIGNAL].append((ctrl.get("name", ""), [ctrl]))
-    for ev in root.iterfind("Storyboard/Story/Act/ManeuverGroup/Maneuver/Event"):
-        found[BlockKind.EVENT].append((ev.get("name", ""), [ev]))
+    signal_stories = [s for s in root.iterfind("Storyboard/Story") if is_signal_story(s)]
+    if signal_stories:
+        inits = [g for g in actions.findall("GlobalAction") if is_signal_init(g)]
+        found[BlockKind.SIGNAL].append((signal_stories[0].get("name", ""), inits + [signal_stories[0]]))
+    for story in root.iterfind("Storyboard/Story"):
+        if story in signal_stories:
+            continue
+        for ev in story.iterfind("Act/ManeuverGroup/Maneuver/Event"):
+            found[BlockKind.EVENT].append((ev.get("name", ""), [ev]))
 
     cutter = _Cutter()
     cut: dict[BlockKind, list[tuple[str, tuple[int, ...]]]] = {k: [] for k in BlockKind}
-    storyboard = root.find("Storyboard")
-    # Where a signal's extra slots go: after the last Init GlobalAction (the schema puts them before any Private)
-    # and after the last Story (before the StopTrigger); each new slot after the previous one, in document order.
-    init_at = next(iter(actions.findall("GlobalAction")[-1:]), None)
-    story_at = next(iter(storyboard.findall("Story")[-1:]), storyboard.find("Init"))
     for kind in BlockKind:
         if kind is BlockKind.NEW_OBSTACLE or kind not in wanted:
             continue
         for key, parts in found[kind]:
-            slots = tuple(cutter.cut(el) for el in parts)
-            if kind is BlockKind.SIGNAL:
-                s_init, init_at = cutter.empty_after(actions, init_at)
-                s_story, story_at = cutter.empty_after(storyboard, story_at)
-                slots += (s_init, s_story)
-            cut[kind].append((key, slots))
+            cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
     if BlockKind.NEW_OBSTACLE in wanted:
         for _ in range(new_obstacle_slots):
             last_obj = _last_element(entities)

@@ -14,12 +14,11 @@ from lxml import etree
 from ..config import load_config
 from ..errors import InputError
 from ..seed.context import LanePos, SeedContext
+from ..seed.model import SignalPhase, SignalPlan
+from ..seed.signal_story import DecodedPlan, read_plan, write_plan
 from .trajectory import footprint_extent
 from .values import Recorder, uniform
 
-#: esmini-style lamp encodings (red;yellow;green lamps), used when a seed writes states that way.
-_LAMP_STATES = {"red": "on;off;off", "yellow": "off;on;off", "green": "off;off;on"}
-_LAMP_NAMES = {v: k for k, v in _LAMP_STATES.items()}
 
 
 def wm(env: etree._Element, weather: str, rng: np.random.Generator, cfg: dict[str, Any], rec: Recorder) -> None:
@@ -78,19 +77,19 @@ def _number(text: str | None, default: float = 0.0) -> float:
         return default
 
 
-def signal_state_name(state: str) -> str:
-    return _LAMP_NAMES.get(state, state)
-
-
-def primary_signal(phase: etree._Element, facing: tuple[str, ...] = ()) -> etree._Element | None:
-    """The phase's primary `TrafficSignalState`: the first of `facing` (signal ids facing the AV, per the map) the
-    phase sets, else its first; None for a phase that sets no signal. The TLS mutation changes this signal, and
-    the analysis labels a scenario by it, so both must pick the same one."""
-    states = phase.findall("TrafficSignalState")
+def primary_signal(states: tuple[tuple[str, str], ...], facing: tuple[str, ...] = ()) -> tuple[str, str] | None:
+    """The primary (signal id, colour) of a phase's states: the first of `facing` (signal ids facing the AV, per the
+    map) the phase sets, else its first; None for a phase that sets no signal. The TLS mutation changes this signal,
+    and the analysis labels a scenario by it, so both must pick the same one."""
     if not states:
         return None
-    by_id = {s.get("trafficSignalId"): s for s in states}
-    return next((by_id[f] for f in facing if f in by_id), states[0])
+    by_id = dict(states)
+    return next(((f, by_id[f]) for f in facing if f in by_id), states[0])
+
+
+def signal_block(parts: list[etree._Element | None]) -> DecodedPlan:
+    """The phase plan a signal block holds (its Init GlobalActions, then its Story: `seed.signal_story`)."""
+    return read_plan([p for p in parts[:-1] if p is not None], parts[-1] if parts else None)
 
 
 @dataclass(frozen=True, slots=True)
@@ -138,37 +137,36 @@ def _schedule(state: str, timing: SignalTiming) -> list[tuple[str, float, str, s
     return red
 
 
-def tls(ctrl: etree._Element, state: str, rec: Recorder, *, facing: tuple[str, ...] = (),
-        timing: SignalTiming | None = None) -> str:
-    """Traffic Signal Mutation: the controller's primary signal — the first of `facing` (the signals facing the
-    AV, per the map) its first phase sets, else that phase's first — starts showing `state`, and the controller's
-    phases are rewritten so the state means something over the run (`_schedule`): a yellow turns red, a red turns
-    green after a while so the goal stays reachable, a green stays green. Signals that showed the primary's old
-    state in the first phase follow the primary; the others show the conflicting state. Returns the old state.
-    A yellow is then moved to the ego's dilemma zone by `dilemma_yellow` where the ego can reach the line."""
-    phase = ctrl.find("Phase")
-    first = primary_signal(phase, facing) if phase is not None else None
-    if first is None:
+def tls(parts: list[etree._Element | None], state: str, rec: Recorder, *, facing: tuple[str, ...] = (),
+        timing: SignalTiming | None = None, time_limit: float = 60.0) -> str:
+    """Traffic Signal Mutation on a signal block (`parts`: its Init GlobalActions, then its Story): the primary
+    signal of the phase the scenario is labelled by — the first of `facing` (the signals facing the AV, per the
+    map) that phase sets, else its first — starts showing `state`, and the phases are rewritten so the state means
+    something over the run (`_schedule`): a yellow turns red, a red turns green after a while so the goal stays
+    reachable, a green stays green. Signals that showed the primary's old state follow the primary; the others
+    show the conflicting state. The parts are replaced in place (same count: one Init action per signal, one
+    Story). Returns the old state. A yellow is then moved to the ego's dilemma zone by `dilemma_yellow` where the
+    ego can reach the line."""
+    decoded = signal_block(parts)
+    tested = decoded.tested
+    first = primary_signal(tested, facing)
+    if first is None or len(parts) != len(tested) + 1:
         return ""
     timing = timing or signal_timing()
-    lamps = ";" in (first.get("state") or "")
-    old = signal_state_name(first.get("state", ""))
-    follows = [signal_state_name(s.get("state", "")) == old or s is first for s in phase.findall("TrafficSignalState")]
-    ids = [s.get("trafficSignalId") for s in phase.findall("TrafficSignalState")]
-    before = [(p.get("name"), p.get("duration")) for p in ctrl.findall("Phase")]
-    for p in ctrl.findall("Phase"):
-        ctrl.remove(p)
-    for name, duration, primary, conflict in _schedule(state, timing):
-        ph = etree.SubElement(ctrl, "Phase", name=name)
-        ph.set("duration", rec.db.check_value("Phase", "duration", f"{duration:g}"))
-        for sid, same in zip(ids, follows):
-            shown = primary if same else conflict
-            etree.SubElement(ph, "TrafficSignalState", trafficSignalId=sid,
-                             state=_LAMP_STATES[shown] if lamps else shown)
-    rec.check_tree(ctrl)
-    after = [(p.get("name"), p.get("duration")) for p in ctrl.findall("Phase")]
-    rec.note(f"TrafficSignalController[@name='{ctrl.get('name')}']/Phase",
-             " ".join(f"{n}:{d}" for n, d in before), " ".join(f"{n}:{d}" for n, d in after) + f" ({state})")
+    old = first[1]
+    follows = [colour == old or sid == first[0] for sid, colour in tested]
+    phases = tuple(SignalPhase(name, float(rec.db.check_value("Phase", "duration", f"{duration:g}")),
+                               tuple((sid, primary if same else conflict)
+                                     for (sid, _), same in zip(tested, follows)))
+                   for name, duration, primary, conflict in _schedule(state, timing))
+    plan = SignalPlan(decoded.plan.name, phases)
+    inits, story = write_plan(plan, time_limit=time_limit)
+    parts[:] = [*inits, story]
+    for el in parts:
+        rec.check_tree(el)
+    before = " ".join(f"{p.name or 'init'}:{p.duration:g}" for p in decoded.plan.phases)
+    after = " ".join(f"{p.name}:{p.duration:g}" for p in phases)
+    rec.note(f"Story[@name='{plan.name}']/Event", before, after + f" ({state})")
     return old
 
 
@@ -201,19 +199,13 @@ def stop_line(ctx: SeedContext, sid: str, *, slack: float = 0.0) -> LanePos | No
     return LanePos(road=road, lane=int(lane), s=float(sig.s))
 
 
-def _controller_action(ctrl: str, phase: str) -> etree._Element:
-    ga = etree.Element("GlobalAction")
-    tsa = etree.SubElement(etree.SubElement(ga, "InfrastructureAction"), "TrafficSignalAction")
-    etree.SubElement(tsa, "TrafficSignalControllerAction", trafficSignalControllerRef=ctrl, phase=phase)
-    return ga
-
-
-def dilemma_yellow(ctrl: etree._Element, ctx: SeedContext, rec: Recorder, *, timing: SignalTiming | None = None,
-                   slack: float = 0.0) -> tuple[etree._Element, etree._Element] | None:
-    """For a controller `tls` set to yellow: an Init action that starts it in its final green phase, and a Story
-    that switches it to its yellow phase once the ego is in the dilemma zone — then red, then green as `_schedule`
-    says. None (the yellow then shows from t = 0, as `tls` wrote it) when the ego cannot reach the primary
-    signal's stop line (`stop_line`; `slack`: how far ahead another block may move the ego's start).
+def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Recorder, *,
+                   timing: SignalTiming | None = None, slack: float = 0.0, time_limit: float = 60.0) -> bool:
+    """For a signal block `tls` set to yellow: the lights start in the schedule's final green (Init) and the
+    yellow starts once the ego is in the dilemma zone — then red, then green as `_schedule` says, each phase its
+    duration after the yellow began. False (the block unchanged: the yellow then shows from t = 0, as `tls` wrote
+    it) when the ego cannot reach the primary signal's stop line (`stop_line`; `slack`: how far ahead another
+    block may move the ego's start).
 
     A yellow tests a stack only where stopping and going are both possible: shown from t = 0 to an ego 50 m away
     it turns red long before the ego arrives, and a stack that reads yellow as green still stops for the red.
@@ -223,28 +215,26 @@ def dilemma_yellow(ctrl: etree._Element, ctx: SeedContext, rec: Recorder, *, tim
     TimeToCollisionCondition to the stop line (front bumper, `freespace`) rather than a distance, because the
     stack under test drives at its own speed: the time to the line is what fixes where red finds it. `alongRoute`
     is false (distance along the ego's heading): the approach to a stop line is straight, and every player
-    measures that the same way. The phases stay in `tls`'s order (yellow first), so the scenario is still
-    labelled by its yellow (tree features, analysis `signal_label`); only the Init action starts it in green."""
+    measures that the same way. The yellow stays the plan's first phase, so the scenario is still labelled by it
+    (tree features, analysis `signal_label`); only the Init actions show green."""
     timing = timing or signal_timing()
-    phase = ctrl.find("Phase")
-    first = primary_signal(phase, ctx.ego_signals) if phase is not None else None
-    names = [p.get("name") for p in ctrl.findall("Phase")]
-    if first is None or names[:1] != ["tls_yellow"] or names[-1] != "tls_green":
-        return None
-    line = stop_line(ctx, first.get("trafficSignalId", ""), slack=slack)
+    decoded = signal_block(parts)
+    phases = decoded.plan.phases
+    first = primary_signal(decoded.tested, ctx.ego_signals)
+    schedule = _schedule("yellow", timing)
+    if decoded.triggered or first is None or len(phases) != len(schedule):
+        return False
+    shown = [dict(p.states).get(first[0]) for p in phases]
+    if shown != [primary for _n, _d, primary, _c in schedule]:      # not the schedule `tls` writes for a yellow
+        return False
+    # Read back, a timed plan has no name for its first phase (Init) nor a duration for its last (it outlasts
+    # the run): the schedule's own are used.
+    phases = tuple(SignalPhase(n, d, p.states) for p, (n, d, _a, _b) in zip(phases, schedule))
+    line = stop_line(ctx, first[0], slack=slack)
     if line is None:
-        return None
-    name = ctrl.get("name", "")
-    init = _controller_action(name, "tls_green")
-    story = etree.Element("Story", name=f"tls_{name}_story")
-    act = etree.SubElement(story, "Act", name=f"tls_{name}_act")
-    mg = etree.SubElement(act, "ManeuverGroup", name=f"tls_{name}_mg", maximumExecutionCount="1")
-    etree.SubElement(mg, "Actors", selectTriggeringEntities="false")
-    man = etree.SubElement(mg, "Maneuver", name=f"tls_{name}_maneuver")
-    ev = etree.SubElement(man, "Event", name=f"tls_{name}_yellow", priority="parallel", maximumExecutionCount="1")
-    etree.SubElement(ev, "Action", name=f"tls_{name}_yellow_action").append(_controller_action(name, "tls_yellow"))
-    cond = etree.SubElement(etree.SubElement(etree.SubElement(ev, "StartTrigger"), "ConditionGroup"), "Condition",
-                            name=f"tls_{name}_dilemma_zone", delay="0", conditionEdge="none")
+        return False
+    name = decoded.plan.name
+    cond = etree.Element("Condition", name=f"{name}_dilemma_zone", delay="0", conditionEdge="none")
     by = etree.SubElement(cond, "ByEntityCondition")
     etree.SubElement(etree.SubElement(by, "TriggeringEntities", triggeringEntitiesRule="any"), "EntityRef",
                      entityRef="ego")
@@ -253,18 +243,14 @@ def dilemma_yellow(ctrl: etree._Element, ctx: SeedContext, rec: Recorder, *, tim
                            rule="lessThan")
     etree.SubElement(etree.SubElement(etree.SubElement(ttc, "TimeToCollisionConditionTarget"), "Position"),
                      "LanePosition", roadId=line.road, laneId=str(line.lane), s=f"{line.s:.3f}", offset="0")
-    act_start = etree.SubElement(etree.SubElement(etree.SubElement(act, "StartTrigger"), "ConditionGroup"),
-                                 "Condition", name=f"tls_{name}_act_start", delay="0", conditionEdge="none")
-    etree.SubElement(etree.SubElement(act_start, "ByValueCondition"), "SimulationTimeCondition", value="0",
-                     rule="greaterThan")
-    rec.check_tree(init)
-    rec.check_tree(story)
-    rec.note(f"Init/GlobalAction/TrafficSignalControllerAction[@trafficSignalControllerRef='{name}']", None,
-             "tls_green")
-    rec.note(f"Story[@name='tls_{name}_story']", None,
+    inits, story = write_plan(SignalPlan(name, phases), time_limit=time_limit, trigger=cond)
+    parts[:] = [*inits, story]
+    for el in parts:
+        rec.check_tree(el)
+    rec.note(f"Story[@name='{name}']/Event[@name='{name}_tls_yellow']", None,
              f"tls_yellow when ego TTC to stop line road {line.road} lane {line.lane} s {line.s:.2f} < "
-             f"{timing.yellow + timing.margin:g} s")
-    return init, story
+             f"{timing.yellow + timing.margin:g} s (lights green until then)")
+    return True
 
 
 def oim_position(ctx: SeedContext, obstacle_width: float, rng: np.random.Generator, cfg: dict[str, Any],

@@ -13,7 +13,7 @@ from lxml import etree
 
 from .blocks import BlockKind
 from ..seed.context import SeedContext, lane_pos
-from .environment import signal_state_name, weather_type
+from .environment import primary_signal, signal_block, weather_type
 from .physical import entity_element
 
 _EVENT_RE = re.compile(r"^(?P<entity>.+?)_e(?P<k>\d+)_(?P<action>.+)$")
@@ -124,14 +124,12 @@ def event_features(ev: etree._Element, original: etree._Element, cfg: dict[str, 
             "offset": bin_of(_f(lc, "targetLaneOffset"), -half, half, n) if lc is not None else -1}
 
 
-def signal_features(ctrl: etree._Element, facing: tuple[str, ...]) -> dict[str, Any]:
-    """`ego`: the state the AV's own signal shows in the first phase; `states`: all of that phase's states."""
-    phase = ctrl.find("Phase")
-    sts = list(phase.iterfind("TrafficSignalState")) if phase is not None else []
-    by_id = {s.get("trafficSignalId"): s for s in sts}
-    primary = next((by_id[f] for f in facing if f in by_id), sts[0] if sts else None)
-    return {"ego": signal_state_name(primary.get("state", "")) if primary is not None else "none",
-            "states": "/".join(signal_state_name(s.get("state", "")) for s in sts)}
+def signal_features(parts: list[etree._Element | None], facing: tuple[str, ...]) -> dict[str, Any]:
+    """`ego`: the state the AV's own signal shows in the phase the scenario is labelled by (its first: the yellow of
+    a dilemma-zone plan); `states`: all of that phase's states."""
+    tested = signal_block(parts).tested
+    primary = primary_signal(tested, facing)
+    return {"ego": primary[1] if primary is not None else "none", "states": "/".join(c for _, c in tested)}
 
 
 def obstacle_features(obj: etree._Element | None, private: etree._Element | None, ctx: SeedContext,
@@ -170,7 +168,7 @@ def all_features(kind: BlockKind, elements: list[etree._Element | None], origina
     if kind is BlockKind.NPC:
         return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
     if kind is BlockKind.SIGNAL:
-        return signal_features(elements[0], ctx.ego_signals)
+        return signal_features(elements, ctx.ego_signals)
     if kind is BlockKind.EVENT:
         return event_features(elements[0], originals[0], cfg, n)
     return obstacle_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)

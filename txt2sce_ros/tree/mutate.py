@@ -24,6 +24,7 @@ from lxml import etree
 from ..errors import InputError
 from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
+from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, tsm
 from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
@@ -100,11 +101,11 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
         elif block.kind is BlockKind.SIGNAL:
             for state in _choices("signal", list(cfg["environment"]["signal_states"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
-                tls(els[0], state, rec, facing=ctx.ego_signals)
-                extra = (dilemma_yellow(els[0], ctx, rec, slack=cfg["trajectory"]["init_location"]["max_shift"])
-                         if state == "yellow" and len(els) == 3 else None)
-                if extra is not None:  # Init action + Story into the block's two storyboard slots
-                    els[1], els[2] = extra
+                limit = time_limit_of(ctx.root)
+                tls(els, state, rec, facing=ctx.ego_signals, time_limit=limit)
+                if state == "yellow":  # the yellow waits for the ego's dilemma zone where it can reach the line
+                    dilemma_yellow(els, ctx, rec, slack=cfg["trajectory"]["init_location"]["max_shift"],
+                                   time_limit=limit)
                 emit(els, "TLS", rec)
         elif block.kind is BlockKind.EVENT:
             entity, action = split_event_name(block.key)
