@@ -1,6 +1,7 @@
 """The TLS mutation's yellow in the ego's dilemma zone (issue 9): on seeds the seed stage builds from dev_gold, the
-yellow variant holds green until the ego is `yellow + margin` s from the stop line (standard OpenSCENARIO 1.0:
-Init TrafficSignalControllerAction + a Story with a TimeToCollisionCondition), the scenario player executes it,
+yellow variant holds green until the ego is `yellow + margin` s from the stop line (standard OpenSCENARIO 1.0 that
+esmini executes too: Init TrafficSignalStateActions + a signal Story whose yellow starts on a
+TimeToCollisionCondition and whose later phases follow it by their delays), the scenario player executes it,
 and the stand-in planner's `red_light_misread` fault is then caught as Misinterp while the nominal planner is not."""
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from lxml import etree
 
 from txt2sce_ros.seed import write_seeds
 from txt2sce_ros.seed.context import build_context
+from txt2sce_ros.seed.signal_story import read_plan
 from txt2sce_ros.sketch import load_sketches
 from txt2sce_ros.tree import BlockKind, assemble, canonical, disassemble
 from txt2sce_ros.tree.build import seed_key, tree_config
@@ -56,7 +58,12 @@ def _node(seed: Path, state: str = "yellow") -> Path:
     return out
 
 
-def test_yellow_variant_is_a_triggered_controller_action_in_standard_xosc(seeds):
+def _plan(variant):
+    parts = [parse_fragment(f) for f in variant.fragments]
+    return read_plan(parts[:-1], parts[-1]), parts[-1]
+
+
+def test_yellow_variant_waits_for_the_dilemma_zone_in_timed_state_actions(seeds):
     timing = signal_timing()
     for rid in APPROACH:
         seed = seeds[rid]
@@ -65,18 +72,20 @@ def test_yellow_variant_is_a_triggered_controller_action_in_standard_xosc(seeds)
         line = stop_line(ctx, sid)
         ego = ctx.starts["ego"]
         assert line is not None and line.road == ego.road and line.s - ego.s > 40.0, (rid, line, ego)
-        # green and red leave the storyboard slots empty; yellow fills both
-        assert by_state["green"].fragments[1:] == by_state["red"].fragments[1:] == ("", "")
-        y = by_state["yellow"]
-        init, story = parse_fragment(y.fragments[1]), parse_fragment(y.fragments[2])
-        ctrl = parse_fragment(y.fragments[0])
-        assert [p.get("name") for p in ctrl.findall("Phase")] == ["tls_yellow", "tls_red", "tls_red_clear",
-                                                                 "tls_green"]
-        start = init.find("InfrastructureAction/TrafficSignalAction/TrafficSignalControllerAction")
-        assert (start.get("trafficSignalControllerRef"), start.get("phase")) == (ctrl.get("name"), "tls_green")
-        switch = next(story.iter("TrafficSignalControllerAction"))
-        assert switch.get("phase") == "tls_yellow"
-        ttc = next(story.iter("TimeToCollisionCondition"))
+        # green and red run on the clock from t = 0; only yellow waits for the ego
+        assert not _plan(by_state["green"])[0].triggered and not _plan(by_state["red"])[0].triggered
+        plan, story = _plan(by_state["yellow"])
+        assert plan.triggered
+        assert [p.name for p in plan.plan.phases] == ["tls_yellow", "tls_red", "tls_red_clear", "tls_green"]
+        assert dict(plan.waiting)[sid] == "green" and dict(plan.tested)[sid] == "yellow"
+        # every phase starts on the dilemma-zone condition, delayed by its offset: 4 s of yellow, red, the red's
+        # last 4 s clearing the crossing legs, then green
+        events = story.findall(".//Event")
+        delays = [float(e.find("StartTrigger//Condition").get("delay")) for e in events]
+        assert delays == [0.0, timing.yellow, timing.red, timing.red + timing.yellow]
+        assert all(next(e.iter("TimeToCollisionCondition")) is not None for e in events)
+        assert not any(story.iter("TrafficSignalControllerAction"))     # only what esmini executes
+        ttc = next(events[0].iter("TimeToCollisionCondition"))
         assert float(ttc.get("value")) == pytest.approx(timing.yellow + timing.margin)
         assert (ttc.get("rule"), ttc.get("freespace")) == ("lessThan", "true")
         assert next(story.iter("EntityRef")).get("entityRef") == "ego"
@@ -164,6 +173,6 @@ def test_yellow_keeps_the_fixed_schedule_when_the_ego_starts_at_the_line(seeds):
     shift = tree_config()["trajectory"]["init_location"]["max_shift"]
     assert stop_line(ctx, ctx.ego_signals[0]) is not None
     assert stop_line(ctx, ctx.ego_signals[0], slack=shift) is None
-    assert by_state["yellow"].fragments[1:] == ("", "")
+    assert not _plan(by_state["yellow"])[0].triggered
     rows, _ = _play(_node(seed), ())
     assert rows[0][1] == "yellow"

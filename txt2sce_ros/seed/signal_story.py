@@ -18,6 +18,7 @@ its features and the analysis labels read).
 
 from __future__ import annotations
 
+from copy import deepcopy
 from dataclasses import dataclass
 
 from lxml import etree
@@ -99,7 +100,7 @@ def write_plan(plan: SignalPlan, *, time_limit: float, trigger: etree._Element |
     (as a controller's do) while a phase starts before `time_limit`; at least one event is written (a Story needs
     one), so a one-phase plan re-applies its phase after its duration. With `trigger` (a `Condition` element):
     Init shows the last phase (the one the plan settles in), phase 0 starts when `trigger` holds and phase k
-    `sum(durations[:k])` s after phase 0's event completed; the last phase then holds."""
+    `sum(durations[:k])` s later (the same condition with that delay); the last phase then holds."""
     name = plan.name
     story = etree.Element("Story", name=name)
     act = etree.SubElement(story, "Act", name=f"{name}_act")
@@ -126,16 +127,17 @@ def write_plan(plan: SignalPlan, *, time_limit: float, trigger: etree._Element |
             _time_condition(_event(man, f"{name}_{ph.name}_{k}", ph), f"{name}_{ph.name}_{k}_start", t)
             written += 1
     else:
+        # Every phase starts on the same condition, delayed by the phase's offset from the first: a delay counts
+        # from when the condition held, so phase k starts exactly sum(durations[:k]) s after phase 0 (chained on
+        # phase 0's completion instead, each would start one step late).
         init = init_actions(phases[-1].states)
-        first = f"{name}_{phases[0].name}"
-        ev = _event(man, first, phases[0])
-        ev.append(_trigger_of(trigger))
         offset = 0.0
-        for prev, ph in zip(phases, phases[1:]):
-            offset += prev.duration
-            c = _condition(_event(man, f"{name}_{ph.name}", ph), f"{name}_{ph.name}_start", offset)
-            etree.SubElement(etree.SubElement(c, "ByValueCondition"), "StoryboardElementStateCondition",
-                             storyboardElementType="event", storyboardElementRef=first, state="completeState")
+        for k, ph in enumerate(phases):
+            offset += phases[k - 1].duration if k else 0.0
+            cond = deepcopy(trigger)
+            cond.set("name", f"{trigger.get('name', name)}_{ph.name}" if k else trigger.get("name", name))
+            cond.set("delay", f"{offset:g}")
+            _event(man, f"{name}_{ph.name}", ph).append(_trigger_of(cond))
     act_start = _condition(act, f"{name}_act_start")
     etree.SubElement(etree.SubElement(act_start, "ByValueCondition"), "SimulationTimeCondition", value="0",
                      rule="greaterThan")
@@ -179,7 +181,7 @@ def read_plan(inits: list[etree._Element], story: etree._Element | None) -> Deco
     events = list(story.iter("Event")) if story is not None else []
     first_trigger = events[0].find("StartTrigger//ByValueCondition/SimulationTimeCondition") if events else None
     if events and first_trigger is None:
-        starts = [0.0] + [float(e.find("StartTrigger//Condition").get("delay", "0")) for e in events[1:]]
+        starts = [float(e.find("StartTrigger//Condition").get("delay", "0")) for e in events]
         names = [_phase_name(e.get("name", ""), name, numbered=False) for e in events]
         states = [_states(e) for e in events]
         durs = [b - a for a, b in zip(starts, starts[1:])] + [0.0]
