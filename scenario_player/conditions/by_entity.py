@@ -210,22 +210,32 @@ class RelativeDistanceCondition(EntityCheck):
 
 @dataclass(frozen=True, slots=True)
 class TimeHeadwayCondition(EntityCheck):
-    """Headway of the triggering entity to `ref` ahead of it: longitudinal distance / own speed."""
+    """Headway of the triggering entity to `ref` ahead of it: distance / own speed. The distance is the one the
+    condition names: in 1.0 (`alongRoute`) the cartesian distance unless along the route (1.0: "if false, the
+    cartesian distance is used"; esmini too), in 1.1+ its `relativeDistanceType`; a cartesian distance carries
+    the sign of the longitudinal one (negative: `ref` behind), as esmini's does."""
 
     ref: str
     value: float
     freespace: bool
     rule: Rule
     cs: str
+    rdt: str = "longitudinal"
 
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "TimeHeadwayCondition":
-        _, cs = _distance_kind(el)
+        rdt, cs = _distance_kind(el)
+        if cs in ("road", "lane") and rdt == "euclidianDistance":
+            rdt = "longitudinal"          # along the route: the distance along it
         return cls(ctx.req(el, "entityRef"), ctx.float(el, "value"), ctx.bool(el, "freespace"),
-                   Rule.from_xml(ctx, el), cs)
+                   Rule.from_xml(ctx, el), cs, rdt)
 
     def holds_for(self, world: "World", ent: "Entity") -> bool:
-        d = world.measure.between(ent, world.entity(self.ref), "longitudinal", self.cs, self.freespace)
+        ref = world.entity(self.ref)
+        d = world.measure.between(ent, ref, self.rdt, self.cs, self.freespace)
+        if self.rdt == "euclidianDistance" and world.measure.between(ent, ref, "longitudinal", "entity",
+                                                                      self.freespace) < 0:
+            d = -d
         # Signed: a reference behind the triggering entity gives a negative headway (so 'greaterThan' waits
         # until it has pulled ahead, as in cut-in scenarios); standing still, the headway is ±infinite.
         if ent.speed <= 1e-6:
