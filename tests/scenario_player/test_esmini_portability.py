@@ -3,7 +3,8 @@
 
 The sample: seeds of a pedestrian crossing that ends beside the road (nuro r584), a party crossing a junction
 (zoox r362), signal-controlled junctions (cruise r89, waymo r574) and a straight road (cruise r58), plus tree nodes
-of the signal seed that carry the dilemma-zone yellow (TrafficSignalControllerAction) and mutated phases.
+of the signal seed that carry the dilemma-zone yellow and mutated phases (timed TrafficSignalStateActions, the form
+both players execute): on those every light must change state at the same time in esmini as in ours.
 `txt2sce esmini-check` prints the same verdict for every dev seed."""
 
 from __future__ import annotations
@@ -12,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from scenario_player.esmini import available, check_file
+from scenario_player.esmini import LightCheck, available, check_file, check_lights
 from txt2sce_ros.seed.generate import write_seeds
 from txt2sce_ros.tree.build import build_trees, tree_config
 
@@ -43,6 +44,8 @@ def _assert_portable(f: Path) -> None:
     assert res.compared is not None and res.compared.ran, (f.name, res.compared)
     worst = max(res.compared.entities, key=lambda e: e.max)
     assert worst.rows > 20 and worst.max < TARGET, (f.name, worst)
+    if b"TrafficSignalStateAction" in f.read_bytes():
+        assert res.lights is not None and res.lights.agree, (f.name, res.lights and res.lights.first_difference())
 
 
 @pytest.mark.parametrize("name", SAMPLE)
@@ -55,10 +58,40 @@ def test_tree_nodes_run_in_esmini_without_error_and_agree(written) -> None:
     res = build_trees([seed], written / "trees", seed=0, cfg=tree_config(max_nodes=60, validate=False), jobs=1)
     assert res and not res[0].errors
     nodes = sorted((written / "trees").glob("*/nodes/n*.xosc"))
-    signal_nodes = [f for f in nodes if b"TrafficSignalControllerAction" in f.read_bytes()]
-    assert signal_nodes, "the sample must hold nodes with a dilemma-zone yellow"
-    for f in sorted(set(nodes[:: max(1, len(nodes) // 6)] + signal_nodes[:3])):
+    dilemma = [f for f in nodes if b"_dilemma_zone" in f.read_bytes()]
+    mutated = [f for f in nodes if b"_tls_red" in f.read_bytes() and f not in dilemma]
+    assert dilemma and mutated, "the sample must hold nodes with a dilemma-zone yellow and other mutated phases"
+    for f in sorted(set(nodes[:: max(1, len(nodes) // 6)] + dilemma[:3] + mutated[:2])):
         _assert_portable(f)
+
+
+def test_light_changes_are_seen_in_esmini_and_compared(written) -> None:
+    # waymo r574: the AV waits at red, which turns green at its first action. Both players switch every light of
+    # the junction at the same step; the probe really reads esmini's lights (changes seen, not an empty match).
+    seed = written / "seeds" / "dmvca-waymo-20240411-r574.xosc"
+    lights = check_lights(seed, written / "probe")
+    assert lights is not None and lights.agree, lights and lights.first_difference()
+    assert len(lights.esmini) >= 4 and {sid for _, sid, _ in lights.esmini} >= {"1010", "1020", "1030", "1040"}
+    # a change one step later in ours is a disagreement
+    late = LightCheck(tuple((round(t + 0.05, 3), sid, st) for t, sid, st in lights.ours), lights.esmini)
+    assert not late.agree and "light change" in late.first_difference()
+
+
+def test_a_light_esmini_does_not_know_is_an_error(written, tmp_path) -> None:
+    # The seed's map with its lights in the German catalogue (as the bundled maps had them): esmini finds no
+    # light of that id, logs an [error] and the light check fails.
+    import shutil
+
+    seed = written / "seeds" / "dmvca-waymo-20240411-r574.xosc"
+    shutil.copytree(seed.parent / "maps", tmp_path / "maps")
+    xodr = next((tmp_path / "maps").glob("junction4_signal*.xodr"))
+    xodr.write_text(xodr.read_text(encoding="utf-8").replace('country="OpenDRIVE"', 'country="DE"'),
+                    encoding="utf-8")
+    copy = tmp_path / seed.name
+    copy.write_bytes(seed.read_bytes())
+    res = check_file(copy)
+    assert any("No matching traffic signal" in e for e in res.run.errors), res.run.errors[:3]
+    assert res.lights is not None and not res.lights.agree and not res.ok(TARGET)
 
 
 def test_an_unknown_controller_is_seen_as_an_error(written, tmp_path) -> None:

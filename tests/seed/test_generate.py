@@ -85,12 +85,16 @@ def test_names_follow_the_seed_format(out, gold) -> None:
 
 
 def test_signal_phases_follow_the_reported_state(gold) -> None:
+    from txt2sce_ros.seed.signal_story import plan_of
+
     # AV stopped at red, then moves off: red first, then green at its first action
     s = gold["dmvca-waymo-20240411-r574"]
     res = generate_seed(s, seed=0, map_ref="m")
     root = etree.fromstring(res.xosc, safe_parser())
-    phases = root.findall(".//TrafficSignalController/Phase")
-    assert phases and phases[0].get("name") == "phase_red"
+    plan = plan_of(root)           # Init states, then timed TrafficSignalStateActions (no controller)
+    assert plan is not None and not plan.triggered
+    assert [p.name for p in plan.plan.phases[1:]] == ["phase_green"]
+    assert "red" in {c for _, c in plan.tested} and root.find(".//TrafficSignalController") is None
     ego_road = res.manifest["road_match"]["ego_road"]
     assert ego_road
 

@@ -125,10 +125,11 @@ def test_red_light_turns_green_after_the_conflict(gold) -> None:
     from lxml import etree
 
     from txt2sce_ros.seed.defaults import seed_defaults
+    from txt2sce_ros.seed.signal_story import plan_of
     from txt2sce_ros.xosc.schema import safe_parser
 
     timing = seed_defaults().timing
     root = etree.fromstring(generate_seed(gold["dmvca-apple-20211111-r241"], map_ref="m").xosc, safe_parser())
-    phases = [(p.get("name"), float(p.get("duration"))) for p in root.iterfind(".//TrafficSignalController/Phase")]
-    assert phases[0] == ("phase_red", timing.time_to_conflict + timing.signal_phase_before)
-    assert phases[1][0] == "phase_green"
+    phases = plan_of(root).plan.phases      # the Init states, then the timed state actions
+    assert phases[0].duration == timing.time_to_conflict + timing.signal_phase_before
+    assert "red" in {c for _, c in phases[0].states} and phases[1].name == "phase_green"

@@ -18,7 +18,7 @@ def test_blocks_of_the_junction_seed_in_insertion_order(junction_bytes):
         (BlockKind.WEATHER, "environment", 1),
         (BlockKind.EGO, "ego", 1),
         (BlockKind.NPC, "npc1", 2),                 # ScenarioObject + Init Private
-        (BlockKind.SIGNAL, "signal_ctrl_4", 3),      # controller + empty Init GlobalAction and Story slots
+        (BlockKind.SIGNAL, "signal_ctrl_4", 4),      # an Init GlobalAction per light + the signal Story
         (BlockKind.EVENT, "npc1_e1_go_straight", 1),
         (BlockKind.EVENT, "npc1_e2_turn_left", 1),
         (BlockKind.OBSTACLE, "obs1", 2),
@@ -27,7 +27,8 @@ def test_blocks_of_the_junction_seed_in_insertion_order(junction_bytes):
     assert d.blocks[0].fragments[0].startswith("<Environment name=\"environment\">")
     assert d.blocks[2].fragments[1].startswith("<Private entityRef=\"npc1\">")
     assert d.blocks[-1].fragments == ("", "")
-    assert d.blocks[3].fragments[1:] == ("", "")      # the dilemma-zone yellow's slots start empty
+    assert d.blocks[3].fragments[-1].startswith('<Story name="signal_ctrl_4">')
+    assert all(f.startswith("<GlobalAction>") for f in d.blocks[3].fragments[:-1])
     # the template keeps everything else: the ego's ScenarioObject and the story skeleton
     text = "".join(d.template.pieces)
     assert '<ScenarioObject name="ego">' in text and "<Maneuver name=\"npc1_maneuver\">" in text

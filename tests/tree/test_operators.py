@@ -9,6 +9,7 @@ import pytest
 from lxml import etree
 
 from txt2sce_ros.errors import InputError
+from txt2sce_ros.seed.signal_story import read_plan
 from txt2sce_ros.tree import BlockKind, assemble, disassemble
 from txt2sce_ros.tree.build import tree_config
 from txt2sce_ros.tree.environment import signal_timing
@@ -130,10 +131,16 @@ def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
                 ("tls_red_clear", timing.yellow, "red", "yellow"), ("tls_green", timing.hold, "green", "red")],
     }
     for v in vs:
-        ctrl = parse_fragment(v.fragments[0])
-        phases = [(p.get("name"), float(p.get("duration")),
-                   *[s.get("state") for s in p.findall("TrafficSignalState")]) for p in ctrl.findall("Phase")]
-        assert phases == [(n, dur, a, b, b) for n, dur, a, b in expected[v.features[1]]]
+        parts = [parse_fragment(f) for f in v.fragments]
+        plan = read_plan(parts[:-1], parts[-1]).plan
+        want = expected[v.features[1]]
+        assert [tuple(dict(p.states)[sid] for sid in ("1", "2", "3")) for p in plan.phases] == [
+            (a, b, b) for _, _, a, b in want]
+        # Read back from the timed state actions: every phase's start, so all durations but the last (which
+        # outlasts the run) and all names but the first (shown by the Init actions)
+        assert [p.duration for p in plan.phases[:-1]] == [dur for _, dur, _, _ in want[:-1]]
+        assert [p.name for p in plan.phases[1:]] == [n for n, _, _, _ in want[1:]]
+        assert not any(e.tag == "TrafficSignalController" for part in parts for e in part.iter())
         assert _valid_with(d, block, v) == []
     # Even green rewrites the seed's cycle (green 20 s, then yellow, then red): green now holds for the run.
     assert [c.new for c in vs[0].changes] == [f"tls_green:{timing.hold:g} (green)"]
@@ -163,11 +170,14 @@ def test_tls_states_hold_their_meaning_in_the_player(cfg):
             frame = sim.step()
         seen[v.features[1]] = states
         assert max(states) >= timing.yellow + timing.red, (v.features, max(states), sim.end_reason)
-    y, r = timing.yellow, timing.red
+    # A phase starting at T is started by `SimulationTime > T`: its actions run in the first step after T and
+    # show from the frame after that (T + 0.1 s at 20 Hz), exactly as esmini runs them (esmini-check compares).
+    y, r, late = timing.yellow, timing.red, 0.1
     assert {seen["green"][t] for t in seen["green"]} == {"green"}
-    assert seen["yellow"][0.0] == seen["yellow"][y - 0.05] == "yellow"
-    assert seen["yellow"][y] == seen["yellow"][y + r - 0.05] == "red" and seen["yellow"][y + r] == "green"
-    assert seen["red"][0.0] == seen["red"][r - 0.05] == "red" and seen["red"][r] == "green"
+    assert seen["yellow"][0.0] == seen["yellow"][round(y + late - 0.05, 2)] == "yellow"
+    # (the run ends at y + r = 16 s, when the standing ego counts as at its goal: red until then)
+    assert {seen["yellow"][t] for t in seen["yellow"] if t >= y + late} == {"red"}
+    assert seen["red"][0.0] == seen["red"][round(r + late - 0.05, 2)] == "red" and seen["red"][r + late] == "green"
 
 
 def test_wpm_lane_change_offset_keeps_entity_in_its_lane(cfg):

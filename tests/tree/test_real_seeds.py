@@ -78,13 +78,14 @@ def test_tls_sets_the_signal_facing_the_av(seeds):
     from txt2sce_ros.seed.context import build_context
     from txt2sce_ros.tree.mutate import block_variants
     from txt2sce_ros.tree.build import tree_config
+    from txt2sce_ros.seed.signal_story import read_plan
     from txt2sce_ros.tree.xml import parse_bytes, parse_fragment
 
     cfg = tree_config()
     checked = 0
     for s in seeds:
         data = s.read_bytes()
-        if b"<TrafficSignalController" not in data:
+        if b"TrafficSignalStateAction" not in data:
             continue
         ctx = build_context(parse_bytes(data, str(s)), source=str(s), seed_path=s)
         ego = ctx.starts["ego"]
@@ -101,8 +102,8 @@ def test_tls_sets_the_signal_facing_the_av(seeds):
         assert not first.controlled_lanes or any(lane in first.controlled_lanes for _, lane in approach)
         block = next(b for b in disassemble(data).blocks if b.kind is BlockKind.SIGNAL)
         for v in block_variants(block, ctx, cfg, seed=0, seed_key=1):
-            phase = parse_fragment(v.fragments[0]).find("Phase")
-            states = {t.get("trafficSignalId"): t.get("state") for t in phase.iterfind("TrafficSignalState")}
+            parts = [parse_fragment(f) for f in v.fragments]
+            states = dict(read_plan(parts[:-1], parts[-1]).tested)
             mine = next(f for f in ctx.ego_signals if f in states)
             assert states[mine] == v.features[1]          # the 'ego' feature is the AV's light
         checked += 1

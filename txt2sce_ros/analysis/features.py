@@ -60,13 +60,12 @@ def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:
     `seed.signal_story`), 'none' without one: the signal `tree.environment.primary_signal` picks, the one the
     tree's TLS mutation changes. A scenario in the older form (a RoadNetwork TrafficSignalController) is labelled
     by its controller's first phase."""
-    from ..seed.signal_story import colour_of, is_signal_init, is_signal_story, read_plan
+    from ..seed.signal_story import colour_of, plan_of
     from ..tree.environment import primary_signal
 
-    story = next((s for s in root.iterfind("Storyboard/Story") if is_signal_story(s)), None)
-    if story is not None:
-        inits = [g for g in root.iterfind("Storyboard/Init/Actions/GlobalAction") if is_signal_init(g)]
-        states = read_plan(inits, story).tested
+    decoded = plan_of(root)
+    if decoded is not None:
+        states = decoded.tested
     else:
         phase = root.find(".//TrafficSignalController/Phase")
         states = tuple((s.get("trafficSignalId", ""), s.get("state", ""))

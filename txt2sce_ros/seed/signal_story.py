@@ -179,9 +179,11 @@ def read_plan(inits: list[etree._Element], story: etree._Element | None) -> Deco
     waiting = tuple(s for ga in inits for s in _states(ga))
     name = story.get("name", "") if story is not None else ""
     events = list(story.iter("Event")) if story is not None else []
-    first_trigger = events[0].find("StartTrigger//ByValueCondition/SimulationTimeCondition") if events else None
-    if events and first_trigger is None:
-        starts = [float(e.find("StartTrigger//Condition").get("delay", "0")) for e in events]
+    # Triggered: every event delayed from one condition (the first undelayed); timed: events on the clock.
+    delays = [float(e.find("StartTrigger//Condition").get("delay", "0")) for e in events]
+    timed_first = bool(events) and events[0].find("StartTrigger//ByValueCondition/SimulationTimeCondition") is not None
+    if events and (not timed_first or (len(delays) > 1 and all(d > 0 for d in delays[1:]))):
+        starts = delays
         names = [_phase_name(e.get("name", ""), name, numbered=False) for e in events]
         states = [_states(e) for e in events]
         durs = [b - a for a, b in zip(starts, starts[1:])] + [0.0]
@@ -202,6 +204,16 @@ def read_plan(inits: list[etree._Element], story: etree._Element | None) -> Deco
     durs += [0.0] * (len(states) - len(durs))
     phases = tuple(SignalPhase(n, round(d, 3), s) for n, d, s in zip(names, durs, states))
     return DecodedPlan(SignalPlan(name, phases), False, waiting)
+
+
+def plan_of(root: etree._Element) -> DecodedPlan | None:
+    """The signal plan of a whole scenario (its first signal Story and the Init actions that set lights), None
+    for a scenario without one."""
+    story = next((s for s in root.iterfind("Storyboard/Story") if is_signal_story(s)), None)
+    if story is None:
+        return None
+    inits = [g for g in root.iterfind("Storyboard/Init/Actions/GlobalAction") if is_signal_init(g)]
+    return read_plan(inits, story)
 
 
 def _phase_name(event: str, story: str, *, numbered: bool) -> str:
