@@ -13,11 +13,11 @@ from lxml import etree
 
 from ..sketch import LANED_POSITIONS
 from ..xosc.entitydb import EntityDB, entity_db
-from .signal_story import write_plan
 from .model import (
     EntityPlan, EnvironmentPlan, EventPlan, LaneChangeAct, LaneOffsetAct, LanePose, Pose, RouteAct, ScenarioPlan,
     SpeedAct, TrajectoryAct, Trigger,
 )
+from .signal_story import write_plan
 
 #: The FileHeader date: fixed so that seeds are byte-identical across runs (the manifest says when it was built).
 HEADER_DATE = "2024-01-01T00:00:00"
