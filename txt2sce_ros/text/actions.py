@@ -98,7 +98,9 @@ _NEEDS: dict[str, tuple[str, ...]] = {
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
-_INTENT = compile_gated(r"\b(?:to|preparing\s+to|waiting\s+to|planning\s+to|intending\s+to|in\s+order\s+to|"
+# A bare "to" before a possessive is a place ("stopped to its left began to move"), not an infinitive.
+_INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
+                     r"intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"

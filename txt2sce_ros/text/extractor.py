@@ -121,6 +121,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     ego_start, ego_actions = ego_sequence(d, first_pos, party_first=first_is_party)
     if ego_start == "moving" and not ego_actions:
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
+    elif ego_start == "moving" and ego_actions[0] in "bch":
+        ego_actions = "a" + ego_actions  # speeding up, slowing or stopping is done by a party already on its way
     ego_heading = heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(
         r"\bturn(?:ed|ing)\b|\b(?:make|making|complete|completing|execute|executing)\s+(?:a|an|its|the)\s+"
@@ -171,7 +173,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             acts = (acts or "a") + ("f" if side == "left" else "g")
         if pos not in ("R5", "R6", "R7"):
             lane = None
-        if not known and not pacts and (e.idx == d.partner or d.partner is None):
+        # A party standing still throughout that the AV, moving forward, ran into stood in its path: both its
+        # manoeuvre (none) and its place (ahead, in the AV's lane: the first reading) are told.
+        in_path = start == "stopped" and not acts and ego_start == "moving" and "k" not in ego_actions
+        if not known and not pacts and not in_path and (e.idx == d.partner or d.partner is None):
             # Only the party the conflict is about can leave a scenario unbuildable: a bystander the text does
             # not place still gets its best reading (sketch.md: refuse only what is truly missing).
             missing += ["position", "actions"]

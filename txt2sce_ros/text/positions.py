@@ -73,8 +73,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if d.junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    from_side = fre.search(r"\bfrom\s+the\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))", ctx,
-                          re.I)
+    from_side = fre.search(r"\bfrom\s+(?:the|EGO's)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
+                          ctx, re.I)
     if d.junction and from_side:
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
     if d.junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):

@@ -42,6 +42,9 @@ _LANE_CUES = compile_gated(
     r"\b(left|right)(?:-hand|most)?\s+(?:adjacent\s+|neighbou?ring\s+|parallel\s+)?(?:travel\s+)?lane\b|"
     r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
     r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+EGO\b|\bon\s+(?:EGO's|its)\s+(left|right)\b|"
+    # "a sedan stopped to its left": a party is not beside itself, so "its" is the AV (a move "to its left" is not)
+    r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
+    r"\bto\s+its\s+(left|right)\b|"
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
     r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
