@@ -109,8 +109,6 @@ def encode_odometry(e: EntityState, name: str | None = None) -> bytes:
 
 def encode_markers(frame: Frame, ego_name: str | None = None) -> bytes:
     """`ego_name`: the marker text of the ego instead of its own name (the player's wire name of the ego)."""
-    from txt2sce_ros.ros_io import _CATEGORY_COLOURS   # the same colours the rclpy path uses
-
     entities = (frame.ego, *frame.objects)
     parts = [HEADER, _u32.pack(len(entities))]
     off = 4
@@ -126,6 +124,8 @@ def encode_markers(frame: Frame, ego_name: str | None = None) -> bytes:
         key = (e.category, text)
         tail = _MARKER_TAIL.get(key)
         if tail is None:
+            from txt2sce_ros.ros_io import _CATEGORY_COLOURS   # the same colours the rclpy path uses
+
             tail = _marker_tail(e.category, text, _CATEGORY_COLOURS.get(e.category, (0.6, 0.6, 0.6)))
             if len(_MARKER_TAIL) > 4096:
                 _MARKER_TAIL.clear()
@@ -261,12 +261,14 @@ def encode_goal(goal: Goal, t: float = 0.0) -> bytes:
                                                            math.sin(h / 2.0), math.cos(h / 2.0))))
 
 
+_TWIST = struct.Struct("<6d")
+
+
 def encode_command(cmd: ControlCommand, frame_id: str = "ego") -> bytes:
-    w = _W()
-    w.header(cmd.t, frame_id)
-    w.pack(_f64x3, 8, float(cmd.speed), 0.0, 0.0)
-    w.b += _f64x3.pack(0.0, 0.0, float(cmd.yaw_rate))
-    return bytes(w.b)
+    """`geometry_msgs/TwistStamped`: stamp, frame id, then linear and angular (8-aligned after the header)."""
+    fid = _cdr_string(frame_id)
+    return b"".join((HEADER, _stamp(cmd.t), fid, bytes((-(8 + len(fid))) % 8),
+                     _TWIST.pack(float(cmd.speed), 0.0, 0.0, 0.0, 0.0, float(cmd.yaw_rate))))
 
 
 # --- decoders --------------------------------------------------------------------------------------------------------

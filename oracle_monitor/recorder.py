@@ -7,10 +7,11 @@ complete MCAP records on disk — and `close()` (called on shutdown, SIGINT, or 
 summary and `metadata.yaml`. A bag cut short by a crash has no metadata and no footer; `bagread.read_bag` reads
 such a bag record by record up to where it stops.
 
-The flush uses `McapWriter.close_chunk()` of rosbags 0.11 (pinned in requirements.txt), and `write` goes to the
+A chunk is closed as `McapWriter.close_chunk()` of rosbags 0.11 (pinned in requirements.txt) closes it, by
+`_close_chunk` (the same bytes, tested, with the message indexes packed per channel), and `write` goes to the
 storage's pending chunk directly with one struct.pack per message (the same record bytes rosbags writes, without
 its BytesIO per record and its per-message connection check), keeping the Writer's statistics itself:
-internals of that version, kept in `_flush` and `write` so one place changes if rosbags does. The round-trip tests
+internals of that version, kept in `_close_chunk`, `_flush` and `write` so one place changes if rosbags does. The round-trip tests
 read every recording back with rosbags' Reader and the mcap library, which catches any drift.
 
 Log times are the receive times (wall clock, ns, made strictly increasing) as `ros2 bag record` stamps them, so a
@@ -63,7 +64,48 @@ def _fast_write(storage: Any, cid: int, ns: int, data: bytes | memoryview) -> No
     bio.write(_MESSAGE_RECORD.pack(0x05, 22 + len(data), cid, 0, ns, ns))
     bio.write(data)
     if bio.tell() > 2**20:
+        _close_chunk(storage)
+
+
+_CHUNK_HEAD = struct.Struct("<BQQQQIIQ")   # opcode 0x06, record length, start, end, size, CRC, "" (compression), size
+_INDEX_HEAD = struct.Struct("<BQHI")       # opcode 0x07, record length, channel, bytes of (time, offset) pairs
+_U64 = struct.Struct("<Q")
+
+
+def _close_chunk(storage: Any) -> None:
+    """`McapWriter.close_chunk()` of rosbags 0.11 for an uncompressed chunk, with each channel's message index
+    packed in one struct call instead of two 8-byte writes per message (about a tenth of a recording's cost): the
+    same bytes (tested against rosbags' own). A compressed chunk goes to rosbags."""
+    if storage.compression:
         storage.close_chunk()
+        return
+    from collections import defaultdict
+    from io import BytesIO
+
+    from rosbags.rosbag2.storage_mcap import PendingChunk
+
+    chunk, out = storage.chunk, storage.bio
+    data = chunk.bio.getbuffer()
+    size = len(data)
+    start, end = chunk.message_start_time, chunk.message_end_time
+    chunk_start = out.tell()
+    out.write(_CHUNK_HEAD.pack(0x06, 40 + size, start, end, size, 0, 0, size))
+    out.write(data)
+    del data                                  # release the buffer export before the BytesIO is dropped
+    chunk_end = out.tell()
+    offsets: list[tuple[int, int]] = []
+    for cid, msgs in chunk.msgs.items():
+        offsets.append((cid, out.tell()))
+        flat = [v for pair in msgs for v in pair]
+        out.write(_INDEX_HEAD.pack(0x07, 6 + 8 * len(flat), cid, 8 * len(flat)))
+        out.write(struct.pack(f"<{len(flat)}Q", *flat))
+    rec = BytesIO()
+    rec.write(struct.pack("<QQQQI", start, end, chunk_start, chunk_end - chunk_start, len(offsets) * 10))
+    for cid, offset in offsets:
+        rec.write(struct.pack("<HQ", cid, offset))
+    rec.write(struct.pack("<QIQQ", out.tell() - chunk_end, 0, size, size))
+    storage.chunks.append(rec)
+    storage.chunk = PendingChunk(2**63 - 1, 0, BytesIO(), defaultdict(list))
 
 
 _DEFINITIONS: dict[str, tuple[str, str]] = {}
@@ -134,9 +176,13 @@ class BagRecorder:
     def write_batch(self, items: list[tuple[str, bytes]], received_ns: int | None = None) -> None:
         """Append several messages received together (one lock-step step, at `received_ns` or now), with
         consecutive log times: one buffer write instead of one per message, for the in-process hot path."""
+        self.write_steps([(received_ns, items)])
+
+    def write_steps(self, steps: list[tuple[int | None, list[tuple[str, bytes]]]]) -> None:
+        """`write_batch` for several steps at once (each: received time or None for now, its messages): one buffer
+        write and one round of bookkeeping for all of them."""
         if self.closed:
             raise InputError("recording already closed", source=str(self.path))
-        ns = max(time.time_ns() if received_ns is None else received_ns, self._last_ns + 1)
         w = self._writer
         storage = w.storage
         chunk = storage.chunk
@@ -147,34 +193,43 @@ class BagRecorder:
         stats = storage.channel_stats
         index = chunk.msgs
         pack = _MESSAGE_RECORD.pack
-        t = ns
         cids = self._cids
-        for topic, data in items:
-            cid = cids.get(topic)
-            if cid is None:
-                cid = cids[topic] = self._connection(topic, None).id
-            rec = pack(0x05, 22 + len(data), cid, 0, t, t)
-            index[cid].append((t, pos))
-            pos += len(rec) + len(data)
-            parts.append(rec)
-            parts.append(data)
-            counts[cid] += 1
-            stats[cid] += 1
-            t += 1
-        last = t - 1
+        last = self._last_ns
+        first = None
+        n = 0
+        for received_ns, items in steps:
+            t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
+            if first is None:
+                first = t
+            for topic, data in items:
+                cid = cids.get(topic)
+                if cid is None:
+                    cid = cids[topic] = self._connection(topic, None).id
+                rec = pack(0x05, 22 + len(data), cid, 0, t, t)
+                index[cid].append((t, pos))
+                pos += len(rec) + len(data)
+                parts.append(rec)
+                parts.append(data)
+                counts[cid] += 1
+                stats[cid] += 1
+                t += 1
+            n += len(items)
+            last = t - 1
+        if first is None or not n:
+            return
         bio.write(b"".join(parts))
-        if ns < storage.message_start_time:
-            storage.message_start_time = ns
+        if first < storage.message_start_time:
+            storage.message_start_time = first
         storage.message_end_time = max(storage.message_end_time, last)
-        if ns < chunk.message_start_time:
-            chunk.message_start_time = ns
+        if first < chunk.message_start_time:
+            chunk.message_start_time = first
         chunk.message_end_time = max(chunk.message_end_time, last)
-        w.min_timestamp = min(w.min_timestamp, ns)
+        w.min_timestamp = min(w.min_timestamp, first)
         w.max_timestamp = max(w.max_timestamp, last)
         self._last_ns = last
-        self.count += len(items)
+        self.count += n
         if bio.tell() > 2**20:
-            storage.close_chunk()
+            _close_chunk(storage)
         if self.flush_interval >= 0 and time.monotonic() - self._last_flush >= self.flush_interval:
             self._flush()
 
@@ -188,7 +243,7 @@ class BagRecorder:
         storage = self._writer.storage
         if storage is not None:
             if storage.chunk.bio.tell():
-                storage.close_chunk()
+                _close_chunk(storage)
             storage.bio.flush()
         self._last_flush = time.monotonic()
 

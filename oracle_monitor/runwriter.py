@@ -85,7 +85,8 @@ class RunWriter:
         closed loop whose own working set evicts them every step. A batch is written at least every
         `flush_interval` seconds, so a crash loses what an unbatched recorder would lose (the unflushed tail)."""
         if self._base is not None:
-            self._encode(frame, command, None)
+            for topic, data in self._encode(frame, command):
+                self._raw(topic, data)
             return
         self._steps.append((time.time_ns(), frame, command))
         if len(self._steps) >= BATCH_STEPS or time.monotonic() - self._drained >= self.rec.flush_interval:
@@ -94,12 +95,12 @@ class RunWriter:
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
         self._drained = time.monotonic()
-        for ns, frame, command in steps:
-            self._encode(frame, command, ns)
+        encode = self._encode
+        self.rec.write_steps([(ns, encode(frame, command)) for ns, frame, command in steps])
 
-    def _encode(self, frame: Frame, command: ControlCommand | None, ns: int | None) -> None:
-        # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation) and
-        # into the bag as one batch.
+    def _encode(self, frame: Frame, command: ControlCommand | None) -> list[tuple[str, bytes]]:
+        # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation); a
+        # drain writes a whole batch of steps into the bag at once.
         odom = cdr.encode_odometry
         items = [(c.TOPIC_CLOCK, cdr.encode_clock(frame.t)),
                  (c.TOPIC_TRAFFIC_LIGHTS, cdr.encode_lights(frame.lights, frame.t))]
@@ -113,11 +114,7 @@ class RunWriter:
         items.append((c.TOPIC_EGO_ODOM, odom(frame.ego)))
         if command is not None:
             items.append((c.TOPIC_COMMAND, cdr.encode_command(command)))
-        if ns is not None:
-            self.rec.write_batch(items, ns)
-        else:
-            for topic, data in items:
-                self._raw(topic, data)
+        return items
 
     def violations(self, t: float, violations: Iterable[Violation]) -> None:
         vs = list(violations)

@@ -209,3 +209,27 @@ def test_real_closed_loop_runs_recorded_and_rejudged_match(tmp_path: Path) -> No
     assert result.complete and result.agrees_with_live() is True
     assert [v.to_dict() for v in result.verdicts] == [v.to_dict() for v in live]
     assert [v.frames for v in result.verdicts] == [v.frames for v in live] and live[1].frames > 500
+
+
+def test_fast_chunk_close_writes_the_bytes_rosbags_writes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The recorder closes chunks (every flush, every MiB) with its own packing of the message indexes: the MCAP
+    # file must be byte for byte what rosbags' McapWriter.close_chunk writes. A flush after every write makes
+    # many chunks, with one and several channels each.
+    from oracle_monitor import cdr, recorder
+
+    frames = _frames()
+
+    def write(path: Path) -> bytes:
+        rec = recorder.BagRecorder(path, flush_interval=0.0)
+        ns = 1_700_000_000_000_000_000
+        for i, f in enumerate(frames):
+            rec.write(c.TOPIC_CLOCK, cdr.encode_clock(f.t), log_time_ns=ns + 4 * i)
+            rec.write_batch([(c.TOPIC_EGO_ODOM, cdr.encode_odometry(f.ego)),
+                             (c.TOPIC_OBJECTS_MARKERS, cdr.encode_markers(f))], ns + 4 * i + 1)
+        rec.close()
+        return b"".join(p.read_bytes() for p in sorted(path.glob("*.mcap")))
+
+    ours = write(tmp_path / "ours" / "bag")           # the same directory name: the file embeds its name
+    monkeypatch.setattr(recorder, "_close_chunk", lambda storage: storage.close_chunk())
+    theirs = write(tmp_path / "theirs" / "bag")
+    assert len(ours) > 10_000 and ours == theirs
