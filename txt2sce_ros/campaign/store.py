@@ -59,6 +59,10 @@ class ResultStore:
         try:
             self.db = sqlite3.connect(self.path)
             self.db.execute("PRAGMA journal_mode=WAL")
+            # WAL + NORMAL: a commit survives the process being killed (what resuming relies on) without an fsync
+            # per run; only an OS crash or power loss can drop the last commits (the file stays consistent and
+            # those runs simply run again). FULL cost ~7 ms of wall per run here, half a minute per 4,000 runs.
+            self.db.execute("PRAGMA synchronous=NORMAL")
             self.db.executescript(SCHEMA)
             self.db.commit()
             (check,) = self.db.execute("PRAGMA quick_check").fetchone()
