@@ -45,7 +45,7 @@ class Oracle:
     def set_network(self, network: Any | None) -> None:
         """The road network arrived after the first frame (its scenario came late)."""
         self.network = network
-        self.smart.network = network
+        self.smart.set_network(network)
 
     def set_goal(self, goal: Goal) -> None:
         """The goal arrived after the first frame (topics are not ordered across each other)."""

@@ -48,6 +48,9 @@ class SmartnessParams:
     park_time: float = 2.0
     clear_distance: float = 20.0
     clear_margin: float = 0.5
+    conflict_distance: float = 40.0
+    conflict_horizon: float = 8.0
+    conflict_margin: float = 1.0
     light_half_width: float = 5.0
     light_heading_tolerance_deg: float = 60.0
     yellow_is_violation: bool = False

@@ -10,8 +10,10 @@
   last frame before the crossing: what the stack saw when it decided); it hits a static object that had been in
   view (within `sensor_range`) for `visible_time` seconds. Occlusion is not modelled.
 
-"Clear path": no entity's footprint in the corridor `clear_distance` metres ahead of the front bumper (ego width
-plus `clear_margin` each side), and no red/yellow signal governing the ego whose stop line lies in that corridor.
+"Clear path" (`wait_reason`): no entity's footprint in the corridor `clear_distance` metres along the ego's path
+ahead of the front bumper (ego width plus `clear_margin` each side), no mover about to cross that path (within
+`conflict_distance` m and `conflict_horizon` s: the ego is yielding), and no red/yellow signal governing the ego
+whose stop line lies within `clear_distance` ahead. The path is the road model's route to the goal (`egopath.py`).
 
 A signal governs the ego when the ego heads the signal's way (within `light_heading_tolerance_deg`) and, with a road
 network and a signal that names its lanes, when the ego is in one of those lanes on the signal's road; otherwise
@@ -26,7 +28,8 @@ from typing import Any
 
 from txt2sce_ros.contract import EntityState, Frame, Goal, SignalState, TrafficLightState
 
-from .geometry import Box, footprint, overlaps
+from .egopath import EgoPath
+from .geometry import footprint
 from .params import SmartnessParams
 from .records import Category, Rule, Violation
 from .signals import Sample
@@ -58,7 +61,13 @@ class SmartnessOracle:
         self._in_view_since: dict[str, float] = {}
         self._located: dict[tuple[float, float, float], Any] = {}
         self.last_frame: Frame | None = None
+        self._path: EgoPath | None = None          # planned when the ego first stands (route to the goal)
         self._cos_tol = math.cos(math.radians(params.light_heading_tolerance_deg))
+
+    def set_network(self, network: Any | None) -> None:
+        """The road network arrived late: lane checks and the way ahead use it from now on."""
+        self.network = network
+        self._path = None
 
     # --- per frame ---------------------------------------------------------------------------------------------
 
@@ -184,23 +193,33 @@ class SmartnessOracle:
     # --- clear path, visibility, lanes ---------------------------------------------------------------------------
 
     def path_clear(self, frame: Frame) -> bool:
+        return not self.wait_reason(frame)
+
+    def wait_reason(self, frame: Frame) -> str:
+        """Why a standing ego may wait ('' when nothing gives it a reason): an entity in the corridor along its
+        path, a mover about to cross the path ahead (`egopath`), or a red/yellow signal governing it whose stop
+        line is close ahead."""
         p = self.params
         ego = frame.ego
-        c, s = math.cos(ego.heading), math.sin(ego.heading)
+        if self._path is None:
+            self._path = EgoPath.plan(self.network, ego, self.goal)
         fx, fy = front_point(ego)
-        half = 0.5 * p.clear_distance
-        corridor = Box(fx + half * c, fy + half * s, c, s, half, 0.5 * ego.width + p.clear_margin)
-        for obj in frame.objects:
-            if overlaps(corridor, footprint(obj)):
-                return False
+        name = self._path.blocker(ego, (fx, fy), frame.objects, clear_distance=p.clear_distance,
+                                  margin=p.clear_margin)
+        if name:
+            return f"{name} in the path"
+        name = self._path.crossing(ego, (fx, fy), frame.objects, distance=p.conflict_distance,
+                                   horizon=p.conflict_horizon, margin=p.conflict_margin, min_speed=p.stop_speed)
+        if name:
+            return f"{name} about to cross the path"
         for light in frame.lights:
             if light.state is SignalState.RED or light.state is SignalState.YELLOW:
                 pos = self.stop_line_position(light, ego.heading, (fx, fy))
                 # lon < 0: the line is ahead of the bumper; a bumper just over it (1 m) still waits for it.
                 if pos is not None and -p.clear_distance <= pos[0] <= 1.0 and \
                         self.governs(light, ego.heading, (fx, fy), pos[1]):
-                    return False
-        return True
+                    return f"signal {light.id} {light.state.value}"
+        return ""
 
     def _track_view(self, frame: Frame) -> None:
         ex, ey = frame.ego.x, frame.ego.y

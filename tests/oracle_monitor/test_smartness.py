@@ -63,6 +63,58 @@ def test_never_moving_behind_a_blocker_that_stays_is_not_startfail() -> None:
     assert "time out" in verdict.categories[0].detail
 
 
+def test_waiting_for_a_party_about_to_cross_the_path_is_not_startfail() -> None:
+    # A car from the right crosses the ego's lane 15 m ahead at 6 m/s, reaching it at ~8.3 s: within the 8 s
+    # conflict horizon almost from the start, so the wait counts from when it has crossed (~8.8 s), not from 0.
+    cross = lambda t: [car("crosser", t, 15.0, -50.0 + 6.0 * t, heading=math.pi / 2, speed=6.0)]
+    frames = straight_run(lambda t: 0.0, 20.0, objects=cross)
+    verdict, online = judge(Oracle(None, None, PARAMS), frames)
+    ev = [v for v in online if v.rule is Rule.NO_START]
+    assert len(ev) == 1 and ev[0].t == pytest.approx(13.8, abs=0.5)
+    # A party coming up behind in the ego's lane is no reason to wait: its course runs along the path, not across.
+    behind = lambda t: [car("follower", t, -40.0 + 2.0 * t, speed=2.0)]
+    verdict, online = judge(Oracle(None, None, PARAMS), straight_run(lambda t: 0.0, 8.0, objects=behind))
+    assert [v.t for v in online if v.rule is Rule.NO_START] == [pytest.approx(5.0)]
+
+
+def test_the_corridor_follows_the_route_into_a_turn() -> None:
+    # On a real junction map, an ego standing before a right turn with a car parked across the exit it turns
+    # into: the straight corridor ahead is empty, the corridor along its route is not.
+    from oracle_monitor.egopath import EgoPath
+    from txt2sce_ros.road import RoadNetwork
+
+    net = load_network(esmini_map("fabriksgatan.xodr"))
+    starts = [(r, l) for r in net.roads.values() if r.junction in ("-1", "") for l in (-1, 1)
+              if l in r.sections[0].lanes]
+    assert starts
+    found = 0
+    for road, lane in starts:
+        ref = net.lane_ref(road.id, lane, 0.0)
+        nxt = [c for c in net.successors(ref) if net.roads[c.road_id].junction not in ("-1", "")]
+        for conn in nxt:
+            if net.turn_type(ref, conn) not in ("left", "right"):
+                continue
+            pts = net.lane_centerline(ref.road_id, ref.lane_id, 0.5, section=ref.section)
+            x, y = pts[-12, 0], pts[-12, 1]                  # ~6 m before the junction
+            h = math.atan2(pts[-11, 1] - pts[-12, 1], pts[-11, 0] - pts[-12, 0])
+            exit_lane = net.successors(conn)[0]
+            ex = net.lane_centerline(exit_lane.road_id, exit_lane.lane_id, 0.5, section=exit_lane.section)
+            goal = Goal(float(ex[-1, 0]), float(ex[-1, 1]), 0.0)
+            e = ego(0.0, float(x), float(y), h)
+            routed = EgoPath.plan(net, e, goal)
+            assert routed.routed
+            cn = net.lane_centerline(conn.road_id, conn.lane_id, 0.5, section=conn.section)
+            mx, my = cn[len(cn) // 2, 0], cn[len(cn) // 2, 1]
+            parked = car("parked", 0.0, float(mx), float(my), heading=h + math.pi / 2)
+            straight = EgoPath.straight(e)
+            front = (e.x + 0.5 * e.length * math.cos(h), e.y + 0.5 * e.length * math.sin(h))
+            if straight.blocker(e, front, (parked,), clear_distance=20.0, margin=0.5):
+                continue                                     # this turn is too tight to tell the two apart
+            assert routed.blocker(e, front, (parked,), clear_distance=20.0, margin=0.5) == "parked"
+            found += 1
+    assert found >= 1
+
+
 # --- failure to reach the goal ----------------------------------------------------------------------------------
 
 def test_stopping_mid_route_on_a_clear_road_is_planfail() -> None:

@@ -1,0 +1,143 @@
+"""The way ahead of the ego, as the oracle judges "a clear path": the lane route from where the ego starts to its goal
+on the road model, and what stands on it or is about to cross it.
+
+A standing ego is only a failure (StartFail, PlanFail `stopped_mid_route`) when nothing gives it a reason to wait.
+Two reasons count:
+- something stands or moves in the corridor `clear_distance` metres along the path ahead of the front bumper (ego
+  width plus `clear_margin` each side): along the route, so an ego waiting to turn looks into the turn, not
+  straight across it;
+- a mover is about to cross the path: its constant-velocity course meets the path within `conflict_distance`
+  metres ahead of the front bumper within `conflict_horizon` seconds, crossing it (heading more than
+  `CROSSING_DEG` off the path's there). An ego turning left that waits for an oncoming van is yielding, not failing
+  to start. A party coming up behind along the path, or leading away ahead of it, is never a reason: it does not
+  cross, so waiting for it is still judged.
+
+The route is the road model's (`RoadNetwork.route`), never the planner's: the oracle must not depend on the system
+under test. Without a network, a goal or a route, the path is the straight line ahead of the ego.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from txt2sce_ros.contract import EntityState, Goal
+
+from .geometry import Box, footprint, overlaps
+
+#: A mover counts as crossing the path when its heading differs from the path's by more than this (deg).
+CROSSING_DEG = 25.0
+#: Spacing of the path samples and of the predicted course (m, s).
+SAMPLE_DS = 1.0
+PREDICT_DT = 0.25
+#: The straight stand-in path when there is no route: this long (m).
+STRAIGHT_LENGTH = 200.0
+
+
+class EgoPath:
+    """A polyline (x, y, heading per sample, arc length `s`) the ego is expected to drive along."""
+
+    def __init__(self, xyh: np.ndarray, *, routed: bool) -> None:
+        self.xyh = xyh
+        seg = np.hypot(np.diff(xyh[:, 0]), np.diff(xyh[:, 1]))
+        self.s = np.concatenate([[0.0], np.cumsum(seg)])
+        self.routed = routed
+        self._s_hint = 0.0
+
+    @classmethod
+    def straight(cls, ego: EntityState) -> "EgoPath":
+        s = np.arange(-10.0, STRAIGHT_LENGTH, SAMPLE_DS)
+        c, sn = math.cos(ego.heading), math.sin(ego.heading)
+        return cls(np.column_stack([ego.x + s * c, ego.y + s * sn, np.full(len(s), ego.heading)]), routed=False)
+
+    @classmethod
+    def plan(cls, network: Any | None, ego: EntityState, goal: Goal | None) -> "EgoPath":
+        """The lane route from the ego's pose to the goal on `network`; the straight line ahead when there is no
+        network, no goal, or the road model finds no route (a goal off the road, a start on no lane)."""
+        if network is None or goal is None:
+            return cls.straight(ego)
+        try:
+            from txt2sce_ros.road import LanePath
+
+            start = network.locate(ego.x, ego.y, ego.heading)
+            end = network.locate(goal.x, goal.y, goal.heading)
+            if start is None or end is None:
+                return cls.straight(ego)
+            lanes = [start.ref] if start.ref == end.ref else network.route(start.ref, end.ref)
+            path = LanePath.from_lanes(network, lanes, s_start=start.s, s_end=end.s if start.ref != end.ref
+                                       or _ahead(network, start, end) else None)
+            n = max(2, int(path.length / SAMPLE_DS) + 1)
+            xyh = path.positions(np.linspace(0.0, path.length, n))
+        except Exception:           # a map the road model cannot route on: judge along the straight line instead
+            return cls.straight(ego)
+        if len(xyh) < 2 or path.length < 1.0:
+            return cls.straight(ego)
+        # Past the goal the way goes on as straight as the last heading: a standing ego near its goal still looks
+        # the full corridor ahead.
+        h = float(xyh[-1, 2])
+        tail = np.arange(SAMPLE_DS, STRAIGHT_LENGTH, SAMPLE_DS)
+        ext = np.column_stack([xyh[-1, 0] + tail * math.cos(h), xyh[-1, 1] + tail * math.sin(h), np.full(len(tail), h)])
+        return cls(np.vstack([xyh, ext]), routed=True)
+
+    def locate(self, x: float, y: float) -> float:
+        """Arc length of the path point nearest to (x, y), searched near the last answer first (the path may come
+        back near itself)."""
+        lo = int(np.searchsorted(self.s, self._s_hint - 30.0))
+        hi = int(np.searchsorted(self.s, self._s_hint + 60.0)) + 1
+        d2 = (self.xyh[lo:hi, 0] - x) ** 2 + (self.xyh[lo:hi, 1] - y) ** 2
+        if len(d2) == 0 or float(d2.min()) > 25.0:           # lost the thread (or first call): the whole path
+            lo, d2 = 0, (self.xyh[:, 0] - x) ** 2 + (self.xyh[:, 1] - y) ** 2
+        s = float(self.s[lo + int(np.argmin(d2))])
+        self._s_hint = s
+        return s
+
+    def window(self, s0: float, length: float) -> np.ndarray:
+        """The samples with arc length in [s0, s0 + length]: rows x, y, heading."""
+        i0, i1 = np.searchsorted(self.s, [s0, s0 + length])
+        return self.xyh[i0:max(i1, i0 + 1)]
+
+    def blocker(self, ego: EntityState, front: tuple[float, float], objects: tuple[EntityState, ...], *,
+                clear_distance: float, margin: float) -> str:
+        """Name of an entity whose footprint lies in the corridor ahead of the front bumper ('' when none)."""
+        s0 = self.locate(*front)
+        pts = self.window(s0, clear_distance)
+        half = 0.5 * ego.width + margin
+        boxes = [Box(x, y, math.cos(h), math.sin(h), 0.5 * SAMPLE_DS + 0.05, half) for x, y, h in pts]
+        for obj in objects:
+            fp = footprint(obj)
+            if any(overlaps(b, fp) for b in boxes):
+                return obj.name
+        return ""
+
+    def crossing(self, ego: EntityState, front: tuple[float, float], objects: tuple[EntityState, ...], *,
+                 distance: float, horizon: float, margin: float, min_speed: float) -> str:
+        """Name of a mover whose constant-velocity course crosses the path within `distance` m ahead of the front
+        bumper within `horizon` s ('' when none)."""
+        pts = self.window(self.locate(*front), distance)
+        if len(pts) == 0:
+            return ""
+        taus = np.arange(0.0, horizon + 1e-9, PREDICT_DT)
+        min_sin = math.sin(math.radians(CROSSING_DEG))
+        for obj in objects:
+            if obj.is_static or obj.speed < min_speed:
+                continue
+            c, s = math.cos(obj.heading), math.sin(obj.heading)
+            cx, cy = obj.x + obj.center_x * c, obj.y + obj.center_x * s
+            qx, qy = cx + obj.speed * taus * c, cy + obj.speed * taus * s
+            d2 = (qx[:, None] - pts[None, :, 0]) ** 2 + (qy[:, None] - pts[None, :, 1]) ** 2
+            reach = 0.5 * ego.width + 0.5 * obj.width + margin
+            hit = np.argwhere(d2 <= reach * reach)
+            if len(hit) == 0:
+                continue
+            j = int(hit[0, 1])
+            if abs(math.sin(obj.heading - float(pts[j, 2]))) >= min_sin:
+                return obj.name
+        return ""
+
+
+def _ahead(network: Any, start: Any, end: Any) -> bool:
+    """On one lane: whether the goal lies ahead of the start in the lane's driving direction."""
+    forward = network.lane_forward(start.ref.road_id, start.ref.lane_id, start.s)
+    return (end.s >= start.s) if forward else (end.s <= start.s)
