@@ -6,6 +6,7 @@ with the same frames, so live and offline verdicts agree by construction.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from txt2sce_ros.contract import Frame, Goal, RunStatus
@@ -16,6 +17,7 @@ from .safety import Contact, ContactOracle, JerkCollisionOracle, reported_beside
 from .signals import Differentiator
 from .smartness import SmartnessOracle
 from .smoothness import SmoothnessOracle
+from .unavoidable import Counterfactual, assess
 from .verdict import decide, error_reason
 
 
@@ -37,6 +39,7 @@ class Oracle:
         self.smooth = SmoothnessOracle(self.params.smoothness)
         self.smart = SmartnessOracle(self.params.smartness, goal, network)
         self.violations: list[Violation] = []
+        self._replay = Counterfactual()
         self.frames = 0
         self.t_last = 0.0
         self._finished: RunVerdict | None = None
@@ -58,6 +61,7 @@ class Oracle:
         sample = self._kin.update(frame.ego)
         if sample is None:
             return []
+        self._replay.observe(frame)
         self.frames += 1
         self.t_last = frame.t
         new: list[Violation] = []
@@ -103,9 +107,26 @@ class Oracle:
             # The run went on without these elements: a verdict on a scenario that was not played as written.
             notes += (f"the player skipped {len(status.unsupported)} unsupported element(s): "
                       + "; ".join(status.unsupported[:5]),)
-        self._finished = decide(tuple(self.violations), status, frames=self.frames, t_end=t_end,
-                                scenario_id=self.scenario_id, notes=notes)
+        verdict = decide(tuple(self.violations), status, frames=self.frames, t_end=t_end,
+                         scenario_id=self.scenario_id, notes=notes)
+        self._finished = self._label_unavoidable(verdict, t_end)
         return self._finished
+
+    def _label_unavoidable(self, verdict: RunVerdict, t_end: float) -> RunVerdict:
+        """The failed categories the scripted parties made unavoidable (`unavoidable.py`), beside the verdict."""
+        if verdict.verdict.value != "fail":
+            return verdict
+        cats = {f.category for f in verdict.categories}
+        plan = verdict.finding(Category.PLAN_FAIL)
+        blocker = ""
+        if plan is not None and plan.rule is Rule.GOAL_NOT_REACHED and self.smart.last_frame is not None:
+            blocker = self.smart.blocker_ahead(self.smart.last_frame)
+        labels = assess(self._replay, cats, decel=self.params.safety.unavoidable_decel,
+                        jerk=self.params.smoothness.jerk_high, t_end=t_end, blocker=blocker)
+        if not labels:
+            return verdict
+        return replace(verdict, unavoidable=tuple(labels[f.category] for f in verdict.categories
+                                                  if f.category in labels))
 
     def _notes(self) -> tuple[str, ...]:
         notes = []

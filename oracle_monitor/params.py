@@ -22,6 +22,7 @@ class SafetyParams:
     jerk_match_window: float = 0.5         # s
     struck_speed: float = 0.1              # m/s, an ego slower than this at contact was standing still: struck
     struck_from_behind: bool = True        # a rear-end by a faster entity behind, in line, is not the ego's crash
+    unavoidable_decel: float = 8.0         # m/s², braking of the counterfactual ego that labels unavoidable crashes
 
 
 @dataclass(frozen=True, slots=True)

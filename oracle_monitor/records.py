@@ -96,6 +96,19 @@ class Finding:
 
 
 @dataclass(frozen=True, slots=True)
+class Unavoidable:
+    """Why one category of a failed run was unavoidable by the scripted parties (`unavoidable.py`)."""
+
+    category: Category
+    entity: str
+    t: float                     # s, when the party meets the counterfactual ego (PlanFail: the end of the run)
+    detail: str
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"category": self.category.value, "entity": self.entity, "t": self.t, "detail": self.detail}
+
+
+@dataclass(frozen=True, slots=True)
 class RunVerdict:
     """The verdict of one run. Never mixed: `error` runs carry no categories, `pass` runs carry none either."""
 
@@ -109,6 +122,7 @@ class RunVerdict:
     violations: tuple[Violation, ...] = ()    # every event, in order (including those reported beside)
     suppressed: tuple[Finding, ...] = ()      # categories that fired but are excluded by Table VI's exclusivity
     notes: tuple[str, ...] = ()
+    unavoidable: tuple[Unavoidable, ...] = ()   # failed categories the scripted parties made unavoidable
 
     def category_names(self) -> tuple[str, ...]:
         return tuple(f.category.value for f in self.categories)
@@ -122,7 +136,14 @@ class RunVerdict:
             "error": self.error, "scenario_id": self.scenario_id, "end_reason": self.end_reason,
             "t_end": self.t_end, "frames": self.frames, "violations": [v.to_dict() for v in self.violations],
             "suppressed": [f.to_dict() for f in self.suppressed], "notes": list(self.notes),
+            "unavoidable": [u.to_dict() for u in self.unavoidable],
         }
+
+    def planner_relevant(self) -> bool:
+        """A failure that says something about the planner: some category of it was not made unavoidable by the
+        scripted parties."""
+        labelled = {u.category for u in self.unavoidable}
+        return self.verdict is Verdict.FAIL and any(f.category not in labelled for f in self.categories)
 
     def to_json(self) -> str:
         return json.dumps(self.to_dict(), sort_keys=True)
@@ -138,4 +159,8 @@ class RunVerdict:
             who = f"({','.join(f.entities)})" if f.entities else ""
             parts.append(f"{f.category.value}@{f.t:.2f}s{who} [{f.rule.value} {f.observed:.3g} vs {f.threshold:.3g}"
                          f" {f.units}]")
-        return "fail " + " ".join(parts)
+        line = "fail " + " ".join(parts)
+        if self.unavoidable:
+            line += " | unavoidable by scripted parties: " + ", ".join(
+                f"{u.category.value} ({u.entity})" for u in self.unavoidable)
+        return line

@@ -195,6 +195,13 @@ class SmartnessOracle:
     def path_clear(self, frame: Frame) -> bool:
         return not self.wait_reason(frame)
 
+    def blocker_ahead(self, frame: Frame) -> str:
+        """The entity in the corridor along the ego's path ahead ('' when none)."""
+        if self._path is None:
+            self._path = EgoPath.plan(self.network, frame.ego, self.goal)
+        return self._path.blocker(frame.ego, front_point(frame.ego), frame.objects,
+                                  clear_distance=self.params.clear_distance, margin=self.params.clear_margin)
+
     def wait_reason(self, frame: Frame) -> str:
         """Why a standing ego may wait ('' when nothing gives it a reason): an entity in the corridor along its
         path, a mover about to cross the path ahead (`egopath`), or a red/yellow signal governing it whose stop

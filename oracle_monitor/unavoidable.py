@@ -1,0 +1,201 @@
+"""Failures the scripted parties made unavoidable: which categories of a failed run say nothing about the planner.
+
+The parties of a scenario follow their storyboard whatever the ego does, so some failures are decided at t = 0.
+Each check replays the run's recorded parties against an ego that had done the one safe thing from its start, and
+labels the category when even that ego fails:
+
+- Collisions: the ego brakes from its start at `unavoidable_decel` (harder than any planner plans, so a label is
+  never given to a crash some braking could have avoided) and a party's recorded footprint still meets its
+  footprint: the party reaches the ego before it could stop (a party that hits a standing ego is the limit case).
+- Smooth: the ego stops from its start with the smoothest stop the smoothness band allows (jerk ramped at
+  `jerk_high` down and back up, so every 1 s mean of jerk stays inside the band) and a party still meets it:
+  avoiding that party took braking harder than the band, whoever drives.
+- PlanFail (goal not reached): at the end a party that moved during the run is on the ego's path ahead (within
+  `clear_distance`): the scripted party set the pace and the story ended first. A parked or static object is not a
+  label: a planner is expected to pass it.
+
+The counterfactual ego follows the recorded path of the real ego (so it stays on its lane and route) with the
+braking profile's distance-over-time; past the end of the recorded path it goes on straight.
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+from txt2sce_ros.contract import EntityState, Frame
+
+from .geometry import Box, box_at, footprint, overlaps
+from .records import Category, Unavoidable
+
+
+def emergency_stop(v0: float, decel: float) -> Callable[[float], float]:
+    """Distance (m) after t s of braking at `decel` from v0, until standstill."""
+    t_stop = v0 / decel if decel > 0 else math.inf
+
+    def d(t: float) -> float:
+        t = min(max(t, 0.0), t_stop)
+        return v0 * t - 0.5 * decel * t * t
+    return d
+
+
+def smooth_stop(v0: float, jerk: float) -> Callable[[float], float]:
+    """Distance (m) after t s of the smoothest stop from v0 whose jerk stays within ±`jerk`: deceleration ramps up
+    at `jerk` to sqrt(jerk·v0) and back down to zero at standstill (T = 2·sqrt(v0/jerk), distance v0·T/2)."""
+    if v0 <= 0.0 or jerk <= 0.0:
+        return lambda t: 0.0
+    half = math.sqrt(v0 / jerk)
+    total = v0 * half
+
+    def d(t: float) -> float:
+        if t <= 0.0:
+            return 0.0
+        if t <= half:
+            return v0 * t - jerk * t ** 3 / 6.0
+        if t <= 2.0 * half:
+            return total - jerk * (2.0 * half - t) ** 3 / 6.0
+        return total
+    return d
+
+
+#: How far ahead (s) a party's constant-velocity course is projected to tell when its conflict became foreseeable.
+FORESIGHT = 5.0
+FORESIGHT_DT = 0.25
+#: Where along the ego's path ahead (m) the foreseeable check looks.
+AHEAD_STEPS = tuple(float(d) for d in range(0, 61, 2))
+
+
+@dataclass
+class Counterfactual:
+    """Records the ego's path and every party's footprint per frame, and replays them against a braking ego."""
+
+    times: list[float] = field(default_factory=list)
+    ego: list[tuple[float, float, float, float, float]] = field(default_factory=list)  # x, y, heading, speed, dist
+    dists: list[float] = field(default_factory=list)      # the ego's travelled distance per frame (for bisect)
+    parties: list[list[EntityState]] = field(default_factory=list)                      # per frame
+    moved: set[str] = field(default_factory=set)          # parties seen moving at some frame
+    first: EntityState | None = None
+
+    def observe(self, frame: Frame) -> None:
+        e = frame.ego
+        if self.first is None:
+            self.first = e
+            dist = 0.0
+        else:
+            x0, y0 = self.ego[-1][0], self.ego[-1][1]
+            dist = self.dists[-1] + math.hypot(e.x - x0, e.y - y0)
+        self.times.append(frame.t)
+        self.ego.append((e.x, e.y, e.heading, max(e.speed, 0.0), dist))
+        self.dists.append(dist)
+        self.parties.append(list(frame.objects))
+        self.moved.update(o.name for o in frame.objects if abs(o.speed) > 0.1 and not o.is_static)
+
+    def _ego_box(self, dist: float) -> Box:
+        """The ego's footprint `dist` metres along its recorded path (straight on past its end)."""
+        assert self.first is not None
+        i = max(bisect.bisect_right(self.dists, dist) - 1, 0)
+        x0, y0, h0, _, d0 = self.ego[i]
+        j = i + 1
+        while j < len(self.ego) and self.dists[j] - d0 < 1e-6:
+            j += 1
+        if j < len(self.ego):
+            x1, y1, _, _, d1 = self.ego[j]
+            u = (dist - d0) / (d1 - d0)
+            x, y, h = x0 + u * (x1 - x0), y0 + u * (y1 - y0), math.atan2(y1 - y0, x1 - x0)
+        else:
+            over = dist - d0
+            x, y, h = x0 + over * math.cos(h0), y0 + over * math.sin(h0), h0
+        e = self.first
+        return box_at(x, y, h, e.center_x, e.length, e.width)
+
+    def foreseeable(self, name: str, until: float) -> int | None:
+        """Index of the first frame at which `name`'s constant-velocity course (over `FORESIGHT` s) meets the
+        path the ego went on to drive (None: never before `until`). Before then no planner could see the conflict
+        coming: a party cutting in, or one that starts moving late."""
+        taus = [k * FORESIGHT_DT for k in range(int(FORESIGHT / FORESIGHT_DT) + 1)]
+        e = self.first
+        assert e is not None
+        for k in range(0, len(self.times), 2):             # every other frame: 0.1 s at the default step
+            if self.times[k] > until:
+                return None
+            o = next((p for p in self.parties[k] if p.name == name), None)
+            if o is None:
+                continue
+            # the path it went on to drive (straight on past the end of the run), 60 m of it
+            ahead = [self._ego_box(self.dists[k] + step) for step in AHEAD_STEPS]
+            c, s = math.cos(o.heading), math.sin(o.heading)
+            for tau in taus:
+                moved = o.speed * tau
+                box = footprint(o)._replace(cx=footprint(o).cx + moved * c, cy=footprint(o).cy + moved * s)
+                if any(overlaps(b, box) for b in ahead):
+                    return k
+        return None
+
+    def meets(self, profile: Callable[[float, float], Callable[[float], float]], until: float, *,
+              start: int = 0) -> tuple[str, float] | None:
+        """The first party whose recorded footprint meets an ego that drove as recorded up to frame `start` and
+        then braked with `profile(speed)` (distance over time), and when (None: no party does)."""
+        if self.first is None or start >= len(self.times):
+            return None
+        t_b, d_b, v_b = self.times[start], self.dists[start], self.ego[start][3]
+        brake = profile(v_b)
+        for t, parties in zip(self.times[start:], self.parties[start:]):
+            if t > until:
+                break
+            if not parties:
+                continue
+            ego = self._ego_box(d_b + brake(t - t_b))
+            for o in parties:
+                if overlaps(ego, footprint(o)):
+                    return o.name, t
+        return None
+
+    def unavoidable(self, profile: Callable[[float], Callable[[float], float]], until: float
+                    ) -> tuple[str, float, float, float] | None:
+        """(party, time they meet, when braking began, speed then) for a party that meets the ego braking with
+        `profile` from its start or from the moment the party's conflict became foreseeable; None otherwise."""
+        hit = self.meets(profile, until)
+        if hit:
+            return hit[0], hit[1], self.times[0], self.ego[0][3]
+        for name in sorted(self.moved):
+            k = self.foreseeable(name, until)
+            if k is None or k == 0:
+                continue
+            hit = self.meets(profile, until, start=k)
+            if hit and hit[0] == name:
+                return name, hit[1], self.times[k], self.ego[k][3]
+        return None
+
+
+def assess(cf: Counterfactual, categories: set[Category], *, decel: float, jerk: float, t_end: float,
+           blocker: str = "") -> dict[Category, Unavoidable]:
+    """The labels of the failed categories (`categories`) the scripted parties made unavoidable. `blocker`: the
+    entity on the ego's path ahead at the end of the run ('' when none)."""
+    out: dict[Category, Unavoidable] = {}
+    if cf.first is None:
+        return out
+
+    def when(t_b: float, v_b: float) -> str:
+        return f"from its start ({v_b:.1f} m/s)" if t_b <= cf.times[0] else \
+            f"from {t_b:.2f} s ({v_b:.1f} m/s), when the party's course first met its path"
+
+    if Category.COLLISIONS in categories:
+        hit = cf.unavoidable(lambda v: emergency_stop(v, decel), t_end)
+        if hit:
+            out[Category.COLLISIONS] = Unavoidable(
+                Category.COLLISIONS, hit[0], hit[1],
+                f"{hit[0]} meets the ego at {hit[1]:.2f} s even had it braked at {decel:g} m/s² {when(hit[2], hit[3])}")
+    if Category.SMOOTH in categories:
+        hit = cf.unavoidable(lambda v: smooth_stop(v, jerk), t_end)
+        if hit:
+            out[Category.SMOOTH] = Unavoidable(
+                Category.SMOOTH, hit[0], hit[1],
+                f"{hit[0]} meets the ego at {hit[1]:.2f} s even had it begun the smoothest stop the band allows "
+                f"(jerk ±{jerk:g} m/s³) {when(hit[2], hit[3])}")
+    if Category.PLAN_FAIL in categories and blocker and blocker in cf.moved:
+        out[Category.PLAN_FAIL] = Unavoidable(
+            Category.PLAN_FAIL, blocker, t_end, f"{blocker} (a moving party) was on the ego's path ahead when the "
+                                                f"run ended: it set the pace")
+    return out
