@@ -298,13 +298,20 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
             continue                                     # the ego is through well before the other arrives
         stop_at = s_conf - radius
         entry = line.next_junction_entry(ego.s, stop_at - ego.s + 0.1)
-        if entry is not None and entry < stop_at:
-            stop_at = entry                              # wait at the junction entry, not inside it
+        if entry is not None and entry < stop_at and _comfortable(entry - ego.s_front - lp.stop_margin, ego, sp):
+            # Wait at the junction entry, not inside it; when that stop is no longer comfortable (a conflict seen
+            # late), stop short of the conflict itself rather than brake hard for the entry.
+            stop_at = entry
         dist = stop_at - ego.s_front
         if dist < -0.5:
             continue                                     # already committed past the conflict point
         out.append(stop_constraint(Reason.YIELD, dist, ego, lp, sp, o.name))
     return out
+
+
+def _comfortable(d: float, ego: EgoOnPath, sp: StopPlan) -> bool:
+    """Whether a stop within d metres needs no more than the planned deceleration (after the brake build-up)."""
+    return ego.speed * ego.speed / (2.0 * max(d - sp.lag, 0.01)) <= sp.decel
 
 
 def _time_to_cover(d: float, v: float, v_max: float, a: float) -> float:

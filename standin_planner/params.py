@@ -62,7 +62,7 @@ class BehaviourParams:
     signal_lateral_tolerance: float = 3.0
     signal_lookahead: float = 120.0
     yellow_clear_decel: float = 2.5
-    prediction_horizon: float = 5.0
+    prediction_horizon: float = 8.0
     prediction_step: float = 0.25
     conflict_margin: float = 1.0
     conflict_time_gap: float = 2.0

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
-from .behaviours import BehaviourRow, behaviour_table
+from .behaviours import Attribution, BehaviourRow, attribution, behaviour_table
 from .derivation import TriggerCandidate, aggregate, trigger_candidates
 from .features import elements_of_file
 from .legend import explain, legend_rows
@@ -41,6 +41,7 @@ class Analysis:
     lift: dict[str, list[LiftRow]]
     triggers: list[TriggerCandidate]
     derivation: dict[str, list[tuple[str, int]]]
+    attribution: Attribution | None = None
 
 
 def analyse(res: CampaignResults, *, min_support: int = 3) -> Analysis:
@@ -52,7 +53,17 @@ def analyse(res: CampaignResults, *, min_support: int = 3) -> Analysis:
     for tree, nodes in sorted(res.trees.items()):
         results = {r["scenario_id"]: (r["verdict"], tuple(r["categories"])) for r in res.runs if r.get("tree") == tree}
         triggers.extend(trigger_candidates(nodes, results))
-    return Analysis(rows, verdicts, lift, triggers, aggregate(triggers))
+    who = attribution((r["verdict"], tuple(r["categories"]), r.get("record") or {}) for r in res.runs)
+    return Analysis(rows, verdicts, lift, triggers, aggregate(triggers), who)
+
+
+#: Rows of the table of failing runs labelled unavoidable by the scripted parties.
+MAX_LABELLED = 20
+
+
+def _labels(run: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """The run's `unavoidable` labels as stored in its record (none in records older than the label)."""
+    return list(((run.get("record") or {}).get("details") or {}).get("unavoidable", []))
 
 
 def _md_table(header: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
@@ -79,10 +90,28 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
     parts += ["", "## Unexpected behaviours (paper Table VI)", ""]
     top = {c: ", ".join(f"{r.element} ({r.lift:.2f}×, n={r.support})" for r in an.lift.get(c, [])[:3])
            for c in (b.category for b in an.behaviours)}
+    who = an.attribution
+    unavoidable = who.unavoidable if who else {}
     parts.append(_md_table(
-        ["category", "count", "share of behaviours", "share of runs", "top triggers (lift, support)"],
+        ["category", "count", "share of behaviours", "share of runs", "unavoidable by scripted parties",
+         "top triggers (lift, support)"],
         [(b.category, b.count, f"{100 * b.share_of_behaviours:.1f}%", f"{100 * b.share_of_runs:.1f}%",
-          top.get(b.category) or "–") for b in an.behaviours]))
+          unavoidable.get(b.category, 0), top.get(b.category) or "–") for b in an.behaviours]))
+    if who is not None and who.failed:
+        parts += ["", f"**{who.line()}.** A category is labelled unavoidable when the recorded scripted parties "
+                      "still meet an ego that braked from its start, or from when the party's course first met its "
+                      "path (Collisions: at the oracle's `unavoidable_decel`; Smooth: the smoothest stop the band "
+                      "allows), or, for a goal not reached, when a moving party was on its path ahead at the end. "
+                      "Those failures say nothing about the planner; the runs' labels are in analysis.json and each "
+                      "run's record (`unavoidable`)."]
+    labelled = [r for r in res.runs if r["verdict"] == "fail" and _labels(r)]
+    if labelled:
+        parts += ["", f"Failing runs with a category made unavoidable by the scripted parties ({len(labelled)}; "
+                      f"the first {min(len(labelled), MAX_LABELLED)}):", ""]
+        parts.append(_md_table(["scenario", "verdict", "unavoidable", "why"], [
+            (f"{r.get('tree') or ''} {r['scenario_id']}".strip(), "fail " + ", ".join(r["categories"]),
+             ", ".join(u["category"] for u in _labels(r)), "; ".join(u["detail"] for u in _labels(r)))
+            for r in labelled[:MAX_LABELLED]]))
     if "categories" in images:
         parts += ["", f"![categories]({images['categories']})"]
     parts += ["", "## Trigger conditions by lift", "",
@@ -223,6 +252,9 @@ def write_report(res: CampaignResults, out_dir: str | Path, *, title: str = "txt
         "behaviours": [b.__dict__ for b in an.behaviours],
         "lift": {c: [r.__dict__ for r in rows[:20]] for c, rows in an.lift.items()},
         "derivation": an.derivation,
+        "attribution": an.attribution.__dict__ if an.attribution else None,
+        "unavoidable_runs": [{"scenario_id": r["scenario_id"], "tree": r.get("tree"), "categories": r["categories"],
+                              "unavoidable": _labels(r)} for r in res.runs if _labels(r)],
     }, indent=1, sort_keys=True), encoding="utf-8")
     return out / "report.md", out / "report.html"
 

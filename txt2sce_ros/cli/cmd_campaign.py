@@ -132,11 +132,23 @@ def _print_errors(out: Path) -> None:
               f"again", file=sys.stderr)
 
 
+def _print_attribution(out: Path) -> None:
+    """The console's word on which failures say something about the planner (the report has the same line)."""
+    from ..analysis.behaviours import attribution
+    from ..campaign.store import ResultStore
+
+    with ResultStore(out / "results.sqlite") as store:
+        who = attribution((r.verdict, tuple(r.categories), r.record) for r in store.runs())
+    if who.failed:
+        print(f"verdicts:   {who.line()}")
+
+
 def run(args: argparse.Namespace) -> int:
     from ..campaign.pipeline import run_campaign
 
     summary = run_campaign(args.inputs, config_from_args(args, Path(args.out)))
     print_summary(summary)
+    _print_attribution(Path(args.out))
     _print_errors(Path(args.out))
     # 1: some item failed and was recorded (a refused sketch, a run with verdict error); fail verdicts are results.
     errors = summary.runs.verdicts.get("error", 0) if summary.runs is not None else 0
