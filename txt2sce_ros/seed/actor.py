@@ -77,7 +77,20 @@ def predicted_gap(actors: list[Actor], target: str, horizon: float) -> tuple[flo
     t, pe = ego.states(horizon)
     _, po = other.states(horizon)
     best, when = math.inf, 0.0
+    # A step whose gap cannot beat the best so far is skipped without the (numpy, slow) box test: the separating
+    # gap along the normal of one box closest to the line of centres is at least |d|/sqrt(2) minus that box's
+    # larger half side minus the other's circumradius (1e-6 m of slack for rounding). Same result, same time.
+    reach = min(0.5 * max(ego.length, ego.width) + 0.5 * math.hypot(other.length, other.width),
+                0.5 * max(other.length, other.width) + 0.5 * math.hypot(ego.length, ego.width)) + 1e-6
+    ego_cx, other_cx = ego.cx, other.cx
     for k in range(0, len(t), 2):
+        if best < math.inf:
+            ex, ey, eh = pe[k, 0], pe[k, 1], pe[k, 2]
+            ox, oy, oh = po[k, 0], po[k, 1], po[k, 2]
+            dx = ex + ego_cx * math.cos(eh) - ox - other_cx * math.cos(oh)
+            dy = ey + ego_cx * math.sin(eh) - oy - other_cx * math.sin(oh)
+            if math.hypot(dx, dy) / math.sqrt(2.0) - reach >= best:
+                continue
         a = box_corners(pe[k, 0], pe[k, 1], pe[k, 2], ego.length, ego.width, ego.cx)
         b = box_corners(po[k, 0], po[k, 1], po[k, 2], other.length, other.width, other.cx)
         g = boxes_gap(a, b)
