@@ -328,6 +328,18 @@ def _vec(x: float, y: float, z: float) -> NS:
     return NS(x=x, y=y, z=z)
 
 
+def decode_command(data: bytes | memoryview) -> tuple[int, ControlCommand]:
+    """A `geometry_msgs/TwistStamped` as `ros_io.twist_to_command` reads it, with its stamp in integer ns (the
+    lock-step key of `ros_io.stamp_key`): the player takes its commands raw, without an rclpy message."""
+    r = _R(data)
+    sec, nanosec = r.unpack(_STAMP, 4)
+    r.string()                              # frame_id
+    linear = r.unpack(_f64x3, 8)
+    angular = r.unpack(_f64x3, 8)
+    return sec * 1_000_000_000 + nanosec, ControlCommand(t=sec + nanosec * 1e-9, speed=linear[0],
+                                                         yaw_rate=angular[2])
+
+
 def decode_odometry(data: bytes | memoryview) -> NS:
     r = _R(data)
     header = r.header()

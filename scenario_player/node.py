@@ -61,8 +61,7 @@ from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EG
 from txt2sce_ros.errors import Txt2SceError
 from txt2sce_ros.nodes.lifetime import node_lifetime
 from txt2sce_ros.nodes.waiter import SubscriptionWaiter
-from txt2sce_ros.ros_io import (road_markers_bytes, scenario_markers, stamp_key, string_msg, to_stamp,
-                                twist_to_command)
+from txt2sce_ros.ros_io import road_markers_bytes, scenario_markers, string_msg
 
 from .simulation import Simulation, SimulationConfig
 from .syntax.scenario import load_scenario
@@ -122,7 +121,7 @@ class PlayerNode(Node):
             (TOPIC_SCENARIO_MARKERS, self.pub_scene, qos(1, latched=True)),
         ]
         self.create_subscription(String, TOPIC_SCENARIO, self._on_scenario, qos(10, latched=True))
-        sub_command = self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth))
+        sub_command = self.create_subscription(TwistStamped, TOPIC_COMMAND, self._on_command, qos(depth), raw=True)
         # Lock-step waits for commands on this subscription alone (an executor's spin_once costs a round trip).
         self.command_wait = SubscriptionWaiter(self, sub_command)
         self.queue: collections.deque[ScenarioEnvelope] = collections.deque()
@@ -142,9 +141,10 @@ class PlayerNode(Node):
             self._status(RunStatus(scenario_id="?", state="finished", end_reason=f"input_error: {exc}",
                                    verdict_hint="error"))
 
-    def _on_command(self, msg: TwistStamped) -> None:
-        cmd = twist_to_command(msg)
-        self.commands[stamp_key(msg.header.stamp)] = cmd
+    def _on_command(self, data: bytes) -> None:
+        # Taken raw (the subscription's `raw=True`) and read by the CDR decoder: no rclpy message per step.
+        key, cmd = cdr.decode_command(data)
+        self.commands[key] = cmd
         self.latest, self.latest_wall = cmd, time.monotonic()
 
     # -- publishing -----------------------------------------------------------------------------------------------
@@ -250,7 +250,7 @@ class PlayerNode(Node):
             self.publish_frame(sim, frame)
             cmd: ControlCommand | None = None
             if needs_planner:
-                key = stamp_key(to_stamp(frame.t))
+                key = round(frame.t * 1e9)      # = stamp_key(to_stamp(t)), without building a stamp
                 if self.lock_step:
                     cmd = self._await_command(executor, key, wall0, timeout)
                     timeout = self.planner_timeout
@@ -281,7 +281,7 @@ class PlayerNode(Node):
             # so a monitor does not close the run on the status while the last frame is still in flight.
             self.publish_frame(sim, frame)
             if needs_planner and self.lock_step:
-                key = stamp_key(to_stamp(frame.t))
+                key = round(frame.t * 1e9)      # = stamp_key(to_stamp(t)), without building a stamp
                 deadline = time.monotonic() + min(self.planner_timeout, 1.0)
                 while key not in self.commands and time.monotonic() < deadline:
                     self.command_wait.wait(0.01)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from struct import error as struct_error
 
 import pytest
 from rclpy.serialization import serialize_message
@@ -124,3 +125,19 @@ def test_the_ego_goes_out_under_its_wire_name() -> None:
     assert cdr.encode_markers(frame, ego_name="ego") != cdr.encode_markers(frame)
     assert cdr.encode_odometry(frame.ego, name="ego") == cdr.encode_odometry(renamed.ego)
     assert cdr.encode_odometry(frame.objects[0], name=None) == cdr.encode_odometry(frame.objects[0])
+
+
+def test_command_decodes_as_ros_io_reads_it() -> None:
+    # The player takes /control/command raw: the decoder must give what twist_to_command and stamp_key give for
+    # rclpy's bytes, whatever frame id (padding) the planner used.
+    from geometry_msgs.msg import TwistStamped
+
+    for cmd, frame_id in ((ControlCommand(t=12.35, speed=3.5, yaw_rate=-0.2), "ego"),
+                          (ControlCommand(t=1e6 + 0.123456789, speed=-1.0, yaw_rate=0.07), "base_link_x")):
+        msg = ros_io.command_to_twist(cmd)
+        msg.header.frame_id = frame_id
+        msg.twist.linear.y, msg.twist.angular.x = 9.0, 8.0        # fields the contract ignores
+        key, got = cdr.decode_command(serialize_message(msg))
+        assert key == ros_io.stamp_key(msg.header.stamp) and got == ros_io.twist_to_command(msg)
+    with pytest.raises((ValueError, struct_error)):
+        cdr.decode_command(serialize_message(TwistStamped())[:20])

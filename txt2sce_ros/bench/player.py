@@ -3,9 +3,13 @@
 1. Batch core on the 18 esmini examples (storyboard drives every entity): scenario seconds per wall second, per
    file and median, beside a baseline measured in the same run: the same entities moved along their lanes for the
    same number of steps with nothing else (no storyboard, conditions, actions, collisions, recording).
-2. ROS lock-step: the player node in its own process, a trivial planner (echoes the ego's speed, zero yaw rate) in
+2. Beside esmini (`_vs_esmini`, when the shared esmini is there): one cold `txt2sce play cut-in.xosc` vs one cold
+   esmini run of it; the batch player (one cold process over the 18 examples + the 57 dev seeds) vs esmini run one
+   process per file, each file to esmini's end time. Wall and CPU seconds, and their ratios.
+3. ROS lock-step: the player node in its own process, a trivial planner (echoes the ego's speed, zero yaw rate) in
    this one, over DDS with the project's settings: × real time, beside the DDS ping-pong cap measured the same way
-   (one Odometry round trip per step between two processes).
+   (one Odometry round trip per step between two processes, both waiting on their one subscription as the player
+   does), before and after the run; the player's share of the higher cap.
 """
 
 from __future__ import annotations
@@ -198,14 +202,14 @@ def run(args: argparse.Namespace) -> int:
     if args.quick:
         files = files[:6]
     rows = bench_batch(files, repeats=1 if args.quick else 3)
-    print("Batch core (storyboard drives every entity; best of runs after a warm-up; load not timed)")
+    print("Batch core, warm in-process (storyboard drives every entity; best of runs after a warm-up; load not timed)")
     print(f"{'scenario':38s} {'sim s':>7s} {'player xRT':>11s} {'baseline xRT':>13s}")
     for name, sim_s, rt, base in rows:
         print(f"{name:38s} {sim_s:7.2f} {rt:11.0f} {base:13.0f}")
     med = statistics.median(r[2] for r in rows)
     med_base = statistics.median(r[3] for r in rows)
     total = sum(r[1] for r in rows) / sum(r[1] / r[2] for r in rows)
-    print(f"median player {med:.0f}x real time (aggregate {total:.0f}x); median baseline (lane kinematics only) "
+    print(f"median player {med:.0f}x real time warm in-process (aggregate {total:.0f}x); median baseline (lane kinematics only) "
           f"{med_base:.0f}x; player/baseline {med / med_base:.2f}; goal >= 500x")
 
     from . import _vs_esmini
