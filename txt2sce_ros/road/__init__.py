@@ -5,11 +5,14 @@ widths, borders), `model` (records), `network` (RoadNetwork: geometry API), `loo
 `topology` (links, neighbours, routing), `lanepath` (LanePath for route following).
 """
 
-from .lanepath import LanePath
-from .lookup import LaneMatch, LanePoint
-from .model import Connection, Controller, Junction, LaneRef, Road, RoadLink, Signal
-from .network import RoadNetwork, load_network, load_network_text
-from .topology import DRIVABLE_TYPES
+from ..lazy import lazy_exports
+
+# Lazy: a module that needs the network alone does not load the spatial index, route paths and topology with it.
+__getattr__, __dir__ = lazy_exports(__name__, {
+    "LanePath": ".lanepath", "LaneMatch": ".lookup", "LanePoint": ".lookup",
+    **{name: ".model" for name in ("Connection", "Controller", "Junction", "LaneRef", "Road", "RoadLink", "Signal")},
+    "RoadNetwork": ".network", "load_network": ".network", "load_network_text": ".network",
+    "DRIVABLE_TYPES": ".topology"})
 
 __all__ = ["Connection", "Controller", "DRIVABLE_TYPES", "Junction", "LaneMatch", "LanePath", "LanePoint",
            "LaneRef", "Road", "RoadLink", "RoadNetwork", "Signal", "load_network", "load_network_text"]
