@@ -165,6 +165,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \
                 not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):
             acts = "m"  # a pedestrian on the move in a collision report is crossing the AV's path (sketch.md, `m`)
+        if acts.startswith("am"):
+            acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
         side = next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")

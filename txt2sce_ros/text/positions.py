@@ -13,6 +13,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     """(position, lane, known): where the party was relative to the AV when the interaction began.
     `behind_av`: head nouns of parties already placed behind the AV (R6); whoever follows them is behind too."""
     ctx = context(d, e)
+    # A party said to be on another street than the AV's is on a crossing road: the AV is at a junction with it.
+    cross = _on_other_street(d, ctx)
+    junction = d.junction or cross
     queue = fre.search(r"\b(?:behind|following|trailing)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?([\w-]+)", ctx, re.I)
     if queue and queue.group(1).lower() in behind_av:
         return "R6", "same", True
@@ -48,6 +51,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
+    # Before headings: the heading it is given may be the one it turned to ("onto westbound California").
+    if cross and (side := side_named(ctx)):
+        return ("R1" if side == "left" else "R3"), None, True  # "a vehicle on Leavenworth, to the right of EGO"
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     if fre.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
@@ -56,12 +62,12 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         if side_m:
             return "R5", side_m.group(1).lower(), True
     if oncoming or rel == 180:
-        if d.junction:
+        if junction:
             return "R2", None, True
         return "R7", "same" if fre.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) else "left", True
     if rel == 0 and not fre.search(r"\bbehind\b", ctx, re.I):
         return "R5", side_named(ctx) or "same", True
-    if d.junction and rel in (90, 270):
+    if junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
     compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I)
@@ -70,14 +76,14 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         rel_origin = (origin - ego_heading) % 360  # 90: on the AV's right, 270: on its left
         if rel_origin in (90, 270):
             side = "right" if rel_origin == 90 else "left"
-            if d.junction:
+            if junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
     from_side = fre.search(r"\bfrom\s+(?:the|EGO's)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
                           ctx, re.I)
-    if d.junction and from_side:
+    if junction and from_side:
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
-    if d.junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
+    if junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
         return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
@@ -87,7 +93,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", TURN_WORDS.sub(" ", ctx), re.I)
-    if lane_ctx:
+    if lane_ctx and not cross:
         text = lane_ctx.group(0)
         side = side_named(text) or ("right" if fre.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
                                                      re.I) else None)
@@ -104,14 +110,14 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                                           d.text):
                 side = "left"  # the AV at the curb: the traffic lane beside it is on its left
         side = side or "same"
-        if d.junction and ego_turning and fre.search(r"driveway|parking", ctx, re.I):
+        if junction and ego_turning and fre.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
         return "R5", side, True
     if fre.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
                  r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or fre.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
                                                                             pre, re.I):
         return "R5", "same", True
-    if d.junction and ego_turning and e.category in ("pedestrian", "bicycle", "scooter") and \
+    if junction and ego_turning and e.category in ("pedestrian", "bicycle", "scooter") and \
             fre.search(r"\bcrosswalk\b", ctx, re.I):
         return "R4", None, True
     if fre.search(r"\b(?:ahead|in\s+front|preceding|in\s+EGO's\s+lane|in\s+its\s+lane|same\s+lane)\b", ctx, re.I):
@@ -122,7 +128,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "rear":
         return "R6", "same", True
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
-    if d.junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
+    if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
         # a party that then follows the AV turned into its direction, so the sides swap.
         follows = fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)
@@ -133,7 +139,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             return "R2", None, True
         from_right = (turns[0] == "d") != bool(follows)
         return ("R3" if from_right else "R1"), None, True
-    if d.junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
+    if junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
             fre.search(r"\bentered\s+the\s+intersection", ctx, re.I)):
         side = side_named(ctx)
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
@@ -153,6 +159,13 @@ def av_street(d: Doc) -> str | None:
     Vallejo Street"); the name's words without the suffix, lower-cased."""
     m = fre.search(rf"\bEGO\b[^.]{{0,80}}?\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
     return m.group(1).strip().lower() if m else None
+
+
+def _on_other_street(d: Doc, ctx: str) -> bool:
+    """Is the party put on a street other than the AV's ("a vehicle on Leavenworth Street ...")?"""
+    street = av_street(d)
+    m = fre.search(rf"(?<!\bonto\s)\b(?:on|along)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", ctx)
+    return bool(street and m and m.group(1).strip().lower() != street)
 
 
 def _onto_av_street(d: Doc, ctx: str) -> bool:

@@ -59,12 +59,13 @@ _SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:d
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
-                        r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
+                        r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|rear[- ]?ended\s+by|struck\s+from\s+behind\s+by|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
                         r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
                         r"from\s+behind)", re.I)
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
+                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving)\s+past|"
                          r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
@@ -295,6 +296,10 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fg"]):
         # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round.
         lane, rule = ("right" if changes[0] == "f" else "left"), rule + "; cut in"
+    elif pos == "R6" and lane == "same" and (moves := [c for c in ego_actions if c in "fg"]) and \
+            cside in ("", "left" if moves[-1] == "f" else "right"):
+        # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.
+        lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
     elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None:
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
         # passing or splitting lanes was beside the AV on the side it touched.
