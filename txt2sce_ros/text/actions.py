@@ -23,7 +23,8 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 PHRASES: tuple[tuple[str, str], ...] = (
     ("O", r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
-          r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)"),
+          r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
+          r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
@@ -34,7 +35,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
-          r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\b|\bstops\b|\byield(?:ed|ing|s)?\b"),
+          r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
+          r"\bstops\b|\byield(?:ed|ing|s)?\b"),
     ("i", r"\b(?:began|begin|begins|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
@@ -62,7 +64,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
-    ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)?|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
+    ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
           r"lanes)|\b(?:pull(?:ed|ing)\s+"
           r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"

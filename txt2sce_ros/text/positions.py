@@ -81,7 +81,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             return "R5", side, True
     from_side = fre.search(r"\bfrom\s+(?:the|EGO's)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
                           ctx, re.I)
-    if junction and from_side:
+    if junction and from_side and e.category != "pedestrian":  # one on foot crosses the AV's own approach
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
     if junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
         return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
@@ -91,7 +91,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
                          r"lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
-                         r"on\s+the\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
+                         r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", TURN_WORDS.sub(" ", ctx), re.I)
     if lane_ctx and not cross:
         text = lane_ctx.group(0)

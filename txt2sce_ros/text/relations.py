@@ -41,7 +41,8 @@ _LANE_CUES = compile_gated(
     r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+)?(left|right)(?:\s+of\s+(?:EGO|it))?|"
     r"\b(left|right)(?:-hand|most)?\s+(?:adjacent\s+|neighbou?ring\s+|parallel\s+)?(?:travel\s+)?lane\b|"
     r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
-    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+EGO\b|\bon\s+(?:EGO's|its)\s+(left|right)\b|"
+    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+EGO\b|\b(?:on|to)\s+EGO's\s+(left|right)\b|"
+    r"\bon\s+its\s+(left|right)\b|"
     # "a sedan stopped to its left": a party is not beside itself, so "its" is the AV (a move "to its left" is not)
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
     r"\bto\s+its\s+(left|right)\b|"
@@ -75,6 +76,9 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?",
                           re.I)
+_MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
+                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
+                         r"(?:(?:back\s+|right\s+|directly\s+|suddenly\s+|in\s+)?)$", re.I)
 _ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                           r"\bon-?coming\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
@@ -151,6 +155,9 @@ def av_lane_rank(d: Doc) -> float | None:
     """The AV's own lane on the 0 (leftmost) .. 9 (rightmost) scale, when a clause about the AV names it."""
     for i, s in enumerate(d.sents):
         for m in fre.finditer(r"\bEGO\b", s):
+            if fre.search(r"\b(?:of|behind|past|beside|than|with|by|to|from|passed|struck|hit|contacted)\s+$",
+                          s[max(0, m.start() - 12):m.start()], re.I):
+                continue  # "a vehicle ahead of EGO in the left lane": the lane is the other party's
             clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", s[m.end():m.end() + 120])[0]
             lm = _ABS_LANE.search(clause)
             if lm and not fre.search(r"\b(?:into|onto|toward)\s+the\s+\S+\s*$", clause[:lm.start() + 5], re.I):
@@ -188,6 +195,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         for m in _BEHIND.finditer(win):
             cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
         for m in _AHEAD.finditer(win):
+            if _MOVED_TO.search(win[max(0, m.start() - 30):m.start()]):
+                continue  # "cut in front of EGO": where it went, not where it was
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
             cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
@@ -282,7 +291,9 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     elif passing and not backing and "k" not in ego_actions:
         pos, rule = "R6", "passing"
         used.append(passing[0])
-    elif fore == "rear" and not backing and "k" not in ego_actions and contact is not None:
+    elif fore == "rear" and not backing and "k" not in ego_actions and contact is not None and \
+            not any(a.who == e.idx and a.code in "OS" for a in d.acts):
+        # (a party that stood, at the curb or a stop, and moved off into the passing AV was beside it, not behind)
         pos, rule = "R6", "contact on the AV's rear"
         used.append(contact)
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)

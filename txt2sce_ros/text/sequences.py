@@ -39,9 +39,12 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "h"
         if not codes and c == "k":  # backing away is from a standstill (sketch.md)
             start = "stopped"
-        if not codes and c == "h" and not ego:
-            start = "stopped"
-            continue
+        if not codes and c == "h" and not ego and not stopped:
+            if fre.search(r"\b(?:to\s+(?:a|an)\s|suddenly|abruptly|short|quickly|hard)", a.text, re.I):
+                codes.append("a")  # "the bus stopped suddenly", "came to a stop": an event of a party under way
+            else:
+                start = "stopped"  # "a vehicle stopped behind EGO then ...": where it stood
+                continue
         if start == "stopped" and not codes and c == "h":
             continue  # already standing: no stop to tell
         if start == "stopped" and not codes and c in ("a", "b", "c"):
