@@ -88,15 +88,18 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
         return "R6", cside or "same", True
+    scan = TURN_WORDS.sub(" ", ctx)
     lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
                          r"lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
-                         r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", TURN_WORDS.sub(" ", ctx), re.I)
+                         r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
     if lane_ctx and not cross:
         text = lane_ctx.group(0)
-        side = side_named(text) or ("right" if fre.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx,
-                                                     re.I) else None)
+        # A side named in the party's phrase ("a driveway on the left side of the street") beats the right-hand
+        # default for curbs, driveways and bike lanes.
+        side = side_named(text) or side_named(scan[lane_ctx.end():lane_ctx.end() + 40].split("|")[0]) or \
+            ("right" if fre.search(r"bike|bus|sidewalk|curb|driveway|parking", text + " " + ctx, re.I) else None)
         if side is None:
             side = side_named(ctx)
         if side is None and fre.search(r"\badjacent\b|\bparallel\b|\balongside\b|\bbeside\b|\bnext\s+to\b", text,

@@ -117,7 +117,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
-        elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O"):
+        elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
         elif last.code == "T":
             turn = turn_from_headings(d.sents[last.sent])
