@@ -92,7 +92,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
                          r"lane\s+to\s+the\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
-                         r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|bike\s+lane|sidewalk|parallel|alongside|"
+                         r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|"
+                         r"bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
     if lane_ctx and not cross:
         text = lane_ctx.group(0)

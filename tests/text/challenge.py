@@ -1,0 +1,76 @@
+"""A challenge set for the offline extractor: 56 short narratives written by the team in the styles real reports
+use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
+the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
+
+None is taken from a gold or held-out report: they exist to find phrasings the rules miss, so a rule that fixes one
+fixes a kind. Scored per party (position with lane, events) and per report (the AV's start and actions), a party
+matched by category.
+
+    python -m tests.text.challenge          # figures and every miss
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from txt2sce_ros.text.extractor import extract
+
+DATA = Path(__file__).with_name("challenge_narratives.jsonl")
+
+
+@dataclass
+class ChallengeScore:
+    parties: int = 0
+    position: int = 0
+    events: int = 0
+    reports: int = 0
+    ego: int = 0
+    misses: list[str] = field(default_factory=list)
+
+
+def score(path: Path = DATA) -> ChallengeScore:
+    sc = ChallengeScore()
+    for line in path.read_text(encoding="utf-8").splitlines():
+        case = json.loads(line)
+        sk = extract(case["text"], case["id"])
+        sc.reports += 1
+        ego = (sk.ego.start, sk.ego.actions)
+        want_ego = (case["ego"]["start"], case["ego"]["actions"])
+        sc.ego += ego == want_ego
+        if ego != want_ego:
+            sc.misses.append(f"{case['id']} ego {ego} want {want_ego}")
+        got = list(sk.npcs)
+        for want in case["npcs"]:
+            sc.parties += 1
+            same = [g for g in got if g.category == want["category"]] or got
+            p = next((g for g in same if (g.position, g.lane) == (want["position"], want["lane"])),
+                     same[0] if same else None)
+            if p is not None:
+                got.remove(p)
+            pos = (p.position, p.lane) if p else None
+            if pos == (want["position"], want["lane"]):
+                sc.position += 1
+            else:
+                sc.misses.append(f"{case['id']} position {pos} want {(want['position'], want['lane'])}")
+            ev = (p.start, p.actions) if p else None
+            if ev == (want["start"], want["actions"]):
+                sc.events += 1
+            else:
+                sc.misses.append(f"{case['id']} events {ev} want {(want['start'], want['actions'])}")
+    return sc
+
+
+def main() -> None:
+    sc = score()
+    print(f"challenge set: {sc.reports} narratives, {sc.parties} parties")
+    print(f"  npc position (with lane) {sc.position}/{sc.parties} = {100 * sc.position / sc.parties:.1f}%")
+    print(f"  npc events (start + actions) {sc.events}/{sc.parties} = {100 * sc.events / sc.parties:.1f}%")
+    print(f"  AV start + actions {sc.ego}/{sc.reports} = {100 * sc.ego / sc.reports:.1f}%")
+    for m in sc.misses:
+        print("  miss:", m)
+
+
+if __name__ == "__main__":
+    main()
