@@ -24,12 +24,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("O", r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
-          r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)"),
+          r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
+          r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
           r"\bbacking\b"),
-    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
+    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
           r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
@@ -49,7 +50,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
-          r"double\s+(?:yellow|solid)|median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
+          r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
@@ -58,7 +59,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
-          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b"),
+          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\b(?:moved|moving|came|coming|pulled|pulling)\s+"
+          r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b"),
     ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"

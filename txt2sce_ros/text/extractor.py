@@ -161,6 +161,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
         # An oncoming party's move into the AV's lane is to its own left: its side is not the AV's.
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
+        if start == "moving" and acts[:1] in ("b", "c"):
+            acts = "a" + acts  # speeding up or slowing is done by a party already on its way
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5":
             acts = "a" + acts  # it travelled along the AV's road before turning off it
         if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \

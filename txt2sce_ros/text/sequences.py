@@ -27,10 +27,11 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         if c == "T":
             continue
         if c == "O":
-            # Out of a parking spot at the curb: it stood, moved off, and moved left into the traffic lane.
+            # Out of a parking spot at the curb: it stood, moved off, and moved into the traffic lane (left from
+            # a right-hand curb, right from a left-hand one).
             if not codes:
                 start = "stopped"
-            codes += ["i", "f"]
+            codes += ["i", "g" if side == "left" and not ego else "f"]
             continue
         if c == "S":
             if not codes and not any(x in _FORWARD for x in codes):

@@ -292,9 +292,11 @@ def heading(d: Doc, who: int) -> int | None:
                 # Read up to the next party named in the sentence: its heading is its own.
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 window = s[m.end:min([m.end + 120, *nxt])]
-                final = fre.search(r"\b(?:onto|to)\s+((?:north|south|east|west)+)bound\b", window, re.I)
-                if final and who == -1:  # the AV "turned right from southbound X onto westbound Y": heads west
-                    return heading_of(final.group(1) + "bound")
+                approach = fre.search(r"\bfrom\s+((?:north|south|east|west)+)bound\b", window, re.I)
+                if approach and who == -1:
+                    # The AV "turned left from northbound X onto westbound Y": the frame of R1-R7 is taken when
+                    # the interaction begins, on its approach (an oncoming party is R2 there).
+                    return heading_of(approach.group(1) + "bound")
                 h = heading_of(window)
                 if h is not None:
                     return h
