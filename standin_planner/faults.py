@@ -26,9 +26,12 @@ against known ground truth. What each should trigger (the oracle category in bra
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Iterable
+from typing import TYPE_CHECKING, Iterable
 
 from txt2sce_ros.errors import InputError
+
+if TYPE_CHECKING:
+    from lxml import etree
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,3 +73,31 @@ class Faults:
 
 #: Sketch categories the `ignore_cyclists` fault drops.
 CYCLIST_CATEGORIES = frozenset({"bicycle", "scooter"})
+
+
+def inert_faults(scenario_root: "etree._Element") -> frozenset[str]:
+    """Fault modes that provably cannot change a single decision of the planner in this scenario, so a run with
+    one of them on is the nominal run step for step (a study may skip it and reuse the nominal verdict):
+
+    - `ignore_cyclists` when no entity is a bicycle or scooter (the fault only filters those from the object list;
+      the category is read as the player reads it: `txt2sce:category`, else the Vehicle's `vehicleCategory`);
+    - `red_light_misread` when no controller phase or signal state action sets a light to yellow (the fault only
+      rewrites a yellow; a light nothing sets shows `off`).
+    Every other fault acts on the ego's own motion or on every object and is never called inert."""
+    out = set()
+    cats = set()
+    for obj in scenario_root.iterfind("Entities/ScenarioObject"):
+        body = next((c for c in obj if c.tag in ("Vehicle", "Pedestrian", "MiscObject")), None)
+        if body is None:
+            continue
+        prop = body.find("Properties/Property[@name='txt2sce:category']")
+        cats.add(prop.get("value", "") if prop is not None else
+                 ("bicycle" if body.get("vehicleCategory") == "bicycle" else body.tag))
+    if not cats & CYCLIST_CATEGORIES:
+        out.add("ignore_cyclists")
+    # every way a scenario can set a light: controller phases and (timed) state actions
+    states = [s.get("state", "") for tag in ("TrafficSignalState", "TrafficSignalStateAction")
+              for s in scenario_root.iter(tag)]
+    if not any(s.strip().lower() == "yellow" or s.replace(" ", "") == "off;on;off" for s in states):
+        out.add("red_light_misread")
+    return frozenset(out)

@@ -45,7 +45,9 @@ def test_study_shares_nominal_runs_and_writes_the_table(seed_dir: Path, tmp_path
     n = data["scenarios"]
     assert n > 2 and len(data["seeds"]) == 2
     with ResultStore(tmp_path / "study" / "results.sqlite") as store:
-        assert store.count() == n * (1 + len(faults))      # one nominal set, one set per fault
+        # one nominal set, one set per fault, except the ignore_cyclists runs of scenarios without a cyclist (the
+        # fault cannot act there: the nominal verdict stands for them), which a 6-node tree always has
+        assert n * len(faults) <= store.count() < n * (1 + len(faults))
     for r in rows:
         assert r.found == (r.differential > 0)
         assert r.differential <= r.runs_with_fault

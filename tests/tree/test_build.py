@@ -30,11 +30,12 @@ def test_expected_nodes_is_the_papers_sum():
 
 def test_unpruned_node_count_equals_sum_formula(tmp_path):
     cfg = tree_config(prune_share=1.0, mutations=2)
+    cfg["tree"]["new_party_slots"] = 0      # the formula, not the new party (tests/tree/test_reach.py): fewer files
     res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=cfg)
-    # weather 5 types, ego 2, npc1 7 categories + one started close to the ego (WPM-near), 2 events x 2,
-    # new obstacle 2
-    assert res.block_counts == (5, 2, 8, 2, 2, 2)
-    assert res.expected == 5 + 10 + 80 + 160 + 320 + 640
+    # ego: a standing start + 2, weather 5 types, npc1 7 categories + one started close to the ego (WPM-near),
+    # 2 events x 2, new obstacle 2
+    assert res.block_counts == (3, 5, 8, 2, 2, 2)
+    assert res.expected == 3 + 15 + 120 + 240 + 480 + 960
     assert res.nodes == res.expected and res.invalid == 0 and not res.truncated
     files = list((tmp_path / "t" / "nodes").glob("n*.xosc"))
     assert len(files) == res.expected
@@ -43,12 +44,13 @@ def test_unpruned_node_count_equals_sum_formula(tmp_path):
     by_depth = {}
     for n in manifest["nodes"]:
         by_depth[n["depth"]] = by_depth.get(n["depth"], 0) + 1
-    assert [by_depth[d] for d in range(1, 7)] == [5, 10, 80, 160, 320, 640]
+    assert [by_depth[d] for d in range(1, 7)] == [3, 15, 120, 240, 480, 960]
 
 
 def test_mutation_count_changes_the_tree(tmp_path):
     res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=tree_config(prune_share=1.0, mutations=1))
-    assert res.block_counts == (5, 1, 8, 1, 1, 1)          # npc1: 7 categories + WPM-near
+    # ego: standing start + WPM-init; weather; the new party: 3 roles; npc1: 7 categories + WPM-near
+    assert res.block_counts == (2, 5, 3, 8, 1, 1, 1)
     assert res.nodes == expected_nodes(res.block_counts)
 
 

@@ -15,20 +15,20 @@ def test_blocks_of_the_junction_seed_in_insertion_order(junction_bytes):
     d = disassemble(junction_bytes, source=str(JUNCTION), new_obstacle_slots=1)
     got = [(b.kind, b.key, len(b.slots)) for b in d.blocks]
     assert got == [
-        (BlockKind.WEATHER, "environment", 1),
         (BlockKind.EGO, "ego", 1),
-        (BlockKind.NPC, "npc1", 2),                 # ScenarioObject + Init Private
+        (BlockKind.WEATHER, "environment", 1),
         (BlockKind.SIGNAL, "signal_ctrl_4", 4),      # an Init GlobalAction per light + the signal Story
+        (BlockKind.NPC, "npc1", 2),                 # ScenarioObject + Init Private
         (BlockKind.EVENT, "npc1_e1_go_straight", 1),
         (BlockKind.EVENT, "npc1_e2_turn_left", 1),
         (BlockKind.OBSTACLE, "obs1", 2),
         (BlockKind.NEW_OBSTACLE, "obs2", 2),        # first free obstacle name
     ]
-    assert d.blocks[0].fragments[0].startswith("<Environment name=\"environment\">")
-    assert d.blocks[2].fragments[1].startswith("<Private entityRef=\"npc1\">")
+    assert d.blocks[1].fragments[0].startswith("<Environment name=\"environment\">")
+    assert d.blocks[3].fragments[1].startswith("<Private entityRef=\"npc1\">")
     assert d.blocks[-1].fragments == ("", "")
-    assert d.blocks[3].fragments[-1].startswith('<Story name="signal_ctrl_4">')
-    assert all(f.startswith("<GlobalAction>") for f in d.blocks[3].fragments[:-1])
+    assert d.blocks[2].fragments[-1].startswith('<Story name="signal_ctrl_4">')
+    assert all(f.startswith("<GlobalAction>") for f in d.blocks[2].fragments[:-1])
     # the template keeps everything else: the ego's ScenarioObject and the story skeleton
     text = "".join(d.template.pieces)
     assert '<ScenarioObject name="ego">' in text and "<Maneuver name=\"npc1_maneuver\">" in text

@@ -53,7 +53,8 @@ def test_cli_build_show_and_diversity(tmp_path, capsys):
     assert main(["tree", str(CUT_IN), "--out", str(out), "--seed", "2", "--mutations", "1", "--prune", "1",
                  "--jobs", "1"]) == 0
     text = capsys.readouterr().out
-    assert "highway_cut_in_seed" in text and "5x1x8x1x1x1" in text   # npc1: 7 categories + WPM-near
+    # ego: a standing start + WPM-init; weather; the new party: 3 roles; npc1: 7 categories + WPM-near
+    assert "highway_cut_in_seed" in text and "2x5x3x8x1x1x1" in text
     tree_dir = out / "highway_cut_in_seed"
     assert main(["tree", "show", str(tree_dir), "--depth", "2"]) == 0
     text = capsys.readouterr().out

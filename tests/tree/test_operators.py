@@ -214,11 +214,17 @@ def test_initial_location_is_context_aware(cfg):
             s = float(parse_fragment(v.fragments[1]).find(".//TeleportAction//LanePosition").get("s"))
             assert feasible_s(ctx, "npc1", start, s, margin) or s == 45.0
     _, block, vs, _ = _variants(JUNCTION, cfg, "ego")
+    assert [v.operator for v in vs].count("TSM-start") == 1
     for v in vs:
         priv = parse_fragment(v.fragments[0])
         tele = lane_pos(priv.find(".//TeleportAction//LanePosition"))
         first_wp = lane_pos(priv.find(".//Route/Waypoint/Position/LanePosition"))
-        assert tele == first_wp and tele.s != 250.0  # the route starts where the ego now starts
+        speed = float(priv.find(".//LongitudinalAction//AbsoluteTargetSpeed").get("value"))
+        if v.operator == "TSM-start":    # the standing start: same place, speed 0
+            assert tele.s == 250.0 and speed == 0.0 and v.features[-1] == "standing"
+        else:
+            assert tele == first_wp and tele.s != 250.0  # the route starts where the ego now starts
+            assert speed > 0.0 and v.features[-1] == "moving"
 
 
 def test_oim_places_obstacles_on_the_av_path(cfg):

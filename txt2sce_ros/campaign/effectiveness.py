@@ -9,6 +9,7 @@ added it), and the rank of the element the fault depends on is reported: 1 means
 from __future__ import annotations
 
 import json
+import sys
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Mapping, Sequence
@@ -109,12 +110,21 @@ class StudyConfig:
 
 def pick_seeds(seed_files: Sequence[Path], n: int) -> list[Path]:
     """Greedy cover: each pick adds the most scenario elements not yet covered (ties: file name), so a handful of
-    seeds spans cyclists, signals, parties close to the ego, obstacles... Deterministic."""
+    seeds spans cyclists, signals, parties close to the ego, obstacles... An element counts for a seed when the
+    seed holds it or its tree can bring it in (`tree.build.reachable_elements`: a new cyclist, a standing start,
+    a dilemma-zone yellow on the map's lights...). Deterministic."""
     from ..analysis.features import elements_of_file
+    from ..errors import Txt2SceError
+    from ..tree.build import reachable_elements
 
     # a party's category and position and the signal are what the faults depend on; counts are not
     def useful(f: Path) -> set[str]:
-        return {e for e in elements_of_file(str(f)) if not e.startswith(("npcs:", "obstacle:no", "weather:"))}
+        try:
+            reach = reachable_elements(f)
+        except Txt2SceError:        # a seed the tree cannot read: what it holds still counts
+            reach = frozenset()
+        return {e for e in elements_of_file(str(f)) | reach
+                if not e.startswith(("npcs:", "obstacle:no", "weather:"))}
 
     pool = {f: useful(f) for f in sorted(seed_files)}
     chosen: list[Path] = []
@@ -227,6 +237,15 @@ def _chosen_seeds(seed_dir: Path, cfg: StudyConfig) -> list[list[Path]]:
     return [[p.resolve() for p in d] for d in draws]
 
 
+def _inert(path: str) -> frozenset[str]:
+    """The faults that cannot act in the scenario file at `path` (`standin_planner.faults.inert_faults`)."""
+    from standin_planner.faults import inert_faults
+
+    from ..xosc.schema import parse_document
+
+    return inert_faults(parse_document(Path(path).read_bytes(), source=path))
+
+
 def run_study(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[EffectivenessRow]:
     """Reports/sketches/seeds -> trees from a few covering seeds -> every scenario nominal and with each fault
     (one resumable store; nominal runs are shared by all faults) -> one row per fault. With `cfg.draws`, the
@@ -256,34 +275,52 @@ def run_draws(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[DrawResult
     for fault in ("", *(s.name for s in specs)):
         by_config[fault] = make_tasks([tree_dir], faults=(fault,) if fault else (), seed=cfg.seed,
                                       time_limit=cfg.time_limit)
-    all_tasks = [t for ts in by_config.values() for t in ts]
-    with ResultStore(cfg.out / "results.sqlite") as store:
-        run_all(all_tasks, store, executor=cfg.executor, workers=cfg.workers, progress=cfg.progress,
-                ray_address=cfg.ray_address)
-        stored = {r.run_key: r for r in store.runs()}
-
+    # a fault that cannot act in a scenario (no cyclist, no yellow) would repeat the nominal run step for step:
+    # not run, the nominal verdict stands for it
+    inert = {t.scenario_path: _inert(t.scenario_path) for t in by_config[""]}
+    for fault in by_config:
+        if fault:
+            by_config[fault] = [t for t in by_config[fault] if fault not in inert[t.scenario_path]]
     from ..analysis.features import elements_of_file
+
+    stored: dict[str, Any] = {}
 
     def cats(tasks: Sequence[Any], trees: set[str]) -> dict[str, frozenset[str]]:
         # errors are not judged: a scenario the player could not run counts for neither side
         return {f"{t.tree}/{t.scenario_id}": frozenset(stored[t.key].categories) for t in tasks
                 if t.tree in trees and t.key in stored and stored[t.key].verdict != "error"}
 
+    def fault_cats(fault: str, trees: set[str]) -> dict[str, frozenset[str]]:
+        # the nominal verdict stands for the runs skipped as inert
+        skipped = {f"{t.tree}/{t.scenario_id}" for t in by_config[""] if fault in inert[t.scenario_path]}
+        nominal = cats(by_config[""], trees)
+        return {**{i: c for i, c in nominal.items() if i in skipped}, **cats(by_config[fault], trees)}
+
     results: list[DrawResult] = []
     report: list[dict[str, Any]] = []
     for k, seeds in enumerate(draws):
         trees = {p.stem for p in seeds}
+        # draw by draw: each draw's rows are final (and printed, with `progress`) as soon as its own runs are in,
+        # so a long study that is stopped still has its first draws; a later draw reuses shared trees' runs
+        with ResultStore(cfg.out / "results.sqlite") as store:
+            run_all([t for ts in by_config.values() for t in ts if t.tree in trees], store, executor=cfg.executor,
+                    workers=cfg.workers, progress=cfg.progress, ray_address=cfg.ray_address)
+            stored = {r.run_key: r for r in store.runs()}
         nominal = cats(by_config[""], trees)
         elements = {f"{t.tree}/{t.scenario_id}": elements_of_file(t.scenario_path) for t in by_config[""]
                     if t.tree in trees}
         rows, details = [], {}
         for spec in specs:
-            row, lift = assess(spec, nominal, cats(by_config[spec.name], trees), elements)
+            row, lift = assess(spec, nominal, fault_cats(spec.name, trees), elements)
             rows.append(row)
             details[spec.name] = {"row": asdict(row), "why": spec.why, "right_triggers": list(spec.triggers),
                                   "lift": [asdict(r) for r in lift[:10]]}
         results.append(DrawResult(k, tuple(p.name for p in seeds), tuple(rows)))
         report.append({"draw": k, "scenarios": len(elements), "seeds": [p.name for p in seeds], "faults": details})
+        if cfg.draws:
+            print(f"[effectiveness] draw {k}: {results[-1].found}/{len(rows)} found, {results[-1].right_first}/"
+                  f"{len(rows)} right trigger first ({len(elements)} scenarios)\n{format_table(rows)}",
+                  file=sys.stderr, flush=True)
     head = {"time_limit": cfg.time_limit, "nodes": cfg.nodes}
     if cfg.draws:
         (cfg.out / "effectiveness.json").write_text(json.dumps(

@@ -16,6 +16,7 @@ class BlockKind(str, Enum):
     EVENT = "event"                # one Event of a Maneuver (`<entity>_e<k>_<action>`)
     OBSTACLE = "obstacle"          # an obstacle's ScenarioObject + its Init Private
     NEW_OBSTACLE = "new_obstacle"  # an empty slot (ScenarioObject + Private) that OIM fills
+    NEW_PARTY = "new_party"        # an empty slot (ScenarioObject + Private + Story) that NCM fills (parties.py)
 
 
 @dataclass(frozen=True)

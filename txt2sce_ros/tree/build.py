@@ -31,7 +31,7 @@ from ..seed.context import SeedContext, build_context
 from .disassembly import disassemble
 from .export import write_dot, write_graphml, write_manifest
 from .mutate import block_variants, original_features
-from .prune import prune, spread, spread_covering
+from .prune import diagonal, prune
 from .xml import parse_bytes
 
 MANIFEST_SCHEMA = "txt2sce.tree/1"
@@ -106,6 +106,40 @@ def _read_seed(seed_path: Path) -> tuple[bytes, etree._Element, SeedContext]:
     return data, root, build_context(root, source=str(seed_path), seed_path=seed_path)
 
 
+def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None
+                       ) -> frozenset[str]:
+    """Trigger conditions (in the analysis's element names) the tree can bring into this seed's scenarios, read
+    from its block versions without building it: NPC categories, a party close to the AV at the start (WPM-near,
+    NCM-new close_behind), a cyclist (NCM-new cyclist_ahead), a lead that brakes (`events:h`), a dilemma-zone
+    yellow (TLS), and `start:standing` (TSM-start, or a seed that starts standing). What seed picking
+    covers, so a seed is chosen for what its tree can test, not only for what its report held."""
+    cfg = cfg or tree_config()
+    seed_path = Path(seed_path)
+    data, root, ctx = _read_seed(seed_path)
+    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
+                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
+    key = seed_key(seed_path.name)
+    out: set[str] = set()
+    for b in dis.blocks:
+        for v in block_variants(b, ctx, cfg, seed=seed, seed_key=key):
+            if b.kind.value == "npc":
+                out.add(f"category:{v.features[1]}")
+                if v.operator == "WPM-near":
+                    out.add("near_start:yes")
+            elif b.kind.value == "new_party":
+                out |= {"NCM-new:cyclist_ahead": {"category:bicycle"}, "NCM-new:lead_brakes": {"events:h"},
+                        "NCM-new:close_behind": {"near_start:yes"}}.get(v.operator, set())
+            elif b.kind.value == "signal" and any("TimeToCollisionCondition" in f for f in v.fragments):
+                out.add("signal:yellow")
+            elif b.kind.value == "ego" and v.operator == "TSM-start":
+                out.add("start:standing")
+    ego_v = root.find("Storyboard/Init/Actions/Private[@entityRef='ego']//AbsoluteTargetSpeed")
+    if ego_v is not None and float(ego_v.get("value", "1") or 1) <= 0.0:
+        out.add("start:standing")
+    return frozenset(out)
+
+
 def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None,
                ) -> TreeResult:
     """Build the scenario tree of one seed under `out_dir` (`nodes/*.xosc`, `manifest.json`, `tree.graphml`,
@@ -126,7 +160,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     rebased = etree.tostring(root, encoding="unicode")
     order = tuple(cfg["tree"]["order"])
     dis = disassemble(rebased, source=str(seed_path), order=order,
-                      new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]))
+                      new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
     key = seed_key(seed_path.name)
     variants: list[list[Variant]] = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
     used = [i for i, v in enumerate(variants) if v]  # a block with no possible version is left as in the seed
@@ -228,8 +263,9 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
                for path, j in zip(parent_paths, choices)]
     keep = prune(vectors, share, rng)
     # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
-    # (a plain cut would drop the deepest layers: events and obstacles). Round robin over clusters keeps as
-    # many distinct categories as the budget allows.
+    # (a plain cut would drop the deepest layers: events and obstacles). The kept versions are spread over the
+    # parents along diagonals (`prune.diagonal`), so each version meets different earlier ones (a cyclist in the
+    # rain, a standing start in the snow) rather than all of them sharing the first parent.
     layers_left = len(used) - depth + 1
     allowed = max(1, (cap - written) // layers_left) if layers_left > 1 else max(0, cap - written)
     if enumerated:
@@ -238,9 +274,7 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
         allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
     if len(keep) <= allowed:
         return keep, False
-    kept_vectors = [vectors[i] for i in keep]
-    return (spread_covering(keep, kept_vectors, [choices[i] for i in keep], allowed) if enumerated
-            else spread(keep, kept_vectors, allowed)), True
+    return diagonal(keep, len(vs), allowed, cover=enumerated), True
 
 
 @dataclass(frozen=True)
@@ -261,7 +295,8 @@ def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] |
     seed_path = Path(seed_path)
     data, root, ctx = _read_seed(seed_path)
     dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
-                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]))
+                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
     key = seed_key(seed_path.name)
     variants = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
     used = [i for i, v in enumerate(variants) if v]

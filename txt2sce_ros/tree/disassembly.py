@@ -11,6 +11,7 @@ Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_fo
 | event | each `Story/Act/ManeuverGroup/Maneuver/Event` |
 | obstacle | `ScenarioObject[@name='obs…']` + its Private |
 | new_obstacle | an empty ScenarioObject slot after the last entity and an empty Private slot after the last Private |
+| new_party | as new_obstacle, plus an empty Story slot after the last Story (a party inserted on the AV's path) |
 
 A signal block's parts are rewritten whole by the TLS mutation (`environment.tls`, and `dilemma_yellow` for a yellow
 that waits for the ego's dilemma zone); the events of the signal Story are not event blocks of their own.
@@ -28,11 +29,12 @@ from lxml import etree
 from ..errors import InputError
 from ..seed.signal_story import is_signal_init, is_signal_story
 from .blocks import Block, BlockKind, Disassembly, Template
+from .parties import free_party_name
 from .xml import parse_bytes, to_text
 
 _MARK = "@txt2sce-slot:"
 _MARK_RE = re.compile(r"<!--@txt2sce-slot:(\d+)-->")
-DEFAULT_ORDER = ("weather", "ego", "npc", "signal", "event", "obstacle", "new_obstacle")
+DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "npc", "event", "obstacle", "new_obstacle")
 
 
 def entity_kind(name: str) -> BlockKind:
@@ -74,9 +76,10 @@ class _Cutter:
 
 
 def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, ...] = DEFAULT_ORDER,
-                new_obstacle_slots: int = 0) -> Disassembly:
+                new_obstacle_slots: int = 0, new_party_slots: int = 0) -> Disassembly:
     """δ(seed) -> (T, B). `order` lists block kinds in insertion order; kinds left out stay in the template.
-    `new_obstacle_slots` empty slots are added for obstacle insertion (OIM)."""
+    `new_obstacle_slots` empty slots are added for obstacle insertion (OIM), `new_party_slots` for parties
+    (`parties.py`)."""
     root = parse_bytes(seed, source)
     if root.tag != "OpenSCENARIO":
         raise InputError(f"root element is <{root.tag}>, not <OpenSCENARIO>", source=source, element=root.tag)
@@ -115,7 +118,7 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
     cutter = _Cutter()
     cut: dict[BlockKind, list[tuple[str, tuple[int, ...]]]] = {k: [] for k in BlockKind}
     for kind in BlockKind:
-        if kind is BlockKind.NEW_OBSTACLE or kind not in wanted:
+        if kind in (BlockKind.NEW_OBSTACLE, BlockKind.NEW_PARTY) or kind not in wanted:
             continue
         for key, parts in found[kind]:
             cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
@@ -126,6 +129,14 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             s_obj, _ = cutter.empty_after(entities, last_obj)
             s_priv, _ = cutter.empty_after(actions, last_priv)
             cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken), (s_obj, s_priv)))
+
+    if BlockKind.NEW_PARTY in wanted:
+        storyboard = root.find("Storyboard")
+        for _ in range(new_party_slots):
+            s_obj, _ = cutter.empty_after(entities, _last_element(entities))
+            s_priv, _ = cutter.empty_after(actions, _last_element(actions))
+            s_story, _ = cutter.empty_after(storyboard, _last_story(storyboard))
+            cut[BlockKind.NEW_PARTY].append((free_party_name(taken), (s_obj, s_priv, s_story)))
 
     text = etree.tostring(root, encoding="unicode")
     pieces: list[str] = []
@@ -146,6 +157,13 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             blocks.append(Block(index=len(blocks), kind=BlockKind(name), key=key, slots=slots,
                                 fragments=tuple(cutter.fragments[s] for s in slots)))
     return Disassembly(source=source, template=template, blocks=tuple(blocks))
+
+
+def _last_story(storyboard: etree._Element) -> etree._Element | None:
+    """The last Story of the storyboard, or the marker a cut Story or a new slot left (else its Init): where a new
+    Story slot goes, before the StopTrigger."""
+    kids = [c for c in storyboard if c.tag == "Story" or (c.tag is etree.Comment and _MARK in (c.text or ""))]
+    return kids[-1] if kids else storyboard.find("Init")
 
 
 def _last_element(parent: etree._Element) -> etree._Element | None:

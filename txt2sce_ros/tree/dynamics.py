@@ -41,6 +41,28 @@ def tsm(event: etree._Element, action: str, rng: np.random.Generator, cfg: dict[
     return style
 
 
+def initial_speed(private: etree._Element | None) -> float | None:
+    """The Init SpeedAction's absolute target of an entity's Private (its speed at t = 0), None without one."""
+    t = private.find("PrivateAction/LongitudinalAction/SpeedAction/SpeedActionTarget/AbsoluteTargetSpeed") \
+        if private is not None else None
+    try:
+        return float(t.get("value", "0")) if t is not None else None
+    except ValueError:
+        return None
+
+
+def standing_start(private: etree._Element, rec: Recorder) -> bool:
+    """TSM on the ego's initial speed: a moving start becomes a standing one (target 0). Nothing else changes, so
+    the AV sets off from its seed position along the same route. False when it already stands (or has no Init
+    SpeedAction)."""
+    v = initial_speed(private)
+    if v is None or v <= 0.0:
+        return False
+    rec.set(private.find("PrivateAction/LongitudinalAction/SpeedAction/SpeedActionTarget/AbsoluteTargetSpeed"),
+            "value", 0.0, digits=3)
+    return True
+
+
 def dtm(event: etree._Element, rng: np.random.Generator, cfg: dict[str, Any], rec: Recorder) -> bool:
     """Dynamic Transition Mutation: shape uniform over the configured shapes, value uniform in the range of its
     dynamicsDimension. Returns False when the event has no TransitionDynamics."""

@@ -255,14 +255,28 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
 
 def oim_position(ctx: SeedContext, obstacle_width: float, rng: np.random.Generator, cfg: dict[str, Any],
                  ) -> LanePos | None:
-    """Context-aware obstacle position on the AV's path: a distance ahead of the ego's start drawn uniformly,
-    walked along the ego's start road and then the non-junction roads of its route, on the lane the ego uses
-    there, with a lateral offset that keeps the obstacle inside that lane. None without a map or an ego start."""
+    """Context-aware obstacle position on the AV's path: a distance ahead of the ego's start drawn uniformly
+    (`ahead_on_path`), with a lateral offset that keeps the obstacle inside the lane there. None without a map or
+    an ego start."""
+    found = ahead_on_path(ctx, uniform(rng, *cfg["ahead"]))
+    if found is None:
+        return None
+    pos, within = found
+    if within and ctx.map is not None:
+        half = max(0.0, (ctx.map.lane_width(pos.road, pos.lane, pos.s) - obstacle_width) / 2.0)
+        return LanePos(road=pos.road, lane=pos.lane, s=pos.s, offset=uniform(rng, -half, half))
+    return pos
+
+
+def ahead_on_path(ctx: SeedContext, distance: float) -> tuple[LanePos, bool] | None:
+    """The lane position `distance` m ahead of the ego's start along its path (its start road, then the
+    non-junction roads of its route, on the lane the ego uses there; offset 0) and True; a path shorter than that
+    gives halfway along its last piece and False. None without a map or an ego start, or where no lane is."""
     m = ctx.map
     ego = ctx.starts.get("ego")
     if m is None or ego is None or not m.has_road(ego.road):
         return None
-    remaining = uniform(rng, *cfg["ahead"])
+    remaining = distance
     # Path pieces: (road, lane, s_from, s_to) in driving direction.
     pieces: list[tuple[str, int, float, float]] = []
     sign = m.direction(ego.road, ego.lane)
@@ -278,14 +292,11 @@ def oim_position(ctx: SeedContext, obstacle_width: float, rng: np.random.Generat
             s = s0 + np.sign(s1 - s0) * remaining
             if m.lane_type(road, lane, s) is None:
                 return None
-            width = m.lane_width(road, lane, s)
-            half = max(0.0, (width - obstacle_width) / 2.0)
-            return LanePos(road=road, lane=lane, s=float(s), offset=uniform(rng, -half, half))
+            return LanePos(road=road, lane=lane, s=float(s), offset=0.0), True
         remaining -= span
-    # The path is shorter than the draw: put the obstacle halfway along the last piece.
+    # The path is shorter than the draw: halfway along the last piece.
     road, lane, s0, s1 = pieces[-1]
-    s = (s0 + s1) / 2.0
-    return LanePos(road=road, lane=lane, s=float(s), offset=0.0)
+    return LanePos(road=road, lane=lane, s=float((s0 + s1) / 2.0), offset=0.0), False
 
 
 def obstacle_fragments(name: str, pos: LanePos, dims: tuple[float, float, float], cfg: dict[str, Any],

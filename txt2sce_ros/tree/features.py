@@ -12,6 +12,7 @@ from typing import Any
 from lxml import etree
 
 from .blocks import BlockKind
+from .dynamics import initial_speed
 from ..seed.context import SeedContext, lane_pos
 from .environment import primary_signal, signal_block, weather_type
 from .physical import entity_element
@@ -164,9 +165,19 @@ def all_features(kind: BlockKind, elements: list[etree._Element | None], origina
     if kind is BlockKind.WEATHER:
         return weather_features(elements[0], cfg, n)
     if kind is BlockKind.EGO:
-        return {"shift": _shift_bin(elements[0], "ego", ctx, cfg, n)}
+        speed = initial_speed(elements[0])
+        return {"shift": _shift_bin(elements[0], "ego", ctx, cfg, n),
+                "start": "standing" if speed is not None and speed <= 0.0 else "moving"}
     if kind is BlockKind.NPC:
         return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
+    if kind is BlockKind.NEW_PARTY:
+        if elements[0] is None:
+            return {"category": "none", "start": "none", "events": ""}
+        feats = npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
+        story = elements[2] if len(elements) > 2 else None
+        feats["events"] = "".join(split_event_name(e.get("name", ""))[1] for e in story.iter("Event")) \
+            if story is not None else ""
+        return feats
     if kind is BlockKind.SIGNAL:
         return signal_features(elements, ctx.ego_signals)
     if kind is BlockKind.EVENT:

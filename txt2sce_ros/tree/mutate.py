@@ -3,11 +3,12 @@
 | block | operators | versions (paper defaults) |
 |---|---|---|
 | weather | WM | enumerate every weather type, parameters drawn per type |
-| ego | WPM (initial location, context-aware) | `mutations_per_block` |
+| ego | WPM (initial location, context-aware); TSM-start (standing start) | `mutations_per_block`, + 1 |
 | npc | NCM (+ DM, VPM follow the category) + WPM initial location; WPM-near (close to the AV) | enumerate every category, + 1 |
-| signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate green / yellow / red |
+| signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate yellow / red / green |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
+| new_party | NCM-new: a cyclist ahead, a lead that brakes, a car close behind, on the AV's path (parties.py) | enumerate every role the road allows |
 | new_obstacle | OIM (inserted on the AV's path, random dimensions) | `mutations_per_block` |
 
 Each block's versions draw from their own Generator seeded by (RNG seed, seed-file key, block index), so the
@@ -25,9 +26,10 @@ from ..errors import InputError
 from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
 from ..seed.signal_story import time_limit_of
-from .dynamics import dtm, tsm
+from .dynamics import dtm, standing_start, tsm
 from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
+from .parties import ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
 from .trajectory import keep_clear_of_queue, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
@@ -75,9 +77,19 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 wm(els[0], wtype, rng, cfg["environment"], rec)
                 emit(els, "WM", rec)
         elif block.kind is BlockKind.EGO:
+            # first, the AV standing at its start (a moving seed's start speed set to 0): the state in which start
+            # refusals and wheel spin on a slippery road can show at all (first, so that a small node budget,
+            # which spreads versions over parents along diagonals, still pairs it with other conditions)
+            els, rec = _parse(block.fragments), Recorder()
+            if standing_start(els[0], rec):
+                emit(els, "TSM-start", rec)
+            init = cfg["trajectory"]["init_location"]
+            # a party the new-party slot stands `near_gap` m behind the seed's AV (close_behind) must still be clear
+            # of a start moved back: at most near_gap - 0.5 m back then
+            back = float(init["near_gap"]) - 0.5 if int(cfg["tree"].get("new_party_slots", 0)) else None
             for _ in range(m):
                 els, rec = _parse(block.fragments), Recorder()
-                shift_init_location(els[0], "ego", rng, cfg["trajectory"]["init_location"], ctx, rec)
+                shift_init_location(els[0], "ego", rng, init, ctx, rec, max_back=back)
                 emit(els, "WPM-init", rec)
         elif block.kind is BlockKind.NPC:
             for cat in _choices("npc", list(cfg["physical"]["categories"]), cfg, rng):
@@ -145,6 +157,12 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                     rec.set(tele, "offset", pos.offset, digits=3)
                     ops += "+OIM"
                 emit(els, ops, rec)
+        elif block.kind is BlockKind.NEW_PARTY:
+            for role in _choices("new_party", list(ROLES), cfg, rng):
+                rec = Recorder()
+                made = new_party(role, block.key, ctx, rng, cfg, rec)
+                if made is not None:
+                    emit(list(made), f"NCM-new:{role}", rec)
         elif block.kind is BlockKind.NEW_OBSTACLE:
             spec = cfg["environment"]["obstacle"]
             for _ in range(m):

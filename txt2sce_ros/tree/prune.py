@@ -80,3 +80,28 @@ def _round_robin_rank(vectors: Sequence[Hashable]):
         for r, pos in enumerate(group):
             rank[pos] = (r, ci)
     return rank.__getitem__
+
+
+def diagonal(keep: Sequence[int], variants: int, limit: int, *, cover: bool = False) -> list[int]:
+    """At most `limit` of the candidate indices `keep` of one layer (candidate i = parent i // variants, version
+    i % variants), chosen along diagonals: in round r every parent p gets version (p + r) mod variants, so a
+    small budget spreads the layer's versions over different parents (a standing start under a snowy road and
+    another under a dry one) instead of giving every version to the first parent and none to the others.
+    `cover` (enumerated blocks): first one candidate per version value, version j under parent j mod parents
+    where it survived pruning. Sorted."""
+    if len(keep) <= limit:
+        return list(keep)
+    parents = max(1, (max(keep) // variants) + 1)
+    kept = set(keep)
+    chosen: list[int] = []
+    if cover:
+        for j in range(variants):
+            here = [i for i in keep if i % variants == j]
+            want = (j % parents) * variants + j
+            if here and len(chosen) < limit:
+                chosen.append(want if want in kept else here[0])
+    taken = set(chosen)
+    order = sorted((i for i in keep if i not in taken),
+                   key=lambda i: (((i % variants) - (i // variants)) % variants, i // variants))
+    chosen += order[:max(0, limit - len(chosen))]
+    return sorted(chosen)

@@ -115,17 +115,19 @@ def _clear_of_neighbours(ctx: SeedContext, entity: str, start: LanePos, new_s: f
 
 
 def shift_init_location(private: etree._Element, entity: str, rng: np.random.Generator, cfg: dict[str, Any],
-                        ctx: SeedContext, rec: Recorder, *, tries: int = 20) -> float:
+                        ctx: SeedContext, rec: Recorder, *, tries: int = 20, max_back: float | None = None) -> float:
     """Context-aware initial location: Gaussian shift of the start along its lane, retried until `feasible_s`
-    holds. The ego's route starts where the ego does, so its first waypoint moves with it. Returns the shift (m);
-    0 when no feasible shift was found or the start is not a LanePosition."""
+    holds. The ego's route starts where the ego does, so its first waypoint moves with it. `max_back`: the most
+    the start may move against its lane's driving direction (m). Returns the shift (m); 0 when no feasible shift
+    was found or the start is not a LanePosition."""
     tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
     if tele is None:
         return 0.0
     start = lane_pos(tele)
+    sign = ctx.map.direction(start.road, start.lane) if ctx.map is not None and ctx.map.has_road(start.road) else 1
     for _ in range(tries):
         shift = gaussian(rng, 0.0, cfg["sigma"], -cfg["max_shift"], cfg["max_shift"])
-        if abs(shift) < 0.05:
+        if abs(shift) < 0.05 or (max_back is not None and sign * shift < -max_back):
             continue
         new_s = start.s + shift
         if feasible_s(ctx, entity, start, new_s, cfg["margin"], cfg["min_gap"]):

@@ -1,0 +1,153 @@
+"""NCM's reach into seeds that lack a party: a new party inserted on the AV's path (the `new_party` slot).
+
+A seed holds the parties its report names, so a report about a parked car gives no cyclist, no lead that brakes
+and nobody close to the AV at its start; mutating the parties it has cannot bring those in. The new-party slot
+(empty in the seed: a ScenarioObject, its Init Private and a Story) takes one of a few parties placed where the
+road model says they conflict with the AV's path:
+
+| role | party | where | what it does | trigger conditions it brings |
+|---|---|---|---|---|
+| `cyclist_ahead` | bicycle | `ahead` m ahead in the AV's lane (along its route) | rides on at its category's speed | a cyclist on the AV's path (`category:bicycle`, R5/same) |
+| `lead_brakes` | car | `ahead` m ahead in the AV's lane | drives at the AV's speed, brakes to a stop at `brake_at` s | a lead that brakes (`events:h`, R5+h) |
+| `close_behind` | car | `near_gap` m behind the AV's rear bumper, same lane | stands | a party close to the AV at the start (`near_start:yes`) |
+
+Names follow docs/seed_format.md (`npc<k>` with the first free k, events `npc<k>_e1_stop`), so the analysis reads
+the new party like a reported one (category, derived position, events).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from lxml import etree
+
+from ..seed.context import LanePos, SeedContext
+from .dynamics import initial_speed
+from .environment import ahead_on_path
+from .physical import ncm
+from .trajectory import feasible_s, footprint_extent
+from .values import Recorder, uniform
+
+ROLES = ("cyclist_ahead", "lead_brakes", "close_behind")
+
+
+def free_party_name(taken: set[str | None]) -> str:
+    """The first `npc<k>` no entity uses yet (then marked taken)."""
+    k = 1
+    while f"npc{k}" in taken:
+        k += 1
+    taken.add(f"npc{k}")
+    return f"npc{k}"
+
+
+def _sub(parent: etree._Element, tag: str, **attrs: str) -> etree._Element:
+    el = etree.SubElement(parent, tag)
+    for k, v in attrs.items():
+        el.set(k, v)
+    return el
+
+
+def _behind_ego(ctx: SeedContext, party_front: float, gap: float, min_gap: float) -> LanePos | None:
+    """The party's reference-point position in the ego's lane with `gap` m between its front bumper and the ego's
+    rear one, when that is on the ego's start road and clear of every other start (`feasible_s`)."""
+    ego = ctx.starts.get("ego")
+    if ego is None or ctx.map is None or not ctx.map.has_road(ego.road):
+        return None
+    sign = ctx.map.direction(ego.road, ego.lane)
+    e_rear, _ = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))
+    s = ego.s + sign * (e_rear - gap - party_front)
+    # feasible_s checks a move of a start: as a move of the ego's own start it keeps the new place on the road, on
+    # the lane's type, clear of parties beside and never past another party in the lane
+    return LanePos(ego.road, ego.lane, float(s)) if feasible_s(ctx, "ego", ego, s, 0.0, min_gap) else None
+
+
+def _lane_clear_ahead(ctx: SeedContext, pos: LanePos, length: float) -> bool:
+    """No entity of the seed starts in `pos`'s lane within `length` m ahead of it: a scripted party does not steer
+    round what stands in its lane, so a new one placed behind an obstacle would run into it."""
+    if ctx.map is None:
+        return True
+    sign = ctx.map.direction(pos.road, pos.lane)
+    return not any((p.road, p.lane) == (pos.road, pos.lane) and 0.0 <= sign * (p.s - pos.s) <= length
+                   for name, p in ctx.starts.items() if name != "ego")
+
+
+def _speed_action(speed: float, dynamics: tuple[str, str, float]) -> etree._Element:
+    shape, dim, value = dynamics
+    sa = etree.Element("SpeedAction")
+    _sub(sa, "SpeedActionDynamics", dynamicsShape=shape, value=f"{value:.3f}", dynamicsDimension=dim)
+    _sub(_sub(sa, "SpeedActionTarget"), "AbsoluteTargetSpeed", value=f"{speed:.3f}")
+    return sa
+
+
+def _private(name: str, pos: LanePos, speed: float) -> etree._Element:
+    priv = etree.Element("Private", entityRef=name)
+    tp = _sub(_sub(_sub(priv, "PrivateAction"), "TeleportAction"), "Position")
+    _sub(tp, "LanePosition", roadId=pos.road, laneId=str(pos.lane), offset="0", s=f"{pos.s:.3f}")
+    _sub(_sub(priv, "PrivateAction"), "LongitudinalAction").append(_speed_action(speed, ("step", "time", 0.0)))
+    return priv
+
+
+def _stop_story(name: str, at: float, speed: float, decel: float) -> etree._Element:
+    """`<name>_story`: one event `<name>_e1_stop` braking to 0 at `decel` from simulation time `at`."""
+    story = etree.Element("Story", name=f"{name}_story")
+    act = _sub(story, "Act", name=f"{name}_act")
+    mg = _sub(act, "ManeuverGroup", name=f"{name}_mg", maximumExecutionCount="1")
+    _sub(_sub(mg, "Actors", selectTriggeringEntities="false"), "EntityRef", entityRef=name)
+    man = _sub(mg, "Maneuver", name=f"{name}_maneuver")
+    ev = _sub(man, "Event", name=f"{name}_e1_stop", priority="parallel", maximumExecutionCount="1")
+    action = _sub(ev, "Action", name=f"{name}_e1_stop_action")
+    _sub(_sub(action, "PrivateAction"), "LongitudinalAction").append(
+        _speed_action(0.0, ("linear", "time", max(speed / decel, 0.1))))
+    for parent, cname, value in ((ev, f"{name}_e1_stop_start", at), (act, f"{name}_act_start", 0.0)):
+        cond = _sub(_sub(_sub(parent, "StartTrigger"), "ConditionGroup"), "Condition", name=cname, delay="0",
+                    conditionEdge="none")
+        _sub(_sub(cond, "ByValueCondition"), "SimulationTimeCondition", value=f"{value:g}", rule="greaterThan")
+    return story
+
+
+def new_party(role: str, name: str, ctx: SeedContext, rng: np.random.Generator, cfg: dict[str, Any],
+              rec: Recorder) -> tuple[etree._Element, etree._Element, etree._Element | None] | None:
+    """(ScenarioObject, Init Private, Story or None) of the party `role` names, or None where the road gives no
+    place for it (no map, no ego start, the AV's path too short, no room behind the AV)."""
+    spec = cfg["new_party"]
+    init = cfg["trajectory"]["init_location"]
+    ego_priv = ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")
+    ego_speed = initial_speed(ego_priv) or 0.0
+    cats = cfg["physical"]["categories"]
+    category = "bicycle" if role == "cyclist_ahead" else "car"
+    obj = etree.Element("ScenarioObject", name=name)
+    ncm(obj, category, rng, cfg, rec)
+    story = None
+    if role in ("cyclist_ahead", "lead_brakes"):
+        found = ahead_on_path(ctx, uniform(rng, *spec["ahead"]))
+        if found is None or not found[1]:
+            return None
+        pos = found[0]
+        ego = ctx.starts["ego"]
+        if pos.road == ego.road and not (feasible_s(ctx, "ego", ego, pos.s, 0.0, init["min_gap"])
+                                         and _lane_clear_ahead(ctx, pos, float(spec["clear_ahead"]))):
+            return None                                    # a party or obstacle of the seed is in the way
+        if role == "cyclist_ahead":
+            speed = float(cats[category]["speed"])
+        else:
+            speed = ego_speed if ego_speed > 0 else float(cats[category]["speed"])
+            at = uniform(rng, *spec["brake_at"])
+            story = _stop_story(name, at, speed, float(spec["brake_decel"]))
+            rec.note(f"Story[@name='{name}_story']", None, f"{name}_e1_stop at t > {at:.2f} s")
+    elif role == "close_behind":
+        pos = _behind_ego(ctx, footprint_extent(obj)[1], float(init["near_gap"]), float(init["min_gap"]))
+        if pos is None:
+            return None
+        speed = 0.0
+    else:
+        raise ValueError(f"unknown new-party role {role!r}")
+    priv = _private(name, pos, speed)
+    rec.check_tree(obj)
+    rec.check_tree(priv)
+    if story is not None:
+        rec.check_tree(story)
+    rec.note(f"Entities/ScenarioObject[@name='{name}']", None, f"{category} ({role})")
+    rec.note(f"Init/Private[@entityRef='{name}']/LanePosition", None,
+             f"road {pos.road} lane {pos.lane} s {pos.s:.2f}, {speed:.2f} m/s")
+    return obj, priv, story
