@@ -119,8 +119,9 @@ def test_ncm_enumerates_categories_and_model_follows(cfg):
 
 def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
     d, block, vs, _ = _variants(JUNCTION, cfg, "signal_ctrl_4")
-    assert [v.features for v in vs] == [("signal", "green", "green/red/red"), ("signal", "yellow", "yellow/red/red"),
-                                        ("signal", "red", "red/green/green")]
+    # yellow first (config environment.signal_states): the state a one-node budget keeps
+    assert [v.features for v in vs] == [("signal", "yellow", "yellow/red/red"), ("signal", "red", "red/green/green"),
+                                        ("signal", "green", "green/red/red")]
     timing = signal_timing()
     expected = {  # (phase, duration, state of the primary signal 1, state of the conflicting signals 2 and 3)
         "green": [("tls_green", timing.hold, "green", "red")],
@@ -143,7 +144,7 @@ def test_tls_enumerates_states_and_conflicting_signals_follow(cfg):
         assert not any(e.tag == "TrafficSignalController" for part in parts for e in part.iter())
         assert _valid_with(d, block, v) == []
     # Even green rewrites the seed's cycle (green 20 s, then yellow, then red): green now holds for the run.
-    assert [c.new for c in vs[0].changes] == [f"tls_green:{timing.hold:g} (green)"]
+    assert [c.new for c in vs[2].changes] == [f"tls_green:{timing.hold:g} (green)"]
 
 
 def test_tls_states_hold_their_meaning_in_the_player(cfg):
