@@ -45,7 +45,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
-          r"into\s+the\s+(?:left|center|middle)\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
+          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
           r"(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
@@ -79,8 +79,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"intersection|crosswalk))"),
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
-    ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:to|speed))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
-          r"\bbrake\b|\bapplied\s+the\s+brakes?|\bhard\s+brak"),
+    ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
+          r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"

@@ -115,6 +115,10 @@ def normalise(text: str) -> str:
     for m in fre.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
         head = m.group(1)
         t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
+    # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.
+    one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
+    if one and _COMPANY_RE.search(t[max(0, one.start() - 60):one.start()]):
+        t = fre.sub(r"\b(?:vehicle|car|v)\s*#?\s*1\b(?!\s*\))", "the AV", t, flags=re.I)
     t = _PAREN_DEF.sub("", t)
     for rx in _EGO_RES:
         t = rx.sub(" EGO", t)

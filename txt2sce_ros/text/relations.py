@@ -245,14 +245,22 @@ _YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|t
                             re.I)
 
 
-def _on_exit_crosswalk(d: Doc, e: Entity) -> Cue | None:
+def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
     """A pedestrian or rider the turning AV meets at a junction is on the leg it turns onto (R4): said by "in the
-    crosswalk", or by the AV yielding to it."""
+    crosswalk", or by the AV yielding to it. For an AV going straight (`far_only`) only a crosswalk said to be
+    beyond the junction ("on the far side of the intersection") is on its exit leg."""
     if e.category not in ("pedestrian", "bicycle", "scooter"):
         return None
     for m in e.mentions:
         s = d.sents[m.sent]
         win = s[max(0, m.start - 40):min(len(s), m.end + 60)]
+        if far_only:
+            far = fre.search(r"\bcrosswalk\b[^.]{0,30}\b(?:far|other|opposite)\s+side\b|\bfar(?:-side)?\s+crosswalk\b",
+                             win, re.I)
+            if far:
+                a = d.offset(m.sent) + max(0, m.start - 40)
+                return Cue("junction", "exit leg", (a + far.start(), a + far.end()))
+            continue
         cw = fre.search(r"\bcrosswalk\b", win, re.I)
         if cw or _YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
             a = d.offset(m.sent) + max(0, m.start - 40)
@@ -266,7 +274,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
     pos, lane = first
     cues = gather(d, e)
-    if d.junction and ego_turning and pos in ("R3", "R1", "R5") and (exit_leg := _on_exit_crosswalk(d, e)):
+    if d.junction and pos in ("R3", "R1", "R5") and (exit_leg := _on_exit_crosswalk(d, e, far_only=not ego_turning)):
         return Placement("R4", None, "crossing on the AV's exit leg", (exit_leg,), tuple(cues) + (exit_leg,))
     passing_path = [c for c in cues if c.value == "opposite-lane"]
     overtakes = any(c.kind == "passing" or (c.kind == "along" and c.value == "behind") for c in cues)

@@ -18,7 +18,7 @@ _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards
 _T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
-                        r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?onto\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
+                        r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b", re.I)
 _PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)

@@ -90,7 +90,11 @@ def find_contact(d: Doc) -> None:
             continue
         for m in CONTACT.finditer(s):
             before = s[max(0, m.start() - 45):m.start()]
-            if NEGATION.search(before) or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
+            # Only a negation in the contact's own clause counts ("swerved to avoid the door and made contact" is a
+            # contact), and being unable to avoid it is none.
+            clause = fre.split(r"[,;]|\band\b|\bbut\b|\bthen\b|\bwhen\b", before)[-1]
+            if (NEGATION.search(clause) and not fre.search(r"\b(?:unable|could\s+not|couldn't|failed)\s+to\s+avoid\b",
+                                                           before, re.I)) or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
                                                     re.I):
                 continue
             others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
@@ -115,6 +119,9 @@ def find_contact(d: Doc) -> None:
                         break
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
+                    if any(x.entity == door and fre.search(r"\bavoid\w*\s+(?:\w+\s+){0,2}$", s[max(0, x.start - 30):x.start])
+                           for x in ments):
+                        continue  # "swerved to avoid the open door and made contact": the door was missed
                     if d.ents[door].first.sent == i or (owner == partner and fre.search(r"\bdoor", s[:m.start()])):
                         partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
             candidates.append((i, m.start(), partner))
