@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 81 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 91 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 

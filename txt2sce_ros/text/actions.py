@@ -26,6 +26,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)"),
+    ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
@@ -98,7 +99,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "O": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
-    "c": ("slow", "decelerat", "brak"), "A": ("straight",),
+    "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
@@ -111,7 +112,7 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
-                         r"yielding)\b|^\s*(?:stopped|parked|stationary|waiting)\b|\bwhile\s+(?:stopped|waiting|"
+                         r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b", re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
@@ -200,6 +201,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
             continue
         if _NEGATED.search(before):
             continue  # "did not immediately proceed"
+        if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
+                                            r"(?:that\s+(?:were|was|had)\s+(?:been\s+)?)?$", before, re.I):
+            continue  # "a line of vehicles stopped at a red light": a group's state, not the subject's
         if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
                 fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
             continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
@@ -221,6 +225,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
             who = who_for(b, ments, fallback, s)
         if who is None:
             continue
+        if code == "Y":
+            # "waiting to turn left ... began its turn": the turn it was said to wait for
+            side = fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", s[:b], re.I)
+            if not side:
+                continue
+            code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))
     # A state "was stopped" and the "stopped" inside it are one fact.
     dedup: list[Act] = []

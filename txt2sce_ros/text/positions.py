@@ -51,6 +51,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
+    if ego_turning and (ex := exit_street(d)) and _party_street(ctx) == ex and \
+            not fre.search(r"\b(?:turn\w*|onto)\b", ctx[:60], re.I):
+        return "R4", None, True  # on the street the AV turns onto, and not itself turning onto it
     # Before headings: the heading it is given may be the one it turned to ("onto westbound California").
     if cross and (side := side_named(ctx)):
         return ("R1" if side == "left" else "R3"), None, True  # "a vehicle on Leavenworth, to the right of EGO"
@@ -95,6 +98,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                          r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|"
                          r"bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
+    if lane_ctx and fre.search(r"\b(?:into|onto)\s+(?:the\s+)?$", scan[max(0, lane_ctx.start() - 12):lane_ctx.start()],
+                               re.I):
+        lane_ctx = None  # "stepped out ... into the left lane": where it went, not where it was
     if lane_ctx and not cross:
         text = lane_ctx.group(0)
         # A side named in the party's phrase ("a driveway on the left side of the street") beats the right-hand
@@ -160,16 +166,44 @@ _STREET = r"((?:[A-Z0-9][\w.'-]*\s+){1,3}?)(?:Street|St\b|Avenue|Ave\b|Road|Rd\b
 
 def av_street(d: Doc) -> str | None:
     """The street the AV travels on, from the first clause that puts it on one ("EGO was traveling westbound on
-    Vallejo Street"); the name's words without the suffix, lower-cased."""
+    Vallejo Street", a turning AV's "from Harrison Street"); the name's words without the suffix, lower-cased."""
+    turn = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,40}}?\bfrom\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
+                      d.text)
+    if turn and _turn_is_the_interaction(d, turn.start()):
+        return turn.group(1).strip().lower()
     m = fre.search(rf"\bEGO\b[^.]{{0,80}}?\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
     return m.group(1).strip().lower() if m else None
 
 
+def _party_street(ctx: str) -> str | None:
+    m = fre.search(rf"(?<!\bonto\s)\b(?:on|along|of)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", ctx)
+    return m.group(1).strip().lower() if m else None
+
+
+def exit_street(d: Doc) -> str | None:
+    """The street a turning AV turns onto ("turning right from Harrison Street onto 8th Street")."""
+    m = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,60}}?\bonto\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
+                   d.text)
+    return m.group(1).strip().lower() if m and _turn_is_the_interaction(d, m.start()) else None
+
+
+def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
+    """A turn told in a sentence before any other party appears was finished before the interaction began (the
+    AV is then on the street it turned onto)."""
+    if fre.search(r"\bafter\s+(?:\w+\s+){0,2}$", d.text[max(0, offset - 30):offset], re.I):
+        return False  # "After EGO made a right turn from Pleasant Street, ...": done before
+    sent = next((i for i in range(len(d.sents) - 1, -1, -1) if d.offset(i) <= offset), 0)
+    firsts = [m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary]
+    return bool(firsts) and sent >= min(firsts)
+
+
 def _on_other_street(d: Doc, ctx: str) -> bool:
-    """Is the party put on a street other than the AV's ("a vehicle on Leavenworth Street ...")?"""
-    street = av_street(d)
-    m = fre.search(rf"(?<!\bonto\s)\b(?:on|along)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", ctx)
-    return bool(street and m and m.group(1).strip().lower() != street)
+    """Is the party put on a street other than the AV's ("a vehicle on Leavenworth Street ...", "on the cross
+    street")?"""
+    if fre.search(r"\b(?:on|from)\s+the\s+cross(?:ing)?\s+street\b|\bcross\s+street's\b", ctx, re.I):
+        return True
+    street, theirs = av_street(d), _party_street(ctx)
+    return bool(street and theirs and theirs != street and theirs != exit_street(d))
 
 
 def _onto_av_street(d: Doc, ctx: str) -> bool:

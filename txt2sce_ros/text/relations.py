@@ -199,6 +199,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue  # "cut in front of EGO": where it went, not where it was
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
+            if fre.match(r"\s+(?:the|a|an)\s+(?!EGO)", win[m.end():]):
+                continue  # "changed lanes to pass the bus": the AV passing something, not the party passing it
             cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
         for m in _ONCOMING.finditer(win):
             path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane", win[m.end():], re.I)

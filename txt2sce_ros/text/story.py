@@ -276,6 +276,7 @@ def context(d: Doc, e: Entity) -> str:
 
 
 TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
+                         r"\bchang(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+)?(?:left|right)|"
                          r"\b(?:left|right)\s+lane"
                          r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
                          r"scene", re.I)
@@ -296,6 +297,9 @@ def heading(d: Doc, who: int) -> int | None:
         for m in d.ments[i]:
             ent = -1 if m.kind in ("ego", "egod") else m.entity
             if ent == who:
+                said = fre.search(r"\b(north|south|east|west)bound\b", m.mods, re.I)
+                if said:  # "a northbound sedan"
+                    return heading_of(said.group(0))
                 # Read up to the next party named in the sentence: its heading is its own.
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 window = s[m.end:min([m.end + 120, *nxt])]
