@@ -49,13 +49,15 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
           r"(?:into\s+)?the\s+(?:oncoming|"
-          r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|\bswerv(?:ed|ing)\s+"
+          r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
+          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
-          r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
+          r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
+          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
           r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
@@ -85,7 +87,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
-          r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|riding|rode|cruising|"
+          r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
+          r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
           r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
 )
