@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import struct
 import time
+from collections import Counter
 from pathlib import Path
 from typing import Any
 
@@ -197,6 +198,7 @@ class BagRecorder:
         last = self._last_ns
         first = None
         n = 0
+        written: list[int] = []                 # channel of every message, counted once at the end
         for received_ns, items in steps:
             t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
             if first is None:
@@ -205,18 +207,19 @@ class BagRecorder:
                 cid = cids.get(topic)
                 if cid is None:
                     cid = cids[topic] = self._connection(topic, None).id
-                rec = pack(0x05, 22 + len(data), cid, 0, t, t)
+                size = len(data)
                 index[cid].append((t, pos))
-                pos += len(rec) + len(data)
-                parts.append(rec)
-                parts.append(data)
-                counts[cid] += 1
-                stats[cid] += 1
+                pos += 31 + size                # the 31-byte record header, then the message
+                parts += (pack(0x05, 22 + size, cid, 0, t, t), data)
+                written.append(cid)
                 t += 1
             n += len(items)
             last = t - 1
         if first is None or not n:
             return
+        for cid, k in Counter(written).items():
+            counts[cid] += k
+            stats[cid] += k
         bio.write(b"".join(parts))
         if first < storage.message_start_time:
             storage.message_start_time = first
@@ -298,6 +301,8 @@ def _close_writer(w: Writer) -> None:
         "ros_distro": "rosbags",
     }
     dump = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+    if storage.chunk.bio.tell():
+        _close_chunk(storage)                 # the last chunk, as storage.close would close it (same bytes)
     storage.close(w.version, yaml.dump(info, Dumper=dump, default_flow_style=False, sort_keys=True).strip())
     w.storage = None
     tmp = w.metapath.with_suffix(".yaml.tmp")
