@@ -228,6 +228,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
             who = who_for(b, ments, fallback, s)
         if who is None:
             continue
+        if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
+            code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", s[:b], re.I)

@@ -73,9 +73,12 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
 # AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
+# "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
 _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
-                          r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?",
+                          r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
+                          r"\b(?:in|from|into|of)\s+the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane\b",
                           re.I)
+_NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
                          r"(?:(?:back\s+|right\s+|directly\s+|suddenly\s+|in\s+)?)$", re.I)
@@ -139,7 +142,9 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
 
 
 def _lane_rank(m: re.Match[str]) -> float:
-    mod, side, from_side = (g.lower() if g else "" for g in m.groups())
+    mod, side, from_side, number = (g.lower() if g else "" for g in m.groups())
+    if number:
+        return float(_NUMBERS.get(number) or int(number)) - 1.0
     if side in ("middle", "center", "centre"):
         return 4.5
     if from_side:  # "the second lane from the left"
