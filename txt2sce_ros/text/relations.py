@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
-from .story import TURN_WORDS, Doc, context, ego_contact_part
+from .story import TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
@@ -47,7 +47,7 @@ _LANE_CUES = compile_gated(
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
     r"\bto\s+its\s+(left|right)\b|"
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
-    r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder)\b", re.I)
+    r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
 _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
@@ -56,7 +56,7 @@ _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enter|toward|towards|cut
 _SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+"
                            r"(?:the\s+(?:first\s+|second\s+)?)?EGO\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
-                           r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO)\b", re.I)
+                           r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO|in\s+the\s+travel\s+lane)\b", re.I)
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
@@ -118,6 +118,8 @@ def _side(word: str | None) -> str | None:
         return "right"
     if w.startswith(("bike", "bicycle", "sidewalk", "parking", "curb", "shoulder")):
         return "right"  # right-hand traffic: bike lanes, curbs and sidewalks lie to the right
+    if w.startswith("median"):
+        return "left"  # and the median to the left
     return None
 
 
@@ -129,8 +131,7 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
         if m.sent in d.summary and any(x.sent not in d.summary for x in e.mentions):
             continue
         s = d.sents[m.sent]
-        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and x.kind in ("party", "obstacle")
-               and x.entity != e.idx]
+        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x) and x.entity != e.idx]
         end = min(nxt) if nxt else len(s)
         # The words just before the name belong to it only within its clause ("As EGO proceeded in the far right
         # lane, an SUV ..." places the AV, not the SUV).

@@ -259,6 +259,13 @@ def attach_towed(d: Doc) -> None:
 _FURNITURE = frozenset({"barrier", "pole"})
 
 
+def ends_phrase(d: Doc, x: Mention) -> bool:
+    """Does mention `x` end what the text says of the party named before it? The next party or object does; road
+    furniture ("stepped off the curb from the right", "standing on the median") is a landmark of that phrase."""
+    return x.kind == "party" or (x.kind == "obstacle" and not (
+        0 <= x.entity < len(d.ents) and d.ents[x.entity].category in _FURNITURE))
+
+
 def context(d: Doc, e: Entity) -> str:
     """Text around an entity's mentions before the contact: what the narrative says of its place."""
     parts = []
@@ -266,10 +273,7 @@ def context(d: Doc, e: Entity) -> str:
         if not before_contact(d, m.sent, m.start) and m.sent != d.contact_sent:
             continue
         s = d.sents[m.sent]
-        # The next party or object named ends the window; road furniture ("stepped off the curb from the right")
-        # is a landmark of the party's own phrase, not another subject.
-        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and (x.kind == "party" or (
-            x.kind == "obstacle" and not (0 <= x.entity < len(d.ents) and d.ents[x.entity].category in _FURNITURE)))]
+        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x)]
         end = min([m.end + 110, *nxt]) if nxt else m.end + 110
         parts.append(f"{m.mods} {m.head} {s[m.end:end]}")
     return " | ".join(parts)
