@@ -2,11 +2,17 @@
 
 from __future__ import annotations
 
+import bisect
 import re
+from collections.abc import Callable
+from typing import TypeVar
 
 from . import fastre as fre
 from .mentions import Entity
 from .story import TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
+
+T = TypeVar("T")
+
 
 def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
               ego_actions: str = "", behind_av: frozenset[str] = frozenset()) -> tuple[str, str | None, bool]:
@@ -164,7 +170,22 @@ _STREET = r"((?:[A-Z0-9][\w.'-]*\s+){1,3}?)(?:Street|St\b|Avenue|Ave\b|Road|Rd\b
           r"Lane\b|Parkway|Highway|Hwy|Expressway|Place|Court|Terrace)"
 
 
+def _once(key: str, d: Doc, read: Callable[[Doc], T]) -> T:
+    """`read(d)` computed once per narrative: these scan the whole text, and are asked once per party."""
+    if key not in d.memo:
+        d.memo[key] = read(d)
+    return d.memo[key]  # type: ignore[return-value]
+
+
 def av_street(d: Doc) -> str | None:
+    return _once("av_street", d, _read_av_street)
+
+
+def exit_street(d: Doc) -> str | None:
+    return _once("exit_street", d, _read_exit_street)
+
+
+def _read_av_street(d: Doc) -> str | None:
     """The street the AV travels on, from the first clause that puts it on one ("EGO was traveling westbound on
     Vallejo Street", a turning AV's "from Harrison Street"); the name's words without the suffix, lower-cased."""
     turn = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,40}}?\bfrom\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
@@ -180,7 +201,7 @@ def _party_street(ctx: str) -> str | None:
     return m.group(1).strip().lower() if m else None
 
 
-def exit_street(d: Doc) -> str | None:
+def _read_exit_street(d: Doc) -> str | None:
     """The street a turning AV turns onto ("turning right from Harrison Street onto 8th Street")."""
     m = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,60}}?\bonto\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
                    d.text)
@@ -192,9 +213,10 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
     AV is then on the street it turned onto)."""
     if fre.search(r"\bafter\s+(?:\w+\s+){0,2}$", d.text[max(0, offset - 30):offset], re.I):
         return False  # "After EGO made a right turn from Pleasant Street, ...": done before
-    sent = next((i for i in range(len(d.sents) - 1, -1, -1) if d.offset(i) <= offset), 0)
-    firsts = [m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary]
-    return bool(firsts) and sent >= min(firsts)
+    sent = max(0, bisect.bisect_right(d.starts, offset) - 1) if d.starts else 0
+    first = _once("first_party_sentence", d, lambda d: min(
+        (m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary), default=None))
+    return first is not None and sent >= first
 
 
 def _on_other_street(d: Doc, ctx: str) -> bool:

@@ -39,14 +39,20 @@ class OffsetMap:
             else:
                 self._map.append((orig[found][1], orig[found][2]))
                 j = found + 1
-        # Unaligned words (EGO) take the original text between their aligned neighbours.
+        # Unaligned words (EGO) take the original text between their aligned neighbours; the next aligned start of
+        # every word is found in one backward pass (a forward search per EGO was quadratic in long texts).
+        next_start = [self._len] * len(self._map)
+        upcoming = self._len
+        for i in range(len(self._map) - 1, -1, -1):
+            next_start[i] = upcoming
+            if self._map[i] is not None:
+                upcoming = self._map[i][0]  # type: ignore[index]
         prev_end = 0
         for i, sp in enumerate(self._map):
             if sp is not None:
                 prev_end = sp[1]
                 continue
-            nxt = next((s for s in self._map[i + 1:] if s is not None), None)
-            end = nxt[0] if nxt else self._len
+            end = next_start[i]
             start = prev_end
             while start < end and not original[start].isalnum():
                 start += 1
