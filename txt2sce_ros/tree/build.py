@@ -115,11 +115,7 @@ def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, A
     covers, so a seed is chosen for what its tree can test, not only for what its report held."""
     cfg = cfg or tree_config()
     seed_path = Path(seed_path)
-    data, root, ctx = _read_seed(seed_path)
-    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
-                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
-    key = seed_key(seed_path.name)
+    data, root, ctx, dis, key = _seed_blocks(seed_path, cfg)
     out: set[str] = set()
     for b in dis.blocks:
         for v in block_variants(b, ctx, cfg, seed=seed, seed_key=key):
@@ -288,16 +284,21 @@ class TreeEstimate:
     bytes: int
 
 
+def _seed_blocks(seed_path: Path, cfg: dict[str, Any]) -> tuple[Any, etree._Element, Any, Any, int]:
+    """The seed read and disassembled as the tree's layers see it: (data, root, context, disassembly, seed key)."""
+    data, root, ctx = _read_seed(seed_path)
+    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
+                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
+    return data, root, ctx, dis, seed_key(seed_path.name)
+
+
 def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] | None = None) -> TreeEstimate:
     """Run the layer selection of `build_tree` (same variants, pruning, budget, RNG) without writing anything;
     the size is the seed's own size per node plus a measured allowance for the manifest and the graph exports."""
     cfg = cfg or tree_config()
     seed_path = Path(seed_path)
-    data, root, ctx = _read_seed(seed_path)
-    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
-                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
-    key = seed_key(seed_path.name)
+    data, root, ctx, dis, key = _seed_blocks(seed_path, cfg)
     variants = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
     used = [i for i, v in enumerate(variants) if v]
     share = float(cfg["tree"]["prune_share"])

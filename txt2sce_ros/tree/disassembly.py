@@ -29,7 +29,7 @@ from lxml import etree
 from ..errors import InputError
 from ..seed.signal_story import is_signal_init, is_signal_story
 from .blocks import Block, BlockKind, Disassembly, Template
-from .parties import free_party_name
+from .parties import free_name
 from .xml import parse_bytes, to_text
 
 _MARK = "@txt2sce-slot:"
@@ -128,7 +128,7 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             last_priv = _last_element(actions)
             s_obj, _ = cutter.empty_after(entities, last_obj)
             s_priv, _ = cutter.empty_after(actions, last_priv)
-            cut[BlockKind.NEW_OBSTACLE].append((_free_obstacle_name(taken), (s_obj, s_priv)))
+            cut[BlockKind.NEW_OBSTACLE].append((free_name("obs", taken), (s_obj, s_priv)))
 
     if BlockKind.NEW_PARTY in wanted:
         storyboard = root.find("Storyboard")
@@ -136,7 +136,7 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             s_obj, _ = cutter.empty_after(entities, _last_element(entities))
             s_priv, _ = cutter.empty_after(actions, _last_element(actions))
             s_story, _ = cutter.empty_after(storyboard, _last_story(storyboard))
-            cut[BlockKind.NEW_PARTY].append((free_party_name(taken), (s_obj, s_priv, s_story)))
+            cut[BlockKind.NEW_PARTY].append((free_name("npc", taken), (s_obj, s_priv, s_story)))
 
     text = etree.tostring(root, encoding="unicode")
     pieces: list[str] = []
@@ -172,10 +172,3 @@ def _last_element(parent: etree._Element) -> etree._Element | None:
     return kids[-1] if kids else None
 
 
-def _free_obstacle_name(taken: set[str | None]) -> str:
-    """The first `obs<n>` name no entity uses yet (then marked taken), so inserted obstacles never clash."""
-    n = 1
-    while f"obs{n}" in taken:
-        n += 1
-    taken.add(f"obs{n}")
-    return f"obs{n}"

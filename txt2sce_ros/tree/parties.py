@@ -32,13 +32,13 @@ from .values import Recorder, uniform
 ROLES = ("cyclist_ahead", "lead_brakes", "close_behind")
 
 
-def free_party_name(taken: set[str | None]) -> str:
-    """The first `npc<k>` no entity uses yet (then marked taken)."""
+def free_name(prefix: str, taken: set[str | None]) -> str:
+    """The first `<prefix><k>` no entity uses yet (then marked taken), so inserted entities never clash."""
     k = 1
-    while f"npc{k}" in taken:
+    while f"{prefix}{k}" in taken:
         k += 1
-    taken.add(f"npc{k}")
-    return f"npc{k}"
+    taken.add(f"{prefix}{k}")
+    return f"{prefix}{k}"
 
 
 def _sub(parent: etree._Element, tag: str, **attrs: str) -> etree._Element:
