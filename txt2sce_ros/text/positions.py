@@ -188,10 +188,9 @@ def exit_street(d: Doc) -> str | None:
 def _read_av_street(d: Doc) -> str | None:
     """The street the AV travels on, from the first clause that puts it on one ("EGO was traveling westbound on
     Vallejo Street", a turning AV's "from Harrison Street"); the name's words without the suffix, lower-cased."""
-    turn = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,40}}?\bfrom\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
-                      d.text)
-    if turn and _turn_is_the_interaction(d, turn.start()):
-        return turn.group(1).strip().lower()
+    turned_from = _turn_street(d, "from", 40)
+    if turned_from:
+        return turned_from
     m = fre.search(rf"\bEGO\b[^.]{{0,80}}?\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
     return m.group(1).strip().lower() if m else None
 
@@ -203,8 +202,14 @@ def _party_street(ctx: str) -> str | None:
 
 def _read_exit_street(d: Doc) -> str | None:
     """The street a turning AV turns onto ("turning right from Harrison Street onto 8th Street")."""
-    m = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,60}}?\bonto\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}",
-                   d.text)
+    return _turn_street(d, "onto", 60)
+
+
+def _turn_street(d: Doc, preposition: str, reach: int) -> str | None:
+    """The street named after `preposition` ("from" / "onto") in the AV's turn, when that turn is the
+    interaction; the name's words without the suffix, lower-cased."""
+    m = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,{reach}}}?\b{preposition}\s+(?:the\s+)?(?:\w+bound\s+)?"
+                   rf"{_STREET}", d.text)
     return m.group(1).strip().lower() if m and _turn_is_the_interaction(d, m.start()) else None
 
 

@@ -94,9 +94,9 @@ def find_contact(d: Doc) -> None:
             # Only a negation in the contact's own clause counts ("swerved to avoid the door and made contact" is a
             # contact), and being unable to avoid it is none.
             clause = fre.split(r"[,;]|\band\b|\bbut\b|\bthen\b|\bwhen\b", before)[-1]
-            if (NEGATION.search(clause) and not fre.search(r"\b(?:unable|could\s+not|couldn't|failed)\s+to\s+avoid\b",
-                                                           before, re.I)) or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s,
-                                                    re.I):
+            negated = bool(NEGATION.search(clause)) and not fre.search(
+                r"\b(?:unable|could\s+not|couldn't|failed)\s+to\s+avoid\b", before, re.I)
+            if negated or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s, re.I):
                 continue
             others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
             partner = None
@@ -120,8 +120,8 @@ def find_contact(d: Doc) -> None:
                         break
                 # A door that opened in the same sentence is what touched the AV.
                 for door, owner in d.doors.items():
-                    if any(x.entity == door and fre.search(r"\bavoid\w*\s+(?:\w+\s+){0,2}$", s[max(0, x.start - 30):x.start])
-                           for x in ments):
+                    if any(x.entity == door and fre.search(r"\bavoid\w*\s+(?:\w+\s+){0,2}$",
+                                                           s[max(0, x.start - 30):x.start]) for x in ments):
                         continue  # "swerved to avoid the open door and made contact": the door was missed
                     if d.ents[door].first.sent == i or (owner == partner and fre.search(r"\bdoor", s[:m.start()])):
                         partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
