@@ -25,7 +25,7 @@ from lxml import etree
 from ..seed.context import LanePos, SeedContext
 from .dynamics import initial_speed
 from .environment import ahead_on_path
-from .physical import ncm
+from .physical import _sub, ncm  # one element helper for the tree's XML
 from .trajectory import feasible_s, footprint_extent
 from .values import Recorder, uniform
 
@@ -39,13 +39,6 @@ def free_name(prefix: str, taken: set[str | None]) -> str:
         k += 1
     taken.add(f"{prefix}{k}")
     return f"{prefix}{k}"
-
-
-def _sub(parent: etree._Element, tag: str, **attrs: str) -> etree._Element:
-    el = etree.SubElement(parent, tag)
-    for k, v in attrs.items():
-        el.set(k, v)
-    return el
 
 
 def _behind_ego(ctx: SeedContext, party_front: float, gap: float, min_gap: float) -> LanePos | None:
