@@ -57,6 +57,8 @@ EGO_PATTERNS: tuple[str, ...] = (
     r"\ba\s+test\s+vehicle\b",
     r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)",
     r"\bthis\s+vehicle\b",
+    # NHTSA SGO wording: "the ADS-equipped vehicle", "the ADS vehicle" (ADS: automated driving system).
+    r"\b(?:the|an?|our)\s+ads(?:-equipped|-operated|-dedicated)?\s+(?:test\s+)?(?:vehicle|car)\b",
 )
 
 #: People who drive the AV: their manoeuvres are the AV's.

@@ -58,8 +58,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
     if ego_turning and (ex := exit_street(d)) and _party_street(ctx) == ex and \
-            not fre.search(r"\b(?:turn\w*|onto)\b", ctx[:60], re.I):
-        return "R4", None, True  # on the street the AV turns onto, and not itself turning onto it
+            not fre.search(r"\b(?:turn\w*|onto)\b", ctx[:60], re.I) and \
+            not fre.search(r"\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b", ctx, re.I):
+        # On the street the AV turns onto, and not itself turning onto it; one said to come from the AV's left or
+        # right is read in the AV's frame below (R1/R3).
+        return "R4", None, True
     # Before headings: the heading it is given may be the one it turned to ("onto westbound California").
     if cross and (side := side_named(ctx)):
         return ("R1" if side == "left" else "R3"), None, True  # "a vehicle on Leavenworth, to the right of EGO"
@@ -218,6 +221,9 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
     AV is then on the street it turned onto)."""
     if fre.search(r"\bafter\s+(?:\w+\s+){0,2}$", d.text[max(0, offset - 30):offset], re.I):
         return False  # "After EGO made a right turn from Pleasant Street, ...": done before
+    if fre.match(r"EGO\s+(?:was|is)\s+(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|turning|executing|"
+                 r"completing)\b", d.text[offset:offset + 60], re.I):
+        return True  # "EGO was making a right turn from Stockton Street": the turn is going on as the party comes
     sent = max(0, bisect.bisect_right(d.starts, offset) - 1) if d.starts else 0
     first = _once("first_party_sentence", d, lambda d: min(
         (m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary), default=None))

@@ -78,12 +78,16 @@ _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane\b",
                           re.I)
+_INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
                          r"(?:(?:back\s+|right\s+|directly\s+|suddenly\s+|in\s+)?)$", re.I)
 _ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                           r"\bon-?coming\b", re.I)
+# The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
+_PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0,2}?front\b|"
+                             r"\bfront\s+(?:\w+\s+){0,2}?of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
 
@@ -161,7 +165,7 @@ def av_lane_rank(d: Doc) -> float | None:
     """The AV's own lane on the 0 (leftmost) .. 9 (rightmost) scale, when a clause about the AV names it."""
     for i, s in enumerate(d.sents):
         for m in fre.finditer(r"\bEGO\b", s):
-            if fre.search(r"\b(?:of|behind|past|beside|than|with|by|to|from|passed|struck|hit|contacted)\s+$",
+            if fre.search(r"\b(?:of|behind|past|beside|between|than|with|by|to|from|passed|struck|hit|contacted)\s+$",
                           s[max(0, m.start() - 12):m.start()], re.I):
                 continue  # "a vehicle ahead of EGO in the left lane": the lane is the other party's
             clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", s[m.end():m.end() + 120])[0]
@@ -201,8 +205,9 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         for m in _BEHIND.finditer(win):
             cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
         for m in _AHEAD.finditer(win):
-            if _MOVED_TO.search(win[max(0, m.start() - 30):m.start()]):
-                continue  # "cut in front of EGO": where it went, not where it was
+            if _MOVED_TO.search(win[max(0, m.start() - 30):m.start()]) or \
+                    _INTO_LANE.search(win[max(0, m.start() - 40):m.start()]):
+                continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
             if fre.match(r"\s+(?:the|a|an)\s+(?!EGO)", win[m.end():]):
@@ -221,6 +226,9 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             (base + min(d.contact_pos, len(s)), base + min(len(s), d.contact_pos + 60))
         # A side panel touched (door, quarter panel, fender, mirror) puts the party beside the AV, not behind it.
         flank = "flank" if fre.search(r"\b(?:door|quarter|fender|mirror|panel)\b", s[d.contact_pos:], re.I) else ""
+        if fore == "rear" and flank and _PARTY_FRONT.search(s) and \
+                not any(a.who == e.idx and a.code in "fgF" for a in d.acts):
+            flank = ""  # its front into the AV's rear quarter, and it kept its lane: it came from behind
         cues.append(Cue("contact", f"{fore or ''}/{side or ''}/{flank}", span))
     return cues
 
