@@ -302,7 +302,9 @@ class LongitudinalDistanceRun(ActionRun):
         error = gap - wanted                 # > 0: the actor should move forward
         if not self.has_dynamics:
             if ent.track is not None:
-                s, _ = ent.track.travel(ent.s, -error if ent.reverse else error)
+                # The gap is in road s when measured on the road, else in metres along the entity.
+                ds = error if cs == "road" else error * ent.track.ds_per_metre(ent.s, ent.offset)
+                s, _ = ent.track.advance(ent.s, -ds if ent.reverse else ds)
                 ent.s = s
                 ent.x, ent.y, ent.h = ent.track.pose(s, ent.offset)
                 ent._sync_road()

@@ -1,8 +1,8 @@
 """Moving entities one step, and the states derived from the motion.
 
-Storyboard-driven entities on a lane move their speed·dt along the lane (through successor lanes at the lane's
-end, preferring lanes of an assigned route, else the straightest continuation); their lateral position is the
-offset their lateral action set. Entities off the lanes move straight along their heading. The planner-driven ego
+Storyboard-driven entities on a lane move their speed·dt along the lane, turned into road s where the step starts
+(`LaneTrack.ds_per_metre`) and carried in road s through successor lanes at the lane's end (preferring lanes of an
+assigned route, else the straightest continuation); their lateral position is the offset their lateral action set. Entities off the lanes move straight along their heading. The planner-driven ego
 moves with the kinematic bicycle of `kinematics.py`.
 """
 
@@ -42,21 +42,22 @@ def _next_track(world: "World", route_lanes: set, track: "LaneTrack", backward: 
     for ref in refs:
         cand = world.tracks.track(ref)
         if backward:
-            far = cand.travel(cand.exit_s(), -min(10.0, cand.length))[0]
+            far = cand.advance(cand.exit_s(), -min(10.0, cand.s1 - cand.s0))[0]
         else:
-            far = cand.travel(cand.entry_s(), min(10.0, cand.length))[0]
+            far = cand.advance(cand.entry_s(), min(10.0, cand.s1 - cand.s0))[0]
         dh = abs(_wrap(cand.pose(far)[2] - end_h))
         if dh < best_dh:
             best, best_dh = cand, dh
     return best
 
 
-def lane_walk(world: "World", track: "LaneTrack", s: float, dist: float, route_lanes: set | None = None
+def lane_walk(world: "World", track: "LaneTrack", s: float, ds: float, route_lanes: set | None = None
               ) -> tuple["LaneTrack", float, bool, int]:
-    """Go `dist` along the driving direction from road s (negative: against it, through predecessors).
+    """Go `ds` of road s along the driving direction from road s (negative: against it, through predecessors);
+    what is left at a lane's end continues, in road s, on the next lane (as esmini carries it).
     Returns (track, s, completed, direction flips) — flips: how often +t reversed relative to travel."""
-    s, left = track.travel(s, dist)
-    backward = dist < 0
+    s, left = track.advance(s, ds)
+    backward = ds < 0
     flips = 0
     guard = 0
     while left > 1e-12 and guard < 50:
@@ -67,18 +68,20 @@ def lane_walk(world: "World", track: "LaneTrack", s: float, dist: float, route_l
         if nxt.forward != track.forward:
             flips += 1
         track = nxt
-        s, left = (track.travel(track.exit_s(), -left) if backward else track.travel(track.entry_s(), left))
+        s, left = (track.advance(track.exit_s(), -left) if backward else track.advance(track.entry_s(), left))
     return track, s, True, flips
 
 
 def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
-    """Advance `dist` along the lane's driving direction (negative: against it); False when the lane network
-    ends (the entity stays at the end)."""
+    """Advance `dist` metres along the lane's driving direction (negative: against it); False when the lane
+    network ends (the entity stays at the end)."""
     assert ent.track is not None
     lateral = ent.runs.get("lateral")
-    if lateral is None or lateral.travels_at_offset:
-        dist *= ent.track.centre_per_offset_path(ent.s, ent.offset)
-    track, s, ok, flips = lane_walk(world, ent.track, ent.s, dist, ent.route_lanes)
+    # The entity advances at the radius of its own path (its offset), unless its lateral action keeps it
+    # measured along the lane centre.
+    offset = ent.offset if lateral is None or lateral.travels_at_offset else 0.0
+    ds = dist * ent.track.ds_per_metre(ent.s, offset)
+    track, s, ok, flips = lane_walk(world, ent.track, ent.s, ds, ent.route_lanes)
     if flips % 2:
         ent.offset = -ent.offset        # +t of the new road points the other way relative to travel
     ent.track, ent.s = track, s

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -11,8 +12,11 @@ from scenario_player.world.collision import obb_overlap
 from scenario_player.world.lanes import TrackCache
 from scenario_player.world.signals import state_of
 from txt2sce_ros.contract import SignalState
+from txt2sce_ros.road import load_network
 
 from .conftest import xosc
+
+CURVE_MAP = Path(__file__).with_name("conformance_cases") / "xodr" / "curve_r100.xodr"
 
 
 def test_lane_track_matches_the_road_model(esmini) -> None:
@@ -25,10 +29,21 @@ def test_lane_track_matches_the_road_model(esmini) -> None:
         rx, ry, rh = net.lane_to_world("0", -1, s, 0.4)
         assert math.hypot(x - rx, y - ry) < 2e-3
         assert abs(math.remainder(h - rh, 2 * math.pi)) < 1e-3
-    # Travel moves along the lane centre: 10 m of arc from s=100.
-    s2, left = track.travel(100.0, 10.0)
-    assert left == 0.0
-    assert track.s_to_arc(s2) - track.s_to_arc(100.0) == pytest.approx(10.0, abs=1e-9)
+    # Steps of 0.1 m, each turned into road s where it starts, cover 10 m of the lane centre (the curve's
+    # 1/(1 - k·t) scale: without it the path would be 10·(1 - k·t) m long). Radius 100 m from s = 500.
+    track = TrackCache.of(load_network(CURVE_MAP)).at("0", -1, 550.0)
+    s, path = 550.0, 0.0
+    px, py, _ = track.pose(s)
+    for _ in range(100):
+        s, left = track.advance(s, 0.1 * track.ds_per_metre(s))
+        assert left == 0.0
+        x, y, _ = track.pose(s)
+        path += math.hypot(x - px, y - py)
+        px, py = x, y
+    assert path == pytest.approx(10.0, abs=2e-3)
+    assert abs(s - 560.0) > 0.1             # the curve does scale: road s is not the lane's length
+    # At the track's end the rest is returned in road s, for the next lane.
+    assert track.advance(track.s1 - 1.0, 3.0) == (track.s1, pytest.approx(2.0))
 
 
 def test_collision_condition_fires_when_footprints_overlap(esmini) -> None:
