@@ -95,10 +95,18 @@ def _clothoid(world: "World", c: Clothoid) -> tuple[np.ndarray, np.ndarray | Non
     return np.column_stack([xs, ys]), times
 
 
+PEAK_LOOKAHEAD = 1e-3      # in the NURBS parameter (knot units), see _nurbs
+
+
 def _nurbs(world: "World", nb: Nurbs) -> tuple[np.ndarray, np.ndarray | None]:
     """Sample the rational B-spline about every metre of its control polygon. Times: each control point's time
-    belongs to the parameter where its basis function peaks, and is interpolated linearly in the parameter in
-    between (how esmini times NURBS trajectories)."""
+    belongs to the sample where its basis function peaks, and is interpolated linearly in the parameter in
+    between (how esmini times NURBS trajectories; the standard leaves the timing between control points open).
+
+    The peak is the sample whose basis is largest PEAK_LOOKAHEAD after it, not at it: that is the sample the
+    shared esmini picks. Measured with its recordings of trajectory-test.xosc and variants (other knot vectors,
+    228 and 257 samples): 15 of 15 peaks agree this way, 10 of 15 at the sample itself; a peak one sample off
+    shifts the timing of a whole segment (0.7 m at 14 m/s in trajectory-test)."""
     ctrl = np.array([_xy(world, cp.position) for cp in nb.points], dtype=float)
     w = np.array([cp.weight for cp in nb.points], dtype=float)
     ctimes = [cp.time for cp in nb.points]
@@ -115,7 +123,8 @@ def _nurbs(world: "World", nb: Nurbs) -> tuple[np.ndarray, np.ndarray | None]:
     pts = (wb.T @ ctrl) / den[:, None]
     times = None
     if all(t is not None for t in ctimes) and len(ctrl) > 1:
-        peak_u = u[np.argmax(basis, axis=1)]
+        ahead = np.minimum(u + PEAK_LOOKAHEAD, knots[-1] - 1e-10)
+        peak_u = u[np.argmax(np.array([_basis(knots, k, i, ahead) for i in range(len(ctrl))]), axis=1)]
         times = np.empty(len(u))
         seg = 0
         for j, uj in enumerate(u):
