@@ -133,10 +133,20 @@ class EventRealiser:
 
     def check_lane_changes(self, actor: Actor) -> None:
         """A lane change must start on a lane that has a neighbour on that side (not inside a one-lane junction
-        connector): move it to the nearest planned instant where one exists, else keep the lane (noted)."""
+        connector) and be driven fast enough for its sideways motion. It moves to the nearest planned instant
+        where both hold, no earlier than the action reported before it, else the lane is kept (noted).
+
+        Moved ahead of earlier actions, a change would contradict them (a change left before a reported right
+        turn leaves the party on a lane its route cannot start from). Sideways faster than the party drives is no
+        lane change a vehicle can make, and the standard does not say what a player does then: esmini stops the
+        forward motion and slides the entity sideways at its speed, ours keeps the shape's timing, so the two
+        disagree by metres (waymo r247: a change left while braking to a stop, or while reversing at 1.5 m/s)."""
         if not isinstance(actor.track, Track):
             return
-        t, _, d = actor.profile(self.horizon)
+        t, v, d = actor.profile(self.horizon)
+        duration = self.D.lane_change_time
+        # peak lateral speed of the sinusoidal change (the shape the seeds write), with a margin of a quarter
+        fast_enough = 1.25 * np.pi * self.lane_w / (2.0 * duration)
 
         def ok(at: float, rel: int) -> bool:
             # with a margin of ±0.5 s: the player's position may differ from the plan's by a few centimetres at a
@@ -145,21 +155,25 @@ class EventRealiser:
                 ref = actor.track.lane_at(actor.d0 + float(np.interp(at + dt, t, d)))
                 if self.net.neighbour(ref, "left" if rel > 0 else "right") is None:
                     return False
-            return True
+            during = (t >= at - 1e-9) & (t <= at + duration + 1e-9)
+            speeds = np.abs(v[during]) if during.any() else np.abs(np.interp([at], t, v))
+            return bool(speeds.min() >= fast_enough)
 
         for k, ev in enumerate(actor.events):
             lc = next((a for a in ev.actions if isinstance(a, LaneChangeAct)), None)
             if lc is None or ok(ev.planned_time, lc.relative):
                 continue
+            earliest = actor.events[k - 1].planned_time if k > 0 else 0.0
             cands = sorted((abs(c - ev.planned_time), c) for c in np.arange(0.0, self.horizon - 5.0, 0.25)
-                           if ok(float(c), lc.relative))
+                           if c >= earliest - 1e-9 and ok(float(c), lc.relative))
             step = next((st for st in actor.lat_steps if abs(st.t - ev.planned_time) < 1e-6), None)
             if cands:
                 new_t = round(float(cands[0][1]), 2)
                 actor.events[k] = EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t), new_t)
                 if step is not None:
                     actor.lat_steps[actor.lat_steps.index(step)] = LateralStep(new_t, step.delta, step.duration)
-                actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it at {ev.planned_time} s")
+                actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it, or too slow for it, at "
+                                   f"{ev.planned_time} s")
             else:
                 acts = tuple(a for a in ev.actions if not isinstance(a, LaneChangeAct)) or (
                     SpeedAct(round(float(np.interp(ev.planned_time, t, actor.profile(self.horizon)[1])), 3),
@@ -167,7 +181,8 @@ class EventRealiser:
                 actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
                 if step is not None:
                     actor.lat_steps.remove(step)
-                actor.notes.append(f"{ev.name}: no lane beside it anywhere on its path; lane kept")
+                actor.notes.append(f"{ev.name}: no lane beside it, at a speed that allows the change, after "
+                                   f"the actions reported before it; lane kept")
 
     def trim_trajectories(self, actor: Actor) -> None:
         """Start every trajectory at the point the actor has reached when its event fires."""
