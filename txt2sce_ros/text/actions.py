@@ -122,7 +122,8 @@ _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|d
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 
-_RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?)?(?:that|which|who)\s+)?"
+_RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?|(?:[\w-]+\s+){1,2}?)?"
+                       r"(?:that|which|who)\s+)?"
                        r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
@@ -216,8 +217,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
         left = [m for m in ments if m.end <= b]
         rel = left[-1] if left and _RELATIVE.fullmatch(s[left[-1].end:b]) else None
         if rel is not None and not rel.subject and not fre.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
-                not (s[rel.end:b].strip() == "" and s[b:e].lower().endswith("ing")):
-            rel = None  # "from the left of EGO was slowing": EGO here is no subject
+                not (s[rel.end:b].strip() == "" and fre.match(r"\w+ing\b", s[b:e], re.I)):
+            # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
+            # the centerline": a participle right after a noun tells that noun's move.
+            rel = None
         if inside:
             who = inside[0].entity
         elif rel is not None and rel.kind in ("party", "obstacle") and rel.entity >= 0:
