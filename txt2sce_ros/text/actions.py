@@ -28,7 +28,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
-    ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b|"
+    ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
           r"\bbacking\b"),
     ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
@@ -240,9 +240,14 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
                 continue
             code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))
-    # A state "was stopped" and the "stopped" inside it are one fact.
+    # A state "was stopped" and the "stopped" inside it are one fact; "accelerated while still in reverse" is
+    # the backing up, not a speed-up forward.
     dedup: list[Act] = []
-    for a in out:
+    for k, a in enumerate(out):
+        nxt = out[k + 1] if k + 1 < len(out) else None
+        if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
+                r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
+            continue
         if dedup and a.who == dedup[-1].who and a.sent == dedup[-1].sent and {a.code, dedup[-1].code} == {"S", "h"} \
                 and abs(a.pos - dedup[-1].pos) < 25:
             if dedup[-1].code == "h":
