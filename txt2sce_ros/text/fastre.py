@@ -120,20 +120,21 @@ def factors_of(rx: re.Pattern[str]) -> frozenset[str] | None:
     return fs
 
 
-# The text last lowercased, and its lowercase: the extractor runs a dozen patterns over one sentence in a row.
-# One tuple, replaced whole, so a reader never pairs a text with another text's lowercase.
-_last: tuple[str, str | None] = ("", "")
+# Lowercase of the texts seen lately: the extractor runs dozens of patterns over one sentence, and over the same
+# clause slices, interleaved; a bounded dict (cleared when full) keeps each text's lowercase for its next pattern.
+_LOWER: dict[str, str | None] = {}
+_LOWER_MAX = 512
+_MISSING = object()
 
 
 def _lower_ascii(s: str) -> str | None:
-    """`s.lower()` for an ASCII text, None for any other (cached for the latest text)."""
-    global _last
-    last = _last
-    if last[0] is s:
-        return last[1]
-    low = s.lower() if s.isascii() else None
-    _last = (s, low)
-    return low
+    """`s.lower()` for an ASCII text, None for any other (cached for the texts seen lately)."""
+    low = _LOWER.get(s, _MISSING)
+    if low is _MISSING:
+        if len(_LOWER) >= _LOWER_MAX:
+            _LOWER.clear()
+        low = _LOWER[s] = s.lower() if s.isascii() else None
+    return low  # type: ignore[return-value]
 
 
 class _Unfoldable(Exception):

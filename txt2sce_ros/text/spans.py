@@ -13,6 +13,7 @@ import bisect
 import re
 
 _WORD = re.compile(r"[A-Za-z0-9]+")
+_RUN = 8  # words aligned in one step where both texts agree
 _LOOKAHEAD = 40  # original words one normalised word may skip (a dropped parenthesis, an AV's long name)
 
 
@@ -20,46 +21,63 @@ class OffsetMap:
     """Normalised-text span -> original-text span."""
 
     def __init__(self, original: str, normalised: str) -> None:
-        orig = [(m.group(0).lower(), m.start(), m.end()) for m in _WORD.finditer(original)]
+        # The words are ASCII ([A-Za-z0-9]), so lowercasing them joined keeps them one for one; positions come from
+        # the texts as they are (lowercasing a non-ASCII text can change its length).
+        orig_spans = [m.span() for m in _WORD.finditer(original)]
+        orig_words = " ".join(_WORD.findall(original)).lower().split()
         self._len = len(original)
-        self._starts: list[int] = []  # normalised word starts, ascending
+        self._starts = [m.start() for m in _WORD.finditer(normalised)]  # normalised word starts, ascending
+        norm_words = " ".join(_WORD.findall(normalised)).lower().split()
         self._map: list[tuple[int, int] | None] = []  # original span of each normalised word, None if unaligned
-        j = 0
-        for m in _WORD.finditer(normalised):
-            w = m.group(0).lower()
+        j, n_orig, n_norm = 0, len(orig_words), len(norm_words)
+        i = 0
+        while i < n_norm:
+            # Most of a narrative survives normalisation word for word: a run of _RUN equal words (none of them
+            # the AV's token) is aligned at once by one list comparison instead of word by word.
+            block = norm_words[i:i + _RUN]
+            if len(block) == _RUN and block == orig_words[j:j + _RUN] and "ego" not in block and "egod" not in block:
+                self._map.extend(orig_spans[j:j + _RUN])
+                i += _RUN
+                j += _RUN
+                continue
+            w = norm_words[i]
+            i += 1
             found = None
-            if w not in ("ego", "egod"):
-                for k in range(j, min(len(orig), j + _LOOKAHEAD)):
-                    if orig[k][0] == w:
-                        found = k
-                        break
-            self._starts.append(m.start())
+            if w not in ("ego", "egod") and j < n_orig:
+                if orig_words[j] == w:  # the common case: the next original word
+                    found = j
+                else:
+                    try:
+                        found = orig_words.index(w, j, min(n_orig, j + _LOOKAHEAD))
+                    except ValueError:
+                        found = None
             if found is None:
                 self._map.append(None)
             else:
-                self._map.append((orig[found][1], orig[found][2]))
+                self._map.append(orig_spans[found])
                 j = found + 1
-        # Unaligned words (EGO) take the original text between their aligned neighbours; the next aligned start of
-        # every word is found in one backward pass (a forward search per EGO was quadratic in long texts).
-        next_start = [self._len] * len(self._map)
-        upcoming = self._len
-        for i in range(len(self._map) - 1, -1, -1):
-            next_start[i] = upcoming
-            if self._map[i] is not None:
-                upcoming = self._map[i][0]  # type: ignore[index]
-        prev_end = 0
-        for i, sp in enumerate(self._map):
-            if sp is not None:
-                prev_end = sp[1]
-                continue
-            end = next_start[i]
-            start = prev_end
+        # Unaligned words (EGO) take the original text between their aligned neighbours. Every word of a run of
+        # unaligned words has the same neighbours, so each run is spanned once (linear in the text however long
+        # the runs).
+        unaligned = [i for i, sp in enumerate(self._map) if sp is None]
+        k = 0
+        while k < len(unaligned):
+            first = unaligned[k]
+            last = first
+            while k + 1 < len(unaligned) and unaligned[k + 1] == last + 1:
+                k += 1
+                last = unaligned[k]
+            k += 1
+            start = self._map[first - 1][1] if first > 0 else 0  # type: ignore[index]
+            end = self._map[last + 1][0] if last + 1 < len(self._map) else self._len  # type: ignore[index]
             while start < end and not original[start].isalnum():
                 start += 1
             stop = end
             while stop > start and not original[stop - 1].isalnum():
                 stop -= 1
-            self._map[i] = (start, max(start, stop))
+            span = (start, max(start, stop))
+            for i in range(first, last + 1):
+                self._map[i] = span
 
     def to_original(self, start: int, end: int) -> tuple[int, int] | None:
         """The original span covering the normalised words in [start, end), or None when none lies there."""
