@@ -10,6 +10,7 @@ while "began to", "attempted to" and "proceeded to" do.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from . import fastre as fre
@@ -25,8 +26,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
-          r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)"),
-    ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b"),
+          r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)|"
+          r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
+          r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb)"),
+    ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
+          r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
+          r"turn\b(?!\s+(?:left|right|lane|signal))"),
     ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
@@ -99,7 +104,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
     "i": ("began", "begin", "start", "forward", "proceed"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull",),
+    "O": ("pull", "traffic"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
@@ -182,8 +187,11 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
     return -1 if best.kind in ("ego", "egod") else (best.entity if best.entity >= 0 else fallback)
 
 
-def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None) -> list[Act]:
-    """The manoeuvres in one sentence, each attributed to its doer."""
+def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
+              prior: Sequence[str] = ()) -> list[Act]:
+    """The manoeuvres in one sentence, each attributed to its doer; `prior` are the sentences just before it,
+    where a turn begun without a side ("attempted to turn behind EGO") was announced ("signaling to make an
+    unprotected left turn")."""
     spans: list[tuple[int, int, str]] = []
     low = s.lower()
     present = {w for w in _ALL_NEEDS if w in low}  # one pass over the words, not one per code
@@ -235,7 +243,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None)
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
-            side = fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", s[:b], re.I)
+            side = fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", s[:b], re.I) or \
+                fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", " ".join(prior), re.I)
             if not side:
                 continue
             code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"

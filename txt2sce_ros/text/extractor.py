@@ -101,7 +101,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     attach_towed(d)
     fallback: int | None = None
     for i, s in enumerate(sents):
-        d.acts += find_acts(i, s, ments[i], fallback)
+        d.acts += find_acts(i, s, ments[i], fallback, sents[max(0, i - 2):i])
         subj = [m for m in ments[i] if m.subject]
         if subj:
             fallback = -1 if subj[-1].kind in ("ego", "egod") else subj[-1].entity
