@@ -79,7 +79,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"lanes)|\b(?:pull(?:ed|ing)\s+"
           r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"
           r"(?:\w+\s+)?(?:driveway|garage|"
-          r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
+          r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
+          r"\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
           r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
           r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding)\s+(?:out\s+)?"
           r"(?:off\s+the\s+(?:curb|sidewalk)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
@@ -254,6 +255,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     dedup: list[Act] = []
     for k, a in enumerate(out):
         nxt = out[k + 1] if k + 1 < len(out) else None
+        if a.code == "l" and dedup and dedup[-1].code == "k" and dedup[-1].who == a.who and \
+                a.pos - (dedup[-1].pos + len(dedup[-1].text)) <= 2:
+            continue  # "reversing into a parking space": where the backing was headed; the string ends at contact
         if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
                 r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
             continue
