@@ -19,7 +19,10 @@ _T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
-                        r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b", re.I)
+                        r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
+                        # "turned left in front of EGO to enter Elm Street": a turn into a named street is a junction
+                        r"\bturn(?:ed|ing|s)?\s+(?:left|right)\b[^.,;]{0,50}?\b(?:to\s+enter|into)\s+"
+                        r"(?:[\w.'-]+\s+){1,3}(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way)\b", re.I)
 _PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
 _ROUNDABOUT = compile_gated(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
@@ -86,7 +89,7 @@ def environment(t: str) -> Environment:
     return Environment(weather=weather, lighting=lighting_from_text(t), surface=surface)  # type: ignore[arg-type]
 
 
-_LOT_EXIT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+_LOT_EXIT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}"
                        r"(?:parking\s+(?:lot|garage|structure|space|spot)|driveway|garage|alley|lot)\b[^.]*?"
                        r"(?:\bonto\b|$)", re.I)
 _ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)

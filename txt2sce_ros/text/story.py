@@ -313,10 +313,15 @@ def heading(d: Doc, who: int) -> int | None:
                     # The AV "turned left from northbound X onto westbound Y": the frame of R1-R7 is taken when
                     # the interaction begins, on its approach (an oncoming party is R2 there).
                     return heading_of(approach.group(1) + "bound")
-                h = heading_of(window)
+                # "made a right turn onto southbound Hyde Street": the heading it turned to, not the one it came on.
+                h = heading_of(_DESTINATION_HEADING.sub(" ", window))
                 if h is not None:
                     return h
     return None
+
+
+_DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s+)?(?:north|south|east|west)+bound\b",
+                                     re.I)
 
 
 # "the rear driver side of EGO": up to six words before "of/on/to EGO". The quantifiers inside the group are
