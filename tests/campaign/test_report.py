@@ -53,6 +53,7 @@ def test_seed_directory_campaign_writes_the_report(seed_dir: Path, tmp_path: Pat
     assert len(uris) == len(figs)                       # every image inlined, none linked
     assert all(base64.b64decode(u).startswith(PNG_MAGIC) for u in uris)
     assert not re.search(r'src="(?!data:)', page)       # self-contained: no external references
+    assert "**" not in page and "<strong>" in page      # Markdown emphasis rendered, not shown as asterisks
 
     analysis = json.loads((out / "report" / "analysis.json").read_text(encoding="utf-8"))
     assert analysis["verdicts"] == {k: v for k, v in verdicts.items() if v}

@@ -5,6 +5,7 @@ from __future__ import annotations
 import base64
 import html
 import json
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Sequence
@@ -259,6 +260,13 @@ def write_report(res: CampaignResults, out_dir: str | Path, *, title: str = "txt
     return out / "report.md", out / "report.html"
 
 
+def _inline(text: str) -> str:
+    """Escaped text with the Markdown `markdown()` uses inside a line: **bold** and `code`."""
+    out = html.escape(text)
+    out = re.sub(r"\*\*(.+?)\*\*", r"<strong>\1</strong>", out)
+    return re.sub(r"`([^`]+)`", r"<code>\1</code>", out)
+
+
 def _html(md: str, title: str) -> str:
     """A minimal Markdown-to-HTML rendering of what `markdown()` emits (headings, tables, images, paragraphs)."""
     body: list[str] = []
@@ -277,8 +285,8 @@ def _html(md: str, title: str) -> str:
                 i += 1
             i -= 1
             head, *rest = rows
-            body.append("<table><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in head) + "</tr>"
-                        + "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rest)
+            body.append("<table><tr>" + "".join(f"<th>{_inline(c)}</th>" for c in head) + "</tr>"
+                        + "".join("<tr>" + "".join(f"<td>{_inline(c)}</td>" for c in r) + "</tr>" for r in rest)
                         + "</table>")
         elif line.startswith("!["):
             alt, src = line[2:].split("](", 1)
@@ -286,7 +294,7 @@ def _html(md: str, title: str) -> str:
         elif line.startswith("**") and line.endswith("**"):
             body.append(f"<p class='banner'>{html.escape(line.strip('*'))}</p>")
         elif line.strip():
-            body.append(f"<p>{html.escape(line)}</p>")
+            body.append(f"<p>{_inline(line)}</p>")
         i += 1
     style = ("body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
              "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;font-size:13px}"
