@@ -135,10 +135,13 @@ def test_load_network_caches_per_path_and_mtime(tmp_path) -> None:
     assert b is not a and b.roads["7"].rule == "LHT"
 
 
-def test_load_network_text_caches_by_content() -> None:
+def test_load_network_text_caches_by_content_and_name() -> None:
     from txt2sce_ros.road import load_network_text
 
     a = load_network_text(MINIMAL.format(rule=""), source="envelope")
-    assert load_network_text(MINIMAL.format(rule="").encode(), source="other") is a
+    assert load_network_text(MINIMAL.format(rule="").encode(), source="envelope") is a
+    # the same content under another name is another network: error messages quote the name
+    other = load_network_text(MINIMAL.format(rule=""), source="other")
+    assert other is not a and other.source == "other"
     b = load_network_text(MINIMAL.format(rule='rule="LHT"'), source="envelope")
     assert b is not a and b.roads["7"].rule == "LHT"

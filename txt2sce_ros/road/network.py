@@ -386,17 +386,19 @@ def load_network(path: str | os.PathLike[str]) -> RoadNetwork:
     return net
 
 
-_TEXT_CACHE: dict[str, RoadNetwork] = {}
+_TEXT_CACHE: dict[tuple[str, str], RoadNetwork] = {}
 _TEXT_CACHE_SIZE = 8
 
 
 def load_network_text(text: str | bytes, source: str = "<string>") -> RoadNetwork:
-    """`RoadNetwork.from_string`, cached by the SHA-256 of the content (a player receiving the same map in every
-    scenario envelope parses it once). Keeps the last few maps."""
+    """`RoadNetwork.from_string`, cached by the SHA-256 of the content and the source name (a campaign worker or a
+    player receiving the same map in every scenario envelope parses it once, and builds its routing graph, lane
+    index and topology once; the name is part of the key because error messages quote it). Keeps the last few
+    maps. The network is shared, so its users must treat it as read-only (its lazily filled caches aside)."""
     import hashlib
 
     data = text.encode("utf-8") if isinstance(text, str) else text
-    key = hashlib.sha256(data).hexdigest()
+    key = (hashlib.sha256(data).hexdigest(), source)
     with _CACHE_LOCK:
         hit = _TEXT_CACHE.get(key)
     if hit is not None:
