@@ -72,6 +72,19 @@ def overlaps(a: Box, b: Box) -> bool:
     return penetration(a, b) > 0.0
 
 
+#: Slack (m) of `far_apart`: far above the rounding of coordinates of a few km, far below any footprint.
+FAR_SLACK = 1e-3
+
+
+def far_apart(ax: float, ay: float, ar: float, bx: float, by: float, br: float) -> bool:
+    """Whether two circles (centre, radius) are more than `FAR_SLACK` apart: then no box inside one overlaps a box
+    inside the other, and the exact tests between them can be skipped (a conservative pre-test: it never skips a
+    pair `overlaps` would call overlapping)."""
+    r = ar + br + FAR_SLACK
+    dx, dy = bx - ax, by - ay
+    return dx * dx + dy * dy > r * r
+
+
 def interpolate(e0: EntityState, e1: EntityState, u: float) -> tuple[float, float, float]:
     """Pose between two samples of one entity (linear in position, shortest-arc in heading), u in [0, 1]."""
     dh = math.remainder(e1.heading - e0.heading, math.tau)
