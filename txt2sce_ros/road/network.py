@@ -136,9 +136,7 @@ class RoadNetwork:
         direction of the lane, including the lane centre's slope relative to the reference line."""
         road = self.road(road_id)
         s_arr = np.atleast_1d(np.asarray(s, dtype=float))
-        inner, outer = self.lane_bounds(road.id, lane_id, s_arr, section)
-        t = 0.5 * (inner + outer) + np.asarray(offset, dtype=float)
-        x, y, h = self.road_to_world_array(road.id, s_arr, t)
+        inner, outer, t, x, y, h = self._lane_points(road, lane_id, s_arr, offset, section)
         # Slope of the lane centre: dt/ds over (1 - k t) is the angle between lane centre and reference line.
         eps = 0.05
         i2, o2 = self.lane_bounds(road.id, lane_id, s_arr + eps, section)
@@ -148,6 +146,15 @@ class RoadNetwork:
         if not self.lane_forward(road.id, lane_id, float(s_arr[0])):
             h = h + math.pi
         return x, y, np.arctan2(np.sin(h), np.cos(h))
+
+    def _lane_points(self, road: Road, lane_id: int, s_arr: np.ndarray, offset: np.ndarray | float,
+                     section: int | None) -> tuple[np.ndarray, ...]:
+        """(inner t, outer t, t, x, y, reference heading) of the lane centre + offset at road s: the positions
+        part of `lane_to_world_array`, which `lane_centerline` needs alone (the heading costs as much again)."""
+        inner, outer = self.lane_bounds(road.id, lane_id, s_arr, section)
+        t = 0.5 * (inner + outer) + np.asarray(offset, dtype=float)
+        x, y, h = self.road_to_world_array(road.id, s_arr, t)
+        return inner, outer, t, x, y, h
 
     # --- scalar API ------------------------------------------------------------------------------------------------
 
@@ -226,7 +233,7 @@ class RoadNetwork:
         parts = []
         for si in sections:
             s = self._lane_s_samples(road, si, ds)
-            x, y, _ = self.lane_to_world_array(road.id, lane_id, s, section=si)
+            _, _, _, x, y, _ = self._lane_points(road, lane_id, s, 0.0, si)
             parts.append(np.column_stack([x, y, s]))
         out = np.vstack(parts)
         return out if self.lane_forward(road.id, lane_id) else out[::-1].copy()
