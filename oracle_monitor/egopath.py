@@ -25,7 +25,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Goal
 
-from .geometry import Box, far_apart, footprint, overlaps
+from .geometry import Box, far_apart, footprint, penetration
 
 #: A mover counts as crossing the path when its heading differs from the path's by more than this (deg).
 CROSSING_DEG = 25.0
@@ -106,19 +106,24 @@ class EgoPath:
         if len(pts) == 0:
             return ""
         half_length, half = 0.5 * SAMPLE_DS + 0.05, 0.5 * ego.width + margin
-        # One circle around the whole corridor: an object clear of it is clear of every box in it, so most steps
-        # build no box at all (the boxes and the exact tests are unchanged for an object near the corridor).
-        cx, cy = float(pts[:, 0].mean()), float(pts[:, 1].mean())
-        reach = float(np.hypot(pts[:, 0] - cx, pts[:, 1] - cy).max()) + math.hypot(half_length, half)
-        boxes: list[Box] | None = None
+        radius = math.hypot(half_length, half)          # every corridor box's (`Box.radius`)
+        xs, ys = pts[:, 0], pts[:, 1]
+        # One circle around the whole corridor: an object clear of it is clear of every box in it.
+        cx, cy = float(xs.mean()), float(ys.mean())
+        reach = float(np.hypot(xs - cx, ys - cy).max()) + radius
         for obj in objects:
             fp = footprint(obj)
-            if far_apart(cx, cy, reach, fp.cx, fp.cy, fp.radius):
+            rf = fp.radius
+            if far_apart(cx, cy, reach, fp.cx, fp.cy, rf):
                 continue
-            if boxes is None:
-                boxes = [Box(x, y, math.cos(h), math.sin(h), half_length, half) for x, y, h in pts.tolist()]
-            if any(overlaps(b, fp) for b in boxes):
-                return obj.name
+            # `overlaps(box, fp)` per corridor box: its circle test for all boxes at once (the same float
+            # operations, elementwise), then the exact test on the boxes that pass it, in order.
+            dx, dy = fp.cx - xs, fp.cy - ys
+            r = radius + rf
+            for i in np.flatnonzero(dx * dx + dy * dy < r * r).tolist():
+                x, y, h = pts[i].tolist()
+                if penetration(Box(x, y, math.cos(h), math.sin(h), half_length, half), fp) > 0.0:
+                    return obj.name
         return ""
 
     def crossing(self, ego: EntityState, front: tuple[float, float], objects: tuple[EntityState, ...], *,

@@ -85,6 +85,38 @@ def far_apart(ax: float, ay: float, ar: float, bx: float, by: float, br: float) 
     return dx * dx + dy * dy > r * r
 
 
+class BoxGroup:
+    """Boxes tested together, one other box at a time: `overlapped_by(b)` answers `any(overlaps(a, b) for a in
+    boxes)` with the same tests on the same floats, after one test of `b` against the circle around them all."""
+
+    __slots__ = ("boxes", "radii", "cx", "cy", "reach")
+
+    def __init__(self, boxes: list[Box]) -> None:
+        self.boxes = boxes
+        self.radii = [a.radius for a in boxes]
+        n = len(boxes)
+        self.cx = sum(a.cx for a in boxes) / n
+        self.cy = sum(a.cy for a in boxes) / n
+        self.reach = max(math.hypot(a.cx - self.cx, a.cy - self.cy) + r for a, r in zip(boxes, self.radii))
+
+    def clear_of(self, x: float, y: float, radius: float) -> bool:
+        """Whether the circle (x, y, radius) is clear of every box of the group (`far_apart` of the circles)."""
+        return far_apart(self.cx, self.cy, self.reach, x, y, radius)
+
+    def overlapped_by(self, b: Box) -> bool:
+        rb = b.radius
+        bx, by = b.cx, b.cy
+        if far_apart(self.cx, self.cy, self.reach, bx, by, rb):
+            return False
+        for a, ra in zip(self.boxes, self.radii):
+            # `overlaps(a, b)` inline: its circle test, then the exact one
+            dx, dy = bx - a.cx, by - a.cy
+            r = ra + rb
+            if dx * dx + dy * dy < r * r and penetration(a, b) > 0.0:
+                return True
+        return False
+
+
 def interpolate(e0: EntityState, e1: EntityState, u: float) -> tuple[float, float, float]:
     """Pose between two samples of one entity (linear in position, shortest-arc in heading), u in [0, 1]."""
     dh = math.remainder(e1.heading - e0.heading, math.tau)

@@ -27,7 +27,7 @@ from typing import Callable
 
 from txt2sce_ros.contract import EntityState, Frame
 
-from .geometry import Box, box_at, far_apart, footprint, overlaps
+from .geometry import Box, BoxGroup, box_at, footprint, overlaps
 from .records import Category, Unavoidable
 
 
@@ -124,15 +124,14 @@ class Counterfactual:
             if o is None:
                 continue
             # the path it went on to drive (straight on past the end of the run), 60 m of it
-            ahead = [self._ego_box(self.dists[k] + step) for step in AHEAD_STEPS]
+            ahead = BoxGroup([self._ego_box(self.dists[k] + step) for step in AHEAD_STEPS])
             c, s = math.cos(o.heading), math.sin(o.heading)
             fp = footprint(o)
             if _course_clear(ahead, fp, o.speed * FORESIGHT * c, o.speed * FORESIGHT * s):
                 continue
             for tau in taus:
                 moved = o.speed * tau
-                box = fp._replace(cx=fp.cx + moved * c, cy=fp.cy + moved * s)
-                if any(overlaps(b, box) for b in ahead):
+                if ahead.overlapped_by(fp._replace(cx=fp.cx + moved * c, cy=fp.cy + moved * s)):
                     return k
         return None
 
@@ -172,16 +171,13 @@ class Counterfactual:
         return None
 
 
-def _course_clear(boxes: list[Box], box: Box, dx: float, dy: float) -> bool:
-    """Whether `box`, slid along (dx, dy) from where it is, stays clear of the circle around all of `boxes` (then
-    no position on the way overlaps any of them, and the exact tests per position can be skipped)."""
-    n = len(boxes)
-    cx, cy = sum(b.cx for b in boxes) / n, sum(b.cy for b in boxes) / n
-    reach = max(math.hypot(b.cx - cx, b.cy - cy) + b.radius for b in boxes)
-    # the point of the course nearest to the circle's centre
+def _course_clear(group: BoxGroup, box: Box, dx: float, dy: float) -> bool:
+    """Whether `box`, slid along (dx, dy) from where it is, stays clear of the circle around the whole group (then
+    no position on the way overlaps any of its boxes, and the tests per position can be skipped)."""
     d2 = dx * dx + dy * dy
-    u = 0.0 if d2 == 0.0 else min(max(((cx - box.cx) * dx + (cy - box.cy) * dy) / d2, 0.0), 1.0)
-    return far_apart(cx, cy, reach, box.cx + u * dx, box.cy + u * dy, box.radius)
+    # the point of the course nearest to the circle's centre
+    u = 0.0 if d2 == 0.0 else min(max(((group.cx - box.cx) * dx + (group.cy - box.cy) * dy) / d2, 0.0), 1.0)
+    return group.clear_of(box.cx + u * dx, box.cy + u * dy, box.radius)
 
 
 def assess(cf: Counterfactual, categories: set[Category], *, decel: float, jerk: float, t_end: float,

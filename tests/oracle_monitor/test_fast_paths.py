@@ -1,0 +1,107 @@
+"""The oracle's fast paths must answer exactly as the plain box tests they stand in for (a verdict must not change):
+the corridor check `EgoPath.blocker` and `BoxGroup.overlapped_by` against `any(overlaps(...))` box by box, on
+boxes placed at random around a curved path (fixed seed), many of them touching or overlapping."""
+
+import math
+import random
+
+import numpy as np
+
+from oracle_monitor.egopath import SAMPLE_DS, EgoPath
+from oracle_monitor.geometry import Box, BoxGroup, far_apart, footprint, overlaps
+from oracle_monitor.unavoidable import _course_clear
+from txt2sce_ros.contract import EntityState
+
+
+def _path() -> EgoPath:
+    """A 120 m path that curves left through a quarter circle, one sample per metre."""
+    s = np.arange(0.0, 120.0, SAMPLE_DS)
+    h = np.minimum(s / 60.0, 1.0) * (0.5 * math.pi)
+    x = np.cumsum(np.cos(h)) * SAMPLE_DS + 1000.0
+    y = np.cumsum(np.sin(h)) * SAMPLE_DS - 2000.0
+    return EgoPath(np.column_stack([x, y, h]), routed=True)
+
+
+def _entity(name: str, x: float, y: float, heading: float, length: float = 4.5, width: float = 1.9) -> EntityState:
+    return EntityState(name=name, category="car", t=0.0, x=x, y=y, heading=heading, speed=0.0, length=length,
+                       width=width, center_x=1.3)
+
+
+def _plain_blocker(path: EgoPath, ego: EntityState, front: tuple[float, float], objects, clear_distance: float,
+                   margin: float) -> str:
+    """The corridor test written out: a box per path sample, every object against every box."""
+    path._s_hint = 0.0
+    pts = path.window(path.locate(*front), clear_distance)
+    half = 0.5 * ego.width + margin
+    boxes = [Box(x, y, math.cos(h), math.sin(h), 0.5 * SAMPLE_DS + 0.05, half) for x, y, h in pts]
+    for obj in objects:
+        fp = footprint(obj)
+        if any(overlaps(b, fp) for b in boxes):
+            return obj.name
+    return ""
+
+
+def test_blocker_answers_as_the_plain_box_tests() -> None:
+    rng = random.Random(7)
+    path = _path()
+    found = {"": 0, "hit": 0}
+    for trial in range(400):
+        k = rng.randrange(0, 100)
+        fx, fy = float(path.xyh[k, 0]), float(path.xyh[k, 1])
+        ego = _entity("ego", fx, fy, float(path.xyh[k, 2]))
+        objects = []
+        for j in range(rng.randrange(1, 5)):
+            i = min(k + rng.randrange(0, 40), len(path.xyh) - 1)
+            # around the corridor's edge: lateral offsets where contact comes and goes
+            off = rng.uniform(-5.0, 5.0)
+            h = float(path.xyh[i, 2])
+            objects.append(_entity(f"o{j}", float(path.xyh[i, 0]) - off * math.sin(h),
+                                   float(path.xyh[i, 1]) + off * math.cos(h), h + rng.uniform(-1.5, 1.5),
+                                   length=rng.uniform(0.5, 12.0), width=rng.uniform(0.5, 2.6)))
+        expected = _plain_blocker(path, ego, (fx, fy), objects, 20.0, 0.3)
+        path._s_hint = 0.0
+        assert path.blocker(ego, (fx, fy), tuple(objects), clear_distance=20.0, margin=0.3) == expected, trial
+        found["hit" if expected else ""] += 1
+    assert found["hit"] > 50 and found[""] > 50          # both answers were exercised
+
+
+def test_box_group_answers_as_any_overlaps() -> None:
+    rng = random.Random(11)
+    for _ in range(300):
+        cx, cy = rng.uniform(-5000, 5000), rng.uniform(-5000, 5000)
+        group = [Box(cx + i * 2.0, cy + rng.uniform(-0.3, 0.3), 1.0, 0.0, 2.3, 1.0) for i in range(30)]
+        g = BoxGroup(group)
+        for _ in range(20):
+            h = rng.uniform(-math.pi, math.pi)
+            b = Box(cx + rng.uniform(-10, 70), cy + rng.uniform(-6, 6), math.cos(h), math.sin(h),
+                    rng.uniform(0.2, 6.0), rng.uniform(0.2, 1.5))
+            assert g.overlapped_by(b) == any(overlaps(a, b) for a in group)
+
+
+def test_far_apart_never_skips_an_overlap() -> None:
+    rng = random.Random(3)
+    for _ in range(20000):
+        a = Box(rng.uniform(-3, 3), rng.uniform(-3, 3), 1.0, 0.0, rng.uniform(0.1, 3), rng.uniform(0.1, 3))
+        h = rng.uniform(-math.pi, math.pi)
+        b = Box(rng.uniform(-6, 6), rng.uniform(-6, 6), math.cos(h), math.sin(h), rng.uniform(0.1, 3),
+                rng.uniform(0.1, 3))
+        if far_apart(a.cx, a.cy, a.radius, b.cx, b.cy, b.radius):
+            assert not overlaps(a, b)
+
+
+def test_course_clear_only_when_no_position_on_the_course_overlaps() -> None:
+    rng = random.Random(5)
+    group = BoxGroup([Box(float(i), 0.0, 1.0, 0.0, 2.3, 1.0) for i in range(0, 60, 2)])
+    clear = 0
+    for _ in range(500):
+        h = rng.uniform(-math.pi, math.pi)
+        box = Box(rng.uniform(-40, 100), rng.uniform(-60, 60), math.cos(h), math.sin(h), 2.2, 0.9)
+        speed = rng.uniform(-2.0, 15.0)
+        dx, dy = speed * 5.0 * math.cos(h), speed * 5.0 * math.sin(h)
+        if _course_clear(group, box, dx, dy):
+            clear += 1
+            for k in range(21):
+                moved = speed * k * 0.25
+                moved_box = box._replace(cx=box.cx + moved * math.cos(h), cy=box.cy + moved * math.sin(h))
+                assert not any(overlaps(a, moved_box) for a in group.boxes)
+    assert clear > 100
