@@ -107,3 +107,18 @@ def test_an_unknown_controller_is_seen_as_an_error(written, tmp_path) -> None:
     bad = seed.with_name("old_controller.xosc")
     bad.write_text(text, encoding="utf-8")
     assert any("Unsupported controller type" in e for e in check_file(bad).run.errors)
+
+
+def test_the_dilemma_zone_fixture_runs_in_esmini_with_its_yellow() -> None:
+    # tests/integration/data/tls_dilemma_zone.xosc (the ROS-agreement scenario) in the portable signal form: esmini
+    # runs it without an [error] and switches its lights (yellow on the dilemma-zone condition, then red, red-clear
+    # and green) at the same steps as ours. In the controller form it had, esmini logged an [error] for the ego's
+    # controller and never changed a light.
+    if not available():
+        pytest.skip("the shared esmini is not present")
+    fixture = Path(__file__).parents[1] / "integration" / "data" / "tls_dilemma_zone.xosc"
+    assert b"TrafficSignalController" not in fixture.read_bytes()
+    _assert_portable(fixture)
+    lights = check_file(fixture).lights
+    assert lights is not None and {st for _, _, st in lights.esmini} >= {"off;on;off", "on;off;off", "off;off;on"}
+
