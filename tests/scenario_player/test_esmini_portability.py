@@ -67,6 +67,20 @@ def test_tree_nodes_run_in_esmini_without_error_and_agree(written) -> None:
         _assert_portable(f)
 
 
+def test_crossing_pedestrian_made_a_vehicle_agrees_in_esmini(written) -> None:
+    # nuro r584's crossing pedestrian, made a car or another vehicle by the tree's category mutation: its crossing
+    # runs on past the road until the run ends, so neither player has to choose where a vehicle goes from a
+    # trajectory end beside the road (they chose differently: 25.6 m apart, 8 of a 60-node sample).
+    seed = written / "seeds" / "dmvca-nuro-20240522-r584.xosc"
+    res = build_trees([seed], written / "nuro_trees", seed=0, cfg=tree_config(max_nodes=100, validate=False), jobs=1)
+    assert res and not res[0].errors
+    nodes = sorted((written / "nuro_trees").glob("*/nodes/n*.xosc"))
+    made_vehicle = [f for f in nodes if b'<Vehicle name="npc1_pedestrian"' in f.read_bytes()]
+    assert len(made_vehicle) >= 3, "the sample must hold nodes where the crossing pedestrian became a vehicle"
+    for f in made_vehicle[:: max(1, len(made_vehicle) // 3)][:3]:
+        _assert_portable(f)
+
+
 def test_light_changes_are_seen_in_esmini_and_compared(written) -> None:
     # waymo r574: the AV waits at red, which turns green at its first action. Both players switch every light of
     # the junction at the same step; the probe really reads esmini's lights (changes seen, not an empty match).

@@ -248,7 +248,7 @@ class Meeting:
                     d_p = max(d_p, self.d_entry + 4.0)
             px = ego.track.world(d_p)
             before = min(v * T, max_before)
-            line = perpendicular(px.x, px.y, px.h, side, before, 12.0)
+            line = perpendicular(px.x, px.y, px.h, side, before, self._crossing_beyond(v))
             reach = before
         actor = self._actor(p.id, p.category, line)
         actor.world_start = True
@@ -272,6 +272,14 @@ class Meeting:
         self.choices["parties"].setdefault(p.id, {}).update({
             "mode": "crossing", "side": side, "run_up": round(before, 2), "release_time": round(delay, 2),
             "speed": v, "conflict_time": round(T, 2), "notes": actor.notes})
+
+    def _crossing_beyond(self, v: float) -> float:
+        """How far a crossing runs on past the AV's path: at least 12 m, and long enough that the party is still on
+        it when the run ends, even at twice its speed (the tree's speed mutations reach 1.5 times). What an
+        entity does after its trajectory the standard leaves to the player, and players differ where the end lies
+        beside the road: a crossing pedestrian made a car by the tree joined the sidewalk in ours and stopped at
+        the junction, in esmini it joined the driving lane and drove on into the junction (25 m apart)."""
+        return max(12.0, round(2.0 * max(v, 1.0) * self.horizon, 1))
 
     def _reversing_time(self, T: float) -> float | None:
         """When the AV backs up (at or after T, at nine tenths of its reversing speed), or None if it never does."""
