@@ -1,0 +1,81 @@
+"""Issue 13, the EVENTS slot: narratives -> action strings, one test per reading mechanism of `actions.py` and
+`sequences.py` (the narratives are written for these tests, in the reports' styles; none is a gold or held-out text).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from txt2sce_ros.text.extractor import extract
+
+
+def _party(text: str, k: int = 0) -> tuple[str, str]:
+    sk = extract(text, "t")
+    return sk.npcs[k].start, sk.npcs[k].actions
+
+
+def _ego(text: str) -> tuple[str, str]:
+    sk = extract(text, "t")
+    return sk.ego.start, sk.ego.actions
+
+
+def test_participle_right_after_a_noun_is_that_noun_s_move() -> None:
+    # "seeing the oncoming car crossing the centerline": the car crossed, not the driver who saw it.
+    text = ("A Cruise autonomous vehicle was traveling northbound on Valencia Street. The driver of the Cruise AV, "
+            "seeing the oncoming car crossing the centerline, brought the Cruise AV to a stop. The oncoming car "
+            "made contact with the front driver side of the Cruise AV.")
+    assert _ego(text) == ("moving", "ah")
+    assert _party(text) == ("moving", "af")
+
+
+def test_relative_clause_after_a_make_and_model_is_the_party_s() -> None:
+    text = ("The Waymo AV was traveling southbound on Hyde Street when it was struck by a 2015 Subaru Forester that "
+            "crossed the double yellow line while driving northbound on Hyde Street.")
+    assert _ego(text)[1] == "a"  # the AV kept its lane
+    assert "f" in _party(text)[1]  # the Forester crossed into it
+
+
+def test_reverse_lights_are_not_reversing_and_accelerating_in_reverse_is_backing() -> None:
+    text = ("The Pony AV was stopped at a red light. The safety driver saw that the reverse lights of the vehicle "
+            "directly in front of the Pony AV were on. Vehicle 2 accelerated while still in reverse toward the Pony "
+            "AV and made contact with its front bumper.")
+    assert _ego(text) == ("stopped", "")
+    assert _party(text) == ("stopped", "k")
+
+
+def test_a_turn_begun_without_a_side_takes_the_side_announced_before() -> None:
+    text = ("The Waymo AV was traveling southbound on Folsom Street when it began to slow for a motorcyclist "
+            "traveling on northbound Folsom Street signaling to make an unprotected left turn onto 24th Street. "
+            "The motorcyclist attempted to turn behind the Waymo AV and made contact with its left rear corner.")
+    assert _party(text)[1].endswith("d")
+    # Without an announced side, an unnamed turn adds no letter.
+    plain = text.replace("signaling to make an unprotected left turn onto 24th Street", "approaching")
+    assert "d" not in _party(plain)[1] and "e" not in _party(plain)[1]
+
+
+def test_entering_traffic_from_a_parked_position_starts_from_a_standstill() -> None:
+    text = ("The Cruise AV was traveling westbound on Oak Street in the right lane when a sedan, entering traffic "
+            "from a curbside parked position, made contact with the right side of the Cruise AV.")
+    start, acts = _party(text)
+    assert start == "stopped" and acts.startswith("i") and acts[1:2] in ("f", "g")
+
+
+@pytest.mark.parametrize("verb, crosses", [("entered the crosswalk from the east sidewalk", True),
+                                           ("entered the crosswalk", False)])
+def test_entering_a_crosswalk_from_the_sidewalk_is_crossing(verb: str, crosses: bool) -> None:
+    # A rider already travelling along (a sidewalk, a bike path) who goes on into the crosswalk is not crossing the
+    # AV's path from the side; one entering it from the sidewalk is.
+    text = (f"The Cruise AV was traveling northbound on Sanchez Street when a skateboarder {verb} and made contact "
+            f"with the front right fender of the Cruise AV.")
+    assert ("m" in _party(text)[1]) is crosses
+
+
+def test_reversing_into_a_parking_space_ends_at_the_backing() -> None:
+    # The parking would have come after the contact: the string ends at contact (sketch.md).
+    text = ("The Waymo AV was slowly approaching stopped traffic when a vehicle in the right adjacent lane started "
+            "reversing into a parallel parking space. The front left bumper of the vehicle scraped the right side "
+            "of the Waymo AV.")
+    assert _party(text)[1] == "k"
+    ego = ("While the driver of the Cruise AV attempted to reverse into a parallel parking spot, the driver made "
+           "contact with another parked vehicle's front bumper.")
+    assert _ego(ego)[1] == "k"
