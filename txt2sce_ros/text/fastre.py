@@ -191,6 +191,45 @@ def _fold(seq: Any) -> None:
             raise _Unfoldable  # back-references, conditionals
 
 
+_WORD_CHAR = re.compile(r"\w")
+
+
+def _boundary_after(c: int) -> tuple[Any, Any]:
+    """`(?<!\w.)` as a parse-tree item: placed right after a word character, it holds exactly where a `\b` before
+    that character would (the character before it is no word character, or there is none)."""
+    return _p.parse(r"(?<!\w.)").data[0]  # type: ignore[no-any-return]
+
+
+def _hoist_boundary(seq: Any) -> None:
+    """Rewrite, in place, a leading `\b` before a word literal (`\bturn`, `\b(?:came|come)`) as the literal followed
+    by a look-behind (`t(?<!\w.)urn`, `(?:c(?<!\w.)ame|...)`). The two match at exactly the same places, but `re`
+    scans for a pattern's first literal (or the set of its branches' first characters) in C, while a pattern that
+    starts with `\b` is tried at every position of the text. Only the folded scanner gets this (it finds where
+    matches start; the original pattern, anchored there, still makes the match)."""
+    data = seq.data
+    if not data:
+        return
+    op, av = data[0]
+    if op is _c.BRANCH:
+        for b in av[1]:
+            _hoist_boundary(b)
+        return
+    if op is _c.SUBPATTERN and len(data) == 1:
+        _hoist_boundary(av[3])
+        return
+    if op is not _c.AT or av is not _c.AT_BOUNDARY or len(data) < 2:
+        return
+    nop, nav = data[1]
+    if nop is _c.LITERAL and _WORD_CHAR.match(chr(nav)):
+        seq.data = [data[1], _boundary_after(nav)] + data[2:]
+    elif nop is _c.SUBPATTERN and not (nav[1] | nav[2]) and len(nav[3].data) == 1 and nav[3].data[0][0] is _c.BRANCH:
+        # "\b(?:a|b)c" -> "(?:\ba|\bb)c": the boundary moves into each branch, then each is rewritten.
+        for b in nav[3].data[0][1][1]:
+            b.data = [(_c.AT, _c.AT_BOUNDARY)] + b.data
+            _hoist_boundary(b)
+        seq.data = data[1:]
+
+
 def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
     """The case-sensitive twin of an IGNORECASE pattern for lowercase ASCII texts, or None.
 
@@ -202,6 +241,7 @@ def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
     try:
         tree = _p.parse(rx.pattern, rx.flags)
         _fold(tree)
+        _hoist_boundary(tree)
         tree.state.flags &= ~re.IGNORECASE
         return _compiler.compile(tree, rx.flags & ~re.IGNORECASE)  # type: ignore[no-any-return]
     except _Unfoldable:

@@ -28,6 +28,8 @@ _DET_END = compile_gated(r"\b(?:a|an|the|another|one|that|this|its|their|his|her
 # ("a fixed object (solar panel)") keep their words.
 _PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
                         r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*)\)", re.I)
+#: A quoted name defined in parentheses: "(the 'TRI Vehicle")", "("the shuttle")".
+_ALIAS_DEF = compile_gated(r"\(\s*(?:the\s+)?[\"']\s*([A-Za-z][\w.-]*(?:\s+[\w.-]+){0,3}?)\s*[\"']\s*\)")
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.
 _ABBREV = compile_gated(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
@@ -119,6 +121,13 @@ def normalise(text: str) -> str:
     one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
     if one and _COMPANY_RE.search(t[max(0, one.start() - 60):one.start()]):
         t = fre.sub(r"\b(?:vehicle|car|v)\s*#?\s*1\b(?!\s*\))", "the AV", t, flags=re.I)
+    alias = _ALIAS_DEF.search(t)
+    if alias and not any(rx.search(alias.group(1)) for rx in _EGO_RES) and \
+            any(rx.search(t[max(0, alias.start() - 80):alias.start()]) for rx in _EGO_RES):
+        # "A Toyota Research Institute Vehicle (the 'TRI Vehicle") ... the TRI Vehicle then impacted the barrier":
+        # a quoted name given right after the AV's name is the AV's, wherever the text uses it.
+        t = t[:alias.end()] + fre.sub(rf"\b(?:the\s+)?{re.escape(alias.group(1))}\b", "the AV", t[alias.end():],
+                                      flags=re.I)
     t = _PAREN_DEF.sub("", t)
     for rx in _EGO_RES:
         t = rx.sub(" EGO", t)
