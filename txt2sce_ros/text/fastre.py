@@ -391,7 +391,7 @@ _CACHE_MAX = 1024
 
 
 def _cached(pattern: str, flags: int) -> re.Pattern[str]:
-    key = (pattern, int(flags))
+    key = (pattern, flags)  # a RegexFlag hashes and compares as its int: no conversion per call
     rx = _CACHE.get(key)
     if rx is None:
         if len(_CACHE) >= _CACHE_MAX:

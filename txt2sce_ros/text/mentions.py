@@ -114,7 +114,9 @@ def normalise(text: str) -> str:
     if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
-    for m in fre.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I):
+    # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
+    numbered = fre.search(r"\((?:vehicle|car|v)\s*#?\s*[2-9]\)", t, re.I) is not None
+    for m in fre.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I) if numbered else ():
         head = m.group(1)
         t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
     # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.

@@ -298,6 +298,14 @@ def side_named(ctx: str) -> str | None:
 
 
 def heading(d: Doc, who: int) -> int | None:
+    """The compass heading (degrees) the text gives the AV (-1) or entity `who`, read once per story."""
+    key = f"heading:{who}"
+    if key not in d.memo:
+        d.memo[key] = _heading(d, who)
+    return d.memo[key]  # type: ignore[return-value]
+
+
+def _heading(d: Doc, who: int) -> int | None:
     for i, s in enumerate(d.sents):
         for m in d.ments[i]:
             ent = -1 if m.kind in ("ego", "egod") else m.entity
@@ -336,7 +344,14 @@ _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+\s+){1,6})")
 
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
     """Where the AV was touched, (front/rear, left/right), from the contact sentence's "the rear driver side of
-    EGO" / "EGO's front bumper" (US vehicles: the driver side is the left)."""
+    EGO" / "EGO's front bumper" (US vehicles: the driver side is the left). Read once per contact."""
+    key = f"ego_contact_part:{d.contact_sent}"
+    if key not in d.memo:
+        d.memo[key] = _ego_contact_part(d)
+    return d.memo[key]  # type: ignore[return-value]
+
+
+def _ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
     if d.contact_sent is None:
         return None, None
     s = d.sents[d.contact_sent]
