@@ -146,11 +146,12 @@ def find_contact(d: Doc) -> None:
         d.partner = d.ents[d.partner].merged_into
     # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
     if d.partner is not None and d.ents[d.partner].kind == "obstacle":
-        ms = d.ments[d.contact_sent]
+        # A group word inside a name ("traffic" of "the traffic sign") is no object of its own.
+        ms = [x for x in d.ments[d.contact_sent] if x.kind != "group"]
         idx = [k for k, x in enumerate(ms) if x.entity == d.partner]
         for k in range(idx[0] + 1 if idx else len(ms), len(ms)):
             between = d.sents[d.contact_sent][ms[k - 1].end:ms[k].start]
-            if ms[k].kind == "obstacle" and fre.fullmatch(r"[^,;]{0,30}\band\s*", between):
+            if ms[k].kind == "obstacle" and fre.fullmatch(r"[^,;]{0,30}\band\s*(?:(?:the|a|an)\s+)?", between):
                 d.struck.add(ms[k].entity)
             else:
                 break
@@ -191,7 +192,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         first_detail = [m for m in e.mentions if m.sent not in d.summary]
         first = first_detail[0] if first_detail else e.first
         is_partner = e.idx == d.partner
-        if not is_partner and not before_contact(d, first.sent, first.start):
+        if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start):
             continue
         moved = any(a.who == e.idx and a.code in "abcdefgijkmFTO" for a in d.acts)  # O: out of a parking spot
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
