@@ -27,6 +27,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)|"
+          r"\b(?:proceeded|pulled|pulling|moved|merged)\s+(?:back\s+)?(?:out\s+)?into\s+the\s+(?:driving|travel|traffic)\s+lane\b|"
           r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb)"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
@@ -38,7 +39,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bbacking\b"),
     ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
-          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb"),
+          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb|"
+          r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel\s+)?parking\s+maneuver"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
@@ -54,7 +56,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
           r"(?:into\s+)?the\s+(?:oncoming|"
-          r"opposing|opposite)\s+(?:\w+\s+)?lane|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
+          r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
+          r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
@@ -62,6 +65,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
           r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
+          r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
           r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
@@ -105,7 +109,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
     "i": ("began", "begin", "start", "forward", "proceed"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic"),
+    "O": ("pull", "traffic", "lane"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
@@ -258,6 +262,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if a.code == "l" and dedup and dedup[-1].code == "k" and dedup[-1].who == a.who and \
                 a.pos - (dedup[-1].pos + len(dedup[-1].text)) <= 2:
             continue  # "reversing into a parking space": where the backing was headed; the string ends at contact
+        turn = next((x for x in reversed(dedup) if x.who == a.who), None)
+        if (a.code == "F" or (a.code in ("f", "g") and a.text[:5].lower() == "enter")) and turn is not None and \
+                turn.code in ("d", "e") and fre.fullmatch(r"[^,.;]{0,60}\band\s+(?:\w+ly\s+)?",
+                                                         s[turn.pos + len(turn.text):a.pos]):
+            continue  # "turned right and cut in front of EGO", "... and entered the right lane": where the turn ends
         if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
                 r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
             continue
