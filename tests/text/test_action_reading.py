@@ -79,3 +79,51 @@ def test_reversing_into_a_parking_space_ends_at_the_backing() -> None:
     ego = ("While the driver of the Cruise AV attempted to reverse into a parallel parking spot, the driver made "
            "contact with another parked vehicle's front bumper.")
     assert _ego(ego)[1] == "k"
+
+
+def test_a_lane_entered_right_after_a_turn_is_where_the_turn_ends() -> None:
+    text = ("The Zoox vehicle was stopped at a red light on westbound Flamingo Road. When the light turned green, the "
+            "Zoox vehicle began to proceed straight. A pickup truck approaching from the Zoox vehicle's right made a "
+            "right turn onto westbound Flamingo Road and entered the right lane, and its left side made contact with "
+            "the front right corner of the Zoox vehicle.")
+    assert _party(text)[1].endswith("e")
+    cut = ("The Zoox vehicle was proceeding southbound in the right lane of Fourth Street. A box truck in the left "
+           "adjacent lane abruptly turned right and cut in front of the Zoox vehicle, making contact with its left "
+           "front sensor.")
+    assert _party(cut)[1].endswith("e")
+
+
+def test_entering_the_adjacent_lane_is_a_lane_change() -> None:
+    text = ("The Waymo AV was traveling north in the rightmost of two lanes on Polk Street when it partially entered "
+            "the left adjacent lane to make room for a cyclist. A box truck behind in the left adjacent lane proceeded "
+            "forward and made contact with the rear driver side of the Waymo AV.")
+    assert _ego(text) == ("moving", "af")
+
+
+def test_back_into_the_driving_lane_from_a_pull_over_is_a_pull_out() -> None:
+    text = ("The Waymo AV was stopped at the curb of 24th Street after a pull-over, when the test driver took manual "
+            "control and proceeded into the driving lane. The Waymo AV then made contact with a sedan passing it on "
+            "the left side.")
+    assert _ego(text) == ("stopped", "if")
+
+
+def test_a_parking_maneuver_is_pulling_over() -> None:
+    text = "A Woven Planet vehicle in manual mode contacted the curb while making a parking maneuver on Fell Street."
+    assert _ego(text)[1] == "l"
+
+
+def test_every_object_joined_to_the_struck_one_is_struck() -> None:
+    text = ("After turning right onto Mission Blvd, the Pony.ai AV performed a left lane change. While performing the "
+            "lane change, the Pony.ai AV came into contact with a center divider on Mission Blvd. and the traffic "
+            "sign that was posted on the divider.")
+    sk = extract(text, "t")
+    assert [o.category for o in sk.obstacles] == ["barrier", "pole"]
+
+
+def test_a_quoted_name_given_to_the_av_is_the_av() -> None:
+    text = ("A Toyota Research Institute vehicle (the 'TRI Vehicle\") was travelling in the #1 lane of I-80. A "
+            "sedan changed lanes into the #1 lane, where it struck the TRI Vehicle. The TRI Vehicle then struck the "
+            "center barrier.")
+    sk = extract(text, "t")
+    assert len(sk.npcs) == 1 and sk.npcs[0].category == "car"
+    assert any(o.category == "barrier" for o in sk.obstacles)  # the AV's own contact, not the sedan's

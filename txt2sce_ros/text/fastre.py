@@ -194,14 +194,14 @@ def _fold(seq: Any) -> None:
 _WORD_CHAR = re.compile(r"\w")
 
 
-def _boundary_after(c: int) -> tuple[Any, Any]:
-    """`(?<!\w.)` as a parse-tree item: placed right after a word character, it holds exactly where a `\b` before
+def _boundary_after() -> tuple[Any, Any]:
+    r"""`(?<!\w.)` as a parse-tree item: placed right after a word character, it holds exactly where a `\b` before
     that character would (the character before it is no word character, or there is none)."""
     return _p.parse(r"(?<!\w.)").data[0]  # type: ignore[no-any-return]
 
 
 def _hoist_boundary(seq: Any) -> None:
-    """Rewrite, in place, a leading `\b` before a word literal (`\bturn`, `\b(?:came|come)`) as the literal followed
+    r"""Rewrite, in place, a leading `\b` before a word literal (`\bturn`, `\b(?:came|come)`) as the literal followed
     by a look-behind (`t(?<!\w.)urn`, `(?:c(?<!\w.)ame|...)`). The two match at exactly the same places, but `re`
     scans for a pattern's first literal (or the set of its branches' first characters) in C, while a pattern that
     starts with `\b` is tried at every position of the text. Only the folded scanner gets this (it finds where
@@ -221,7 +221,7 @@ def _hoist_boundary(seq: Any) -> None:
         return
     nop, nav = data[1]
     if nop is _c.LITERAL and _WORD_CHAR.match(chr(nav)):
-        seq.data = [data[1], _boundary_after(nav)] + data[2:]
+        seq.data = [data[1], _boundary_after()] + data[2:]
     elif nop is _c.SUBPATTERN and not (nav[1] | nav[2]) and len(nav[3].data) == 1 and nav[3].data[0][0] is _c.BRANCH:
         # "\b(?:a|b)c" -> "(?:\ba|\bb)c": the boundary moves into each branch, then each is rewritten.
         for b in nav[3].data[0][1][1]:
