@@ -113,3 +113,27 @@ def test_format_draws_prints_min_and_median() -> None:
     assert lines[3].endswith("- x")
     assert lines[-2].split()[1:3] == ["1/2", "0/2"]            # min found, min right-first
     assert lines[-1].split()[1:3] == ["2/2", "1/2"]            # medians
+
+
+def test_assess_within_trees_ranks_what_the_mutations_changed() -> None:
+    """Tree `a` (4 scenarios) grew from a seed with a party turning across (`R1+d`) in all of them; trees b-d
+    (8 scenarios each) from seeds without one. The fault acts on a yellow light, which a mutation brings into two
+    scenarios of every tree. Across all scenarios, the rare `R1+d` rides along with tree `a`'s differential runs
+    and outranks the yellow; within trees it never varies and says nothing, and the yellow comes first."""
+    spec = next(f for f in FAULTS if f.name == "red_light_misread")
+    elements, trees = {}, {}
+    for t, n, seed_own in (("a", 4, {"R1+d"}), ("b", 8, set()), ("c", 8, set()), ("d", 8, set())):
+        for i in range(n):
+            sid = f"{t}/n{i}"
+            trees[sid] = t
+            elements[sid] = frozenset(seed_own | {"signal:yellow" if i < 2 else "signal:green"})
+    nominal = {i: frozenset() for i in elements}
+    # the fault shows in both yellow scenarios of `a`, in one of `b`'s
+    faulty = {i: frozenset({"Misinterp"} if i in ("a/n0", "a/n1", "b/n0") else ()) for i in elements}
+    row, lift = assess(spec, nominal, faulty, elements, min_support=1)
+    assert row.right_rank == 2 and lift[0].element == "R1+d"           # pooled: the seed's own element first
+    row, lift = assess(spec, nominal, faulty, elements, min_support=1, trees=trees)
+    assert row.right_rank == 1 and lift[0].element == "signal:yellow"
+    assert "R1+d" not in {r.element for r in lift}                      # constant within its tree: not ranked
+    # O/E within trees: 3 observed; expected 2 * 2/4 (tree a) + 2 * 1/8 (tree b), c and d showed nothing
+    assert lift[0].support == 3 and abs(lift[0].lift - 3 / 1.25) < 1e-9

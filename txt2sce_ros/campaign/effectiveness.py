@@ -3,7 +3,10 @@
 For each stand-in planner fault mode the same scenarios run twice, with the nominal planner and with the fault
 switched on. The fault is *found* when some scenario shows the fault's category with the fault and not without it.
 The lift ranking is then computed over those differential runs (a scenario counts for the category when the fault
-added it), and the rank of the element the fault depends on is reported: 1 means the analysis points straight at it.
+added it), within each scenario tree (`lift_table` strata: a tree's scenarios share its seed's parties, map and
+events, so across trees those ride along with whatever a mutation caused; within a tree only what the mutations
+changed tells a run that shows the category from one that does not), and the rank of the element the fault
+depends on is reported: 1 means the analysis points straight at it.
 """
 
 from __future__ import annotations
@@ -67,14 +70,18 @@ def names_trigger(element: str, triggers: Sequence[str]) -> bool:
 
 
 def assess(spec: FaultSpec, nominal: Mapping[str, frozenset[str]], faulty: Mapping[str, frozenset[str]],
-           elements: Mapping[str, frozenset[str]], *, min_support: int = 2) -> tuple[EffectivenessRow, list[LiftRow]]:
-    """`nominal`/`faulty`: scenario id -> categories shown; `elements`: scenario id -> its scenario elements."""
+           elements: Mapping[str, frozenset[str]], *, min_support: int = 2,
+           trees: Mapping[str, str] | None = None) -> tuple[EffectivenessRow, list[LiftRow]]:
+    """`nominal`/`faulty`: scenario id -> categories shown; `elements`: scenario id -> its scenario elements;
+    `trees`: scenario id -> the tree it grew in, to rank by the lift within trees (`lift_table` strata: what the
+    tree's mutations changed, not what its seed holds throughout); None ranks over all scenarios at once."""
     ids = sorted(set(nominal) & set(faulty) & set(elements))
     with_fault = sum(1 for i in ids if spec.category in faulty[i])
     without = sum(1 for i in ids if spec.category in nominal[i])
     diff = {i for i in ids if spec.category in faulty[i] and spec.category not in nominal[i]}
     runs = [(elements[i], frozenset({spec.category}) if i in diff else frozenset()) for i in ids]
-    rows = lift_table(runs, min_support=min_support).get(spec.category, [])
+    strata = [trees[i] for i in ids] if trees is not None else None
+    rows = lift_table(runs, min_support=min_support, strata=strata).get(spec.category, [])
     rank = next((k for k, r in enumerate(rows, 1) if names_trigger(r.element, spec.triggers)), None)
     top = f"{rows[0].element} ({rows[0].lift:.2f}×)" if rows else "–"
     return EffectivenessRow(spec.name, spec.category, bool(diff), with_fault, without, len(diff), top, rank), rows
@@ -309,9 +316,10 @@ def run_draws(inputs: Sequence[str | Path], cfg: StudyConfig) -> list[DrawResult
         nominal = cats(by_config[""], trees)
         elements = {f"{t.tree}/{t.scenario_id}": elements_of_file(t.scenario_path) for t in by_config[""]
                     if t.tree in trees}
+        tree_of = {f"{t.tree}/{t.scenario_id}": str(t.tree) for t in by_config[""] if t.tree in trees}
         rows, details = [], {}
         for spec in specs:
-            row, lift = assess(spec, nominal, fault_cats(spec.name, trees), elements)
+            row, lift = assess(spec, nominal, fault_cats(spec.name, trees), elements, trees=tree_of)
             rows.append(row)
             details[spec.name] = {"row": asdict(row), "why": spec.why, "right_triggers": list(spec.triggers),
                                   "lift": [asdict(r) for r in lift[:10]]}
