@@ -17,6 +17,8 @@ class BlockKind(str, Enum):
     OBSTACLE = "obstacle"          # an obstacle's ScenarioObject + its Init Private
     NEW_OBSTACLE = "new_obstacle"  # an empty slot (ScenarioObject + Private) that OIM fills
     NEW_PARTY = "new_party"        # an empty slot (ScenarioObject + Private + Story) that NCM fills (parties.py)
+    NEW_SIGNAL = "new_signal"      # an empty slot (Init actions + Story) that TLS fills with a plan for the map's
+                                   # lights facing the AV (a seed whose report named no signal)
 
 
 @dataclass(frozen=True)

@@ -111,7 +111,7 @@ def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, A
     """Trigger conditions (in the analysis's element names) the tree can bring into this seed's scenarios, read
     from its block versions without building it: NPC categories, a party close to the AV at the start (WPM-near,
     NCM-new close_behind), a cyclist (NCM-new cyclist_ahead), a lead that brakes (`events:h`), a dilemma-zone
-    yellow (TLS), and `start:standing` (TSM-start, or a seed that starts standing). What seed picking
+    yellow (TLS, on the seed's signal or on a new one for the map's lights), and `start:standing` (TSM-start, or a seed that starts standing). What seed picking
     covers, so a seed is chosen for what its tree can test, not only for what its report held."""
     cfg = cfg or tree_config()
     seed_path = Path(seed_path)
@@ -126,7 +126,8 @@ def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, A
             elif b.kind.value == "new_party":
                 out |= {"NCM-new:cyclist_ahead": {"category:bicycle"}, "NCM-new:lead_brakes": {"events:h"},
                         "NCM-new:close_behind": {"near_start:yes"}}.get(v.operator, set())
-            elif b.kind.value == "signal" and any("TimeToCollisionCondition" in f for f in v.fragments):
+            elif b.kind.value in ("signal", "new_signal") and any("TimeToCollisionCondition" in f
+                                                                  for f in v.fragments):
                 out.add("signal:yellow")
             elif b.kind.value == "ego" and v.operator == "TSM-start":
                 out.add("start:standing")
@@ -157,7 +158,8 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
     order = tuple(cfg["tree"]["order"])
     dis = disassemble(rebased, source=str(seed_path), order=order,
                       new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)),
+                      new_signal_slot=bool(cfg["tree"].get("new_signal_slot", False)))
     key = seed_key(seed_path.name)
     variants: list[list[Variant]] = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
     used = [i for i, v in enumerate(variants) if v]  # a block with no possible version is left as in the seed
@@ -289,7 +291,8 @@ def _seed_blocks(seed_path: Path, cfg: dict[str, Any]) -> tuple[Any, etree._Elem
     data, root, ctx = _read_seed(seed_path)
     dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
                       order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)))
+                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)),
+                      new_signal_slot=bool(cfg["tree"].get("new_signal_slot", False)))
     return data, root, ctx, dis, seed_key(seed_path.name)
 
 

@@ -12,6 +12,7 @@ Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_fo
 | obstacle | `ScenarioObject[@name='obs…']` + its Private |
 | new_obstacle | an empty ScenarioObject slot after the last entity and an empty Private slot after the last Private |
 | new_party | as new_obstacle, plus an empty Story slot after the last Story (a party inserted on the AV's path) |
+| new_signal | for a seed without a signal Story: an empty slot after the last Init `GlobalAction` (before the Privates, as the schema orders them) and an empty Story slot (TLS writes a plan for the map's lights there) |
 
 A signal block's parts are rewritten whole by the TLS mutation (`environment.tls`, and `dilemma_yellow` for a yellow
 that waits for the ego's dilemma zone); the events of the signal Story are not event blocks of their own.
@@ -34,7 +35,7 @@ from .xml import parse_bytes, to_text
 
 _MARK = "@txt2sce-slot:"
 _MARK_RE = re.compile(r"<!--@txt2sce-slot:(\d+)-->")
-DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "npc", "event", "obstacle", "new_obstacle")
+DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "new_signal", "npc", "event", "obstacle", "new_obstacle")
 
 
 def entity_kind(name: str) -> BlockKind:
@@ -76,10 +77,11 @@ class _Cutter:
 
 
 def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, ...] = DEFAULT_ORDER,
-                new_obstacle_slots: int = 0, new_party_slots: int = 0) -> Disassembly:
+                new_obstacle_slots: int = 0, new_party_slots: int = 0, new_signal_slot: bool = False) -> Disassembly:
     """δ(seed) -> (T, B). `order` lists block kinds in insertion order; kinds left out stay in the template.
     `new_obstacle_slots` empty slots are added for obstacle insertion (OIM), `new_party_slots` for parties
-    (`parties.py`)."""
+    (`parties.py`), and with `new_signal_slot` a seed without a signal Story gets an empty one (with its Init
+    slot) that TLS can fill."""
     root = parse_bytes(seed, source)
     if root.tag != "OpenSCENARIO":
         raise InputError(f"root element is <{root.tag}>, not <OpenSCENARIO>", source=source, element=root.tag)
@@ -118,7 +120,7 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
     cutter = _Cutter()
     cut: dict[BlockKind, list[tuple[str, tuple[int, ...]]]] = {k: [] for k in BlockKind}
     for kind in BlockKind:
-        if kind in (BlockKind.NEW_OBSTACLE, BlockKind.NEW_PARTY) or kind not in wanted:
+        if kind in (BlockKind.NEW_OBSTACLE, BlockKind.NEW_PARTY, BlockKind.NEW_SIGNAL) or kind not in wanted:
             continue
         for key, parts in found[kind]:
             cut[kind].append((key, tuple(cutter.cut(el) for el in parts)))
@@ -129,6 +131,15 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
             s_obj, _ = cutter.empty_after(entities, last_obj)
             s_priv, _ = cutter.empty_after(actions, last_priv)
             cut[BlockKind.NEW_OBSTACLE].append((free_name("obs", taken), (s_obj, s_priv)))
+
+    if BlockKind.NEW_SIGNAL in wanted and new_signal_slot and not signal_stories:
+        # Init actions: GlobalActions come before any Private (InitActions is a sequence), so the slot follows
+        # the last GlobalAction, or opens the list
+        globals_ = [c for c in actions if c.tag == "GlobalAction"]
+        s_init, _ = cutter.empty_after(actions, globals_[-1] if globals_ else None)
+        storyboard = root.find("Storyboard")
+        s_story, _ = cutter.empty_after(storyboard, _last_story(storyboard))
+        cut[BlockKind.NEW_SIGNAL].append(("signal_new", (s_init, s_story)))
 
     if BlockKind.NEW_PARTY in wanted:
         storyboard = root.find("Storyboard")

@@ -6,7 +6,7 @@ from collections import defaultdict
 from pathlib import Path
 from typing import Any
 
-KIND_COLOURS = {"weather": "#1f77b4", "ego": "#7f7f7f", "npc": "#ff7f0e", "signal": "#d62728", "event": "#2ca02c",
+KIND_COLOURS = {"weather": "#1f77b4", "ego": "#7f7f7f", "npc": "#ff7f0e", "signal": "#d62728", "new_signal": "#d62728", "event": "#2ca02c",
                 "obstacle": "#8c564b", "new_obstacle": "#9467bd", None: "#000000"}
 
 

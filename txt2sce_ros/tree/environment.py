@@ -253,6 +253,46 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
     return True
 
 
+#: m: the map's lights within this distance of the light facing the AV belong to its junction (a new plan sets them).
+JUNCTION_RADIUS = 60.0
+#: rad: a light whose heading is within this of the AV's light's (or of its opposite) is on the AV's approach or
+#: the opposite one and shares its phase; the others are the crossing legs and show the conflicting state.
+_AXIS = math.radians(45.0)
+
+
+def new_signal(ctx: SeedContext, state: str, rec: Recorder, *, timing: SignalTiming | None = None,
+               slack: float = 0.0, time_limit: float = 60.0) -> list[etree._Element] | None:
+    """TLS on a seed without a signal plan (its report named no light, yet its map has lights facing the AV): the
+    parts of a new signal block (one Init `GlobalAction` per light, then the signal Story, in the timed form of
+    `seed.signal_story`) for the lights of the AV's junction — the map's traffic lights within `JUNCTION_RADIUS`
+    m of the first light facing the AV. The AV's approach and the opposite one show `state` and the crossing legs
+    the conflicting one, phase by phase as `_schedule` says (as `tls` rewrites a seed's own plan), so a yellow can
+    then wait for the dilemma zone (`dilemma_yellow`). Lights nothing sets stay `off`, which a stack passes as if
+    there were none: this is what brings a light into such a seed. None when no traffic light faces the AV or the
+    AV cannot reach its stop line (`stop_line`, `slack` as there): a light it never meets tests nothing."""
+    net = ctx.network
+    if net is None:
+        return None
+    facing = [sid for sid in ctx.ego_signals if sid in net.signals and net.signals[sid].is_traffic_light]
+    if not facing or stop_line(ctx, facing[0], slack=slack) is None:
+        return None
+    primary = net.signals[facing[0]]
+    junction = sorted(str(sid) for sid, sg in net.signals.items()
+                      if sg.is_traffic_light and math.hypot(sg.x - primary.x, sg.y - primary.y) <= JUNCTION_RADIUS)
+    axis = {sid for sid in junction if abs(math.cos(net.signals[sid].heading - primary.heading)) >= math.cos(_AXIS)}
+    timing = timing or signal_timing()
+    phases = tuple(SignalPhase(name, float(rec.db.check_value("Phase", "duration", f"{duration:g}")),
+                               tuple((sid, colour if sid in axis else conflict) for sid in junction))
+                   for name, duration, colour, conflict in _schedule(state, timing))
+    inits, story = write_plan(SignalPlan(f"signal_ctrl_at_{primary.id}", phases), time_limit=time_limit)
+    parts: list[etree._Element] = [*inits, story]
+    for el in parts:
+        rec.check_tree(el)
+    rec.note(f"Story[@name='signal_ctrl_at_{primary.id}']", None,
+             f"{len(junction)} lights, {' '.join(f'{p.name}:{p.duration:g}' for p in phases)} ({state})")
+    return parts
+
+
 def oim_position(ctx: SeedContext, obstacle_width: float, rng: np.random.Generator, cfg: dict[str, Any],
                  ) -> LanePos | None:
     """Context-aware obstacle position on the AV's path: a distance ahead of the ego's start drawn uniformly

@@ -178,7 +178,7 @@ def all_features(kind: BlockKind, elements: list[etree._Element | None], origina
         feats["events"] = "".join(split_event_name(e.get("name", ""))[1] for e in story.iter("Event")) \
             if story is not None else ""
         return feats
-    if kind is BlockKind.SIGNAL:
+    if kind in (BlockKind.SIGNAL, BlockKind.NEW_SIGNAL):
         return signal_features(elements, ctx.ego_signals)
     if kind is BlockKind.EVENT:
         return event_features(elements[0], originals[0], cfg, n)
@@ -190,5 +190,5 @@ def block_features(kind: BlockKind, elements: list[etree._Element | None], origi
     """The feature tuple of one version of a block: the kind, then the configured features in order. The first
     feature named for a kind is its abstract representation (Table V)."""
     feats = all_features(kind, elements, originals, ctx, cfg)
-    key = "obstacle" if kind is BlockKind.NEW_OBSTACLE else kind.value
+    key = {BlockKind.NEW_OBSTACLE: "obstacle", BlockKind.NEW_SIGNAL: "signal"}.get(kind, kind.value)
     return (key, *(feats[name] for name in cfg["features"][key]))

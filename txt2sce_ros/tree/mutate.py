@@ -6,6 +6,7 @@
 | ego | WPM (initial location, context-aware); TSM-start (standing start) | `mutations_per_block`, + 1 |
 | npc | NCM (+ DM, VPM follow the category) + WPM initial location; WPM-near (close to the AV) | enumerate every category, + 1 |
 | signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate yellow / red / green |
+| new_signal | TLS-new: a plan for the map's lights facing the AV, in a seed without one (environment.new_signal) | enumerate yellow / red / green |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
 | new_party | NCM-new: a cyclist ahead, a lead that brakes, a car close behind, on the AV's path (parties.py) | enumerate every role the road allows |
@@ -27,7 +28,7 @@ from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
 from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, standing_start, tsm
-from .environment import dilemma_yellow, obstacle_fragments, oim_position, tls, wm
+from .environment import dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .parties import ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
@@ -61,8 +62,14 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
 
     seen: set[tuple[str, ...]] = set()
 
-    def emit(elements: list[etree._Element | None], operator: str, rec: Recorder) -> None:
-        frags = tuple(to_text(e) if e is not None else "" for e in elements)
+    def emit(elements: list[etree._Element | None], operator: str, rec: Recorder,
+             per_slot: tuple[int, ...] | None = None) -> None:
+        # `per_slot`: how many of `elements` go into each of the block's slots, in order (default one each: a slot
+        # that takes several siblings, the Init actions of a new signal plan, holds their texts joined)
+        counts = per_slot or (1,) * len(elements)
+        bounds = [sum(counts[:k]) for k in range(len(counts) + 1)]
+        frags = tuple("".join(to_text(e) for e in elements[a:b] if e is not None)
+                      for a, b in zip(bounds, bounds[1:]))
         if frags in seen:  # two draws that made the same XML would make the same files: keep one
             return
         seen.add(frags)
@@ -119,6 +126,17 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                     dilemma_yellow(els, ctx, rec, slack=cfg["trajectory"]["init_location"]["max_shift"],
                                    time_limit=limit)
                 emit(els, "TLS", rec)
+        elif block.kind is BlockKind.NEW_SIGNAL:
+            limit = time_limit_of(ctx.root)
+            slack = float(cfg["trajectory"]["init_location"]["max_shift"])
+            for state in _choices("new_signal", list(cfg["environment"]["signal_states"]), cfg, rng):
+                rec = Recorder()
+                made = new_signal(ctx, state, rec, slack=slack, time_limit=limit)
+                if made is None:
+                    break                   # no light faces the AV where it drives: nothing to bring in
+                if state == "yellow":       # reachable (new_signal checked the stop line): the dilemma zone
+                    dilemma_yellow(made, ctx, rec, slack=slack, time_limit=limit)
+                emit(made, "TLS-new", rec, per_slot=(len(made) - 1, 1))
         elif block.kind is BlockKind.EVENT:
             entity, action = split_event_name(block.key)
             cat = ctx.categories.get(entity, "car")
