@@ -125,3 +125,24 @@ def test_written_position_wins_and_weather_is_read(gold_seeds: dict[str, tuple[P
     assert "position:R6" not in scenario_elements(other, net)
     rainy = xml.replace(b'precipitationType="dry" intensity="0.0"', b'precipitationType="rain" intensity="0.8"')
     assert "weather:rain" in scenario_elements(rainy) and "weather:clear" in scenario_elements(xml)
+
+
+def test_stratified_lift_breaks_ties_of_elements_added_together_by_the_pooled_lift() -> None:
+    """One mutation adds a car close behind the AV (`category:car` and `near_start:yes` together) in each tree;
+    within trees the two cannot be told apart, but cars are everywhere in tree `b`'s seed without the category."""
+    runs, strata = [], []
+    for t in ("a", "b"):
+        for i in range(6):
+            added = {"category:car", "near_start:yes"} if i < 2 else set()
+            own = {"category:car"} if t == "b" else set()
+            runs.append((frozenset(added | own | {f"weather:{'rain' if i % 2 else 'clear'}"}),
+                         frozenset({"StartFail"} if i < 2 else ())))
+            strata.append(t)
+    rows = lift_table(runs, min_support=1, strata=strata)["StartFail"]
+    # tree b's car is constant there: only tree a counts for it; near_start varies in both
+    by = {r.element: r for r in rows}
+    assert by["near_start:yes"].support == 4 and by["category:car"].support == 2
+    assert by["near_start:yes"].lift == pytest.approx(by["category:car"].lift)
+    assert rows[0].element == "near_start:yes"
+    with pytest.raises(ValueError):
+        lift_table(runs, strata=strata[:-1])

@@ -10,7 +10,9 @@ element *varies* (some runs have it, some do not). A scenario tree holds one see
 seed's own elements (its parties' positions and events, its map): across trees those ride along with whatever
 the tree's mutations caused and can outrank the cause, while within a tree only what a mutation changed differs
 between a run that shows the category and one that does not. An element constant in every stratum says nothing
-about what it does and is not ranked.
+about what it does and is not ranked. Elements one mutation always brings in together (a car standing close behind
+the AV: `category:car`, `position:R6/same`, `near_start:yes`) have the same stratified lift; the tie is broken by
+the lift over all runs, where the one that is common without the category (cars everywhere) ranks lower.
 """
 
 from __future__ import annotations
@@ -45,22 +47,13 @@ def lift_table(runs: Iterable[tuple[frozenset[str], frozenset[str]]], *, min_sup
     groups: dict[str, list[tuple[frozenset[str], frozenset[str]]]] = defaultdict(list)
     for label, run in zip(labels, runs):
         groups[label].append(run)
+    pooled = _pooled(runs) if strata is not None else {}
     observed: Counter[tuple[str, str]] = Counter()
     expected: defaultdict[tuple[str, str], float] = defaultdict(float)
     with_element: Counter[tuple[str, str]] = Counter()
     cats: set[str] = set()
     for label in sorted(groups):
-        group = groups[label]
-        n = len(group)
-        n_elem: Counter[str] = Counter()
-        n_cat: Counter[str] = Counter()
-        n_both: Counter[tuple[str, str]] = Counter()
-        for elements, shown in group:
-            n_elem.update(elements)
-            n_cat.update(shown)
-            for c in shown:
-                for e in elements:
-                    n_both[(e, c)] += 1
+        n, n_elem, n_cat, n_both = _counts(groups[label])
         cats.update(n_cat)
         for e, ne in n_elem.items():
             if strata is not None and ne == n:      # constant in this stratum: no contrast to learn from
@@ -78,9 +71,31 @@ def lift_table(runs: Iterable[tuple[frozenset[str], frozenset[str]]], *, min_sup
                 continue
             ne = with_element[(e, c)]
             rows.append(LiftRow(c, e, both / exp, both, ne, both / ne, exp / ne))
-        rows.sort(key=lambda r: (-r.lift, -r.support, r.element))
+        # rounded: equal counts pooled in a different order must tie, so the pooled lift can break the tie
+        rows.sort(key=lambda r: (-round(r.lift, 9), -pooled.get((r.element, c), 0.0), -r.support, r.element))
         table[c] = rows
     return table
+
+
+def _counts(runs: list[tuple[frozenset[str], frozenset[str]]]
+            ) -> tuple[int, Counter[str], Counter[str], Counter[tuple[str, str]]]:
+    """Runs, runs per element, runs per category, runs per (element, category)."""
+    n_elem: Counter[str] = Counter()
+    n_cat: Counter[str] = Counter()
+    n_both: Counter[tuple[str, str]] = Counter()
+    for elements, shown in runs:
+        n_elem.update(elements)
+        n_cat.update(shown)
+        for c in shown:
+            for e in elements:
+                n_both[(e, c)] += 1
+    return len(runs), n_elem, n_cat, n_both
+
+
+def _pooled(runs: list[tuple[frozenset[str], frozenset[str]]]) -> dict[tuple[str, str], float]:
+    """(element, category) -> the lift over all runs as one population (the tie-break of a stratified ranking)."""
+    n, n_elem, n_cat, n_both = _counts(runs)
+    return {(e, c): both * n / (n_elem[e] * n_cat[c]) for (e, c), both in n_both.items()}
 
 
 def rank_of(rows: list[LiftRow], *, contains: str) -> int | None:

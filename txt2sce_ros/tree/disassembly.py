@@ -35,7 +35,7 @@ from .xml import parse_bytes, to_text
 
 _MARK = "@txt2sce-slot:"
 _MARK_RE = re.compile(r"<!--@txt2sce-slot:(\d+)-->")
-DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "new_signal", "npc", "event", "obstacle", "new_obstacle")
+DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "npc", "event", "new_signal", "obstacle", "new_obstacle")
 
 
 def entity_kind(name: str) -> BlockKind:
