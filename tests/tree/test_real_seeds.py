@@ -30,7 +30,7 @@ def test_at_least_33_seeds_and_all_round_trip(seeds):
     kinds: set[BlockKind] = set()
     for s in seeds:
         data = s.read_bytes()
-        d = disassemble(data, source=str(s), new_obstacle_slots=1, new_party_slots=1)
+        d = disassemble(data, source=str(s), new_obstacle_slots=1, new_party_slots=1, new_signal_slot=True)
         kinds |= {b.kind for b in d.blocks}
         assert canonical(assemble(d.template, d.originals())) == canonical(data), s.name
         assert sum(b.kind is BlockKind.WEATHER for b in d.blocks) == 1
