@@ -51,7 +51,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return "R6", side or "same", True
     # Oncoming is said of the party itself ("an oncoming truck", "traveling in the opposite direction"), close to
     # its name; "without yielding to oncoming traffic" further on speaks of others.
-    near = " | ".join(f"{m.mods} {d.sents[m.sent][m.end:m.end + 100]}" for m in e.mentions)
+    near = " | ".join(f"{m.mods} {_own_clause(d.sents[m.sent][m.end:m.end + 100])}" for m in e.mentions)
     oncoming = fre.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
                          near + " " + pre, re.I)
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
@@ -167,6 +167,18 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+_CLAUSE_END = re.compile(r"[;]|\b(?:when|while|as|but|after|before|because|until|then)\b|"
+                         r",?\s+(?:and\s+)?(?:EGO|(?:the|a|an)\s+(?:other\s+)?(?!opposite\b|oncoming\b)\w+)\s+"
+                         r"(?:was|were|had|is|yield\w*|stopp\w*|wait\w*|brak\w*)\b", re.I)
+
+
+def _own_clause(after: str) -> str:
+    """The words after a party's name up to the end of its clause: "oncoming" further on speaks of another party
+    ("a van in the left lane, as EGO yielded to an oncoming car")."""
+    m = _CLAUSE_END.search(after)
+    return after[:m.start()] if m else after
 
 
 _STREET = r"((?:[A-Z0-9][\w.'-]*\s+){1,3}?)(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|Dr\b|Way\b|" \
