@@ -51,12 +51,13 @@ def run(args: argparse.Namespace) -> int:
     seed_file = out / "campaign" / "seeds" / manifest["built"][0]["file"]
     bags = out / "ros_bags"
     print(f"demo: running {seed_file.name} over the ROS 2 graph (lock-step), recording to {bags}", file=sys.stderr)
+    earlier = set(bags.rglob("*.mcap"))  # a rerun into the same --out keeps the earlier runs' bags
     codes = run_graph(GraphConfig(scenarios=[str(seed_file)], bag_dir=str(bags), log_dir=str(out / "ros_logs")),
                       timeout=300)
-    recorded = sorted(bags.rglob("*.mcap"))
-    print(f"ros graph:  exit codes {codes}; recordings: {', '.join(str(p) for p in recorded) or 'none'}")
+    recorded = sorted(set(bags.rglob("*.mcap")) - earlier)
+    print(f"ros graph:  exit codes {codes}; recorded now: {', '.join(str(p) for p in recorded) or 'none'}")
     if recorded:
         from ..cli.main import main as cli_main
 
-        cli_main(["judge", str(recorded[0].parent)])
+        cli_main(["judge", str(recorded[-1].parent)])
     return 0 if codes.get("generator") == 0 and recorded else 1
