@@ -33,7 +33,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                         r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind.
     if passing and not fre.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I):
-        return "R6", (passing.group(1) or "").lower() or side_named(ctx[passing.end():passing.end() + 30]) or cside or \
+        # The side it passed on: said with the pass, else the side of the AV it touched, else a side named just
+        # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides).
+        return "R6", (passing.group(1) or "").lower() or cside or side_named(ctx[passing.end():passing.end() + 30]) or \
             "same", True
     if fre.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"

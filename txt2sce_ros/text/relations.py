@@ -79,6 +79,7 @@ _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\
                           r"\b(?:in|from|into|of)\s+the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane\b",
                           re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
+_EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,]{0,40}$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
@@ -203,6 +204,10 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             if not _INTO.search(win[max(0, m.start() - 25):m.start()]):
                 cues.append(Cue("lane", "same", (base + m.start(), base + m.end())))
         for m in _BEHIND.finditer(win):
+            if m.group(0).lower().endswith(" it") and _EGO_CLAUSE.search(win[:m.start()]):
+                # "... the front bumper of EGO, which had come to a stop behind it": the AV is behind the party
+                cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
+                continue
             cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
         for m in _AHEAD.finditer(win):
             if _MOVED_TO.search(win[max(0, m.start() - 30):m.start()]) or \
