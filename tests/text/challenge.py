@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 157 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 163 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -12,7 +12,8 @@ starts, 6/8, 7/8, 8/8 (two labels corrected to the spec after scoring). Batch 12
 and junction legs, scored before any fix: 11/16, 13/16, 13/16; 136-147, same-direction parties turning at
 junctions, left-turn pockets, stop-sign legs, scored before any fix: 8/12, 8/12, 11/12; 148-149, "oncoming" said of other traffic in a
 later clause: 1/2, 0/2, 1/2; 150-157, parties behind and
-beside, passing a parked AV, reversing: 6/8, 4/8, 6/8. Scored per party (position with lane,
+beside, passing a parked AV, reversing: 6/8, 4/8, 6/8; 158-163,
+NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6. Scored per party (position with lane,
 events) and per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss
