@@ -101,7 +101,12 @@ class SmartnessOracle:
             self._stop_reported = self._park_reported = False
             return []
         self._still += s.dt
-        if self.path_clear(frame):
+        if self._stop_reported if self.moved else self._start_reported:
+            # This stop's failure is reported already and the clear-path time counts for nothing more until the
+            # ego moves (which resets it): only the path's state (planned once, located near the last answer) is
+            # kept as the full check would leave it.
+            self._follow_path(frame)
+        elif self.path_clear(frame):
             self._still_clear += s.dt
         out = []
         if not self.moved:
@@ -201,6 +206,17 @@ class SmartnessOracle:
             self._path = EgoPath.plan(self.network, frame.ego, self.goal)
         return self._path.blocker(frame.ego, front_point(frame.ego), frame.objects,
                                   clear_distance=self.params.clear_distance, margin=self.params.clear_margin)
+
+    def _follow_path(self, frame: Frame) -> None:
+        """What `wait_reason` leaves behind in the path (its plan, its last located point), without judging: the
+        corridor test, whose answer decides whether the crossing test locates the bumper once more."""
+        p = self.params
+        if self._path is None:
+            self._path = EgoPath.plan(self.network, frame.ego, self.goal)
+        front = front_point(frame.ego)
+        if not self._path.blocker(frame.ego, front, frame.objects, clear_distance=p.clear_distance,
+                                  margin=p.clear_margin):
+            self._path.locate(*front)
 
     def wait_reason(self, frame: Frame) -> str:
         """Why a standing ego may wait ('' when nothing gives it a reason): an entity in the corridor along its
