@@ -127,3 +127,17 @@ def test_a_quoted_name_given_to_the_av_is_the_av() -> None:
     sk = extract(text, "t")
     assert len(sk.npcs) == 1 and sk.npcs[0].category == "car"
     assert any(o.category == "barrier" for o in sk.obstacles)  # the AV's own contact, not the sedan's
+
+
+def test_both_vehicles_moving_off_is_the_av_s_move_too() -> None:
+    text = ("A Zoox vehicle was stopped for a red light on northbound Van Ness Avenue. A passenger car was stopped in "
+            "the adjacent lane to the right of the Zoox vehicle. As the signal turned green, both vehicles proceeded "
+            "forward and shortly after that the car suddenly veered left into the Zoox vehicle's lane. The car made "
+            "contact with the passenger side fender of the Zoox vehicle.")
+    assert _ego(text) == ("stopped", "i")
+
+
+def test_begin_to_inside_a_purpose_is_an_intention() -> None:
+    text = ("The AV was moving at 9 mph in the right lane and slowing to begin to execute a right turn, when a sedan "
+            "side-swiped the AV while overtaking from the left adjacent lane.")
+    assert _ego(text) == ("moving", "ac")

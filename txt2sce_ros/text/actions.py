@@ -120,6 +120,8 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+# "slowing to begin to execute a right turn": "begin to" inside an infinitive of purpose is still an intention.
+_INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
@@ -214,7 +216,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     out: list[Act] = []
     for b, e, code in sorted(spans):
         before = s[max(0, b - 40):b]
-        if _INTENT.search(before) and not _INTENT_OK.search(before):
+        if _INTENT.search(before) and (not _INTENT_OK.search(before) or _INTENT_TO_BEGIN.search(before)):
             continue
         if _NEGATED.search(before):
             continue  # "did not immediately proceed"
@@ -244,6 +246,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             who = who_for(b, ments, fallback, s)
         if who is None:
             continue
+        subj = [m for m in ments if m.subject and m.end <= b]
+        if subj and subj[-1].kind == "group" and s[subj[-1].start:subj[-1].end].lower().startswith("both") and \
+                code in "abcdefghikF" and who >= 0:
+            # "both vehicles proceeded forward": the AV did it too.
+            out.append(Act(sent=sent_idx, pos=b, code=code, who=-1, text=s[b:e]))
         if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         if code == "Y":
