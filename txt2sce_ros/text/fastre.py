@@ -230,6 +230,44 @@ def _hoist_boundary(seq: Any) -> None:
         seq.data = data[1:]
 
 
+#: What Unicode's \s matches among ASCII characters: ASCII's \s lacks the four separators \x1c-\x1f.
+_ASCII_SPACE = [(_c.RANGE, (9, 13)), (_c.RANGE, (28, 32))]
+
+
+def _ascii_spaces(seq: Any) -> bool:
+    r"""Rewrite, in place, every `\s` of the tree as the explicit set of the ASCII characters Unicode's `\s` matches,
+    so that compiling with ASCII semantics matches exactly as before on ASCII text; False (tree then unusable for
+    that) where a `\S` or a negated class with `\s` makes the rewrite not a plain substitution."""
+    for k, (op, av) in enumerate(seq.data):
+        if op is _c.IN:
+            if any(o is _c.CATEGORY and a in (_c.CATEGORY_NOT_SPACE, _c.CATEGORY_LINEBREAK, _c.CATEGORY_NOT_LINEBREAK)
+                   for o, a in av):
+                return False
+            if any(o is _c.CATEGORY and a is _c.CATEGORY_SPACE for o, a in av):
+                if any(o is _c.NEGATE for o, _ in av):
+                    return False
+                seq.data[k] = (op, [x for x in av if not (x[0] is _c.CATEGORY and x[1] is _c.CATEGORY_SPACE)]
+                               + list(_ASCII_SPACE))
+        elif op is _c.SUBPATTERN:
+            if not _ascii_spaces(av[3]):
+                return False
+        elif op is _c.BRANCH:
+            if not all(_ascii_spaces(b) for b in av[1]):
+                return False
+        elif op in _REPEATS:
+            if not _ascii_spaces(av[2]):
+                return False
+        elif op in (_c.ASSERT, _c.ASSERT_NOT):
+            if not _ascii_spaces(av[1]):
+                return False
+        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
+            if not _ascii_spaces(av):
+                return False
+        elif op is _c.CATEGORY:
+            return False  # a bare category outside a class: not produced by the parser for \s; be safe
+    return True
+
+
 def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
     """The case-sensitive twin of an IGNORECASE pattern for lowercase ASCII texts, or None.
 
@@ -243,7 +281,13 @@ def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
         _fold(tree)
         _hoist_boundary(tree)
         tree.state.flags &= ~re.IGNORECASE
-        return _compiler.compile(tree, rx.flags & ~re.IGNORECASE)  # type: ignore[no-any-return]
+        flags = rx.flags & ~re.IGNORECASE
+        if _ascii_spaces(tree):
+            # The scanner only ever reads ASCII text, where ASCII \w, \d and \b agree with Unicode's and cost a
+            # table look-up instead of a Unicode category query per character.
+            tree.state.flags = (tree.state.flags & ~re.UNICODE) | re.ASCII
+            flags = (flags & ~re.UNICODE) | re.ASCII
+        return _compiler.compile(tree, flags)  # type: ignore[no-any-return]
     except _Unfoldable:
         return None
     except Exception:  # an unexpected parse-tree shape: keep the original pattern only (always correct)
