@@ -141,3 +141,16 @@ def test_begin_to_inside_a_purpose_is_an_intention() -> None:
     text = ("The AV was moving at 9 mph in the right lane and slowing to begin to execute a right turn, when a sedan "
             "side-swiped the AV while overtaking from the left adjacent lane.")
     assert _ego(text) == ("moving", "ac")
+
+
+def test_a_numbered_group_is_that_many_parties() -> None:
+    text = ("A Cruise AV was traveling northbound on 36th Avenue. While proceeding straight, the driver of the Cruise "
+            "AV made contact with two unoccupied vehicles parked on the other side of 36th Avenue.")
+    sk = extract(text, "t")
+    assert [o.category for o in sk.obstacles] == ["parked_vehicle", "parked_vehicle"]
+    assert sk.collision.with_ == "obs1"
+    riders = ("The May Mobility shuttle was driving northbound in autonomous mode and was followed by 2 people riding "
+              "on scooters. The scooter rider contacted the rear bumper of the May Mobility shuttle.")
+    assert [n.category for n in extract(riders, "t").npcs] == ["scooter", "scooter"]
+    # Unnumbered, or the AV and the party together, a group names no party.
+    assert not extract("The AV was traveling north when both vehicles stopped. The AV struck a pole.", "t").npcs

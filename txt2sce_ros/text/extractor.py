@@ -190,14 +190,14 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             weak.append(f"{slot}.actions")
         npcs.append(Party(id=f"npc{k}", category=e.category, position=pos, lane=lane,  # type: ignore[arg-type]
                           start=start, actions=acts))  # type: ignore[arg-type]
-        idmap[e.idx] = f"npc{k}"
+        idmap.setdefault(e.idx, f"npc{k}")  # a numbered group: the first of its parties is the one touched
     obs: list[Obstacle] = []
     for k, e in enumerate(obstacles, 1):
         pos, lane = obstacle_position(d, e, ego_actions, ego_turning)
         cat = "door" if e.idx in d.doors else ("parked_vehicle" if e.kind == "party" else e.category)
         ev.mention(f"obstacles[{k - 1}].category", e)
         obs.append(Obstacle(id=f"obs{k}", category=cat, position=pos, lane=lane))  # type: ignore[arg-type]
-        idmap[e.idx] = f"obs{k}"
+        idmap.setdefault(e.idx, f"obs{k}")
     partner = d.ents[d.partner] if d.partner is not None else None
     with_id = idmap.get(d.partner) if d.partner is not None else None
     if partner is not None and with_id is None:

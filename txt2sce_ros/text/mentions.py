@@ -87,6 +87,7 @@ class Mention:
     mods: str
     subject: bool
     entity: int = -1
+    count: int = 1  # "two unoccupied vehicles": one mention of that many parties
 
 
 @dataclass
@@ -99,6 +100,7 @@ class Entity:
     parked: bool = False
     merged_into: int | None = None
     door_of: int | None = None
+    count: int = 1  # parties this entity stands for ("two unoccupied vehicles")
 
     @property
     def first(self) -> Mention:
@@ -200,6 +202,13 @@ def _category(head: str, mods: str) -> tuple[str, str]:
     return "obstacle", OBSTACLE_HEADS.get(h, "other")
 
 
+_NUMBERS = {"two": 2, "2": 2, "three": 3, "3": 3, "four": 4, "4": 4}
+_COUNTED_GROUPS = {"vehicles": "car", "cars": "car", "trucks": "truck", "pedestrians": "pedestrian",
+                   "people": "pedestrian", "cyclists": "bicycle", "bicyclists": "bicycle", "scooters": "scooter",
+                   "motorists": "car", "bikes": "bicycle", "bicycles": "bicycle", "motorcycles": "motorcycle"}
+_RIDING_ON = compile_gated(r"\s+(?:who\s+were\s+)?riding\s+(?:on\s+)?(scooters|bikes|bicycles|motorcycles)\b", re.I)
+
+
 def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     """The mentions in one sentence, in order; a make directly before a head noun joins that noun phrase."""
     out: list[Mention] = []
@@ -243,6 +252,14 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             mods.insert(0, wl)
         mod_text = " ".join(mods)
         kind, cat = _category(head, mod_text)
+        count = 1
+        if kind == "group" and not det and mod_text and _NUMBERS.get(mod_text.split()[0]) and hl in _COUNTED_GROUPS:
+            # "made contact with two unoccupied vehicles", "followed by 2 people riding on scooters": a numbered
+            # group is that many parties (sketch.md counts a group only when the text numbers it).
+            count, kind, cat = _NUMBERS[mod_text.split()[0]], "party", _COUNTED_GROUPS[hl]
+            ride = _RIDING_ON.match(s, m.end())
+            if ride:
+                cat = _COUNTED_GROUPS.get(ride.group(1).lower(), cat)
         if kind in ("party", "obstacle") and _NEGATED_NP.search(s[max(0, m.start() - 40):m.start()]):
             kind = "group"  # "did not contact any vehicle": a negated mention names nobody
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
@@ -261,7 +278,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         pre_wo_det = _DET_END.sub("", pre)
         subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or (start <= 60 and pre_wo_det.strip() == "")
         out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
-                           det=det, mods=mod_text, subject=subject))
+                           det=det, mods=mod_text, subject=subject, count=count))
     return out
 
 
@@ -372,7 +389,7 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             prev = m
             continue
         if target is None:
-            target = Entity(idx=len(ents), kind=m.kind, category=m.category, heads={m.head})
+            target = Entity(idx=len(ents), kind=m.kind, category=m.category, heads={m.head}, count=m.count)
             ents.append(target)
         else:
             target.heads.add(m.head)

@@ -219,7 +219,11 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                 continue  # a stop sign the AV obeyed is traffic control, not an object in the scene
             if is_partner or e.idx in d.struck or acted_for(d, e):
                 obstacles.append(e)
-    return parties, obstacles
+    # A numbered group ("two unoccupied vehicles parked") is that many parties, each read alike; in a summary
+    # ("a collision involving two SUVs") it only announces parties the telling names one by one.
+    def times(e: Entity) -> int:
+        return e.count if e.first.sent not in d.summary else 1
+    return [e for e in parties for _ in range(times(e))], [e for e in obstacles for _ in range(times(e))]
 
 
 def add_doors(d: Doc) -> None:
