@@ -81,6 +81,21 @@ def test_crossing_pedestrian_made_a_vehicle_agrees_in_esmini(written) -> None:
         _assert_portable(f)
 
 
+def test_a_lane_change_of_a_slowed_party_does_not_fire_in_a_junction_connector(written) -> None:
+    # zoox r362's party changes lanes when the AV comes within a distance. Made a truck by the tree (slower, placed
+    # further back), it met that distance inside a one-lane junction connector, where esmini logged "[error] Lane
+    # id 1 does not exist". The seed now lets the change start only on the stretch with a lane beside it.
+    seed = written / "seeds" / "dmvca-zoox-20220708-r362.xosc"
+    assert b"npc1_e2_lane_change_left_where" in seed.read_bytes()
+    res = build_trees([seed], written / "zoox_trees", seed=0, cfg=tree_config(max_nodes=100, validate=False), jobs=1)
+    assert res and not res[0].errors
+    trucks = [f for f in sorted((written / "zoox_trees").glob("*/nodes/n*.xosc"))
+              if b'"npc1_vehicle" vehicleCategory="truck"' in f.read_bytes()]
+    assert len(trucks) >= 5
+    for f in trucks:
+        _assert_portable(f)
+
+
 def test_light_changes_are_seen_in_esmini_and_compared(written) -> None:
     # waymo r574: the AV waits at red, which turns green at its first action. Both players switch every light of
     # the junction at the same step; the probe really reads esmini's lights (changes seen, not an empty match).

@@ -33,15 +33,19 @@ def test_r247_change_left_is_not_moved_before_the_reported_turn_stop_and_reverse
     assert any("lane_change_left" in n and "lane kept" in n for n in notes), notes
 
 
-def test_lane_changes_keep_the_reported_order(buildable) -> None:
+def test_lane_changes_keep_the_reported_order_and_their_stretch(buildable) -> None:
     checked = 0
     for sketch in _lane_change_sketches(buildable):
         res = generate_seed(sketch, seed=0)
         for ent in res.plan.entities:
             for k, ev in enumerate(ent.events):
-                if k and any(isinstance(a, LaneChangeAct) for a in ev.actions):
+                if any(isinstance(a, LaneChangeAct) for a in ev.actions):
                     checked += 1
-                    assert ev.planned_time >= ent.events[k - 1].planned_time - 1e-9, (sketch.report_id, ev.name)
+                    assert k == 0 or ev.planned_time >= ent.events[k - 1].planned_time - 1e-9, (sketch.report_id,
+                                                                                                 ev.name)
+                    # only on the stretch with a lane beside it (a circle over it, in the start trigger)
+                    assert ev.within is not None and ev.within[2] >= 1.0, (sketch.report_id, ev.name)
+                    assert f'{ev.name}_where'.encode() in res.xosc
     assert checked >= 5
 
 

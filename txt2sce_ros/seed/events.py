@@ -162,6 +162,8 @@ class EventRealiser:
         for k, ev in enumerate(actor.events):
             lc = next((a for a in ev.actions if isinstance(a, LaneChangeAct)), None)
             if lc is None or ok(ev.planned_time, lc.relative):
+                if lc is not None:
+                    actor.events[k] = self._guarded(actor, ev, lc.relative, t, d)
                 continue
             earliest = actor.events[k - 1].planned_time if k > 0 else 0.0
             cands = sorted((abs(c - ev.planned_time), c) for c in np.arange(0.0, self.horizon - 5.0, 0.25)
@@ -169,7 +171,8 @@ class EventRealiser:
             step = next((st for st in actor.lat_steps if abs(st.t - ev.planned_time) < 1e-6), None)
             if cands:
                 new_t = round(float(cands[0][1]), 2)
-                actor.events[k] = EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t), new_t)
+                actor.events[k] = self._guarded(actor, EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t),
+                                                                 new_t), lc.relative, t, d)
                 if step is not None:
                     actor.lat_steps[actor.lat_steps.index(step)] = LateralStep(new_t, step.delta, step.duration)
                 actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it, or too slow for it, at "
@@ -183,6 +186,29 @@ class EventRealiser:
                     actor.lat_steps.remove(step)
                 actor.notes.append(f"{ev.name}: no lane beside it, at a speed that allows the change, after "
                                    f"the actions reported before it; lane kept")
+
+    def _guarded(self, actor: Actor, ev: EventPlan, rel: int, t: np.ndarray, d: np.ndarray) -> EventPlan:
+        """`ev` (a lane change) allowed to start only on the stretch of its path around the planned start where a
+        lane lies beside it: a circle over that stretch. A mutated scenario (a slower party, a later start, a
+        distance trigger that now fires in a junction) must not start it on a one-lane connector: there is no lane
+        to change to, which esmini reports as an `[error]`. Outside the stretch the change does not happen."""
+        side = "left" if rel > 0 else "right"
+        d_at = actor.d0 + float(np.interp(ev.planned_time, t, d))
+
+        def beside(dd: float) -> bool:
+            return 0.0 <= dd <= actor.track.length and self.net.neighbour(actor.track.lane_at(dd), side) is not None
+
+        if not beside(d_at):
+            return ev
+        lo = hi = d_at
+        while hi - d_at < 200.0 and beside(hi + 0.5):
+            hi += 0.5
+        while d_at - lo < 200.0 and beside(lo - 0.5):
+            lo -= 0.5
+        mid = actor.track.world(0.5 * (lo + hi))
+        radius = max(0.5 * (hi - lo) - 1.0, 1.0)
+        return EventPlan(ev.name, ev.code, ev.actions, ev.trigger, ev.planned_time,
+                         (round(mid.x, 3), round(mid.y, 3), round(radius, 2)))
 
     def trim_trajectories(self, actor: Actor) -> None:
         """Start every trajectory at the point the actor has reached when its event fires."""

@@ -90,6 +90,9 @@ class EventPlan:
     actions: tuple[Act, ...]
     trigger: Trigger
     planned_time: float            # s, when the plan expects it to start (manifest; fidelity diagnostics)
+    #: (x, y, radius): the event starts only while its entity is within `radius` m of (x, y) (a lane change: the
+    #: stretch of road with a lane beside it), whatever else its trigger says
+    within: tuple[float, float, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)

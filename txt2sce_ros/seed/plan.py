@@ -26,6 +26,8 @@ the AV), `plan_sides` (reported sides) and `plan_start` (footprints apart at t=0
 
 from __future__ import annotations
 
+import dataclasses
+
 import math
 
 import numpy as np
@@ -132,9 +134,8 @@ class Planner(EgoPlanning, PartyPaths, Meeting, ReportedSides, StartSeparation):
             j = int(np.searchsorted(t, max(ev.planned_time - 1.0, 0.0)))
             if i >= len(t) or gap[j] - gap[i] < 0.5 or np.any(np.diff(gap[: i + 1]) > 1e-6):
                 continue  # not steadily closing up to then: a distance threshold would fire early or never
-            party.events[k] = EventPlan(ev.name, ev.code, ev.actions,
-                                        Trigger("distance", round(float(gap[i]) + 0.3, 2), party.name, "ego"),
-                                        ev.planned_time)
+            party.events[k] = dataclasses.replace(
+                ev, trigger=Trigger("distance", round(float(gap[i]) + 0.3, 2), party.name, "ego"))
             party.notes.append(f"{ev.name} fires at {float(gap[i]) + 0.3:.1f} m from the AV")
 
     def _plan_party(self, p: Party, *, primary: bool) -> None:

@@ -5,6 +5,8 @@ One concept of the seed planner (`plan.Planner` combines them); the methods work
 
 from __future__ import annotations
 
+import dataclasses
+
 import math
 
 import numpy as np
@@ -142,7 +144,7 @@ class EgoPlanning:
         ego.route = RouteAct("ego_route", tuple(wps))
         self.goal = LanePose(goal.road_id, goal.lane_id, goal.s, 0.0, goal.x, goal.y, goal.h)
         # the ego's own turn events reuse its mission route
-        ego.events = [EventPlan(ev.name, ev.code, tuple(ego.route if isinstance(a, RouteAct) and
-                                                        a.name == EGO_ROUTE_PLACEHOLDER else a for a in ev.actions),
-                                ev.trigger, ev.planned_time) for ev in ego.events]
+        ego.events = [dataclasses.replace(ev, actions=tuple(ego.route if isinstance(a, RouteAct) and
+                                                            a.name == EGO_ROUTE_PLACEHOLDER else a
+                                                            for a in ev.actions)) for ev in ego.events]
         self.choices["goal"] = {"road": goal.road_id, "lane": goal.lane_id, "s": goal.s}

@@ -232,6 +232,19 @@ def _event(x: _Xml, man: etree._Element, ev: EventPlan, entity: str) -> None:
         a = x.el(e, "Action", {"name": f"{ev.name}_action" if i == 0 else f"{ev.name}_action{i + 1}"})
         _private_action(x, a, act, entity)
     _trigger(x, e, "StartTrigger", f"{ev.name}_start", ev.trigger)
+    if ev.within is not None:
+        _within(x, e.find("StartTrigger/ConditionGroup"), f"{ev.name}_where", entity, ev.within)
+
+
+def _within(x: _Xml, group: etree._Element, name: str, entity: str, where: tuple[float, float, float]) -> None:
+    """A second condition of the group (both must hold): `entity` within where[2] m of (where[0], where[1])."""
+    c = x.el(group, "Condition", {"name": name, "delay": 0.0, "conditionEdge": "none"})
+    be = x.el(c, "ByEntityCondition")
+    x.el(x.el(be, "TriggeringEntities", {"triggeringEntitiesRule": "any"}), "EntityRef", {"entityRef": entity})
+    dc = x.el(x.el(be, "EntityCondition"), "DistanceCondition", {"value": float(where[2]), "freespace": False,
+                                                                  "alongRoute": False, "rule": "lessThan"})
+    x.el(x.el(dc, "Position"), "WorldPosition", {"x": float(where[0]), "y": float(where[1]), "z": 0.0, "h": 0.0,
+                                                 "p": 0.0, "r": 0.0})
 
 
 def _story(x: _Xml, sb: etree._Element, e: EntityPlan) -> None:
