@@ -314,7 +314,9 @@ class Gated:
         """None: no match possible; "": scan with the original; else the lowercase text for the folded scan."""
         if len(s) < MIN_GATED_LEN:
             return ""
-        low = _lower_ascii(s)
+        low = _LOWER.get(s, _MISSING)  # `_lower_ascii`, inlined: this runs before every scan of every pattern
+        if low is _MISSING:
+            low = _lower_ascii(s)
         if low is None:
             return ""
         if self.factors:
@@ -323,7 +325,7 @@ class Gated:
                     break
             else:
                 return None
-        return low if self.cs is not None else ""
+        return low if self.cs is not None else ""  # type: ignore[return-value]
 
     def _may_match(self, s: str) -> bool:
         return self._low(s) is not None

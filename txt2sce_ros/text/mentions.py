@@ -209,6 +209,19 @@ _COUNTED_GROUPS = {"vehicles": "car", "cars": "car", "trucks": "truck", "pedestr
 _RIDING_ON = compile_gated(r"\s+(?:who\s+were\s+)?riding\s+(?:on\s+)?(scooters|bikes|bicycles|motorcycles)\b", re.I)
 
 
+def _last_words(s: str, end: int, n: int) -> list[str]:
+    """`s[:end].split()[-n:]`, reading only the tail of the text (a long sentence is split once per mention)."""
+    window = 24 * n
+    while True:
+        start = max(0, end - window)
+        words = s[start:end].split()
+        if start > 0 and not s[start - 1].isspace() and words and not s[start].isspace():
+            words = words[1:]  # the first word may be cut
+        if len(words) >= n or start == 0:
+            return words[-n:]
+        window *= 2
+
+
 def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     """The mentions in one sentence, in order; a make directly before a head noun joins that noun phrase."""
     out: list[Mention] = []
@@ -217,7 +230,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         if head not in ("EGO", "EGOD") and ((m.start() > 0 and s[m.start() - 1] == "-") or
                                             s[m.end():m.end() + 1] == "-"):
             continue  # "single-car collision", "truck-mounted": a compound adjective, not a party
-        after = s[m.end():]
+        after = s[m.end():m.end() + 120]  # the words right after the head (whitespace is collapsed to one space)
         hl = head.lower()
         if hl in ("it", "he", "she"):
             pre = s[max(0, m.start() - 60):m.start()]
@@ -234,7 +247,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 continue
             if head[0].isupper() and hl in ("van", "post", "mission", "gate", "church") and m.start() > 0:
                 continue
-        back = s[:m.start()].split() if hl not in ("ego", "egod") else []
+        back = _last_words(s, m.start(), 5) if hl not in ("ego", "egod") else []
         mods: list[str] = []
         det = ""
         for w in reversed(back[-5:]):
