@@ -154,3 +154,11 @@ def test_a_numbered_group_is_that_many_parties() -> None:
     assert [n.category for n in extract(riders, "t").npcs] == ["scooter", "scooter"]
     # Unnumbered, or the AV and the party together, a group names no party.
     assert not extract("The AV was traveling north when both vehicles stopped. The AV struck a pole.", "t").npcs
+
+
+def test_the_driver_of_a_party_named_by_its_vehicle_acts_for_it() -> None:
+    text = ("A Zoox vehicle was traveling west and turning right onto Main Street. As the Zoox vehicle was slowing, the "
+            "motorcycle operator accelerated in an apparent attempt to overtake the Zoox vehicle. The motorcycle then "
+            "struck the driver's side rear bumper of the Zoox vehicle.")
+    assert "b" in _party(text)[1]  # the motorcycle sped up ...
+    assert "b" not in _ego(text)[1]  # ... not the AV

@@ -202,6 +202,9 @@ def _category(head: str, mods: str) -> tuple[str, str]:
     return "obstacle", OBSTACLE_HEADS.get(h, "other")
 
 
+# "the motorcycle operator accelerated", "the SUV driver backed up": the person driving is the party (not its
+# "driver side" or "driver door").
+_PARTY_DRIVER = compile_gated(r"^\s*(?:driver|operator)\b(?!'s)(?!\s*-?\s*(?:side|door|seat|window|mirror))", re.I)
 _NUMBERS = {"two": 2, "2": 2, "three": 3, "3": 3, "four": 4, "4": 4}
 _COUNTED_GROUPS = {"vehicles": "car", "cars": "car", "trucks": "truck", "pedestrians": "pedestrian",
                    "people": "pedestrian", "cyclists": "bicycle", "bicyclists": "bicycle", "scooters": "scooter",
@@ -239,7 +242,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                                    category="pron", det="", mods="", subject=True))
             continue
         if hl not in ("ego", "egod"):
-            if _NOT_HEAD_AFTER.match(after) and not m.group(0).lower().endswith(("'s", "s'")):
+            if _NOT_HEAD_AFTER.match(after) and not m.group(0).lower().endswith(("'s", "s'")) and \
+                    not (hl in PARTY_HEADS and _PARTY_DRIVER.match(after)):
                 if hl not in MAKES:
                     continue
             # Street names ("Van Ness Avenue", "Post Street"): a capitalised head followed by a street word.
