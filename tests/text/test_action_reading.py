@@ -162,3 +162,12 @@ def test_the_driver_of_a_party_named_by_its_vehicle_acts_for_it() -> None:
             "struck the driver's side rear bumper of the Zoox vehicle.")
     assert "b" in _party(text)[1]  # the motorcycle sped up ...
     assert "b" not in _ego(text)[1]  # ... not the AV
+
+
+def test_an_av_slowing_in_a_turn_it_was_making_starts_with_the_turn() -> None:
+    text = ("A Zoox vehicle in autonomy was traveling west on Main Street and turning right onto 5th Street. While "
+            "executing a low-speed turn, the Zoox vehicle braked. As the Zoox vehicle was slowing, a motorcycle "
+            "struck the rear bumper of the Zoox vehicle.")
+    assert _ego(text) == ("moving", "ec")
+    straight = text.replace(" and turning right onto 5th Street", "").replace("executing a low-speed turn", "in traffic")
+    assert _ego(straight) == ("moving", "ac")

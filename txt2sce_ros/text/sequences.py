@@ -120,6 +120,12 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             stopped = True
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
+            turning = [a for a in pre[:-1] if a.code in ("d", "e") and fre.match(r"turning\b", a.text, re.I)]
+            if last.code == "c" and turning and all(a.code in ("c", "h", "S") or a is turning[-1]
+                                                    for a in pre[pre.index(turning[-1]):]):
+                # "was traveling west and turning right onto X. While executing the turn, the AV braked": it was
+                # turning when the interaction began, and slowed in the turn.
+                prefix = [turning[-1], last]
         elif last.code == "T":
             turn = turn_from_headings(d.sents[last.sent])
             if turn:
