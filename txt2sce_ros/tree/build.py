@@ -187,7 +187,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
         cands = [(p, j) for p in frontier for j in range(len(vs))]
         keep, cut = _select_layer([p.path for p, _ in cands], [j for _, j in cands], variants, used, depth,
                                   enumerated=block.kind.value in cfg["tree"]["enumerate"], share=share, cap=cap,
-                                  written=written, rng=prune_rng, rotate=key)
+                                  written=written, rng=prune_rng)
         pruned += len(cands) - len(keep)
         truncated = truncated or cut
         frontier = []
@@ -252,7 +252,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
 
 def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], variants: list[list[Variant]],
                   used: list[int], depth: int, *, enumerated: bool, share: float, cap: int, written: int,
-                  rng: np.random.Generator, rotate: int = 0) -> tuple[list[int], bool]:
+                  rng: np.random.Generator) -> tuple[list[int], bool]:
     """Which candidates of one layer become nodes (indices into the candidate list), and whether the node budget
     cut some: diversity-aware pruning, then the budget. One candidate = a parent's path + a version `choice` of
     the layer's block. Shared by `build_tree` and `estimate_tree`, so an estimate prunes exactly as a build."""
@@ -272,10 +272,7 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
         allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
     if len(keep) <= allowed:
         return keep, False
-    # `rotate` (the seed's key): which parent a layer's first version and the rest of the budget go under differs
-    # from tree to tree, so the trees of one study pair their versions differently (a moving AV's chain in some,
-    # a standing one in others) instead of ten copies of one pairing
-    return diagonal(keep, len(vs), allowed, cover=enumerated, rotate=rotate), True
+    return diagonal(keep, len(vs), allowed, cover=enumerated), True
 
 
 @dataclass(frozen=True)
@@ -316,7 +313,7 @@ def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] |
         cands = [(p, j) for p in frontier for j in range(len(variants[bi]))]
         keep, _ = _select_layer([p for p, _ in cands], [j for _, j in cands], variants, used, depth,
                                 enumerated=dis.blocks[bi].kind.value in cfg["tree"]["enumerate"], share=share,
-                                cap=cap, written=written, rng=rng, rotate=key)
+                                cap=cap, written=written, rng=rng)
         frontier = [cands[i][0] + (cands[i][1],) for i in keep]
         written += len(frontier)
         if not frontier or written >= cap:

@@ -82,14 +82,13 @@ def _round_robin_rank(vectors: Sequence[Hashable]):
     return rank.__getitem__
 
 
-def diagonal(keep: Sequence[int], variants: int, limit: int, *, cover: bool = False, rotate: int = 0) -> list[int]:
+def diagonal(keep: Sequence[int], variants: int, limit: int, *, cover: bool = False) -> list[int]:
     """At most `limit` of the candidate indices `keep` of one layer (candidate i = parent i // variants, version
     i % variants), chosen along diagonals: in round r every parent p gets version (p + r) mod variants, so a
     small budget spreads the layer's versions over different parents (a standing start under a snowy road and
     another under a dry one) instead of giving every version to the first parent and none to the others.
     `cover` (enumerated blocks): first one candidate per version value, version j under parent j mod parents
-    where it survived pruning. `rotate` starts the rounds at parent `rotate` (mod the parents) instead of the
-    first: a tree keyed by its seed pairs the layer's versions with other parents than its neighbour does. Sorted."""
+    where it survived pruning. Sorted."""
     if len(keep) <= limit:
         return list(keep)
     parents = max(1, (max(keep) // variants) + 1)
@@ -98,12 +97,11 @@ def diagonal(keep: Sequence[int], variants: int, limit: int, *, cover: bool = Fa
     if cover:
         for j in range(variants):
             here = [i for i in keep if i % variants == j]
-            want = ((j + rotate) % parents) * variants + j
+            want = (j % parents) * variants + j
             if here and len(chosen) < limit:
                 chosen.append(want if want in kept else here[0])
     taken = set(chosen)
     order = sorted((i for i in keep if i not in taken),
-                   key=lambda i: (((i % variants) - (i // variants) + rotate) % variants,
-                                  (i // variants - rotate) % parents))
+                   key=lambda i: (((i % variants) - (i // variants)) % variants, i // variants))
     chosen += order[:max(0, limit - len(chosen))]
     return sorted(chosen)
