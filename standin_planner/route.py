@@ -171,9 +171,30 @@ def _locate(net: RoadNetwork, x: float, y: float, heading: float, what: str) -> 
     return point.ref
 
 
+#: Routes planned lately, by network and the exact bits of pose and goal (see `plan_route`).
+_PLANNED: dict[tuple, Route] = {}
+_PLANNED_SIZE = 64
+
+
 def plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal) -> Route:
     """Route from the pose (x, y, heading) to `goal`, with its reference line trimmed to start a little behind the
-    ego and run `GOAL_EXTENSION` metres past the goal."""
+    ego and run `GOAL_EXTENSION` metres past the goal.
+
+    The answer depends on nothing else, so it is remembered: a campaign worker runs the nodes of a scenario tree
+    one after another, and most of them start the ego at the same pose with the same goal on the same (cached)
+    network. A remembered route is shared; its line only fills memo caches of values it derives the same way
+    every time. Keyed by the floats' bits, so 0.0 and -0.0 are not taken for each other."""
+    key = (net, *(float(v).hex() for v in (x, y, heading, goal.x, goal.y, goal.heading, goal.tolerance)))
+    route = _PLANNED.get(key)
+    if route is None:
+        route = _plan_route(net, x, y, heading, goal)
+        if len(_PLANNED) >= _PLANNED_SIZE:
+            _PLANNED.pop(next(iter(_PLANNED)))
+        _PLANNED[key] = route
+    return route
+
+
+def _plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal) -> Route:
     start = _locate(net, x, y, heading, "ego")
     target = _locate(net, goal.x, goal.y, goal.heading, "goal")
     lanes = lane_route(net, start, target)

@@ -74,3 +74,21 @@ def test_goal_behind_the_ego_on_a_ring_road_goes_round():
     assert behind.goal_s > 4.0 * (ahead.goal_s - 10.0)
     # 250 m of reference line round the ring; the lane centre's ring is a few per cent longer or shorter.
     assert behind.goal_s == pytest.approx(10.0 + 250.0, rel=0.06)
+
+
+def test_a_route_planned_again_is_the_remembered_one_and_equals_a_fresh_plan():
+    from standin_planner import route as route_mod
+
+    n = net()
+    x, y, h = n.lane_to_world("2", -1, 200.0)
+    goal = goal_on_lane(n, "1", -1, 12.0)
+    first = plan_route(n, x, y, h, goal)
+    assert plan_route(n, x, y, h, goal) is first
+    fresh = route_mod._plan_route(n, x, y, h, goal)
+    assert fresh.lanes == first.lanes and fresh.goal_s == first.goal_s
+    assert np.array_equal(fresh.line.xy, first.line.xy)
+    # another pose, or the same numbers with another sign of zero, is planned on its own
+    assert plan_route(n, x + 1.0, y, h, goal) is not first
+    zero = goal_on_lane(n, "1", -1, 12.0)
+    a = plan_route(n, x, y, 0.0, zero)
+    assert plan_route(n, x, y, -0.0, zero) is not a
