@@ -171,3 +171,19 @@ def test_an_av_slowing_in_a_turn_it_was_making_starts_with_the_turn() -> None:
     assert _ego(text) == ("moving", "ec")
     straight = text.replace(" and turning right onto 5th Street", "").replace("executing a low-speed turn", "in traffic")
     assert _ego(straight) == ("moving", "ac")
+
+
+@pytest.mark.parametrize("state, as_party", [("was stopped", True), ("was parked", False)])
+def test_a_vehicle_stopped_in_the_lane_that_the_av_went_around_is_a_party(state: str, as_party: bool) -> None:
+    # sketch.md: a vehicle stopped in traffic is an NPC; a parked, unattended one an obstacle.
+    text = (f"The Cruise AV was traveling southbound in the right lane of Divisadero Street. The Cruise AV approached "
+            f"a box truck that {state} in the right lane. The Cruise AV began to navigate around the box truck. "
+            f"Shortly thereafter, a sedan attempted to pass the Cruise AV on the left and made contact with its front "
+            f"left fender.")
+    sk = extract(text, "t")
+    trucks = [n for n in sk.npcs if n.category == "truck"]
+    assert bool(trucks) is as_party
+    if as_party:
+        assert (trucks[0].start, trucks[0].actions) == ("stopped", "")
+    else:
+        assert [o.category for o in sk.obstacles] == ["parked_vehicle"]

@@ -197,8 +197,12 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         moved = any(a.who == e.idx and a.code in "abcdefgijkmFTO" for a in d.acts)  # O: out of a parking spot
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
                 acted_for(d, e, around_only=True) and not fre.search(
-                    r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)):
-            e.parked = True  # a vehicle the AV went around, that did nothing itself, stood there
+                    r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)) and \
+                not (any(a.who == e.idx and a.code == "S" for a in d.acts) and not fre.search(
+                    r"\bpark", " ".join(m.mods + " " + context(d, e) for m in e.mentions[:1]), re.I)):
+            # A vehicle the AV went around, that did nothing itself, stood there: parked, unless the text says it
+            # was stopped (in traffic, in the lane) and never parked: that is a party standing still (sketch.md).
+            e.parked = True
         if not is_partner and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
