@@ -187,3 +187,12 @@ def test_a_vehicle_stopped_in_the_lane_that_the_av_went_around_is_a_party(state:
         assert (trucks[0].start, trucks[0].actions) == ("stopped", "")
     else:
         assert [o.category for o in sk.obstacles] == ["parked_vehicle"]
+
+
+def test_swerving_into_the_av_s_door_is_a_contact_but_into_its_lane_is_not() -> None:
+    text = ("The test driver of the Waymo AV pulled over to the right shoulder of Silver Avenue. A moment later, a "
+            "passenger vehicle turned right onto Silver Avenue and swerved into the driver door of the Waymo AV.")
+    sk = extract(text, "t")
+    assert sk.collision.with_ == "npc1"
+    lane = text.replace("the driver door of the Waymo AV", "the Waymo AV's lane")
+    assert extract(lane, "t").collision.with_ is None

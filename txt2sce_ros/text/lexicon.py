@@ -135,6 +135,8 @@ CONTACT = compile_gated(
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|cycled|walked)\s+into|"
+    r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
+    r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     r"was\s+hit|was\s+struck|were\s+struck|doors?\s+into|contact\s+(?:was\s+made|occurred))\b", re.I)
 NEGATION = compile_gated(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
