@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 163 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 168 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -13,7 +13,9 @@ and junction legs, scored before any fix: 11/16, 13/16, 13/16; 136-147, same-dir
 junctions, left-turn pockets, stop-sign legs, scored before any fix: 8/12, 8/12, 11/12; 148-149, "oncoming" said of other traffic in a
 later clause: 1/2, 0/2, 1/2; 150-157, parties behind and
 beside, passing a parked AV, reversing: 6/8, 4/8, 6/8; 158-163,
-NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6. Scored per party (position with lane,
+NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6; 164-168, parties in the lane to
+the AV's left, another operator's car ('a Lyft vehicle' in a Cruise report): 4/5, 4/5, 3/5 (one label corrected to the
+spec after scoring, one narrative with a contested label dropped). Scored per party (position with lane,
 events) and per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss

@@ -107,6 +107,15 @@ class Entity:
         return self.mentions[0]
 
 
+# Names of one operator: the first is the key.
+_COMPANY_ALIASES = {"pony": "pony.ai", "baidu": "apollo", "may": "may mobility", "motional": "aptiv"}
+
+
+def _company_key(name: str) -> str:
+    key = " ".join(name.lower().split())
+    return _COMPANY_ALIASES.get(key, key)
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     quoted = text.translate(_QUOTES)
@@ -133,8 +142,18 @@ def normalise(text: str) -> str:
         t = t[:alias.end()] + fre.sub(rf"\b(?:the\s+)?{re.escape(alias.group(1))}\b", "the AV", t[alias.end():],
                                       flags=re.I)
     t = _PAREN_DEF.sub("", t)
+    # The AV's operator: the company in the first name given to an AV ("On May 7 ..." names no company).
+    several = len({_company_key(m.group(0)) for m in _COMPANY_RE.finditer(t)}) > 1  # else nothing to tell apart
+    named = [m for rx in _EGO_RES if several for m in [rx.search(t)] if m and _COMPANY_RE.search(m.group(0))]
+    first_co = _COMPANY_RE.search(min(named, key=lambda m: m.start()).group(0)) if named else None
+    av_company = _company_key(first_co.group(0)) if first_co else None
+
+    def ego_or_other(m: re.Match[str]) -> str:
+        # "a Lyft vehicle" or "a Waymo AV" in a Cruise report is another party: the AV is its reporter's own.
+        co = _COMPANY_RE.search(m.group(0))
+        return m.group(0) if co and av_company and _company_key(co.group(0)) != av_company else " EGO"
     for rx in _EGO_RES:
-        t = rx.sub(" EGO", t)
+        t = rx.sub(ego_or_other, t)
     if fre.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us").
         t = fre.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
