@@ -55,11 +55,16 @@ def test_seeds_run_in_esmini_without_error_and_agree(written, name: str) -> None
     _assert_portable(written / "seeds" / f"{name}.xosc")
 
 
-def test_tree_nodes_run_in_esmini_without_error_and_agree(written) -> None:
-    seed = written / "seeds" / "dmvca-cruise-20191107-r89.xosc"
-    res = build_trees([seed], written / "trees", seed=0, cfg=tree_config(max_nodes=60, validate=False), jobs=1)
+def _tree_nodes(written, seed_name: str, out: str, max_nodes: int) -> list:
+    """The node files of one dev seed's tree (seed 0), built without validation."""
+    res = build_trees([written / "seeds" / f"{seed_name}.xosc"], written / out, seed=0,
+                      cfg=tree_config(max_nodes=max_nodes, validate=False), jobs=1)
     assert res and not res[0].errors
-    nodes = sorted((written / "trees").glob("*/nodes/n*.xosc"))
+    return sorted((written / out).glob("*/nodes/n*.xosc"))
+
+
+def test_tree_nodes_run_in_esmini_without_error_and_agree(written) -> None:
+    nodes = _tree_nodes(written, "dmvca-cruise-20191107-r89", "trees", 60)
     dilemma = [f for f in nodes if b"_dilemma_zone" in f.read_bytes()]
     mutated = [f for f in nodes if b"_tls_red" in f.read_bytes() and f not in dilemma]
     assert dilemma and mutated, "the sample must hold nodes with a dilemma-zone yellow and other mutated phases"
@@ -71,10 +76,7 @@ def test_crossing_pedestrian_made_a_vehicle_agrees_in_esmini(written) -> None:
     # nuro r584's crossing pedestrian, made a car or another vehicle by the tree's category mutation: its crossing
     # runs on past the road until the run ends, so neither player has to choose where a vehicle goes from a
     # trajectory end beside the road (they chose differently: 25.6 m apart, 8 of a 60-node sample).
-    seed = written / "seeds" / "dmvca-nuro-20240522-r584.xosc"
-    res = build_trees([seed], written / "nuro_trees", seed=0, cfg=tree_config(max_nodes=100, validate=False), jobs=1)
-    assert res and not res[0].errors
-    nodes = sorted((written / "nuro_trees").glob("*/nodes/n*.xosc"))
+    nodes = _tree_nodes(written, "dmvca-nuro-20240522-r584", "nuro_trees", 100)
     made_vehicle = [f for f in nodes if b'<Vehicle name="npc1_pedestrian"' in f.read_bytes()]
     assert len(made_vehicle) >= 3, "the sample must hold nodes where the crossing pedestrian became a vehicle"
     for f in made_vehicle[:: max(1, len(made_vehicle) // 3)][:3]:
@@ -87,9 +89,7 @@ def test_a_lane_change_of_a_slowed_party_does_not_fire_in_a_junction_connector(w
     # id 1 does not exist". The seed now lets the change start only on the stretch with a lane beside it.
     seed = written / "seeds" / "dmvca-zoox-20220708-r362.xosc"
     assert b"npc1_e2_lane_change_left_where" in seed.read_bytes()
-    res = build_trees([seed], written / "zoox_trees", seed=0, cfg=tree_config(max_nodes=100, validate=False), jobs=1)
-    assert res and not res[0].errors
-    trucks = [f for f in sorted((written / "zoox_trees").glob("*/nodes/n*.xosc"))
+    trucks = [f for f in _tree_nodes(written, seed.stem, "zoox_trees", 100)
               if b'"npc1_vehicle" vehicleCategory="truck"' in f.read_bytes()]
     assert len(trucks) >= 5
     for f in trucks:
