@@ -2,8 +2,9 @@
 
 Storyboard-driven entities on a lane move their speed·dt along the lane, turned into road s where the step starts
 (`LaneTrack.ds_per_metre`) and carried in road s through successor lanes at the lane's end (preferring lanes of an
-assigned route, else the straightest continuation); their lateral position is the offset their lateral action set. Entities off the lanes move straight along their heading. The planner-driven ego
-moves with the kinematic bicycle of `kinematics.py`.
+assigned route, else the straightest continuation); their lateral position is the offset their lateral action
+set. Entities off the lanes move straight along their heading. The planner-driven ego moves with the kinematic
+bicycle of `kinematics.py`.
 """
 
 from __future__ import annotations

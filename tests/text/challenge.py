@@ -9,14 +9,13 @@ long with the reports' boilerplate, 7/10, 9/10, 8/10; 082-091, stopped parties a
 092-101, parties at junctions on the AV's own road or a crossing one, 10/10, 8/10, 10/10 (three of the labels
 corrected to the spec after that scoring); 102-111, lane sides and ahead/behind, 9/10, 8/10, 9/10; 112-119, standing
 starts, 6/8, 7/8, 8/8 (two labels corrected to the spec after scoring). Batch 120-135, left-side parties (R5/R6 left)
-and junction legs, scored before any fix: 11/16, 13/16, 13/16; 136-147, same-direction parties turning at
-junctions, left-turn pockets, stop-sign legs, scored before any fix: 8/12, 8/12, 11/12; 148-149, "oncoming" said of other traffic in a
-later clause: 1/2, 0/2, 1/2; 150-157, parties behind and
-beside, passing a parked AV, reversing: 6/8, 4/8, 6/8; 158-163,
-NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6; 164-168, parties in the lane to
+and junction legs, scored before any fix: 11/16, 13/16, 13/16; 136-147, same-direction parties turning at junctions,
+left-turn pockets, stop-sign legs, scored before any fix: 8/12, 8/12, 11/12; 148-149, "oncoming" said of other traffic
+in a later clause: 1/2, 0/2, 1/2; 150-157, parties behind and beside, passing a parked AV, reversing: 6/8, 4/8, 6/8;
+158-163, NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6; 164-168, parties in the lane to
 the AV's left, another operator's car ('a Lyft vehicle' in a Cruise report): 4/5, 4/5, 3/5 (one label corrected to the
-spec after scoring, one narrative with a contested label dropped). Scored per party (position with lane,
-events) and per report (the AV's start and actions), a party matched by category.
+spec after scoring, one narrative with a contested label dropped). Scored per party (position with lane, events) and
+per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss
 """

@@ -5,6 +5,8 @@ exists beside, `trim_trajectories` starts trajectories where the actor is when t
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ..road import RoadNetwork
@@ -171,8 +173,8 @@ class EventRealiser:
             step = next((st for st in actor.lat_steps if abs(st.t - ev.planned_time) < 1e-6), None)
             if cands:
                 new_t = round(float(cands[0][1]), 2)
-                actor.events[k] = self._guarded(actor, EventPlan(ev.name, ev.code, ev.actions, Trigger("time", new_t),
-                                                                 new_t), lc.relative, t, d)
+                actor.events[k] = self._guarded(actor, dataclasses.replace(ev, trigger=Trigger("time", new_t),
+                                                                           planned_time=new_t), lc.relative, t, d)
                 if step is not None:
                     actor.lat_steps[actor.lat_steps.index(step)] = LateralStep(new_t, step.delta, step.duration)
                 actor.notes.append(f"{ev.name} moved to {new_t} s: no lane beside it, or too slow for it, at "
@@ -181,7 +183,7 @@ class EventRealiser:
                 acts = tuple(a for a in ev.actions if not isinstance(a, LaneChangeAct)) or (
                     SpeedAct(round(float(np.interp(ev.planned_time, t, actor.profile(self.horizon)[1])), 3),
                              self.D.shape, self.D.dimension, self.D.dyn_value),)
-                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
+                actor.events[k] = dataclasses.replace(ev, actions=acts)
                 if step is not None:
                     actor.lat_steps.remove(step)
                 actor.notes.append(f"{ev.name}: no lane beside it, at a speed that allows the change, after "
@@ -207,8 +209,7 @@ class EventRealiser:
             lo -= 0.5
         mid = actor.track.world(0.5 * (lo + hi))
         radius = max(0.5 * (hi - lo) - 1.0, 1.0)
-        return EventPlan(ev.name, ev.code, ev.actions, ev.trigger, ev.planned_time,
-                         (round(mid.x, 3), round(mid.y, 3), round(radius, 2)))
+        return dataclasses.replace(ev, within=(round(mid.x, 3), round(mid.y, 3), round(radius, 2)))
 
     def trim_trajectories(self, actor: Actor) -> None:
         """Start every trajectory at the point the actor has reached when its event fires."""
@@ -220,5 +221,5 @@ class EventRealiser:
                 at = actor.d0 + float(np.interp(ev.planned_time, t, d))
                 acts = tuple(TrajectoryAct(a.name, actor.track.vertices(at)) if isinstance(a, TrajectoryAct) else a
                              for a in ev.actions)
-                actor.events[k] = EventPlan(ev.name, ev.code, acts, ev.trigger, ev.planned_time)
+                actor.events[k] = dataclasses.replace(ev, actions=acts)
 

@@ -120,6 +120,8 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+# The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
+_TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
 # "slowing to begin to execute a right turn": "begin to" inside an infinitive of purpose is still an intention.
 _INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
@@ -255,8 +257,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
-            side = fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", s[:b], re.I) or \
-                fre.findall(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", " ".join(prior), re.I)
+            side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))
             if not side:
                 continue
             code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"

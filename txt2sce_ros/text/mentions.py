@@ -144,7 +144,8 @@ def normalise(text: str) -> str:
     t = _PAREN_DEF.sub("", t)
     # The AV's operator: the company in the first name given to an AV ("On May 7 ..." names no company).
     several = len({_company_key(m.group(0)) for m in _COMPANY_RE.finditer(t)}) > 1  # else nothing to tell apart
-    named = [m for rx in _EGO_RES if several for m in [rx.search(t)] if m and _COMPANY_RE.search(m.group(0))]
+    found = (rx.search(t) for rx in _EGO_RES) if several else ()
+    named = [m for m in found if m and _COMPANY_RE.search(m.group(0))]
     first_co = _COMPANY_RE.search(min(named, key=lambda m: m.start()).group(0)) if named else None
     av_company = _company_key(first_co.group(0)) if first_co else None
 

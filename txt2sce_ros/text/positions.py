@@ -4,14 +4,10 @@ from __future__ import annotations
 
 import bisect
 import re
-from collections.abc import Callable
-from typing import TypeVar
 
 from . import fastre as fre
 from .mentions import Entity
 from .story import TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
-
-T = TypeVar("T")
 
 
 def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
@@ -187,19 +183,12 @@ _STREET = r"((?:[A-Z0-9][\w.'-]*\s+){1,3}?)(?:Street|St\b|Avenue|Ave\b|Road|Rd\b
           r"Lane\b|Parkway|Highway|Hwy|Expressway|Place|Court|Terrace)"
 
 
-def _once(key: str, d: Doc, read: Callable[[Doc], T]) -> T:
-    """`read(d)` computed once per narrative: these scan the whole text, and are asked once per party."""
-    if key not in d.memo:
-        d.memo[key] = read(d)
-    return d.memo[key]  # type: ignore[return-value]
-
-
 def av_street(d: Doc) -> str | None:
-    return _once("av_street", d, _read_av_street)
+    return d.once("av_street", lambda: _read_av_street(d))
 
 
 def exit_street(d: Doc) -> str | None:
-    return _once("exit_street", d, _read_exit_street)
+    return d.once("exit_street", lambda: _read_exit_street(d))
 
 
 def _read_av_street(d: Doc) -> str | None:
@@ -239,7 +228,7 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
                  r"completing)\b", d.text[offset:offset + 60], re.I):
         return True  # "EGO was making a right turn from Stockton Street": the turn is going on as the party comes
     sent = max(0, bisect.bisect_right(d.starts, offset) - 1) if d.starts else 0
-    first = _once("first_party_sentence", d, lambda d: min(
+    first = d.once("first_party_sentence", lambda: min(
         (m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary), default=None))
     return first is not None and sent >= first
 

@@ -8,13 +8,17 @@ functions here are the steps that need the whole story at once.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from .actions import Act, heading_of, who_for
 from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CONTACT, NEGATION
 from .mentions import Entity, Mention
+
+T = TypeVar("T")
 
 _SUMMARY = compile_gated(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
                       r"\b|\breceived\s+notice\b|\bcollision\s+involving\b", re.I)
@@ -64,6 +68,12 @@ class Doc:
     def offset(self, sent: int) -> int:
         """Where sentence `sent` starts in the normalised text."""
         return self.starts[sent] if sent < len(self.starts) else 0
+
+    def once(self, key: str, read: Callable[[], T]) -> T:
+        """`read()` computed once per narrative under `key`: facts of the whole text asked for once per party."""
+        if key not in self.memo:
+            self.memo[key] = read()
+        return self.memo[key]  # type: ignore[return-value]
 
 
 _FORM_FIELD = compile_gated(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s")  # "Weather: ", "Lighting Conditions: "
@@ -308,10 +318,7 @@ def side_named(ctx: str) -> str | None:
 
 def heading(d: Doc, who: int) -> int | None:
     """The compass heading (degrees) the text gives the AV (-1) or entity `who`, read once per story."""
-    key = f"heading:{who}"
-    if key not in d.memo:
-        d.memo[key] = _heading(d, who)
-    return d.memo[key]  # type: ignore[return-value]
+    return d.once(f"heading:{who}", lambda: _heading(d, who))
 
 
 def _heading(d: Doc, who: int) -> int | None:
@@ -354,10 +361,7 @@ _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+\s+){1,6})")
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
     """Where the AV was touched, (front/rear, left/right), from the contact sentence's "the rear driver side of
     EGO" / "EGO's front bumper" (US vehicles: the driver side is the left). Read once per contact."""
-    key = f"ego_contact_part:{d.contact_sent}"
-    if key not in d.memo:
-        d.memo[key] = _ego_contact_part(d)
-    return d.memo[key]  # type: ignore[return-value]
+    return d.once(f"ego_contact_part:{d.contact_sent}", lambda: _ego_contact_part(d))
 
 
 def _ego_contact_part(d: Doc) -> tuple[str | None, str | None]:

@@ -156,10 +156,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
         logic.set("filepath", os.path.relpath(ctx.map_path, nodes_dir.resolve()))
     rebased = etree.tostring(root, encoding="unicode")
     order = tuple(cfg["tree"]["order"])
-    dis = disassemble(rebased, source=str(seed_path), order=order,
-                      new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)),
-                      new_signal_slot=bool(cfg["tree"].get("new_signal_slot", False)))
+    dis = disassemble(rebased, source=str(seed_path), **_slots(cfg))
     key = seed_key(seed_path.name)
     variants: list[list[Variant]] = [block_variants(b, ctx, cfg, seed=seed, seed_key=key) for b in dis.blocks]
     used = [i for i, v in enumerate(variants) if v]  # a block with no possible version is left as in the seed
@@ -286,13 +283,18 @@ class TreeEstimate:
     bytes: int
 
 
+def _slots(cfg: dict[str, Any]) -> dict[str, Any]:
+    """The disassembly's settings from the tree config: block order and the empty slots for insertions."""
+    t = cfg["tree"]
+    return {"order": tuple(t["order"]), "new_obstacle_slots": int(t["new_obstacle_slots"]),
+            "new_party_slots": int(t.get("new_party_slots", 0)),
+            "new_signal_slot": bool(t.get("new_signal_slot", False))}
+
+
 def _seed_blocks(seed_path: Path, cfg: dict[str, Any]) -> tuple[Any, etree._Element, Any, Any, int]:
     """The seed read and disassembled as the tree's layers see it: (data, root, context, disassembly, seed key)."""
     data, root, ctx = _read_seed(seed_path)
-    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path),
-                      order=tuple(cfg["tree"]["order"]), new_obstacle_slots=int(cfg["tree"]["new_obstacle_slots"]),
-                      new_party_slots=int(cfg["tree"].get("new_party_slots", 0)),
-                      new_signal_slot=bool(cfg["tree"].get("new_signal_slot", False)))
+    dis = disassemble(etree.tostring(root, encoding="unicode"), source=str(seed_path), **_slots(cfg))
     return data, root, ctx, dis, seed_key(seed_path.name)
 
 
