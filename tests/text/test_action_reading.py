@@ -196,3 +196,21 @@ def test_swerving_into_the_av_s_door_is_a_contact_but_into_its_lane_is_not() -> 
     assert sk.collision.with_ == "npc1"
     lane = text.replace("the driver door of the Waymo AV", "the Waymo AV's lane")
     assert extract(lane, "t").collision.with_ is None
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # A turn in progress when the story takes the party up: the string opens with it, no run along the lane before.
+    ("The AV was driving west on Folsom Street toward 7th Street. A sedan ahead of it in the same lane was making "
+     "a left turn onto 7th Street when it stopped for a cyclist, and the AV's front bumper touched its rear.",
+     ("moving", "dh")),
+    # A participle right after the party: merging was what it was doing.
+    ("Our autonomous vehicle was traveling in the right lane of northbound Interstate 680. A cement truck merging "
+     "onto the freeway from the on-ramp on our right moved into our lane and scraped our passenger side.",
+     ("moving", "f")),
+    # Told travelling first in a sentence of its own, then turning: a run along the lane, then the turn.
+    ("The AV was traveling south on Market Street. A sedan was driving ahead of the AV in the same lane. As the AV "
+     "approached Valencia Street, the sedan turned right and stopped for a pedestrian, and the AV struck its rear.",
+     ("moving", "aeh")),
+])
+def test_a_manoeuvre_told_in_progress_opens_the_string(text: str, want: tuple[str, str]) -> None:
+    assert _party(text) == want

@@ -124,6 +124,13 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO)\b)|preparing\s+
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
 # "slowing to begin to execute a right turn": "begin to" inside an infinitive of purpose is still an intention.
 _INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}$", re.I)
+# "was making a right turn", "were in the process of changing lanes", "while turning": the manoeuvre in progress.
+_PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are)\s+(?:(?:already|still|actively|currently|just|slowly)\s+)?"
+                          r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
+_PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are)\s+(?:(?:already|still|currently|just)\s+)?"
+                               r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
+                               r"completing|conducting|negotiating)\s+(?:a|an|its|the|their|his|her)\s+"
+                               r"(?:[\w-]+\s+)?$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
@@ -150,6 +157,9 @@ class Act:
     code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state)
     who: int  # entity index, -1 = ego
     text: str
+    #: Told in the progressive ("was making a right turn", "a truck merging onto the highway", "while changing
+    #: lanes"): the manoeuvre was under way when the story took it up, so the party's string opens with it.
+    under_way: bool = False
 
 
 def heading_of(s: str) -> int | None:
@@ -194,6 +204,17 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
     if best is None:
         return fallback
     return -1 if best.kind in ("ego", "egod") else (best.entity if best.entity >= 0 else fallback)
+
+
+def _in_progress(s: str, b: int, e: int, rel: Mention | None) -> bool:
+    """Is the manoeuvre at s[b:e] told as already in progress: "was turning right", "was making a right turn",
+    "while changing lanes", or a participle right after its doer as subject ("A truck merging onto the freeway")?"""
+    before = s[max(0, b - 70):b]
+    if fre.match(r"\w+ing\b", s[b:e]):
+        # The participle opens the subject's own clause ("A truck merging onto ... moved into"); after an object of
+        # seeing ("seeing the car crossing the centerline") it tells what was seen, not when it began.
+        return bool(_PROGRESSIVE.search(before)) or (rel is not None and rel.subject and not s[rel.end:b].strip())
+    return bool(_PROGRESSIVE_NOUN.search(before))
 
 
 def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
@@ -261,7 +282,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             if not side:
                 continue
             code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"
-        out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e]))
+        out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e],
+                       under_way=_in_progress(s, b, e, rel)))
     # A state "was stopped" and the "stopped" inside it are one fact; "accelerated while still in reverse" is
     # the backing up, not a speed-up forward.
     dedup: list[Act] = []

@@ -80,6 +80,19 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     return start, s
 
 
+def opens_under_way(acts: list[Act]) -> tuple[list[Act], bool]:
+    """A party whose first manoeuvre is told in progress ("a Tundra traveling south was making a right turn", "the AV
+    was changing lanes to the left when") was doing it when the interaction began: its string opens with that letter
+    (sketch.md), and a "traveling" told before it only describes the party. Returns the acts from that manoeuvre
+    on, and whether the string opens under way."""
+    k = next((k for k, a in enumerate(acts) if a.code not in "aA"), None)
+    if k is None or not acts[k].under_way or acts[k].code not in "defgjF":
+        return acts, False
+    if any(a.sent < acts[k].sent for a in acts[:k]):
+        return acts, False  # told travelling first, in a sentence of its own: a run along its lane, then the move
+    return acts[k:], True
+
+
 def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
     """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
     or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
