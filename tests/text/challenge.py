@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 168 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 196 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -14,7 +14,12 @@ left-turn pockets, stop-sign legs, scored before any fix: 8/12, 8/12, 11/12; 148
 in a later clause: 1/2, 0/2, 1/2; 150-157, parties behind and beside, passing a parked AV, reversing: 6/8, 4/8, 6/8;
 158-163, NHTSA style (redacted streets, intercardinal headings, V1/V2): 6/6, 6/6, 6/6; 164-168, parties in the lane to
 the AV's left, another operator's car ('a Lyft vehicle' in a Cruise report): 4/5, 4/5, 3/5 (one label corrected to the
-spec after scoring, one narrative with a contested label dropped). Scored per party (position with lane, events) and
+spec after scoring, one narrative with a contested label dropped). Session 6: 300-315, parties beside the AV ahead
+of or behind it in reports' wording, scored before any fix: 16/16, 11/16, 15/16 (one AV label corrected after
+scoring); 316-327, parties coming up from behind in a lane beside the AV without the words "behind" or "pass"
+(squeezing between the AV and the curb, "move past", "rode up on the right side", "approaching" a standing AV, "at a
+higher rate of speed", California lane numbers, a rider "lane-splitting"), scored before any fix: 4/13, 6/13, 9/12
+(two event labels corrected after scoring). Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss

@@ -47,6 +47,7 @@ _LANE_CUES = compile_gated(
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
     r"\bto\s+its\s+(left|right)\b|"
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
+    r"\bbetween\s+(?:the\s+)?EGO\s+and\s+(?:the\s+)?(curb|sidewalk|shoulder|median|parked\s+cars)\b|"
     r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
 _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
@@ -62,11 +63,18 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
                         r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|rear[- ]?ended\s+by|struck\s+from\s+behind\s+by|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
                         r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
-                        r"from\s+behind)", re.I)
+                        r"from\s+behind|"
+                        # came up beside the AV, tried to get ahead of it, went faster than it: it was behind
+                        r"(?:rode|riding|ride|came|coming|come|pulled|pulling|drove|driving|moved|moving)\s+up\s+"
+                        r"(?:on|along|beside|alongside|next)\b|(?:get|getting|got|pull|pulling|pulled)\s+ahead\s+of\s+"
+                        r"EGO|(?:at|with)\s+a\s+(?:much\s+)?(?:higher|greater|faster)\s+(?:rate\s+of\s+)?speed|"
+                        r"faster\s+than\s+EGO|speeding\s+past)", re.I)
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
-                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving)\s+past|"
+                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got)\s+past|"
+                         # squeezing between the AV and the curb, filtering through queued traffic: a pass
+                         r"squeez\w*\s+(?:between|past|by|through)|filter\w*\s+(?:between|past|through)|"
                          r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
@@ -76,14 +84,15 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 # "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
 _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
-                          r"\b(?:in|from|into|of)\s+the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane\b",
-                          re.I)
+                          r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
+                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d.,]))\b", re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
 _EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,]{0,40}$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
-                         r"(?:(?:back\s+|right\s+|directly\s+|suddenly\s+|in\s+)?)$", re.I)
+                         # "cut back to the left directly in front of EGO": where it went, a few words on
+                         r"(?:(?:back|right|left|directly|suddenly|abruptly|in|over|to|the)\s+){0,5}$", re.I)
 _ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                           r"\bon-?coming\b", re.I)
 # The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
@@ -148,7 +157,8 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
 
 
 def _lane_rank(m: re.Match[str]) -> float:
-    mod, side, from_side, number = (g.lower() if g else "" for g in m.groups())
+    mod, side, from_side, number, numeral = (g.lower() if g else "" for g in m.groups())
+    number = number or numeral
     if number:
         return float(_NUMBERS.get(number) or int(number)) - 1.0
     if side in ("middle", "center", "centre"):
@@ -201,7 +211,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         for m in _SAME_LANE.finditer(win):
-            if not _INTO.search(win[max(0, m.start() - 25):m.start()]):
+            if not _INTO.search(win[max(0, m.start() - 25):m.start()]) and \
+                    not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
                 cues.append(Cue("lane", "same", (base + m.start(), base + m.end())))
         for m in _BEHIND.finditer(win):
             if m.group(0).lower().endswith(" it") and _EGO_CLAUSE.search(win[:m.start()]):
@@ -210,7 +221,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue
             cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
         for m in _AHEAD.finditer(win):
-            if _MOVED_TO.search(win[max(0, m.start() - 30):m.start()]) or \
+            if _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]) or \
                     _INTO_LANE.search(win[max(0, m.start() - 40):m.start()]):
                 continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
@@ -325,6 +336,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # (a party that stood, at the curb or a stop, and moved off into the passing AV was beside it, not behind)
         pos, rule = "R6", "contact on the AV's rear"
         used.append(contact)
+    elif pos == "R5" and not ego_actions[:1].strip("i") and not backing and \
+            any(c.kind == "lane" and c.value in ("left", "right") for c in cues) and \
+            (m := fre.search(r"\bapproach(?:ed|ing|es)?\b(?!\s+(?:the\s+)?(?:intersection|crosswalk|junction))",
+                             context(d, e), re.I)):
+        # Coming up in a lane beside an AV that stood still: it came from behind.
+        pos, rule = "R6", "approaching a standing AV"
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
     pass_side = next((c.value for c in passing if c.value), "")
     if lanes:
