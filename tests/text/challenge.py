@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 196 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 210 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -19,7 +19,12 @@ of or behind it in reports' wording, scored before any fix: 16/16, 11/16, 15/16 
 scoring); 316-327, parties coming up from behind in a lane beside the AV without the words "behind" or "pass"
 (squeezing between the AV and the curb, "move past", "rode up on the right side", "approaching" a standing AV, "at a
 higher rate of speed", California lane numbers, a rider "lane-splitting"), scored before any fix: 4/13, 6/13, 9/12
-(two event labels corrected after scoring). Scored per party (position with lane, events) and
+(two event labels corrected after scoring); 400-413, events told in progress ("was making a right turn", "a truck
+merging onto the freeway"), a move the AV was forced or caused to make, a repeated contact (the string ends at the
+first), lane changes into the AV's lane ("changed into the AV's lane", "moved over into the middle lane in front of"),
+a party named by its manoeuvre ("a parallel parking SUV", "a reversing box truck"), an animal and thrown debris,
+scored before any fix: 12/13, 8/13, 12/14 (one AV label corrected to the spec after scoring: slowing opens with `a`).
+Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss

@@ -214,3 +214,65 @@ def test_swerving_into_the_av_s_door_is_a_contact_but_into_its_lane_is_not() -> 
 ])
 def test_a_manoeuvre_told_in_progress_opens_the_string(text: str, want: tuple[str, str]) -> None:
     assert _party(text) == want
+
+
+def test_a_move_the_av_was_made_to_make_is_the_av_s() -> None:
+    # "forcing the AV to steer to the left": an event, not an intention, and the AV's (the object of "forcing").
+    text = ("The AV was traveling east on Alameda Street in the middle lane. A pickup in the lane to the right of the "
+            "AV swerved toward a pile of cones, forcing the AV to veer to the left, and the pickup's mirror touched "
+            "the AV's right side.")
+    assert _ego(text) == ("moving", "af")
+    text = ("While the AV was driving on Lincoln Avenue, a ball rolling into the street caused the AV to brake hard. "
+            "A hatchback behind the AV then rear-ended it.")
+    assert _ego(text) == ("moving", "ac")
+
+
+def test_a_repeated_contact_ends_the_string_at_the_first() -> None:
+    text = ("The AV was stopped at a red light on northbound Broadway. A grey SUV pulled up behind the AV, stopped, "
+            "then crept forward and bumped the rear of the AV. Its driver backed up and bumped the AV again.")
+    assert _party(text) == ("moving", "ahi")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("The AV was driving south on Ocean Avenue in the left lane. A coupe in the right lane changed into the AV's "
+     "lane a few feet ahead and the AV's front bumper struck the coupe.", "af"),
+    ("The AV was traveling east on Central Expressway in the center lane. A pickup truck in the left lane moved "
+     "over into the center lane directly in front of the AV, and the AV's front made contact with its rear bumper.",
+     "ag"),
+])
+def test_a_move_into_the_lane_ahead_of_the_av_is_a_lane_change(text: str, want: str) -> None:
+    assert _party(text)[1] == want
+
+
+def test_a_party_named_by_its_manoeuvre_did_it() -> None:
+    # "yielded to a parallel parking vehicle": "to a" is an object, not an infinitive of intention.
+    text = ("The AV was traveling north on Guerrero Street when it yielded to a parallel parking sedan ahead on the "
+            "right. The sedan's rear bumper then touched the AV's front right corner.")
+    assert _party(text) == ("moving", "l")
+    # "a lane-splitting motorcyclist": travelling between the lanes before the lane change.
+    text = ("The AV was stopped in traffic on Interstate 80. A lane-splitting motorcyclist attempting to change "
+            "lanes made contact with the AV's left mirror.")
+    assert _party(text)[1][:1] == "a"
+
+
+def test_the_party_named_again_by_its_move_makes_no_new_move() -> None:
+    # "due to the encroaching van": a party named again by what it did, travelling along its lane (R7).
+    text = ("The AV was traveling west on Clay Street. A van was traveling east on Clay Street partly in the AV's "
+            "lane. The AV stopped due to the encroaching van, and the van made contact with the AV's left side.")
+    assert _party(text) == ("moving", "a")
+
+
+def test_a_slow_moving_truck_is_not_slowing() -> None:
+    text = ("The AV was traveling north in the right lane of Interstate 280 when it approached a slow-moving heavy "
+            "truck ahead in the same lane. The AV changed lanes to the left, and a sedan passing in the left lane "
+            "made contact with the AV's front left.")
+    sk = extract(text, "t")
+    assert [(n.category, n.actions) for n in sk.npcs] == [("truck", "a"), ("car", "a")]
+
+
+def test_debris_thrown_onto_the_av_is_an_obstacle_it_touched() -> None:
+    text = ("The AV was traveling west on Highway 92 when a gravel truck ahead of it in the same lane launched "
+            "a rock onto the AV, chipping its windshield.")
+    sk = extract(text, "t")
+    assert [o.category for o in sk.obstacles] == ["debris"]
+    assert sk.collision.with_ == "obs1" and sk.collision.type == "hit_object"

@@ -51,7 +51,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
           r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again"),
-    ("f", r"\b(?:left|leftward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
+    ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
@@ -61,7 +61,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
-    ("g", r"\b(?:right|rightward)\s+lane\s+change|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
+    ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
           r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
@@ -72,7 +72,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
           r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\b(?:moved|moving|came|coming|pulled|pulling)\s+"
-          r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b"),
+          r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
+          # "changed into the AV's lane", "moved over into the middle lane in front of the AV", "partially entered
+          # the leftmost through lane ahead of the AV": a move into the lane the AV is in, from the party's side.
+          r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
+          r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+)?into|"
+          r"(?:partially\s+)?enter(?:ed|ing|s)\s+(?:into\s+)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
+          r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+EGO\b"),
     ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
@@ -92,7 +98,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"intersection|crosswalk))"),
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
-    ("c", r"\bslow(?:ed|ing|s)?\b(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
+    ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
@@ -100,6 +106,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
+          r"pull(?:ed|ing|s)?\s+up\s+(?:behind|beside|next\s+to|alongside)|"
           r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
 )
 _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
@@ -116,8 +123,9 @@ _NEEDS: dict[str, tuple[str, ...]] = {
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
-# A bare "to" before a possessive is a place ("stopped to its left began to move"), not an infinitive.
-_INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
+# A bare "to" before a possessive is a place ("stopped to its left began to move"), and before an article an object
+# ("yielded to a parallel parking vehicle"), not an infinitive.
+_INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"intending\s+to|in\s+order\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
@@ -132,6 +140,10 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are)\s+(?:(?:already|still|
                                r"completing|conducting|negotiating)\s+(?:a|an|its|the|their|his|her)\s+"
                                r"(?:[\w-]+\s+)?$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+# "forcing the AV to steer left", "which caused EGO to brake": the object of the causing verb did it; no intention.
+_CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|ing|s)|requir(?:ed|ing|es)|"
+                     r"compell(?:ed|ing))\s+(?:(?:EGO|EGOD|it|him|her|them|the\s+[\w-]+|an?\s+[\w-]+)\s+){1,2}"
+                     r"to\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
@@ -239,7 +251,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     out: list[Act] = []
     for b, e, code in sorted(spans):
         before = s[max(0, b - 40):b]
-        if _INTENT.search(before) and (not _INTENT_OK.search(before) or _INTENT_TO_BEGIN.search(before)):
+        caused = _CAUSED.search(before)
+        if _INTENT.search(before) and not caused and (not _INTENT_OK.search(before) or
+                                                      _INTENT_TO_BEGIN.search(before)):
             continue
         if _NEGATED.search(before):
             continue  # "did not immediately proceed"
@@ -249,6 +263,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
                 fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
             continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
+        if code == "F" and fre.search(r"\bthe\s+$", before, re.I) and fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
+            continue  # "due to the encroaching pickup": a party named again by what it did, not a new move
         inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
         # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
@@ -259,7 +275,13 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
             # the centerline": a participle right after a noun tells that noun's move.
             rel = None
-        if inside:
+        made = [m for m in ments if caused and b - len(before) + caused.start() < m.start < b and
+                m.kind in ("ego", "egod", "party")]
+        if made:
+            who = -1 if made[-1].kind in ("ego", "egod") else made[-1].entity
+            if who < 0 and made[-1].kind == "party":
+                continue
+        elif inside:
             who = inside[0].entity
         elif rel is not None and rel.kind in ("party", "obstacle") and rel.entity >= 0:
             who = rel.entity

@@ -130,9 +130,9 @@ PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|u
 CONTACT = compile_gated(
     r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes?\s+contact|"
     r"(?:resulting\s+in|causing)\s+(?:a\s+)?(?:contact|collision)|contact\s+between|"
-    r"came\s+into\s+contact|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
+    r"came\s+into\s+contact|(?:projected|thrown|threw|flung|propelled|launched|kicked\s+up)\s+(?:[\w-]+\s+){0,4}?(?:onto|into|at|against)\s+EGO\b|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
-    r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|ran\s+over|running\s+over|"
+    r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|touched|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|cycled|walked)\s+into|"
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"

@@ -133,6 +133,10 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             stopped = True
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
+            if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
+                # "was traveling north ... causing the AV to steer to the right": a run along its lane, then the
+                # lane change; one told in progress ("was changing lanes when") opens the string.
+                prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
             turning = [a for a in pre[:-1] if a.code in ("d", "e") and fre.match(r"turning\b", a.text, re.I)]
             if last.code == "c" and turning and all(a.code in ("c", "h", "S") or a is turning[-1]
                                                     for a in pre[pre.index(turning[-1]):]):
@@ -149,7 +153,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
 
 
 _MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", compile_gated(r"\boncoming\b|\bapproaching\b|"
-                                                                                       r"\bfollowing\b", re.I)))
+                                                                                       r"\bfollowing\b|\blane-splitting\b", re.I)))
 
 
 def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:

@@ -44,6 +44,7 @@ _AROUND_ONLY = compile_gated(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+sid
 _THROWN = r"(?:projected|thrown|threw|kicked\s+up|kicked|launched|flung|propelled|flew|sent\s+flying)"
 _THROWN_AFTER = compile_gated(rf"^[\s,]*(?:(?:which|that)\s+)?(?:(?:was|were)\s+)?{_THROWN}\b", re.I)
 _THROWN_BEFORE = compile_gated(rf"\b{_THROWN}\s+(?:up\s+)?(?:a|an|the|some)?\s*(?:[\w-]+\s+){{0,3}}$", re.I)
+_THROWN_MOD = compile_gated(rf"{_THROWN}\b", re.I)  # "projected road debris": the participle read into the name
 _CONTACT_NOTHING = compile_gated(r"\b(?:pavement|undercarriage|pothole|road\s+surface|ground|speed\s+bump|dip)\b", re.I)
 
 
@@ -125,7 +126,8 @@ def find_contact(d: Doc) -> None:
                 # the AV, not the party that threw it.
                 for x in others:
                     if x.kind == "obstacle" and (_THROWN_AFTER.match(s[x.end:x.end + 50]) or
-                                                 _THROWN_BEFORE.search(s[max(0, x.start - 40):x.start])):
+                                                 _THROWN_BEFORE.search(s[max(0, x.start - 40):x.start]) or
+                                                 _THROWN_MOD.match(x.mods)):
                         partner = x.entity
                         break
                 # A door that opened in the same sentence is what touched the AV.
@@ -151,6 +153,10 @@ def find_contact(d: Doc) -> None:
                   if m.kind == "party" and m.entity >= 0 and j not in d.summary and not d.ents[m.entity].parked]
         if recent:
             chosen = (chosen[0], chosen[1], recent[-1])
+    if fre.search(r"\b(?:again|a\s+second\s+time|once\s+more)\b", d.sents[chosen[0]][chosen[1]:], re.I):
+        # "... and struck the AV again": the story's conflict ends at the first contact (sketch.md: strings end at
+        # the contact), not at the repeat.
+        chosen = next(c for c in (detailed or candidates) if c[2] == chosen[2] or c[2] is None)
     d.contact_sent, d.contact_pos, d.partner = chosen
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
