@@ -7,7 +7,7 @@ import re
 
 from . import fastre as fre
 from .mentions import Entity
-from .story import TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
+from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
 
 
 def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
@@ -50,8 +50,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # Oncoming is said of the party itself ("an oncoming truck", "traveling in the opposite direction"), close to
     # its name; "without yielding to oncoming traffic" further on speaks of others.
     near = " | ".join(f"{m.mods} {_own_clause(d.sents[m.sent][m.end:m.end + 100])}" for m in e.mentions)
-    oncoming = fre.search(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|\bon-?coming\b",
-                         near + " " + pre, re.I)
+    oncoming = ONCOMING.search(near + " " + pre)
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None

@@ -32,8 +32,8 @@ from dataclasses import dataclass
 
 from . import fastre as fre
 from .fastre import compile_gated
-from .mentions import Entity
-from .story import TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
+from .mentions import Entity, Mention
+from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
@@ -93,8 +93,6 @@ _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
                          # "cut back to the left directly in front of EGO": where it went, a few words on
                          r"(?:(?:back|right|left|directly|suddenly|abruptly|in|over|to|the)\s+){0,5}$", re.I)
-_ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
-                          r"\bon-?coming\b", re.I)
 # The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
 _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0,2}?front\b|"
                              r"\bfront\s+(?:\w+\s+){0,2}?of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
@@ -145,8 +143,7 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
         if m.sent in d.summary and any(x.sent not in d.summary for x in e.mentions):
             continue
         s = d.sents[m.sent]
-        nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x) and x.entity != e.idx]
-        end = min(nxt) if nxt else len(s)
+        end = _clause_end(d, e, m)
         # The words just before the name belong to it only within its clause ("As EGO proceeded in the far right
         # lane, an SUV ..." places the AV, not the SUV).
         pre = s[max(0, m.start - 40):m.start]
@@ -229,7 +226,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             if fre.match(r"\s+(?:the|a|an)\s+(?!EGO)", win[m.end():]):
                 continue  # "changed lanes to pass the bus": the AV passing something, not the party passing it
             cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
-        for m in _ONCOMING.finditer(win):
+        for m in ONCOMING.finditer(win):
             path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane", win[m.end():], re.I)
             cues.append(Cue("direction", "opposite-lane" if path else "opposite", (base + m.start(), base + m.end())))
     if e.idx == d.partner and d.contact_sent is not None:
@@ -277,6 +274,12 @@ _YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|t
                             re.I)
 
 
+def _clause_end(d: Doc, e: Entity, m: Mention) -> int:
+    """Where the text stops speaking of the party named at `m`: the next other party named, or the sentence end."""
+    nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x) and x.entity != e.idx]
+    return min(nxt) if nxt else len(d.sents[m.sent])
+
+
 def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
     """A pedestrian or rider the turning AV meets at a junction is on the leg it turns onto (R4): said by "in the
     crosswalk", or by the AV yielding to it. For an AV going straight (`far_only`) only a crosswalk said to be
@@ -293,7 +296,8 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
                 a = d.offset(m.sent) + max(0, m.start - 40)
                 return Cue("junction", "exit leg", (a + far.start(), a + far.end()))
             continue
-        cw = fre.search(r"\bcrosswalk\b", win, re.I)
+        cw = fre.search(r"\bcrosswalk\b", win, re.I) or \
+            fre.search(r"\bcrosswalk\b", s[m.end:_clause_end(d, e, m)], re.I)  # "..., stepped into the crosswalk"
         if cw or _YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
             a = d.offset(m.sent) + max(0, m.start - 40)
             return Cue("junction", "exit leg", (a + cw.start(), a + cw.end()) if cw else

@@ -18,6 +18,12 @@ from .fastre import compile_gated
 from .lexicon import CONTACT, NEGATION
 from .mentions import Entity, Mention
 
+# Said of a party travelling the other way: "oncoming", "opposite direction", and at a junction the opposite
+# approach ("from the opposite side of the intersection", "facing EGO").
+ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
+                         r"\bon-?coming\b|\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
+                         r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b", re.I)
+
 T = TypeVar("T")
 
 _SUMMARY = compile_gated(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
