@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 224 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 228 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -26,7 +26,10 @@ a party named by its manoeuvre ("a parallel parking SUV", "a reversing box truck
 scored before any fix: 12/13, 8/13, 12/14 (one AV label corrected to the spec after scoring: slowing opens with `a`);
 328-341, left-side parties ahead, the opposite approach told without "oncoming" ("waiting to turn left from the
 opposite side of the intersection"), a pedestrian stepping from the corner into the crosswalk of the AV's exit leg, scored before any fix: 11/14, 9/14, 14/14 (one position label made consistent
-with 058 and one event label corrected after scoring). Scored per party (position with lane, events) and
+with 058 and one event label corrected after scoring);
+414-417, the AV stopping and then moving off before the contact (into a double-parked truck, a cone, past a parked
+car, into the next lane), scored before any fix: 0/2, 1/2, 0/4 (one AV label corrected after scoring: going around
+the truck is a lane change, `ahif`). Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss

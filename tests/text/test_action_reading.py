@@ -276,3 +276,29 @@ def test_debris_thrown_onto_the_av_is_an_obstacle_it_touched() -> None:
     sk = extract(text, "t")
     assert [o.category for o in sk.obstacles] == ["debris"]
     assert sk.collision.with_ == "obs1" and sk.collision.type == "hit_object"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # Stopped, then itself struck an object standing still: it moved off first.
+    ("The AV stopped on Mission Street behind a delivery truck that was double-parked in its lane. A minute "
+     "later the AV side-swiped the delivery truck.", ("moving", "ahi")),
+    # A stop and a start told before the object comes in are part of the story that ends at it.
+    ("While turning right from 9th Avenue onto Irving Street, the AV slowed to a stop for a pedestrian. As the AV "
+     "began to move forward, the test driver took over and drove forward, making contact with a parked sedan.",
+     ("moving", "ehi")),
+    # "entered the intersection" after a stop moves the AV off; a lane change after a stop too.
+    ("The AV was traveling south on Gough Street. As it approached Geary Boulevard, a bus ahead of it turned "
+     "right. The AV came to a stop at the crosswalk. The AV then entered the intersection but came to a stop again "
+     "as the bus began backing up, and the bus's rear touched the AV's front.", ("moving", "ahih")),
+    ("The AV was traveling in the right lane of El Camino Real and stopped behind a stalled car. The AV then "
+     "changed lanes to the left, and a pickup traveling behind in the left lane struck the AV's left rear.",
+     ("moving", "ahif")),
+])
+def test_a_stop_then_a_move_off_before_the_contact(text: str, want: tuple[str, str]) -> None:
+    assert _ego(text) == want
+
+
+def test_a_vehicle_stopped_in_the_lane_is_its_state_not_the_av_s_stop() -> None:
+    text = ("While traveling north on Valencia Street, the AV went around a delivery van stopped in the right lane. "
+            "After re-entering the right lane, the AV came to a stop behind a sedan, which then reversed into it.")
+    assert _ego(text) == ("moving", "afgh")

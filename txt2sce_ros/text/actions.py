@@ -275,6 +275,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
             # the centerline": a participle right after a noun tells that noun's move.
             rel = None
+        if code == "h" and s[b:e].lower() == "stopped" and left and left[-1].kind == "party" and \
+                left[-1].entity >= 0 and not s[left[-1].end:b].strip():
+            # "navigated around a double-parked vehicle stopped in the right lane": a past participle right after
+            # a noun is that noun's state, not the subject's stop.
+            out.append(Act(sent=sent_idx, pos=b, code="S", who=left[-1].entity, text=s[b:e]))
+            continue
         made = [m for m in ments if caused and b - len(before) + caused.start() < m.start < b and
                 m.kind in ("ego", "egod", "party")]
         if made:

@@ -5,13 +5,15 @@ from __future__ import annotations
 import re
 
 from ..sketch import Party
-from .actions import Act, turn_from_headings
+from .actions import Act, turn_from_headings, who_for
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
 from .story import Doc, before_contact, context
 
 _FORWARD = set("abdefgjm")
+#: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
+_MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated)\b", re.I)
 
 
 def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> tuple[str, str]:
@@ -52,10 +54,12 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "i"
         if start == "stopped" and codes and codes[-1] == "h" and c in ("a", "b"):
             c = "i"
-        if codes and codes[-1] == "h" and c in ("a", "b") and not ego:
-            c = "i"
+        if codes and codes[-1] == "h" and c in ("a", "b") and (not ego or _MOVES_OFF.match(a.text)):
+            c = "i"  # the AV's "entered the intersection" after a stop moves it off; "approaching" only describes
         if start == "stopped" and not codes and c in "defgm":
             codes.append("i")
+        if codes and codes[-1] == "h" and c in "defgjmF":
+            codes.append("i")  # a turn or lane change after a stop moves off first ("stopped ... then changed lanes")
         codes.append(c)
     out: list[str] = []
     for c in codes:
@@ -78,6 +82,22 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     s = "".join(out)
     s = fre.sub(r"h+", "h", s)
     return start, s
+
+
+def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
+    """"stopped for a double-parked vehicle ... Then the AV side-swiped the double-parked vehicle": an AV whose
+    string ends stopped, and that then itself struck an object standing still, moved off first (`i`)."""
+    if not actions.endswith("h") or d.contact_sent is None or d.partner is None or \
+            d.partner not in {e.idx for e in obstacles}:
+        return actions
+    s = d.sents[d.contact_sent]
+    before = [m for m in d.ments[d.contact_sent] if m.end <= d.contact_pos]
+    # The AV did the striking: its clause's subject, or the mention just before the contact verb ("A minute later
+    # the AV side-swiped ...").
+    if who_for(d.contact_pos, d.ments[d.contact_sent], None, s) != -1 and \
+            not (before and before[-1].kind in ("ego", "egod")):
+        return actions
+    return actions + "i"
 
 
 def opens_under_way(acts: list[Act]) -> tuple[list[Act], bool]:
@@ -147,6 +167,12 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             turn = turn_from_headings(d.sents[last.sent])
             if turn:
                 prefix = [Act(last.sent, last.pos, turn, -1, last.text)]
+        elif last.code == "i" and any(a.code == "h" for a in pre[:-1]):
+            # "slowed to a stop while entering a narrow roadway ... proceeded forward, making contact with a parked
+            # vehicle": a stop and a start told before the party comes in are part of the story that ends at it.
+            k = max(j for j, a in enumerate(pre[:-1]) if a.code == "h")
+            run = pre[k - 1] if k > 0 and pre[k - 1].code in "adefgA" else Act(last.sent, last.pos, "a", -1, "")
+            prefix = [run, pre[k], last]
         else:
             prefix = [Act(last.sent, last.pos, "a", -1, "")]
     return sequence(prefix + post, stopped=stopped, ego=True, side=None)
