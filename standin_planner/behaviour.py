@@ -278,10 +278,12 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
         if parallel and not line.turns_across(o.heading, ego.s_front - 1.0, ego.s_front + 80.0, PARALLEL_SIN):
             continue                                     # keeps to a lane the route runs beside
         traj = predict(o, bp.prediction_horizon, bp.prediction_step)
+        reach = ego.half_width + po.half_lat + bp.conflict_margin
+        if line.far_from(traj[:, 1], traj[:, 2], reach, ego.s_front - 1.0, ego.s_front + 80.0):
+            continue                                     # its course keeps clear of the path ahead
         s, off = line.project_many(traj[:, 1], traj[:, 2])
         radius = 0.5 * max(o.length, o.width)
-        hit = (np.abs(off) < ego.half_width + po.half_lat + bp.conflict_margin) & (s > ego.s_front - 1.0) \
-            & (s < ego.s_front + 80.0)
+        hit = (np.abs(off) < reach) & (s > ego.s_front - 1.0) & (s < ego.s_front + 80.0)
         if parallel:
             # A mover keeping to a parallel lane (same way or oncoming) meets the route only where the route turns
             # across its course: the right turn across a cyclist riding on in the bike lane beside the ego. Where

@@ -24,6 +24,9 @@ MIN_CHUNKS = 16
 #: Slack (m) on the chunk distance bounds: far above rounding errors, so pruning never drops the nearest segment.
 CHUNK_SLACK = 1e-6
 
+#: Turns at a vertex sharper than this (rad) are not bounded by `far_from` (a lane join's kink).
+MAX_BOUNDED_TURN = 1.2
+
 #: Projections a line remembers (it forgets them all when full: they are cheap to recompute).
 PROJECTION_CACHE = 256
 
@@ -98,6 +101,18 @@ class RefLine:
         self._chunk_x = np.array([c[0] for c in centres])
         self._chunk_y = np.array([c[1] for c in centres])
         self._chunk_r = np.array(radii)
+        # Per chunk, the arc length it spans and 1/cos of the sharpest turn at a vertex of its segments (for
+        # `far_from`; inf where a turn is too sharp to bound).
+        self._chunk_s0 = self.s[starts]
+        self._chunk_s1 = self.s[np.minimum(starts + CHUNK, nseg)]
+        turn = np.zeros(nseg + 1)
+        if nseg > 1:
+            turn[1:-1] = np.abs(np.remainder(np.diff(seg_h) + math.pi, 2.0 * math.pi) - math.pi)
+        inv_cos = []
+        for a in starts:
+            worst = float(turn[a:min(a + CHUNK, nseg) + 1].max())
+            inv_cos.append(1.0 / math.cos(worst) if worst < MAX_BOUNDED_TURN else math.inf)
+        self._chunk_inv_cos = np.array(inv_cos)
         # Projections by (x, y, first segment, end segment), which fully determine the answer: the planner projects
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
@@ -234,6 +249,38 @@ class RefLine:
         s = self.s[j] + u[rows, jj] * self._seg_len[j]
         off = -(xs[:, 0] - px[rows, jj]) * np.sin(h) + (ys[:, 0] - py[rows, jj]) * np.cos(h)
         return s, off
+
+    def far_from(self, xs: np.ndarray, ys: np.ndarray, reach: float, s0: float, s1: float) -> bool:
+        """True only when no point can have, in `project_many`, both |offset| < `reach` and s0 < s < s1: then
+        the projection can be skipped (False: it may, project).
+
+        A point whose nearest segment lies where the line runs between s0 and s1 is within `reach` of its offset
+        only if it is within reach / cos(turn) of that segment: its offset is its distance where its foot is inside
+        the segment, and at least the distance times the cosine of the turn where the foot is a vertex (the point
+        then lies in the wedge between the two segments' normals). So a point farther than that from the circle
+        of each chunk that spans part of (s0, s1) is answered, except beyond one of the line's ends, where the
+        offset is only the distance across the end segment: that is tested as it is computed."""
+        live = (self._chunk_s1 > s0 - CHUNK_SLACK) & (self._chunk_s0 < s1 + CHUNK_SLACK)
+        if not live.any():
+            return True
+        inv_cos = self._chunk_inv_cos[live]
+        if np.isinf(inv_cos).any():
+            return False
+        xs = np.asarray(xs, dtype=float)
+        ys = np.asarray(ys, dtype=float)
+        gap = np.hypot(xs[:, None] - self._chunk_x[live], ys[:, None] - self._chunk_y[live]) - self._chunk_r[live]
+        if not (gap > reach * inv_cos * (1.0 + 1e-9) + CHUNK_SLACK).all():
+            return False
+        for end, k, sign in ((0, 0, -1.0), (len(self.xy) - 1, self._last_seg, 1.0)):
+            if not live[0 if end == 0 else -1]:
+                continue
+            h = float(self._seg_heading[k])
+            c, s = math.cos(h), math.sin(h)
+            dx, dy = xs - float(self.xy[end, 0]), ys - float(self.xy[end, 1])
+            beyond = sign * (dx * c + dy * s) > -CHUNK_SLACK       # may be clamped to this end
+            if (beyond & (np.abs(dy * c - dx * s) < reach + CHUNK_SLACK)).any():
+                return False
+        return True
 
     def _candidate_segments(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray | None:
         """Per point (row), increasing segment indices covering every chunk that may hold its nearest segment

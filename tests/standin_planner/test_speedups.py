@@ -183,3 +183,28 @@ def test_project_many_with_chunk_pruning_equals_the_plain_formula_bit_for_bit():
             ws, woff = _plain_project_many(line, xs, ys)
             assert s.tobytes() == ws.tobytes() and off.tobytes() == woff.tobytes()
     assert pruned > 20           # the pruned path is the one exercised
+
+
+def test_far_from_never_rules_out_a_point_the_projection_would_find_near():
+    """`far_from` lets the yield rule skip a mover's projection: it may say True only when no predicted point has
+    |offset| < reach with s inside the window, on lanes, a self-approaching loop, and a line with a sharp kink,
+    with points around both ends and beside the line."""
+    rng = np.random.default_rng(3)
+    kink = RefLine(np.array([[0.0, 0.0], [20.0, 0.0], [20.5, 0.0], [30.0, 9.0], [60.0, 9.0]]))
+    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [kink]
+    said_far = near = 0
+    for line in lines:
+        for _ in range(60):
+            x, y, _ = line.position(rng.uniform(-25.0, line.length + 25.0), rng.normal(0.0, 8.0))
+            h = rng.uniform(-math.pi, math.pi)
+            xs, ys = x + np.arange(33) * 0.5 * math.cos(h), y + np.arange(33) * 0.5 * math.sin(h)
+            reach = float(rng.uniform(1.0, 4.0))
+            s0 = float(rng.uniform(-10.0, line.length))
+            s1 = s0 + 81.0
+            s, off = line.project_many(xs, ys)
+            hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s1)).any())
+            far = line.far_from(xs, ys, reach, s0, s1)
+            assert not (far and hit), (s0, reach)
+            said_far += far
+            near += hit
+    assert said_far > 50 and near > 50           # both answers are exercised
