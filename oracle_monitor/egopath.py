@@ -25,7 +25,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Goal
 
-from .geometry import Box, far_apart, footprint, penetration
+from .geometry import BoxGroup, footprint
 
 #: A mover counts as crossing the path when its heading differs from the path's by more than this (deg).
 CROSSING_DEG = 25.0
@@ -45,6 +45,8 @@ class EgoPath:
         self.s = np.concatenate([[0.0], np.cumsum(seg)])
         self.routed = routed
         self._s_hint = 0.0
+        self._located: tuple[tuple[float, float, float], float] | None = None   # last (x, y, hint) -> answer
+        self._corridor: tuple[tuple[float, ...], BoxGroup | None] | None = None  # last corridor by its inputs
 
     @classmethod
     def straight(cls, ego: EntityState) -> "EgoPath":
@@ -83,13 +85,20 @@ class EgoPath:
 
     def locate(self, x: float, y: float) -> float:
         """Arc length of the path point nearest to (x, y), searched near the last answer first (the path may come
-        back near itself)."""
+        back near itself). The answer depends on the point and the last answer only, so the last one is kept: a
+        standing ego asks the same question every step."""
+        key = (x, y, self._s_hint)
+        if self._located is not None and self._located[0] == key:
+            s = self._located[1]
+            self._s_hint = s
+            return s
         lo = int(np.searchsorted(self.s, self._s_hint - 30.0))
         hi = int(np.searchsorted(self.s, self._s_hint + 60.0)) + 1
         d2 = (self.xyh[lo:hi, 0] - x) ** 2 + (self.xyh[lo:hi, 1] - y) ** 2
         if len(d2) == 0 or float(d2.min()) > 25.0:           # lost the thread (or first call): the whole path
             lo, d2 = 0, (self.xyh[:, 0] - x) ** 2 + (self.xyh[:, 1] - y) ** 2
         s = float(self.s[lo + int(np.argmin(d2))])
+        self._located = (key, s)
         self._s_hint = s
         return s
 
@@ -100,31 +109,27 @@ class EgoPath:
 
     def blocker(self, ego: EntityState, front: tuple[float, float], objects: tuple[EntityState, ...], *,
                 clear_distance: float, margin: float) -> str:
-        """Name of an entity whose footprint lies in the corridor ahead of the front bumper ('' when none)."""
-        s0 = self.locate(*front)
-        pts = self.window(s0, clear_distance)
-        if len(pts) == 0:
+        """Name of an entity whose footprint lies in the corridor ahead of the front bumper ('' when none): the
+        path samples' boxes (`SAMPLE_DS` long, ego width plus `margin` each side) over `clear_distance`."""
+        group = self.corridor(self.locate(*front), clear_distance, 0.5 * ego.width + margin)
+        if group is None:
             return ""
-        half_length, half = 0.5 * SAMPLE_DS + 0.05, 0.5 * ego.width + margin
-        radius = math.hypot(half_length, half)          # every corridor box's (`Box.radius`)
-        xs, ys = pts[:, 0], pts[:, 1]
-        # One circle around the whole corridor: an object clear of it is clear of every box in it.
-        cx, cy = float(xs.mean()), float(ys.mean())
-        reach = float(np.hypot(xs - cx, ys - cy).max()) + radius
         for obj in objects:
-            fp = footprint(obj)
-            rf = fp.radius
-            if far_apart(cx, cy, reach, fp.cx, fp.cy, rf):
-                continue
-            # `overlaps(box, fp)` per corridor box: its circle test for all boxes at once (the same float
-            # operations, elementwise), then the exact test on the boxes that pass it, in order.
-            dx, dy = fp.cx - xs, fp.cy - ys
-            r = radius + rf
-            for i in np.flatnonzero(dx * dx + dy * dy < r * r).tolist():
-                x, y, h = pts[i].tolist()
-                if penetration(Box(x, y, math.cos(h), math.sin(h), half_length, half), fp) > 0.0:
-                    return obj.name
+            if group.overlapped_by(footprint(obj)):
+                return obj.name
         return ""
+
+    def corridor(self, s0: float, length: float, half_width: float) -> BoxGroup | None:
+        """The boxes of the path samples in [s0, s0 + length] (None: no sample there); the last one is kept, since
+        a standing ego asks for the same corridor every step."""
+        key = (s0, length, half_width)
+        if self._corridor is not None and self._corridor[0] == key:
+            return self._corridor[1]
+        pts = self.window(s0, length)
+        group = None if len(pts) == 0 else BoxGroup(pts[:, 0], pts[:, 1], pts[:, 2], 0.5 * SAMPLE_DS + 0.05,
+                                                     half_width)
+        self._corridor = (key, group)
+        return group
 
     def crossing(self, ego: EntityState, front: tuple[float, float], objects: tuple[EntityState, ...], *,
                  distance: float, horizon: float, margin: float, min_speed: float) -> str:

@@ -1,13 +1,15 @@
 """Oriented footprints and exact contact between them (separating-axis test on two rectangles).
 
-Pure `math` on purpose: the oracle runs every step on every entity pair, and numpy's per-call overhead on 4×2
-arrays is larger than the arithmetic itself.
+Pure `math` on purpose for one pair: the oracle runs every step on every entity pair, and numpy's per-call overhead
+on 4×2 arrays is larger than the arithmetic itself. Only `BoxGroup` (tens of boxes against one) uses arrays.
 """
 
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import NamedTuple, Sequence
+
+import numpy as np
 
 from txt2sce_ros.contract import EntityState
 
@@ -86,18 +88,39 @@ def far_apart(ax: float, ay: float, ar: float, bx: float, by: float, br: float) 
 
 
 class BoxGroup:
-    """Boxes tested together, one other box at a time: `overlapped_by(b)` answers `any(overlaps(a, b) for a in
-    boxes)` with the same tests on the same floats, after one test of `b` against the circle around them all."""
+    """Boxes of one size at many poses (centre and heading), tested together against one other box at a time:
+    `overlapped_by(b)` answers `any(overlaps(a, b) for a in boxes)` with the same tests on the same floats, after
+    one test of `b` against the circle around them all and the boxes' own circle tests in one array expression.
+    A box is built only where its exact test runs. (The oracle's corridor along the ego's path ahead and the
+    counterfactual ego's path are such groups.)"""
 
-    __slots__ = ("boxes", "radii", "cx", "cy", "reach")
+    __slots__ = ("xs", "ys", "headings", "half_length", "half_width", "radius", "cx", "cy", "reach", "_built")
 
-    def __init__(self, boxes: list[Box]) -> None:
-        self.boxes = boxes
-        self.radii = [a.radius for a in boxes]
-        n = len(boxes)
-        self.cx = sum(a.cx for a in boxes) / n
-        self.cy = sum(a.cy for a in boxes) / n
-        self.reach = max(math.hypot(a.cx - self.cx, a.cy - self.cy) + r for a, r in zip(boxes, self.radii))
+    def __init__(self, xs: Sequence[float], ys: Sequence[float], headings: Sequence[float], half_length: float,
+                 half_width: float) -> None:
+        self.xs = np.asarray(xs, dtype=float)
+        self.ys = np.asarray(ys, dtype=float)
+        self.headings = np.asarray(headings, dtype=float)
+        if not len(self.xs) == len(self.ys) == len(self.headings) > 0:
+            raise ValueError("a box group needs one centre and heading per box, and at least one box")
+        self.half_length, self.half_width = half_length, half_width
+        self.radius = math.hypot(half_length, half_width)           # every box's `Box.radius`
+        self.cx, self.cy = float(self.xs.mean()), float(self.ys.mean())
+        self.reach = float(np.hypot(self.xs - self.cx, self.ys - self.cy).max()) + self.radius
+        self._built: dict[int, Box] = {}
+
+    def box(self, i: int) -> Box:
+        b = self._built.get(i)
+        if b is None:
+            h = float(self.headings[i])
+            b = Box(float(self.xs[i]), float(self.ys[i]), math.cos(h), math.sin(h), self.half_length,
+                    self.half_width)
+            self._built[i] = b
+        return b
+
+    @property
+    def boxes(self) -> list[Box]:
+        return [self.box(i) for i in range(len(self.xs))]
 
     def clear_of(self, x: float, y: float, radius: float) -> bool:
         """Whether the circle (x, y, radius) is clear of every box of the group (`far_apart` of the circles)."""
@@ -105,14 +128,14 @@ class BoxGroup:
 
     def overlapped_by(self, b: Box) -> bool:
         rb = b.radius
-        bx, by = b.cx, b.cy
-        if far_apart(self.cx, self.cy, self.reach, bx, by, rb):
+        if far_apart(self.cx, self.cy, self.reach, b.cx, b.cy, rb):
             return False
-        for a, ra in zip(self.boxes, self.radii):
-            # `overlaps(a, b)` inline: its circle test, then the exact one
-            dx, dy = bx - a.cx, by - a.cy
-            r = ra + rb
-            if dx * dx + dy * dy < r * r and penetration(a, b) > 0.0:
+        # `overlaps(a, b)` per box: its circle test for all boxes at once (the same float operations,
+        # elementwise), then the exact test on the boxes that pass it, in order.
+        dx, dy = b.cx - self.xs, b.cy - self.ys
+        r = self.radius + rb
+        for i in np.flatnonzero(dx * dx + dy * dy < r * r).tolist():
+            if penetration(self.box(i), b) > 0.0:
                 return True
         return False
 

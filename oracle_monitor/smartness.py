@@ -63,6 +63,7 @@ class SmartnessOracle:
         self.last_frame: Frame | None = None
         self._path: EgoPath | None = None          # planned when the ego first stands (route to the goal)
         self._cos_tol = math.cos(math.radians(params.light_heading_tolerance_deg))
+        self._light_axes: dict[float, tuple[float, float]] = {}   # cos, sin of a signal's heading, by heading
 
     def set_network(self, network: Any | None) -> None:
         """The road network arrived late: lane checks and the way ahead use it from now on."""
@@ -136,8 +137,18 @@ class SmartnessOracle:
                            point: tuple[float, float]) -> tuple[float, float] | None:
         """(longitudinal, lateral) position of `point` relative to the light's stop line (longitudinal > 0: past
         it), or None when the ego heads another way than the signal's lanes (cheap: no map lookup)."""
-        c, s = math.cos(light.heading), math.sin(light.heading)
-        if math.cos(heading) * c + math.sin(heading) * s < self._cos_tol:
+        return self._stop_line_position(light, math.cos(heading), math.sin(heading), point)
+
+    def _stop_line_position(self, light: TrafficLightState, ch: float, sh: float,
+                            point: tuple[float, float]) -> tuple[float, float] | None:
+        """`stop_line_position` with the heading's cosine and sine given (the same for every light of a frame)."""
+        cs = self._light_axes.get(light.heading)
+        if cs is None:
+            cs = (math.cos(light.heading), math.sin(light.heading))
+            if light.heading != 0.0:          # 0.0 and -0.0 are one key but have sines of either sign
+                self._light_axes[light.heading] = cs
+        c, s = cs
+        if ch * c + sh * s < self._cos_tol:
             return None
         dx, dy = point[0] - light.stop_x, point[1] - light.stop_y
         return dx * c + dy * s, -dx * s + dy * c
@@ -181,10 +192,11 @@ class SmartnessOracle:
         self._prev_lights = {light.id: light for light in frame.lights}
         if prev_front is None:
             return None
+        ch, sh = math.cos(ego.heading), math.sin(ego.heading)
         for light in frame.lights:
             before = prev_lights.get(light.id, light)
-            p0 = self.stop_line_position(before, ego.heading, prev_front)
-            p1 = self.stop_line_position(light, ego.heading, front)
+            p0 = self._stop_line_position(before, ch, sh, prev_front)
+            p1 = self._stop_line_position(light, ch, sh, front)
             if p0 is None or p1 is None or not (p0[0] < 0.0 <= p1[0]):
                 continue                            # not heading its way, or no crossing in this step
             red = before.state is SignalState.RED or (

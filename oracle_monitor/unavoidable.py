@@ -77,8 +77,14 @@ class Counterfactual:
     parties: list[list[EntityState]] = field(default_factory=list)                      # per frame
     moved: set[str] = field(default_factory=set)          # parties seen moving at some frame
     first: EntityState | None = None
+    # Asked once the run is over (after the last `observe`): the path ahead per frame, and answers by party.
+    _ahead_groups: dict[int, BoxGroup] = field(default_factory=dict, repr=False)
+    _foreseen: dict[tuple[str, float], int | None] = field(default_factory=dict, repr=False)
 
     def observe(self, frame: Frame) -> None:
+        if self._ahead_groups or self._foreseen:
+            self._ahead_groups.clear()        # the path driven grew: what was asked before no longer holds
+            self._foreseen.clear()
         e = frame.ego
         if self.first is None:
             self.first = e
@@ -92,9 +98,8 @@ class Counterfactual:
         self.parties.append(list(frame.objects))
         self.moved.update(o.name for o in frame.objects if abs(o.speed) > 0.1 and not o.is_static)
 
-    def _ego_box(self, dist: float) -> Box:
-        """The ego's footprint `dist` metres along its recorded path (straight on past its end)."""
-        assert self.first is not None
+    def _ego_pose(self, dist: float) -> tuple[float, float, float]:
+        """The ego's (x, y, heading) `dist` metres along its recorded path (straight on past its end)."""
         i = max(bisect.bisect_right(self.dists, dist) - 1, 0)
         x0, y0, h0, _, d0 = self.ego[i]
         j = i + 1
@@ -103,20 +108,45 @@ class Counterfactual:
         if j < len(self.ego):
             x1, y1, _, _, d1 = self.ego[j]
             u = (dist - d0) / (d1 - d0)
-            x, y, h = x0 + u * (x1 - x0), y0 + u * (y1 - y0), math.atan2(y1 - y0, x1 - x0)
-        else:
-            over = dist - d0
-            x, y, h = x0 + over * math.cos(h0), y0 + over * math.sin(h0), h0
+            return x0 + u * (x1 - x0), y0 + u * (y1 - y0), math.atan2(y1 - y0, x1 - x0)
+        over = dist - d0
+        return x0 + over * math.cos(h0), y0 + over * math.sin(h0), h0
+
+    def _ego_box(self, dist: float) -> Box:
+        """The ego's footprint `dist` metres along its recorded path (straight on past its end)."""
         e = self.first
-        return box_at(x, y, h, e.center_x, e.length, e.width)
+        assert e is not None
+        return box_at(*self._ego_pose(dist), e.center_x, e.length, e.width)
+
+    def _ahead(self, k: int) -> BoxGroup:
+        """The ego's footprints along the `AHEAD_STEPS` of the path it drove on from frame k (the same for every
+        party and braking profile asked about, so built once per frame)."""
+        group = self._ahead_groups.get(k)
+        if group is None:
+            e = self.first
+            assert e is not None
+            xs, ys, hs = [], [], []
+            for step in AHEAD_STEPS:
+                # `box_at`'s centre, so each box is the one `_ego_box` gives
+                x, y, h = self._ego_pose(self.dists[k] + step)
+                xs.append(x + e.center_x * math.cos(h))
+                ys.append(y + e.center_x * math.sin(h))
+                hs.append(h)
+            group = BoxGroup(xs, ys, hs, 0.5 * e.length, 0.5 * e.width)
+            self._ahead_groups[k] = group
+        return group
 
     def foreseeable(self, name: str, until: float) -> int | None:
         """Index of the first frame at which `name`'s constant-velocity course (over `FORESIGHT` s) meets the
         path the ego went on to drive (None: never before `until`). Before then no planner could see the conflict
         coming: a party cutting in, or one that starts moving late."""
+        key = (name, until)
+        if key not in self._foreseen:
+            self._foreseen[key] = self._foreseeable(name, until)
+        return self._foreseen[key]
+
+    def _foreseeable(self, name: str, until: float) -> int | None:
         taus = [k * FORESIGHT_DT for k in range(int(FORESIGHT / FORESIGHT_DT) + 1)]
-        e = self.first
-        assert e is not None
         for k in range(0, len(self.times), 2):             # every other frame: 0.1 s at the default step
             if self.times[k] > until:
                 return None
@@ -124,7 +154,7 @@ class Counterfactual:
             if o is None:
                 continue
             # the path it went on to drive (straight on past the end of the run), 60 m of it
-            ahead = BoxGroup([self._ego_box(self.dists[k] + step) for step in AHEAD_STEPS])
+            ahead = self._ahead(k)
             c, s = math.cos(o.heading), math.sin(o.heading)
             fp = footprint(o)
             if _course_clear(ahead, fp, o.speed * FORESIGHT * c, o.speed * FORESIGHT * s):

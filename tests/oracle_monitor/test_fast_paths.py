@@ -69,8 +69,11 @@ def test_box_group_answers_as_any_overlaps() -> None:
     rng = random.Random(11)
     for _ in range(300):
         cx, cy = rng.uniform(-5000, 5000), rng.uniform(-5000, 5000)
-        group = [Box(cx + i * 2.0, cy + rng.uniform(-0.3, 0.3), 1.0, 0.0, 2.3, 1.0) for i in range(30)]
-        g = BoxGroup(group)
+        heading = rng.uniform(-0.2, 0.2)
+        g = BoxGroup([cx + i * 2.0 for i in range(30)], [cy + rng.uniform(-0.3, 0.3) for _ in range(30)],
+                     [heading] * 30, 2.3, 1.0)
+        group = [Box(x, y, math.cos(heading), math.sin(heading), 2.3, 1.0) for x, y in zip(g.xs, g.ys)]
+        assert g.boxes == group          # the boxes it builds are the boxes it stands for
         for _ in range(20):
             h = rng.uniform(-math.pi, math.pi)
             b = Box(cx + rng.uniform(-10, 70), cy + rng.uniform(-6, 6), math.cos(h), math.sin(h),
@@ -91,7 +94,7 @@ def test_far_apart_never_skips_an_overlap() -> None:
 
 def test_course_clear_only_when_no_position_on_the_course_overlaps() -> None:
     rng = random.Random(5)
-    group = BoxGroup([Box(float(i), 0.0, 1.0, 0.0, 2.3, 1.0) for i in range(0, 60, 2)])
+    group = BoxGroup([float(i) for i in range(0, 60, 2)], [0.0] * 30, [0.0] * 30, 2.3, 1.0)
     clear = 0
     for _ in range(500):
         h = rng.uniform(-math.pi, math.pi)
