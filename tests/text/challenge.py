@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 228 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 231 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -29,7 +29,10 @@ opposite side of the intersection"), a pedestrian stepping from the corner into 
 with 058 and one event label corrected after scoring);
 414-417, the AV stopping and then moving off before the contact (into a double-parked truck, a cone, past a parked
 car, into the next lane), scored before any fix: 0/2, 1/2, 0/4 (one AV label corrected after scoring: going around
-the truck is a lane change, `ahif`). Scored per party (position with lane, events) and
+the truck is a lane change, `ahif`); 418-420, a sign's "vehicles must merge left" (no one's move), "many cars went
+around" (an unnumbered group's move), a stop then a lane change, moving off on green, a party partly entering the lane
+ahead, scored before any fix: 3/3, 1/3, 0/3 (after: 2/3, 2/3, 3/3; 419's position lost: "a sedan that was also going
+around" with no object is not read as passing). Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
     python -m tests.text.challenge          # figures and every miss

@@ -302,3 +302,32 @@ def test_a_vehicle_stopped_in_the_lane_is_its_state_not_the_av_s_stop() -> None:
     text = ("While traveling north on Valencia Street, the AV went around a delivery van stopped in the right lane. "
             "After re-entering the right lane, the AV came to a stop behind a sedan, which then reversed into it.")
     assert _ego(text) == ("moving", "afgh")
+
+
+def test_what_a_sign_says_traffic_should_do_is_no_one_s_move() -> None:
+    # "indicating that traffic should merge to the left": a modal is no event; then the AV slowed, stopped and moved
+    # off into its lane change.
+    text = ("The AV was traveling in the right lane of Interstate 5 when it approached a work truck with an arrow "
+            "board indicating that traffic should merge to the left. The AV slowed down behind the work truck and "
+            "stopped. The AV then began a lane change to the left, and a sedan passing on the left struck its front "
+            "left corner.")
+    assert _ego(text) == ("moving", "ahif")
+
+
+def test_an_unnumbered_group_s_move_is_no_party_s() -> None:
+    text = ("The AV was stopped in the right lane of Market Street behind a stalled bus. Several cars passed the AV "
+            "on the left. The AV then changed lanes to the left and a cyclist riding in the left lane struck the AV's "
+            "left mirror.")
+    assert _ego(text) == ("stopped", "if")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    ("The AV moved off on a green light from the left lane of southbound Mission Street. A sedan in the lane to its "
+     "right partly entered the left lane ahead of the AV and the AV's front bumper touched the sedan.",
+     ("stopped", "i")),
+    # A stop at a light before the party comes in is where the AV waited: it starts stopped.
+    ("The AV was traveling north on Rengstorff Avenue and stopped at a red light at Middlefield Road. When the light "
+     "turned green, the AV turned left, and an oncoming pickup truck struck its right side.", ("stopped", "id")),
+])
+def test_moving_off_from_where_the_av_stood(text: str, want: tuple[str, str]) -> None:
+    assert _ego(text) == want

@@ -50,7 +50,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
           r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
-          r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again"),
+          r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
+          r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
@@ -58,7 +59,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
-          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|\bswerv(?:ed|ing)\s+"
+          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
+          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
@@ -66,7 +68,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
           r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
-          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
+          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
+          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
           r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
@@ -77,7 +80,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # the leftmost through lane ahead of the AV": a move into the lane the AV is in, from the party's side.
           r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
           r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+)?into|"
-          r"(?:partially\s+)?enter(?:ed|ing|s)\s+(?:into\s+)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
+          r"(?:partially\s+)?enter(?:ed|ing|s)(?:\s+into)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
           r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+EGO\b"),
     ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
@@ -114,7 +117,7 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
-    "i": ("began", "begin", "start", "forward", "proceed"),
+    "i": ("began", "begin", "start", "forward", "proceed", "off"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
@@ -126,7 +129,7 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 # A bare "to" before a possessive is a place ("stopped to its left began to move"), and before an article an object
 # ("yielded to a parallel parking vehicle"), not an infinitive.
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
-                     r"intending\s+to|in\s+order\s+to|"
+                     r"intending\s+to|in\s+order\s+to|should|would|must|ought\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
@@ -295,6 +298,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             who = -1
         else:
             who = who_for(b, ments, fallback, s)
+            group = [m for m in ments if m.subject and m.end <= b][-1:]
+            if group and group[0].kind == "group" and group[0].entity < 0 and \
+                    not s[group[0].start:group[0].end].lower().startswith("both") and \
+                    not any(m.subject and m.kind != "group" and group[0].end <= m.start < b for m in ments):
+                continue  # "Several vehicles passed EGO": an unnumbered group's move is no party's (sketch.md)
         if who is None:
             continue
         subj = [m for m in ments if m.subject and m.end <= b]

@@ -113,6 +113,13 @@ def opens_under_way(acts: list[Act]) -> tuple[list[Act], bool]:
     return acts[k:], True
 
 
+def _waited(d: Doc, stop: Act) -> bool:
+    """A stop that is where the AV waited (a state, a yield, a light, a sign), not an event of the story."""
+    return stop.code == "S" or bool(fre.search(r"yield", stop.text, re.I)) or bool(fre.search(
+        r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b",
+        d.sents[stop.sent][stop.pos:stop.pos + 60], re.I))
+
+
 def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
     """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
     or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
@@ -139,18 +146,28 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
         return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
                          side=None)
+    if stops and pre[-1].code in "defgjF" and stops[-1] < len(pre) - 1:
+        # Stopped, then moved off into a turn or lane change before the party comes in ("slowed and stopped behind
+        # the arrow board, then began a lane change to the left"): a stop told as an event after a run keeps the
+        # run (`a h i f`); a stop where the AV waited (a state, a light, a sign, a yield) is its start (`i f`).
+        stop = pre[stops[-1]]
+        moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
+        went = Act(stop.sent, stop.pos, "i", -1, "")
+        if any(a.code in ("a", "A") for a in pre[:stops[-1]]) and not _waited(d, stop):
+            return sequence([Act(stop.sent, stop.pos, "a", -1, ""), stop, went] + moves + post, stopped=False,
+                            ego=True, side=None)
+        return sequence([went] + moves + post, stopped=True, ego=True, side=None)
     if pre:
         last = pre[-1]
-        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and not fre.search(
-                r"yield", last.text, re.I) and not fre.search(
-                r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b",
-                d.sents[last.sent][last.pos:last.pos + 60], re.I):
+        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and not _waited(d, last):
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
             # state ("was stopped") is where the AV waited when it began.
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
+        elif last.code == "i" and not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
+            stopped, prefix = True, [last]  # "moved off on a green light": no run told before it, it stood
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
             if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
