@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -26,7 +27,6 @@ from txt2sce_ros.errors import InputError
 from txt2sce_ros.road import RoadNetwork
 
 from .actions.longitudinal import SpeedAction
-from .actions.routing import AssignRouteAction
 from .actions.teleport import TeleportAction
 from .conditions.by_entity import ByEntityCondition, ReachPositionCondition
 from .storyboard.build import build_storyboard
@@ -38,6 +38,9 @@ from .world import collision
 from .world.entity import Entity
 from .world.motion import derive, move_planner, move_storyboard
 from .world.world import World
+
+if TYPE_CHECKING:
+    from .actions.routing import AssignRouteAction
 
 
 @dataclass(frozen=True, slots=True)
@@ -168,6 +171,8 @@ class Simulation:
         self._pristine = False
         w = self.world
         planner = self.ego.planner
+        if planner:     # routes matter to a planner-driven ego only (a storyboard run need not import routing)
+            from .actions.routing import AssignRouteAction
         for ent_name, spec, _line in self.storyboard.init:
             if ent_name is None:
                 run = spec.start(w, None)

@@ -6,6 +6,7 @@ Anything not in the tables is reported at load as "unsupported: <element> at lin
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Callable
 
@@ -13,14 +14,6 @@ from lxml import etree
 
 from ..syntax.xml import ParseContext
 from .base import ActionRun, ActionSpec
-from .global_ import (EnvironmentAction, ParameterModifyAction, ParameterSetAction, TrafficSignalControllerAction,
-                      TrafficSignalStateAction)
-from .lateral import LaneChangeAction, LaneOffsetAction, LateralDistanceAction
-from .longitudinal import LongitudinalDistanceAction, SpeedAction, SpeedProfileAction
-from .routing import AcquirePositionAction, AssignRouteAction
-from .synchronize import SynchronizeAction
-from .teleport import TeleportAction
-from .trajectory import FollowTrajectoryAction
 
 if TYPE_CHECKING:
     from ..world.entity import Entity
@@ -42,25 +35,36 @@ class UnsupportedAction:
 # Wrapper elements whose single child is the action proper.
 _WRAPPERS = {"LongitudinalAction", "LateralAction", "RoutingAction", "InfrastructureAction", "TrafficSignalAction"}
 
-PRIVATE: dict[str, Parser] = {
-    "SpeedAction": SpeedAction.from_xml,
-    "SpeedProfileAction": SpeedProfileAction.from_xml,
-    "LongitudinalDistanceAction": LongitudinalDistanceAction.from_xml,
-    "LaneChangeAction": LaneChangeAction.from_xml,
-    "LaneOffsetAction": LaneOffsetAction.from_xml,
-    "LateralDistanceAction": LateralDistanceAction.from_xml,
-    "TeleportAction": TeleportAction.from_xml,
-    "AssignRouteAction": AssignRouteAction.from_xml,
-    "AcquirePositionAction": AcquirePositionAction.from_xml,
-    "FollowTrajectoryAction": FollowTrajectoryAction.from_xml,
-    "SynchronizeAction": SynchronizeAction.from_xml,
+# Element name -> (module of this package, class). A family's module is imported when a scenario first uses one of
+# its actions, so a cold `txt2sce play` pays (class creation, imports) only for the families its file has.
+PRIVATE: dict[str, tuple[str, str]] = {
+    "SpeedAction": ("longitudinal", "SpeedAction"),
+    "SpeedProfileAction": ("longitudinal", "SpeedProfileAction"),
+    "LongitudinalDistanceAction": ("longitudinal", "LongitudinalDistanceAction"),
+    "LaneChangeAction": ("lateral", "LaneChangeAction"),
+    "LaneOffsetAction": ("lateral", "LaneOffsetAction"),
+    "LateralDistanceAction": ("lateral", "LateralDistanceAction"),
+    "TeleportAction": ("teleport", "TeleportAction"),
+    "AssignRouteAction": ("routing", "AssignRouteAction"),
+    "AcquirePositionAction": ("routing", "AcquirePositionAction"),
+    "FollowTrajectoryAction": ("trajectory", "FollowTrajectoryAction"),
+    "SynchronizeAction": ("synchronize", "SynchronizeAction"),
 }
 
-GLOBAL: dict[str, Parser] = {
-    "EnvironmentAction": EnvironmentAction.from_xml,
-    "TrafficSignalStateAction": TrafficSignalStateAction.from_xml,
-    "TrafficSignalControllerAction": TrafficSignalControllerAction.from_xml,
+GLOBAL: dict[str, tuple[str, str]] = {
+    "EnvironmentAction": ("global_", "EnvironmentAction"),
+    "TrafficSignalStateAction": ("global_", "TrafficSignalStateAction"),
+    "TrafficSignalControllerAction": ("global_", "TrafficSignalControllerAction"),
 }
+
+
+def _action_class(module: str, name: str) -> type:
+    return getattr(importlib.import_module(f".{module}", __package__), name)
+
+
+def _parser(table: dict[str, tuple[str, str]], tag: str) -> Parser | None:
+    where = table.get(tag)
+    return None if where is None else _action_class(*where).from_xml
 
 
 def _unwrap(ctx: ParseContext, el: etree._Element) -> etree._Element:
@@ -72,7 +76,7 @@ def _unwrap(ctx: ParseContext, el: etree._Element) -> etree._Element:
 def private_action_from_xml(ctx: ParseContext, el: etree._Element) -> ActionSpec:
     """Parse a <PrivateAction>."""
     inner = _unwrap(ctx, ctx.only_child(el))
-    parser = PRIVATE.get(str(inner.tag))
+    parser = _parser(PRIVATE, str(inner.tag))
     if parser is None:
         return UnsupportedAction(ctx.note_unsupported(inner), True)
     return parser(ctx, inner)
@@ -85,10 +89,10 @@ def global_action_from_xml(ctx: ParseContext, el: etree._Element) -> ActionSpec:
         ref = ctx.req(inner, "parameterRef")
         choice = ctx.only_child(inner)
         if choice.tag == "SetAction":
-            return ParameterSetAction.from_xml(ctx, choice, ref)
+            return _action_class("global_", "ParameterSetAction").from_xml(ctx, choice, ref)
         if choice.tag == "ModifyAction":
-            return ParameterModifyAction.from_xml(ctx, choice, ref)
-    parser = GLOBAL.get(str(inner.tag))
+            return _action_class("global_", "ParameterModifyAction").from_xml(ctx, choice, ref)
+    parser = _parser(GLOBAL, str(inner.tag))
     if parser is None:
         return UnsupportedAction(ctx.note_unsupported(inner), False)
     return parser(ctx, inner)

@@ -94,3 +94,17 @@ def test_scalar_fast_path_equals_vectorised_evaluation() -> None:
             x, y, h = road.plan_view.evaluate(s)
             for i, si in enumerate(s):
                 assert road.plan_view.at(float(si)) == pytest.approx((x[i], y[i], h[i]), abs=1e-9)
+
+
+def test_param_poly3_scalar_curvature_is_bit_equal_to_the_array_form() -> None:
+    # The player steps on `curvature_local`; its trajectories are compared byte for byte across versions, so the
+    # float form must give the very bits of the one-element array form, not merely close values.
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        c = rng.normal(0.0, [1.0, 30.0, 2.0, 0.5, 1.0, 0.5, 3.0, 1.0])
+        length = float(rng.uniform(1.0, 200.0))
+        for normalized in (True, False):
+            g = ParamPoly3(s=0.0, x=0.0, y=0.0, hdg=0.3, length=length, au=c[0], bu=c[1], cu=c[2], du=c[3],
+                           av=c[4], bv=c[5], cv=c[6], dv=c[7], normalized=normalized)
+            for ds in rng.uniform(-1.0, length + 1.0, 20):
+                assert g.curvature_local(float(ds)) == float(g.curvature(np.array([float(ds)]))[0])

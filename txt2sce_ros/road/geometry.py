@@ -184,6 +184,17 @@ class ParamPoly3(Geometry):
         dv = self.bv + p * (2 * self.cv + 3 * self.dv * p)
         return u, v, np.arctan2(dv, du)
 
+    def curvature_local(self, ds: float) -> float:
+        # The same operations on floats (the player asks this once per entity per step; a one-element array costs
+        # ~40 us). The power stays numpy's: its pow differs from libm's in the last bit for some inputs, and a
+        # scalar through the ufunc takes the same path as `curvature`'s one-element array.
+        p = ds / self.length if (self.normalized and self.length > 0) else ds
+        du = self.bu + p * (2 * self.cu + 3 * self.du * p)
+        dv = self.bv + p * (2 * self.cv + 3 * self.dv * p)
+        ddu = 2 * self.cu + 6 * self.du * p
+        ddv = 2 * self.cv + 6 * self.dv * p
+        return (du * ddv - dv * ddu) / max(float(np.power(du * du + dv * dv, 1.5)), 1e-12)
+
     def curvature(self, ds: np.ndarray) -> np.ndarray:
         p = self._p(np.asarray(ds, dtype=float))
         du = self.bu + p * (2 * self.cu + 3 * self.du * p)
