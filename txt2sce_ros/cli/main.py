@@ -74,6 +74,10 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    # numpy works on small arrays here and the campaign parallelises with processes: OpenBLAS's thread pool,
+    # started when numpy is imported, would cost each process ~50 ms of CPU and compete with the workers. Set
+    # before any command imports numpy; inherited by the processes a command starts; a user's setting wins.
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     parser = build_parser(argv)
     args = parser.parse_args(argv)
     if not getattr(args, "_run", None):

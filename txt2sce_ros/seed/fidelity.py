@@ -93,10 +93,10 @@ def first_contacts(frames: Iterable) -> list[tuple[str, str, float]]:
     seen: dict[tuple[str, str], float] = {}
     for fr in frames:
         states = [fr.ego, *fr.objects]
-        corners = [_corners(e) for e in states]
         # Box centres and half-diagonals: two boxes whose enclosing circles are apart cannot touch, so the exact
-        # (and, on numpy's small arrays, slow) separating-axis test runs only for pairs that are close.
-        centres = [c.mean(axis=0) for c in corners]
+        # (and, on numpy's small arrays, slow) separating-axis test, and the corners it needs, are built only for
+        # pairs that are close. The centre is the box's own (reference point moved by center_x along the heading).
+        centres = [(e.x + e.center_x * math.cos(e.heading), e.y + e.center_x * math.sin(e.heading)) for e in states]
         radii = [0.5 * math.hypot(e.length, e.width) for e in states]
         for i in range(len(states)):
             for j in range(i + 1, len(states)):
@@ -104,10 +104,10 @@ def first_contacts(frames: Iterable) -> list[tuple[str, str, float]]:
                 if pair in seen:
                     continue
                 reach = radii[i] + radii[j] + 1e-6
-                dx, dy = centres[i] - centres[j]
+                dx, dy = centres[i][0] - centres[j][0], centres[i][1] - centres[j][1]
                 if dx * dx + dy * dy > reach * reach:
                     continue
-                if boxes_gap(corners[i], corners[j]) <= 0.0:
+                if boxes_gap(_corners(states[i]), _corners(states[j])) <= 0.0:
                     seen[pair] = fr.t
     return sorted(((a, b, t) for (a, b), t in seen.items()), key=lambda c: (c[2], c[0], c[1]))
 
