@@ -65,8 +65,12 @@ class _ValueCheck(EntityCheck):
         return cls(ctx.float(el, "value"), Rule.from_xml(ctx, el))
 
 
-@dataclass(frozen=True, slots=True)
 class SpeedCondition(_ValueCheck):
+    # No fields of its own: the base's generated methods serve it as they are (`__eq__` compares the exact class),
+    # so it is not a dataclass again (that would `exec` the same methods anew at import); `__slots__ = ()` keeps
+    # its instances' layout that of its base.
+    __slots__ = ()
+
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return self.rule(ent.speed, self.value)
 
@@ -85,8 +89,9 @@ class RelativeSpeedCondition(EntityCheck):
         return self.rule(ent.speed - world.entity(self.ref).speed, self.value)
 
 
-@dataclass(frozen=True, slots=True)
 class AccelerationCondition(_ValueCheck):
+    __slots__ = ()   # the base's dataclass methods serve it (see SpeedCondition)
+
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return self.rule(ent.accel, self.value)
 
@@ -102,20 +107,23 @@ class _DurationCheck(EntityCheck):
         return cls(ctx.float(el, "duration"))
 
 
-@dataclass(frozen=True, slots=True)
 class StandStillCondition(_DurationCheck):
+    __slots__ = ()   # the base's dataclass methods serve it (see SpeedCondition)
+
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.standstill_time >= self.duration - 1e-9 and abs(ent.speed) < 1e-3
 
 
-@dataclass(frozen=True, slots=True)
 class EndOfRoadCondition(_DurationCheck):
+    __slots__ = ()   # the base's dataclass methods serve it (see SpeedCondition)
+
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.end_of_road_time is not None and ent.end_of_road_time >= self.duration - 1e-9
 
 
-@dataclass(frozen=True, slots=True)
 class OffroadCondition(_DurationCheck):
+    __slots__ = ()   # the base's dataclass methods serve it (see SpeedCondition)
+
     def holds_for(self, world: "World", ent: "Entity") -> bool:
         return ent.offroad_time is not None and ent.offroad_time >= self.duration - 1e-9
 

@@ -70,16 +70,21 @@ class _EntityOffset:
                    Orientation.from_xml(ctx, el.find("Orientation")))
 
 
-@dataclass(frozen=True, slots=True)
 class RelativeWorldPosition(_EntityOffset):
+    # No fields of its own: the base's generated methods serve it as they are (`__eq__` compares the exact class),
+    # so it is not a dataclass again (that would `exec` the same methods anew at import); `__slots__ = ()` keeps
+    # its instances' layout that of its base.
+    __slots__ = ()
+
     def resolve(self, world: "World") -> Pose:
         ref = world.entity(self.entity)
         h = self.orientation.apply(ref.h) if self.orientation else ref.h
         return world.locate_pose(ref.x + self.dx, ref.y + self.dy, h)
 
 
-@dataclass(frozen=True, slots=True)
 class RelativeObjectPosition(_EntityOffset):
+    __slots__ = ()   # the base's dataclass methods serve it (see RelativeWorldPosition)
+
     def resolve(self, world: "World") -> Pose:
         ref = world.entity(self.entity)
         c, s = math.cos(ref.h), math.sin(ref.h)

@@ -118,3 +118,33 @@ def test_signal_controller_cycles_its_phases(esmini, tmp_path) -> None:
     assert [s for _, s in changes][:4] == [SignalState.YELLOW, SignalState.RED, SignalState.GREEN,
                                            SignalState.YELLOW]
     assert [round(t, 2) for t, _ in changes][:4] == [4.0, 6.0, 12.0, 16.0]
+
+
+def test_field_less_subclasses_keep_the_records_behaviour() -> None:
+    # Subclasses that add no fields reuse their base's generated dataclass methods (not re-decorated, to save
+    # start-up time): they must still compare, hash, print and refuse writes as frozen records of their own class.
+    import dataclasses
+    import pickle
+
+    import pytest
+
+    from scenario_player.conditions.base import Rule
+    from scenario_player.conditions.by_entity import AccelerationCondition, SpeedCondition, StandStillCondition
+    from txt2sce_ros.road.geometry import Line
+
+    rule = Rule("greaterThan")
+    a, b = SpeedCondition(3.0, rule), SpeedCondition(3.0, rule)
+    assert a == b and hash(a) == hash(b) and a != SpeedCondition(4.0, rule)
+    assert a != AccelerationCondition(3.0, rule)            # same fields, another class
+    assert repr(a).startswith("SpeedCondition(value=3.0")
+    assert dataclasses.is_dataclass(a) and [f.name for f in dataclasses.fields(a)] == ["value", "rule"]
+    assert dataclasses.replace(a, value=5.0) == SpeedCondition(5.0, rule)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        a.value = 1.0  # type: ignore[misc]
+    with pytest.raises(TypeError):      # as for the base itself (Python 3.11's frozen + slots __setattr__)
+        a.other = 1.0  # type: ignore[attr-defined]
+    assert StandStillCondition(2.0) == StandStillCondition(2.0) != StandStillCondition(3.0)
+    line = Line(s=0.0, x=1.0, y=2.0, hdg=0.5, length=10.0)
+    assert pickle.loads(pickle.dumps(line)) == line and line.at(2.0) == pytest.approx((1.0 + 2.0 * 0.8775825618903728,
+                                                                                      2.0 + 2.0 * 0.479425538604203,
+                                                                                      0.5))

@@ -63,8 +63,12 @@ class Geometry:
         return self.x + c * u - s * v, self.y + s * u + c * v, self.hdg + dh
 
 
-@dataclass(frozen=True, slots=True)
 class Line(Geometry):
+    # No fields of its own: the base's generated methods serve it as they are (`__eq__` compares the exact class),
+    # so it is not a dataclass again (that would `exec` the same methods anew at import); `__slots__ = ()` keeps
+    # its instances' layout that of its base.
+    __slots__ = ()
+
     def local_at(self, ds: float) -> tuple[float, float, float]:
         return ds, 0.0, 0.0
 
