@@ -331,3 +331,17 @@ def test_an_unnumbered_group_s_move_is_no_party_s() -> None:
 ])
 def test_moving_off_from_where_the_av_stood(text: str, want: tuple[str, str]) -> None:
     assert _ego(text) == want
+
+
+@pytest.mark.parametrize(("text", "category"), [
+    ("The AV was traveling south on Page Mill Road when a rabbit darted into the road and the AV's front bumper "
+     "struck it.", "animal"),
+    ("The AV was driving in the right lane of US-101 and ran over a tire tread lying in its lane.", "debris"),
+    # A make before a street word after a preposition of place is a street ("on Lincoln Way"), not a party.
+    ("While traveling east on Lincoln Way, the AV struck a fallen tree limb that was lying across its lane.", "other"),
+])
+def test_an_object_the_av_struck_is_its_only_counterpart(text: str, category: str) -> None:
+    sk = extract(text, "t")
+    assert not sk.npcs
+    assert [o.category for o in sk.obstacles] == [category]
+    assert sk.collision.with_ == "obs1"

@@ -35,6 +35,7 @@ _ABBREV = compile_gated(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|M
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
                      r"\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
 _SENT_SPLIT = compile_gated(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
+_PLACE_PREP = compile_gated(r"\b(?:on|onto|along|at|from|of|near|down|up|to|toward|towards)\s+$")
 _STREET_SUFFIX = compile_gated(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
                             r"Dr\b|Way|Lane|Ln\b|Parkway|Pkwy|Highway|Hwy|Place|Pl\b|Court|Ct\b|Terrace|Circle|"
                             r"Expressway|Alley|Plaza|Park\b|Center)")
@@ -267,8 +268,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 if hl not in MAKES:
                     continue
             # Street names ("Van Ness Avenue", "Post Street"): a capitalised head followed by a street word.
-            if head[0].isupper() and m.start() > 0 and _STREET_SUFFIX.match(after) and hl not in MAKES:
-                continue
+            if head[0].isupper() and m.start() > 0 and _STREET_SUFFIX.match(after) and (
+                    hl not in MAKES or _PLACE_PREP.search(s[max(0, m.start() - 12):m.start()])):
+                continue  # a make is a street only after a preposition of place ("east on Lincoln Way")
             if head[0].isupper() and hl in ("van", "post", "mission", "gate", "church") and m.start() > 0:
                 continue
         back = _last_words(s, m.start(), 5) if hl not in ("ego", "egod") else []
