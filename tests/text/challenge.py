@@ -35,7 +35,14 @@ ahead, scored before any fix: 3/3, 1/3, 0/3 (after: 2/3, 2/3, 3/3; 419's positio
 around" with no object is not read as passing). Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
-    python -m tests.text.challenge          # figures and every miss
+A second file, `challenge_positions.jsonl`, holds the batches written while the position rules were worked on beside
+the events work (one file each, so the two can grow at once): 342-355, crossing-road parties told by compass heading
+only, parties ahead rolling back or reversing, first-person lanes ("the through lane to our right"), scored before any
+fix: 12/13, 8/13, 14/14; 356-367, NHTSA wording (SV/CP, V1/V2, "the ADS vehicle"), a pedestrian crossing the street the
+AV turns onto without the word crosswalk, a stop in a left-turn pocket (a junction), scored before any fix: 8/11, 6/11,
+10/12 (one narrative with a contested label dropped, one event label corrected after scoring).
+
+    python -m tests.text.challenge          # figures and every miss, per file
 """
 
 from __future__ import annotations
@@ -47,6 +54,7 @@ from pathlib import Path
 from txt2sce_ros.text.extractor import extract
 
 DATA = Path(__file__).with_name("challenge_narratives.jsonl")
+POSITIONS = Path(__file__).with_name("challenge_positions.jsonl")
 
 
 @dataclass
@@ -92,13 +100,14 @@ def score(path: Path = DATA) -> ChallengeScore:
 
 
 def main() -> None:
-    sc = score()
-    print(f"challenge set: {sc.reports} narratives, {sc.parties} parties")
-    print(f"  npc position (with lane) {sc.position}/{sc.parties} = {100 * sc.position / sc.parties:.1f}%")
-    print(f"  npc events (start + actions) {sc.events}/{sc.parties} = {100 * sc.events / sc.parties:.1f}%")
-    print(f"  AV start + actions {sc.ego}/{sc.reports} = {100 * sc.ego / sc.reports:.1f}%")
-    for m in sc.misses:
-        print("  miss:", m)
+    for path in (DATA, POSITIONS):
+        sc = score(path)
+        print(f"{path.name}: {sc.reports} narratives, {sc.parties} parties")
+        print(f"  npc position (with lane) {sc.position}/{sc.parties} = {100 * sc.position / sc.parties:.1f}%")
+        print(f"  npc events (start + actions) {sc.events}/{sc.parties} = {100 * sc.events / sc.parties:.1f}%")
+        print(f"  AV start + actions {sc.ego}/{sc.reports} = {100 * sc.ego / sc.reports:.1f}%")
+        for m in sc.misses:
+            print("  miss:", m)
 
 
 if __name__ == "__main__":

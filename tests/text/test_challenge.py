@@ -1,7 +1,7 @@
 """The hand-written challenge set (tests/text/challenge.py) holds at what the extractor reaches: a rule change that
 loses a pattern shows here even when the gold sets do not move."""
 
-from .challenge import score
+from .challenge import POSITIONS, score
 
 
 def test_challenge_set_holds() -> None:
@@ -10,3 +10,12 @@ def test_challenge_set_holds() -> None:
     assert sc.position >= 219, sc.misses
     assert sc.events >= 200, sc.misses
     assert sc.ego >= 223, sc.misses
+
+
+# The batches written beside the events work (challenge_positions.jsonl), held apart so both files can grow at once.
+def test_challenge_positions_file_holds() -> None:
+    sc = score(POSITIONS)
+    assert sc.reports == 25 and sc.parties == 23
+    assert sc.position >= 23, sc.misses
+    assert sc.events >= 15, sc.misses
+    assert sc.ego >= 23, sc.misses

@@ -33,15 +33,16 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
+from .positions import exit_street
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
 _LANE_CUES = compile_gated(
-    r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+)?(left|right)(?:\s+of\s+(?:EGO|it))?|"
+    r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+|our\s+|EGO's\s+)?(left|right)(?:\s+of\s+(?:EGO|it|us))?|"
     r"\b(left|right)(?:-hand|most)?\s+(?:adjacent\s+|neighbou?ring\s+|parallel\s+)?(?:travel\s+)?lane\b|"
     r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
-    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+EGO\b|\b(?:on|to)\s+EGO's\s+(left|right)\b|"
+    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+(?:EGO|us)\b|\b(?:on|to)\s+(?:EGO's|our)\s+(left|right)\b|"
     r"\bon\s+its\s+(left|right)\b|"
     # "a sedan stopped to its left": a party is not beside itself, so "its" is the AV (a move "to its left" is not)
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
@@ -280,6 +281,17 @@ def _clause_end(d: Doc, e: Entity, m: Mention) -> int:
     return min(nxt) if nxt else len(d.sents[m.sent])
 
 
+def _crosses_exit_street(d: Doc, clause: str) -> re.Match[str] | None:
+    """Is the party crossing the street the AV turns onto ("crossing the street EGO was turning onto", "crossing
+    Taylor Street" when the AV turns onto Taylor)?"""
+    m = fre.search(r"\bcross\w*\s+(?:the\s+)?(?:street|road|roadway)\s+(?:that\s+)?EGO\s+(?:was\s+|is\s+)?"
+                   r"(?:turning|turned|about\s+to\s+turn)\s+(?:onto|into)\b", clause, re.I)
+    ex = exit_street(d)
+    if m or not ex:
+        return m
+    return fre.search(rf"\bcross\w*\s+(?:the\s+)?{re.escape(ex)}\s+\w+", clause, re.I)
+
+
 def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
     """A pedestrian or rider the turning AV meets at a junction is on the leg it turns onto (R4): said by "in the
     crosswalk", or by the AV yielding to it. For an AV going straight (`far_only`) only a crosswalk said to be
@@ -296,8 +308,10 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
                 a = d.offset(m.sent) + max(0, m.start - 40)
                 return Cue("junction", "exit leg", (a + far.start(), a + far.end()))
             continue
-        cw = fre.search(r"\bcrosswalk\b", win, re.I) or \
-            fre.search(r"\bcrosswalk\b", s[m.end:_clause_end(d, e, m)], re.I)  # "..., stepped into the crosswalk"
+        clause = s[m.end:_clause_end(d, e, m)]
+        # "..., stepped into the crosswalk"; "crossing the street EGO was turning onto", "crossing Taylor Street"
+        cw = fre.search(r"\bcrosswalk\b", win, re.I) or fre.search(r"\bcrosswalk\b", clause, re.I) or \
+            (not far_only and _crosses_exit_street(d, clause))
         if cw or _YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
             a = d.offset(m.sent) + max(0, m.start - 40)
             return Cue("junction", "exit leg", (a + cw.start(), a + cw.end()) if cw else

@@ -12,7 +12,10 @@ from .lexicon import NUMBER_WORDS
 _JUNCTION = compile_gated(r"\bintersection\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
                        r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
-                       r"\bthe\s+light\s+turned\b", re.I)
+                       r"\bthe\s+light\s+turned\b|"
+                       # waiting in a turn pocket: turn lanes end at a junction
+                       r"\b(?:stopped|waiting|queued)\s+in\s+(?:a|the)\s+(?:dedicated\s+)?(?:left|right)[- ]turn\s+"
+                       r"(?:pocket|lane|only\s+lane)\b", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
 _T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
