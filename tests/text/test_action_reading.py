@@ -345,3 +345,10 @@ def test_an_object_the_av_struck_is_its_only_counterpart(text: str, category: st
     assert not sk.npcs
     assert [o.category for o in sk.obstacles] == [category]
     assert sk.collision.with_ == "obs1"
+
+
+def test_a_party_slowing_when_the_story_takes_it_up_opens_with_c() -> None:
+    text = ("The AV was stopped in the left turn lane of eastbound Tropicana Avenue, waiting to turn left. A pickup "
+            "approaching from the right of the AV was slowing with its turn signal on. The AV began its left turn "
+            "and the pickup continued straight, and the AV's front struck the pickup's left side.")
+    assert _party(text)[1].startswith("c")

@@ -159,11 +159,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # "A passenger car, traveling in the same direction, was stopped in the adjacent lane": the scene's
             # opening state is stopped; the participle before it only describes the car.
             pacts = pacts[setup_stop[0]:]
-        pacts, under_way = opens_under_way(pacts)
+        pacts, under_way = opens_under_way(pacts, "cdefgjF")
         stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
         # An oncoming party's move into the AV's lane is to its own left: its side is not the AV's.
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
-        if start == "moving" and acts[:1] in ("b", "c"):
+        if start == "moving" and acts[:1] in ("b", "c") and not under_way:
             acts = "a" + acts  # speeding up or slowing is done by a party already on its way
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5" and not under_way:
             acts = "a" + acts  # it travelled along the AV's road before turning off it

@@ -100,13 +100,15 @@ def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
     return actions + "i"
 
 
-def opens_under_way(acts: list[Act]) -> tuple[list[Act], bool]:
+def opens_under_way(acts: list[Act], codes: str = "defgjF") -> tuple[list[Act], bool]:
     """A party whose first manoeuvre is told in progress ("a Tundra traveling south was making a right turn", "the AV
     was changing lanes to the left when") was doing it when the interaction began: its string opens with that letter
     (sketch.md), and a "traveling" told before it only describes the party. Returns the acts from that manoeuvre
-    on, and whether the string opens under way."""
+    on, and whether the string opens under way. `codes`: the moves that may open a string; the extractor lets a
+    party's slowing do so too ("an SUV approaching from the left was slowing": `c...`), while the AV's slowing
+    keeps its run (`ac`), as the gold sketches read it."""
     k = next((k for k, a in enumerate(acts) if a.code not in "aA"), None)
-    if k is None or not acts[k].under_way or acts[k].code not in "defgjF":
+    if k is None or not acts[k].under_way or acts[k].code not in codes:
         return acts, False
     if any(a.sent < acts[k].sent for a in acts[:k]):
         return acts, False  # told travelling first, in a sentence of its own: a run along its lane, then the move
