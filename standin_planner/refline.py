@@ -30,6 +30,13 @@ MAX_BOUNDED_TURN = 1.2
 #: Projections a line remembers (it forgets them all when full: they are cheap to recompute).
 PROJECTION_CACHE = 256
 
+#: Side (m) of the square cells for which a line remembers which segments can be nearest to a point inside, at
+#: most CELL_CANDIDATES of them (more: the cell is searched as a window), for at most CELL_CACHE cells.
+CELL = 1.0
+CELL_CANDIDATES = 24
+CELL_CACHE = 20000
+_HALF_DIAGONAL = 0.5 * math.sqrt(2.0) * CELL
+
 
 @dataclass(frozen=True, slots=True)
 class PathPoint:
@@ -117,6 +124,14 @@ class RefLine:
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
         self._projections: dict[tuple[float, float, int, int] | None, PathPoint] = {}
+        # Per cell of the plane, the segments that can hold the nearest point of a point inside (`_candidates`).
+        # Plain-Python copies of the per-segment values for the scalar search over them.
+        self._cells: dict[tuple[int, int], tuple[int, ...] | None] = {}
+        self._x0_list: list[float] = self._x0.tolist()
+        self._y0_list: list[float] = self._y0.tolist()
+        self._dx_list: list[float] = self._dx.tolist()
+        self._dy_list: list[float] = self._dy.tolist()
+        self._L2_list: list[float] = self._L2.tolist()
         #: Derived per-vertex arrays keyed by their parameters (e.g. curve speed limits), filled by their users.
         self.cache: dict = {}
 
@@ -200,18 +215,24 @@ class RefLine:
         hit = self._projections.get(key)
         if hit is not None:
             return hit
-        x0 = self._x0[lo:hi]
-        y0 = self._y0[lo:hi]
-        dx = self._dx[lo:hi]
-        dy = self._dy[lo:hi]
-        # Same operations in the same order as the plain formula, so the result is bit-identical to it.
-        u = np.minimum(np.maximum(((x - x0) * dx + (y - y0) * dy) / self._L2[lo:hi], 0.0), 1.0)
-        px = x0 + u * dx
-        py = y0 + u * dy
-        dist2 = (x - px) ** 2 + (y - py) ** 2
-        j = int(dist2.argmin())
-        i = lo + j
-        uj = float(u[j])
+        cand = self._candidates(x, y) if key is not None else None
+        if cand is not None and cand[0] >= lo and cand[-1] < hi:
+            # Every segment that can be nearest lies in the window: the nearest of them (the first of equals,
+            # as argmin) is the window's, found by the plain formula on a few floats.
+            i, uj, pxj, pyj = self._nearest_of(x, y, cand)
+        else:
+            x0 = self._x0[lo:hi]
+            y0 = self._y0[lo:hi]
+            dx = self._dx[lo:hi]
+            dy = self._dy[lo:hi]
+            # Same operations in the same order as the plain formula, so the result is bit-identical to it.
+            u = np.minimum(np.maximum(((x - x0) * dx + (y - y0) * dy) / self._L2[lo:hi], 0.0), 1.0)
+            px = x0 + u * dx
+            py = y0 + u * dy
+            dist2 = (x - px) ** 2 + (y - py) ** 2
+            j = int(dist2.argmin())
+            i = lo + j
+            uj, pxj, pyj = float(u[j]), float(px[j]), float(py[j])
         h = float(self._seg_heading[i])
         s = self.s_list[i] + uj * float(self._seg_len[i])
         # Beyond the ends, extend straight so objects ahead of the goal still get a sensible s.
@@ -220,13 +241,53 @@ class RefLine:
             ref_x, ref_y = float(self.xy[k, 0]), float(self.xy[k, 1])
             along = (x - ref_x) * math.cos(h) + (y - ref_y) * math.sin(h)
             s = self.s_list[k] + along
-        cross = -(x - float(px[j])) * math.sin(h) + (y - float(py[j])) * math.cos(h)
+        cross = -(x - pxj) * math.sin(h) + (y - pyj) * math.cos(h)
         pp = PathPoint(s=float(s), offset=float(cross), heading=h)
         if key is not None:
             if len(self._projections) >= PROJECTION_CACHE:
                 self._projections.clear()
             self._projections[key] = pp
         return pp
+
+    def _candidates(self, x: float, y: float) -> tuple[int, ...] | None:
+        """The segments (increasing) that can hold the nearest point of the line to any point of (x, y)'s cell
+        (None: too many to search one by one). A point of the cell is within the half diagonal h of its centre,
+        so its nearest segment is within d + h of it (d: the centre's distance to the line), and a segment
+        farther than d + 2h from the centre is farther than that from the point: strictly, so it cannot tie
+        either. Computed once per cell; a route's line serves every run that drives it."""
+        key = (math.floor(x / CELL), math.floor(y / CELL))
+        if key in self._cells:
+            return self._cells[key]
+        cx, cy = (key[0] + 0.5) * CELL, (key[1] + 0.5) * CELL
+        u = np.clip(((cx - self._x0) * self._dx + (cy - self._y0) * self._dy) / self._L2, 0.0, 1.0)
+        d = np.hypot(cx - (self._x0 + u * self._dx), cy - (self._y0 + u * self._dy))
+        idx = np.flatnonzero(d <= float(d.min()) + 2.0 * _HALF_DIAGONAL + CHUNK_SLACK)
+        found = tuple(idx.tolist()) if len(idx) <= CELL_CANDIDATES else None
+        if len(self._cells) >= CELL_CACHE:
+            self._cells.clear()
+        self._cells[key] = found
+        return found
+
+    def _nearest_of(self, x: float, y: float, segments: tuple[int, ...]) -> tuple[int, float, float, float]:
+        """(segment, u, foot x, foot y) of the nearest of `segments` (increasing) to (x, y), the first of
+        equals: `project`'s array formula written out per segment, the same operations in the same order
+        (np.maximum / np.minimum as comparisons; x ** 2 on an array is x * x)."""
+        x0s, y0s, dxs, dys, l2s = self._x0_list, self._y0_list, self._dx_list, self._dy_list, self._L2_list
+        best = math.inf
+        found = (segments[0], 0.0, 0.0, 0.0)
+        for i in segments:
+            x0, y0, dx, dy = x0s[i], y0s[i], dxs[i], dys[i]
+            u = ((x - x0) * dx + (y - y0) * dy) / l2s[i]
+            u = u if u >= 0.0 else 0.0
+            u = u if u <= 1.0 else 1.0
+            px = x0 + u * dx
+            py = y0 + u * dy
+            ex, ey = x - px, y - py
+            d2 = ex * ex + ey * ey
+            if d2 < best:
+                best = d2
+                found = (i, u, px, py)
+        return found
 
     def project_many(self, xs: np.ndarray, ys: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Vectorised (s, offset) of many points (used for predicted object positions)."""

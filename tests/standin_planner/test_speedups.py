@@ -208,3 +208,27 @@ def test_far_from_never_rules_out_a_point_the_projection_would_find_near():
             said_far += far
             near += hit
     assert said_far > 50 and near > 50           # both answers are exercised
+
+
+def test_projection_through_remembered_cells_equals_the_plain_formula_bit_for_bit():
+    """`project` searches only the segments a point's cell can have nearest when they all lie in the window: an
+    ego-like track along each line (points 0.3 m apart, so cells are met again), points off to the side, on lane
+    lines, the self-approaching loop and a line far from the origin; the cell path must answer as the plain
+    window search, and must be the path taken for most of them."""
+    rng = np.random.default_rng(9)
+    far = RefLine(np.stack([np.linspace(0.0, 300.0, 601) + 35000.0, 8.0 * np.sin(np.linspace(0.0, 6.0, 601))
+                            - 12000.0], axis=1))
+    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [far]
+    searched = total = 0
+    for line in lines:
+        for s in np.arange(-5.0, line.length + 5.0, 0.3):
+            x, y, _ = line.position(float(s), float(rng.normal(0.0, 2.5)))
+            near = float(s) if rng.random() < 0.7 else None
+            window = float(rng.choice([5.0, 60.0, 150.0]))
+            cand = line._candidates(x, y)
+            searched += cand is not None
+            total += 1
+            line._projections.clear()
+            assert line.project(x, y, near_s=near, window=window) == _plain_project(line, x, y, near_s=near,
+                                                                                    window=window), (s, near)
+    assert searched > 0.8 * total
