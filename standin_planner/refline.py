@@ -34,7 +34,7 @@ PROJECTION_CACHE = 256
 #: most CELL_CANDIDATES of them (more: the cell is searched as a window), for at most CELL_CACHE cells.
 CELL = 1.0
 CELL_CANDIDATES = 24
-CELL_CACHE = 20000
+CELL_CACHE = 4096
 _HALF_DIAGONAL = 0.5 * math.sqrt(2.0) * CELL
 
 
