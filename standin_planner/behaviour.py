@@ -277,13 +277,23 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
         parallel = abs(math.sin(po.rel_heading)) < PARALLEL_SIN and abs(o.yaw_rate) < 0.05
         if parallel and not line.turns_across(o.heading, ego.s_front - 1.0, ego.s_front + 80.0, PARALLEL_SIN):
             continue                                     # keeps to a lane the route runs beside
-        traj = predict(o, bp.prediction_horizon, bp.prediction_step)
         reach = ego.half_width + po.half_lat + bp.conflict_margin
-        if line.far_from(traj[:, 1], traj[:, 2], reach, ego.s_front - 1.0, ego.s_front + 80.0):
-            continue                                     # its course keeps clear of the path ahead
+        s_lo, s_hi = ego.s_front - 1.0, ego.s_front + 80.0
+        if abs(o.yaw_rate) < 1e-3:
+            # A straight course (as `predict` makes it): tested as one piece, before any point is computed.
+            c, sn = math.cos(o.heading), math.sin(o.heading)
+            ax, ay = o.x + o.center_x * c, o.y + o.center_x * sn
+            run = max(o.speed, 0.0) * (bp.prediction_horizon + 1e-9)
+            if line.far_from_straight(ax, ay, ax + run * c, ay + run * sn, reach, s_lo, s_hi):
+                continue                                 # its course keeps clear of the path ahead
+            traj = predict(o, bp.prediction_horizon, bp.prediction_step)
+        else:
+            traj = predict(o, bp.prediction_horizon, bp.prediction_step)
+            if line.far_from(traj[:, 1], traj[:, 2], reach, s_lo, s_hi):
+                continue                                 # its course keeps clear of the path ahead
         s, off = line.project_many(traj[:, 1], traj[:, 2])
         radius = 0.5 * max(o.length, o.width)
-        hit = (np.abs(off) < reach) & (s > ego.s_front - 1.0) & (s < ego.s_front + 80.0)
+        hit = (np.abs(off) < reach) & (s > s_lo) & (s < s_hi)
         if parallel:
             # A mover keeping to a parallel lane (same way or oncoming) meets the route only where the route turns
             # across its course: the right turn across a cyclist riding on in the bike lane beside the ego. Where

@@ -120,6 +120,8 @@ class RefLine:
             worst = float(turn[a:min(a + CHUNK, nseg) + 1].max())
             inv_cos.append(1.0 / math.cos(worst) if worst < MAX_BOUNDED_TURN else math.inf)
         self._chunk_inv_cos = np.array(inv_cos)
+        self._chunk_lists = (self._chunk_s0.tolist(), self._chunk_s1.tolist(), self._chunk_x.tolist(),
+                             self._chunk_y.tolist(), self._chunk_r.tolist(), inv_cos)
         # Projections by (x, y, first segment, end segment), which fully determine the answer: the planner projects
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
@@ -174,10 +176,11 @@ class RefLine:
 
     def neighbour_room(self, s0: float, s1: float) -> tuple[float, float]:
         """Narrowest same-direction neighbour lane width (left, right) over [s0, s1] (0 where there is none)."""
-        mask = (self.s >= s0) & (self.s <= s1)
-        if not mask.any():
+        # The vertices with s0 <= s <= s1 (s is sorted): an index range, the same elements a mask would pick.
+        lo, hi = bisect.bisect_left(self.s_list, s0), bisect.bisect_right(self.s_list, s1)
+        if lo >= hi or s0 != s0 or s1 != s1:                           # (a NaN bound selects nothing)
             return float(np.interp(s0, self.s, self.room_left)), float(np.interp(s0, self.s, self.room_right))
-        return float(self.room_left[mask].min()), float(self.room_right[mask].min())
+        return float(self.room_left[lo:hi].min()), float(self.room_right[lo:hi].min())
 
     def junction_at(self, s: float) -> bool:
         return bool(self.in_junction[min(self._index(s) + 1, len(self.s) - 1)])
@@ -343,6 +346,43 @@ class RefLine:
                 return False
         return True
 
+    def far_from_straight(self, ax: float, ay: float, bx: float, by: float, reach: float, s0: float,
+                          s1: float) -> bool:
+        """`far_from` for every point of the straight piece from (ax, ay) to (bx, by) (a course at constant
+        heading), in plain floats: the piece's distance to each live chunk's centre bounds its points', and beyond
+        an end the offset and the along-distance are affine along the piece, so where both conditions of a near
+        point hold is an interval. Twice the slack, for points computed on the piece another way."""
+        cs0, cs1, cxs, cys, crs, inv_cos = self._chunk_lists
+        slack = 2.0 * CHUNK_SLACK
+        k_lo = bisect.bisect_right(cs1, s0 - CHUNK_SLACK)      # the live chunks: a range, as s is sorted
+        k_hi = bisect.bisect_left(cs0, s1 + CHUNK_SLACK)
+        if k_lo >= k_hi:
+            return True
+        vx, vy = bx - ax, by - ay
+        v2 = vx * vx + vy * vy
+        for k in range(k_lo, k_hi):
+            if inv_cos[k] == math.inf:
+                return False
+            cx, cy = cxs[k], cys[k]
+            t = 0.0 if v2 == 0.0 else min(max(((cx - ax) * vx + (cy - ay) * vy) / v2, 0.0), 1.0)
+            if not math.hypot(cx - (ax + t * vx), cy - (ay + t * vy)) - crs[k] > \
+                    reach * inv_cos[k] * (1.0 + 1e-9) + slack:
+                return False
+        for end, seg, sign, is_live in ((0, 0, -1.0, k_lo == 0), (len(self.xy) - 1, self._last_seg, 1.0,
+                                                                     k_hi == len(cs0))):
+            if not is_live:
+                continue
+            h = float(self._seg_heading[seg])
+            c, s = math.cos(h), math.sin(h)
+            ex, ey = float(self.xy[end, 0]), float(self.xy[end, 1])
+            along = [sign * ((px - ex) * c + (py - ey) * s) for px, py in ((ax, ay), (bx, by))]
+            across = [(py - ey) * c - (px - ex) * s for px, py in ((ax, ay), (bx, by))]
+            a_lo, a_hi = _affine_interval(along[0], along[1], -slack, math.inf)
+            c_lo, c_hi = _affine_interval(across[0], across[1], -(reach + slack), reach + slack)
+            if max(a_lo, c_lo) <= min(a_hi, c_hi):
+                return False
+        return True
+
     def _candidate_segments(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray | None:
         """Per point (row), increasing segment indices covering every chunk that may hold its nearest segment
         (None: search them all). A chunk is left out only when even its nearest possible point is farther than
@@ -363,3 +403,14 @@ class RefLine:
             return None                                   # little to gain: search the whole line
         idx = first[:, None] * CHUNK + np.arange(width * CHUNK)[None, :]
         return np.minimum(idx, self._last_seg)
+
+
+def _affine_interval(f0: float, f1: float, lo: float, hi: float) -> tuple[float, float]:
+    """The part of [0, 1] where f0 + t (f1 - f0) lies within [lo, hi], as (start, end) (start > end: none)."""
+    df = f1 - f0
+    if df == 0.0:
+        return (0.0, 1.0) if lo <= f0 <= hi else (1.0, 0.0)
+    ta, tb = (lo - f0) / df, (hi - f0) / df
+    if ta > tb:
+        ta, tb = tb, ta
+    return max(ta, 0.0), min(tb, 1.0)

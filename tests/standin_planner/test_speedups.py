@@ -232,3 +232,34 @@ def test_projection_through_remembered_cells_equals_the_plain_formula_bit_for_bi
             assert line.project(x, y, near_s=near, window=window) == _plain_project(line, x, y, near_s=near,
                                                                                     window=window), (s, near)
     assert searched > 0.8 * total
+
+
+def test_far_from_straight_never_rules_out_a_course_the_projection_would_find_near():
+    """The yield rule tests a straight course as one piece (`far_from_straight`) before computing its points: it
+    may say True only when none of the course's points (as `predict` places them) is near the path ahead."""
+    from standin_planner.behaviour import predict
+    from txt2sce_ros.contract import EntityState
+
+    rng = np.random.default_rng(4)
+    kink = RefLine(np.array([[0.0, 0.0], [20.0, 0.0], [20.5, 0.0], [30.0, 9.0], [60.0, 9.0]]))
+    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [kink]
+    said_far = near = 0
+    for line in lines:
+        for _ in range(60):
+            x, y, _ = line.position(rng.uniform(-25.0, line.length + 25.0), rng.normal(0.0, 8.0))
+            o = EntityState(name="o", category="car", t=0.0, x=x, y=y, heading=rng.uniform(-math.pi, math.pi),
+                            speed=float(rng.choice([0.5, 2.0, 8.0])), length=4.5, width=1.9, center_x=1.3)
+            traj = predict(o, 8.0, 0.25)
+            reach = float(rng.uniform(1.0, 4.0))
+            s0 = float(rng.uniform(-10.0, line.length))
+            s, off = line.project_many(traj[:, 1], traj[:, 2])
+            hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s0 + 81.0)).any())
+            c, sn = math.cos(o.heading), math.sin(o.heading)
+            ax, ay = o.x + o.center_x * c, o.y + o.center_x * sn
+            run = o.speed * (8.0 + 1e-9)
+            far = line.far_from_straight(ax, ay, ax + run * c, ay + run * sn, reach, s0, s0 + 81.0)
+            assert not (far and hit)
+            assert far == line.far_from(traj[:, 1], traj[:, 2], reach, s0, s0 + 81.0) or not far
+            said_far += far
+            near += hit
+    assert said_far > 50 and near > 50
