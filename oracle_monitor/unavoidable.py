@@ -25,6 +25,8 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable
 
+import numpy as np
+
 from txt2sce_ros.contract import EntityState, Frame
 
 from .geometry import Box, BoxGroup, box_at, footprint, overlaps
@@ -80,6 +82,7 @@ class Counterfactual:
     # Asked once the run is over (after the last `observe`): the path ahead per frame, and answers by party.
     _ahead_groups: dict[int, BoxGroup] = field(default_factory=dict, repr=False)
     _foreseen: dict[tuple[str, float], int | None] = field(default_factory=dict, repr=False)
+    _boxes: dict[int, list[Box]] = field(default_factory=dict, repr=False)     # per frame, kept as recorded
 
     def observe(self, frame: Frame) -> None:
         if self._ahead_groups or self._foreseen:
@@ -146,7 +149,7 @@ class Counterfactual:
         return self._foreseen[key]
 
     def _foreseeable(self, name: str, until: float) -> int | None:
-        taus = [k * FORESIGHT_DT for k in range(int(FORESIGHT / FORESIGHT_DT) + 1)]
+        taus = np.array([k * FORESIGHT_DT for k in range(int(FORESIGHT / FORESIGHT_DT) + 1)])
         for k in range(0, len(self.times), 2):             # every other frame: 0.1 s at the default step
             if self.times[k] > until:
                 return None
@@ -159,10 +162,9 @@ class Counterfactual:
             fp = footprint(o)
             if _course_clear(ahead, fp, o.speed * FORESIGHT * c, o.speed * FORESIGHT * s):
                 continue
-            for tau in taus:
-                moved = o.speed * tau
-                if ahead.overlapped_by(fp._replace(cx=fp.cx + moved * c, cy=fp.cy + moved * s)):
-                    return k
+            moved = o.speed * taus
+            if ahead.first_overlapped(fp, fp.cx + moved * c, fp.cy + moved * s) is not None:
+                return k
         return None
 
     def meets(self, profile: Callable[[float, float], Callable[[float], float]], until: float, *,
@@ -173,16 +175,24 @@ class Counterfactual:
             return None
         t_b, d_b, v_b = self.times[start], self.dists[start], self.ego[start][3]
         brake = profile(v_b)
-        for t, parties in zip(self.times[start:], self.parties[start:]):
+        for k in range(start, len(self.times)):
+            t, parties = self.times[k], self.parties[k]
             if t > until:
                 break
             if not parties:
                 continue
             ego = self._ego_box(d_b + brake(t - t_b))
-            for o in parties:
-                if overlaps(ego, footprint(o)):
+            for o, box in zip(parties, self._footprints(k)):
+                if overlaps(ego, box):
                     return o.name, t
         return None
+
+    def _footprints(self, k: int) -> list[Box]:
+        """The footprints of frame k's parties (asked again for every braking profile and start)."""
+        boxes = self._boxes.get(k)
+        if boxes is None:
+            boxes = self._boxes[k] = [footprint(o) for o in self.parties[k]]
+        return boxes
 
     def unavoidable(self, profile: Callable[[float], Callable[[float], float]], until: float
                     ) -> tuple[str, float, float, float] | None:

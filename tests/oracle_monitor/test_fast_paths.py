@@ -108,3 +108,22 @@ def test_course_clear_only_when_no_position_on_the_course_overlaps() -> None:
                 moved_box = box._replace(cx=box.cx + moved * math.cos(h), cy=box.cy + moved * math.sin(h))
                 assert not any(overlaps(a, moved_box) for a in group.boxes)
     assert clear > 100
+
+
+def test_first_overlapped_answers_as_overlapped_by_position_by_position() -> None:
+    rng = random.Random(13)
+    hits = 0
+    for _ in range(200):
+        cx, cy = rng.uniform(-3000, 3000), rng.uniform(-3000, 3000)
+        hs = [rng.uniform(-0.3, 0.3) for _ in range(31)]
+        g = BoxGroup([cx + i * 2.0 for i in range(31)], [cy + rng.uniform(-0.5, 0.5) for _ in range(31)], hs,
+                     2.3, 1.0)
+        h = rng.uniform(-math.pi, math.pi)
+        b = Box(cx + rng.uniform(-10, 70), cy + rng.uniform(-15, 15), math.cos(h), math.sin(h), 2.2, 0.9)
+        moved = rng.uniform(0.0, 12.0) * np.arange(21) * 0.25
+        cxs, cys = b.cx + moved * b.c, b.cy + moved * b.s
+        want = next((t for t in range(21) if g.overlapped_by(b._replace(cx=float(cxs[t]), cy=float(cys[t])))),
+                    None)
+        assert g.first_overlapped(b, cxs, cys) == want
+        hits += want is not None
+    assert 20 < hits < 180
