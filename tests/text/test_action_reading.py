@@ -352,3 +352,12 @@ def test_a_party_slowing_when_the_story_takes_it_up_opens_with_c() -> None:
             "approaching from the right of the AV was slowing with its turn signal on. The AV began its left turn "
             "and the pickup continued straight, and the AV's front struck the pickup's left side.")
     assert _party(text)[1].startswith("c")
+
+
+def test_numbered_parties_are_told_apart() -> None:
+    text = ("The AV was traveling south on Potrero Avenue and braked for Cyclist 1 and Cyclist 2 in the bike lane "
+            "ahead. Cyclist 3, riding behind the AV, swerved left around a car door. Cyclist 3 then made contact "
+            "with the right rear bumper of the AV.")
+    sk = extract(text, "t")
+    assert [n.category for n in sk.npcs] == ["bicycle"] * 3
+    assert sk.collision.with_ == "npc3"

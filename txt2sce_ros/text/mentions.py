@@ -332,6 +332,11 @@ _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|besid
 _RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped")
 
 
+#: A party's number in the report's own numbering, right after its noun: "Cyclist 3", "Vehicle #2" (not "2 mph").
+_NUMBER_LABEL = compile_gated(r"\s+#?([1-9])\b(?!\s*(?:mph|miles?|feet|foot|ft|meters?|m\b|seconds?|sec|s\b|%|"
+                           r"inches|km|[:.,]\d))", re.I)
+
+
 def _compatible(e: Entity, m: Mention) -> bool:
     if e.kind == "party" and PARKED_WORDS.search(m.mods) and not any(PARKED_WORDS.search(x.mods) for x in e.mentions):
         return False  # "the parked vehicle" is not the moving one named before
@@ -364,10 +369,27 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
     for m in mentions:
         by_sent.setdefault(m.sent, []).append(m)
     prev: Mention | None = None
+    labels: dict[int, str] = {}  # entity -> its number in the report's own numbering ("Cyclist 3", "Vehicle 2")
     for m in mentions:
         if m.kind not in ("party", "obstacle"):
             prev = m
             continue
+        lab = _NUMBER_LABEL.match(sents[m.sent][m.end:]) if m.kind == "party" else None
+        if lab is not None:
+            # "Cyclist 1 and Cyclist 2 approaching ... Cyclist 3 ... veered left": a numbered party is the one with
+            # that number; once the report numbers its parties, a new number is a new party.
+            same = [e for e in ents if labels.get(e.idx) == lab.group(1) and e.merged_into is None]
+            if same or labels:
+                target_l = same[0] if same else Entity(idx=len(ents), kind=m.kind, category=m.category,
+                                                       heads={m.head}, count=m.count)
+                if not same:
+                    ents.append(target_l)
+                    labels[target_l.idx] = lab.group(1)
+                target_l.heads.add(m.head)
+                m.entity = target_l.idx
+                target_l.mentions.append(m)
+                prev = m
+                continue
         # "an individual riding a motorized scooter": the rider and the ride are one party of the ride's category.
         if (prev is not None and prev.sent == m.sent and prev.kind == "party" and prev.category == "pedestrian"
                 and m.kind in ("party", "obstacle") and m.category in ("bicycle", "scooter", "motorcycle", "other")
@@ -388,7 +410,10 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             m.kind, m.category = "obstacle", "other"  # a scooter left lying in the road is an object
         # "The trailing vehicle is a bus": a predicate noun names the same party more precisely.
         if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
-                and prev.entity >= 0 and fre.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)):
+                and prev.entity >= 0 and (fre.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)) or
+                                          (prev.entity in labels and fre.fullmatch(
+                                              r"\s+#?[1-9]\s*,\s*(?:a|an)\s*", _between(sents, prev, m)))):
+            # ... and so does an appositive after a numbered party ("Vehicle 3, a pickup truck, was traveling").
             m.det = "the"
             target = ents[prev.entity]
             target.category = m.category if m.category != "car" else target.category
@@ -436,6 +461,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 target.category = m.category  # "the vehicle" then "the Toyota Sienna": the specific noun wins
         m.entity = target.idx
         target.mentions.append(m)
+        if lab is not None and target.idx not in labels:
+            labels[target.idx] = lab.group(1)  # "An SUV (Vehicle 2) ... Vehicle 2 continued": the number names it
         prev = m
     return ents
 
