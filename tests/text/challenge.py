@@ -42,7 +42,11 @@ the events work (one file each, so the two can grow at once): 342-355, crossing-
 only, parties ahead rolling back or reversing, first-person lanes ("the through lane to our right"), scored before any
 fix: 12/13, 8/13, 14/14; 356-367, NHTSA wording (SV/CP, V1/V2, "the ADS vehicle"), a pedestrian crossing the street the
 AV turns onto without the word crosswalk, a stop in a left-turn pocket (a junction), scored before any fix: 8/11, 6/11,
-10/12 (one narrative with a contested label dropped, one event label corrected after scoring).
+10/12 (one narrative with a contested label dropped, one event label corrected after scoring); 368-377, long multi-party
+reports (a party going around slowing traffic from behind, a cyclist riding between a standing AV and parked cars, "half
+a car length ahead", "our test vehicle"), scored before any fix: 10/13, 7/13, 8/10 (one position label corrected after
+scoring: a rider moving into the lane who strikes the AV's mirror was alongside). Four category labels in both files
+were corrected to the spec's `van` (minivans, delivery vans) after scoring; a party is matched by category first.
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

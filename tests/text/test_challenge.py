@@ -15,7 +15,7 @@ def test_challenge_set_holds() -> None:
 # The batches written beside the events work (challenge_positions.jsonl), held apart so both files can grow at once.
 def test_challenge_positions_file_holds() -> None:
     sc = score(POSITIONS)
-    assert sc.reports == 25 and sc.parties == 23
-    assert sc.position >= 23, sc.misses
-    assert sc.events >= 15, sc.misses
-    assert sc.ego >= 23, sc.misses
+    assert sc.reports == 35 and sc.parties == 36
+    assert sc.position >= 36, sc.misses
+    assert sc.events >= 23, sc.misses
+    assert sc.ego >= 32, sc.misses

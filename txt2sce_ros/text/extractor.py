@@ -120,6 +120,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
          ([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].start) for e in parties) == first_pos)
     ego_start, ego_actions = ego_sequence(d, first_pos, party_first=first_is_party)
     ego_actions = moved_off_into_object(d, obstacles, ego_actions)
+    d.ego_start = ego_start
     if ego_start == "moving" and not ego_actions:
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
     elif ego_start == "moving" and ego_actions[0] in "bch":

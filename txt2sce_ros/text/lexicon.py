@@ -53,7 +53,7 @@ EGO_PATTERNS: tuple[str, ...] = (
     r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
     r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
     r"\b(?:the\s+)?subject\s+vehicle\b",
-    r"\b(?:our|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",
+    r"\b(?:our(?:\s+test)?|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",
     r"\ba\s+test\s+vehicle\b",
     r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)",
     r"\bthis\s+vehicle\b",

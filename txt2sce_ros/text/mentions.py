@@ -67,7 +67,7 @@ _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
-                             r"occupants?|passengers?)\b(?!-)", re.I)  # "a motorcyclist lane-splitting" is a rider
+                             r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane-splitting" is a rider
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
 _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"

@@ -76,10 +76,14 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got)\s+past|"
                          # squeezing between the AV and the curb, filtering through queued traffic: a pass
                          r"squeez\w*\s+(?:between|past|by|through)|filter\w*\s+(?:between|past|through)|"
+                         # riding on between a standing AV and the curb or parked cars (place() keeps it to a
+                         # standing AV: beside a moving one it may be alongside)
+                         r"(?P<between>(?:rode|riding|ride|traveling|travelling|driving|drove|moving|going|went)\s+"
+                         r"(?:\w+\s+){0,2}between\s+EGO\s+and)|"
                          r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
-                         r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(left|right))?", re.I)
+                         r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(?P<side>left|right))?", re.I)
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
 # AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
 # "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
@@ -226,7 +230,9 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
         for m in _PASSING.finditer(win):
             if fre.match(r"\s+(?:the|a|an)\s+(?!EGO)", win[m.end():]):
                 continue  # "changed lanes to pass the bus": the AV passing something, not the party passing it
-            cues.append(Cue("passing", _side(m.group(1)) or "", (base + m.start(), base + m.end())))
+            if m.group("between") and d.ego_start != "stopped":
+                continue
+            cues.append(Cue("passing", _side(m.group("side")) or "", (base + m.start(), base + m.end())))
         for m in ONCOMING.finditer(win):
             path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane", win[m.end():], re.I)
             cues.append(Cue("direction", "opposite-lane" if path else "opposite", (base + m.start(), base + m.end())))

@@ -70,6 +70,7 @@ class Doc:
     struck: set[int] = field(default_factory=set)  # further objects the AV struck with the partner
     starts: list[int] = field(default_factory=list)  # offset of each sentence in `text`
     av_lane: float | None = None  # the AV's own lane, 0 leftmost .. 9 rightmost (relations.av_lane_rank), if named
+    ego_start: str = ""  # the AV's start state once read ("moving" / "stopped"): placing parties weighs it
     memo: dict[str, object] = field(default_factory=dict)  # facts of the whole text read once (positions.av_street)
 
     def offset(self, sent: int) -> int:
