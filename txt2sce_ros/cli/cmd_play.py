@@ -63,7 +63,7 @@ def _mode(args: argparse.Namespace) -> str:
 def run(args: argparse.Namespace) -> int:
     from scenario_player import Simulation, SimulationConfig, load_scenario
 
-    from ..seed.fidelity import first_contacts
+    from ..seed.boxes import first_contacts
 
     mode = _mode(args)
     frames = []

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..contract import EntityState
 from ..errors import Txt2SceError
-from .kinematics import box_corners, boxes_gap
+from .boxes import boxes_gap, first_contacts, state_corners  # noqa: F401  (first_contacts: its old home)
 
 if TYPE_CHECKING:   # pragma: no cover
     from ..sketch import ErrorRecord, Sketch
@@ -46,17 +46,11 @@ class FidelityResult:
     note: str = ""
 
 
-def _corners(e: EntityState, dt: float = 0.0) -> np.ndarray:
-    x = e.x + e.speed * math.cos(e.heading) * dt
-    y = e.y + e.speed * math.sin(e.heading) * dt
-    return box_corners(x, y, e.heading, e.length, e.width, e.center_x)
-
-
 def ttc(a: EntityState, b: EntityState, *, limit: float = TTC_LIMIT, step: float = TTC_STEP) -> float | None:
     """Constant-velocity time until the boxes overlap (0 when they already do); None beyond `limit`."""
     t = 0.0
     while t <= limit + 1e-9:
-        if boxes_gap(_corners(a, t), _corners(b, t)) <= 0.0:
+        if boxes_gap(state_corners(a, t), state_corners(b, t)) <= 0.0:
             return round(t, 3)
         t += step
     return None
@@ -70,7 +64,7 @@ def check_frames(frames: Iterable, target: str) -> tuple[str, float | None, floa
         other = next((o for o in fr.objects if o.name == target), None)
         if other is None:
             continue
-        gap = boxes_gap(_corners(fr.ego), _corners(other))
+        gap = boxes_gap(state_corners(fr.ego), state_corners(other))
         min_gap = min(min_gap, gap)
         if gap <= 0.0:
             return "contact", fr.t, min_gap, 0.0
@@ -85,31 +79,6 @@ def check_frames(frames: Iterable, target: str) -> tuple[str, float | None, floa
     if first:
         return first[0], first[1], gap_out, ttc_out
     return "none", None, gap_out, ttc_out
-
-
-def first_contacts(frames: Iterable) -> list[tuple[str, str, float]]:
-    """Every pair of entities whose footprints touched during a run, with the first time they did, in time order
-    (the ego first in its pairs)."""
-    seen: dict[tuple[str, str], float] = {}
-    for fr in frames:
-        states = [fr.ego, *fr.objects]
-        # Box centres and half-diagonals: two boxes whose enclosing circles are apart cannot touch, so the exact
-        # (and, on numpy's small arrays, slow) separating-axis test, and the corners it needs, are built only for
-        # pairs that are close. The centre is the box's own (reference point moved by center_x along the heading).
-        centres = [(e.x + e.center_x * math.cos(e.heading), e.y + e.center_x * math.sin(e.heading)) for e in states]
-        radii = [0.5 * math.hypot(e.length, e.width) for e in states]
-        for i in range(len(states)):
-            for j in range(i + 1, len(states)):
-                pair = (states[i].name, states[j].name)
-                if pair in seen:
-                    continue
-                reach = radii[i] + radii[j] + 1e-6
-                dx, dy = centres[i][0] - centres[j][0], centres[i][1] - centres[j][1]
-                if dx * dx + dy * dy > reach * reach:
-                    continue
-                if boxes_gap(_corners(states[i]), _corners(states[j])) <= 0.0:
-                    seen[pair] = fr.t
-    return sorted(((a, b, t) for (a, b), t in seen.items()), key=lambda c: (c[2], c[0], c[1]))
 
 
 def check_seed(result: SeedResult, *, dt: float = 0.05, target: str | None = None) -> FidelityResult:
@@ -148,7 +117,7 @@ def check_file(path: str | Path, target: str | None, *, report_id: str | None = 
 def fidelity_batch(items: Iterable[Sketch | ErrorRecord], *, seed: int = 0, maps: str | Path | None = None,
                    dt: float = 0.05) -> list[FidelityResult]:
     """Generate and check every buildable sketch (refused ones are skipped: they have no seed)."""
-    from ..sketch import ErrorRecord   # here, as the generator: `txt2sce play` needs first_contacts alone
+    from ..sketch import ErrorRecord   # on use, as the generator below
     from .generate import fidelity_target, generate_seed
 
     out = []

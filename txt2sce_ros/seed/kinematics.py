@@ -8,6 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .boxes import box_corners, boxes_gap  # noqa: F401  (the box tests live in `boxes`; seed modules import them here)
+
 DT = 0.05
 
 
@@ -63,25 +65,3 @@ def time_to_reach(t: np.ndarray, d: np.ndarray, target: float) -> float | None:
     """First time the travelled distance reaches `target` (None if never)."""
     idx = np.nonzero(d >= target - 1e-6)[0]
     return float(t[idx[0]]) if idx.size else None
-
-
-def box_corners(x: float, y: float, h: float, length: float, width: float, center_x: float) -> np.ndarray:
-    c, s = math.cos(h), math.sin(h)
-    cx, cy = x + center_x * c, y + center_x * s
-    hl, hw = length / 2, width / 2
-    pts = [(hl, hw), (hl, -hw), (-hl, -hw), (-hl, hw)]
-    return np.array([(cx + a * c - b * s, cy + a * s + b * c) for a, b in pts])
-
-
-def boxes_gap(a: np.ndarray, b: np.ndarray) -> float:
-    """Separating-axis distance between two convex quadrilaterals: ≤ 0 when they overlap, else the largest gap
-    along any edge normal (a lower bound of the true distance, exact for aligned boxes)."""
-    best = -math.inf
-    for poly in (a, b):
-        for i in range(4):
-            e = poly[(i + 1) % 4] - poly[i]
-            n = np.array([-e[1], e[0]]) / (math.hypot(*e) or 1.0)
-            pa, pb = a @ n, b @ n
-            gap = max(pb.min() - pa.max(), pa.min() - pb.max())
-            best = max(best, gap)
-    return best
