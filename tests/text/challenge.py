@@ -47,6 +47,9 @@ reports (a party going around slowing traffic from behind, a cyclist riding betw
 a car length ahead", "our test vehicle"), scored before any fix: 10/13, 7/13, 8/10 (one position label corrected after
 scoring: a rider moving into the lane who strikes the AV's mirror was alongside). Four category labels in both files
 were corrected to the spec's `van` (minivans, delivery vans) after scoring; a party is matched by category first.
+378-385, same-direction parties in the lane to the AV's left (or a left-turn lane) turning across it at a junction,
+scored before any fix: 8/8, 1/8, 8/8 (five event labels corrected to the spec after scoring: a party told travelling
+before it turns opens with `a`).
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

@@ -15,7 +15,7 @@ def test_challenge_set_holds() -> None:
 # The batches written beside the events work (challenge_positions.jsonl), held apart so both files can grow at once.
 def test_challenge_positions_file_holds() -> None:
     sc = score(POSITIONS)
-    assert sc.reports == 35 and sc.parties == 36
-    assert sc.position >= 36, sc.misses
-    assert sc.events >= 23, sc.misses
-    assert sc.ego >= 32, sc.misses
+    assert sc.reports == 43 and sc.parties == 44
+    assert sc.position >= 44, sc.misses
+    assert sc.events >= 28, sc.misses
+    assert sc.ego >= 40, sc.misses
