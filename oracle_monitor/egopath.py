@@ -47,6 +47,7 @@ class EgoPath:
         self._s_hint = 0.0
         self._located: tuple[tuple[float, float, float], float] | None = None   # last (x, y, hint) -> answer
         self._corridor: tuple[tuple[float, ...], BoxGroup | None] | None = None  # last corridor by its inputs
+        self._answers: tuple[BoxGroup | None, dict] = (None, {})       # the corridor's answers by footprint
 
     @classmethod
     def straight(cls, ego: EntityState) -> "EgoPath":
@@ -114,8 +115,18 @@ class EgoPath:
         group = self.corridor(self.locate(*front), clear_distance, 0.5 * ego.width + margin)
         if group is None:
             return ""
+        # Answers by footprint for this corridor: a standing ego and the parties standing around it ask the same.
+        if self._answers[0] is not group:
+            self._answers = (group, {})
+        answers = self._answers[1]
         for obj in objects:
-            if group.overlapped_by(footprint(obj)):
+            fp = footprint(obj)
+            hit = answers.get(fp)
+            if hit is None:
+                if len(answers) >= 256:
+                    answers.clear()
+                hit = answers[fp] = group.overlapped_by(fp)
+            if hit:
                 return obj.name
         return ""
 

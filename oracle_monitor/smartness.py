@@ -196,8 +196,10 @@ class SmartnessOracle:
         for light in frame.lights:
             before = prev_lights.get(light.id, light)
             p0 = self._stop_line_position(before, ch, sh, prev_front)
+            if p0 is None or not p0[0] < 0.0:
+                continue                            # not heading its way, or past the line already
             p1 = self._stop_line_position(light, ch, sh, front)
-            if p0 is None or p1 is None or not (p0[0] < 0.0 <= p1[0]):
+            if p1 is None or not 0.0 <= p1[0]:
                 continue                            # not heading its way, or no crossing in this step
             red = before.state is SignalState.RED or (
                 self.params.yellow_is_violation and before.state is SignalState.YELLOW)
