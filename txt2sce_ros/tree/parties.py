@@ -10,6 +10,12 @@ road model says they conflict with the AV's path:
 | `cyclist_ahead` | bicycle | `ahead` m ahead in the AV's lane (along its route) | rides on at its category's speed | a cyclist on the AV's path (`category:bicycle`, R5/same) |
 | `lead_brakes` | car | `ahead` m ahead in the AV's lane | drives at the AV's speed, brakes to a stop at `brake_at` s | a lead that brakes (`events:h`, R5+h) |
 | `close_behind` | car | `near_gap` m behind the AV's rear bumper, same lane | stands | a party close to the AV at the start (`near_start:yes`) |
+| `crossing` | pedestrian | beside the AV's lane `ahead` m ahead, `cross_kerb` m out from its edge | stands, then walks across the AV's path when the AV is as many seconds from the crossing point as the walk to the lane's centre takes | a party that starts to cross into the path (`events:m`) |
+
+The crossing is the nearside pedestrian dash of Euro NCAP's AEB tests (CPNA): walking at its category's speed, it
+would meet the middle of the AV's front had the AV kept its speed. A planner that sees it start can brake in time;
+one that sees it late (or not at all) cannot. The trigger is a TimeToCollisionCondition of the AV to the crossing
+point, so it fires whatever speed the AV reaches there (from a standing or a moving start).
 
 Names follow docs/seed_format.md (`npc<k>` with the first free k, events `npc<k>_e1_stop`), so the analysis reads
 the new party like a reported one (category, derived position, events).
@@ -17,6 +23,7 @@ the new party like a reported one (category, derived position, events).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -29,7 +36,8 @@ from .physical import _sub, ncm  # one element helper for the tree's XML
 from .trajectory import feasible_s, footprint_extent
 from .values import Recorder, uniform
 
-ROLES = ("cyclist_ahead", "lead_brakes", "close_behind")
+#: In the order a small node budget keeps them (`prune.diagonal` covers an enumerated block's versions in order).
+ROLES = ("cyclist_ahead", "crossing", "close_behind", "lead_brakes")
 
 
 def free_name(prefix: str, taken: set[str | None]) -> str:
@@ -99,6 +107,58 @@ def _stop_story(name: str, at: float, speed: float, decel: float) -> etree._Elem
     return story
 
 
+def _world(x: float, y: float, h: float) -> etree._Element:
+    return etree.Element("WorldPosition", x=f"{x:.3f}", y=f"{y:.3f}", z="0", h=f"{h:.4f}", p="0", r="0")
+
+
+def _cross_story(name: str, path: list[tuple[float, float]], heading: float, speed: float,
+                 point: LanePos, ttc: float) -> etree._Element:
+    """`<name>_story`: one event `<name>_e1_cross` (walk at `speed` along `path`) that starts once the ego's time
+    to collision with the crossing `point` (front bumper, straight-line distance, as the dilemma-zone yellow
+    measures its stop line) drops below `ttc` s."""
+    story = etree.Element("Story", name=f"{name}_story")
+    act = _sub(story, "Act", name=f"{name}_act")
+    mg = _sub(act, "ManeuverGroup", name=f"{name}_mg", maximumExecutionCount="1")
+    _sub(_sub(mg, "Actors", selectTriggeringEntities="false"), "EntityRef", entityRef=name)
+    man = _sub(mg, "Maneuver", name=f"{name}_maneuver")
+    ev = _sub(man, "Event", name=f"{name}_e1_cross", priority="parallel", maximumExecutionCount="1")
+    walk = _sub(ev, "Action", name=f"{name}_e1_cross_speed")
+    _sub(_sub(walk, "PrivateAction"), "LongitudinalAction").append(_speed_action(speed, ("step", "time", 0.0)))
+    follow = _sub(_sub(_sub(ev, "Action", name=f"{name}_e1_cross_action"), "PrivateAction"), "RoutingAction")
+    fta = _sub(follow, "FollowTrajectoryAction")
+    line = _sub(_sub(_sub(fta, "Trajectory", name=f"{name}_crossing", closed="false"), "Shape"), "Polyline")
+    for x, y in path:
+        _sub(_sub(line, "Vertex", time="0"), "Position").append(_world(x, y, heading))
+    _sub(_sub(fta, "TimeReference"), "None")
+    _sub(fta, "TrajectoryFollowingMode", followingMode="position")
+    cond = _sub(_sub(_sub(ev, "StartTrigger"), "ConditionGroup"), "Condition", name=f"{name}_e1_cross_start",
+                delay="0", conditionEdge="none")
+    by = _sub(cond, "ByEntityCondition")
+    _sub(_sub(by, "TriggeringEntities", triggeringEntitiesRule="any"), "EntityRef", entityRef="ego")
+    ttc_el = _sub(_sub(by, "EntityCondition"), "TimeToCollisionCondition", value=f"{ttc:.3f}", freespace="true",
+                  alongRoute="false", rule="lessThan")
+    _sub(_sub(_sub(ttc_el, "TimeToCollisionConditionTarget"), "Position"), "LanePosition", roadId=point.road,
+         laneId=str(point.lane), s=f"{point.s:.3f}", offset="0")
+    start = _sub(_sub(_sub(act, "StartTrigger"), "ConditionGroup"), "Condition", name=f"{name}_act_start", delay="0",
+                 conditionEdge="none")
+    _sub(_sub(start, "ByValueCondition"), "SimulationTimeCondition", value="0", rule="greaterThan")
+    return story
+
+
+def _crossing(ctx: SeedContext, point: LanePos, kerb: float, beyond: float
+              ) -> tuple[tuple[float, float, float], list[tuple[float, float]], float]:
+    """Start pose, path and walk to the lane centre (m) of a party crossing the AV's lane at `point` from its right:
+    `kerb` m out from the lane's right edge, across to `beyond` m past its left edge."""
+    x, y, h = ctx.map.network.lane_to_world(point.road, point.lane, point.s)
+    half = 0.5 * ctx.map.lane_width(point.road, point.lane, point.s)
+    rx, ry = math.sin(h), -math.cos(h)                   # unit vector to the right of the lane's direction
+    out = half + kerb
+    start = (x + rx * out, y + ry * out)
+    end = (x - rx * (half + beyond), y - ry * (half + beyond))
+    heading = math.atan2(-ry, -rx)                       # walking to the left across the lane
+    return (start[0], start[1], heading), [start, (x, y), end], out
+
+
 def new_party(role: str, name: str, ctx: SeedContext, rng: np.random.Generator, cfg: dict[str, Any],
               rec: Recorder) -> tuple[etree._Element, etree._Element, etree._Element | None] | None:
     """(ScenarioObject, Init Private, Story or None) of the party `role` names, or None where the road gives no
@@ -108,21 +168,33 @@ def new_party(role: str, name: str, ctx: SeedContext, rng: np.random.Generator, 
     ego_priv = ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")
     ego_speed = initial_speed(ego_priv) or 0.0
     cats = cfg["physical"]["categories"]
-    category = "bicycle" if role == "cyclist_ahead" else "car"
+    category = {"cyclist_ahead": "bicycle", "crossing": "pedestrian"}.get(role, "car")
     obj = etree.Element("ScenarioObject", name=name)
     ncm(obj, category, rng, cfg, rec)
     story = None
-    if role in ("cyclist_ahead", "lead_brakes"):
+    world = None
+    if role in ("cyclist_ahead", "lead_brakes", "crossing"):
         found = ahead_on_path(ctx, uniform(rng, *spec["ahead"]))
         if found is None or not found[1]:
             return None
         pos = found[0]
         ego = ctx.starts["ego"]
+        # a party or obstacle of the seed in the way: between the AV and the place, or (for a party that goes on
+        # along the lane; a crossing one leaves it) in the lane ahead of it
         if pos.road == ego.road and not (feasible_s(ctx, "ego", ego, pos.s, 0.0, init["min_gap"])
-                                         and _lane_clear_ahead(ctx, pos, float(spec["clear_ahead"]))):
-            return None                                    # a party or obstacle of the seed is in the way
+                                         and (role == "crossing"
+                                              or _lane_clear_ahead(ctx, pos, float(spec["clear_ahead"])))):
+            return None
         if role == "cyclist_ahead":
             speed = float(cats[category]["speed"])
+        elif role == "crossing":
+            walk = float(cats[category]["speed"])
+            world, path, to_centre = _crossing(ctx, pos, float(spec["cross_kerb"]), float(spec["cross_beyond"]))
+            story = _cross_story(name, path, world[2], walk, pos, to_centre / walk)
+            rec.note(f"Story[@name='{name}_story']", None,
+                     f"{name}_e1_cross at {walk:.2f} m/s when ego TTC to road {pos.road} lane {pos.lane} "
+                     f"s {pos.s:.2f} < {to_centre / walk:.2f} s")
+            speed = 0.0
         else:
             speed = ego_speed if ego_speed > 0 else float(cats[category]["speed"])
             at = uniform(rng, *spec["brake_at"])
@@ -136,6 +208,9 @@ def new_party(role: str, name: str, ctx: SeedContext, rng: np.random.Generator, 
     else:
         raise ValueError(f"unknown new-party role {role!r}")
     priv = _private(name, pos, speed)
+    if world is not None:                                # beside the lane, facing across it: a world pose
+        tp = priv.find("PrivateAction/TeleportAction/Position")
+        tp.replace(tp[0], _world(*world))
     rec.check_tree(obj)
     rec.check_tree(priv)
     if story is not None:
