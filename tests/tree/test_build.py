@@ -184,3 +184,17 @@ def test_tree_cli_says_how_much_it_writes_and_dry_run_writes_nothing(tmp_path, c
     said = int(err.split("about ")[1].split(" files")[0].replace(",", ""))
     assert said == sum(1 for f in (tmp_path / "t").rglob("*") if f.is_file())
     assert str((tmp_path / "t").resolve()) in err
+
+
+def test_node_budget_keeps_a_standing_and_a_moving_start(tmp_path):
+    # The cut-in seed's AV drives off at speed; the ego layer's versions are a standing start (TSM-start) and
+    # moved starts. A small budget keeps both start states (start refusals need one, a conflict timed for a moving
+    # AV the other), and both meet later layers' versions (weather types spread over them).
+    res = build_tree(CUT_IN, tmp_path / "t", seed=0, cfg=tree_config(mutations=1, max_nodes=14))
+    assert res.truncated and res.nodes <= 14
+    nodes = json.loads((tmp_path / "t" / "manifest.json").read_text())["nodes"][1:]
+    ego = {n["id"]: n["operator"] for n in nodes if n["block_kind"] == "ego"}
+    assert sorted(ego.values()) == ["TSM-start", "WPM-init"]
+    under = {op: [n for n in nodes if n["block_kind"] == "weather" and n["parent"] == i] for i, op in ego.items()}
+    assert under["TSM-start"] and under["WPM-init"]
+

@@ -1,6 +1,6 @@
 """Reach (issue 16): the tree brings trigger conditions into seeds that lack them, where the road allows — a new
-party on the AV's path (a cyclist ahead, a lead that brakes, a car close behind), a standing start — and layers
-under a node budget spread their versions over different parents."""
+party on the AV's path (a cyclist ahead, a lead that brakes, a car close behind, a pedestrian who starts to
+cross), a standing start — and layers under a node budget spread their versions over different parents."""
 
 from __future__ import annotations
 
@@ -65,7 +65,7 @@ def _elements(path: Path) -> frozenset[str]:
 
 
 def test_new_party_roles_bring_their_trigger_conditions(party_nodes):
-    assert set(party_nodes) == {"cyclist_ahead", "lead_brakes", "close_behind"}
+    assert set(party_nodes) == {"cyclist_ahead", "lead_brakes", "close_behind", "crossing"}
     cyc, lead, close = (_elements(party_nodes[r]) for r in ("cyclist_ahead", "lead_brakes", "close_behind"))
     assert {"category:bicycle", "position:R5/same"} <= cyc and "near_start:yes" not in cyc
     assert {"category:car", "position:R5/same", "events:h", "R5+h"} <= lead
@@ -117,3 +117,28 @@ def test_inert_faults_are_read_from_the_scenario(party_nodes):
 
     assert inert(CUT_IN) == {"ignore_cyclists", "red_light_misread"}
     assert inert(party_nodes["cyclist_ahead"]) == {"red_light_misread"}
+
+
+def test_crossing_pedestrian_starts_when_the_av_is_near_and_is_hit_only_when_seen_late(party_nodes, tmp_path):
+    """NCM-new crossing: a pedestrian beside the AV's lane walks across it once the AV's time to the crossing point
+    is the walk's time to the lane centre. The nominal planner sees it start and brakes in time; `stale_tracking`
+    (object states a second old) sees it late and hits it — from a moving start and from a standing one."""
+    from txt2sce_ros.closed_loop import run_closed_loop
+
+    elements = _elements(party_nodes["crossing"])
+    assert {"category:pedestrian", "events:m"} <= elements and "events:m" not in _elements(CUT_IN)
+    root = parse_bytes(party_nodes["crossing"].read_bytes(), "crossing")
+    ttc = root.find(".//Event[@name='npc2_e1_cross']/StartTrigger//TimeToCollisionCondition")
+    assert ttc is not None and 1.0 < float(ttc.get("value")) < 3.0
+    ego_speed = root.find("Storyboard/Init/Actions/Private[@entityRef='ego']//AbsoluteTargetSpeed")
+    assert float(ego_speed.get("value")) > 0
+    ego_speed.set("value", "0")                 # the ego layer's TSM-start version
+    standing = _write(CUT_IN.parent / "crossing_standing.xosc", etree.tostring(root, encoding="unicode"))
+    try:
+        for node in (party_nodes["crossing"], standing):
+            nominal, _ = run_closed_loop(node, time_limit=20.0)
+            faulty, _ = run_closed_loop(node, faults=("stale_tracking",), time_limit=20.0)
+            assert nominal.verdict.value != "error" and "Collisions" not in nominal.categories, node.name
+            assert "Collisions" in faulty.categories, node.name
+    finally:
+        standing.unlink()

@@ -109,6 +109,21 @@ def test_derived_position_follows_the_sketch_definitions() -> None:
     assert derived_position(ego, (40.0, -30.0, math.pi / 2)) == ("R3", None)
 
 
+def test_near_start_is_a_bumper_gap_as_close_as_the_start_refusal_acts() -> None:
+    """`near_start` is measured between footprints (a long vehicle is no closer than a short one at the same gap),
+    and a party within the tree's start spacing (6 m) counts; a party farther off does not."""
+    from txt2sce_ros.analysis.features import NEAR_START_GAP, start_gap
+
+    ego, car = (-1.0, 3.5), (-1.0, 3.5)                      # (rear, front) from the reference point
+    bus = (-6.0, 6.0)
+    # a car whose rear bumper is 5 m ahead of the ego's front: centres 9.5 m apart, beyond the old 8 m radius
+    assert start_gap((0.0, 0.0, 0.0), ego, (9.5, 0.0, 0.0), car) == pytest.approx(5.0)
+    assert start_gap((0.0, 0.0, 0.0), ego, (9.5, 0.0, 0.0), car) <= NEAR_START_GAP
+    assert start_gap((0.0, 0.0, 0.0), ego, (12.0, 0.0, 0.0), car) > NEAR_START_GAP
+    # behind: a bus whose front is 2 m behind the ego's rear bumper, heading the other way round the circle
+    assert start_gap((0.0, 0.0, math.pi), ego, (9.0, 0.0, math.pi), bus) == pytest.approx(2.0)
+
+
 def test_written_position_wins_and_weather_is_read(gold_seeds: dict[str, tuple[Path, dict]]) -> None:
     path, _ = gold_seeds["dmvca-apple-20211111-r241"]
     xml = path.read_bytes()

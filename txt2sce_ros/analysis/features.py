@@ -11,7 +11,7 @@ Positions: seeds write `txt2sce:position` (the report's reading); for files with
 and for closeness at the start (mutations move parties), when the scenario's map is at hand each party's position
 is *derived* from the Init teleports in
 the ego's frame (`derived_position`), by the sketch spec's definitions of R1-R7; plus `near_start:yes` when a party
-starts within `NEAR_START` metres ahead of or behind the ego in its lane corridor (what a "too close to start"
+starts within `NEAR_START_GAP` metres (bumper to bumper) ahead of or behind the ego in its lane (what a "too close to start"
 fault depends on). A written `txt2sce:position` wins over the derived one.
 """
 
@@ -25,6 +25,7 @@ from typing import Any
 
 from lxml import etree
 
+from ..tree.trajectory import footprint_extent
 from ..xosc.schema import parse_document
 
 
@@ -80,8 +81,12 @@ def signal_label(root: etree._Element, facing: tuple[str, ...] = ()) -> str:
     return value or "none"
 
 
-#: m: a party this close ahead of or behind the ego at the start counts as `near_start:yes`.
-NEAR_START = 8.0
+#: m of bumper-to-bumper gap: a party in the ego's lane this close ahead of or behind it at the start counts as
+#: `near_start:yes`. Closer than the tree keeps ordinary starts apart in a lane (config/mutation.yaml
+#: `trajectory.init_location.min_gap`, 6 m): a party this close was put there on purpose (WPM-near, NCM-new
+#: close_behind) or stood so in the report (a queue). Measured between footprints, not centres, so a bus and a
+#: bicycle at the same gap are equally close.
+NEAR_START_GAP = 6.0
 _SAME_DIR = math.radians(45.0)     # heading difference below this: same direction of travel
 _LANE_HALF = 1.8                   # m: lateral offset within which a party is in the ego's lane
 _ROAD_HALF = 12.0                  # m: lateral offset within which a party is on the ego's road (R5-R7)
@@ -125,16 +130,29 @@ def derived_position(ego: tuple[float, float, float], other: tuple[float, float,
     return ("R1" if dh < 0 else "R3"), None
 
 
+def start_gap(ego: tuple[float, float, float], ego_extent: tuple[float, float], other: tuple[float, float, float],
+              other_extent: tuple[float, float]) -> float:
+    """Bumper-to-bumper gap (m) along the ego's heading between the ego and a party travelling its way; extents are
+    (rear, front) of each footprint from its reference point (`tree.trajectory.footprint_extent`). Negative when
+    the footprints overlap along the lane."""
+    lon = (other[0] - ego[0]) * math.cos(ego[2]) + (other[1] - ego[1]) * math.sin(ego[2])
+    ahead = lon + other_extent[0] - ego_extent[1]
+    behind = ego_extent[0] - (lon + other_extent[1])
+    return max(ahead, behind)
+
+
 def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ()) -> frozenset[str]:
     """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports,
     `facing` names the signals facing the ego (see `signal_label`)."""
     root = parse_document(xml)
     out: set[str] = set()
     npcs: dict[str, dict[str, str]] = {}
+    extents: dict[str, tuple[float, float]] = {}
     obstacles = 0
     for obj in root.iterfind("Entities/ScenarioObject"):
         name = obj.get("name", "")
         props = _props(obj)
+        extents[name] = footprint_extent(obj)
         if name.startswith("npc"):
             npcs[name] = props
         elif name.startswith("obs"):
@@ -154,8 +172,8 @@ def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ())
             # Derived from the (possibly mutated) start poses: closeness at the start is a fact of this file,
             # while a written position (the report's reading) wins as the party's R1-R7 label.
             code, lane = derived_position(ego_pose, poses[name])
-            dist = math.hypot(poses[name][0] - ego_pose[0], poses[name][1] - ego_pose[1])
-            if code in ("R5", "R6") and lane == "same" and dist <= NEAR_START:
+            if code in ("R5", "R6") and lane == "same" and \
+                    start_gap(ego_pose, extents["ego"], poses[name], extents[name]) <= NEAR_START_GAP:
                 out.add("near_start:yes")
             if not props.get("txt2sce:position"):
                 props["txt2sce:position"] = code

@@ -9,6 +9,7 @@ analysis elements built from them (`R5+ag`, `position:R7/left`, `events:ah`, `we
 from __future__ import annotations
 
 from ..sketch import ACTION_MEANINGS, POSITION_MEANINGS
+from .features import NEAR_START_GAP
 
 #: Element prefixes (features.scenario_elements) and what each names.
 PREFIX_MEANINGS: dict[str, str] = {
@@ -19,7 +20,7 @@ PREFIX_MEANINGS: dict[str, str] = {
     "obstacle": "a static obstacle (yes/no, or its category)",
     "weather": "the weather of the scenario ('default': none set)",
     "signal": "the state the AV's signal shows while the parties interact",
-    "near_start": "a party starts within 8 m ahead of or behind the AV in its lane",
+    "near_start": f"a party starts within {NEAR_START_GAP:g} m (bumper to bumper) ahead of or behind the AV in its lane",
 }
 
 

@@ -110,7 +110,8 @@ def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, A
                        ) -> frozenset[str]:
     """Trigger conditions (in the analysis's element names) the tree can bring into this seed's scenarios, read
     from its block versions without building it: NPC categories, a party close to the AV at the start (WPM-near,
-    NCM-new close_behind), a cyclist (NCM-new cyclist_ahead), a lead that brakes (`events:h`), a dilemma-zone
+    NCM-new close_behind), a cyclist (NCM-new cyclist_ahead), a lead that brakes (`events:h`), a pedestrian who
+    starts to cross the AV's path (`events:m`, NCM-new crossing), a dilemma-zone
     yellow (TLS, on the seed's signal or on a new one for the map's lights), and `start:standing` (TSM-start, or a seed that starts standing). What seed picking
     covers, so a seed is chosen for what its tree can test, not only for what its report held."""
     cfg = cfg or tree_config()
@@ -125,7 +126,8 @@ def reachable_elements(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, A
                     out.add("near_start:yes")
             elif b.kind.value == "new_party":
                 out |= {"NCM-new:cyclist_ahead": {"category:bicycle"}, "NCM-new:lead_brakes": {"events:h"},
-                        "NCM-new:close_behind": {"near_start:yes"}}.get(v.operator, set())
+                        "NCM-new:close_behind": {"near_start:yes"},
+                        "NCM-new:crossing": {"category:pedestrian", "events:m"}}.get(v.operator, set())
             elif b.kind.value in ("signal", "new_signal") and any("TimeToCollisionCondition" in f
                                                                   for f in v.fragments):
                 out.add("signal:yellow")
