@@ -11,7 +11,7 @@ Positions: seeds write `txt2sce:position` (the report's reading); for files with
 and for closeness at the start (mutations move parties), when the scenario's map is at hand each party's position
 is *derived* from the Init teleports in
 the ego's frame (`derived_position`), by the sketch spec's definitions of R1-R7; plus `near_start:yes` when a party
-starts within `NEAR_START_GAP` metres (bumper to bumper) ahead of or behind the ego in its lane (what a "too close to start"
+starts within `NEAR_START_GAP` metres (bumper to bumper) ahead of or behind a standing ego in its lane (what a "too close to start"
 fault depends on). A written `txt2sce:position` wins over the derived one.
 """
 
@@ -130,6 +130,16 @@ def derived_position(ego: tuple[float, float, float], other: tuple[float, float,
     return ("R1" if dh < 0 else "R3"), None
 
 
+def _ego_standing(root: etree._Element) -> bool:
+    """Whether the ego's Init speed is 0 (no Init SpeedAction: it stands, as a player starts it)."""
+    target = root.find("Storyboard/Init/Actions/Private[@entityRef='ego']/PrivateAction/LongitudinalAction/"
+                       "SpeedAction/SpeedActionTarget/AbsoluteTargetSpeed")
+    try:
+        return target is None or float(target.get("value", "0")) <= 0.0
+    except ValueError:
+        return False
+
+
 def start_gap(ego: tuple[float, float, float], ego_extent: tuple[float, float], other: tuple[float, float, float],
               other_extent: tuple[float, float]) -> float:
     """Bumper-to-bumper gap (m) along the ego's heading between the ego and a party travelling its way; extents are
@@ -165,6 +175,9 @@ def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ())
             events.setdefault(m["entity"], []).append((int(m["k"]), ACTION_NAMES[m["action"]]))
     poses = _init_poses(root, net) if npcs else {}
     ego_pose = poses.get("ego")
+    # a party close to the AV matters at *its start*: an AV that drives off at speed has no start to refuse, and a
+    # car standing a few metres behind it is left behind (`near_start` needs the ego standing at t = 0)
+    standing = _ego_standing(root)
     if ego_pose is not None:
         for name, props in npcs.items():
             if name not in poses:
@@ -172,7 +185,7 @@ def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ())
             # Derived from the (possibly mutated) start poses: closeness at the start is a fact of this file,
             # while a written position (the report's reading) wins as the party's R1-R7 label.
             code, lane = derived_position(ego_pose, poses[name])
-            if code in ("R5", "R6") and lane == "same" and \
+            if standing and code in ("R5", "R6") and lane == "same" and \
                     start_gap(ego_pose, extents["ego"], poses[name], extents[name]) <= NEAR_START_GAP:
                 out.add("near_start:yes")
             if not props.get("txt2sce:position"):

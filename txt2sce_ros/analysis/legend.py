@@ -20,7 +20,7 @@ PREFIX_MEANINGS: dict[str, str] = {
     "obstacle": "a static obstacle (yes/no, or its category)",
     "weather": "the weather of the scenario ('default': none set)",
     "signal": "the state the AV's signal shows while the parties interact",
-    "near_start": f"a party starts within {NEAR_START_GAP:g} m (bumper to bumper) ahead of or behind the AV in its lane",
+    "near_start": f"a party starts within {NEAR_START_GAP:g} m (bumper to bumper) ahead of or behind the standing AV in its lane",
 }
 
 

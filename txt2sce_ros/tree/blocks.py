@@ -84,3 +84,7 @@ class Variant:
     changes: tuple[Change, ...]
     features: tuple
     rng_seed: int
+    # (block kind, feature value) a node's earlier layers must hold for this version to make sense there: a car
+    # standing close behind the AV tests a standing start only (an AV driving off leaves it behind). Read from the
+    # earlier layers' features; a kind not among them (not yet a layer) does not restrict.
+    needs: tuple[tuple[str, str], ...] = ()

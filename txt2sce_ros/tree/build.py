@@ -212,6 +212,7 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
             written += 1
             records.append((node_id, parent.id, path))
             frontier.append(_Node(node_id, parent.id, path))
+        frontier = interleave(frontier, key=lambda n: n.path)
         if not frontier or written >= cap:
             break
 
@@ -249,6 +250,28 @@ def build_tree(seed_path: str | Path, out_dir: str | Path, *, seed: int = 0, cfg
                       seconds=time.perf_counter() - t0, errors=tuple(errors[:5]))
 
 
+def interleave(nodes: list[Any], *, key: Any) -> list[Any]:
+    """The next layer's parents in round-robin order over the versions this layer inserted: the first node of each
+    version (in tree order), then the second… A budget keeps a layer's first candidates, so the new party's roles,
+    say, go under a dry and a rainy road, a moving and a standing AV, not all under the first node's siblings; and
+    a layer kept to one node extends the first of them, the node in the tree's first branch (the seed's own start
+    state). `key(node)` is the node's path; its last entry is the version."""
+    seen: dict[int, int] = {}
+    rank = []
+    for n in nodes:
+        path = key(n)
+        rank.append((seen.get(path[-1], 0), path))
+        seen[path[-1]] = seen.get(path[-1], 0) + 1
+    return [n for _, n in sorted(zip(rank, nodes), key=lambda t: t[0])]
+
+
+def _holds(path_features: tuple, kind: str, value: str) -> bool:
+    """Whether the earlier layers (their versions' feature tuples, kind first) hold `value` for the block `kind`;
+    True when no earlier layer is of that kind (the seed's own content then stands, unrestricted)."""
+    of_kind = [f for f in path_features if f and f[0] == kind]
+    return not of_kind or any(value in f[1:] for f in of_kind)
+
+
 def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], variants: list[list[Variant]],
                   used: list[int], depth: int, *, enumerated: bool, share: float, cap: int, written: int,
                   rng: np.random.Generator) -> tuple[list[int], bool]:
@@ -258,7 +281,10 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
     vs = variants[used[depth - 1]]
     vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(path)) + (vs[j].features,)
                for path, j in zip(parent_paths, choices)]
-    keep = prune(vectors, share, rng)
+    # a version whose premise an earlier layer of the parent contradicts is not a candidate there
+    fits = [i for i, (path, j) in enumerate(zip(parent_paths, choices))
+            if all(_holds(vectors[i][:-1], kind, value) for kind, value in vs[j].needs)]
+    keep = [fits[k] for k in prune([vectors[i] for i in fits], share, rng)]
     # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
     # (a plain cut would drop the deepest layers: events and obstacles). The kept versions are spread over the
     # parents along diagonals (`prune.diagonal`), so each version meets different earlier ones (a cyclist in the
@@ -318,7 +344,7 @@ def estimate_tree(seed_path: str | Path, *, seed: int = 0, cfg: dict[str, Any] |
         keep, _ = _select_layer([p for p, _ in cands], [j for _, j in cands], variants, used, depth,
                                 enumerated=dis.blocks[bi].kind.value in cfg["tree"]["enumerate"], share=share,
                                 cap=cap, written=written, rng=rng)
-        frontier = [cands[i][0] + (cands[i][1],) for i in keep]
+        frontier = interleave([cands[i][0] + (cands[i][1],) for i in keep], key=lambda p: p)
         written += len(frontier)
         if not frontier or written >= cap:
             break

@@ -3,13 +3,13 @@
 | block | operators | versions (paper defaults) |
 |---|---|---|
 | weather | WM | enumerate every weather type, parameters drawn per type |
-| ego | WPM (initial location, context-aware); TSM-start (standing start) | `mutations_per_block`, + 1 |
+| ego | WPM (initial location, context-aware); TSM-start (standing start) | `mutations_per_block`, + 1 (enumerated: a budget keeps a standing and a moving start) |
 | npc | NCM (+ DM, VPM follow the category) + WPM initial location; WPM-near (close to the AV) | enumerate every category, + 1 |
 | signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate yellow / red / green |
 | new_signal | TLS-new: a plan for the map's lights facing the AV, in a seed without one (environment.new_signal) | enumerate yellow / red / green |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
-| new_party | NCM-new: a cyclist ahead, a lead that brakes, a car close behind, on the AV's path (parties.py) | enumerate every role the road allows |
+| new_party | NCM-new: a cyclist ahead, a pedestrian who starts to cross, a car close behind, a lead that brakes, on the AV's path (parties.py) | enumerate every role the road allows |
 | new_obstacle | OIM (inserted on the AV's path, random dimensions) | `mutations_per_block` |
 
 Each block's versions draw from their own Generator seeded by (RNG seed, seed-file key, block index), so the
@@ -30,7 +30,7 @@ from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, standing_start, tsm
 from .environment import dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
-from .parties import ROLES, new_party
+from .parties import ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
 from .trajectory import keep_clear_of_queue, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
@@ -63,7 +63,7 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
     seen: set[tuple[str, ...]] = set()
 
     def emit(elements: list[etree._Element | None], operator: str, rec: Recorder,
-             per_slot: tuple[int, ...] | None = None) -> None:
+             per_slot: tuple[int, ...] | None = None, needs: tuple[tuple[str, str], ...] = ()) -> None:
         # `per_slot`: how many of `elements` go into each of the block's slots, in order (default one each: a slot
         # that takes several siblings, the Init actions of a new signal plan, holds their texts joined)
         counts = per_slot or (1,) * len(elements)
@@ -75,7 +75,7 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
         seen.add(frags)
         feats = block_features(block.kind, elements, originals, ctx, cfg)
         out.append(Variant(block=block.index, index=len(out), operator=operator, fragments=frags,
-                           changes=tuple(rec.changes), features=feats, rng_seed=rng_seed))
+                           changes=tuple(rec.changes), features=feats, rng_seed=rng_seed, needs=needs))
 
     try:
         if block.kind is BlockKind.WEATHER:
@@ -84,12 +84,6 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 wm(els[0], wtype, rng, cfg["environment"], rec)
                 emit(els, "WM", rec)
         elif block.kind is BlockKind.EGO:
-            # first, the AV standing at its start (a moving seed's start speed set to 0): the state in which start
-            # refusals and wheel spin on a slippery road can show at all (first, so that a small node budget,
-            # which spreads versions over parents along diagonals, still pairs it with other conditions)
-            els, rec = _parse(block.fragments), Recorder()
-            if standing_start(els[0], rec):
-                emit(els, "TSM-start", rec)
             init = cfg["trajectory"]["init_location"]
             # a party the new-party slot stands `near_gap` m behind the seed's AV (close_behind) must still be clear
             # of a start moved back: at most near_gap - 0.5 m back then
@@ -98,6 +92,13 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 els, rec = _parse(block.fragments), Recorder()
                 shift_init_location(els[0], "ego", rng, init, ctx, rec, max_back=back)
                 emit(els, "WPM-init", rec)
+            # then the AV standing at its start (a moving seed's start speed set to 0): the state in which start
+            # refusals and wheel spin on a slippery road can show at all. The block is enumerated, so a budget keeps
+            # both start states; the seed's own (moving) one first, because the deeper layers' chain grows under
+            # the first parent, and a cyclist ahead, a crossing or a yellow tests an AV that arrives at speed
+            els, rec = _parse(block.fragments), Recorder()
+            if standing_start(els[0], rec):
+                emit(els, "TSM-start", rec)
         elif block.kind is BlockKind.NPC:
             for cat in _choices("npc", list(cfg["physical"]["categories"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
@@ -180,7 +181,7 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 rec = Recorder()
                 made = new_party(role, block.key, ctx, rng, cfg, rec)
                 if made is not None:
-                    emit(list(made), f"NCM-new:{role}", rec)
+                    emit(list(made), f"NCM-new:{role}", rec, needs=ROLE_NEEDS.get(role, ()))
         elif block.kind is BlockKind.NEW_OBSTACLE:
             spec = cfg["environment"]["obstacle"]
             for _ in range(m):

@@ -37,7 +37,10 @@ from .trajectory import feasible_s, footprint_extent
 from .values import Recorder, uniform
 
 #: In the order a small node budget keeps them (`prune.diagonal` covers an enumerated block's versions in order).
-ROLES = ("cyclist_ahead", "crossing", "close_behind", "lead_brakes")
+ROLES = ("cyclist_ahead", "close_behind", "crossing", "lead_brakes")
+#: The ego start state a role tests (`Variant.needs`): a car standing close behind tests a start from standstill
+#: (an AV that drives off leaves it behind), a lead driving at the AV's speed an AV that follows it.
+ROLE_NEEDS = {"close_behind": (("ego", "standing"),), "lead_brakes": (("ego", "moving"),)}
 
 
 def free_name(prefix: str, taken: set[str | None]) -> str:

@@ -87,19 +87,27 @@ def diagonal(keep: Sequence[int], variants: int, limit: int, *, cover: bool = Fa
     i % variants), chosen along diagonals: in round r every parent p gets version (p + r) mod variants, so a
     small budget spreads the layer's versions over different parents (a standing start under a snowy road and
     another under a dry one) instead of giving every version to the first parent and none to the others.
-    `cover` (enumerated blocks): first one candidate per version value, version j under parent j mod parents
-    where it survived pruning. Sorted."""
+    `cover` (enumerated blocks): first one candidate per version value, each under the first parent without a
+    version yet where it survived pruning (so version j under parent j while there are parents), then under
+    parent j mod parents. Sorted."""
     if len(keep) <= limit:
         return list(keep)
     parents = max(1, (max(keep) // variants) + 1)
     kept = set(keep)
     chosen: list[int] = []
     if cover:
+        taken_parents: set[int] = set()
         for j in range(variants):
             here = [i for i in keep if i % variants == j]
+            if not here or len(chosen) >= limit:
+                continue
+            # the first parent still without a version (where the version survived pruning and fits it), so
+            # the versions spread over the parents; once every parent has one, parent j mod parents
+            free = [i for i in here if i // variants not in taken_parents]
             want = (j % parents) * variants + j
-            if here and len(chosen) < limit:
-                chosen.append(want if want in kept else here[0])
+            pick = free[0] if free else (want if want in kept else here[0])
+            chosen.append(pick)
+            taken_parents.add(pick // variants)
     taken = set(chosen)
     order = sorted((i for i in keep if i not in taken),
                    key=lambda i: (((i % variants) - (i // variants)) % variants, i // variants))
