@@ -49,8 +49,8 @@ def test_unpruned_node_count_equals_sum_formula(tmp_path):
 
 def test_mutation_count_changes_the_tree(tmp_path):
     res = build_tree(CUT_IN, tmp_path / "t", seed=3, cfg=tree_config(prune_share=1.0, mutations=1))
-    # ego: standing start + WPM-init; weather; the new party: 3 roles; npc1: 7 categories + WPM-near
-    assert res.block_counts == (2, 5, 3, 8, 1, 1, 1)
+    # ego: WPM-init + standing start; weather; the new party: 4 roles; npc1: 7 categories + WPM-near
+    assert res.block_counts == (2, 5, 4, 8, 1, 1, 1)
     assert res.nodes == expected_nodes(res.block_counts)
 
 

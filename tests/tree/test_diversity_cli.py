@@ -54,7 +54,7 @@ def test_cli_build_show_and_diversity(tmp_path, capsys):
                  "--jobs", "1"]) == 0
     text = capsys.readouterr().out
     # ego: a standing start + WPM-init; weather; the new party: 3 roles; npc1: 7 categories + WPM-near
-    assert "highway_cut_in_seed" in text and "2x5x3x8x1x1x1" in text
+    assert "highway_cut_in_seed" in text and "2x5x4x8x1x1x1" in text
     tree_dir = out / "highway_cut_in_seed"
     assert main(["tree", "show", str(tree_dir), "--depth", "2"]) == 0
     text = capsys.readouterr().out

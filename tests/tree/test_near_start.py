@@ -72,12 +72,11 @@ def test_ignore_cyclists_collides_where_the_nominal_planner_yields(cyclist_tree:
             n = by_id.get(n["parent"])
         return ops
 
-    # the cyclist close beside the AV, riding on faster (TSM) as the AV turns right across the bike lane, with the
-    # AV moving and no party of the new-party slot ahead of it in the way: such a node exists in the tree, and in
-    # one of the first few of them (weather, signal and the TSM draw vary) the nominal planner yields where
-    # ignore_cyclists collides
-    candidates = [n for n in nodes if "TSM" in n["operator"] and "WPM-near" in path_ops(n)
-                  and "NCM-new:close_behind" in path_ops(n) and "TSM-start" not in path_ops(n)]
+    # the cyclist close beside the AV as the AV turns right across the bike lane, with no party of the new-party
+    # slot ahead of it in the way: such a node exists in the tree, and in one of the first few of them (start
+    # state, weather, signal and the TSM draw vary) the nominal planner yields where ignore_cyclists collides
+    ahead = ("NCM-new:cyclist_ahead", "NCM-new:lead_brakes", "NCM-new:crossing")
+    candidates = [n for n in nodes if "WPM-near" in path_ops(n) and not set(ahead) & set(path_ops(n))]
     assert candidates
     outcomes = []
     for node in candidates[:6]:

@@ -58,7 +58,7 @@ def test_wm_enumerates_weather_types_with_ranged_parameters(cfg):
         assert prec.get("precipitationType") == spec[kind]["precipitationType"]
         assert 0 <= float(env.find("Weather/Sun").get("azimuth")) <= 2 * np.pi
         assert _valid_with(d, block, v) == []
-    rainy = parse_fragment(vs[2].fragments[0])
+    rainy = parse_fragment(next(v for v in vs if v.features[1] == "rainy").fragments[0])
     assert 0.5 <= float(rainy.find("Weather/Precipitation").get("intensity")) <= 1.0
     assert 0.2 <= float(rainy.find("RoadCondition").get("frictionScaleFactor")) <= 0.5
 

@@ -69,7 +69,13 @@ def test_new_party_roles_bring_their_trigger_conditions(party_nodes):
     cyc, lead, close = (_elements(party_nodes[r]) for r in ("cyclist_ahead", "lead_brakes", "close_behind"))
     assert {"category:bicycle", "position:R5/same"} <= cyc and "near_start:yes" not in cyc
     assert {"category:car", "position:R5/same", "events:h", "R5+h"} <= lead
-    assert {"near_start:yes", "position:R6/same"} <= close
+    assert "position:R6/same" in close and "near_start:yes" not in close      # the seed's AV drives off...
+    standing = party_nodes["close_behind"].read_bytes().replace(
+        b'<Private entityRef="ego">', b'<Private entityRef="ego">', 1)
+    root = parse_bytes(standing, "close_behind")
+    root.find("Storyboard/Init/Actions/Private[@entityRef='ego']//AbsoluteTargetSpeed").set("value", "0")
+    ctx = build_context(root, source="close_behind", seed_path=party_nodes["close_behind"])
+    assert "near_start:yes" in scenario_elements(etree.tostring(root), load_network(str(ctx.map_path)))  # ...or stands
     seed = _elements(CUT_IN)
     assert not {"category:bicycle", "events:h", "near_start:yes"} & seed        # none of them was in the seed
 

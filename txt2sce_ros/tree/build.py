@@ -281,10 +281,7 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
     vs = variants[used[depth - 1]]
     vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(path)) + (vs[j].features,)
                for path, j in zip(parent_paths, choices)]
-    # a version whose premise an earlier layer of the parent contradicts is not a candidate there
-    fits = [i for i, (path, j) in enumerate(zip(parent_paths, choices))
-            if all(_holds(vectors[i][:-1], kind, value) for kind, value in vs[j].needs)]
-    keep = [fits[k] for k in prune([vectors[i] for i in fits], share, rng)]
+    keep = prune(vectors, share, rng)
     # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
     # (a plain cut would drop the deepest layers: events and obstacles). The kept versions are spread over the
     # parents along diagonals (`prune.diagonal`), so each version meets different earlier ones (a cyclist in the
@@ -297,7 +294,10 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
         allowed = max(allowed, min(len(vs), cap - written - (layers_left - 1)))
     if len(keep) <= allowed:
         return keep, False
-    return diagonal(keep, len(vs), allowed, cover=enumerated), True
+    # The budget chooses: not where a version's premise an earlier layer of the parent contradicts (a car standing
+    # close behind an AV that drives off). Without a budget every combination is written (the paper's Sum).
+    fits = [i for i in keep if all(_holds(vectors[i][:-1], kind, value) for kind, value in vs[choices[i]].needs)]
+    return diagonal(fits or keep, len(vs), allowed, cover=enumerated), True
 
 
 @dataclass(frozen=True)
