@@ -1,4 +1,4 @@
-"""A challenge set for the offline extractor: 233 narratives written by the team in the styles real reports
+"""A challenge set for the offline extractor: 235 narratives written by the team in the styles real reports
 use (Cruise, Waymo, Zoox, Apple, Pony.ai, WeRide, Nuro, first-person, NHTSA), each a common conflict pattern, with
 the sketch slots a person reads from it labelled under sketch.md (`challenge_narratives.jsonl`).
 
@@ -34,7 +34,9 @@ around" (an unnumbered group's move), a stop then a lane change, moving off on g
 ahead, scored before any fix: 3/3, 1/3, 0/3 (after: 2/3, 2/3, 3/3; 419's position lost: "a sedan that was also going
 around" with no object is not read as passing); 421-422, numbered parties ("Pedestrian 1 and Pedestrian 2",
 "Vehicle 3, a pickup truck,"), scored before any fix: 3/4, 2/4, 2/2, and unchanged after (the numbering now keeps
-the parties apart; who was waiting and a chain collision's pushed car still miss). Scored per party (position with lane, events) and
+the parties apart; who was waiting and a chain collision's pushed car still miss); 423-424, moving into a turn lane,
+a start from where the AV waited at a light and a later stop, scored before any fix: 1/1, 1/1, 0/2; after 1/1, 1/1,
+1/2 (424 still misses: "the shuttle" is not read as the AV, and "the bus stop" is read as it). Scored per party (position with lane, events) and
 per report (the AV's start and actions), a party matched by category.
 
 A second file, `challenge_positions.jsonl`, holds the batches written while the position rules were worked on beside

@@ -361,3 +361,16 @@ def test_numbered_parties_are_told_apart() -> None:
     sk = extract(text, "t")
     assert [n.category for n in sk.npcs] == ["bicycle"] * 3
     assert sk.collision.with_ == "npc3"
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # Into a turn lane is a move to its side, here told in progress: the string opens with it.
+    ("The AV was entering the left turn lane of westbound Camelback Road when its front struck a piece of "
+     "debris lying in the lane.", ("moving", "f")),
+    # Waited at a light, moved off, then stopped again before the party struck it: it starts stopped.
+    ("The AV was stopped at a red light on eastbound Main Street. When the light turned green, the AV proceeded "
+     "through the intersection, and as it was slowing to a stop beyond it, a pickup truck following it struck "
+     "its rear bumper.", ("stopped", "ih")),
+])
+def test_a_turn_lane_entered_and_a_start_from_where_it_waited(text: str, want: tuple[str, str]) -> None:
+    assert _ego(text) == want

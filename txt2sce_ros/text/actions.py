@@ -60,7 +60,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
-          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|\bswerv(?:ed|ing)\s+"
+          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|"
+          # Into a left-turn lane is a move to the left ("was entering the leftmost dedicated left turn lane").
+          r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
+          r"left[- ]turn\s+(?:lane|pocket|bay)|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
@@ -69,7 +72,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
-          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
+          r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
+          r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
+          r"right[- ]turn\s+(?:lane|pocket|bay)|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
           r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"

@@ -148,6 +148,13 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
         return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
                          side=None)
+    waited = [k for k in stops if _waited(d, pre[k])]
+    if waited and stops[-1] > waited[-1] and any(a.code in ("a", "i", "b", "A") for a in pre[waited[-1] + 1:stops[-1]]):
+        # "stopped at red light ... As the shuttle was crossing the intersection and slowing to a stop, the bus
+        # made contact": it started where it waited, moved off, and its later stop is an event of the story.
+        rest = [a for a in pre[waited[-1] + 1:] if a.code not in ("a", "A", "i", "S")]
+        return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + rest + post, stopped=True, ego=True,
+                        side=None)
     if stops and pre[-1].code in "defgjF" and stops[-1] < len(pre) - 1:
         # Stopped, then moved off into a turn or lane change before the party comes in ("slowed and stopped behind
         # the arrow board, then began a lane change to the left"): a stop told as an event after a run keeps the
