@@ -3,7 +3,9 @@ planner changed no command. (`scenario_player.fingerprint` drives a toy policy, 
 
 Per run: SHA-256 of every trajectory row of every entity (raw float64 bytes), and SHA-256 of the verdict record
 (verdict, categories, end reason, steps, details). Record the reference with the old code and check the new one
-right after: the verdicts also depend on the oracle, which other people change. Also times the planner's `step` calls (CPU time) and the whole runs.
+right after: the verdicts also depend on the oracle, which other people change. Also adds up the CPU time of
+the whole runs and of their parts: the planner's, the player's and the oracle's calls per step, the oracle's
+end of run, and the rest (set-up, the loop itself).
 
     python -m standin_planner.regress record REF.json FILE_OR_DIR...   # writes the digests
     python -m standin_planner.regress check REF.json FILE_OR_DIR...    # recomputes, lists runs that differ
