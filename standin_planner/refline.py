@@ -126,6 +126,7 @@ class RefLine:
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
         self._projections: dict[tuple[float, float, int, int] | None, PathPoint] = {}
+        self._window: tuple[tuple[float, float] | None, tuple[int, int]] = (None, (0, 0))   # last window asked
         # Per cell of the plane, the segments that can hold the nearest point of a point inside (`_candidates`).
         # Plain-Python copies of the per-segment values for the scalar search over them.
         self._cells: dict[tuple[int, int], tuple[int, ...] | None] = {}
@@ -211,8 +212,13 @@ class RefLine:
         U-turns) projects onto the right pass."""
         lo, hi = 0, len(self._seg)
         if near_s is not None:
-            lo = max(0, self._index(near_s - window))
-            hi = min(len(self._seg), self._index(near_s + window) + 1)
+            # One step asks with the same (near_s, window) several times: for the ego twice, for every object.
+            if self._window[0] == (near_s, window):
+                lo, hi = self._window[1]
+            else:
+                lo = max(0, self._index(near_s - window))
+                hi = min(len(self._seg), self._index(near_s + window) + 1)
+                self._window = ((near_s, window), (lo, hi))
         # (0.0 == -0.0 as a key, but the sign of a zero can reach the answer: such points are not cached.)
         key = (x, y, lo, hi) if x != 0.0 and y != 0.0 else None
         hit = self._projections.get(key)
