@@ -101,3 +101,19 @@ def test_negated_contact_is_no_collision() -> None:
     assert sk.collision.type == "none" and sk.collision.with_ is None
     assert [(n.category, n.position, n.lane) for n in sk.npcs] == [("truck", "R7", "left")]
     assert sk.road.one_way is False
+
+
+@pytest.mark.parametrize("text, want", [
+    # The turn was finished before the party came: the AV heads west on Haight, a southbound rider on the cross
+    # street comes from its right.
+    ("A Cruise AV was involved in a collision after completing a right turn from southbound Franklin Street onto "
+     "westbound Haight Street. As the Cruise AV proceeded through the intersection with Gough Street, a cyclist "
+     "riding southbound on Gough Street made contact with the right rear door of the Cruise AV.", ("R3", None)),
+    # The same party while the AV is still turning off southbound Franklin: it rides beside the AV, its own direction.
+    ("A Cruise AV was making a right turn from southbound Franklin Street onto westbound Haight Street when a "
+     "cyclist riding southbound on Franklin Street made contact with the right rear door of the Cruise AV.",
+     ("R5", "right")),
+])
+def test_heading_is_the_one_held_when_the_interaction_begins(text: str, want: tuple[str, str | None]) -> None:
+    (party,) = extract(text, "t").npcs
+    assert (party.position, party.lane) == want

@@ -26,7 +26,8 @@ _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[
                         # "turned left in front of EGO to enter Elm Street": a turn into a named street is a junction
                         r"\bturn(?:ed|ing|s)?\s+(?:left|right)\b[^.,;]{0,50}?\b(?:to\s+enter|into)\s+"
                         r"(?:[\w.'-]+\s+){1,3}(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way)\b", re.I)
-_PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
+# A turn finished before the interaction began: the AV is then on the street (and heading) it turned onto.
+PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
 _ROUNDABOUT = compile_gated(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
 _PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"
@@ -107,7 +108,7 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     intersections the AV was only near do not count."""
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
-        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", _PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
+        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
         if fre.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):

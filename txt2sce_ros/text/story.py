@@ -17,6 +17,7 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CONTACT, NEGATION
 from .mentions import Entity, Mention
+from .scene import PRIOR_TURN
 
 # Said of a party travelling the other way: "oncoming", "opposite direction", and at a junction the opposite
 # approach ("from the opposite side of the intersection", "facing EGO").
@@ -346,6 +347,10 @@ def _heading(d: Doc, who: int) -> int | None:
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 window = s[m.end:min([m.end + 120, *nxt])]
                 approach = fre.search(r"\bfrom\s+((?:north|south|east|west)+)bound\b", window, re.I)
+                told = s[m.end:min([m.end + 200, *nxt])]
+                if who == -1 and (done := PRIOR_TURN.search(told)) and \
+                        (to := fre.match(r"\s*(?:the\s+)?((?:north|south|east|west)+bound)\b", told[done.end():], re.I)):
+                    return heading_of(to.group(1))  # "after completing a right turn ... onto westbound Haight"
                 if approach and who == -1:
                     # The AV "turned left from northbound X onto westbound Y": the frame of R1-R7 is taken when
                     # the interaction begins, on its approach (an oncoming party is R2 there).
