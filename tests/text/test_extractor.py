@@ -117,3 +117,11 @@ def test_negated_contact_is_no_collision() -> None:
 def test_heading_is_the_one_held_when_the_interaction_begins(text: str, want: tuple[str, str | None]) -> None:
     (party,) = extract(text, "t").npcs
     assert (party.position, party.lane) == want
+
+
+def test_a_party_from_behind_that_passes_is_on_the_side_it_passed() -> None:
+    # sketch.md: a party passing a stopped AV without a stated lane change is R6 on the side it passed, actions a.
+    text = ("The Zoox vehicle was stopped in traffic on Fremont Street when a motorcyclist that had been riding "
+            "behind the Zoox vehicle passed it on the right and struck its passenger side mirror.")
+    (party,) = extract(text, "t").npcs
+    assert (party.position, party.lane, party.actions) == ("R6", "right", "a")

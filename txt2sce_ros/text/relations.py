@@ -95,7 +95,8 @@ _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+)
 _EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,]{0,40}$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
-                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes)\s+"
+                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes|"
+                         r"(?:changing|change|changed)\s+lanes?|lane[- ]change[sd]?)\s+"
                          # "cut back to the left directly in front of EGO": where it went, a few words on
                          r"(?:(?:back|right|left|directly|suddenly|abruptly|in|over|to|the)\s+){0,5}$", re.I)
 # The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
@@ -368,7 +369,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         pos, rule = "R6", "approaching a standing AV"
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
     pass_side = next((c.value for c in passing if c.value), "")
-    if lanes:
+    if lanes and pass_side and all(c.value == "same" for c in lanes):
+        # "traveling behind EGO, then passed it on the right": it came up in the AV's lane and passed on that side
+        lane, rule = pass_side, rule + "; passing side"
+        used.append(next(c for c in passing if c.value))
+    elif lanes:
         lane, rule = lanes[0].value, rule + "; lane"
         used.append(lanes[0])
     elif pass_side:
