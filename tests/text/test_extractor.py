@@ -125,3 +125,17 @@ def test_a_party_from_behind_that_passes_is_on_the_side_it_passed() -> None:
             "behind the Zoox vehicle passed it on the right and struck its passenger side mirror.")
     (party,) = extract(text, "t").npcs
     assert (party.position, party.lane, party.actions) == ("R6", "right", "a")
+
+
+@pytest.mark.parametrize("text, want", [
+    # The AV stopped behind the van: the van is ahead, whatever "behind it" says.
+    ("The Zoox vehicle was traveling south on 3rd Street when a delivery van ahead suddenly stopped, and the Zoox "
+     "vehicle came to a stop behind it. The van then reversed and its rear bumper struck the front of the Zoox "
+     "vehicle.", ("R5", "same")),
+    # "behind" with no object is behind the AV.
+    ("The Waymo AV was traveling in the right lane. A sedan traveling behind in the left lane struck its left rear "
+     "quarter panel.", ("R6", "left")),
+])
+def test_behind_read_from_whose_clause_it_is(text: str, want: tuple[str, str | None]) -> None:
+    parties = extract(text, "t").npcs
+    assert (parties[-1].position, parties[-1].lane) == want

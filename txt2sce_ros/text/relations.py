@@ -69,7 +69,10 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO
                         r"(?:rode|riding|ride|came|coming|come|pulled|pulling|drove|driving|moved|moving)\s+up\s+"
                         r"(?:on|along|beside|alongside|next)\b|(?:get|getting|got|pull|pulling|pulled)\s+ahead\s+of\s+"
                         r"EGO|(?:at|with)\s+a\s+(?:much\s+)?(?:higher|greater|faster)\s+(?:rate\s+of\s+)?speed|"
-                        r"faster\s+than\s+EGO|speeding\s+past)", re.I)
+                        r"faster\s+than\s+EGO|speeding\s+past|"
+                        # "a sedan traveling behind in the left lane": behind said without an object is the AV's
+                        r"(?:traveling|travelling|driving|riding|coming|approaching)\s+(?:directly\s+|closely\s+)?"
+                        r"behind(?=\s+(?:in|on|at|and|,|\.)|$))", re.I)
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
@@ -82,6 +85,8 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          r"(?:\w+\s+){0,2}between\s+EGO\s+and)|"
                          r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
+                         # "a sedan that was also going around": the same pass as the traffic told before it
+                         r"also\s+(?:going|driving|moving|getting)\s+(?:around|past)(?!\s+(?:a|an|the)\s+(?!EGO))|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
                          r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(?P<side>left|right))?", re.I)
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
@@ -92,7 +97,11 @@ _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
                           r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d.,]))\b", re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
-_EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,]{0,40}$", re.I)
+# The AV is the subject of the clause that ends in "behind it" ("EGO, which had stopped behind it", "EGO came to a
+# stop behind it"): the AV is behind. Not "EGO slowed for a motorcyclist behind it", where "it" is the AV.
+_EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,]{0,40}$|"
+                            r"\bEGO\s+(?:came|stopped|pulled|remained|waited|queued)\b[^.;,]{0,30}?\b(?:stop|stopped|"
+                            r"up|waiting|queued|remained)\s+(?:directly\s+|immediately\s+)?$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes|"
