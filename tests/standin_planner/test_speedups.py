@@ -3,6 +3,7 @@ commands must not change by a single bit): each is compared with `==` against th
 bundled maps' real lanes."""
 
 import math
+from collections.abc import Iterator
 
 import numpy as np
 import pytest
@@ -185,28 +186,34 @@ def test_project_many_with_chunk_pruning_equals_the_plain_formula_bit_for_bit():
     assert pruned > 20           # the pruned path is the one exercised
 
 
+def _points_around_kinked_lines(rng: np.random.Generator) -> Iterator[tuple[RefLine, float, float]]:
+    """(line, x, y): 60 points around each of six roundabout lanes, the long lines and a line with a sharp kink,
+    beyond both ends and up to ~25 m beside them."""
+    kink = RefLine(np.array([[0.0, 0.0], [20.0, 0.0], [20.5, 0.0], [30.0, 9.0], [60.0, 9.0]]))
+    for line in _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [kink]:
+        for _ in range(60):
+            x, y, _ = line.position(rng.uniform(-25.0, line.length + 25.0), rng.normal(0.0, 8.0))
+            yield line, x, y
+
+
 def test_far_from_never_rules_out_a_point_the_projection_would_find_near():
     """`far_from` lets the yield rule skip a mover's projection: it may say True only when no predicted point has
     |offset| < reach with s inside the window, on lanes, a self-approaching loop, and a line with a sharp kink,
     with points around both ends and beside the line."""
     rng = np.random.default_rng(3)
-    kink = RefLine(np.array([[0.0, 0.0], [20.0, 0.0], [20.5, 0.0], [30.0, 9.0], [60.0, 9.0]]))
-    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [kink]
     said_far = near = 0
-    for line in lines:
-        for _ in range(60):
-            x, y, _ = line.position(rng.uniform(-25.0, line.length + 25.0), rng.normal(0.0, 8.0))
-            h = rng.uniform(-math.pi, math.pi)
-            xs, ys = x + np.arange(33) * 0.5 * math.cos(h), y + np.arange(33) * 0.5 * math.sin(h)
-            reach = float(rng.uniform(1.0, 4.0))
-            s0 = float(rng.uniform(-10.0, line.length))
-            s1 = s0 + 81.0
-            s, off = line.project_many(xs, ys)
-            hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s1)).any())
-            far = line.far_from(xs, ys, reach, s0, s1)
-            assert not (far and hit), (s0, reach)
-            said_far += far
-            near += hit
+    for line, x, y in _points_around_kinked_lines(rng):
+        h = rng.uniform(-math.pi, math.pi)
+        xs, ys = x + np.arange(33) * 0.5 * math.cos(h), y + np.arange(33) * 0.5 * math.sin(h)
+        reach = float(rng.uniform(1.0, 4.0))
+        s0 = float(rng.uniform(-10.0, line.length))
+        s1 = s0 + 81.0
+        s, off = line.project_many(xs, ys)
+        hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s1)).any())
+        far = line.far_from(xs, ys, reach, s0, s1)
+        assert not (far and hit), (s0, reach)
+        said_far += far
+        near += hit
     assert said_far > 50 and near > 50           # both answers are exercised
 
 
@@ -241,25 +248,21 @@ def test_far_from_straight_never_rules_out_a_course_the_projection_would_find_ne
     from txt2sce_ros.contract import EntityState
 
     rng = np.random.default_rng(4)
-    kink = RefLine(np.array([[0.0, 0.0], [20.0, 0.0], [20.5, 0.0], [30.0, 9.0], [60.0, 9.0]]))
-    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines() + [kink]
     said_far = near = 0
-    for line in lines:
-        for _ in range(60):
-            x, y, _ = line.position(rng.uniform(-25.0, line.length + 25.0), rng.normal(0.0, 8.0))
-            o = EntityState(name="o", category="car", t=0.0, x=x, y=y, heading=rng.uniform(-math.pi, math.pi),
-                            speed=float(rng.choice([0.5, 2.0, 8.0])), length=4.5, width=1.9, center_x=1.3)
-            traj = predict(o, 8.0, 0.25)
-            reach = float(rng.uniform(1.0, 4.0))
-            s0 = float(rng.uniform(-10.0, line.length))
-            s, off = line.project_many(traj[:, 1], traj[:, 2])
-            hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s0 + 81.0)).any())
-            c, sn = math.cos(o.heading), math.sin(o.heading)
-            ax, ay = o.x + o.center_x * c, o.y + o.center_x * sn
-            run = o.speed * (8.0 + 1e-9)
-            far = line.far_from_straight(ax, ay, ax + run * c, ay + run * sn, reach, s0, s0 + 81.0)
-            assert not (far and hit)
-            assert far == line.far_from(traj[:, 1], traj[:, 2], reach, s0, s0 + 81.0) or not far
-            said_far += far
-            near += hit
+    for line, x, y in _points_around_kinked_lines(rng):
+        o = EntityState(name="o", category="car", t=0.0, x=x, y=y, heading=rng.uniform(-math.pi, math.pi),
+                        speed=float(rng.choice([0.5, 2.0, 8.0])), length=4.5, width=1.9, center_x=1.3)
+        traj = predict(o, 8.0, 0.25)
+        reach = float(rng.uniform(1.0, 4.0))
+        s0 = float(rng.uniform(-10.0, line.length))
+        s, off = line.project_many(traj[:, 1], traj[:, 2])
+        hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s0 + 81.0)).any())
+        c, sn = math.cos(o.heading), math.sin(o.heading)
+        ax, ay = o.x + o.center_x * c, o.y + o.center_x * sn
+        run = o.speed * (8.0 + 1e-9)
+        far = line.far_from_straight(ax, ay, ax + run * c, ay + run * sn, reach, s0, s0 + 81.0)
+        assert not (far and hit)
+        assert far == line.far_from(traj[:, 1], traj[:, 2], reach, s0, s0 + 81.0) or not far
+        said_far += far
+        near += hit
     assert said_far > 50 and near > 50

@@ -92,14 +92,21 @@ def _private(name: str, pos: LanePos, speed: float) -> etree._Element:
     return priv
 
 
-def _stop_story(name: str, at: float, speed: float, decel: float) -> etree._Element:
-    """`<name>_story`: one event `<name>_e1_stop` braking to 0 at `decel` from simulation time `at`."""
+def _one_event_story(name: str, what: str) -> tuple[etree._Element, etree._Element, etree._Element]:
+    """(story, act, event) of `<name>_story`: one act, one maneuver group acting on `name`, one event `<name>_e1_<what>`
+    (the caller adds the event's actions and both start triggers)."""
     story = etree.Element("Story", name=f"{name}_story")
     act = _sub(story, "Act", name=f"{name}_act")
     mg = _sub(act, "ManeuverGroup", name=f"{name}_mg", maximumExecutionCount="1")
     _sub(_sub(mg, "Actors", selectTriggeringEntities="false"), "EntityRef", entityRef=name)
     man = _sub(mg, "Maneuver", name=f"{name}_maneuver")
-    ev = _sub(man, "Event", name=f"{name}_e1_stop", priority="parallel", maximumExecutionCount="1")
+    ev = _sub(man, "Event", name=f"{name}_e1_{what}", priority="parallel", maximumExecutionCount="1")
+    return story, act, ev
+
+
+def _stop_story(name: str, at: float, speed: float, decel: float) -> etree._Element:
+    """`<name>_story`: one event `<name>_e1_stop` braking to 0 at `decel` from simulation time `at`."""
+    story, act, ev = _one_event_story(name, "stop")
     action = _sub(ev, "Action", name=f"{name}_e1_stop_action")
     _sub(_sub(action, "PrivateAction"), "LongitudinalAction").append(
         _speed_action(0.0, ("linear", "time", max(speed / decel, 0.1))))
@@ -119,12 +126,7 @@ def _cross_story(name: str, path: list[tuple[float, float]], heading: float, spe
     """`<name>_story`: one event `<name>_e1_cross` (walk at `speed` along `path`) that starts once the ego's time
     to collision with the crossing `point` (front bumper, straight-line distance, as the dilemma-zone yellow
     measures its stop line) drops below `ttc` s."""
-    story = etree.Element("Story", name=f"{name}_story")
-    act = _sub(story, "Act", name=f"{name}_act")
-    mg = _sub(act, "ManeuverGroup", name=f"{name}_mg", maximumExecutionCount="1")
-    _sub(_sub(mg, "Actors", selectTriggeringEntities="false"), "EntityRef", entityRef=name)
-    man = _sub(mg, "Maneuver", name=f"{name}_maneuver")
-    ev = _sub(man, "Event", name=f"{name}_e1_cross", priority="parallel", maximumExecutionCount="1")
+    story, act, ev = _one_event_story(name, "cross")
     walk = _sub(ev, "Action", name=f"{name}_e1_cross_speed")
     _sub(_sub(walk, "PrivateAction"), "LongitudinalAction").append(_speed_action(speed, ("step", "time", 0.0)))
     follow = _sub(_sub(_sub(ev, "Action", name=f"{name}_e1_cross_action"), "PrivateAction"), "RoutingAction")
