@@ -104,7 +104,7 @@ _EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,
                             r"up|waiting|queued|remained)\s+(?:directly\s+|immediately\s+)?$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
-                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|changed\s+lanes|"
+                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|"
                          r"(?:changing|change|changed)\s+lanes?|lane[- ]change[sd]?)\s+"
                          # "cut back to the left directly in front of EGO": where it went, a few words on
                          r"(?:(?:back|right|left|directly|suddenly|abruptly|in|over|to|the)\s+){0,5}$", re.I)
@@ -372,8 +372,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         used.append(contact)
     elif pos == "R5" and not ego_actions[:1].strip("i") and not backing and \
             any(c.kind == "lane" and c.value in ("left", "right") for c in cues) and \
-            (m := fre.search(r"\bapproach(?:ed|ing|es)?\b(?!\s+(?:the\s+)?(?:intersection|crosswalk|junction))",
-                             context(d, e), re.I)):
+            fre.search(r"\bapproach(?:ed|ing|es)?\b(?!\s+(?:the\s+)?(?:intersection|crosswalk|junction))",
+                       context(d, e), re.I):
         # Coming up in a lane beside an AV that stood still: it came from behind.
         pos, rule = "R6", "approaching a standing AV"
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)

@@ -21,8 +21,8 @@ from .scene import PRIOR_TURN
 
 # Said of a party travelling the other way: "oncoming", "opposite direction", and at a junction the opposite
 # approach ("from the opposite side of the intersection", "facing EGO").
-ONCOMING = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
-                         r"\bon-?coming\b|\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
+ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
+                         r"\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
                          r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b", re.I)
 
 T = TypeVar("T")
@@ -347,10 +347,14 @@ def _heading(d: Doc, who: int) -> int | None:
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 window = s[m.end:min([m.end + 120, *nxt])]
                 approach = fre.search(r"\bfrom\s+((?:north|south|east|west)+)bound\b", window, re.I)
-                told = s[m.end:min([m.end + 200, *nxt])]
-                if who == -1 and (done := PRIOR_TURN.search(told)) and \
-                        (to := fre.match(r"\s*(?:the\s+)?((?:north|south|east|west)+bound)\b", told[done.end():], re.I)):
-                    return heading_of(to.group(1))  # "after completing a right turn ... onto westbound Haight"
+                if who == -1:
+                    # "after completing a right turn ... onto westbound Haight": the heading it turned to
+                    told = s[m.end:min([m.end + 200, *nxt])]
+                    done = PRIOR_TURN.search(told)
+                    to = done and fre.match(r"\s*(?:the\s+)?((?:north|south|east|west)+bound)\b", told[done.end():],
+                                            re.I)
+                    if to:
+                        return heading_of(to.group(1))
                 if approach and who == -1:
                     # The AV "turned left from northbound X onto westbound Y": the frame of R1-R7 is taken when
                     # the interaction begins, on its approach (an oncoming party is R2 there).
