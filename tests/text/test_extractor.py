@@ -139,3 +139,24 @@ def test_a_party_from_behind_that_passes_is_on_the_side_it_passed() -> None:
 def test_behind_read_from_whose_clause_it_is(text: str, want: tuple[str, str | None]) -> None:
     parties = extract(text, "t").npcs
     assert (parties[-1].position, parties[-1].lane) == want
+
+
+@pytest.mark.parametrize("text, want", [
+    # A cyclist behind rides at the edge: beside the AV on the side it touched, not centred in its lane.
+    ("A Cruise AV was traveling eastbound on Howard Street and slowing for traffic ahead when a cyclist traveling "
+     "behind the Cruise AV made contact with the rear passenger side bumper of the Cruise AV.", ("R6", "right")),
+    ("A Waymo AV was stopped on Valencia Street when a scooterist approaching from behind made contact with the "
+     "Waymo AV's rear driver side door.", ("R6", "left")),
+    # No side touched and none said: the curb side.
+    ("The Zoox vehicle slowed for a cyclist ahead on Market Street. The cyclist then fell and the bicycle struck "
+     "the Zoox vehicle.", ("R5", "right")),
+    # Said outright to be in the AV's lane, it stays there.
+    ("A Cruise AV was stopped at a red light when a cyclist riding directly behind the Cruise AV struck its rear "
+     "bumper.", ("R6", "same")),
+    # A car behind that strikes a rear corner was most often right behind: the prior is the riders' only.
+    ("A Cruise AV was stopped at a red light when a sedan traveling behind the Cruise AV struck its rear passenger "
+     "side bumper.", ("R6", "same")),
+])
+def test_a_rider_keeps_to_the_lane_edge(text: str, want: tuple[str, str | None]) -> None:
+    parties = extract(text, "t").npcs
+    assert (parties[0].position, parties[0].lane) == want

@@ -21,6 +21,8 @@ and combined in a fixed order, highest first, so a rule can be read and its weig
 3. The lane: an explicit `lane` cue; else the side the `passing` cue names; else the side of the AV the party
    touched, for a party ahead or passing (one behind that strikes a rear corner was most often right behind);
    else the first reading.
+4. A cyclist or scooterist read in the AV's lane from no explicit same-lane phrase rides at the road's edge: on the
+   side of the AV it touched, else the curb side (right).
 
 Each decision records the rule that made it and the cue spans (offsets into the normalised text) as evidence.
 """
@@ -111,6 +113,11 @@ _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|
 # The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
 _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0,2}?front\b|"
                              r"\bfront\s+(?:\w+\s+){0,2}?of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
+# Riders who keep to the edge of the road (bike lane, curb side); a motorcycle takes a lane like a car.
+_EDGE_RIDERS = ("bicycle", "scooter")
+# A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
+_EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
+                               r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
 
@@ -400,4 +407,15 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
+    if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
+            not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and
+                    _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues):
+        # A cyclist or scooterist rides at the edge of the road, beside a car rather than centred in its lane:
+        # "same" read from nothing but "behind EGO" or from no lane cue at all is the side it touched, else the
+        # curb side (right-hand traffic). "Directly behind", "in EGO's lane", "in front of EGO" (in its path) keep
+        # it in the AV's lane.
+        lane = cside if cside and contact is not None else "right"
+        rule += "; rider at the lane edge"
+        if cside and contact is not None:
+            used.append(contact)
     return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues), tuple(cues))
