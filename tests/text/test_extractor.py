@@ -160,3 +160,14 @@ def test_behind_read_from_whose_clause_it_is(text: str, want: tuple[str, str | N
 def test_a_rider_keeps_to_the_lane_edge(text: str, want: tuple[str, str | None]) -> None:
     parties = extract(text, "t").npcs
     assert (parties[0].position, parties[0].lane) == want
+
+
+def test_an_object_touched_before_the_last_contact_takes_part() -> None:
+    # A chain: the AV strikes a dog, stops, and is rear-ended. The conflict is the last contact (the sedan); the dog
+    # the AV touched on the way is still an object of the scene.
+    text = ("The Waymo AV was traveling eastbound on Elm Street when a dog ran into the roadway. As the Waymo AV "
+            "braked, the front bumper of the Waymo AV made contact with the dog. A sedan traveling behind the Waymo "
+            "AV then made contact with the rear bumper of the stationary Waymo AV.")
+    sk = extract(text, "t")
+    assert [o.category for o in sk.obstacles] == ["animal"]
+    assert sk.collision.with_ == "npc1" and sk.npcs[0].position == "R6"

@@ -168,6 +168,12 @@ def find_contact(d: Doc) -> None:
     d.contact_sent, d.contact_pos, d.partner = chosen
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
+    # "the AV made contact with the cat ... an SUV then made contact with the rear of the AV": an object the AV
+    # touched earlier in the telling took part too, though the conflict is the last contact.
+    for i, pos, who in detailed:
+        if (i, pos) < (d.contact_sent, d.contact_pos) and who is not None and who != d.partner and \
+                d.ents[who].kind == "obstacle":
+            d.struck.add(who)
     # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
     if d.partner is not None and d.ents[d.partner].kind == "obstacle":
         # A group word inside a name ("traffic" of "the traffic sign") is no object of its own.
