@@ -377,7 +377,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # (a party that stood, at the curb or a stop, and moved off into the passing AV was beside it, not behind)
         pos, rule = "R6", "contact on the AV's rear"
         used.append(contact)
-    elif pos == "R5" and not ego_actions[:1].strip("i") and not backing and \
+    elif pos == "R5" and d.ego_start == "stopped" and not backing and \
             any(c.kind == "lane" and c.value in ("left", "right") for c in cues) and \
             fre.search(r"\bapproach(?:ed|ing|es)?\b(?!\s+(?:the\s+)?(?:intersection|crosswalk|junction))",
                        context(d, e), re.I):
