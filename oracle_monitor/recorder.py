@@ -179,11 +179,26 @@ class BagRecorder:
         consecutive log times: one buffer write instead of one per message, for the in-process hot path."""
         self.write_steps([(received_ns, items)])
 
-    def write_steps(self, steps: list[tuple[int | None, list[tuple[str, bytes]]]]) -> None:
-        """`write_batch` for several steps at once (each: received time or None for now, its messages): one buffer
-        write and one round of bookkeeping for all of them."""
+    def channel(self, topic: str) -> int:
+        """The channel id of `topic` (its connection added on first use)."""
+        cid = self._cids.get(topic)
+        if cid is None:
+            cid = self._cids[topic] = self._connection(topic, None).id
+        return cid
+
+    def write_steps(self, steps: list[tuple[int | None, Any]]) -> None:
+        """`write_batch` for several steps at once: one buffer write and one round of bookkeeping for all of them.
+        Each step is (received time or None for now, its messages), the messages either a list of (topic, CDR
+        bytes) or a `steprecords.StepPacker` with its frame and command, which packs the whole step's records."""
         if self.closed:
             raise InputError("recording already closed", source=str(self.path))
+        for _, items in steps:
+            if isinstance(items, list):
+                for topic, _ in items:
+                    if topic not in self._cids:
+                        # A new channel writes its record into the pending chunk: add it before the messages'
+                        # offsets in the chunk are counted from where the chunk ends.
+                        self.channel(topic)
         w = self._writer
         storage = w.storage
         chunk = storage.chunk
@@ -203,17 +218,25 @@ class BagRecorder:
             t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
             if first is None:
                 first = t
-            for topic, data in items:
-                cid = cids.get(topic)
-                if cid is None:
-                    cid = cids[topic] = self._connection(topic, None).id
-                size = len(data)
-                index[cid].append((t, pos))
-                pos += 31 + size                # the 31-byte record header, then the message
-                parts += (pack(0x05, 22 + size, cid, 0, t, t), data)
-                written.append(cid)
-                t += 1
-            n += len(items)
+            if isinstance(items, list):
+                for topic, data in items:
+                    cid = cids[topic]
+                    size = len(data)
+                    index[cid].append((t, pos))
+                    pos += 31 + size            # the 31-byte record header, then the message
+                    parts += (pack(0x05, 22 + size, cid, 0, t, t), data)
+                    written.append(cid)
+                    t += 1
+                n += len(items)
+            else:
+                packer, frame, command = items
+                parts.append(packer.pack(t, frame, command))
+                for cid, off in zip(packer.topics_cids, packer.offsets):
+                    index[cid].append((t, pos + off))
+                    t += 1
+                pos += packer.size
+                written += packer.topics_cids
+                n += len(packer.offsets)
             last = t - 1
         if first is None or not n:
             return

@@ -25,6 +25,7 @@ from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
+from .steprecords import StepPacker, layout_key
 
 
 #: Steps encoded together (see `RunWriter.frame`).
@@ -44,6 +45,7 @@ class RunWriter:
         self._drained = time.monotonic()
         self._goal: Goal | None = None
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
+        self._packers: dict[tuple, StepPacker] = {}
 
     def _w(self, topic: str, msg: object) -> None:
         self._raw_ordered(topic, serialize_message(msg))
@@ -95,8 +97,33 @@ class RunWriter:
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
         self._drained = time.monotonic()
-        encode = self._encode
-        self.rec.write_steps([(ns, encode(frame, command)) for ns, frame, command in steps])
+        out: list[tuple[int, object]] = []
+        channel = self.rec.channel
+        for ns, frame, command in steps:
+            if self._shown_lights is not None and frame.lights != self._shown_lights:
+                # A light changed: this step also redraws the goal and lights, so it takes the per-message path.
+                items = self._encode(frame, command)
+                for topic, _ in items:
+                    channel(topic)              # channels in first-use order, as the messages are written
+                out.append((ns, items))
+            else:
+                out.append((ns, (self._packer(frame, command), frame, command)))
+        self.rec.write_steps(out)
+
+    def _packer(self, frame: Frame, command: ControlCommand | None) -> StepPacker:
+        """The compiled layout of this kind of step (a few per run: the light states and the cast change
+        rarely)."""
+        key = layout_key(frame, command)
+        packer = self._packers.get(key)
+        if packer is None:
+            channel = self.rec.channel
+            cids = (channel(c.TOPIC_CLOCK), channel(c.TOPIC_TRAFFIC_LIGHTS),
+                    channel(c.TOPIC_OBJECTS_ODOM) if frame.objects else None, channel(c.TOPIC_OBJECTS_MARKERS),
+                    channel(c.TOPIC_EGO_ODOM), channel(c.TOPIC_COMMAND) if command is not None else None)
+            if len(self._packers) > 64:
+                self._packers.clear()
+            packer = self._packers[key] = StepPacker(frame, command, cids)
+        return packer
 
     def _encode(self, frame: Frame, command: ControlCommand | None) -> list[tuple[str, bytes]]:
         # The per-step messages go through the fast CDR encoders (same content as rclpy's serialisation); a
