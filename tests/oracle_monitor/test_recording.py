@@ -316,3 +316,51 @@ def test_message_indexes_point_at_their_records(tmp_path: Path) -> None:
             assert (op, rec_cid, rec_time) == (0x05, cid, log_time)
             checked += 1
     assert checked == sum(1 for _ in read_bag(tmp_path / "bag").messages())
+
+
+def test_connections_and_metadata_are_what_rosbags_writes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The recorder adds its connections with the QoS dump made once, and writes the metadata (in the MCAP summary
+    # and metadata.yaml) with its own emitter: the bag must be byte for byte the one rosbags' Writer.add_connection
+    # and PyYAML's dump make (flush after every write and fixed log times, so both runs chunk alike).
+    import yaml
+
+    from oracle_monitor import recorder
+
+    def record(path: Path) -> tuple[bytes, str]:
+        with RunWriter(path, flush_interval=0.0, time_base_ns=1_700_000_000_000_000_000) as w:
+            w.begin(_envelope(), GOAL)
+            for f in _frames():
+                w.frame(f, c.ControlCommand(f.t, 9.5, 0.0))
+            w.end(RunStatus("rt1", "finished", 8.0, "time_limit"))
+        return (path / "bag.mcap").read_bytes(), (path / "metadata.yaml").read_text()
+
+    ours = record(tmp_path / "ours" / "bag")
+    monkeypatch.setattr(recorder, "_add_connection",
+                        lambda w, topic, msgtype, msgdef, rihs01: w.add_connection(topic, msgtype, msgdef=msgdef,
+                                                                                   rihs01=rihs01))
+    monkeypatch.setattr(recorder, "metadata_yaml", lambda value: yaml.dump(
+        value, Dumper=yaml.CSafeDumper, default_flow_style=False, sort_keys=True).strip())
+    theirs = record(tmp_path / "theirs" / "bag")
+    assert len(ours[0]) > 10_000 and ours == theirs
+    assert "/control/command" in ours[1] and "type_description_hash: RIHS01_" in ours[1]
+
+
+@pytest.mark.parametrize("name", ["my bag: one", "yes", "No", "123", "1.5", "", "-x", " lead", "a\"b'c", "ünï",
+                                  "#x", "x #y", "null", "~", "a\tb", "line\nbreak", "[x]", "{y}", "&a", "*b", "!c"])
+def test_metadata_yaml_reads_back_as_written(name: str) -> None:
+    # Awkward names (a bag directory, a topic) must read back as the same string, by PyYAML and by ruamel (which
+    # rosbags reads metadata with).
+    import io
+
+    import yaml
+    from ruamel.yaml import YAML
+
+    from oracle_monitor.recorder import metadata_yaml
+
+    value = {"rosbag2_bagfile_information": {"relative_file_paths": [name + ".mcap", name],
+                                             "files": [{"path": name, "message_count": 3,
+                                                        "starting_time": {"nanoseconds_since_epoch": 17}}],
+                                             "custom_data": None, "name": name, "empty": [], "none": {}}}
+    text = metadata_yaml(value)
+    assert yaml.safe_load(text) == value
+    assert YAML(typ="safe").load(io.StringIO(text)) == value
