@@ -51,7 +51,10 @@ scoring: a rider moving into the lane who strikes the AV's mirror was alongside)
 were corrected to the spec's `van` (minivans, delivery vans) after scoring; a party is matched by category first.
 378-385, same-direction parties in the lane to the AV's left (or a left-turn lane) turning across it at a junction,
 scored before any fix: 8/8, 1/8, 8/8 (five event labels corrected to the spec after scoring: a party told travelling
-before it turns opens with `a`).
+before it turns opens with `a`). Session 7: 430-441, parties' sideways moves told without "changed lanes" ("shifted
+over toward the center lane", "edged left", "crossed over the lane line into the AV's lane", "moved toward our lane"),
+scored before any fix: 11/12, 7/12, 12/12 (two event labels corrected to the files' convention after scoring: a party
+not told travelling before its move opens with that move, as 339 does).
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

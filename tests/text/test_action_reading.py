@@ -374,3 +374,22 @@ def test_numbered_parties_are_told_apart() -> None:
 ])
 def test_a_turn_lane_entered_and_a_start_from_where_it_waited(text: str, want: tuple[str, str]) -> None:
     assert _ego(text) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # A sideways move told without "changed lanes": its side from the words, else from where the party was.
+    ("The Waymo AV was traveling in the left lane of Market Street. A sedan in the right lane shifted over toward "
+     "the left lane and struck the passenger side of the Waymo AV.", ("moving", "af")),
+    ("The Zoox vehicle was stopped at a red light. A delivery truck stopped to our right inched left as the light "
+     "turned green and touched the Zoox vehicle's front passenger side.", ("stopped", "if")),
+    ("Our vehicle was traveling in the center lane when a sedan in the lane to our left moved toward our lane and "
+     "made contact with our driver side mirror.", ("moving", "ag")),
+    # A clause set off by commas is an aside: the verb after it is the subject's before it.
+    ("The Cruise AV was stopped at a red light on Post Street. A cyclist in the bike lane to the right of the AV, "
+     "while the AV waited for pedestrians to clear, moved left and struck the AV's right mirror.", ("moving", "af")),
+    # Out of a driveway into the AV's lane is the crossing itself, not a lane change after it.
+    ("The AV was traveling north on Pine Street when a pickup truck leaving a driveway on the right crossed into "
+     "the AV's lane and struck its front bumper.", ("moving", "m")),
+])
+def test_sideways_moves_without_a_lane_change_word(text: str, want: tuple[str, str]) -> None:
+    assert _party(text) == want

@@ -65,7 +65,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
           r"left[- ]turn\s+(?:lane|pocket|bay)|\bswerv(?:ed|ing)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
-          r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b"),
+          r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b|"
+          # a sideways move told without "lane": "moved left and made contact", "drifted over the center line"
+          r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?left\b"
+          r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))|"
+          r"\b(?:drift|veer|swerv|wander)(?:ed|ing|e|s)?\s+(?:over|across)\s+(?:the\s+)?(?:center\s*line|centerline|"
+          r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
@@ -75,7 +80,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
           r"right[- ]turn\s+(?:lane|pocket|bay)|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
-          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b"),
+          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b|"
+          r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?right\b"
+          r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))"),
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
@@ -86,7 +93,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
           r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+)?into|"
           r"(?:partially\s+)?enter(?:ed|ing|s)(?:\s+into)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
-          r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+EGO\b"),
+          r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+EGO\b|"
+          # "attempted to move into the turn lane", "change into the left turn lane": into a named lane, the side
+          # read from where the party was
+          r"\b(?:chang|mov|merg|shift)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:[\w-]+\s+){0,3}lane\b|"
+          # "shifted over toward the center lane", "crossed over the lane line into EGO's lane", "moved toward our lane"
+          r"\b(?:mov|shift|drift|veer|swerv|edg|nudg|inch|steer|swung|swing|cross|merg|wander)(?:ed|ing|es|e|s)?\s+"
+          r"(?:over\s+)?(?:(?:across|over)\s+(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
+          r"(?:into|toward|towards)\s+(?:the\s+|EGO's\s+|our\s+|its\s+)(?:[\w-]+\s+){0,3}lane\b"),
     ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
@@ -133,7 +147,7 @@ _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 # A bare "to" before a possessive is a place ("stopped to its left began to move"), and before an article an object
 # ("yielded to a parallel parking vehicle"), not an infinitive.
-_INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
+_INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"intending\s+to|in\s+order\s+to|should|would|must|ought\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
@@ -200,6 +214,9 @@ def turn_from_headings(s: str) -> str | None:
     return {90: "e", 270: "d", 180: "j"}.get(diff)
 
 
+_ASIDE = compile_gated(r",\s*(?:as|while|when|after|before|because)\b[^,]*,\s*$", re.I)
+
+
 def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str = "") -> int | None:
     """Entity index (-1 ego) whose clause covers `pos`: latest subject mention before it, else the first after
     (an opening "While reversing, the car ..."), except after "During ...", which continues the last story."""
@@ -207,6 +224,12 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
     for m in ments:
         if m.start <= pos and m.subject:
             best = m
+    if best is not None and sentence and (aside := _ASIDE.search(sentence[:pos])) and aside.start() < best.start:
+        # "A cyclist in the bike lane, as EGO waited for traffic to clear, moved left": a clause set off by commas
+        # is an aside; the verb after it belongs to the subject before it.
+        outer = [m for m in ments if m.start < aside.start() and m.subject]
+        if outer:
+            best = outer[-1]
     if best is not None and best.kind == "pron":
         # "when it slowed to a stop": the pronoun continues the sentence's (or the story's) last subject.
         earlier = [m for m in ments if m.start < best.start and m.subject and m.kind != "pron"]

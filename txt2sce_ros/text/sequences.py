@@ -22,6 +22,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     start = "stopped" if stopped else "moving"
     for a in acts:
         c = a.code
+        if c == "F" and codes and codes[-1] == "m" and not ego:
+            continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
         if c == "F":
             c = "f" if (ego or side != "left") else "g"
             if fre.search(r"around", a.text, re.I) and not ego:
