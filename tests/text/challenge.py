@@ -54,7 +54,10 @@ scored before any fix: 8/8, 1/8, 8/8 (five event labels corrected to the spec af
 before it turns opens with `a`). Session 7: 430-441, parties' sideways moves told without "changed lanes" ("shifted
 over toward the center lane", "edged left", "crossed over the lane line into the AV's lane", "moved toward our lane"),
 scored before any fix: 11/12, 7/12, 12/12 (two event labels corrected to the files' convention after scoring: a party
-not told travelling before its move opens with that move, as 339 does).
+not told travelling before its move opens with that move, as 339 does); 442-453, parties whose standing or moving
+is told indirectly ("stalled in the lane ahead", "a taxi parked at the curb ahead", "which had begun to move forward",
+a cyclist entering the roadway from the curb, a pedestrian stepping off the median), scored before any fix: 12/14,
+8/14, 10/12; after 13/14, 11/14, 11/12.
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

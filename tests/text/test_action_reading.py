@@ -393,3 +393,23 @@ def test_a_turn_lane_entered_and_a_start_from_where_it_waited(text: str, want: t
 ])
 def test_sideways_moves_without_a_lane_change_word(text: str, want: tuple[str, str]) -> None:
     assert _party(text) == want
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # A state told by a participle or a verb of breaking down: it stood when the story took it up.
+    ("The Zoox vehicle was traveling on Howard Street when a delivery van stalled in the lane ahead. The Zoox "
+     "vehicle slowed and its front bumper touched the rear of the van.", ("stopped", "")),
+    ("The Cruise AV was traveling in the right lane of Geary Boulevard when a sedan parked at the curb ahead pulled "
+     "into the lane in front of it and the Cruise AV struck its rear bumper.", ("stopped", "if")),
+    # Out of the roadway's edge in front of the AV: a crossing, from a standstill.
+    ("The Waymo AV was traveling south on Valencia Street when a scooter rider who had been stopped on the sidewalk "
+     "entered the roadway from the right curb directly in front of the Waymo AV.", ("stopped", "im")),
+])
+def test_a_state_told_by_a_participle(text: str, want: tuple[str, str]) -> None:
+    assert _party(text) == want
+
+
+def test_a_move_told_in_the_pluperfect_is_the_avs() -> None:
+    text = ("The Waymo AV was stopped behind a box truck on Folsom Street. The truck backed up, and the Waymo AV, "
+            "which had begun to move forward, made contact with the rear of the truck.")
+    assert _ego(text) == ("stopped", "i")

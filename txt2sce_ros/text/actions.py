@@ -46,7 +46,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b"),
-    ("i", r"\b(?:began|begin|begins|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
+    ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
           r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
@@ -93,7 +93,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
           r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+)?into|"
           r"(?:partially\s+)?enter(?:ed|ing|s)(?:\s+into)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
-          r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+EGO\b|"
+          r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+(?:EGO|it)\b|"
           # "attempted to move into the turn lane", "change into the left turn lane": into a named lane, the side
           # read from where the party was
           r"\b(?:chang|mov|merg|shift)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:[\w-]+\s+){0,3}lane\b|"
@@ -113,9 +113,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:\w+\s+)?(?:driveway|garage|"
           r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
           r"\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
-          r"(?:of\s+traffic\s+)?in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
+          r"(?:of\s+traffic\s+|from\s+(?:the\s+)?(?:[\w-]+\s+){0,2}(?:curb|sidewalk|median)\s+(?:directly\s+|just\s+)?)?"
+          r"in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
           r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding)\s+(?:out\s+)?"
-          r"(?:off\s+the\s+(?:curb|sidewalk)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
+          r"(?:off\s+the\s+(?:curb|sidewalk|median|(?:traffic\s+)?island)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
           r"out\s+(?:from\s+(?:between|behind)|in\s+front)|across\s+(?:the\s+)?(?:street|road|roadway|lanes?|"
           r"intersection|crosswalk))"),
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
@@ -171,7 +172,10 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
 _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
                          r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
-                         r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b", re.I)
+                         r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
+                         # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
+                         r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b",
+                         re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)

@@ -51,7 +51,9 @@ _LANE_CUES = compile_gated(
     r"\bto\s+its\s+(left|right)\b|"
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
     r"\bbetween\s+(?:the\s+)?EGO\s+and\s+(?:the\s+)?(curb|sidewalk|shoulder|median|parked\s+cars)\b|"
-    r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b", re.I)
+    r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b|"
+    # "a taxi parked at the curb ahead": the curb is on the right unless a side is named
+    r"(?<!left\s)(?<!right\s)\b(?:at|along|by|near)\s+the\s+(curb)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
 _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
