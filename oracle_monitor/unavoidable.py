@@ -29,7 +29,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Frame
 
-from .geometry import Box, BoxGroup, box_at, footprint, overlaps
+from .geometry import Box, BoxGroup, box_at, far_apart, footprint, overlaps
 from .records import Category, Unavoidable
 
 
@@ -67,6 +67,9 @@ FORESIGHT = 5.0
 FORESIGHT_DT = 0.25
 #: Where along the ego's path ahead (m) the foreseeable check looks.
 AHEAD_STEPS = tuple(float(d) for d in range(0, 61, 2))
+#: Slack (m) on `Counterfactual._stretch_circle`'s radius, for the rounding of the path's distances (sums of a few
+#: hundred hypots): far above it, far below any footprint.
+STRETCH_SLACK = 1e-3
 
 
 @dataclass
@@ -83,11 +86,13 @@ class Counterfactual:
     _ahead_groups: dict[int, BoxGroup] = field(default_factory=dict, repr=False)
     _foreseen: dict[tuple[str, float], int | None] = field(default_factory=dict, repr=False)
     _boxes: dict[int, list[Box]] = field(default_factory=dict, repr=False)     # per frame, kept as recorded
+    _ahead_circles: dict[int, tuple[float, float, float]] = field(default_factory=dict, repr=False)
 
     def observe(self, frame: Frame) -> None:
-        if self._ahead_groups or self._foreseen:
+        if self._ahead_groups or self._foreseen or self._ahead_circles:
             self._ahead_groups.clear()        # the path driven grew: what was asked before no longer holds
             self._foreseen.clear()
+            self._ahead_circles.clear()
         e = frame.ego
         if self.first is None:
             self.first = e
@@ -120,6 +125,27 @@ class Counterfactual:
         e = self.first
         assert e is not None
         return box_at(*self._ego_pose(dist), e.center_x, e.length, e.width)
+
+    def _stretch_circle(self, d0: float, d1: float) -> tuple[float, float, float]:
+        """(x, y, radius): a circle holding the ego's footprint at every distance in [d0, d1] along its recorded
+        path (`_ego_box`). `_ego_pose` moves along straight pieces between recorded points (each no longer than the
+        distance it adds) and straight on past the end, so the pose at d lies within |d - m| of the pose at the
+        midpoint m; the footprint's centre is `center_x` from the pose and its corners its half diagonal from that."""
+        e = self.first
+        assert e is not None
+        mid = 0.5 * (d0 + d1)
+        x, y, _ = self._ego_pose(mid)
+        half = math.hypot(0.5 * e.length, 0.5 * e.width)
+        return x, y, 0.5 * (d1 - d0) + abs(e.center_x) + half + STRETCH_SLACK
+
+    def _ahead_circle(self, k: int) -> tuple[float, float, float]:
+        """`_stretch_circle` of the path `_ahead(k)` covers: every box of that group lies inside it, so a party
+        clear of it is clear of the group, without the group's 31 poses being worked out."""
+        circle = self._ahead_circles.get(k)
+        if circle is None:
+            d = self.dists[k]
+            circle = self._ahead_circles[k] = self._stretch_circle(d + AHEAD_STEPS[0], d + AHEAD_STEPS[-1])
+        return circle
 
     def _ahead(self, k: int) -> BoxGroup:
         """The ego's footprints along the `AHEAD_STEPS` of the path it drove on from frame k (the same for every
@@ -156,11 +182,16 @@ class Counterfactual:
             o = next((p for p in self.parties[k] if p.name == name), None)
             if o is None:
                 continue
-            # the path it went on to drive (straight on past the end of the run), 60 m of it
-            ahead = self._ahead(k)
             c, s = math.cos(o.heading), math.sin(o.heading)
             fp = footprint(o)
-            if _course_clear(ahead, fp, o.speed * FORESIGHT * c, o.speed * FORESIGHT * s):
+            dx, dy = o.speed * FORESIGHT * c, o.speed * FORESIGHT * s
+            # Clear of a circle round the path ahead: no position on the course overlaps a box of it (the test
+            # below would find none), so the boxes need not be built.
+            if _course_clear_of(self._ahead_circle(k), fp, dx, dy):
+                continue
+            # the path it went on to drive (straight on past the end of the run), 60 m of it
+            ahead = self._ahead(k)
+            if _course_clear(ahead, fp, dx, dy):
                 continue
             moved = o.speed * taus
             if ahead.first_overlapped(fp, fp.cx + moved * c, fp.cy + moved * s) is not None:
@@ -175,16 +206,24 @@ class Counterfactual:
             return None
         t_b, d_b, v_b = self.times[start], self.dists[start], self.ego[start][3]
         brake = profile(v_b)
-        for k in range(start, len(self.times)):
-            t, parties = self.times[k], self.parties[k]
-            if t > until:
-                break
+        end = bisect.bisect_right(self.times, until, lo=start)      # the frames with t <= until (times increase)
+        along = [d_b + brake(self.times[k] - t_b) for k in range(start, end)]
+        if not along:
+            return None
+        # Every footprint the braking ego takes lies in this circle: a frame whose parties are all clear of it has
+        # no contact, and its ego box need not be built.
+        cx, cy, r = self._stretch_circle(min(along), max(along))
+        for k, dist in zip(range(start, end), along):
+            parties = self.parties[k]
             if not parties:
                 continue
-            ego = self._ego_box(d_b + brake(t - t_b))
-            for o, box in zip(parties, self._footprints(k)):
+            boxes = self._footprints(k)
+            if all(far_apart(cx, cy, r, b.cx, b.cy, b.radius) for b in boxes):
+                continue
+            ego = self._ego_box(dist)
+            for o, box in zip(parties, boxes):
                 if overlaps(ego, box):
-                    return o.name, t
+                    return o.name, self.times[k]
         return None
 
     def _footprints(self, k: int) -> list[Box]:
@@ -218,6 +257,14 @@ def _course_clear(group: BoxGroup, box: Box, dx: float, dy: float) -> bool:
     # the point of the course nearest to the circle's centre
     u = 0.0 if d2 == 0.0 else min(max(((group.cx - box.cx) * dx + (group.cy - box.cy) * dy) / d2, 0.0), 1.0)
     return group.clear_of(box.cx + u * dx, box.cy + u * dy, box.radius)
+
+
+def _course_clear_of(circle: tuple[float, float, float], box: Box, dx: float, dy: float) -> bool:
+    """`_course_clear` against a circle (x, y, radius) that holds every box of a group."""
+    x, y, r = circle
+    d2 = dx * dx + dy * dy
+    u = 0.0 if d2 == 0.0 else min(max(((x - box.cx) * dx + (y - box.cy) * dy) / d2, 0.0), 1.0)
+    return far_apart(x, y, r, box.cx + u * dx, box.cy + u * dy, box.radius)
 
 
 def assess(cf: Counterfactual, categories: set[Category], *, decel: float, jerk: float, t_end: float,

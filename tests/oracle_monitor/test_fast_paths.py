@@ -127,3 +127,99 @@ def test_first_overlapped_answers_as_overlapped_by_position_by_position() -> Non
         assert g.first_overlapped(b, cxs, cys) == want
         hits += want is not None
     assert 20 < hits < 180
+
+
+def _recorded_run(rng: random.Random) -> "Counterfactual":
+    """A counterfactual recorder fed a random run: an ego that drives, creeps (steps far under a micrometre) and
+    stands along a wandering course, and parties crossing, following and standing around it, many close to it."""
+    from oracle_monitor.unavoidable import Counterfactual
+    from txt2sce_ros.contract import Frame
+
+    cf = Counterfactual()
+    x, y, h, v = rng.uniform(-3000, 3000), rng.uniform(-3000, 3000), rng.uniform(-math.pi, math.pi), 8.0
+    parties = [(f"p{j}", x + rng.uniform(-20, 45), y + rng.uniform(-15, 15), rng.uniform(-math.pi, math.pi),
+                rng.uniform(-2.0, 12.0), rng.uniform(0.5, 12.0), rng.uniform(0.5, 2.6)) for j in range(4)]
+    for k in range(160):
+        t = round(k * 0.05, 9)
+        mode = (k // 20) % 4
+        step = {0: v * 0.05, 1: rng.uniform(0.0, 5e-7), 2: 0.0, 3: v * 0.05 * rng.uniform(0.2, 1.0)}[mode]
+        h += rng.uniform(-0.05, 0.05) if step > 1e-3 else 0.0
+        x, y = x + step * math.cos(h), y + step * math.sin(h)
+        ego = EntityState(name="ego", category="car", t=t, x=x, y=y, heading=h, speed=step / 0.05, length=4.6,
+                          width=1.9, center_x=1.4)
+        objects = tuple(EntityState(name=n, category="car", t=t, x=px + sp * t * math.cos(ph),
+                                    y=py + sp * t * math.sin(ph), heading=ph, speed=sp, length=ln, width=wd,
+                                    center_x=0.4 * ln) for n, px, py, ph, sp, ln, wd in parties)
+        cf.observe(Frame(t=t, ego=ego, objects=objects))
+    return cf
+
+
+def _plain_meets(cf, profile, until: float, start: int = 0):
+    """`Counterfactual.meets` written out: the braking ego's box at every frame against every party's footprint."""
+    if cf.first is None or start >= len(cf.times):
+        return None
+    t_b, d_b, v_b = cf.times[start], cf.dists[start], cf.ego[start][3]
+    brake = profile(v_b)
+    for k in range(start, len(cf.times)):
+        t, parties = cf.times[k], cf.parties[k]
+        if t > until:
+            break
+        ego = cf._ego_box(d_b + brake(t - t_b))
+        for o in parties:
+            if overlaps(ego, footprint(o)):
+                return o.name, t
+    return None
+
+
+def _plain_foreseeable(cf, name: str, until: float):
+    """`Counterfactual.foreseeable` written out: every position of the party's course against every box of the
+    path ahead, box by box."""
+    from oracle_monitor.unavoidable import AHEAD_STEPS, FORESIGHT, FORESIGHT_DT
+
+    for k in range(0, len(cf.times), 2):
+        if cf.times[k] > until:
+            return None
+        o = next((p for p in cf.parties[k] if p.name == name), None)
+        if o is None:
+            continue
+        boxes = [cf._ego_box(cf.dists[k] + step) for step in AHEAD_STEPS]
+        fp = footprint(o)
+        for i in range(int(FORESIGHT / FORESIGHT_DT) + 1):
+            moved = o.speed * (i * FORESIGHT_DT)
+            at = fp._replace(cx=fp.cx + moved * math.cos(o.heading), cy=fp.cy + moved * math.sin(o.heading))
+            if any(overlaps(b, at) for b in boxes):
+                return k
+    return None
+
+
+def test_stretch_circle_holds_the_ego_box_at_every_distance_in_its_stretch() -> None:
+    rng = random.Random(17)
+    for _ in range(20):
+        cf = _recorded_run(rng)
+        for _ in range(40):
+            d0 = rng.uniform(0.0, cf.dists[-1] + 5.0)
+            d1 = d0 + rng.choice([0.0, rng.uniform(0.0, 1.0), rng.uniform(0.0, 70.0)])
+            x, y, r = cf._stretch_circle(d0, d1)
+            for i in range(41):
+                box = cf._ego_box(d0 + (d1 - d0) * i / 40)
+                assert all(math.hypot(px - x, py - y) <= r for px, py in box.corners())
+
+
+def test_meets_and_foreseeable_answer_as_the_plain_box_tests() -> None:
+    from oracle_monitor.unavoidable import emergency_stop, smooth_stop
+
+    rng = random.Random(23)
+    answers = {"meets": 0, "foreseen": 0}
+    for _ in range(25):
+        cf = _recorded_run(rng)
+        until = rng.uniform(2.0, 8.5)
+        for profile in (lambda v: emergency_stop(v, 8.0), lambda v: smooth_stop(v, 0.9)):
+            for start in (0, rng.randrange(0, 160), 159):
+                want = _plain_meets(cf, profile, until, start)
+                assert cf.meets(profile, until, start=start) == want
+                answers["meets"] += want is not None
+        for name in sorted({o.name for o in cf.parties[0]}):
+            want = _plain_foreseeable(cf, name, until)
+            assert cf.foreseeable(name, until) == want
+            answers["foreseen"] += want is not None
+    assert 10 < answers["meets"] < 140 and 10 < answers["foreseen"] < 90      # both answers were exercised
