@@ -286,24 +286,27 @@ def yield_constraints(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp:
             run = max(o.speed, 0.0) * (bp.prediction_horizon + 1e-9)
             if line.far_from_straight(ax, ay, ax + run * c, ay + run * sn, reach, s_lo, s_hi):
                 continue                                 # its course keeps clear of the path ahead
-            traj = predict(o, bp.prediction_horizon, bp.prediction_step)
-        else:
-            traj = predict(o, bp.prediction_horizon, bp.prediction_step)
-            if line.far_from(traj[:, 1], traj[:, 2], reach, s_lo, s_hi):
-                continue                                 # its course keeps clear of the path ahead
-        s, off = line.project_many(traj[:, 1], traj[:, 2])
+        traj = predict(o, bp.prediction_horizon, bp.prediction_step)
+        far = line.far_points(traj[:, 1], traj[:, 2], reach, s_lo, s_hi)
+        # Only the points that may come near the path ahead are projected (a point's projection does not depend
+        # on the others': the hits are those of projecting them all).
+        rows = np.arange(len(traj)) if far is None else np.flatnonzero(~far)
+        if len(rows) == 0:
+            continue                                     # its course keeps clear of the path ahead
+        s, off = line.project_many(traj[rows, 1], traj[rows, 2])
         radius = 0.5 * max(o.length, o.width)
         hit = (np.abs(off) < reach) & (s > s_lo) & (s < s_hi)
         if parallel:
             # A mover keeping to a parallel lane (same way or oncoming) meets the route only where the route turns
             # across its course: the right turn across a cyclist riding on in the bike lane beside the ego. Where
             # the route runs beside it, it is not a crossing.
-            hit &= np.array([abs(math.sin(line.heading(float(x)) - o.heading)) >= PARALLEL_SIN for x in s])
+            hit &= np.array([abs(math.sin(line.heading(float(x)) - o.heading)) >= PARALLEL_SIN for x in s],
+                            dtype=bool)
         idx = np.flatnonzero(hit)
         if len(idx) == 0:
             continue
-        k = idx[0]
-        tau, s_conf = float(traj[k, 0]), float(s[k])
+        k = int(rows[idx[0]])
+        tau, s_conf = float(traj[k, 0]), float(s[idx[0]])
         d = max(s_conf - radius - ego.s_front, 0.0)
         t_ego = _time_to_cover(d + 2.0 * radius + 2.0 * ego.half_width, ego.speed, v0, lp.max_accel)
         if t_ego + bp.conflict_time_gap < tau:

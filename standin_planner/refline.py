@@ -322,7 +322,14 @@ class RefLine:
 
     def far_from(self, xs: np.ndarray, ys: np.ndarray, reach: float, s0: float, s1: float) -> bool:
         """True only when no point can have, in `project_many`, both |offset| < `reach` and s0 < s < s1: then
-        the projection can be skipped (False: it may, project).
+        the projection can be skipped (False: it may, project). `far_points` point by point."""
+        far = self.far_points(xs, ys, reach, s0, s1)
+        return far is not None and bool(far.all())
+
+    def far_points(self, xs: np.ndarray, ys: np.ndarray, reach: float, s0: float, s1: float) -> np.ndarray | None:
+        """Per point, True only when it cannot have, in `project_many`, both |offset| < `reach` and s0 < s < s1
+        (None: no point can be told so). A point's projection does not depend on the others', so only the points
+        not ruled out need projecting.
 
         A point whose nearest segment lies where the line runs between s0 and s1 is within `reach` of its offset
         only if it is within reach / cos(turn) of that segment: its offset is its distance where its foot is inside
@@ -330,17 +337,16 @@ class RefLine:
         then lies in the wedge between the two segments' normals). So a point farther than that from the circle
         of each chunk that spans part of (s0, s1) is answered, except beyond one of the line's ends, where the
         offset is only the distance across the end segment: that is tested as it is computed."""
-        live = (self._chunk_s1 > s0 - CHUNK_SLACK) & (self._chunk_s0 < s1 + CHUNK_SLACK)
-        if not live.any():
-            return True
-        inv_cos = self._chunk_inv_cos[live]
-        if np.isinf(inv_cos).any():
-            return False
         xs = np.asarray(xs, dtype=float)
         ys = np.asarray(ys, dtype=float)
+        live = (self._chunk_s1 > s0 - CHUNK_SLACK) & (self._chunk_s0 < s1 + CHUNK_SLACK)
+        if not live.any():
+            return np.ones(len(xs), dtype=bool)
+        inv_cos = self._chunk_inv_cos[live]
+        if np.isinf(inv_cos).any():
+            return None
         gap = np.hypot(xs[:, None] - self._chunk_x[live], ys[:, None] - self._chunk_y[live]) - self._chunk_r[live]
-        if not (gap > reach * inv_cos * (1.0 + 1e-9) + CHUNK_SLACK).all():
-            return False
+        far = (gap > reach * inv_cos * (1.0 + 1e-9) + CHUNK_SLACK).all(axis=1)
         for end, k, sign in ((0, 0, -1.0), (len(self.xy) - 1, self._last_seg, 1.0)):
             if not live[0 if end == 0 else -1]:
                 continue
@@ -348,9 +354,8 @@ class RefLine:
             c, s = math.cos(h), math.sin(h)
             dx, dy = xs - float(self.xy[end, 0]), ys - float(self.xy[end, 1])
             beyond = sign * (dx * c + dy * s) > -CHUNK_SLACK       # may be clamped to this end
-            if (beyond & (np.abs(dy * c - dx * s) < reach + CHUNK_SLACK)).any():
-                return False
-        return True
+            far &= ~(beyond & (np.abs(dy * c - dx * s) < reach + CHUNK_SLACK))
+        return far
 
     def far_from_straight(self, ax: float, ay: float, bx: float, by: float, reach: float, s0: float,
                           s1: float) -> bool:

@@ -201,7 +201,7 @@ def test_far_from_never_rules_out_a_point_the_projection_would_find_near():
     |offset| < reach with s inside the window, on lanes, a self-approaching loop, and a line with a sharp kink,
     with points around both ends and beside the line."""
     rng = np.random.default_rng(3)
-    said_far = near = 0
+    said_far = near = ruled_out = partly = 0
     for line, x, y in _points_around_kinked_lines(rng):
         h = rng.uniform(-math.pi, math.pi)
         xs, ys = x + np.arange(33) * 0.5 * math.cos(h), y + np.arange(33) * 0.5 * math.sin(h)
@@ -209,12 +209,25 @@ def test_far_from_never_rules_out_a_point_the_projection_would_find_near():
         s0 = float(rng.uniform(-10.0, line.length))
         s1 = s0 + 81.0
         s, off = line.project_many(xs, ys)
-        hit = bool(((np.abs(off) < reach) & (s > s0) & (s < s1)).any())
+        hits = (np.abs(off) < reach) & (s > s0) & (s < s1)
+        hit = bool(hits.any())
         far = line.far_from(xs, ys, reach, s0, s1)
         assert not (far and hit), (s0, reach)
         said_far += far
         near += hit
+        # Point by point: a point ruled out is never a hit, and projecting only the others finds the same hits.
+        far_points = line.far_points(xs, ys, reach, s0, s1)
+        if far_points is not None:
+            assert not (far_points & hits).any()
+            assert far == bool(far_points.all())
+            rows = np.flatnonzero(~far_points)
+            ruled_out += len(xs) - len(rows)
+            if len(rows):
+                rs, roff = line.project_many(xs[rows], ys[rows])
+                assert rs.tobytes() == s[rows].tobytes() and roff.tobytes() == off[rows].tobytes()
+                partly += 0 < len(rows) < len(xs)
     assert said_far > 50 and near > 50           # both answers are exercised
+    assert ruled_out > 1000 and partly > 50      # and courses partly ruled out
 
 
 def test_projection_through_remembered_cells_equals_the_plain_formula_bit_for_bit():
