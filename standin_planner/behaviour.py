@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from txt2sce_ros.contract import OBSTACLE_CATEGORIES, EntityState, SignalState, TrafficLightState
+from txt2sce_ros.quick_init import quick_init
 
 from .idm import idm_accel, slow_down_accel, stop_accel
 from .params import BehaviourParams, LongitudinalParams
@@ -36,6 +37,7 @@ class Reason(str, enum.Enum):
     HOLD = "hold"          # refuses to move (fault no_start_when_close)
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class Constraint:
     reason: Reason
@@ -45,6 +47,7 @@ class Constraint:
     urgent: bool = False         # needs more than comfortable braking: the jerk limit may be exceeded
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class StopPlan:
     """How stops are planned this step: the deceleration allowed for by the road, the acceleration wanted
@@ -63,6 +66,7 @@ def is_static(obj: EntityState) -> bool:
     return obj.is_static or obj.category in OBSTACLE_CATEGORIES
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class PathObject:
     """An object measured against the reference line."""
@@ -76,6 +80,7 @@ class PathObject:
     rel_heading: float           # its heading minus the line's, rad
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class EgoOnPath:
     s: float                     # rear axle arc length

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 from txt2sce_ros.contract import ControlCommand, EntityState, Frame, Goal
 from txt2sce_ros.errors import InputError
+from txt2sce_ros.quick_init import quick_init
 from txt2sce_ros.road import RoadNetwork
 
 from .behaviour import (Constraint, EgoOnPath, PathObject, Reason, StopPlan, lead_constraint, measure,
@@ -31,6 +32,7 @@ PERCEPTION_RANGE = 150.0
 OFFSET_RATE = 0.6
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class _Braking:
     """Decelerations (m/s², positive) the stack counts on this step."""
@@ -41,6 +43,7 @@ class _Braking:
     max_decel: float         # the hardest braking it commands
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class Decision:
     """Why the planner commanded what it did at time t (for tests, logs and the planner-check table)."""

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from txt2sce_ros.quick_init import quick_init
+
 
 def wrap_angle(a: float) -> float:
     """Angle in (-pi, pi]."""
@@ -38,6 +40,7 @@ CELL_CACHE = 4096
 _HALF_DIAGONAL = 0.5 * math.sqrt(2.0) * CELL
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class PathPoint:
     s: float

@@ -20,6 +20,8 @@ import json
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
+from .quick_init import quick_init
+
 # --- topics --------------------------------------------------------------------------------------------------------
 
 TOPIC_SCENARIO = "/txt2sce/scenario"          # std_msgs/String, JSON ScenarioEnvelope; generator -> player
@@ -67,6 +69,7 @@ class SignalState(str, enum.Enum):
     OFF = "off"
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class EntityState:
     """One entity at one instant. (x, y) is the reference point (rear axle centre for vehicles, as OpenSCENARIO);
@@ -88,6 +91,7 @@ class EntityState:
     is_static: bool = False      # MiscObject / obstacle
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class TrafficLightState:
     """A signal head as the planner sees it: its state and the stop line it governs."""
@@ -101,6 +105,7 @@ class TrafficLightState:
     lane_ids: tuple[int, ...] = ()
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class ControlCommand:
     """The planner's answer for step `t`: speed to reach by the next step and yaw rate. With lock-step at dt, a
@@ -121,6 +126,7 @@ class Goal:
     tolerance: float = 3.0
 
 
+@quick_init
 @dataclass(frozen=True, slots=True)
 class Frame:
     """Everything observable at one step: what the planner perceives and the oracle judges."""
