@@ -57,7 +57,9 @@ scored before any fix: 11/12, 7/12, 12/12 (two event labels corrected to the fil
 not told travelling before its move opens with that move, as 339 does); 442-453, parties whose standing or moving
 is told indirectly ("stalled in the lane ahead", "a taxi parked at the curb ahead", "which had begun to move forward",
 a cyclist entering the roadway from the curb, a pedestrian stepping off the median), scored before any fix: 12/14,
-8/14, 10/12; after 13/14, 11/14, 11/12.
+8/14, 10/12; after 13/14, 11/14, 11/12; 454-461, same-direction parties beside the AV at junctions ("in the lane to
+its left made a right turn across", two left-turn lanes with a truck that "swung wide into" the AV's lane, a car
+"parked along the left curb" that "pulled out"), scored before any fix: 6/8, 4/8, 8/8; after 7/8, 8/8, 8/8.
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

@@ -413,3 +413,18 @@ def test_a_move_told_in_the_pluperfect_is_the_avs() -> None:
     text = ("The Waymo AV was stopped behind a box truck on Folsom Street. The truck backed up, and the Waymo AV, "
             "which had begun to move forward, made contact with the rear of the truck.")
     assert _ego(text) == ("stopped", "i")
+
+
+@pytest.mark.parametrize(("text", "want"), [
+    # Straying into the AV's lane during a turn is a move of its own; ending a turn in front of the AV is not.
+    ("The Zoox vehicle was turning right from Folsom Street onto 2nd Street. A sedan in the lane to its right also "
+     "turned right and drifted into the Zoox vehicle's lane during the turn, striking its passenger side.",
+     ("moving", "aef")),
+    # "Pulled out": out of a parking spot when it was parked, a start from where it stood otherwise.
+    ("The Cruise AV was traveling in the left lane of Bush Street when a sedan that had been parked along the right "
+     "curb pulled out and struck the Cruise AV's passenger side.", ("stopped", "if")),
+    ("The Cruise AV was traveling in the left lane of Bush Street when a sedan that had been stopped in the right "
+     "lane pulled out and struck the Cruise AV's passenger side.", ("stopped", "i")),
+])
+def test_a_turn_strayed_from_and_pulling_out(text: str, want: tuple[str, str]) -> None:
+    assert _party(text) == want

@@ -27,9 +27,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)|"
+
           r"\b(?:proceeded|pulled|pulling|moved|merged)\s+(?:back\s+)?(?:out\s+)?into\s+the\s+(?:driving|travel|traffic)\s+lane\b|"
           r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb)"),
+    # "pulled out and struck": out of a parking spot if it was parked, else a start from where it stopped
+    ("P", r"\bpull(?:ed|ing|s)?\s+out(?=\s*(?:,|\band\b|\bsuddenly\b|\bdirectly\b|\bjust\b))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
@@ -86,12 +89,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
-          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\b(?:moved|moving|came|coming|pulled|pulling)\s+"
+          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|\b(?:moved|moving|came|coming|pulled|pulling)\s+"
           r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
           # "changed into the AV's lane", "moved over into the middle lane in front of the AV", "partially entered
           # the leftmost through lane ahead of the AV": a move into the lane the AV is in, from the party's side.
           r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
-          r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+)?into|"
+          r"\b(?:(?:moved|moving|came|coming|pulled|pulling|merged|merging|swung|cut|cutting)\s+(?:over\s+|wide\s+)?into|"
           r"(?:partially\s+)?enter(?:ed|ing|s)(?:\s+into)?)\s+the\s+(?:[\w-]+\s+){0,3}lane\s+(?:just\s+|directly\s+|"
           r"immediately\s+)?(?:ahead\s+of|in\s+front\s+of)\s+(?:EGO|it)\b|"
           # "attempted to move into the turn lane", "change into the left turn lane": into a named lane, the side
@@ -139,7 +142,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
     "i": ("began", "begin", "start", "forward", "proceed", "off"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic", "lane"),
+    "O": ("pull", "traffic", "lane"), "P": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
@@ -192,7 +195,8 @@ _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+)
 class Act:
     sent: int
     pos: int
-    code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state)
+    code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state),
+    # "O" (out of a parking spot), "P" (pulled out: "O" if it was parked, else a start)
     who: int  # entity index, -1 = ego
     text: str
     #: Told in the progressive ("was making a right turn", "a truck merging onto the highway", "while changing
@@ -218,6 +222,7 @@ def turn_from_headings(s: str) -> str | None:
     return {90: "e", 270: "d", 180: "j"}.get(diff)
 
 
+_DEVIATION = compile_gated(r"(?:drift|veer|swung|swing|wander)", re.I)
 _ASIDE = compile_gated(r",\s*(?:as|while|when|after|before|because)\b[^,]*,\s*$", re.I)
 
 
@@ -363,8 +368,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
         if (a.code == "F" or (a.code in ("f", "g") and a.text[:5].lower() == "enter")) and turn is not None and \
                 turn.code in ("d", "e") and fre.fullmatch(r"[^,.;]{0,60}\band\s+(?:\w+ly\s+)?",
-                                                         s[turn.pos + len(turn.text):a.pos]):
-            continue  # "turned right and cut in front of EGO", "... and entered the right lane": where the turn ends
+                                                         s[turn.pos + len(turn.text):a.pos]) and \
+                not _DEVIATION.match(a.text):
+            # "turned right and cut in front of EGO", "... and entered the right lane": where the turn ends; but
+            # "turned left and drifted into EGO's lane" strays from it: a move of its own.
+            continue
         if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
                 r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
             continue

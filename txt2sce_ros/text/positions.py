@@ -99,7 +99,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return "R6", cside or "same", True
     scan = TURN_WORDS.sub(" ", ctx)
     lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
-                         r"lane\s+to\s+the\s+"
+                         r"lane\s+to\s+(?:the|its|our|EGO's)\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
                          r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|"
                          r"bike\s+lane|sidewalk|parallel|alongside|"

@@ -375,7 +375,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         pos, rule = "R6", "passing"
         used.append(passing[0])
     elif fore == "rear" and not flank and not backing and "k" not in ego_actions and contact is not None and \
-            not any(a.who == e.idx and a.code in "OS" for a in d.acts):
+            not any(a.who == e.idx and a.code in "OPS" for a in d.acts):
         # (a party that stood, at the curb or a stop, and moved off into the passing AV was beside it, not behind)
         pos, rule = "R6", "contact on the AV's rear"
         used.append(contact)

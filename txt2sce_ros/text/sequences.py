@@ -20,8 +20,10 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     """Raw acts of one party -> (start, action string) under sketch.md's rules."""
     codes: list[str] = []
     start = "stopped" if stopped else "moving"
-    for a in acts:
+    for k, a in enumerate(acts):
         c = a.code
+        if c == "P":
+            c = "O" if any(x.code == "S" and "park" in x.text.lower() for x in acts[:k]) else "i"
         if c == "F" and codes and codes[-1] == "m" and not ego:
             continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
         if c == "F":

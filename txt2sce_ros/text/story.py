@@ -224,7 +224,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         is_partner = e.idx == d.partner
         if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start):
             continue
-        moved = any(a.who == e.idx and a.code in "abcdefgijkmFTO" for a in d.acts)  # O: out of a parking spot
+        moved = any(a.who == e.idx and a.code in "abcdefgijkmFTOP" for a in d.acts)  # O, P: out of a parking spot
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
                 acted_for(d, e, around_only=True) and not fre.search(
                     r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)) and \
