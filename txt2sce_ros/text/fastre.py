@@ -436,6 +436,11 @@ _CACHE: dict[tuple[str, int], re.Pattern[str]] = {}
 _CACHE_MAX = 1024
 
 
+def cached(pattern: str, flags: int = 0) -> re.Pattern[str]:
+    """`compile_gated`, from the module functions' cache: for a pattern a rule needs as an object."""
+    return _cached(pattern, flags)
+
+
 def _cached(pattern: str, flags: int) -> re.Pattern[str]:
     key = (pattern, flags)  # a RegexFlag hashes and compares as its int: no conversion per call
     rx = _CACHE.get(key)

@@ -212,5 +212,5 @@ def scene_spans(t: str, road_info: RoadInfo, env: Environment, signal: str) -> d
     first("environment.surface", dict(_SURFACE).get(env.surface))
     first("environment.lighting", dict(_LIGHT).get(env.lighting) or (_CLOCK if env.lighting == "day" else None))
     if signal in ("green", "yellow", "red"):
-        first("signal_state", compile_gated(rf"\b{signal}\b", re.I))
+        first("signal_state", fre.cached(rf"\b{signal}\b", re.I))   # compiled once, not per report
     return out
