@@ -121,3 +121,17 @@ def test_scoped_case_sensitivity_is_not_folded() -> None:
     assert folded(re.compile(r"\bthe\s+(?-i:[A-Z])\w+", re.I)) is None
     assert folded(re.compile(r"(a)\1", re.I)) is None  # back-reference
     assert folded(re.compile(r"plain")) is None  # case-sensitive already
+
+
+def test_patterns_anchored_at_the_start_scan_without_a_prefilter() -> None:
+    # A pattern anchored at the text's start is tried at one position; a factor prefilter would search the whole
+    # text for every factor first (~10x the scan). Such a pattern keeps its folded scan, not a prefilter, and
+    # matches as the raw regex does; one anchored per line, or only in one branch, keeps the prefilter.
+    rx = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|signals?)\b(?!-)", re.I)
+    g = gate(rx)
+    assert isinstance(g, Gated) and g.factors == () and g.cs is not None
+    for s in (" Lane of the street ahead", "lane-splitting", "the lane", " SIGNALS were red and the stop", "stops"):
+        assert (g.search(s) and g.search(s).span()) == (rx.search(s) and rx.search(s).span()), s
+    assert factors_of(re.compile(r"\Alanes?\b", re.I)) is None
+    assert factors_of(re.compile(r"^\s*(?:lanes?|racks?)\b", re.I | re.M)) is not None
+    assert factors_of(re.compile(r"^lanes?\b|\bracks?\b", re.I)) is not None
