@@ -171,3 +171,20 @@ def test_an_object_touched_before_the_last_contact_takes_part() -> None:
     sk = extract(text, "t")
     assert [o.category for o in sk.obstacles] == ["animal"]
     assert sk.collision.with_ == "npc1" and sk.npcs[0].position == "R6"
+
+
+def test_normalise_unifies_quotes_and_counts_capitals_as_the_translate_tables_did() -> None:
+    # normalise replaces the curly quotes, dashes and no-break space one character at a time and counts ASCII
+    # capitals on the UTF-8 bytes (speed): the text must read as through the character tables it replaced.
+    from txt2sce_ros.text.mentions import normalise
+
+    table = str.maketrans({"“": '"', "”": '"', "‘": "'", "’": "'", "–": "-", "—": "-", "\u00a0": " "})
+    text = ("The Waymo AV was travelling on Café Street\u00a0when a “red” sedan – a Toyota’s — "
+            "struck the AV’s ‘rear’ bumper; the AV's façade was scratched.")
+    assert normalise(text) == normalise(text.translate(table))
+    assert "“" not in normalise(text) and "’" not in normalise(text) and "\u00a0" not in normalise(text)
+    # Capitals decide whether a narrative is all caps: ASCII letters only, as before, with accented words beside.
+    caps = "THE AV WAS STOPPED ON CAFÉ STREET WHEN A SEDAN STRUCK ITS RÉAR BUMPER."
+    assert normalise(caps) == normalise(caps.translate(table)) and "stopped" in normalise(caps)
+    mixed = "The AV was stopped on CAFÉ STREET when a sedan struck its rear bumper."
+    assert "stopped" in normalise(mixed) and "STREET" in normalise(mixed)
