@@ -59,7 +59,11 @@ is told indirectly ("stalled in the lane ahead", "a taxi parked at the curb ahea
 a cyclist entering the roadway from the curb, a pedestrian stepping off the median), scored before any fix: 12/14,
 8/14, 10/12; after 13/14, 11/14, 11/12; 454-461, same-direction parties beside the AV at junctions ("in the lane to
 its left made a right turn across", two left-turn lanes with a truck that "swung wide into" the AV's lane, a car
-"parked along the left curb" that "pulled out"), scored before any fix: 6/8, 4/8, 8/8; after 7/8, 8/8, 8/8.
+"parked along the left curb" that "pulled out"), scored before any fix: 6/8, 4/8, 8/8; after 7/8, 8/8, 8/8; 462-473,
+the AV's own manoeuvres (slowing to a stop, moving over around a double-parked truck into a motorcyclist's lane, a lane
+change "to prepare for a right turn" named again as "the lane change", reversing out of a space, proceeding on green
+into a red-light runner that struck its passenger side), scored before any fix: 7/11, 9/11, 11/12; after 10/11, 10/11,
+12/12.
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

@@ -188,3 +188,28 @@ def test_normalise_unifies_quotes_and_counts_capitals_as_the_translate_tables_di
     assert normalise(caps) == normalise(caps.translate(table)) and "stopped" in normalise(caps)
     mixed = "The AV was stopped on CAFÉ STREET when a sedan struck its rear bumper."
     assert "stopped" in normalise(mixed) and "STREET" in normalise(mixed)
+
+
+@pytest.mark.parametrize("text, want", [
+    # "moved into the left lane" is where the AV went: the lane the party was in is the one the AV moved over into.
+    ("The Waymo AV was traveling north on Guerrero Street and moved into the left lane to pass a stopped bus. A "
+     "scooterist traveling behind it in the left lane struck the Waymo AV's rear driver side bumper.", ("R6", "left")),
+    # A lane said in another party's relative clause is that party's, not the AV's.
+    ("The Pony.ai vehicle was traveling west on Stevens Creek Boulevard when it changed lanes to the right. During "
+     "the lane change, the Pony.ai vehicle's right rear made contact with a sedan that was traveling in the right "
+     "lane.", ("R6", "right")),
+    # Straight into the intersection and into the AV's passenger side: it came from the AV's right.
+    ("The Waymo AV was stopped at a red light on Fell Street at Scott Street. When the light turned green, the Waymo "
+     "AV proceeded through the intersection. A pickup truck traveling southbound on Scott Street entered the "
+     "intersection against the red light and struck the passenger side of the Waymo AV.", ("R3", None)),
+])
+def test_whose_lane_and_whose_side(text: str, want: tuple[str, str | None]) -> None:
+    sk = extract(text, "t")
+    party = sk.party(sk.collision.with_)
+    assert (party.position, party.lane) == want
+
+
+def test_the_avs_side_is_the_part_named_nearest_it() -> None:
+    from txt2sce_ros.text.relations import _ego_body_side
+    m = _ego_body_side("A delivery van misjudged the space and its right mirror struck the left mirror of EGO.")
+    assert m is not None and m.group(0) == "left mirror"

@@ -111,7 +111,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
-          r"lanes)|\b(?:pull(?:ed|ing)\s+"
+          r"lanes|driveway|alley)|\b(?:pull(?:ed|ing)\s+"
           r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"
           r"(?:\w+\s+)?(?:driveway|garage|"
           r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
@@ -152,6 +152,7 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 # A bare "to" before a possessive is a place ("stopped to its left began to move"), and before an article an object
 # ("yielded to a parallel parking vehicle"), not an infinitive.
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
+                     r"prepar(?:e|ed|ing)\s+for|(?:get|getting)\s+ready\s+(?:for|to)|"
                      r"intending\s+to|in\s+order\s+to|should|would|must|ought\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
@@ -305,6 +306,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
         if code == "F" and fre.search(r"\bthe\s+$", before, re.I) and fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
             continue  # "due to the encroaching pickup": a party named again by what it did, not a new move
+        if code == "F" and fre.search(r"\b(?:during|after|throughout|completing|completed)\s+(?:the|this|that|its)\s+$",
+                                      before, re.I):
+            continue  # "During the lane change, ...": the move told before, named again
         inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
         # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.

@@ -202,7 +202,16 @@ def av_lane_rank(d: Doc) -> float | None:
                 continue  # "a vehicle ahead of EGO in the left lane": the lane is the other party's
             clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", s[m.end():m.end() + 120])[0]
             lm = _ABS_LANE.search(clause)
-            if lm and not fre.search(r"\b(?:into|onto|toward)\s+the\s+\S+\s*$", clause[:lm.start() + 5], re.I):
+            # A lane said in a relative clause of another party is that party's ("EGO's right rear made contact
+            # with a motorcycle that was traveling in the right lane"); "EGO was traveling behind a pickup truck in
+            # the right lane" keeps both in it.
+            if lm and any(m.end() < x.start and x.end <= m.end() + lm.start() and x.kind in ("party", "obstacle") and
+                          fre.search(r"\b(?:that|which|who|was|were)\b", s[x.end:m.end() + lm.start()], re.I)
+                          for x in d.ments[i]):
+                lm = None
+            # "moved into the left lane": where the AV went, not where it was
+            if lm and not fre.match(r"(?:into|onto)\b", lm.group(0), re.I) and \
+                    not fre.search(r"\b(?:into|onto|toward)\s+the\s+\S+\s*$", clause[:lm.start() + 5], re.I):
                 return _lane_rank(lm)
     return None
 
@@ -276,9 +285,12 @@ def _ego_body_side(s: str) -> re.Match[str] | None:
     """The side of the AV's body named in the contact sentence: a part "of EGO" or "EGO's" part first; a part
     said of the other party ("the passenger side of the van made contact with ...") never."""
     found = list(_BODY_SIDE.finditer(s))
-    for m in found:
-        if fre.match(r"[\w\s-]{0,30}?\bof\s+(?:the\s+)?(?:stopped\s+|stationary\s+)?EGO\b", s[m.end():]) or \
-                fre.search(r"\bEGO's\s+(?:[\w-]+\s+){0,2}$", s[max(0, m.start() - 30):m.start()]):
+    for k, m in enumerate(found):
+        of = fre.match(r"[\w\s-]{0,30}?\bof\s+(?:the\s+)?(?:stopped\s+|stationary\s+)?EGO\b", s[m.end():])
+        # "its right mirror struck the left mirror of EGO": the part nearest "of EGO" is the AV's
+        if of and k + 1 < len(found) and found[k + 1].start() < m.end() + of.end():
+            of = None
+        if of or fre.search(r"\bEGO's\s+(?:[\w-]+\s+){0,2}$", s[max(0, m.start() - 30):m.start()]):
             return m
     for m in found:
         if not fre.match(r"[\w\s-]{0,30}?\bof\s+(?:the|a|an|its|their)\s+(?!EGO)", s[m.end():]):
