@@ -33,7 +33,8 @@ _STAMP = "iI"                         # builtin_interfaces/Time: sec, nanosec
 def layout_key(frame: Frame, command: ControlCommand | None) -> tuple:
     """What fixes a step's layout: the entities' names and categories (strings, tails, paddings), the light
     states (the lights body) and whether a command follows. Equal keys, equal layouts."""
-    return (frame.ego.name, frame.ego.category, frame.lights, command is None,
+    lights = frame.lights if isinstance(frame.lights, tuple) else tuple(frame.lights)   # hashable either way
+    return (frame.ego.name, frame.ego.category, lights, command is None,
             *[(o.name, o.category) for o in frame.objects])
 
 

@@ -364,3 +364,27 @@ def test_metadata_yaml_reads_back_as_written(name: str) -> None:
     text = metadata_yaml(value)
     assert yaml.safe_load(text) == value
     assert YAML(typ="safe").load(io.StringIO(text)) == value
+
+
+def test_frames_with_list_lights_record_as_tuples_do(tmp_path: Path) -> None:
+    # A Frame built with lists (not the contract's tuples) must record, and give the same bag as with tuples.
+    import dataclasses
+    import itertools
+
+    from oracle_monitor import runwriter
+
+    def record(path: Path, frames) -> bytes:
+        clock = itertools.count(1_700_000_000_000_000_000, 1000)
+        original = runwriter.time.time_ns
+        runwriter.time.time_ns = lambda: next(clock)
+        try:
+            with RunWriter(path, flush_interval=1e9) as w:
+                for f in frames:
+                    w.frame(f)
+        finally:
+            runwriter.time.time_ns = original
+        return (path / "bag.mcap").read_bytes()
+
+    frames = _frames()
+    as_lists = [dataclasses.replace(f, lights=list(f.lights), objects=list(f.objects)) for f in frames]
+    assert record(tmp_path / "lists" / "bag", as_lists) == record(tmp_path / "tuples" / "bag", frames)
