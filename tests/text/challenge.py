@@ -63,7 +63,8 @@ its left made a right turn across", two left-turn lanes with a truck that "swung
 the AV's own manoeuvres (slowing to a stop, moving over around a double-parked truck into a motorcyclist's lane, a lane
 change "to prepare for a right turn" named again as "the lane change", reversing out of a space, proceeding on green
 into a red-light runner that struck its passenger side), scored before any fix: 7/11, 9/11, 11/12; after 10/11, 10/11,
-12/12.
+12/12; 474-477, chain collisions (a party told after the AV's contact that strikes another party), scored before any
+fix: 6/8, 5/8, 4/4; after 7/8, 6/8, 4/4 (474 still misses: "a pickup truck following the sedan" is taken for the sedan).
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

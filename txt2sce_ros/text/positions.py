@@ -18,7 +18,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # A party said to be on another street than the AV's is on a crossing road: the AV is at a junction with it.
     cross = _on_other_street(d, ctx)
     junction = d.junction or cross
-    queue = fre.search(r"\b(?:behind|following|trailing)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?([\w-]+)", ctx, re.I)
+    # Behind a party already placed behind the AV, or striking one in a chain ("a second motorcyclist then
+    # collided with the first motorcyclist"): it came from further behind.
+    queue = fre.search(r"\b(?:behind|following|trailing|collided\s+with|made\s+contact\s+with|rear[- ]ended|struck)\s+"
+                       r"(?:the|a|an)\s+"
+                       r"(?:[\w-]+\s+)?([\w-]+)", ctx or d.sents[e.first.sent][e.first.end:], re.I)
     if queue and queue.group(1).lower() in behind_av:
         return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)

@@ -214,6 +214,19 @@ def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
     return False
 
 
+def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
+    """A party named after the AV's contact that itself makes contact in the next sentences ("A second passenger
+    car then made contact with the SUV"): a chain collision's party takes part in the event (sketch.md)."""
+    if e.kind != "party" or d.contact_sent is None or first.sent in d.summary or \
+            not 0 < first.sent - d.contact_sent <= 2:
+        return False
+    s = d.sents[first.sent]
+    for m in CONTACT.finditer(s):
+        if m.start() > first.end and who_for(m.start(), d.ments[first.sent], None) == e.idx:
+            return True
+    return False
+
+
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
     parties, obstacles = [], []
     for e in d.ents:
@@ -222,7 +235,8 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         first_detail = [m for m in e.mentions if m.sent not in d.summary]
         first = first_detail[0] if first_detail else e.first
         is_partner = e.idx == d.partner
-        if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start):
+        if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start) and \
+                not _in_chain(d, e, first):
             continue
         moved = any(a.who == e.idx and a.code in "abcdefgijkmFTOP" for a in d.acts)  # O, P: out of a parking spot
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
