@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from .argtypes import POSITIVE
+from .argtypes import POSITIVE, count
 
 #: Error reasons printed on the console; the rest are counted (all of them are in the output file).
 MAX_ERRORS_SHOWN = 10
@@ -25,6 +25,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model", default=None, help="model name (default deepseek-chat; env TXT2SCE_LLM_MODEL)")
     parser.add_argument("--timeout", type=POSITIVE, default=None, help="LLM request timeout, s")
     parser.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
+    parser.add_argument("--workers", "-j", type=count(ge=1, le=64), default=None,
+                        help="processes for an offline batch of 200+ reports (default: config `workers`, 'auto' = "
+                             "the usable cores, at most 8); the output is the same whatever the count")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -44,8 +47,10 @@ def run(args: argparse.Namespace) -> int:
     total = count_inputs(args.inputs)
     inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
     out = Path(args.out)
-    results = echo_errors(run_batch(inputs, backend=backend, llm=llm), "txt2sce extract", where=str(out),
-                          limit=MAX_ERRORS_SHOWN)
+    workers = args.workers or _config_workers(cfg.get("workers", "auto"))
+    batch = run_batch(inputs, backend=backend, llm=llm) if llm is not None else \
+        run_batch(inputs, backend=backend, workers=workers)
+    results = echo_errors(batch, "txt2sce extract", where=str(out), limit=MAX_ERRORS_SHOWN)
     if not args.quiet and total and total >= int(cfg.get("progress_min_reports", 50)):
         from tqdm import tqdm
 
@@ -79,6 +84,17 @@ def run(args: argparse.Namespace) -> int:
     if errors and errors == n:
         return 2
     return 1 if errors or failed_pdfs else 0
+
+
+def _config_workers(value: object) -> int:
+    from ..errors import InputError
+    from ..text.pipeline import default_workers
+
+    if value in (None, "auto"):
+        return default_workers()
+    if isinstance(value, int) and not isinstance(value, bool) and value >= 1:
+        return value
+    raise InputError(f"config/extract.yaml: workers must be 'auto' or a whole number >= 1, not {value!r}")
 
 
 def _forms_path(out: Path) -> Path:
