@@ -125,6 +125,12 @@ class RefLine:
         self._chunk_inv_cos = np.array(inv_cos)
         self._chunk_lists = (self._chunk_s0.tolist(), self._chunk_s1.tolist(), self._chunk_x.tolist(),
                              self._chunk_y.tolist(), self._chunk_r.tolist(), inv_cos)
+        # `far_points`: the live chunks' arrays by chunk range, and per end of the line (start, then end) its
+        # vertex, the end segment's heading as cos and sin, and which way is beyond it.
+        self._live_chunks: dict[tuple[int, int], tuple[np.ndarray, ...] | None] = {}
+        self._ends = tuple((float(self.xy[end, 0]), float(self.xy[end, 1]), math.cos(float(self._seg_heading[k])),
+                            math.sin(float(self._seg_heading[k])), sign)
+                           for end, k, sign in ((0, 0, -1.0), (n - 1, nseg - 1, 1.0)))
         # Projections by (x, y, first segment, end segment), which fully determine the answer: the planner projects
         # the ego twice per step alike (off-route check, then the step), and static objects and stop lines again
         # every step with a window that covers the whole (short) line.
@@ -342,20 +348,27 @@ class RefLine:
         offset is only the distance across the end segment: that is tested as it is computed."""
         xs = np.asarray(xs, dtype=float)
         ys = np.asarray(ys, dtype=float)
-        live = (self._chunk_s1 > s0 - CHUNK_SLACK) & (self._chunk_s0 < s1 + CHUNK_SLACK)
-        if not live.any():
+        cs0, cs1 = self._chunk_lists[0], self._chunk_lists[1]
+        k_lo = bisect.bisect_right(cs1, s0 - CHUNK_SLACK)      # the live chunks: a range, as s is sorted
+        k_hi = bisect.bisect_left(cs0, s1 + CHUNK_SLACK)
+        if k_lo >= k_hi:
             return np.ones(len(xs), dtype=bool)
-        inv_cos = self._chunk_inv_cos[live]
-        if np.isinf(inv_cos).any():
+        live = self._live_chunks.get((k_lo, k_hi))
+        if live is None:
+            if len(self._live_chunks) >= PROJECTION_CACHE:
+                self._live_chunks.clear()
+            inv_cos = self._chunk_inv_cos[k_lo:k_hi]
+            live = self._live_chunks[(k_lo, k_hi)] = None if np.isinf(inv_cos).any() else (
+                self._chunk_x[k_lo:k_hi], self._chunk_y[k_lo:k_hi], self._chunk_r[k_lo:k_hi], inv_cos)
+        if live is None:
             return None
-        gap = np.hypot(xs[:, None] - self._chunk_x[live], ys[:, None] - self._chunk_y[live]) - self._chunk_r[live]
+        cx, cy, r, inv_cos = live
+        gap = np.hypot(xs[:, None] - cx, ys[:, None] - cy) - r
         far = (gap > reach * inv_cos * (1.0 + 1e-9) + CHUNK_SLACK).all(axis=1)
-        for end, k, sign in ((0, 0, -1.0), (len(self.xy) - 1, self._last_seg, 1.0)):
-            if not live[0 if end == 0 else -1]:
+        for is_live, (ex, ey, c, s, sign) in zip((k_lo == 0, k_hi == len(cs0)), self._ends):
+            if not is_live:
                 continue
-            h = float(self._seg_heading[k])
-            c, s = math.cos(h), math.sin(h)
-            dx, dy = xs - float(self.xy[end, 0]), ys - float(self.xy[end, 1])
+            dx, dy = xs - ex, ys - ey
             beyond = sign * (dx * c + dy * s) > -CHUNK_SLACK       # may be clamped to this end
             far &= ~(beyond & (np.abs(dy * c - dx * s) < reach + CHUNK_SLACK))
         return far
