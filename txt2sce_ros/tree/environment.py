@@ -16,7 +16,8 @@ from ..errors import InputError
 from ..seed.context import LanePos, SeedContext
 from ..seed.model import SignalPhase, SignalPlan
 from ..seed.signal_story import DecodedPlan, read_plan, write_plan
-from .trajectory import footprint_extent
+from .dynamics import initial_speed
+from .trajectory import feasible_s, footprint_extent
 from .values import Recorder, uniform
 
 
@@ -100,6 +101,7 @@ class SignalTiming:
     red: float = 12.0
     hold: float = 3600.0
     margin: float = 0.7     # the yellow starts when the ego is `yellow + margin` s from the stop line
+    lead: float = 1.0       # s an approach start (`approach_start`) drives before the dilemma zone begins
 
 
 @lru_cache(maxsize=1)
@@ -200,7 +202,8 @@ def stop_line(ctx: SeedContext, sid: str, *, slack: float = 0.0) -> LanePos | No
 
 
 def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Recorder, *,
-                   timing: SignalTiming | None = None, slack: float = 0.0, time_limit: float = 60.0) -> bool:
+                   timing: SignalTiming | None = None, slack: float = 0.0, time_limit: float = 60.0,
+                   approach: "Approach | None" = None) -> bool:
     """For a signal block `tls` set to yellow: the lights start in the schedule's final green (Init) and the
     yellow starts once the ego is in the dilemma zone — then red, then green as `_schedule` says, each phase its
     duration after the yellow began. False (the block unchanged: the yellow then shows from t = 0, as `tls` wrote
@@ -216,7 +219,9 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
     stack under test drives at its own speed: the time to the line is what fixes where red finds it. `alongRoute`
     is false (distance along the ego's heading): the approach to a stop line is straight, and every player
     measures that the same way. The yellow stays the plan's first phase, so the scenario is still labelled by it
-    (tree features, analysis `signal_label`); only the Init actions show green."""
+    (tree features, analysis `signal_label`); only the Init actions show green. `approach` (`approach_start`):
+    its line is used even where the seed's own AV cannot reach it (it stands at the line), for the nodes that
+    start the AV back on its approach."""
     timing = timing or signal_timing()
     decoded = signal_block(parts)
     phases = decoded.plan.phases
@@ -231,6 +236,8 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
     # the run): the schedule's own are used.
     phases = tuple(SignalPhase(n, d, p.states) for p, (n, d, _a, _b) in zip(phases, schedule))
     line = stop_line(ctx, first[0], slack=slack)
+    if line is None and approach is not None and approach.signal == first[0]:
+        line = approach.line          # the seed's AV stands at the line; the approach start drives up to it
     if line is None:
         return False
     name = decoded.plan.name
@@ -253,6 +260,53 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
     return True
 
 
+@dataclass(frozen=True, slots=True)
+class Approach:
+    """A start on the AV's approach to the first traffic light facing it on its start road (`approach_start`)."""
+
+    signal: str         # the light's id
+    line: LanePos       # its stop line on the AV's lane
+    s: float            # the AV's new start s (same road and lane as the seed's start)
+    speed: float        # m/s at the start
+
+
+def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: float,
+                   timing: SignalTiming | None = None) -> Approach | None:
+    """WPM on the AV's initial location for a dilemma-zone yellow (TLS): where the seed starts the AV too close to
+    the light it faces to arrive at speed (standing at the line, as in a report of an AV waiting at a red light,
+    or moving but already inside the zone), a start further back on the same lane from which the AV, at its seed
+    speed (`speed` when it stood), drives `lead` s before it is `yellow + margin` s from the line: the yellow then
+    turns while it approaches, as the dilemma zone intends, instead of showing from t = 0 to an AV that is at the
+    line or cannot stop anyway. None when the seed's start already gives that approach, no traffic light faces
+    the AV on its start road, or the new start is not feasible (`feasible_s`: on the road and lane, never behind
+    a party that started behind the AV in its lane; `margin`, `min_gap` as there)."""
+    net, m, ego = ctx.network, ctx.map, ctx.starts.get("ego")
+    if net is None or m is None or ego is None or not m.has_road(ego.road):
+        return None
+    timing = timing or signal_timing()
+    v = initial_speed(ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")) or 0.0
+    v = v if v > 0.0 else float(speed)
+    front = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))[1]
+    sign = m.direction(ego.road, ego.lane)
+    for sid in ctx.ego_signals:
+        sig = net.signals.get(sid)
+        if sig is None or not sig.is_traffic_light or str(sig.road_id) != ego.road:
+            continue
+        ahead = sign * (sig.s - ego.s)          # reference point to the line
+        if ahead <= 0.0:
+            return None                          # the AV starts past the light: it never approaches it
+        need = v * (timing.yellow + timing.margin + timing.lead) + front
+        if ahead >= need:
+            return None                          # the seed's own start already arrives at speed
+        new_s = sig.s - sign * need
+        if not feasible_s(ctx, "ego", ego, new_s, margin, min_gap):
+            return None
+        lanes = tuple(getattr(sig, "controlled_lanes", ()) or ())
+        lane = ego.lane if not lanes or ego.lane in lanes else lanes[0]
+        return Approach(str(sid), LanePos(road=ego.road, lane=int(lane), s=float(sig.s)), float(new_s), v)
+    return None
+
+
 #: m: the map's lights within this distance of the light facing the AV belong to its junction (a new plan sets them).
 JUNCTION_RADIUS = 60.0
 #: rad: a light whose heading is within this of the AV's light's (or of its opposite) is on the AV's approach or
@@ -261,7 +315,8 @@ _AXIS = math.radians(45.0)
 
 
 def new_signal(ctx: SeedContext, state: str, rec: Recorder, *, timing: SignalTiming | None = None,
-               slack: float = 0.0, time_limit: float = 60.0) -> list[etree._Element] | None:
+               slack: float = 0.0, time_limit: float = 60.0, approach: "Approach | None" = None,
+               ) -> list[etree._Element] | None:
     """TLS on a seed without a signal plan (its report named no light, yet its map has lights facing the AV): the
     parts of a new signal block (one Init `GlobalAction` per light, then the signal Story, in the timed form of
     `seed.signal_story`) for the lights of the AV's junction — the map's traffic lights within `JUNCTION_RADIUS`
@@ -269,12 +324,14 @@ def new_signal(ctx: SeedContext, state: str, rec: Recorder, *, timing: SignalTim
     the conflicting one, phase by phase as `_schedule` says (as `tls` rewrites a seed's own plan), so a yellow can
     then wait for the dilemma zone (`dilemma_yellow`). Lights nothing sets stay `off`, which a stack passes as if
     there were none: this is what brings a light into such a seed. None when no traffic light faces the AV or the
-    AV cannot reach its stop line (`stop_line`, `slack` as there): a light it never meets tests nothing."""
+    AV cannot reach its stop line (`stop_line`, `slack` as there) nor start back on its approach (`approach`): a
+    light it never meets tests nothing."""
     net = ctx.network
     if net is None:
         return None
     facing = [sid for sid in ctx.ego_signals if sid in net.signals and net.signals[sid].is_traffic_light]
-    if not facing or stop_line(ctx, facing[0], slack=slack) is None:
+    if not facing or (stop_line(ctx, facing[0], slack=slack) is None
+                      and (approach is None or approach.signal != facing[0])):
         return None
     primary = net.signals[facing[0]]
     junction = sorted(str(sid) for sid, sg in net.signals.items()

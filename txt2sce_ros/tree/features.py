@@ -14,7 +14,7 @@ from lxml import etree
 from .blocks import BlockKind
 from .dynamics import initial_speed
 from ..seed.context import SeedContext, lane_pos
-from .environment import primary_signal, signal_block, weather_type
+from .environment import approach_start, primary_signal, signal_block, weather_type
 from .physical import entity_element
 
 _EVENT_RE = re.compile(r"^(?P<entity>.+?)_e(?P<k>\d+)_(?P<action>.+)$")
@@ -53,6 +53,18 @@ def weather_features(env: etree._Element, cfg: dict[str, Any], n: int) -> dict[s
             "elevation": bin_of(_f(sun, "elevation"), *cfg["environment"]["elevation"], n),
             "precipitation": bin_of(_f(prec, "intensity"), *spec["precipitation"], n),
             "friction": bin_of(_f(env.find("RoadCondition"), "frictionScaleFactor", 1.0), *spec["friction"], n)}
+
+
+def _is_approach(private: etree._Element | None, ctx: SeedContext, cfg: dict[str, Any]) -> bool:
+    """Whether the ego's start is the seed's approach start (`environment.approach_start`): what the yellow
+    versions of the signal blocks need under a budget."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition") if private is not None else None
+    if tele is None:
+        return False
+    init = cfg["trajectory"]["init_location"]
+    found = approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
+                           min_gap=float(init["min_gap"]))
+    return found is not None and abs(lane_pos(tele).s - round(found.s, 3)) < 1e-6
 
 
 def _shift_bin(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any], n: int) -> int:
@@ -166,8 +178,10 @@ def all_features(kind: BlockKind, elements: list[etree._Element | None], origina
         return weather_features(elements[0], cfg, n)
     if kind is BlockKind.EGO:
         speed = initial_speed(elements[0])
-        return {"shift": _shift_bin(elements[0], "ego", ctx, cfg, n),
-                "start": "standing" if speed is not None and speed <= 0.0 else "moving"}
+        start = "standing" if speed is not None and speed <= 0.0 else "moving"
+        if start == "moving" and _is_approach(elements[0], ctx, cfg):
+            start = "approach"
+        return {"shift": _shift_bin(elements[0], "ego", ctx, cfg, n), "start": start}
     if kind is BlockKind.NPC:
         return npc_features(elements[0], elements[1] if len(elements) > 1 else None, ctx, cfg, n)
     if kind is BlockKind.NEW_PARTY:

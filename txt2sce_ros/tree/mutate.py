@@ -28,11 +28,11 @@ from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
 from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, standing_start, tsm
-from .environment import dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
+from .environment import approach_start, dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .parties import ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
-from .trajectory import keep_clear_of_queue, place_near_ego, shift_init_location, wpm_lane_change
+from .trajectory import keep_clear_of_queue, move_start, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
 from .xml import parse_fragment, to_text
 
@@ -59,6 +59,13 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
     originals = _parse(block.fragments)
     m = int(cfg["tree"]["mutations_per_block"])
     out: list[Variant] = []
+    init = cfg["trajectory"]["init_location"]
+    # a start on the AV's approach to the light it faces, where the seed's start is too close to it for a
+    # dilemma-zone yellow (the ego block writes it; the yellow versions of the signal blocks need it)
+    approach = approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
+                              min_gap=float(init["min_gap"])) \
+        if block.kind in (BlockKind.EGO, BlockKind.SIGNAL, BlockKind.NEW_SIGNAL) else None
+    yellow_needs = (("ego", "approach"),) if approach is not None else ()
 
     seen: set[tuple[str, ...]] = set()
 
@@ -84,7 +91,6 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 wm(els[0], wtype, rng, cfg["environment"], rec)
                 emit(els, "WM", rec)
         elif block.kind is BlockKind.EGO:
-            init = cfg["trajectory"]["init_location"]
             # a party the new-party slot stands `near_gap` m behind the seed's AV (close_behind) must still be clear
             # of a start moved back: at most near_gap - 0.5 m back then
             back = float(init["near_gap"]) - 0.5 if int(cfg["tree"].get("new_party_slots", 0)) else None
@@ -99,6 +105,16 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
             els, rec = _parse(block.fragments), Recorder()
             if standing_start(els[0], rec):
                 emit(els, "TSM-start", rec)
+            # last: the AV started back on its approach to the light it faces, at speed (enumerated, so a budget
+            # keeps it; after the seed's own start, so the deeper layers' chain still grows under that one)
+            if approach is not None:
+                els, rec = _parse(block.fragments), Recorder()
+                move_start(els[0], approach.s, rec)
+                speed = els[0].find("PrivateAction/LongitudinalAction/SpeedAction/SpeedActionTarget/"
+                                    "AbsoluteTargetSpeed")
+                if speed is not None:
+                    rec.set(speed, "value", approach.speed, digits=3)
+                emit(els, "WPM-approach", rec)
         elif block.kind is BlockKind.NPC:
             for cat in _choices("npc", list(cfg["physical"]["categories"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
@@ -125,19 +141,22 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 tls(els, state, rec, facing=ctx.ego_signals, time_limit=limit)
                 if state == "yellow":  # the yellow waits for the ego's dilemma zone where it can reach the line
                     dilemma_yellow(els, ctx, rec, slack=cfg["trajectory"]["init_location"]["max_shift"],
-                                   time_limit=limit)
-                emit(els, "TLS", rec)
+                                   time_limit=limit, approach=approach)
+                # a yellow tests an AV that arrives at speed: under a budget, the approach start where the seed's
+                # start is too close to the light
+                emit(els, "TLS", rec, needs=yellow_needs if state == "yellow" else ())
         elif block.kind is BlockKind.NEW_SIGNAL:
             limit = time_limit_of(ctx.root)
             slack = float(cfg["trajectory"]["init_location"]["max_shift"])
             for state in _choices("new_signal", list(cfg["environment"]["signal_states"]), cfg, rng):
                 rec = Recorder()
-                made = new_signal(ctx, state, rec, slack=slack, time_limit=limit)
+                made = new_signal(ctx, state, rec, slack=slack, time_limit=limit, approach=approach)
                 if made is None:
                     break                   # no light faces the AV where it drives: nothing to bring in
                 if state == "yellow":       # reachable (new_signal checked the stop line): the dilemma zone
-                    dilemma_yellow(made, ctx, rec, slack=slack, time_limit=limit)
-                emit(made, "TLS-new", rec, per_slot=(len(made) - 1, 1))
+                    dilemma_yellow(made, ctx, rec, slack=slack, time_limit=limit, approach=approach)
+                emit(made, "TLS-new", rec, per_slot=(len(made) - 1, 1),
+                     needs=yellow_needs if state == "yellow" else ())
         elif block.kind is BlockKind.EVENT:
             entity, action = split_event_name(block.key)
             cat = ctx.categories.get(entity, "car")

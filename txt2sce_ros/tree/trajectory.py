@@ -131,14 +131,22 @@ def shift_init_location(private: etree._Element, entity: str, rng: np.random.Gen
             continue
         new_s = start.s + shift
         if feasible_s(ctx, entity, start, new_s, cfg["margin"], cfg["min_gap"]):
-            text = rec.set(tele, "s", new_s, digits=3)
-            for wp in private.iterfind("PrivateAction/RoutingAction/AssignRouteAction/Route/Waypoint[1]/Position/"
-                                       "LanePosition"):
-                wpp = lane_pos(wp)
-                if (wpp.road, wpp.lane, wpp.s) == (start.road, start.lane, start.s):
-                    rec.set(wp, "s", text)
-            return float(text) - start.s
+            return move_start(private, new_s, rec) - start.s
     return 0.0
+
+
+def move_start(private: etree._Element, new_s: float, rec: Recorder) -> float:
+    """Set the start s of an entity's Init (its TeleportAction LanePosition) and, when its route's first waypoint
+    is that start, the waypoint with it (the route starts where the entity does). Returns the s as written."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
+    start = lane_pos(tele)
+    text = rec.set(tele, "s", new_s, digits=3)
+    for wp in private.iterfind("PrivateAction/RoutingAction/AssignRouteAction/Route/Waypoint[1]/Position/"
+                               "LanePosition"):
+        wpp = lane_pos(wp)
+        if (wpp.road, wpp.lane, wpp.s) == (start.road, start.lane, start.s):
+            rec.set(wp, "s", text)
+    return float(text)
 
 
 def footprint_extent(obj: etree._Element | None) -> tuple[float, float]:
