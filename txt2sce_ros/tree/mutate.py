@@ -3,9 +3,9 @@
 | block | operators | versions (paper defaults) |
 |---|---|---|
 | weather | WM | enumerate every weather type, parameters drawn per type |
-| ego | WPM (initial location, context-aware); TSM-start (standing start) | `mutations_per_block`, + 1 (enumerated: a budget keeps a standing and a moving start) |
+| ego | WPM (initial location, context-aware); TSM-start (standing start); WPM-approach (started back on its approach to the light it faces, where the seed's start is too close for a dilemma zone) | `mutations_per_block`, + 1, + 1 where an approach start exists (enumerated: a budget keeps a standing and a moving start) |
 | npc | NCM (+ DM, VPM follow the category) + WPM initial location; WPM-near (close to the AV) | enumerate every category, + 1 |
-| signal | TLS (yellow: switched on in the ego's dilemma zone) | enumerate yellow / red / green |
+| signal | TLS (yellow: switched on in the ego's dilemma zone; needs the approach start where the seed has one) | enumerate yellow / red / green |
 | new_signal | TLS-new: a plan for the map's lights facing the AV, in a seed without one (environment.new_signal) | enumerate yellow / red / green |
 | event | TSM, DTM, WPM (lane changes) — whichever the event's actions allow | `mutations_per_block` |
 | obstacle | DM + OIM (re-placed on the AV's path) | `mutations_per_block` |
