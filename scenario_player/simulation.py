@@ -159,6 +159,7 @@ class Simulation:
         self.done = False
         self.end_reason = self.verdict_hint = ""
         self._started = False
+        self._before: list | None = None    # positions at t_k of a step prepare_step began (None: none begun)
         # The constructor builds the world so that `network`, `world` and `ego` exist at once; the first reset()
         # uses that untouched build instead of building it again (the storyboard build is ~1 ms, a tenth of a
         # typical closed-loop run's player time).
@@ -227,15 +228,26 @@ class Simulation:
 
     # -- the step -------------------------------------------------------------------------------------------------
     def step(self, command: ControlCommand | None = None) -> Frame:
-        """Advance one dt (the documented step function) and return the new frame."""
+        """Advance one dt (the documented step function) and return the new frame. A step begun by
+        `prepare_step` is completed with `command` (the frame is the current one when the run ended there)."""
         self.advance(command)
         return self.frame()
 
     def advance(self, command: ControlCommand | None = None) -> None:
         """`step` without building the Frame (batch runs that only need the trajectory)."""
+        self.prepare_step()
+        self._complete_step(command)
+
+    def prepare_step(self) -> None:
+        """The part of the next step that does not depend on the planner's command (1. triggers, 2. actions, and
+        the kinematics of every entity the planner does not drive): a lock-step node runs it while the planner
+        works on the frame just published, so that only the rest of `step` lies between the command and the next
+        frame. Each entity's motion reads only its own state, the road and the world's friction, so moving the
+        planner-driven ego after the others gives the same bits as moving everyone in list order (the
+        regress fingerprints check this). Calling it again before `step` does nothing."""
         if not self._started:
             self.reset()
-        if self.done:
+        if self.done or self._before is not None:
             return
         w, dt = self.world, self.config.dt
         # 1. triggers
@@ -251,15 +263,24 @@ class Simulation:
         before = [(e.x, e.y, e.road_t, e.road_id) if e.track is not None else (e.x, e.y, 0.0, None)
                   for e in order]
         w.step_runs(dt)
-        # 3 + 4. planner command and kinematics
+        # 4. kinematics of everyone the storyboard drives
         for ent, (_px, _py, pt, proad) in zip(order, before):
-            if not ent.present:
-                continue
-            if ent.planner:
+            if ent.present and not ent.planner:
+                move_storyboard(w, ent, dt, pt, proad)
+        self._before = before
+
+    def _complete_step(self, command: ControlCommand | None) -> None:
+        before = self._before
+        if before is None:
+            return                      # the run ended in prepare_step (or was never prepared: done)
+        self._before = None
+        w, dt = self.world, self.config.dt
+        order = w.order
+        # 3 + 4. planner command and kinematics of the planner-driven ego
+        for ent in order:
+            if ent.planner and ent.present:
                 if move_planner(w, ent, command, dt):
                     self.slip_steps += 1
-            else:
-                move_storyboard(w, ent, dt, pt, proad)
         # 5. derived states
         w.t = t = round((w.step_index + 1) * dt, 9)
         w.step_index += 1
@@ -278,6 +299,7 @@ class Simulation:
         # 7. record
         self.recorder.add(t, order)
         ego = self.ego
+        stop = self.storyboard.stop_trigger
         stories = self.storyboard.stories
         if stop is None and stories and all(s.state is State.COMPLETE for s in stories):
             self._finish("storyboard_complete")
