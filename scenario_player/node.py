@@ -37,6 +37,7 @@ subscribers still missing -> a warning, and the run goes ahead.
 from __future__ import annotations
 
 import collections
+import gc
 import sys
 import time
 from dataclasses import replace
@@ -248,6 +249,18 @@ class PlayerNode(Node):
         self._status(replace(sim.status, state="started"))
         if no_planner:
             sim.abort("planner_not_responding")
+        # Everything loaded so far (the scenario, the road, rclpy, the libraries) lives as long as the run: frozen,
+        # the collector's full passes skip it instead of walking it again every few hundred steps. Thawed at the
+        # run's end, so what the run leaves behind is collected as usual.
+        gc.freeze()
+        try:
+            return self._play(sim, frame, needs_planner, env, executor)
+        finally:
+            gc.unfreeze()
+
+    def _play(self, sim: Simulation, frame: Frame, needs_planner: bool, env: ScenarioEnvelope,
+              executor: SingleThreadedExecutor) -> RunStatus:
+        """The run's steps, from its first frame to the final status (published)."""
         wall0 = time.monotonic()
         next_wall = wall0
         # The first frame of a run waits as long as start-up may take: the stack loads the new map and plans its

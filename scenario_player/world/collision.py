@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from .measure import box_corners
+
 if TYPE_CHECKING:
     from .entity import Entity
 
@@ -49,8 +51,6 @@ def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
     `measure.box_center`, hence the same bits) and corners only for the pairs the circles cannot separate. With
     the handful of entities of a scenario, plain floats beat numpy arrays here (array set-up costs more than the
     pairs)."""
-    from .measure import box_corners
-
     live = [e for e in entities if e.present]
     n = len(live)
     if n < 2:
