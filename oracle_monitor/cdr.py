@@ -328,16 +328,23 @@ def _vec(x: float, y: float, z: float) -> NS:
     return NS(x=x, y=y, z=z)
 
 
+_CMD_HEAD = struct.Struct("<iII")         # stamp (sec, nanosec), frame_id's length
+
+
 def decode_command(data: bytes | memoryview) -> tuple[int, ControlCommand]:
     """A `geometry_msgs/TwistStamped` as `ros_io.twist_to_command` reads it, with its stamp in integer ns (the
-    lock-step key of `ros_io.stamp_key`): the player takes its commands raw, without an rclpy message."""
-    r = _R(data)
-    sec, nanosec = r.unpack(_STAMP, 4)
-    r.string()                              # frame_id
-    linear = r.unpack(_f64x3, 8)
-    angular = r.unpack(_f64x3, 8)
-    return sec * 1_000_000_000 + nanosec, ControlCommand(t=sec + nanosec * 1e-9, speed=linear[0],
-                                                         yaw_rate=angular[2])
+    lock-step key of `ros_io.stamp_key`): the player takes its commands raw, without an rclpy message. Read by
+    offsets (the player decodes one per step; the frame id is skipped, not decoded): stamp at 4, the frame id's
+    length at 12, the twist 8-aligned after the string."""
+    if len(data) < 16 or data[1] != 1:
+        raise ValueError("not a little-endian CDR TwistStamped")
+    sec, nanosec, n = _CMD_HEAD.unpack_from(data, 4)
+    p = 16 + n
+    p += (4 - p) % 8                        # align 8 relative to the end of the encapsulation header
+    if p + 48 > len(data):
+        raise ValueError("TwistStamped shorter than its frame id and twist")
+    speed, _ly, _lz, _ax, _ay, yaw_rate = _TWIST.unpack_from(data, p)
+    return sec * 1_000_000_000 + nanosec, ControlCommand(t=sec + nanosec * 1e-9, speed=speed, yaw_rate=yaw_rate)
 
 
 def decode_odometry(data: bytes | memoryview) -> NS:

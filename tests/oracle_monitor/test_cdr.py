@@ -139,5 +139,11 @@ def test_command_decodes_as_ros_io_reads_it() -> None:
         msg.twist.linear.y, msg.twist.angular.x = 9.0, 8.0        # fields the contract ignores
         key, got = cdr.decode_command(serialize_message(msg))
         assert key == ros_io.stamp_key(msg.header.stamp) and got == ros_io.twist_to_command(msg)
+    # Every padding before the twist (frame ids of 0..8 characters).
+    for n in range(9):
+        msg = ros_io.command_to_twist(ControlCommand(t=0.05 * n, speed=1.5 + n, yaw_rate=0.01 * n))
+        msg.header.frame_id = "f" * n
+        key, got = cdr.decode_command(serialize_message(msg))
+        assert key == ros_io.stamp_key(msg.header.stamp) and got == ros_io.twist_to_command(msg), n
     with pytest.raises((ValueError, struct_error)):
         cdr.decode_command(serialize_message(TwistStamped())[:20])
