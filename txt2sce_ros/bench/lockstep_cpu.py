@@ -1,16 +1,19 @@
-"""CPU time per lock-step step of the ROS player node, load-robust enough to compare two checkouts side by side.
+"""CPU time per lock-step step of the ROS player node, to compare two checkouts side by side.
 
 `txt2sce bench player` gives the lock-step rate in wall time beside a DDS ping-pong cap; on a loaded machine both
 are dominated by scheduling and the ratio says nothing. This measures what the player itself spends per step:
 the player node runs in this process (the checkout on PYTHONPATH), a trivial planner (answers each ego frame with
 its speed, zero yaw rate) in a child process, over DDS with the project's settings. `time.process_time` (every
 thread of the process: rclpy and the DDS threads included) is taken around a short and a long run of the same
-scenario in the same node; the difference over the difference in steps is the CPU per step, without load and
-start-up; the main thread's share alone (`time.thread_time`) beside it. `--parts` also times the node's
+scenario in the same node; the difference over the difference in steps is the CPU per step, without start-up
+(CPU time still swings by a third with a shared machine's load: caches, sibling threads); the main thread's share alone (`time.thread_time`) beside it. `--parts` also times the node's
 `publish_frame`, `Simulation.step` and `Simulation.prepare_step` (main-thread CPU, same runs).
 
-Run it as a file so that the player comes from the checkout on PYTHONPATH, e.g. before and after a change:
-    PYTHONPATH=/path/to/other/checkout python txt2sce_ros/bench/lockstep_cpu.py --rounds 3
+`txt2sce bench lockstep_cpu` measures this checkout. Run the file to measure the checkout on PYTHONPATH instead
+(another worktree, main before a change), side by side in the same minutes:
+    PYTHONPATH=/path/to/other/checkout python txt2sce_ros/bench/lockstep_cpu.py --parts --rounds 5
+Under callgrind (`--separate-threads=yes`), a run with `--long 30` minus one with `--long 2.05` gives the main
+thread's instructions per step without the load's noise (docs/performance.md).
 """
 
 from __future__ import annotations
@@ -24,6 +27,8 @@ import tempfile
 import textwrap
 import time
 from pathlib import Path
+
+DESCRIPTION = "ROS lock-step player: CPU per step (process, main thread, parts), load-robust; any checkout"
 
 # The planner: echoes the ego's speed for the frame's stamp, as `bench player`'s planner does.
 _PLANNER = textwrap.dedent("""
@@ -58,6 +63,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--rounds", type=int, default=3, help="short/long pairs; the median is printed")
     ap.add_argument("--parts", action="store_true", help="also time publish_frame and Simulation.step")
     args = ap.parse_args(argv)
+    if not 0 < args.short < args.long or args.rounds < 1:
+        ap.error("needs 0 < --short < --long and --rounds >= 1 (the figure is the difference of the two runs)")
 
     from txt2sce_ros.paths import shared_dir
     from txt2sce_ros.ros_env import pick_domain_id, ros_environment
@@ -150,6 +157,11 @@ def _measure(xosc: Path, args: argparse.Namespace) -> int:
         print(f"  {'main - prepare':14s} {statistics.median(crit):7.1f}   (the main thread's CPU per step "
               f"outside the part done while the planner works)")
     return 0
+
+
+def run(args: argparse.Namespace) -> int:
+    """`txt2sce bench lockstep_cpu`: this checkout, with the parts (`--quick`: one round)."""
+    return main(["--parts", "--rounds", "1" if args.quick else "5"])
 
 
 if __name__ == "__main__":
