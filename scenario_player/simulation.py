@@ -240,7 +240,7 @@ class Simulation:
 
     def prepare_step(self) -> None:
         """The part of the next step that does not depend on the planner's command (1. triggers, 2. actions, and
-        the kinematics of every entity the planner does not drive): a lock-step node runs it while the planner
+        the kinematics and derived states of every entity the planner does not drive): a lock-step node runs it while the planner
         works on the frame just published, so that only the rest of `step` lies between the command and the next
         frame. Each entity's motion reads only its own state, the road and the world's friction, so moving the
         planner-driven ego after the others gives the same bits as moving everyone in list order (the
@@ -263,10 +263,16 @@ class Simulation:
         before = [(e.x, e.y, e.road_t, e.road_id) if e.track is not None else (e.x, e.y, 0.0, None)
                   for e in order]
         w.step_runs(dt)
-        # 4. kinematics of everyone the storyboard drives
+        # 4. kinematics of everyone the storyboard drives, and 5. their derived states (each reads only the
+        # entity's own motion and the road, not the time or the other entities)
         for ent, (_px, _py, pt, proad) in zip(order, before):
             if ent.present and not ent.planner:
                 move_storyboard(w, ent, dt, pt, proad)
+        locate_free = self.locate_free
+        for ent, (px, py, _pt, _pr) in zip(order, before):
+            if ent.present and not ent.planner:
+                derive(w, ent, dt, px, py, locate_free)
+                ent._prev_speed, ent._prev_h = ent.speed, ent.h
         self._before = before
 
     def _complete_step(self, command: ControlCommand | None) -> None:
@@ -287,7 +293,7 @@ class Simulation:
         w.signals.step(t)
         locate_free = self.locate_free
         for ent, (px, py, _pt, _pr) in zip(order, before):
-            if ent.present:
+            if ent.present and ent.planner:
                 derive(w, ent, dt, px, py, locate_free)
                 ent._prev_speed, ent._prev_h = ent.speed, ent.h
             if ent.colliding:
