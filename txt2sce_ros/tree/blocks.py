@@ -88,3 +88,6 @@ class Variant:
     # standing close behind the AV tests a standing start only (an AV driving off leaves it behind). Read from the
     # earlier layers' features; a kind not among them (not yet a layer) does not restrict.
     needs: tuple[tuple[str, str], ...] = ()
+    # (block kind, feature value) no earlier layer may hold: the two together make an invalid scenario (a car placed
+    # close behind the seed's AV overlaps an AV started back on its approach), so such a node is never written.
+    excludes: tuple[tuple[str, str], ...] = ()

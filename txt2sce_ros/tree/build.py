@@ -272,6 +272,11 @@ def _holds(path_features: tuple, kind: str, value: str) -> bool:
     return not of_kind or any(value in f[1:] for f in of_kind)
 
 
+def _has(path_features: tuple, kind: str, value: str) -> bool:
+    """Whether an earlier layer of block `kind` holds `value` (its version's feature tuple, kind first)."""
+    return any(f and f[0] == kind and value in f[1:] for f in path_features)
+
+
 def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], variants: list[list[Variant]],
                   used: list[int], depth: int, *, enumerated: bool, share: float, cap: int, written: int,
                   rng: np.random.Generator) -> tuple[list[int], bool]:
@@ -282,6 +287,9 @@ def _select_layer(parent_paths: list[tuple[int, ...]], choices: list[int], varia
     vectors = [tuple(variants[used[k]][i].features for k, i in enumerate(path)) + (vs[j].features,)
                for path, j in zip(parent_paths, choices)]
     keep = prune(vectors, share, rng)
+    # A version whose exclusion an earlier layer holds would make an invalid scenario: never a node (dropped after
+    # pruning, so the pruning's draws, and every tree without such a pair, stay as they were).
+    keep = [i for i in keep if not any(_has(vectors[i][:-1], kind, value) for kind, value in vs[choices[i]].excludes)]
     # Node budget: the layers still to come share what is left of the cap, so every block is still inserted
     # (a plain cut would drop the deepest layers: events and obstacles). The kept versions are spread over the
     # parents along diagonals (`prune.diagonal`), so each version meets different earlier ones (a cyclist in the

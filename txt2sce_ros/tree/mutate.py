@@ -30,7 +30,7 @@ from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, standing_start, tsm
 from .environment import approach_start, dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
-from .parties import ROLE_NEEDS, ROLES, new_party
+from .parties import ROLE_EXCLUDES, ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
 from .trajectory import keep_clear_of_queue, move_start, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
@@ -70,7 +70,8 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
     seen: set[tuple[str, ...]] = set()
 
     def emit(elements: list[etree._Element | None], operator: str, rec: Recorder,
-             per_slot: tuple[int, ...] | None = None, needs: tuple[tuple[str, str], ...] = ()) -> None:
+             per_slot: tuple[int, ...] | None = None, needs: tuple[tuple[str, str], ...] = (),
+             excludes: tuple[tuple[str, str], ...] = ()) -> None:
         # `per_slot`: how many of `elements` go into each of the block's slots, in order (default one each: a slot
         # that takes several siblings, the Init actions of a new signal plan, holds their texts joined)
         counts = per_slot or (1,) * len(elements)
@@ -82,7 +83,8 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
         seen.add(frags)
         feats = block_features(block.kind, elements, originals, ctx, cfg)
         out.append(Variant(block=block.index, index=len(out), operator=operator, fragments=frags,
-                           changes=tuple(rec.changes), features=feats, rng_seed=rng_seed, needs=needs))
+                           changes=tuple(rec.changes), features=feats, rng_seed=rng_seed, needs=needs,
+                           excludes=excludes))
 
     try:
         if block.kind is BlockKind.WEATHER:
@@ -200,7 +202,8 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                 rec = Recorder()
                 made = new_party(role, block.key, ctx, rng, cfg, rec)
                 if made is not None:
-                    emit(list(made), f"NCM-new:{role}", rec, needs=ROLE_NEEDS.get(role, ()))
+                    emit(list(made), f"NCM-new:{role}", rec, needs=ROLE_NEEDS.get(role, ()),
+                         excludes=ROLE_EXCLUDES.get(role, ()))
         elif block.kind is BlockKind.NEW_OBSTACLE:
             spec = cfg["environment"]["obstacle"]
             for _ in range(m):

@@ -41,6 +41,9 @@ ROLES = ("cyclist_ahead", "close_behind", "crossing", "lead_brakes")
 #: The ego start state a role tests (`Variant.needs`): a car standing close behind tests a start from standstill
 #: (an AV that drives off leaves it behind), a lead driving at the AV's speed an AV that follows it.
 ROLE_NEEDS = {"close_behind": (("ego", "standing"),), "lead_brakes": (("ego", "moving"),)}
+#: Ego starts a role's party cannot stand beside: placed `near_gap` m behind the seed's AV, the car standing close
+#: behind overlaps an AV started back on its approach to a light (moved further back than `near_gap`).
+ROLE_EXCLUDES = {"close_behind": (("ego", "approach"),)}
 
 
 def free_name(prefix: str, taken: set[str | None]) -> str:
