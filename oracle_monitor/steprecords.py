@@ -142,14 +142,11 @@ class StepPacker:
                    c[2], t + 1, t + 1, c[3], sec, nsec, c[4]]
         k = 5                                   # next constant
         t += 2
-        objects = frame.objects
-        for e in objects:
-            et = e.t
-            if et == ft:
-                s, n = sec, nsec
-            else:
-                ens = int(round(et * 1e9))
-                s, n = ens // 1_000_000_000, ens % 1_000_000_000
+        ego = frame.ego
+        entities = (ego, *frame.objects)
+        # Each entity's stamp once (its odometry and its marker carry the same one); most share the frame's.
+        stamps = [(sec, nsec) if e.t == ft else divmod(int(round(e.t * 1e9)), 1_000_000_000) for e in entities]
+        for e, (s, n) in zip(entities[1:], stamps[1:]):
             h = e.heading
             v += (c[k], t, t, c[k + 1], s, n, c[k + 2], e.x, e.y, sin(h / 2.0), cos(h / 2.0),
                   e.speed, e.accel, e.yaw_rate)
@@ -158,25 +155,13 @@ class StepPacker:
         v += (c[k], t, t, c[k + 1])
         k += 2
         t += 1
-        ego = frame.ego
-        for e in (ego, *objects):
-            et = e.t
-            if et == ft:
-                s, n = sec, nsec
-            else:
-                ens = int(round(et * 1e9))
-                s, n = ens // 1_000_000_000, ens % 1_000_000_000
+        for e, (s, n) in zip(entities, stamps):
             h = e.heading
             co, si = cos(h), sin(h)
             v += (s, n, c[k], e.x + e.center_x * co, e.y + e.center_x * si, e.height / 2.0,
                   sin(h / 2.0), cos(h / 2.0), e.length, e.width, e.height, c[k + 1])
             k += 2
-        et = ego.t
-        if et == ft:
-            s, n = sec, nsec
-        else:
-            ens = int(round(et * 1e9))
-            s, n = ens // 1_000_000_000, ens % 1_000_000_000
+        s, n = stamps[0]
         h = ego.heading
         v += (c[k], t, t, c[k + 1], s, n, c[k + 2], ego.x, ego.y, sin(h / 2.0), cos(h / 2.0),
               ego.speed, ego.accel, ego.yaw_rate)
