@@ -48,9 +48,8 @@ def run(args: argparse.Namespace) -> int:
     inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
     out = Path(args.out)
     workers = args.workers or _config_workers(cfg.get("workers", "auto"))
-    batch = run_batch(inputs, backend=backend, llm=llm) if llm is not None else \
-        run_batch(inputs, backend=backend, workers=workers)
-    results = echo_errors(batch, "txt2sce extract", where=str(out), limit=MAX_ERRORS_SHOWN)
+    results = echo_errors(run_batch(inputs, backend=backend, llm=llm, workers=workers), "txt2sce extract",
+                          where=str(out), limit=MAX_ERRORS_SHOWN)
     if not args.quiet and total and total >= int(cfg.get("progress_min_reports", 50)):
         from tqdm import tqdm
 

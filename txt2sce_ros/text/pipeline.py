@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from functools import lru_cache
+from functools import lru_cache, partial
 from typing import TYPE_CHECKING, Literal
 
 from ..errors import Txt2SceError
@@ -61,8 +61,8 @@ PARALLEL_MIN_REPORTS = 200
 _CHUNK = 16
 
 
-def _offline(inp: ReportInput | ErrorRecord) -> Sketch | ErrorRecord:
-    return inp if isinstance(inp, ErrorRecord) else sketch_report(inp)
+def _one(inp: ReportInput | ErrorRecord, **kw: object) -> Sketch | ErrorRecord:
+    return inp if isinstance(inp, ErrorRecord) else sketch_report(inp, **kw)  # type: ignore[arg-type]
 
 
 def run_batch(inputs: Iterable[ReportInput | ErrorRecord], *, workers: int = 1,
@@ -70,8 +70,7 @@ def run_batch(inputs: Iterable[ReportInput | ErrorRecord], *, workers: int = 1,
     """Sketches (or error records) for every input, in order. `workers` > 1 spreads an offline batch of at least
     `PARALLEL_MIN_REPORTS` over that many processes: each report is read alone, so the output is the same, in the
     same order, as one process gives. The LLM backends stay in this process (their requests are the cost)."""
-    if workers > 1 and kw.get("backend", "offline") == "offline" and kw.get("llm") is None and \
-            set(kw) <= {"backend"}:
+    if workers > 1 and kw.get("backend", "offline") == "offline" and kw.get("llm") is None:
         items = list(inputs)
         if len(items) >= PARALLEL_MIN_REPORTS:
             import multiprocessing as mp
@@ -80,11 +79,11 @@ def run_batch(inputs: Iterable[ReportInput | ErrorRecord], *, workers: int = 1,
             # fork: the workers start with the extractor already imported and its patterns compiled.
             ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
             with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-                yield from pool.map(_offline, items, chunksize=_CHUNK)
+                yield from pool.map(partial(_one, **kw), items, chunksize=_CHUNK)
             return
         inputs = items
     for inp in inputs:
-        yield inp if isinstance(inp, ErrorRecord) else sketch_report(inp, **kw)  # type: ignore[arg-type]
+        yield _one(inp, **kw)
 
 
 def default_workers() -> int:
