@@ -67,6 +67,30 @@ def test_a_combined_element_names_the_triggers_of_its_parts() -> None:
     assert not names_trigger("R2+a", stale.triggers) and not names_trigger("weather:rain", stale.triggers)
     cyclists = next(f for f in FAULTS if f.name == "ignore_cyclists")
     assert not names_trigger("R5+m", cyclists.triggers)
+    # a joint condition (elements in exactly the same runs) names what any of its parts names
+    close = next(f for f in FAULTS if f.name == "no_start_when_close")
+    assert names_trigger("category:car & near_start:yes", close.triggers)
+    assert names_trigger("R3+m & category:pedestrian", stale.triggers)
+    assert not names_trigger("category:car & position:R6", close.triggers)
+
+
+def test_the_ranking_leaves_party_counts_out_and_shrinks_thin_evidence() -> None:
+    """Within a tree the party count changes only when the new-party slot adds a party, whatever its role: a
+    cyclist added to a one-party seed makes `npcs:2` as surely as `category:bicycle`, and the count is not what
+    the fault depends on. Two scenarios that happen to share the fog are not ranked above the bicycle either."""
+    spec = next(f for f in FAULTS if f.name == "ignore_cyclists")
+    elements, trees = {}, {}
+    for i in range(12):
+        cyclist = i < 6                                     # the new party: a cyclist in 6 nodes, nobody in 6
+        elements[f"t/n{i}"] = frozenset({"npcs:2", "category:bicycle"} if cyclist else {"npcs:1"}) | \
+            {"weather:fog" if i in (0, 1) else "weather:clear"} | ({"category:car"} if i == 11 else set())
+        trees[f"t/n{i}"] = "t"
+    nominal = {i: frozenset() for i in elements}
+    faulty = {i: frozenset({"Collisions"} if i in ("t/n0", "t/n1", "t/n2", "t/n3", "t/n4") else ()) for i in elements}
+    row, lift = assess(spec, nominal, faulty, elements, min_support=2, trees=trees)
+    assert row.right_rank == 1 and lift[0].element == "category:bicycle"
+    assert not any(r.element.startswith("npcs:") for r in lift)
+    assert {r.element: r.lift for r in lift}["weather:fog"] > lift[0].lift      # higher lift, thinner evidence
 
 
 def test_draws_are_seeded_random_subsets(seed_files: list[Path]) -> None:
@@ -130,9 +154,9 @@ def test_assess_within_trees_ranks_what_the_mutations_changed() -> None:
     nominal = {i: frozenset() for i in elements}
     # the fault shows in both yellow scenarios of `a`, in one of `b`'s
     faulty = {i: frozenset({"Misinterp"} if i in ("a/n0", "a/n1", "b/n0") else ()) for i in elements}
-    row, lift = assess(spec, nominal, faulty, elements, min_support=1)
+    row, lift = assess(spec, nominal, faulty, elements, min_support=1, prior=0.0)
     assert row.right_rank == 2 and lift[0].element == "R1+d"           # pooled: the seed's own element first
-    row, lift = assess(spec, nominal, faulty, elements, min_support=1, trees=trees)
+    row, lift = assess(spec, nominal, faulty, elements, min_support=1, trees=trees, prior=0.0)
     assert row.right_rank == 1 and lift[0].element == "signal:yellow"
     assert "R1+d" not in {r.element for r in lift}                      # constant within its tree: not ranked
     # O/E within trees: 3 observed; expected 2 * 2/4 (tree a) + 2 * 1/8 (tree b), c and d showed nothing

@@ -142,9 +142,10 @@ def test_written_position_wins_and_weather_is_read(gold_seeds: dict[str, tuple[P
     assert "weather:rain" in scenario_elements(rainy) and "weather:clear" in scenario_elements(xml)
 
 
-def test_stratified_lift_breaks_ties_of_elements_added_together_by_the_pooled_lift() -> None:
-    """One mutation adds a car close behind the AV (`category:car` and `near_start:yes` together) in each tree;
-    within trees the two cannot be told apart, but cars are everywhere in tree `b`'s seed without the category."""
+def test_stratified_lift_counts_a_constant_stratum_as_no_evidence() -> None:
+    """One mutation adds a car close behind the AV (`category:car` and `near_start:yes` together) in each tree, but
+    tree `b`'s seed has a car in every run: there the car shows the category exactly as often as expected (O = E),
+    so it earns nothing and its lift is pulled towards 1, while near_start, which varies in both trees, is not."""
     runs, strata = [], []
     for t in ("a", "b"):
         for i in range(6):
@@ -154,10 +155,53 @@ def test_stratified_lift_breaks_ties_of_elements_added_together_by_the_pooled_li
                          frozenset({"StartFail"} if i < 2 else ())))
             strata.append(t)
     rows = lift_table(runs, min_support=1, strata=strata)["StartFail"]
-    # tree b's car is constant there: only tree a counts for it; near_start varies in both
     by = {r.element: r for r in rows}
-    assert by["near_start:yes"].support == 4 and by["category:car"].support == 2
-    assert by["near_start:yes"].lift == pytest.approx(by["category:car"].lift)
+    assert by["near_start:yes"].lift == pytest.approx(3.0)              # 4 observed, 4/3 expected
+    assert by["category:car"].lift == pytest.approx(6 / 4)              # tree b adds 2 to O and to E
+    assert by["category:car"].support == 4 and by["category:car"].with_element == 8
     assert rows[0].element == "near_start:yes"
+    # measured only where it varies (the old rule), the car tied with near_start on tree a alone
+    assert by["category:car"].lift < by["near_start:yes"].lift
+    # an element constant in every stratum is not ranked
+    const = [(e | {"map:x"}, c) for e, c in runs]
+    assert "map:x" not in {r.element for r in lift_table(const, min_support=1, strata=strata)["StartFail"]}
     with pytest.raises(ValueError):
         lift_table(runs, strata=strata[:-1])
+
+
+def test_elements_in_exactly_the_same_runs_are_one_joint_condition() -> None:
+    """No count can tell apart elements that occur in exactly the same runs (one mutation adds them together), so
+    they are one row, parts sorted, rather than one of them winning the tie on its name."""
+    from txt2sce_ros.analysis.lift import joint_parts
+
+    runs = []
+    for i in range(8):
+        close = i < 3
+        added = {"near_start:yes", "position:R6", "position:R6/same"} if close else set()
+        runs.append((frozenset(added | {"weather:clear" if i % 2 else "weather:rain"}),
+                     frozenset({"StartFail"} if close else ())))
+    rows = lift_table(runs, min_support=1)["StartFail"]
+    assert rows[0].element == "near_start:yes & position:R6 & position:R6/same"
+    assert joint_parts(rows[0].element) == ["near_start:yes", "position:R6", "position:R6/same"]
+    assert rows[0].support == 3 and rows[0].lift == pytest.approx(8 / 3)
+    # one run that holds position:R6 without the others splits them again
+    runs.append((frozenset({"position:R6", "weather:clear"}), frozenset()))
+    elements = {r.element for r in lift_table(runs, min_support=1)["StartFail"]}
+    assert {"position:R6", "near_start:yes & position:R6/same"} <= elements
+
+
+def test_prior_ranks_many_runs_above_two_that_happen_to_share_an_element() -> None:
+    """Shrunk by one pseudo-run, (O + 1) / (E + 1): two runs at 3× rank below twelve at 2×; without it the two
+    runs win. The reported lift stays O / E."""
+    runs = []
+    for i in range(36):
+        shown = frozenset({"Collisions"}) if i < 12 else frozenset()
+        common = {"category:bicycle"} if i < 12 or 24 <= i < 30 else set()   # 12 of 18 runs with it show it
+        rare = {"weather:fog"} if i in (0, 1) else set()                     # both of its 2 runs show it
+        runs.append((frozenset(common | rare), shown))
+    plain = lift_table(runs, min_support=2)["Collisions"]
+    shrunk = lift_table(runs, min_support=2, prior=1.0)["Collisions"]
+    assert plain[0].element == "weather:fog" and plain[0].lift == pytest.approx(3.0)
+    assert shrunk[0].element == "category:bicycle" and shrunk[0].lift == pytest.approx(2.0)
+    assert shrunk[0].score == pytest.approx((12 + 1) / (6 + 1))
+    assert {r.element: r.lift for r in shrunk}["weather:fog"] == pytest.approx(3.0)

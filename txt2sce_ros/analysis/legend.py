@@ -37,7 +37,13 @@ def position_text(code: str) -> str:
 
 
 def explain(element: str) -> str:
-    """One analysis element in words; an element of an unknown form is returned unchanged."""
+    """One analysis element in words; an element of an unknown form is returned unchanged. A joint condition
+    (elements that occurred in exactly the same runs, `lift.JOINT`) reads as its parts, joined by "and"."""
+    from .lift import joint_parts
+
+    parts = joint_parts(element)
+    if len(parts) > 1:
+        return "; and ".join(explain(p) for p in parts)
     if "+" in element and ":" not in element:
         pos, _, codes = element.partition("+")
         return f"a party at {position_text(pos)} that did: {actions_text(codes)}"
@@ -55,7 +61,9 @@ def legend_rows() -> list[tuple[str, str]]:
     """(code, meaning) rows: how combined elements read, every position R1–R7, every action code a–m, and the
     element kinds."""
     rows = [("R5+ag", "combined element: a party at position R5 whose manoeuvres were a, then g "
-                      "(position + action string)")]
+                      "(position + action string)"),
+            ("a & b", "joint condition: elements that occurred in exactly the same runs, which no count can tell "
+                      "apart (one mutation added them together)")]
     rows += [(p, m) for p, m in POSITION_MEANINGS.items()]
     rows += [(a, m) for a, m in ACTION_MEANINGS.items()]
     rows += [(f"{k}:…", v) for k, v in PREFIX_MEANINGS.items()]

@@ -6,7 +6,9 @@ The lift ranking is then computed over those differential runs (a scenario count
 added it), within each scenario tree (`lift_table` strata: a tree's scenarios share its seed's parties, map and
 events, so across trees those ride along with whatever a mutation caused; within a tree only what the mutations
 changed tells a run that shows the category from one that does not), and the rank of the element the fault
-depends on is reported: 1 means the analysis points straight at it.
+depends on is reported: 1 means the analysis points straight at it. The ranking shrinks each lift by one
+pseudo-run (`RANK_PRIOR`), leaves party counts out (`UNRANKED_PREFIXES`), and reports elements that occurred in
+exactly the same runs as one joint condition (`analysis.lift`), which counts as right when any of its parts is.
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
-from ..analysis.lift import LiftRow, lift_table
+from ..analysis.lift import LiftRow, joint_parts, lift_table
 
 
 @dataclass(frozen=True)
@@ -61,27 +63,49 @@ class EffectivenessRow:
 
 def names_trigger(element: str, triggers: Sequence[str]) -> bool:
     """Whether a lift element names one of the fault's triggers. A combined element `R5+m` (a party at R5 doing
-    m) names what its parts `position:R5` and `events:m` name."""
-    parts = [element]
-    head, plus, codes = element.partition("+")
-    if plus and head.startswith("R") and ":" not in head:
-        parts += [f"position:{head}", f"events:{codes}"]
+    m) names what its parts `position:R5` and `events:m` name; a joint condition (elements that occurred in
+    exactly the same runs, `analysis.lift.JOINT`) names what any of its elements names."""
+    parts = []
+    for one in joint_parts(element):
+        parts.append(one)
+        head, plus, codes = one.partition("+")
+        if plus and head.startswith("R") and ":" not in head:
+            parts += [f"position:{head}", f"events:{codes}"]
     return any(t in p for p in parts for t in triggers)
+
+
+#: Element kinds left out of the trigger ranking: within a tree the number of parties changes only when the new-party
+#: slot adds one, so `npcs:k` stands for "a party was added", whatever its role; that party's own elements (its
+#: category, position, events, closeness) say which condition it brought in. (Seed picking leaves counts out too.)
+UNRANKED_PREFIXES = ("npcs:",)
+
+
+def ranked_elements(elements: frozenset[str]) -> frozenset[str]:
+    """The elements of a scenario that the trigger ranking considers (`UNRANKED_PREFIXES` left out)."""
+    return frozenset(e for e in elements if not e.startswith(UNRANKED_PREFIXES))
+
+
+#: Pseudo-runs of shrinkage in the ranking (`lift_table` `prior`): one run expected and observed, so that two runs
+#: that happen to share an element (14× on an expected 0.14) do not outrank the element twenty runs share.
+RANK_PRIOR = 1.0
 
 
 def assess(spec: FaultSpec, nominal: Mapping[str, frozenset[str]], faulty: Mapping[str, frozenset[str]],
            elements: Mapping[str, frozenset[str]], *, min_support: int = 2,
-           trees: Mapping[str, str] | None = None) -> tuple[EffectivenessRow, list[LiftRow]]:
+           trees: Mapping[str, str] | None = None, prior: float = RANK_PRIOR
+           ) -> tuple[EffectivenessRow, list[LiftRow]]:
     """`nominal`/`faulty`: scenario id -> categories shown; `elements`: scenario id -> its scenario elements;
     `trees`: scenario id -> the tree it grew in, to rank by the lift within trees (`lift_table` strata: what the
-    tree's mutations changed, not what its seed holds throughout); None ranks over all scenarios at once."""
+    tree's mutations changed, not what its seed holds throughout); None ranks over all scenarios at once. `prior`:
+    the ranking's shrinkage (`RANK_PRIOR`; 0 ranks by the plain lift)."""
     ids = sorted(set(nominal) & set(faulty) & set(elements))
+    elements = {i: ranked_elements(elements[i]) for i in ids}
     with_fault = sum(1 for i in ids if spec.category in faulty[i])
     without = sum(1 for i in ids if spec.category in nominal[i])
     diff = {i for i in ids if spec.category in faulty[i] and spec.category not in nominal[i]}
     runs = [(elements[i], frozenset({spec.category}) if i in diff else frozenset()) for i in ids]
     strata = [trees[i] for i in ids] if trees is not None else None
-    rows = lift_table(runs, min_support=min_support, strata=strata).get(spec.category, [])
+    rows = lift_table(runs, min_support=min_support, strata=strata, prior=prior).get(spec.category, [])
     rank = next((k for k, r in enumerate(rows, 1) if names_trigger(r.element, spec.triggers)), None)
     top = f"{rows[0].element} ({rows[0].lift:.2f}×)" if rows else "–"
     return EffectivenessRow(spec.name, spec.category, bool(diff), with_fault, without, len(diff), top, rank), rows
