@@ -108,3 +108,16 @@ def test_campaign_extraction_prints_why_a_report_gave_no_sketch(tmp_path: Path,
     assert count == 1
     err = capsys.readouterr().err
     assert "txt2sce campaign: error: empty-one:" in err and "missing or empty narrative" in err
+
+
+def test_reports_that_build_no_seed_stop_with_the_cause(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # Reports that are read but give no buildable sketch: the campaign stops at the seed stage and says why,
+    # instead of failing later on the empty tree directory.
+    reports = tmp_path / "reports.jsonl"
+    reports.write_text(json.dumps({"id": "no-story", "text": "There were no injuries and police were not called."})
+                       + "\n", encoding="utf-8")
+    code = cli_main(["campaign", str(reports), "--out", str(tmp_path / "c"), "--no-progress"])
+    err = capsys.readouterr().err
+    assert code == 2 and "Traceback" not in err
+    assert "no seed could be built from the 1 sketch(es)" in err and "seeds/manifest.json" in err
+    assert not (tmp_path / "c" / "trees").exists()

@@ -86,3 +86,11 @@ def test_sample_check_runs_qc_and_player(tmp_path):
     assert len(files) == 6 and files == sample_files([tmp_path / "c"], 6, seed=1)
     chk = check_sample([tmp_path / "c"], 6, seed=1)
     assert chk.checked == 6 and chk.qc_failed == 0 and chk.player_available and chk.player_failed == 0
+
+
+def test_a_directory_without_trees_is_refused(tmp_path, capsys):
+    (tmp_path / "empty").mkdir()
+    for argv in (["diversity", str(tmp_path / "empty")], ["tree", "show", str(tmp_path / "empty")]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert "holds no scenario tree" in err and "Traceback" not in err

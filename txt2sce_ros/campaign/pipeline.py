@@ -167,6 +167,10 @@ def seed_stage(sketches: Path, cfg: CampaignConfig) -> tuple[Path, dict[str, Any
         _stamp(out).touch()
     manifest = json.loads((out / "manifest.json").read_text(encoding="utf-8"))
     _log(cfg, f"seeds: {len(manifest['built'])} built, {len(manifest['refused'])} refused -> {out}")
+    if not manifest["built"]:
+        # Every later stage would fail on an empty directory with a message about that directory, not the cause.
+        raise InputError(f"no seed could be built from the {len(manifest['refused'])} sketch(es): nothing to run "
+                         f"(why each was refused: {out / 'manifest.json'})", source=str(sketches))
     return out, manifest
 
 

@@ -63,7 +63,11 @@ def find_trees(paths: Iterable[str | Path]) -> list[Path]:
         if (p / "manifest.json").is_file():
             out.append(p)
         elif p.is_dir():
-            out.extend(sorted(m.parent for m in p.glob("*/manifest.json")))
+            found = sorted(m.parent for m in p.glob("*/manifest.json"))
+            if not found:
+                raise InputError("holds no scenario tree (no manifest.json in it or in its subdirectories)",
+                                 source=str(p))
+            out.extend(found)
         else:
             raise InputError("no such tree directory", source=str(p))
     return out
