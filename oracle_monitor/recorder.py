@@ -28,11 +28,13 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from rosbags.rosbag2 import StoragePlugin, Writer, WriterError
 from rosbags.typesys import Stores, get_typestore
 
 from txt2sce_ros.errors import InputError
 
+from .steprecords import StepRun
 from .topics import TOPIC_TYPES
 
 _TYPESTORE = None
@@ -75,6 +77,25 @@ _INDEX_HEAD = struct.Struct("<BQHI")       # opcode 0x07, record length, channel
 _U64 = struct.Struct("<Q")
 
 
+def _index_body(entries: list[Any]) -> bytes:
+    """A channel's message index entries as (log time, offset) uint64 pairs. An entry is one message's
+    `(time, offset)` tuple (rosbags' form, written by `_fast_write` and the per-message steps) or a run of packed
+    steps' flat pairs (`StepPacker.index`, little-endian uint64), in the order written."""
+    parts: list[bytes] = []
+    pairs: list[int] = []
+    for e in entries:
+        if type(e) is tuple:
+            pairs += e
+        else:
+            if pairs:
+                parts.append(struct.pack(f"<{len(pairs)}Q", *pairs))
+                pairs = []
+            parts.append(e.tobytes())
+    if pairs:
+        parts.append(struct.pack(f"<{len(pairs)}Q", *pairs))
+    return b"".join(parts)
+
+
 def _close_chunk(storage: Any) -> None:
     """`McapWriter.close_chunk()` of rosbags 0.11 for an uncompressed chunk, with each channel's message index
     packed in one struct call instead of two 8-byte writes per message (about a tenth of a recording's cost): the
@@ -99,9 +120,9 @@ def _close_chunk(storage: Any) -> None:
     offsets: list[tuple[int, int]] = []
     for cid, msgs in chunk.msgs.items():
         offsets.append((cid, out.tell()))
-        flat = [v for pair in msgs for v in pair]
-        out.write(_INDEX_HEAD.pack(0x07, 6 + 8 * len(flat), cid, 8 * len(flat)))
-        out.write(struct.pack(f"<{len(flat)}Q", *flat))
+        body = _index_body(msgs)
+        out.write(_INDEX_HEAD.pack(0x07, 6 + len(body), cid, len(body)))
+        out.write(body)
     rec = BytesIO()
     rec.write(struct.pack("<QQQQI", start, end, chunk_start, chunk_end - chunk_start, len(offsets) * 10))
     for cid, offset in offsets:
@@ -234,15 +255,15 @@ class BagRecorder:
             cid = self._cids[topic] = self._connection(topic, None).id
         return cid
 
-    def write_steps(self, steps: list[tuple[int | None, Any]]) -> None:
+    def write_steps(self, steps: list[Any]) -> None:
         """`write_batch` for several steps at once: one buffer write and one round of bookkeeping for all of them.
-        Each step is (received time or None for now, its messages), the messages either a list of (topic, CDR
-        bytes) or a `steprecords.StepPacker` with its frame and command, which packs the whole step's records."""
+        Each step is (received time or None for now, its messages as a list of (topic, CDR bytes)), or a
+        `steprecords.StepRun` of consecutive steps of one layout, packed and indexed together."""
         if self.closed:
             raise InputError("recording already closed", source=str(self.path))
-        for _, items in steps:
-            if isinstance(items, list):
-                for topic, _ in items:
+        for step in steps:
+            if not isinstance(step, StepRun):
+                for topic, _ in step[1]:
                     if topic not in self._cids:
                         # A new channel writes its record into the pending chunk: add it before the messages'
                         # offsets in the chunk are counted from where the chunk ends.
@@ -252,43 +273,53 @@ class BagRecorder:
         chunk = storage.chunk
         bio = chunk.bio
         pos = bio.tell()
-        parts = []
-        counts = w.counts
-        stats = storage.channel_stats
+        parts: list[Any] = []
         index = chunk.msgs
         pack = _MESSAGE_RECORD.pack
         cids = self._cids
         last = self._last_ns
         first = None
         n = 0
-        written: list[int] = []                 # channel of every message, counted once at the end
-        for received_ns, items in steps:
+        written: Counter[int] = Counter()       # messages per channel, added to the statistics at the end
+        for step in steps:
+            if isinstance(step, StepRun):
+                packer = step.packer
+                per_step = len(packer.offsets)
+                times = []
+                for received_ns in step.received:
+                    t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
+                    times.append(t)
+                    last = t + per_step - 1
+                if first is None:
+                    first = times[0]
+                at = np.array(times, dtype=np.int64)
+                parts.append(packer.pack_run(at, step.frames, step.commands))
+                for cid, flat in packer.index(at, pos):
+                    index[cid].append(flat)
+                for cid in packer.topics_cids:
+                    written[cid] += len(times)
+                pos += packer.size * len(times)
+                n += per_step * len(times)
+                continue
+            received_ns, items = step
             t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
             if first is None:
                 first = t
-            if isinstance(items, list):
-                for topic, data in items:
-                    cid = cids[topic]
-                    size = len(data)
-                    index[cid].append((t, pos))
-                    pos += 31 + size            # the 31-byte record header, then the message
-                    parts += (pack(0x05, 22 + size, cid, 0, t, t), data)
-                    written.append(cid)
-                    t += 1
-                n += len(items)
-            else:
-                packer, frame, command = items
-                parts.append(packer.pack(t, frame, command))
-                for cid, off in zip(packer.topics_cids, packer.offsets):
-                    index[cid].append((t, pos + off))
-                    t += 1
-                pos += packer.size
-                written += packer.topics_cids
-                n += len(packer.offsets)
+            for topic, data in items:
+                cid = cids[topic]
+                size = len(data)
+                index[cid].append((t, pos))
+                pos += 31 + size            # the 31-byte record header, then the message
+                parts += (pack(0x05, 22 + size, cid, 0, t, t), data)
+                written[cid] += 1
+                t += 1
+            n += len(items)
             last = t - 1
         if first is None or not n:
             return
-        for cid, k in Counter(written).items():
+        counts = w.counts
+        stats = storage.channel_stats
+        for cid, k in written.items():
             counts[cid] += k
             stats[cid] += k
         bio.write(b"".join(parts))

@@ -25,7 +25,7 @@ from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
-from .steprecords import StepPacker, layout_key
+from .steprecords import StepPacker, StepRun, layout_key
 
 
 #: Steps encoded together (see `RunWriter.frame`).
@@ -97,7 +97,8 @@ class RunWriter:
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
         self._drained = time.monotonic()
-        out: list[tuple[int, object]] = []
+        out: list[object] = []
+        run: StepRun | None = None
         channel = self.rec.channel
         for ns, frame, command in steps:
             if self._shown_lights is not None and frame.lights != self._shown_lights:
@@ -106,8 +107,13 @@ class RunWriter:
                 for topic, _ in items:
                     channel(topic)              # channels in first-use order, as the messages are written
                 out.append((ns, items))
+                run = None
             else:
-                out.append((ns, (self._packer(frame, command), frame, command)))
+                packer = self._packer(frame, command)
+                if run is None or run.packer is not packer:
+                    run = StepRun(packer)       # consecutive steps of one layout are packed together
+                    out.append(run)
+                run.add(ns, frame, command)
         self.rec.write_steps(out)
 
     def _packer(self, frame: Frame, command: ControlCommand | None) -> StepPacker:
