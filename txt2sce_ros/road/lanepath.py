@@ -181,9 +181,9 @@ class LanePath:
             i = lo + int(np.argmin((seg_x - x) ** 2 + (seg_y - y) ** 2))
         else:
             if self._tree is None:
-                from scipy.spatial import cKDTree   # on first use: scipy is a cold start's largest import
+                from .kdtree import ckdtree   # on first use: scipy is a cold start's largest import
 
-                self._tree = cKDTree(np.column_stack([self._x, self._y]), balanced_tree=False, compact_nodes=False)
+                self._tree = ckdtree()(np.column_stack([self._x, self._y]), balanced_tree=False, compact_nodes=False)
             i = int(self._tree.query([x, y])[1])
         best = (np.inf, 0.0, 0.0)
         for j in (i - 1, i):
