@@ -25,7 +25,7 @@ from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
-from .steprecords import StepPacker, StepRun, layout_key
+from .steprecords import StepPacker, StepRun, layout_key, step_packer
 
 
 #: Steps encoded together (see `RunWriter.frame`).
@@ -46,6 +46,7 @@ class RunWriter:
         self._goal: Goal | None = None
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
         self._packers: dict[tuple, StepPacker] = {}
+        self._last_layout: tuple | None = None     # (lights, cast, packer) of the last packed step
 
     def _w(self, topic: str, msg: object) -> None:
         self._raw_ordered(topic, serialize_message(msg))
@@ -118,7 +119,13 @@ class RunWriter:
 
     def _packer(self, frame: Frame, command: ControlCommand | None) -> StepPacker:
         """The compiled layout of this kind of step (a few per run: the light states and the cast change
-        rarely)."""
+        rarely). Most steps have the previous step's layout: the same cast, and the very same lights tuple (the
+        player keeps it while no light changes), which is checked without hashing the lights."""
+        lights = frame.lights
+        cast = (frame.ego.name, frame.ego.category, command is None, *[(o.name, o.category) for o in frame.objects])
+        last = self._last_layout
+        if last is not None and last[1] == cast and (last[0] is lights or last[0] == lights):
+            return last[2]
         key = layout_key(frame, command)
         packer = self._packers.get(key)
         if packer is None:
@@ -128,7 +135,8 @@ class RunWriter:
                     channel(c.TOPIC_EGO_ODOM), channel(c.TOPIC_COMMAND) if command is not None else None)
             if len(self._packers) > 64:
                 self._packers.clear()
-            packer = self._packers[key] = StepPacker(frame, command, cids)
+            packer = self._packers[key] = step_packer(frame, command, cids)
+        self._last_layout = (lights, cast, packer)
         return packer
 
     def _encode(self, frame: Frame, command: ControlCommand | None) -> list[tuple[str, bytes]]:

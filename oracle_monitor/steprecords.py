@@ -52,6 +52,23 @@ def layout_key(frame: Frame, command: ControlCommand | None) -> tuple:
             *[(o.name, o.category) for o in frame.objects])
 
 
+_COMPILED: dict[tuple, "StepPacker"] = {}
+_COMPILED_MAX = 256
+
+
+def step_packer(frame: Frame, command: ControlCommand | None, cids: Sequence[int | None]) -> "StepPacker":
+    """The compiled layout of this step with these channel ids, shared by every recorder of the process: compiling
+    one costs ~1 ms, a run has a few, and the runs of a campaign or a bench repeat the same ones. A packer is not
+    changed after it is built."""
+    key = (layout_key(frame, command), tuple(cids))
+    packer = _COMPILED.get(key)
+    if packer is None:
+        if len(_COMPILED) >= _COMPILED_MAX:
+            _COMPILED.clear()
+        packer = _COMPILED[key] = StepPacker(frame, command, cids)
+    return packer
+
+
 class StepRun:
     """Consecutive steps of one layout, to be packed together: their receive times (None: now), frames and
     commands."""

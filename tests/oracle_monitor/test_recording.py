@@ -388,3 +388,29 @@ def test_frames_with_list_lights_record_as_tuples_do(tmp_path: Path) -> None:
     frames = _frames()
     as_lists = [dataclasses.replace(f, lights=list(f.lights), objects=list(f.objects)) for f in frames]
     assert record(tmp_path / "lists" / "bag", as_lists) == record(tmp_path / "tuples" / "bag", frames)
+
+
+def test_shared_step_layouts_record_the_same_bytes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # Step layouts are compiled once per process and shared by every recorder (steprecords.step_packer); a run
+    # recorded with layouts another recorder compiled must be byte for byte the run recorded with fresh ones.
+    import itertools
+
+    from oracle_monitor import runwriter, steprecords
+
+    sim, steps = _closed_loop("traffic_lights")
+
+    def record(path: Path) -> bytes:
+        clock = itertools.count(1_700_000_000_000_000_000, 1000)
+        monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(clock))
+        with RunWriter(path, flush_interval=1e9) as w:
+            w.begin(None, sim.goal, "x", network=sim.network, lights=steps[0][0].lights)
+            for f, cmd in steps:
+                w.frame(f, cmd)
+        return (path / "bag.mcap").read_bytes()
+
+    steprecords._COMPILED.clear()
+    fresh = record(tmp_path / "a" / "bag")
+    compiled = len(steprecords._COMPILED)
+    shared = record(tmp_path / "b" / "bag")
+    assert compiled >= 2 and len(steprecords._COMPILED) == compiled     # the second run compiled nothing new
+    assert fresh == shared
