@@ -26,6 +26,7 @@ from ..sketch import ErrorRecord, Sketch
 from ..xosc.validate import validate_xosc
 from .constraints import derive_constraints
 from .defaults import SeedDefaults, seed_defaults
+from .actor import Actor
 from .match import Match, match_site
 from .model import EntityPlan, EnvironmentPlan, ScenarioPlan, SignalPhase, SignalPlan
 from .plan import Planner, predicted_gap
@@ -111,15 +112,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     D = defaults or seed_defaults()
     constraints = derive_constraints(sketch)
     rng = rng_for(sketch.report_id, seed)
-    match: Match = match_site(constraints, rng, maps=maps, source=sketch.report_id)
-    planner = Planner(sketch, match.site, D)
-    try:
-        actors = planner.plan()
-    except Txt2SceError:
-        raise
-    except (ValueError, IndexError, KeyError) as exc:  # geometry that does not fit: a refused sketch, not a crash
-        raise InputError(f"cannot place the sketch on {Path(match.site.map_path).name}: {exc!r}",
-                         source=sketch.report_id, element="road") from exc
+    match, planner, actors = _plan(sketch, match_site(constraints, rng, maps=maps, source=sketch.report_id), D)
     map_path = Path(match.site.map_path)
     ref = map_ref if map_ref is not None else str(map_path.resolve())
     ego_first = planner.ego.events[0].planned_time if planner.ego.events else 0.0
@@ -157,6 +150,33 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
         "signals": [{"name": s.name, "phases": [[p.name, p.duration] for p in s.phases]} for s in signals],
     }
     return SeedResult(sketch.report_id, xosc, plan, map_path, manifest)
+
+
+def _plan(sketch: Sketch, match: Match, D: SeedDefaults) -> tuple[Match, Planner, list[Actor]]:
+    """Plan the sketch on the drawn site. Where two entities would still overlap at t=0 there (the start
+    separation found no shift: a scenario that starts in a collision is invalid, every run of it ends in error),
+    plan on the next site of the same tier instead; refuse the sketch when no site of the tier holds the plan."""
+    overlaps: list[str] = []
+    for k, (site, relaxed) in enumerate(((match.site, match.relaxed),) + match.others):
+        planner = Planner(sketch, site, D)
+        try:
+            actors = planner.plan()
+        except Txt2SceError:
+            raise
+        except (ValueError, IndexError, KeyError) as exc:  # geometry that does not fit: a refused sketch, not a crash
+            if k == 0:
+                raise InputError(f"cannot place the sketch on {Path(site.map_path).name}: {exc!r}",
+                                 source=sketch.report_id, element="road") from exc
+            continue                                       # a fallback site that does not fit: try the next
+        overlap = planner.choices.get("start_overlap")
+        if not overlap:
+            if overlaps:
+                planner.choices["site_fallback"] = {"tried": k, "why": "entities overlapping at t=0 on "
+                                                    + "; ".join(overlaps)}
+            return Match(site, match.candidates, relaxed), planner, actors
+        overlaps.append(f"{Path(site.map_path).name} ({', '.join(overlap)})")
+    raise InputError(f"no site of the matched tier ({match.candidates}) lets the entities start apart: they overlap "
+                     f"at t=0 on {'; '.join(overlaps)}", source=sketch.report_id, element="road")
 
 
 def _with_position(e: EntityPlan, sketch: Sketch) -> EntityPlan:

@@ -20,6 +20,9 @@ class Match:
     site: JunctionSite | RoadSite
     candidates: int                 # sites in the drawn tier
     relaxed: tuple[str, ...]        # soft constraints not met
+    # The rest of the drawn tier, in order after the pick (site, relaxed): where the plan cannot start on the pick
+    # (two entities overlapping at t=0), the seed is planned on the next of these instead.
+    others: tuple[tuple[JunctionSite | RoadSite, tuple[str, ...]], ...] = ()
 
 
 def map_files(maps: str | Path | None = None) -> list[Path]:
@@ -114,5 +117,7 @@ def match_site(c: RoadConstraints, rng: np.random.Generator, *, maps: str | Path
                          element="road")
     best = min(x[0] for x in scored)
     tier = sorted((x for x in scored if x[0] == best), key=lambda x: x[1])
-    pick = tier[int(rng.integers(len(tier)))]
-    return Match(pick[2], len(tier), tuple(pick[3]))
+    k = int(rng.integers(len(tier)))
+    pick = tier[k]
+    others = tuple((x[2], tuple(x[3])) for x in tier[k + 1:] + tier[:k])
+    return Match(pick[2], len(tier), tuple(pick[3]), others)
