@@ -24,6 +24,7 @@ import json
 import re
 import struct
 import time
+from array import array
 from collections import Counter
 from pathlib import Path
 from typing import Any
@@ -292,7 +293,7 @@ class BagRecorder:
                     last = t + per_step - 1
                 if first is None:
                     first = times[0]
-                at = np.array(times, dtype=np.int64)
+                at = np.frombuffer(array("q", times), dtype=np.int64)
                 parts.append(packer.pack_run(at, step.frames, step.commands))
                 for cid, flat in packer.index(at, pos):
                     index[cid].append(flat)
@@ -322,7 +323,7 @@ class BagRecorder:
         for cid, k in written.items():
             counts[cid] += k
             stats[cid] += k
-        bio.write(b"".join(parts))
+        bio.writelines(parts)                   # each part copied once, with no joined copy in between
         if first < storage.message_start_time:
             storage.message_start_time = first
         storage.message_end_time = max(storage.message_end_time, last)
