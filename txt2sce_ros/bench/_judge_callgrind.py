@@ -1,0 +1,59 @@
+"""One lock-step run of `bench judge`, plain or recorded, marked for callgrind: the recording overhead in
+instructions, which the machine's load does not move (the CPU-time ratio of `txt2sce bench judge` swings by ±10
+points between pairs on this shared VM).
+
+    valgrind --tool=callgrind --trace-children=yes --dump-before=getppid --callgrind-out-file=cg.%p \\
+        python -m txt2sce_ros.bench._judge_callgrind {plain|rec} {pedestrian_collision|traffic_lights}
+
+The run is callgrind's part 2 (`grep totals cg.<pid>.2`): between two `os.getppid()` calls, after one warm-up run
+of each kind (imports, map caches, the road message, compiled step layouts) and a full garbage collection (a full
+collection of the process's objects costs ~30 M instructions and would otherwise fall into one run or the other
+by the allocation count). `--trace-children` because the ROS wheels re-exec the interpreter at start-up. The
+recorder flushes by size only here (`flush_interval=1e9`): under valgrind's ~50x slow-down its 0.5 s wall-clock
+flush would cut the run into hundreds of tiny drains a native run never makes. Compare a `rec` run with a `plain`
+run of the same scenario (and a checkout of the code before a change with one after, via PYTHONPATH).
+"""
+
+from __future__ import annotations
+
+import gc
+import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+
+def main(argv: list[str] | None = None) -> int:
+    from oracle_monitor.runwriter import RunWriter
+
+    from .judge import SCENARIOS, _lockstep
+
+    args = sys.argv[1:] if argv is None else argv
+    if len(args) != 2 or args[0] not in ("plain", "rec") or args[1] not in SCENARIOS:
+        print(f"usage: python -m txt2sce_ros.bench._judge_callgrind {{plain|rec}} {{{'|'.join(SCENARIOS)}}}",
+              file=sys.stderr)
+        return 2
+    mode, name = args
+    tmp = Path(tempfile.mkdtemp(prefix="txt2sce_judge_callgrind_"))
+    try:
+        _lockstep(name, None)
+        w = RunWriter(tmp / "warm", flush_interval=1e9)
+        _lockstep(name, w)
+        w.close()
+        gc.collect()
+        os.getppid()                        # callgrind dumps part 1 here: what follows is the measured run
+        if mode == "rec":
+            w = RunWriter(tmp / "run", flush_interval=1e9)
+            _lockstep(name, w)
+            w.close()
+        else:
+            _lockstep(name, None)
+        os.getppid()                        # end of part 2
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
