@@ -161,3 +161,16 @@ def test_assess_within_trees_ranks_what_the_mutations_changed() -> None:
     assert "R1+d" not in {r.element for r in lift}                      # constant within its tree: not ranked
     # O/E within trees: 3 observed; expected 2 * 2/4 (tree a) + 2 * 1/8 (tree b), c and d showed nothing
     assert lift[0].support == 3 and abs(lift[0].lift - 3 / 1.25) < 1e-9
+
+
+def test_table_keeps_the_rank_column_aligned_under_a_long_joint_trigger() -> None:
+    from txt2sce_ros.campaign.effectiveness import EffectivenessRow, format_table
+
+    joint = "near_start:yes & position:R6 & position:R6/same (1.34×)"
+    lines = format_table([EffectivenessRow("no_start_when_close", "StartFail", True, 5, 0, 5, joint, 1),
+                          EffectivenessRow("ignore_cyclists", "Collisions", True, 9, 2, 7,
+                                           "category:bicycle (2.97×)", 2)]).splitlines()
+    assert joint in lines[2]
+    # every line (header, rule, rows) ends at the same column, the rank right-aligned in it
+    assert len({len(line) for line in lines}) == 1
+    assert lines[2].endswith(" 1") and lines[3].endswith(" 2") and lines[0].endswith("right rank")

@@ -112,12 +112,14 @@ def assess(spec: FaultSpec, nominal: Mapping[str, frozenset[str]], faulty: Mappi
 
 
 def format_table(rows: Sequence[EffectivenessRow]) -> str:
+    # a joint condition ('a & b & c') can be long: the column widens so the rank stays in its column
+    w = max([34] + [len(r.top_trigger) for r in rows])
     head = f"{'fault':<27} {'category':<11} {'found':<6} {'faulty':>6} {'nominal':>7} {'diff':>5}  " \
-           f"{'top trigger':<34} {'right rank':>10}"
+           f"{'top trigger':<{w}} {'right rank':>10}"
     out = [head, "-" * len(head)]
     for r in rows:
         out.append(f"{r.fault:<27} {r.category:<11} {'yes' if r.found else 'no':<6} {r.runs_with_fault:>6} "
-                   f"{r.runs_nominal:>7} {r.differential:>5}  {r.top_trigger:<34} "
+                   f"{r.runs_nominal:>7} {r.differential:>5}  {r.top_trigger:<{w}} "
                    f"{r.right_rank if r.right_rank is not None else '–':>10}")
     return "\n".join(out)
 
