@@ -24,9 +24,9 @@ import numpy as np
 from ..errors import InputError, Txt2SceError
 from ..sketch import ErrorRecord, Sketch
 from ..xosc.validate import validate_xosc
+from .actor import Actor
 from .constraints import derive_constraints
 from .defaults import SeedDefaults, seed_defaults
-from .actor import Actor
 from .match import Match, match_site
 from .model import EntityPlan, EnvironmentPlan, ScenarioPlan, SignalPhase, SignalPlan
 from .plan import Planner, predicted_gap
