@@ -25,7 +25,7 @@ from . import cdr
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
-from .steprecords import StepPacker, StepRun, layout_key, step_packer
+from .steprecords import StepPacker, StepRun, cast_key, step_packer
 
 
 #: Steps encoded together (see `RunWriter.frame`).
@@ -45,7 +45,6 @@ class RunWriter:
         self._drained = time.monotonic()
         self._goal: Goal | None = None
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
-        self._packers: dict[tuple, StepPacker] = {}
         self._last_layout: tuple | None = None     # (lights, cast, packer) of the last packed step
 
     def _w(self, topic: str, msg: object) -> None:
@@ -122,20 +121,17 @@ class RunWriter:
         rarely). Most steps have the previous step's layout: the same cast, and the very same lights tuple (the
         player keeps it while no light changes), which is checked without hashing the lights."""
         lights = frame.lights
-        cast = (frame.ego.name, frame.ego.category, command is None, *[(o.name, o.category) for o in frame.objects])
+        cast = cast_key(frame, command)
         last = self._last_layout
         if last is not None and last[1] == cast and (last[0] is lights or last[0] == lights):
             return last[2]
-        key = layout_key(frame, command)
-        packer = self._packers.get(key)
-        if packer is None:
-            channel = self.rec.channel
-            cids = (channel(c.TOPIC_CLOCK), channel(c.TOPIC_TRAFFIC_LIGHTS),
-                    channel(c.TOPIC_OBJECTS_ODOM) if frame.objects else None, channel(c.TOPIC_OBJECTS_MARKERS),
-                    channel(c.TOPIC_EGO_ODOM), channel(c.TOPIC_COMMAND) if command is not None else None)
-            if len(self._packers) > 64:
-                self._packers.clear()
-            packer = self._packers[key] = step_packer(frame, command, cids)
+        # A new layout for this step (rare): the compiled ones are shared by the process (`step_packer`); the
+        # channel lookups register a topic on its first use, in the order the messages are written.
+        channel = self.rec.channel
+        cids = (channel(c.TOPIC_CLOCK), channel(c.TOPIC_TRAFFIC_LIGHTS),
+                channel(c.TOPIC_OBJECTS_ODOM) if frame.objects else None, channel(c.TOPIC_OBJECTS_MARKERS),
+                channel(c.TOPIC_EGO_ODOM), channel(c.TOPIC_COMMAND) if command is not None else None)
+        packer = step_packer(frame, command, cids)
         self._last_layout = (lights, cast, packer)
         return packer
 

@@ -45,12 +45,17 @@ _T, _X, _Y, _H, _V, _A, _YAW, _CX, _LEN, _WID, _HGT = _ATTRS = range(11)
 _COMMAND = attrgetter("t", "speed", "yaw_rate")
 
 
+def cast_key(frame: Frame, command: ControlCommand | None) -> tuple:
+    """The part of a step's layout the lights leave out: the entities' names and categories (strings, tails,
+    paddings) and whether a command follows."""
+    return (frame.ego.name, frame.ego.category, command is None, *[(o.name, o.category) for o in frame.objects])
+
+
 def layout_key(frame: Frame, command: ControlCommand | None) -> tuple:
-    """What fixes a step's layout: the entities' names and categories (strings, tails, paddings), the light
-    states (the lights body) and whether a command follows. Equal keys, equal layouts."""
+    """What fixes a step's layout: its cast (`cast_key`) and the light states (the lights body). Equal keys, equal
+    layouts."""
     lights = frame.lights if isinstance(frame.lights, tuple) else tuple(frame.lights)   # hashable either way
-    return (frame.ego.name, frame.ego.category, lights, command is None,
-            *[(o.name, o.category) for o in frame.objects])
+    return (lights, *cast_key(frame, command))
 
 
 _COMPILED: dict[tuple, "StepPacker"] = {}

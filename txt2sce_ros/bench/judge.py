@@ -84,12 +84,13 @@ def _overhead(tmp: Path, pairs: int) -> dict[str, float]:
     loop CPU seconds (the scale of the view-marker figures)."""
     import statistics
 
+    import numpy as np
+
     from oracle_monitor.runwriter import RunWriter
 
     print(f"recording overhead on lock-step runs (player + planner + oracle, in-process), {pairs} interleaved "
           "pairs each (plain, recording; order alternating); CPU time, wall beside:")
     plain_of: dict[str, float] = {}
-    cpu_ratios: dict[str, list[float]] = {}
     totals: list[tuple[float, float]] = [(0.0, 0.0)] * pairs
     for name in SCENARIOS:
         _lockstep(name, None)                     # warm-up: imports, map caches, the road message
@@ -118,29 +119,19 @@ def _overhead(tmp: Path, pairs: int) -> dict[str, float]:
             totals[k] = (totals[k][0] + p_cpu, totals[k][1] + r_cpu)
             shutil.rmtree(tmp / f"rec_{name}_{k}", ignore_errors=True)
         plain_of[name] = statistics.median(plains)
-        cpu_ratios[name] = cpu
         print(f"  {name:<22} {steps:5d} steps  plain {plain_of[name] * 1000:7.1f} ms  recording "
               f"{statistics.median(recs) * 1000:7.1f} ms (medians)  overhead: median {_pct(statistics.median(cpu))}"
               f" (pairs {_pct(min(cpu))} .. {_pct(max(cpu))}), wall {_pct(statistics.median(wall))}; "
               f"best of each {_pct(min(recs) / min(plains))}   verdict: {verdict.summary()}")
     both = [r / p for p, r in totals]
     print(f"  total overhead: median of {pairs} paired ratios {_pct(statistics.median(both))} "
-          f"(pairs {_pct(min(both))} .. {_pct(max(both))}; quartiles {_pct(_quantile(both, 0.25))} .. "
-          f"{_pct(_quantile(both, 0.75))})  (goal <= 10 %)")
+          f"(pairs {_pct(min(both))} .. {_pct(max(both))}; quartiles {_pct(float(np.quantile(both, 0.25)))} .. "
+          f"{_pct(float(np.quantile(both, 0.75)))})  (goal <= 10 %)")
     return plain_of
 
 
 def _pct(ratio: float) -> str:
     return f"{100 * (ratio - 1):+.1f} %"
-
-
-def _quantile(values: list[float], q: float) -> float:
-    """Linear-interpolated quantile (numpy's default method) of a short list."""
-    v = sorted(values)
-    x = q * (len(v) - 1)
-    lo = int(x)
-    hi = min(lo + 1, len(v) - 1)
-    return v[lo] + (v[hi] - v[lo]) * (x - lo)
 
 
 def _frames(name: str) -> tuple[Any, list[Any]]:
