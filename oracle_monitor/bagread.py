@@ -96,7 +96,22 @@ def read_bag(path: str | Path) -> BagReading:
         raise InputError("no such bag", source=str(p))
     if p.is_dir() and not _mcap_files(p):
         raise InputError("not a rosbag2 MCAP recording (no .mcap file in it)", source=str(p))
+    # Checked before anything starts (a replay would otherwise bring up ROS and publish nothing): at least one file
+    # must open like an MCAP file. A damaged tail is found, and read up to, later.
+    heads = {f.name: _head(f) for f in _mcap_files(p)}
+    if not any(h == MAGIC for h in heads.values()):
+        raise InputError("nothing readable: " + "; ".join(
+            f"{name}: " + ("empty file" if not h else "not an MCAP file (bad magic)") for name, h in heads.items()),
+            source=str(p))
     return BagReading(p)
+
+
+def _head(f: Path) -> bytes:
+    try:
+        with f.open("rb") as fh:
+            return fh.read(len(MAGIC))
+    except OSError as exc:
+        raise InputError(f"cannot read {f.name}: {exc.strerror or exc}", source=str(f)) from exc
 
 
 def _mcap_files(p: Path) -> list[Path]:

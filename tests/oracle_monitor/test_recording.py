@@ -414,3 +414,18 @@ def test_shared_step_layouts_record_the_same_bytes(tmp_path: Path, monkeypatch: 
     shared = record(tmp_path / "b" / "bag")
     assert compiled >= 2 and len(steprecords._COMPILED) == compiled     # the second run compiled nothing new
     assert fresh == shared
+
+
+def test_a_file_that_is_no_mcap_is_refused_before_reading(tmp_path: Path) -> None:
+    # Refused up front, so `txt2sce replay` names the file instead of bringing up ROS and publishing nothing.
+    (tmp_path / "j.mcap").write_bytes(b"not an mcap at all")
+    (tmp_path / "empty.mcap").write_bytes(b"")
+    with pytest.raises(InputError, match=r"j\.mcap: not an MCAP file"):
+        read_bag(tmp_path / "j.mcap")
+    with pytest.raises(InputError, match=r"empty\.mcap: empty file"):
+        read_bag(tmp_path / "empty.mcap")
+    both = tmp_path / "bag"
+    both.mkdir()
+    (both / "a.mcap").write_bytes(b"junk")
+    with pytest.raises(InputError, match=r"a\.mcap: not an MCAP file"):
+        read_bag(both)

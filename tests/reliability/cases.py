@@ -349,6 +349,10 @@ def cases() -> list[Case]:
              message=r"none\.yaml"))
     add(Case("replay-rate-zero", lambda ws, d: T("replay", str(ws / "bags" / "good"), "--rate", "0"), message=r"rate"))
     add(Case("replay-rate-nan", lambda ws, d: T("replay", str(ws / "bags" / "good"), "--rate", "nan"), message=r"rate"))
+    add(Case("replay-garbage-mcap", lambda ws, d: T("replay", str(_write(d, "j.mcap", b"not an mcap"))),
+             message=r"j\.mcap: not an MCAP file", env={"ROS_DOMAIN_ID": "37", "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}))
+    add(Case("bag-plot-garbage-mcap", lambda ws, d: T("bag-plot", str(_write(d, "j.mcap", b"not an mcap")), "--out", str(d / "p.png")),
+             message=r"j\.mcap: not an MCAP file"))
     add(Case("replay-missing-bag", lambda ws, d: T("replay", str(d / "nobag")), message=r"nobag",
              env={"ROS_DOMAIN_ID": "37", "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}))
 
