@@ -104,6 +104,20 @@ def test_draws_are_seeded_random_subsets(seed_files: list[Path]) -> None:
     assert draw_seeds(seed_files, 3, 4, draw_seed=8) != draws                     # and with the draw seed
 
 
+def test_draws_from_no_more_seeds_than_a_draw_takes_are_flagged(tmp_path: Path, capsys) -> None:
+    # Every draw would be the same study: the user is told instead of being shown k identical results as k draws.
+    from txt2sce_ros.campaign.effectiveness import _chosen_seeds
+
+    seeds = tmp_path / "seeds"
+    seeds.mkdir()
+    (seeds / "manifest.json").write_text(json.dumps({"built": [{"file": "a.xosc"}, {"file": "b.xosc"}]}))
+    draws = _chosen_seeds(seeds, StudyConfig(out=tmp_path / "study", seeds=10, draws=3))
+    assert len(draws) == 3 and all(len(d) == 2 for d in draws)
+    assert "2 seed(s) built, not more than --seeds 10" in capsys.readouterr().err
+    _chosen_seeds(seeds, StudyConfig(out=tmp_path / "study2", seeds=1, draws=3))
+    assert "warning" not in capsys.readouterr().err
+
+
 def test_study_over_draws_assesses_each_draw_on_its_own_trees(seed_dir: Path, tmp_path: Path) -> None:
     from txt2sce_ros.campaign.effectiveness import format_draws, run_draws
 

@@ -94,3 +94,14 @@ def test_a_directory_without_trees_is_refused(tmp_path, capsys):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert "holds no scenario tree" in err and "Traceback" not in err
+
+
+def test_a_seed_directory_is_not_taken_for_a_tree(tmp_path, capsys):
+    # Seeds and trees both keep a manifest.json; a seed directory given where trees are read is named as such.
+    seeds = tmp_path / "seeds"
+    seeds.mkdir()
+    (seeds / "manifest.json").write_text(json.dumps({"built": [{"file": "a.xosc"}], "refused": []}))
+    for argv in (["diversity", str(seeds)], ["tree", "show", str(seeds)]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert "a seed directory, not a scenario tree" in err and "Traceback" not in err

@@ -257,6 +257,9 @@ def _chosen_seeds(seed_dir: Path, cfg: StudyConfig) -> list[list[Path]]:
     manifest = json.loads((seed_dir / "manifest.json").read_text(encoding="utf-8"))
     files = [seed_dir / e["file"] for e in manifest["built"]]
     if cfg.draws:
+        if cfg.draws > 1 and len(files) <= cfg.seeds:
+            print(f"[effectiveness] warning: {len(files)} seed(s) built, not more than --seeds {cfg.seeds}: every "
+                  f"draw takes all of them, so the {cfg.draws} draws are one study repeated", file=sys.stderr)
         draws = draw_seeds(files, cfg.seeds, cfg.draws, cfg.draw_seed)
     else:
         draws = [pick_seeds(files, cfg.seeds)]

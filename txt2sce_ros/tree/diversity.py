@@ -49,11 +49,17 @@ def _tup(x: Any) -> Any:
 def load_manifest(tree_dir: str | Path) -> dict[str, Any]:
     path = Path(tree_dir) / "manifest.json"
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
+        manifest = json.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError as exc:
         raise InputError("not a tree directory (no manifest.json)", source=str(tree_dir)) from exc
     except json.JSONDecodeError as exc:
         raise InputError(f"manifest is not JSON: {exc}", source=str(path)) from exc
+    if not isinstance(manifest, dict) or "blocks" not in manifest:
+        # a seed directory's manifest (built/refused) sits under the same name
+        what = "a seed directory" if isinstance(manifest, dict) and "built" in manifest else "no tree manifest"
+        raise InputError(f"{what}, not a scenario tree (grow trees with `txt2sce tree SEEDS --out DIR`)",
+                         source=str(tree_dir))
+    return manifest
 
 
 def find_trees(paths: Iterable[str | Path]) -> list[Path]:
