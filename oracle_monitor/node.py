@@ -39,7 +39,7 @@ from rclpy.signals import SignalHandlerOptions
 
 from txt2sce_ros import contract as c
 from txt2sce_ros.errors import Txt2SceError
-from txt2sce_ros.nodes.lifetime import node_lifetime
+from txt2sce_ros.nodes.lifetime import build_node, node_lifetime
 
 from .cdr import decode
 from .messages import verdict_to_diagnostics, violations_to_diagnostics
@@ -179,7 +179,7 @@ def main(args: list[str] | None = None) -> int:
     # Our own signal handling: rclpy's would shut the context down at once, and the messages already delivered
     # (the end of the last run, when the monitor lags) could no longer be taken.
     rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
-    node = OracleMonitorNode()
+    node = build_node(OracleMonitorNode, "oracle_monitor_node")
     executor = SingleThreadedExecutor()
     executor.add_node(node)
     signals: list[int] = []

@@ -60,7 +60,7 @@ from txt2sce_ros.contract import (EGO_NAME, TOPIC_CLOCK, TOPIC_COMMAND, TOPIC_EG
                                   TOPIC_SCENARIO, TOPIC_SCENARIO_MARKERS, TOPIC_TRAFFIC_LIGHTS, ControlCommand, Frame,
                                   RunStatus, ScenarioEnvelope)
 from txt2sce_ros.errors import Txt2SceError
-from txt2sce_ros.nodes.lifetime import node_lifetime
+from txt2sce_ros.nodes.lifetime import build_node, node_lifetime
 from txt2sce_ros.nodes.waiter import SubscriptionWaiter
 from txt2sce_ros.ros_io import road_markers_bytes, scenario_markers, string_msg
 
@@ -341,7 +341,7 @@ class PlayerNode(Node):
 
 def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
-    node = PlayerNode()
+    node = build_node(PlayerNode, "scenario_player_node")
     executor = SingleThreadedExecutor()
     executor.add_node(node)
     with node_lifetime(node, on_exit=lambda: executor.remove_node(node)):

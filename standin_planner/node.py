@@ -19,7 +19,7 @@ import sys
 import rclpy
 
 from txt2sce_ros.contract import Goal, ScenarioEnvelope
-from txt2sce_ros.nodes.lifetime import node_lifetime
+from txt2sce_ros.nodes.lifetime import build_node, node_lifetime
 from txt2sce_ros.nodes.lockstep_planner import LockStepPlannerNode
 from txt2sce_ros.road import RoadNetwork
 
@@ -61,7 +61,8 @@ class PlannerNode(LockStepPlannerNode):
 
 def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
-    with node_lifetime(PlannerNode()) as node:
+    node = build_node(PlannerNode, "planner_node")
+    with node_lifetime(node):
         rclpy.spin(node)
     return 0
 

@@ -147,6 +147,16 @@ def describe_live(pid: int, log: Path | None = None) -> str:
     return ", ".join(parts)
 
 
+def last_error(log: Path) -> str:
+    """The line of a node's log that says why it stopped: its last error line, else its last line."""
+    try:
+        lines = [ln.strip() for ln in log.read_text(encoding="utf-8", errors="replace").splitlines() if ln.strip()]
+    except OSError:
+        return f"(no log at {log})"
+    errors = [ln for ln in lines if "error" in ln.lower() or "exception" in ln.lower()]
+    return (errors or lines or ["(empty log)"])[-1][:300]
+
+
 def describe_exit(code: int) -> str:
     """'exit status 3' or 'killed by SIGKILL'."""
     if code < 0:
@@ -230,11 +240,16 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--domain-id", type=int, default=None)
     ap.add_argument("--log-dir", default=None)
     a = ap.parse_args(argv)
+    log_dir = Path(a.log_dir or tempfile.mkdtemp(prefix="txt2sce_ros_log_"))   # named here: failures quote it
     cfg = GraphConfig(scenarios=a.scenarios, bag_dir=a.bag_dir, planner=a.planner, faults=a.fault,
-                      lock_step=not a.real_time, domain_id=a.domain_id, log_dir=a.log_dir,
+                      lock_step=not a.real_time, domain_id=a.domain_id, log_dir=str(log_dir),
                       planner_timeout=PLANNER_TIMEOUTS.get(a.planner, 5.0), planner_settings=a.planner_settings)
     codes = run_graph(cfg, timeout=a.timeout)
     print("[launch] exit codes: " + ", ".join(f"{k}={v}" for k, v in codes.items()), file=sys.stderr)
+    for name, code in codes.items():
+        if code > 0:        # a node that failed on its own (negative: stopped by the launcher's signal)
+            print(f"[launch] {name} failed ({describe_exit(code)}): {last_error(log_dir / f'{name}.log')}",
+                  file=sys.stderr)
     return 0 if codes.get("generator") == 0 else 1
 
 

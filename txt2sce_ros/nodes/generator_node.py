@@ -1,7 +1,7 @@
 """Generator node: publishes scenario files on /txt2sce/scenario, one at a time.
 
 Parameters:
-- `scenarios` (string[]): .xosc files, directories of them, or scenario-tree directories (with manifest.json).
+- `scenarios` (string or string[]): .xosc files, directories of them, or scenario-tree directories (with manifest.json).
 - `wait_for_result` (bool, default true): publish the next scenario only after the player reports the current
   one `finished` on /txt2sce/run_status; false publishes all at once (the player queues them).
 - `subscriber_timeout` (float s, default 30): how long to wait for a player to subscribe before giving up.
@@ -16,25 +16,36 @@ import sys
 import time
 
 import rclpy
+from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from ..contract import TOPIC_RUN_STATUS, TOPIC_SCENARIO, RunStatus
+from ..errors import InputError
 from ..scenario_source import iter_envelopes
-from .lifetime import node_lifetime
+from .lifetime import build_node, node_lifetime
 
 SCENARIO_QOS = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+
+
+def _paths(value: object) -> list[str]:
+    """The `scenarios` parameter as a list of paths (a string or a string array)."""
+    items = [value] if isinstance(value, str) else value
+    if not isinstance(items, (list, tuple)) or not all(isinstance(x, str) for x in items):
+        raise InputError(f"parameter scenarios: expected a path or a list of paths, got {value!r}")
+    return [x for x in items if x]
 
 
 class GeneratorNode(Node):
     def __init__(self) -> None:
         super().__init__("txt2sce_generator")
-        self.declare_parameter("scenarios", [""])
+        # One path or a list of them: `-p scenarios:=trees` is what a user types first.
+        self.declare_parameter("scenarios", [""], ParameterDescriptor(dynamic_typing=True))
         self.declare_parameter("wait_for_result", True)
         self.declare_parameter("subscriber_timeout", 30.0)
         self.declare_parameter("exit_when_done", True)
-        inputs = [s for s in self.get_parameter("scenarios").value if s]
+        inputs = _paths(self.get_parameter("scenarios").value)
         self.wait = bool(self.get_parameter("wait_for_result").value)
         self.timeout = float(self.get_parameter("subscriber_timeout").value)
         self.exit_when_done = bool(self.get_parameter("exit_when_done").value)
@@ -79,7 +90,8 @@ class GeneratorNode(Node):
 
 def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
-    with node_lifetime(GeneratorNode()) as node:
+    node = build_node(GeneratorNode, "generator_node")
+    with node_lifetime(node):
         while rclpy.ok() and not (node.done and node.exit_when_done):
             rclpy.spin_once(node, timeout_sec=0.1)
     return 0
