@@ -273,3 +273,41 @@ def test_cli_llm_backend_flags_and_env(server: ChatServer, tmp_path: Path, monke
     assert {r["auth"] for r in server.log} == {f"Bearer {KEY}"} and len(server.log) == 5
     assert KEY not in out.read_text(encoding="utf-8")
     assert all(KEY.encode() not in p.read_bytes() for p in (tmp_path / "cache").rglob("*.answer"))
+
+
+def test_hybrid_keeps_the_rules_sketch_when_the_server_fails_and_a_dead_server_costs_one_attempt_a_report(
+        server: ChatServer, tmp_path: Path) -> None:
+    from txt2sce_ros.text.extractor import extract_weighed
+    from txt2sce_ros.text.llm import DOWN_AFTER
+
+    text = "The AV was traveling northbound on Main Street when a car in the left lane, then in the right lane, " \
+           "struck the AV."
+    server.fail_status = [503] * 100
+    ex = _extractor(server, tmp_path / "c", retries=3)
+    outs = [sketch_report(ReportInput(f"weak-{k}", text + " " * k, "mem"), backend="hybrid", llm=ex)
+            for k in range(6)]
+    rules = extract_weighed(text, "weak-0")[0]
+    # Nothing lost: every report keeps the rules' reading, and the extractor says which were not double-checked.
+    assert all(isinstance(o, Sketch) and o.npcs == rules.npcs for o in outs)
+    assert [rid for rid, _ in ex.not_consulted] == [f"weak-{k}" for k in range(6)]
+    assert "HTTP 503" in ex.not_consulted[-1][1]
+    # Retries for the first requests only; once the server is known down, one attempt per report.
+    assert len(server.log) == DOWN_AFTER * 4 + (6 - DOWN_AFTER)
+    # One answer brings the retries back.
+    server.fail_status = []
+    server.answers["WEAK SLOTS"] = "{}"
+    out = sketch_report(ReportInput("weak-9", text + " " * 9, "mem"), backend="hybrid", llm=ex)
+    assert isinstance(out, Sketch) and ex.client.down_streak == 0
+
+
+def test_cli_without_a_key_for_the_default_server_stops_at_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    from txt2sce_ros.cli.main import main
+
+    for name in ("TXT2SCE_LLM_API_KEY", "DEEPSEEK_API_KEY", "TXT2SCE_LLM_BASE_URL"):
+        monkeypatch.delenv(name, raising=False)
+    src = tmp_path / "one.jsonl"
+    src.write_text(json.dumps({"id": RID, "text": _text()}) + "\n", encoding="utf-8")
+    assert main(["extract", str(src), "--out", str(tmp_path / "o.jsonl"), "--backend", "hybrid", "--quiet"]) == 2
+    assert not (tmp_path / "o.jsonl").exists()       # stopped before any report, not one refusal per report
+    assert "no API key for https://api.deepseek.com" in capsys.readouterr().err

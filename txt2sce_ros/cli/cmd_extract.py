@@ -40,10 +40,15 @@ def run(args: argparse.Namespace) -> int:
     backend = args.backend or cfg.get("backend", "offline")
     llm = None
     if backend != "offline":
-        from ..text.llm import LlmConfig, LlmExtractor
+        from ..errors import InputError
+        from ..text.llm import DEFAULT_BASE_URL, KEY_ENV, LlmConfig, LlmExtractor, api_key
 
         llm = LlmExtractor.from_config(LlmConfig.from_settings(cfg.get("llm"), base_url=args.base_url,
                                                                model=args.model, timeout_s=args.timeout))
+        if api_key() is None and llm.client.config.base_url.rstrip("/") == DEFAULT_BASE_URL:
+            # Every request would be refused: say so once instead of once per report.
+            raise InputError(f"--backend {backend}: no API key for {DEFAULT_BASE_URL} (set {' or '.join(KEY_ENV)}, "
+                             f"or --base-url a server that needs none, e.g. a local Ollama or vLLM)")
     total = count_inputs(args.inputs)
     inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
     out = Path(args.out)
@@ -78,11 +83,17 @@ def run(args: argparse.Namespace) -> int:
             print(f"OL 316 form readings beside the sketches: {_forms_path(out)}", file=sys.stderr)
         if failed_pdfs:
             print(f"no narrative read from {len(failed_pdfs)} PDF(s): {', '.join(failed_pdfs)}", file=sys.stderr)
+    if llm is not None and llm.not_consulted:
+        ids = [rid for rid, _ in llm.not_consulted]
+        print(f"txt2sce extract: warning: the LLM server failed for {len(ids)} report(s), whose offline rules' "
+              f"sketch was kept ({', '.join(ids[:MAX_ERRORS_SHOWN])}{' ...' if len(ids) > MAX_ERRORS_SHOWN else ''}; "
+              f"last: {llm.not_consulted[-1][1]})", file=sys.stderr)
     # A batch carries on past bad rows (each has its error record): 1 when some failed (a PDF whose narrative
-    # could not be read counts: its sketch would be empty), 2 when nothing at all was usable.
+    # could not be read counts: its sketch would be empty; so does a hybrid report the server did not answer),
+    # 2 when nothing at all was usable.
     if errors and errors == n:
         return 2
-    return 1 if errors or failed_pdfs else 0
+    return 1 if errors or failed_pdfs or (llm is not None and llm.not_consulted) else 0
 
 
 def _config_workers(value: object) -> int:

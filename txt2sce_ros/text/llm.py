@@ -102,6 +102,7 @@ class _NoRedirect(urllib.request.HTTPRedirectHandler):
 
 
 _OPENER = urllib.request.build_opener(_NoRedirect)
+DOWN_AFTER = 2
 
 
 def api_key() -> str | None:
@@ -119,6 +120,10 @@ class ChatClient:
     requests_made: int = 0
     cache_hits: int = 0
     _sleep: Any = field(default=time.sleep, repr=False)
+    #: Requests in a row that got no answer after all their attempts. From `DOWN_AFTER` on, each request makes
+    #: one attempt only: a batch against a server that is down costs one attempt per report, not retries and
+    #: backoff for every one. An answer resets it.
+    down_streak: int = 0
 
     def _cache_path(self, messages: list[dict[str, str]]) -> Path:
         root = self.config.cache or (cache_dir() / "llm")
@@ -151,7 +156,8 @@ class ChatClient:
         if key:
             headers["Authorization"] = f"Bearer {key}"
         last = ""
-        for attempt in range(self.config.retries + 1):
+        attempts = 1 if self.down_streak >= DOWN_AFTER else self.config.retries + 1
+        for attempt in range(attempts):
             if attempt:
                 self._sleep(self.config.backoff_s * 2 ** (attempt - 1))
             self.requests_made += 1
@@ -162,7 +168,9 @@ class ChatClient:
                 if len(raw) > MAX_ANSWER_BYTES:
                     raise SimulationFault(f"LLM server answer longer than {MAX_ANSWER_BYTES} bytes", source=url)
                 payload = json.loads(raw.decode("utf-8"))
-                return str(payload["choices"][0]["message"]["content"])
+                content = str(payload["choices"][0]["message"]["content"])
+                self.down_streak = 0
+                return content
             except urllib.error.HTTPError as exc:
                 last = f"HTTP {exc.code}"
                 if 300 <= exc.code < 400:
@@ -186,7 +194,10 @@ class ChatClient:
             except (json.JSONDecodeError, UnicodeDecodeError, KeyError, IndexError, TypeError) as exc:
                 raise SimulationFault(f"LLM server answered outside the chat-completions protocol ({exc!r})",
                                       source=url) from exc
-        raise SimulationFault(f"LLM server failed after {self.config.retries + 1} attempts (last: {last})",
+        self.down_streak += 1
+        down = f"; {self.down_streak} requests in a row unanswered, so one attempt each" \
+            if self.down_streak > DOWN_AFTER else ""
+        raise SimulationFault(f"LLM server failed after {attempts} attempt{'s' * (attempts > 1)} (last: {last}{down})",
                               source=url)
 
 
@@ -243,6 +254,8 @@ class LlmExtractor:
 
     client: ChatClient
     reasks: int = 0  # total re-asks made (for reports and tests)
+    #: Hybrid reports whose server request failed: (report id, why). Their rules' sketch was kept.
+    not_consulted: list[tuple[str, str]] = field(default_factory=list)
 
     @classmethod
     def from_config(cls, config: LlmConfig) -> LlmExtractor:

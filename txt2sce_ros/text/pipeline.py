@@ -6,7 +6,7 @@ from collections.abc import Iterable, Iterator
 from functools import lru_cache, partial
 from typing import TYPE_CHECKING, Literal
 
-from ..errors import Txt2SceError
+from ..errors import SimulationFault, Txt2SceError
 from ..sketch import ErrorRecord, Sketch, validate_sketch_dict
 from .extractor import extract, extract_weighed
 from .forms import merge_form
@@ -43,7 +43,13 @@ def sketch_report(inp: ReportInput, *, backend: Backend = "offline", llm: LlmExt
             sk = llm.extract(inp.text, inp.report_id)
         else:
             rules, weak = extract_weighed(inp.text, inp.report_id)
-            sk = (llm or default_llm()).refine(rules, inp.text, weak)
+            llm = llm or default_llm()
+            try:
+                sk = llm.refine(rules, inp.text, weak)
+            except SimulationFault as exc:
+                # The server failed, not the report: the rules' reading stands (the batch says so at its end).
+                llm.not_consulted.append((inp.report_id, str(exc)))
+                sk = rules
         sk = merge_form(sk, inp.form)
     except Txt2SceError as exc:
         return ErrorRecord(inp.report_id, str(exc), inp.source)
