@@ -12,7 +12,7 @@ from __future__ import annotations
 import struct
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterator, NamedTuple
+from typing import Any, Iterator, NamedTuple
 
 from txt2sce_ros.errors import InputError
 
@@ -75,6 +75,18 @@ class BagReading:
         self.method = "rosbags"
         conns = [c for c in reader.connections if topics is None or c.topic in topics]
         try:
+            fast = _indexed_messages(reader, conns)
+        except Exception:                 # anything rosbags' own reading would have to judge: let it
+            fast = None
+        if fast is not None:
+            try:
+                for msg in fast:
+                    self.count += 1
+                    yield msg
+            finally:
+                reader.close()
+            return
+        try:
             for conn, ts, data in reader.messages(connections=conns):
                 self.count += 1
                 yield RawMessage(conn.topic, conn.msgtype, ts, data)
@@ -87,6 +99,94 @@ class BagReading:
 
 class _Fallback(Exception):
     pass
+
+
+# --- indexed MCAP reading in rosbags' order, without its per-message I/O ----------------------------------------------
+
+_MSG_REC = struct.Struct("<BQHIQQ")         # opcode, record length, channel id, sequence, log time, publish time
+
+
+def _indexed_messages(reader: Any, conns: list[Any]) -> list[RawMessage] | None:
+    """The messages `reader.messages(connections=conns)` would yield, in the same order with the same bytes, read
+    from the file in one piece instead of rosbags' few small reads per message (~40 % of an offline judge's time
+    went there). Only for the layout rosbags' own reading handles the same way: one MCAP file with a chunk index,
+    no per-message compression. None otherwise (the caller uses rosbags); raises on anything malformed (the caller
+    then lets rosbags read it, so damage is reported as before). The order is rosbags': each chunk's messages
+    stably sorted by log time, chunks merged by (log time, chunk offset).
+    """
+    from rosbags.rosbag2.storage_mcap import McapReader, decompress
+
+    directory = reader.storage
+    storages = getattr(directory, "storages", None)
+    if not storages or len(storages) != 1 or directory.metadata.compression_mode == "message":
+        return None
+    storage = storages[0]
+    if type(storage) is not McapReader or not storage.chunks or storage.bio is None:
+        return None
+    # rosbags' matching of the wanted connections to the file's channels (DirectoryReader.messages).
+    channels: dict[int, tuple[str, str]] = {}
+    for x in storage.connections:
+        for y in conns:
+            if (y.topic == x.topic and y.msgtype == x.msgtype and y.ext == x.ext
+                    and (not x.digest or not y.digest or y.digest == x.digest)):
+                channels[x.id] = (y.topic, y.msgtype)
+                break
+    if not channels:
+        return []
+    bio = storage.bio
+    bio.seek(0)
+    whole = bio.read()
+    runs: list[tuple[int, list[RawMessage]]] = []          # (chunk offset, its messages in time order)
+    unpack = _MSG_REC.unpack_from
+    for chunk in storage.chunks:
+        if not any(chunk.channel_count.get(cid, 0) for cid in channels):
+            continue
+        head = chunk.chunk_start_offset + 9
+        (crc,) = _U32.unpack_from(whole, head + 24)
+        start = head + 40 + len(chunk.compression)
+        stored = whole[start:start + chunk.compressed_size]
+        if len(stored) != chunk.compressed_size:
+            raise ValueError("chunk past the end of the file")
+        data = decompress(stored, chunk.compression, chunk.uncompressed_size, crc)
+        lo, hi = chunk.message_start_time, chunk.message_end_time + 1
+        msgs: list[RawMessage] = []
+        append = msgs.append
+        pos, end = 0, len(data)
+        while pos < end:
+            body = pos + 9
+            if data[pos] == 0x05:
+                _op, length, cid, _seq, log_time, _pub = unpack(data, pos)
+                if length < 22 or body + length > end:
+                    raise ValueError("damaged message record")
+                ch = channels.get(cid)
+                if ch is not None and lo <= log_time < hi:
+                    append(RawMessage(ch[0], ch[1], log_time, data[body + 22:body + length]))
+            else:
+                (length,) = _U64.unpack_from(data, pos + 1)
+                if body + length > end:
+                    raise ValueError("record past the end of its chunk")
+            pos = body + length
+        msgs.sort(key=_log_time)           # stable: file order among equal times, as rosbags' sorted()
+        if msgs:
+            runs.append((chunk.chunk_start_offset, msgs))
+    # rosbags merges the chunks by (log time, chunk offset): when each chunk ends no later than the next one
+    # starts, and the chunks are in file order, that is their concatenation.
+    in_order = all(o1 < o2 and m1[-1].log_time_ns <= m2[0].log_time_ns
+                   for (o1, m1), (o2, m2) in zip(runs, runs[1:]))
+    if in_order:
+        return [m for _, msgs in runs for m in msgs]
+    decorated = [(m.log_time_ns, offset, i, m) for offset, msgs in runs for i, m in enumerate(msgs)]
+    decorated.sort(key=_time_offset_key)
+    return [m for *_, m in decorated]
+
+
+def _log_time(m: RawMessage) -> int:
+    return m.log_time_ns
+
+
+def _time_offset_key(item: tuple[int, int, int, RawMessage]) -> tuple[int, int, int]:
+    return item[0], item[1], item[2]
+
 
 
 def read_bag(path: str | Path) -> BagReading:
