@@ -347,51 +347,114 @@ def decode_command(data: bytes | memoryview) -> tuple[int, ControlCommand]:
     return sec * 1_000_000_000 + nanosec, ControlCommand(t=sec + nanosec * 1e-9, speed=speed, yaw_rate=yaw_rate)
 
 
+def _text(m: memoryview, p: int) -> tuple[str, int]:
+    """The CDR string whose length is at `p` (4-aligned already) and the offset just past it."""
+    (n,) = _u32.unpack_from(m, p)
+    p += 4
+    if n <= 1:                              # "" is stored as length 1 (the NUL)
+        return "", p + n
+    end = p + n - 1
+    if end > len(m):
+        raise ValueError("string past the end")
+    return bytes(m[p:end]).decode(), p + n
+
+
 def decode_odometry(data: bytes | memoryview) -> NS:
-    r = _R(data)
-    header = r.header()
-    child = r.string()
-    px, py, pz, qx, qy, qz, qw = r.unpack(_f64x7, 8)
-    r.p += 8 * 36
-    lx, ly, lz = r.unpack(_f64x3, 8)
-    ax, ay, az = r.unpack(_f64x3, 8)
-    if r.p + 8 * 36 > len(r.m):
+    """A `nav_msgs/Odometry` (header, child frame id, pose and twist; the covariances skipped) by offsets: two
+    strings and two `struct` calls."""
+    m = memoryview(data)
+    if len(m) < 4 or m[1] != 1:
+        raise ValueError("not little-endian CDR")
+    sec, nanosec = _i32u32.unpack_from(m, 4)
+    frame_id, p = _text(m, 12)
+    p += (-(p - 4)) % 4
+    child, p = _text(m, p)
+    p += (-(p - 4)) % 8
+    if p + _ODOM_BODY.size > len(m):
         raise ValueError("Odometry shorter than its covariance")
+    px, py, pz, qx, qy, qz, qw, lx, ly, lz, ax, ay, az = _ODOM_BODY.unpack_from(m, p)
     pose = NS(position=_vec(px, py, pz), orientation=NS(x=qx, y=qy, z=qz, w=qw))
-    return NS(header=header, child_frame_id=child, pose=NS(pose=pose),
-              twist=NS(twist=NS(linear=_vec(lx, ly, lz), angular=_vec(ax, ay, az))))
+    return NS(header=NS(stamp=NS(sec=sec, nanosec=nanosec), frame_id=frame_id), child_frame_id=child,
+              pose=NS(pose=pose), twist=NS(twist=NS(linear=_vec(lx, ly, lz), angular=_vec(ax, ay, az))))
+
+
+# A marker's fields from its pose to its text's length, for the usual marker (no points, colours, texture or uv
+# coordinates; empty texture resource, texture frame id and format), laid out from the 8-aligned pose on.
+_MARKER_USUAL = struct.Struct("<7d3d4fiIB3xIII1x3xiII1x3xI1x3xIII")
+_MARKER_USUAL_END = struct.Struct("<I1x3xI1x3xIB")  # mesh resource "", mesh file name "", no mesh data, the flag
 
 
 def decode_markers(data: bytes | memoryview) -> NS:
+    """A `visualization_msgs/MarkerArray` with the fields `ros_io` reads (stamps, ns, id, type, action, text, pose,
+    scale). A marker of the usual shape (see `_MARKER_USUAL`) is read with two `struct` calls; any other marker by
+    the field-by-field reader, which gives the same objects (tested on both shapes)."""
     r = _R(data)
+    m = r.m
     markers = []
+    append = markers.append
     for _ in range(r.u32()):
-        header = r.header()
-        ns = r.string()
-        mid, mtype, action = r.unpack(_i32x3, 4)
-        px, py, pz, qx, qy, qz, qw = r.unpack(_f64x7, 8)
-        sx, sy, sz = r.unpack(_f64x3, 8)
-        r.unpack(_f32x4, 4)                                 # color
-        r.unpack(_i32u32, 4)                                # lifetime
-        r.p += 1                                            # frame_locked
-        r.skip_seq(24, 8)                                   # points
-        r.skip_seq(16, 4)                                   # colors
-        r.string()                                          # texture_resource
-        r.header()                                          # texture.header
-        r.string()                                          # texture.format
-        r.skip_seq(1, 1)                                    # texture.data
-        r.skip_seq(8, 4)                                    # uv_coordinates
-        text = r.string()
-        r.string()                                          # mesh_resource
-        r.string()                                          # mesh_file.filename
-        r.skip_seq(1, 1)                                    # mesh_file.data
-        r.p += 1                                            # mesh_use_embedded_materials
-        markers.append(NS(header=header, ns=ns, id=mid, type=mtype, action=action, text=text,
-                          pose=NS(position=_vec(px, py, pz), orientation=NS(x=qx, y=qy, z=qz, w=qw)),
-                          scale=_vec(sx, sy, sz)))
+        start = r.p
+        p = start + (-(start - 4)) % 4
+        sec, nanosec = _i32u32.unpack_from(m, p)
+        frame_id, p = _text(m, p + 8)
+        p += (-(p - 4)) % 4
+        ns, p = _text(m, p)
+        q = p + (-(p - 4)) % 4                              # the ids, 4-aligned
+        mid8 = q + 12 + (-(q + 12 - 4)) % 8                 # the pose, 8-aligned
+        try:
+            (px, py, pz, qx, qy, qz, qw, sx, sy, sz, _r, _g, _b, _a, _ls, _ln, _lock, n_points, n_colors, n_res,
+             _ts, _tn, n_frame, n_format, n_tex, n_uv, n_text) = _MARKER_USUAL.unpack_from(m, mid8)
+            usual = (n_points == 0 and n_colors == 0 and n_res == 1 and n_frame == 1 and n_format == 1
+                     and n_tex == 0 and n_uv == 0 and n_text >= 1)
+            if usual:
+                t0 = mid8 + _MARKER_USUAL.size
+                t1 = t0 + n_text - 1
+                tail = t1 + 1 + (-(t1 + 1 - 4)) % 4
+                n_mesh, n_file, n_mesh_data, _emb = _MARKER_USUAL_END.unpack_from(m, tail)
+                usual = n_mesh == 1 and n_file == 1 and n_mesh_data == 0
+        except struct.error:
+            usual = False
+        if not usual:
+            r.p = start
+            append(_marker_fields(r))
+            continue
+        mid, mtype, action = _i32x3.unpack_from(m, q)
+        text = bytes(m[t0:t1]).decode() if n_text > 1 else ""
+        r.p = tail + _MARKER_USUAL_END.size
+        append(NS(header=NS(stamp=NS(sec=sec, nanosec=nanosec), frame_id=frame_id), ns=ns, id=mid, type=mtype,
+                  action=action, text=text,
+                  pose=NS(position=_vec(px, py, pz), orientation=NS(x=qx, y=qy, z=qz, w=qw)),
+                  scale=_vec(sx, sy, sz)))
     if r.p > len(r.m):
         raise ValueError("MarkerArray past the end")
     return NS(markers=markers)
+
+
+def _marker_fields(r: _R) -> NS:
+    """One marker, field by field (any shape)."""
+    header = r.header()
+    ns = r.string()
+    mid, mtype, action = r.unpack(_i32x3, 4)
+    px, py, pz, qx, qy, qz, qw = r.unpack(_f64x7, 8)
+    sx, sy, sz = r.unpack(_f64x3, 8)
+    r.unpack(_f32x4, 4)                                 # color
+    r.unpack(_i32u32, 4)                                # lifetime
+    r.p += 1                                            # frame_locked
+    r.skip_seq(24, 8)                                   # points
+    r.skip_seq(16, 4)                                   # colors
+    r.string()                                          # texture_resource
+    r.header()                                          # texture.header
+    r.string()                                          # texture.format
+    r.skip_seq(1, 1)                                    # texture.data
+    r.skip_seq(8, 4)                                    # uv_coordinates
+    text = r.string()
+    r.string()                                          # mesh_resource
+    r.string()                                          # mesh_file.filename
+    r.skip_seq(1, 1)                                    # mesh_file.data
+    r.p += 1                                            # mesh_use_embedded_materials
+    return NS(header=header, ns=ns, id=mid, type=mtype, action=action, text=text,
+              pose=NS(position=_vec(px, py, pz), orientation=NS(x=qx, y=qy, z=qz, w=qw)),
+              scale=_vec(sx, sy, sz))
 
 
 _DIAG_BODY: dict[tuple[int, bytes], list[NS]] = {}
