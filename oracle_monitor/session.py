@@ -188,7 +188,7 @@ class JudgeSession:
             self._used = True
             if key is not None and key > self._cur_max_key:
                 self._cur_max_key = key
-            self._feed(self.assembler, topic, msg, self._frame)
+            self._feed(self.assembler, topic, msg, key, self._frame)
             return
         if key is not None and key > self._next_max_key:
             self._next_max_key = key
@@ -196,7 +196,7 @@ class JudgeSession:
         # when none comes within NEXT_RUN_PATIENCE frames of the next run — as a run that never reported its end.
         if self._next is None:
             self._next = FrameAssembler()
-        self._feed(self._next, topic, msg, self._next_frames.append)
+        self._feed(self._next, topic, msg, key, self._next_frames.append)
         if len(self._next_frames) > NEXT_RUN_PATIENCE:
             # The current run's end never came (or its last frames were lost in transport): close it with what
             # it has — its held final status, if any.
@@ -210,18 +210,20 @@ class JudgeSession:
         return msg.child_frame_id in self._names_at_key.get(topic, ())
 
     @staticmethod
-    def _feed(asm: FrameAssembler, topic: str, msg: Any, sink: Callable[[Any], None]) -> None:
+    def _feed(asm: FrameAssembler, topic: str, msg: Any, key: int | None, sink: Callable[[Any], None]) -> None:
+        # `key` is `_stamp_key(topic, msg)`: the assembler's own key of the message (None only for an empty
+        # MarkerArray, which the assembler ignores).
         if topic == c.TOPIC_EGO_ODOM:
             # The ego is whoever /sim/ego/odom names (a scenario's own "Ego", "hero", ...), not a fixed name.
             if msg.child_frame_id != asm.ego_name:
                 asm.ego_name = msg.child_frame_id
-            frame = asm.add_odometry(msg)
+            frame = asm.add_odometry(msg, key)
         elif topic == c.TOPIC_OBJECTS_ODOM:
-            frame = asm.add_odometry(msg)
+            frame = asm.add_odometry(msg, key)
         elif topic == c.TOPIC_OBJECTS_MARKERS:
-            frame = asm.add_markers(msg)
+            frame = asm.add_markers(msg, key)
         else:
-            frame = asm.add_lights(msg)         # a step's lights may be the message that completes its frame
+            frame = asm.add_lights(msg, key)    # a step's lights may be the message that completes its frame
         if frame is not None:
             sink(frame)
 

@@ -369,8 +369,11 @@ class FrameAssembler:
         self._last_status: Any = None
         self._last_lights: tuple[TrafficLightState, ...] = ()
 
-    def add_lights(self, msg: DiagnosticArray) -> Frame | None:
-        key = stamp_key(msg.header.stamp)
+    # `key`, when given, is the message's `stamp_key` (a caller that computed it already passes it on).
+
+    def add_lights(self, msg: DiagnosticArray, key: int | None = None) -> Frame | None:
+        if key is None:
+            key = stamp_key(msg.header.stamp)
         if key <= self._done_up_to:
             return None
         status = msg.status
@@ -380,17 +383,19 @@ class FrameAssembler:
         self._lights[key] = self._last_lights
         return self._try(key)
 
-    def add_markers(self, msg: MarkerArray) -> Frame | None:
+    def add_markers(self, msg: MarkerArray, key: int | None = None) -> Frame | None:
         if not msg.markers:
             return None
-        key = stamp_key(msg.markers[0].header.stamp)
+        if key is None:
+            key = stamp_key(msg.markers[0].header.stamp)
         if key <= self._done_up_to:
             return None
         self._markers[key] = {m.text: marker_dims(m) for m in msg.markers}
         return self._try(key)
 
-    def add_odometry(self, msg: Odometry) -> Frame | None:
-        key = stamp_key(msg.header.stamp)
+    def add_odometry(self, msg: Odometry, key: int | None = None) -> Frame | None:
+        if key is None:
+            key = stamp_key(msg.header.stamp)
         if key <= self._done_up_to:
             return None
         self._odom[key][msg.child_frame_id] = msg
