@@ -277,7 +277,9 @@ class _R:
     __slots__ = ("m", "p")
 
     def __init__(self, data: bytes | memoryview) -> None:
-        self.m = memoryview(data)
+        # Read from bytes (a bag's or DDS's message is bytes already): slices of bytes decode without the extra
+        # copy a memoryview slice needs.
+        self.m = data if type(data) is bytes else bytes(data)
         if len(self.m) < 4 or self.m[1] != 1:
             raise ValueError("not little-endian CDR")
         self.p = 4
@@ -309,7 +311,7 @@ class _R:
         if end > len(self.m):
             raise ValueError("string past the end")
         self.p = p + n
-        return bytes(self.m[p:end]).decode()
+        return self.m[p:end].decode()
 
     def skip_seq(self, elem_size: int, align: int) -> None:
         n = self.u32()
@@ -347,7 +349,7 @@ def decode_command(data: bytes | memoryview) -> tuple[int, ControlCommand]:
     return sec * 1_000_000_000 + nanosec, ControlCommand(t=sec + nanosec * 1e-9, speed=speed, yaw_rate=yaw_rate)
 
 
-def _text(m: memoryview, p: int) -> tuple[str, int]:
+def _text(m: bytes, p: int) -> tuple[str, int]:
     """The CDR string whose length is at `p` (4-aligned already) and the offset just past it."""
     (n,) = _u32.unpack_from(m, p)
     p += 4
@@ -356,13 +358,13 @@ def _text(m: memoryview, p: int) -> tuple[str, int]:
     end = p + n - 1
     if end > len(m):
         raise ValueError("string past the end")
-    return bytes(m[p:end]).decode(), p + n
+    return m[p:end].decode(), p + n
 
 
 def decode_odometry(data: bytes | memoryview) -> NS:
     """A `nav_msgs/Odometry` (header, child frame id, pose and twist; the covariances skipped) by offsets: two
     strings and two `struct` calls."""
-    m = memoryview(data)
+    m = data if type(data) is bytes else bytes(data)
     if len(m) < 4 or m[1] != 1:
         raise ValueError("not little-endian CDR")
     sec, nanosec = _i32u32.unpack_from(m, 4)
@@ -419,7 +421,7 @@ def decode_markers(data: bytes | memoryview) -> NS:
             append(_marker_fields(r))
             continue
         mid, mtype, action = _i32x3.unpack_from(m, q)
-        text = bytes(m[t0:t1]).decode() if n_text > 1 else ""
+        text = m[t0:t1].decode() if n_text > 1 else ""
         r.p = tail + _MARKER_USUAL_END.size
         append(NS(header=NS(stamp=NS(sec=sec, nanosec=nanosec), frame_id=frame_id), ns=ns, id=mid, type=mtype,
                   action=action, text=text,
@@ -465,7 +467,7 @@ def decode_diagnostics(data: bytes | memoryview) -> NS:
     header = r.header()
     # The signals' statuses repeat from step to step (only the header's stamp changes): decode each distinct body
     # once. The status objects are shared between messages; readers only read them.
-    key = ((r.p - 4) % 4, bytes(r.m[r.p:]))  # the body's alignment is part of its meaning
+    key = ((r.p - 4) % 4, r.m[r.p:])  # the body's alignment is part of its meaning
     cached = _DIAG_BODY.get(key)
     if cached is not None:
         return NS(header=header, status=cached)
@@ -479,7 +481,7 @@ def decode_diagnostics(data: bytes | memoryview) -> NS:
 def _decode_statuses(r: _R) -> list[NS]:
     status = []
     for _ in range(r.u32()):
-        level = bytes(r.m[r.p:r.p + 1])
+        level = r.m[r.p:r.p + 1]
         r.p += 1
         name, message, hw = r.string(), r.string(), r.string()
         values = [NS(key=r.string(), value=r.string()) for _ in range(r.u32())]
