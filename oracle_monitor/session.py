@@ -180,7 +180,10 @@ class JudgeSession:
                 self._names_at_key.pop(topic, None)
             self._topic_key[topic] = key
             if topic == c.TOPIC_OBJECTS_ODOM:
-                self._names_at_key.setdefault(topic, set()).add(msg.child_frame_id)
+                names = self._names_at_key.get(topic)
+                if names is None:
+                    names = self._names_at_key[topic] = set()
+                names.add(msg.child_frame_id)
         if gen < self._gen:
             self.dropped += 1                      # a finished run's late message (e.g. its last lights)
             return
