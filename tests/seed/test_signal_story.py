@@ -6,7 +6,7 @@ from __future__ import annotations
 from lxml import etree
 
 from txt2sce_ros.seed.model import SignalPhase, SignalPlan
-from txt2sce_ros.seed.signal_story import colour_of, is_signal_story, lamp_state, read_plan, write_plan
+from txt2sce_ros.seed.signal_story import EarlyStart, colour_of, is_signal_story, lamp_state, read_plan, write_plan
 
 PLAN = SignalPlan("signal_ctrl_9", (SignalPhase("phase_red", 6.0, (("1", "red"), ("2", "green"))),
                                     SignalPhase("phase_green", 4.0, (("1", "green"), ("2", "red")))))
@@ -54,15 +54,13 @@ def test_lamp_strings_round_trip_and_other_texts_pass() -> None:
     assert lamp_state("flashing;off;off") == "flashing;off;off"
 
 
-def test_the_player_switches_at_the_first_step_after_each_start(tmp_path) -> None:
-    # A straight road with one light: the form played by our player (esmini-check compares the same times with
-    # esmini's in tests/scenario_player/test_esmini_portability.py).
+def _play_lights(tmp_path, inits, story, t_end: float = 5.0) -> dict[float, str]:
+    """Light 1010's colour after each step of the player running `inits` + `story` on a straight road with one
+    light (the ego stands by it: the story alone switches the lights)."""
     from scenario_player import Simulation, SimulationConfig, load_scenario
     from txt2sce_ros.mapdb.bundled import bundled_map_paths
 
     xodr = next(p for p in bundled_map_paths() if p.name == "junction4_signal.xodr")
-    inits, story = write_plan(SignalPlan("s", (SignalPhase("a", 1.0, (("1010", "red"),)),
-                                              SignalPhase("b", 2.0, (("1010", "green"),)))), time_limit=5.0)
     ga = "".join(etree.tostring(g, encoding="unicode") for g in inits)
     xosc = f"""<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="0" date="2024-01-01T00:00:00"
       description="t" author="t"/><ParameterDeclarations/><CatalogLocations/>
@@ -76,16 +74,62 @@ def test_the_player_switches_at_the_first_step_after_each_start(tmp_path) -> Non
       <LanePosition roadId="1" laneId="-2" s="50" offset="0"/></Position></TeleportAction></PrivateAction>
       </Private></Actions></Init>{etree.tostring(story, encoding="unicode")}
       <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
-      <SimulationTimeCondition value="5" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
+      <SimulationTimeCondition value="{t_end:g}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup>
       </StopTrigger></Storyboard></OpenSCENARIO>"""
     path = tmp_path / "lights.xosc"
     path.write_text(xosc, encoding="utf-8")
-    sim = Simulation(load_scenario(path), SimulationConfig(ego_mode="storyboard", time_limit=5.0))
+    sim = Simulation(load_scenario(path), SimulationConfig(ego_mode="storyboard", time_limit=t_end))
     sim.reset()
     shown = {}
     while not sim.done:
         t = sim.world.t
         sim.advance(None)
         shown[round(t, 2)] = colour_of(sim.world.signals.state_text("1010"))
+    return shown
+
+
+def test_the_player_switches_at_the_first_step_after_each_start(tmp_path) -> None:
+    # A straight road with one light: the form played by our player (esmini-check compares the same times with
+    # esmini's in tests/scenario_player/test_esmini_portability.py).
+    inits, story = write_plan(SignalPlan("s", (SignalPhase("a", 1.0, (("1010", "red"),)),
+                                              SignalPhase("b", 2.0, (("1010", "green"),)))), time_limit=5.0)
+    shown = _play_lights(tmp_path, inits, story)
     assert shown[1.0] == "red" and shown[1.05] == "green"          # started by `t > 1` at the step from 1.05
     assert shown[3.0] == "green" and shown[3.05] == "red"          # the cycle back to phase a at 3 s
+
+
+def _time_cond(name: str, t: float) -> etree._Element:
+    cond = etree.Element("Condition", name=name, delay="0", conditionEdge="none")
+    etree.SubElement(etree.SubElement(cond, "ByValueCondition"), "SimulationTimeCondition", value=f"{t:g}",
+                     rule="greaterThan")
+    return cond
+
+
+YELLOW = SignalPlan("s", (SignalPhase("y", 3.0, (("1010", "yellow"),)), SignalPhase("r", 2.0, (("1010", "red"),)),
+                          SignalPhase("g", 0.0, (("1010", "green"),))))
+
+
+def test_an_early_start_brings_phase_one_forward_once_phase_zero_has_shown_its_minimum(tmp_path) -> None:
+    # yellow from t > 1 for 3 s (red at 4), but red as soon as t > 2.5 once the yellow has shown 1 s
+    early = EarlyStart(1.0, _time_cond("soon", 2.5))
+    inits, story = write_plan(YELLOW, time_limit=8.0, trigger=_time_cond("go", 1.0), early=early)
+    red = [e for e in story.iter("Event") if e.get("name") == "s_r"][0]
+    groups = red.findall("StartTrigger/ConditionGroup")
+    assert [[(c.get("name"), c.get("delay")) for c in g] for g in groups] == [
+        [("go_r", "3")], [("go_r_shown", "1"), ("go_r_early", "0")]]
+    # read back, the plan is the one written without the early start (its first group gives the durations)
+    assert read_plan(inits, story) == read_plan(*write_plan(YELLOW, time_limit=8.0, trigger=_time_cond("go", 1.0)))
+    shown = _play_lights(tmp_path, inits, story, t_end=8.0)
+    assert shown[1.0] == "green" and shown[1.05] == "yellow"
+    assert shown[2.5] == "yellow" and shown[2.55] == "red"         # early: 1.5 s of yellow
+    assert shown[6.0] == "red" and shown[6.05] == "green"         # the later phases keep their offsets
+    # a condition that holds before the minimum waits for it: red 1 s after the yellow began, not at t > 1.2
+    inits, story = write_plan(YELLOW, time_limit=8.0, trigger=_time_cond("go", 1.0),
+                              early=EarlyStart(1.0, _time_cond("soon", 1.2)))
+    shown = _play_lights(tmp_path, inits, story, t_end=8.0)
+    assert shown[2.0] == "yellow" and shown[2.05] == "red"
+    # one that never holds leaves the red at its time
+    inits, story = write_plan(YELLOW, time_limit=8.0, trigger=_time_cond("go", 1.0),
+                              early=EarlyStart(1.0, _time_cond("never", 99.0)))
+    shown = _play_lights(tmp_path, inits, story, t_end=8.0)
+    assert shown[4.0] == "yellow" and shown[4.05] == "red"

@@ -38,18 +38,18 @@ def seeds(tmp_path_factory) -> dict[str, Path]:
     return {b["report_id"]: out / b["file"] for b in manifest["built"]}
 
 
-def _signal_variants(seed: Path):
+def _signal_variants(seed: Path, cfg=None):
     data = seed.read_bytes()
     ctx = build_context(parse_bytes(data, str(seed)), source=str(seed), seed_path=seed)
     d = disassemble(data, source=str(seed))
     block = next(b for b in d.blocks if b.kind is BlockKind.SIGNAL)
-    vs = block_variants(block, ctx, tree_config(), seed=0, seed_key=seed_key(seed.name))
+    vs = block_variants(block, ctx, cfg or tree_config(), seed=0, seed_key=seed_key(seed.name))
     return d, block, {v.features[1]: v for v in vs}, ctx
 
 
-def _node(seed: Path, state: str = "yellow") -> Path:
+def _node(seed: Path, state: str = "yellow", cfg=None) -> Path:
     """The seed with only its signal block replaced by the `state` variant, written beside it (maps resolve)."""
-    d, block, by_state, _ = _signal_variants(seed)
+    d, block, by_state, _ = _signal_variants(seed, cfg)
     frags = d.originals()
     for slot, frag in zip(block.slots, by_state[state].fragments):
         frags[slot] = frag
@@ -166,13 +166,21 @@ def test_red_light_misread_is_caught_and_the_nominal_planner_is_not(seeds, tmp_p
 
 
 def test_yellow_keeps_the_fixed_schedule_when_the_ego_starts_at_the_line(seeds):
-    # An ego standing at its stop line meets the yellow from t = 0 (as before): no dilemma zone to wait for, and
-    # another block may start it up to `max_shift` m further ahead, past the line, where the trigger never fires.
+    # An ego standing at its stop line, with no approach start free behind it (here: a car queued 40 m behind
+    # and a minimum approach speed the room left cannot give), meets the yellow from t = 0 (as before): no
+    # dilemma zone to wait for, and another block may start it up to `max_shift` m further ahead, past the line,
+    # where the trigger never fires.
     seed = seeds[AT_LINE]
-    _, _, by_state, ctx = _signal_variants(seed)
-    shift = tree_config()["trajectory"]["init_location"]["max_shift"]
+    cfg = tree_config()
+    cfg["trajectory"]["init_location"]["approach_min_speed"] = 7.9
+    _, _, by_state, ctx = _signal_variants(seed, cfg)
+    shift = cfg["trajectory"]["init_location"]["max_shift"]
     assert stop_line(ctx, ctx.ego_signals[0]) is not None
     assert stop_line(ctx, ctx.ego_signals[0], slack=shift) is None
+    assert by_state["yellow"].needs == ()
     assert not _plan(by_state["yellow"])[0].triggered
-    rows, _ = _play(_node(seed), ())
+    rows, _ = _play(_node(seed, cfg=cfg), ())
     assert rows[0][1] == "yellow"
+    # with the default minimum the queue leaves room for a slower approach, and the yellow waits under it
+    _, _, by_state, _ = _signal_variants(seed)
+    assert by_state["yellow"].needs == (("ego", "approach"),) and _plan(by_state["yellow"])[0].triggered

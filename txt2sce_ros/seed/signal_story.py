@@ -92,15 +92,27 @@ def _event(man: etree._Element, name: str, phase: SignalPhase) -> etree._Element
     return ev
 
 
-def write_plan(plan: SignalPlan, *, time_limit: float, trigger: etree._Element | None = None
-               ) -> tuple[list[etree._Element], etree._Element]:
+@dataclass(frozen=True)
+class EarlyStart:
+    """A second way for phase 1 of a triggered plan to start (`write_plan`): once phase 0 has shown for at least
+    `after` s, as soon as `condition` (a `Condition` element) holds — a second ConditionGroup of its StartTrigger,
+    the plan's trigger delayed by `after` AND `condition`. Its first group stays the plan's trigger delayed by
+    phase 0's duration, so phase 1 starts at the latest then, and `read_plan` reads the plan unchanged."""
+
+    after: float
+    condition: etree._Element
+
+
+def write_plan(plan: SignalPlan, *, time_limit: float, trigger: etree._Element | None = None,
+               early: EarlyStart | None = None) -> tuple[list[etree._Element], etree._Element]:
     """The Init GlobalActions and the Story of `plan`.
 
     Without `trigger` (timed): Init shows phase 0; each later phase starts at its start time, and the phases cycle
     (as a controller's do) while a phase starts before `time_limit`; at least one event is written (a Story needs
     one), so a one-phase plan re-applies its phase after its duration. With `trigger` (a `Condition` element):
     Init shows the last phase (the one the plan settles in), phase 0 starts when `trigger` holds and phase k
-    `sum(durations[:k])` s later (the same condition with that delay); the last phase then holds."""
+    `sum(durations[:k])` s later (the same condition with that delay); the last phase then holds. `early` (with
+    `trigger` only): phase 1 may also start sooner (`EarlyStart`); the later phases keep their offsets."""
     name = plan.name
     story = etree.Element("Story", name=name)
     act = etree.SubElement(story, "Act", name=f"{name}_act")
@@ -137,7 +149,17 @@ def write_plan(plan: SignalPlan, *, time_limit: float, trigger: etree._Element |
             cond = deepcopy(trigger)
             cond.set("name", f"{trigger.get('name', name)}_{ph.name}" if k else trigger.get("name", name))
             cond.set("delay", f"{offset:g}")
-            _event(man, f"{name}_{ph.name}", ph).append(_trigger_of(cond))
+            start = _trigger_of(cond)
+            if k == 1 and early is not None:
+                shown = deepcopy(trigger)
+                shown.set("name", f"{trigger.get('name', name)}_{ph.name}_shown")
+                shown.set("delay", f"{early.after:g}")
+                extra = deepcopy(early.condition)
+                extra.set("name", f"{trigger.get('name', name)}_{ph.name}_early")
+                group = etree.SubElement(start, "ConditionGroup")
+                group.append(shown)
+                group.append(extra)
+            _event(man, f"{name}_{ph.name}", ph).append(start)
     act_start = _condition(act, f"{name}_act_start")
     etree.SubElement(etree.SubElement(act_start, "ByValueCondition"), "SimulationTimeCondition", value="0",
                      rule="greaterThan")

@@ -15,7 +15,7 @@ from ..config import load_config
 from ..errors import InputError
 from ..seed.context import LanePos, SeedContext
 from ..seed.model import SignalPhase, SignalPlan
-from ..seed.signal_story import DecodedPlan, read_plan, write_plan
+from ..seed.signal_story import DecodedPlan, EarlyStart, read_plan, write_plan
 from .dynamics import initial_speed
 from .trajectory import feasible_s, footprint_extent
 from .values import Recorder, uniform
@@ -102,6 +102,8 @@ class SignalTiming:
     hold: float = 3600.0
     margin: float = 0.7     # the yellow starts when the ego is `yellow + margin` s from the stop line
     lead: float = 1.0       # s an approach start (`approach_start`) drives before the dilemma zone begins
+    min_yellow: float = 3.0  # s a dilemma-zone yellow shows at least before its red may come early
+    arrival: float = 0.5    # s: the red of a dilemma-zone yellow comes early once the ego is this close to the line
 
 
 @lru_cache(maxsize=1)
@@ -120,6 +122,13 @@ def signal_timing() -> SignalTiming:
     if timing.red <= timing.yellow:
         raise InputError("tls.red must exceed tls.yellow (the conflicting signals' yellow is part of the red)",
                          source="config/effect.yaml", element="tls.red")
+    if timing.min_yellow > timing.yellow:
+        raise InputError("tls.min_yellow must not exceed tls.yellow (the yellow's red comes at tls.yellow at the "
+                         "latest)", source="config/effect.yaml", element="tls.min_yellow")
+    if timing.arrival >= timing.margin:
+        raise InputError("tls.arrival must be shorter than tls.margin (an ego at constant speed meets the red "
+                         "tls.yellow s after the onset, tls.margin s from the line: only one that speeds up "
+                         "meets it early)", source="config/effect.yaml", element="tls.arrival")
     return timing
 
 
@@ -241,23 +250,36 @@ def dilemma_yellow(parts: list[etree._Element | None], ctx: SeedContext, rec: Re
     if line is None:
         return False
     name = decoded.plan.name
-    cond = etree.Element("Condition", name=f"{name}_dilemma_zone", delay="0", conditionEdge="none")
-    by = etree.SubElement(cond, "ByEntityCondition")
-    etree.SubElement(etree.SubElement(by, "TriggeringEntities", triggeringEntitiesRule="any"), "EntityRef",
-                     entityRef="ego")
-    ttc = etree.SubElement(etree.SubElement(by, "EntityCondition"), "TimeToCollisionCondition",
-                           value=f"{timing.yellow + timing.margin:g}", freespace="true", alongRoute="false",
-                           rule="lessThan")
-    etree.SubElement(etree.SubElement(etree.SubElement(ttc, "TimeToCollisionConditionTarget"), "Position"),
-                     "LanePosition", roadId=line.road, laneId=str(line.lane), s=f"{line.s:.3f}", offset="0")
-    inits, story = write_plan(SignalPlan(name, phases), time_limit=time_limit, trigger=cond)
+    cond = _time_to_line(f"{name}_dilemma_zone", line, timing.yellow + timing.margin)
+    # The red comes early when the ego arrives early: an AV that speeds up after the onset (from a slow approach,
+    # out of a turn) would otherwise clear on yellow whatever it made of it, and one that slows for a turn would
+    # meet the red far enough back to stop. Once the yellow has shown `min_yellow` s (a legal amber), the red
+    # starts as the ego comes within `arrival` s of the line, which no stack that stopped at yellow reaches
+    # (its time to the line grows as it stops); `yellow` s after the onset it starts regardless.
+    early = EarlyStart(timing.min_yellow, _time_to_line(f"{name}_arrival", line, timing.arrival))
+    inits, story = write_plan(SignalPlan(name, phases), time_limit=time_limit, trigger=cond, early=early)
     parts[:] = [*inits, story]
     for el in parts:
         rec.check_tree(el)
     rec.note(f"Story[@name='{name}']/Event[@name='{name}_tls_yellow']", None,
              f"tls_yellow when ego TTC to stop line road {line.road} lane {line.lane} s {line.s:.2f} < "
-             f"{timing.yellow + timing.margin:g} s (lights green until then)")
+             f"{timing.yellow + timing.margin:g} s (lights green until then); red {timing.yellow:g} s later, or "
+             f"after {timing.min_yellow:g} s once the TTC < {timing.arrival:g} s")
     return True
+
+
+def _time_to_line(name: str, line: LanePos, seconds: float) -> etree._Element:
+    """A Condition: the ego's front bumper is less than `seconds` of travel at its speed from the stop line `line`
+    (TimeToCollisionCondition to the line's LanePosition, `freespace`, along its heading)."""
+    cond = etree.Element("Condition", name=name, delay="0", conditionEdge="none")
+    by = etree.SubElement(cond, "ByEntityCondition")
+    etree.SubElement(etree.SubElement(by, "TriggeringEntities", triggeringEntitiesRule="any"), "EntityRef",
+                     entityRef="ego")
+    ttc = etree.SubElement(etree.SubElement(by, "EntityCondition"), "TimeToCollisionCondition",
+                           value=f"{seconds:g}", freespace="true", alongRoute="false", rule="lessThan")
+    etree.SubElement(etree.SubElement(etree.SubElement(ttc, "TimeToCollisionConditionTarget"), "Position"),
+                     "LanePosition", roadId=line.road, laneId=str(line.lane), s=f"{line.s:.3f}", offset="0")
+    return cond
 
 
 @dataclass(frozen=True, slots=True)
@@ -271,23 +293,35 @@ class Approach:
 
 
 def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: float,
-                   timing: SignalTiming | None = None) -> Approach | None:
+                   timing: SignalTiming | None = None, lateral_accel: float | None = None,
+                   min_speed: float | None = None) -> Approach | None:
     """WPM on the AV's initial location for a dilemma-zone yellow (TLS): where the seed starts the AV too close to
     the light it faces to arrive at speed (standing at the line, as in a report of an AV waiting at a red light,
     or moving but already inside the zone), a start further back on the same lane from which the AV, at its seed
     speed (`speed` when it stood), drives `lead` s before it is `yellow + margin` s from the line: the yellow then
     turns while it approaches, as the dilemma zone intends, instead of showing from t = 0 to an AV that is at the
-    line or cannot stop anyway. None when the seed's start already gives that approach, no traffic light faces
-    the AV on its start road, or the new start is not feasible (`feasible_s`: on the road and lane, never behind
-    a party that started behind the AV in its lane; `margin`, `min_gap` as there)."""
+    line or cannot stop anyway.
+
+    The zone is timed at the AV's speed (`dilemma_yellow`), so the approach is made at a speed it can keep to the
+    line: where its route turns in the junction beyond the light, no faster than that turn allows at
+    `lateral_accel` m/s^2 (`turn_speed`; an AV that slows for the turn after the onset would meet the red far
+    enough back to stop, whatever it made of the yellow) — a seed whose own start is far enough back but faster
+    than that gets the approach too. Where the lane behind is taken (a party that started behind the AV in its
+    lane stays behind it), the start furthest back that is free, at the speed that still gives the `lead`, down
+    to `min_speed` (None: the full distance or nothing).
+
+    None when the seed's start already gives that approach, no traffic light faces the AV on its start road, or
+    no start is feasible (`feasible_s`: on the road and lane, never behind a party that started behind the AV in
+    its lane; `margin`, `min_gap` as there)."""
     net, m, ego = ctx.network, ctx.map, ctx.starts.get("ego")
     if net is None or m is None or ego is None or not m.has_road(ego.road):
         return None
     timing = timing or signal_timing()
-    v = initial_speed(ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")) or 0.0
-    v = v if v > 0.0 else float(speed)
+    seed_v = initial_speed(ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")) or 0.0
+    v = seed_v if seed_v > 0.0 else float(speed)
     front = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))[1]
     sign = m.direction(ego.road, ego.lane)
+    window = timing.yellow + timing.margin + timing.lead
     for sid in ctx.ego_signals:
         sig = net.signals.get(sid)
         if sig is None or not sig.is_traffic_light or str(sig.road_id) != ego.road:
@@ -295,16 +329,82 @@ def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: fl
         ahead = sign * (sig.s - ego.s)          # reference point to the line
         if ahead <= 0.0:
             return None                          # the AV starts past the light: it never approaches it
-        need = v * (timing.yellow + timing.margin + timing.lead) + front
-        if ahead >= need:
+        turn = turn_speed(ctx, lateral_accel) if lateral_accel else None
+        slowed = turn is not None and turn < v
+        v = min(v, turn) if turn is not None else v
+        need = v * window + front
+        if ahead >= need and not slowed:
             return None                          # the seed's own start already arrives at speed
-        new_s = sig.s - sign * need
-        if not feasible_s(ctx, "ego", ego, new_s, margin, min_gap):
-            return None
         lanes = tuple(getattr(sig, "controlled_lanes", ()) or ())
         lane = ego.lane if not lanes or ego.lane in lanes else lanes[0]
-        return Approach(str(sid), LanePos(road=ego.road, lane=int(lane), s=float(sig.s)), float(new_s), v)
+        line = LanePos(road=ego.road, lane=int(lane), s=float(sig.s))
+        new_s = sig.s - sign * need
+        if _free_start(ctx, ego, new_s, margin, min_gap):
+            return Approach(str(sid), line, float(new_s), v)
+        if min_speed is None:
+            return None
+        # the lane behind is taken: the furthest-back free start (1 m steps toward the line), slower
+        for back in np.arange(math.floor(need) - 1.0, front, -1.0):
+            v_short = (back - front) / window
+            if v_short < min_speed:
+                return None
+            new_s = sig.s - sign * float(back)
+            if _free_start(ctx, ego, new_s, margin, min_gap):
+                return Approach(str(sid), line, float(new_s), float(round(v_short, 3)))
+        return None
     return None
+
+
+def _free_start(ctx: SeedContext, ego: LanePos, new_s: float, margin: float, min_gap: float) -> bool:
+    """`feasible_s` for the AV at `new_s`, and its footprint `min_gap` m clear of the footprint of every party
+    starting in its lane (`feasible_s` spaces reference points: a bus's reference point 6 m behind the AV's
+    start leaves its front inside the AV)."""
+    if not feasible_s(ctx, "ego", ego, new_s, margin, min_gap):
+        return False
+    sign = ctx.map.direction(ego.road, ego.lane)
+    e_rear, e_front = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))
+    lo, hi = sorted((new_s + sign * e_rear, new_s + sign * e_front))
+    for other, pos in ctx.starts.items():
+        if other == "ego" or (pos.road, pos.lane) != (ego.road, ego.lane):
+            continue
+        rear, front = footprint_extent(ctx.root.find(f"Entities/ScenarioObject[@name='{other}']"))
+        o_lo, o_hi = sorted((pos.s + sign * rear, pos.s + sign * front))
+        if o_lo - hi < min_gap and lo - o_hi < min_gap:
+            return False
+    return True
+
+
+def configured_approach(ctx: SeedContext, init: dict[str, Any]) -> Approach | None:
+    """`approach_start` with the settings of `config/mutation.yaml` `trajectory.init_location` (`init`)."""
+    return approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
+                          min_gap=float(init["min_gap"]), lateral_accel=float(init["approach_lateral_accel"]),
+                          min_speed=float(init["approach_min_speed"]))
+
+
+def turn_speed(ctx: SeedContext, lateral_accel: float) -> float | None:
+    """The speed (m/s) at which the AV's route through the junction beyond its start road takes its sharpest bend
+    with `lateral_accel` m/s^2 of lateral acceleration: sqrt(a / k) for the largest mean curvature k over 5 m of
+    the route's junction roads (None when the route crosses no junction or goes straight through it)."""
+    net, m = ctx.network, ctx.map
+    if net is None or m is None:
+        return None
+    k_max = 0.0
+    for wp in ctx.ego_route[1:]:
+        if not m.has_road(wp.road) or not m.in_junction(wp.road):
+            continue
+        length = m.road_length(wp.road)
+        ss = np.linspace(0.0, length, max(int(length), 2) + 1)
+        heading = np.unwrap([net.road_heading(wp.road, float(x)) for x in ss])
+        span = min(5.0, length)
+        for a in ss:
+            b = min(a + span, length)
+            if b - a < span - 1e-6:
+                break
+            ha, hb = np.interp([a, b], ss, heading)
+            k_max = max(k_max, abs(hb - ha) / (b - a))
+    if k_max < 1e-3:                 # radius over 1 km: straight on
+        return None
+    return math.sqrt(lateral_accel / k_max)
 
 
 #: m: the map's lights within this distance of the light facing the AV belong to its junction (a new plan sets them).

@@ -14,7 +14,7 @@ from lxml import etree
 from .blocks import BlockKind
 from .dynamics import initial_speed
 from ..seed.context import SeedContext, lane_pos
-from .environment import approach_start, primary_signal, signal_block, weather_type
+from .environment import configured_approach, primary_signal, signal_block, weather_type
 from .physical import entity_element
 
 _EVENT_RE = re.compile(r"^(?P<entity>.+?)_e(?P<k>\d+)_(?P<action>.+)$")
@@ -62,8 +62,7 @@ def _is_approach(private: etree._Element | None, ctx: SeedContext, cfg: dict[str
     if tele is None:
         return False
     init = cfg["trajectory"]["init_location"]
-    found = approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
-                           min_gap=float(init["min_gap"]))
+    found = configured_approach(ctx, init)
     return found is not None and abs(lane_pos(tele).s - round(found.s, 3)) < 1e-6
 
 

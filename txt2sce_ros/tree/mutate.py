@@ -28,7 +28,7 @@ from .blocks import Block, BlockKind, Variant
 from ..seed.context import SeedContext
 from ..seed.signal_story import time_limit_of
 from .dynamics import dtm, standing_start, tsm
-from .environment import approach_start, dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
+from .environment import configured_approach, dilemma_yellow, new_signal, obstacle_fragments, oim_position, tls, wm
 from .features import block_features, split_event_name
 from .parties import ROLE_EXCLUDES, ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
@@ -62,8 +62,7 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
     init = cfg["trajectory"]["init_location"]
     # a start on the AV's approach to the light it faces, where the seed's start is too close to it for a
     # dilemma-zone yellow (the ego block writes it; the yellow versions of the signal blocks need it)
-    approach = approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
-                              min_gap=float(init["min_gap"])) \
+    approach = configured_approach(ctx, init) \
         if block.kind in (BlockKind.EGO, BlockKind.SIGNAL, BlockKind.NEW_SIGNAL) else None
     yellow_needs = (("ego", "approach"),) if approach is not None else ()
 
