@@ -42,24 +42,29 @@ COMPANY_ALTERNATION = _CO
 _AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|"
             r"robotaxi|suv)")
 
-#: Ways the narratives name the AV (the ego). Order matters: longest first, applied to normalised text.
-EGO_PATTERNS: tuple[str, ...] = (
-    rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{_CO})(?:'s|-operated|-owned)?\s+"
-    rf"(?:(?:autonomous|av|test|driverless|self-driving|"
-    rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
-    rf"\b(?:the|a|an|our)\s+(?:{_CO})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
-    rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
-    r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
-    r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
-    r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
-    r"\b(?:the\s+)?subject\s+vehicle\b",
-    r"\b(?:our(?:\s+test)?|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",
-    r"\ba\s+test\s+vehicle\b",
-    r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)",
-    r"\bthis\s+vehicle\b",
-    # NHTSA SGO wording: "the ADS-equipped vehicle", "the ADS vehicle" (ADS: automated driving system).
-    r"\b(?:the|an?|our)\s+ads(?:-equipped|-operated|-dedicated)?\s+(?:test\s+)?(?:vehicle|car)\b",
-)
+def ego_patterns(co: str) -> tuple[str, ...]:
+    """Ways the narratives name the AV (the ego), with `co` the alternation of operators' names. Order matters:
+    longest first, applied to normalised text."""
+    return (
+        rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{co})(?:'s|-operated|-owned)?\s+"
+        rf"(?:(?:autonomous|av|test|driverless|self-driving|"
+        rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
+        rf"\b(?:the|a|an|our)\s+(?:{co})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
+        rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
+        r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
+        r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
+        r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
+        r"\b(?:the\s+)?subject\s+vehicle\b",
+        r"\b(?:our(?:\s+test)?|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",
+        r"\ba\s+test\s+vehicle\b",
+        r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)",
+        r"\bthis\s+vehicle\b",
+        # NHTSA SGO wording: "the ADS-equipped vehicle", "the ADS vehicle" (ADS: automated driving system).
+        r"\b(?:the|an?|our)\s+ads(?:-equipped|-operated|-dedicated)?\s+(?:test\s+)?(?:vehicle|car)\b",
+    )
+
+
+EGO_PATTERNS: tuple[str, ...] = ego_patterns(_CO)
 
 #: People who drive the AV: their manoeuvres are the AV's.
 EGO_DRIVER = compile_gated(

@@ -14,11 +14,60 @@ from dataclasses import dataclass, field
 from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
-                      PARKED_WORDS, PARTY_HEADS, VAN_MODELS)
+                      PARKED_WORDS, PARTY_HEADS, VAN_MODELS, ego_patterns)
 
 _QUOTE_PAIRS = (("“", '"'), ("”", '"'), ("‘", "'"), ("’", "'"), ("–", "-"), ("—", "-"), ("\u00a0", " "))
 _EGO_RES = [compile_gated(p, re.I) for p in EGO_PATTERNS]
 _COMPANY_RE = compile_gated(rf"\b(?:{COMPANY_ALTERNATION})\b", re.I)
+# How a narrative introduces its AV under its operator's name: "A Waymo Autonomous Vehicle", "an Avride AV",
+# "(the "Acme AV")", or as the first vehicle of its first sentence, "(On ..., ) a Zoox vehicle ...". The name found
+# there names the AV in the rest of the text, whether or not the operator is one of the companies the lexicon knows.
+_DESCRIPTOR = r"(?:autonomous|automated|driverless|self-driving|test|driver-equipped|ads|level|registered|av|sv|" \
+              r"the|an?|this|our|its)\b"
+# (a dot only inside a name, "Pony.ai": never the end of a sentence)
+_WORD = rf"(?!{_DESCRIPTOR})(?-i:[A-Z])(?:[\w&'-]|\.(?=\w))*"
+_NAME = rf"({_WORD}(?:\s+{_WORD}){{0,3}}?)"
+_OPERATOR_DEF = compile_gated(
+    rf"\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:(?:driver-equipped|ads|level\s+4)\s+)*"
+    rf"(?:(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck|shuttle)|AV)\b|"
+    rf"\(\s*[\"']\s*(?:the\s+)?{_NAME}\s+(?:AV|vehicle)\s*[\"']\s*\)", re.I)
+_FIRST_VEHICLE = compile_gated(
+    rf"\A[^.]{{0,200}}?\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:test\s+)?(?:vehicle|car|robotaxi|shuttle)\b",
+    re.I)
+#: Capitalised words that open such a phrase without naming an operator.
+_NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another", "other", "second", "first"}) | \
+    frozenset(MAKES) | frozenset(VAN_MODELS)
+
+
+def _unknown_operator(t: str) -> str | None:
+    """The operator's name the narrative gives its AV when the lexicon does not know it, else None."""
+    # (The AV is introduced in the opening sentences: the rest of a long narrative is not searched.)
+    m = _OPERATOR_DEF.search(t, 0, 1000) or _FIRST_VEHICLE.search(t)
+    if m is None:
+        return None
+    name = " ".join(next(g for g in m.groups() if g).split())
+    if _COMPANY_RE.search(name) or name.lower() in _NOT_OPERATORS or name.split()[0].lower() in _NOT_OPERATORS:
+        return None
+    return name
+
+
+_NAME_RES: dict[str, tuple[list[re.Pattern[str]], re.Pattern[str]]] = {}
+
+
+def _name_patterns(operator: str | None) -> tuple[list[re.Pattern[str]], re.Pattern[str]]:
+    """The AV-name and company patterns, with `operator` added to the known companies (compiled once per name;
+    most narratives name a known operator and use the module's own patterns)."""
+    if operator is None:
+        return _EGO_RES, _COMPANY_RE
+    if operator not in _NAME_RES:
+        if len(_NAME_RES) >= 64:
+            _NAME_RES.pop(next(iter(_NAME_RES)))
+        co = f"(?:{COMPANY_ALTERNATION}|{re.escape(operator)})"
+        _NAME_RES[operator] = ([compile_gated(p, re.I) for p in ego_patterns(co)],
+                               compile_gated(rf"\b{co}\b", re.I))
+    return _NAME_RES[operator]
+
+
 _FIRST_EGO_NOUN = compile_gated(r"\b(?:a|an|the)\s+(?:[A-Z][\w.-]*\s+){1,3}(shuttle|Prius|robotaxi)\b")
 _UPPER_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 _ALPHA_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
@@ -74,6 +123,11 @@ _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|a
                         r"when|as|while|was|were|is|had|has|then|that|which|who|EGO|EGOD|,|;|:)$", re.I)
 _SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
                           r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
+# A sentence that opens with when it happened and no comma before its subject: "On June 3, 2025 at 4:10 PM PT a
+# Waymo AV was stopped ...", "At approximately 9:44 AM the AV ...".
+_TIME_INTRO = compile_gated(r"^\s*(?:on|at|around|about|approximately|shortly\s+(?:before|after))\b"
+                            r"(?:(?!\b(?:was|were|is|are|had|has|when|while|as|and|then)\b)[\w\s,:.\[\]]){0,80}?"
+                            r"(?:\b\d{1,4}|\[XXX\]|(?:\b|\d)[ap]\.?m\.?|\b(?:P[SD]?T|C[SD]?T|E[SD]?T|M[SD]?T))\s*$", re.I)
 
 
 @dataclass
@@ -134,6 +188,7 @@ def normalise(text: str) -> str:
     n_alpha = len(raw) - len(raw.translate(None, _ALPHA_BYTES))
     if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
+    ego_res, company_re = _name_patterns(_unknown_operator(t))
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
     numbered = fre.search(r"\((?:vehicle|car|v)\s*#?\s*[2-9]\)", t, re.I) is not None
@@ -142,28 +197,28 @@ def normalise(text: str) -> str:
         t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
     # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.
     one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
-    if one and _COMPANY_RE.search(t[max(0, one.start() - 60):one.start()]):
+    if one and company_re.search(t[max(0, one.start() - 60):one.start()]):
         t = fre.sub(r"\b(?:vehicle|car|v)\s*#?\s*1\b(?!\s*\))", "the AV", t, flags=re.I)
     alias = _ALIAS_DEF.search(t)
-    if alias and not any(rx.search(alias.group(1)) for rx in _EGO_RES) and \
-            any(rx.search(t[max(0, alias.start() - 80):alias.start()]) for rx in _EGO_RES):
+    if alias and not any(rx.search(alias.group(1)) for rx in ego_res) and \
+            any(rx.search(t[max(0, alias.start() - 80):alias.start()]) for rx in ego_res):
         # "A Toyota Research Institute Vehicle (the 'TRI Vehicle") ... the TRI Vehicle then impacted the barrier":
         # a quoted name given right after the AV's name is the AV's, wherever the text uses it.
         t = t[:alias.end()] + fre.sub(rf"\b(?:the\s+)?{re.escape(alias.group(1))}\b", "the AV", t[alias.end():],
                                       flags=re.I)
     t = _PAREN_DEF.sub("", t)
     # The AV's operator: the company in the first name given to an AV ("On May 7 ..." names no company).
-    several = len({_company_key(m.group(0)) for m in _COMPANY_RE.finditer(t)}) > 1  # else nothing to tell apart
-    found = (rx.search(t) for rx in _EGO_RES) if several else ()
-    named = [m for m in found if m and _COMPANY_RE.search(m.group(0))]
-    first_co = _COMPANY_RE.search(min(named, key=lambda m: m.start()).group(0)) if named else None
+    several = len({_company_key(m.group(0)) for m in company_re.finditer(t)}) > 1  # else nothing to tell apart
+    found = (rx.search(t) for rx in ego_res) if several else ()
+    named = [m for m in found if m and company_re.search(m.group(0))]
+    first_co = company_re.search(min(named, key=lambda m: m.start()).group(0)) if named else None
     av_company = _company_key(first_co.group(0)) if first_co else None
 
     def ego_or_other(m: re.Match[str]) -> str:
         # "a Lyft vehicle" or "a Waymo AV" in a Cruise report is another party: the AV is its reporter's own.
-        co = _COMPANY_RE.search(m.group(0))
+        co = company_re.search(m.group(0))
         return m.group(0) if co and av_company and _company_key(co.group(0)) != av_company else " EGO"
-    for rx in _EGO_RES:
+    for rx in ego_res:
         t = rx.sub(ego_or_other, t)
     if fre.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us").
@@ -173,7 +228,7 @@ def normalise(text: str) -> str:
     # "a Navya ARMA shuttle ... the shuttle", "a Nuro Prius ... the Prius": a distinctive noun the AV was named
     # with (with its operator's name) refers to the AV afterwards.
     first_ego = _FIRST_EGO_NOUN.search(quoted)
-    if first_ego and _COMPANY_RE.search(first_ego.group(0)):
+    if first_ego and company_re.search(first_ego.group(0)):
         t = fre.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
     if "EGO" not in t:
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
@@ -324,7 +379,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             start = m.start() - sum(len(w) + 1 for w in mods)
         pre = s[max(0, start - 60):max(0, start)]
         pre_wo_det = _DET_END.sub("", pre)
-        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or (start <= 60 and pre_wo_det.strip() == "")
+        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or (start <= 60 and pre_wo_det.strip() == "") or \
+            (start <= 120 and bool(_TIME_INTRO.match(_DET_END.sub("", s[:max(0, start)]))))
         out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
                            det=det, mods=mod_text, subject=subject, count=count))
     return out
