@@ -6,7 +6,9 @@ reports make without changing the accident.
   another party.)
 - When it happened, told first without a comma ("On June 3, 2025 at 4:10 PM a Waymo AV was ..."): the sentence's
   subject is still the AV. (Before, 20 of 66 narratives changed: the AV's stop or turn went to nobody.) Lighting
-  is read from the time, so the environment is left out of that comparison."""
+  is read from the time, so the environment is left out of that comparison.
+- Headings abbreviated as police and NHTSA narratives write them ("traveling NB", "a S/B sedan"). (Before, 10 of
+  78 narratives changed.)"""
 
 from __future__ import annotations
 
@@ -78,4 +80,18 @@ def test_a_time_told_first_without_a_comma_keeps_the_av_the_subject() -> None:
         if _content(timed, rid, environment=False) != _content(text, rid, environment=False):
             wrong.append(rid)
     assert told >= 60
+    assert not wrong, wrong
+
+
+def test_abbreviated_headings_read_like_the_words() -> None:
+    told = 0
+    wrong = []
+    for rid, text in _studyable().items():
+        short = re.sub(r"\b(north|south|east|west)bound\b", lambda m: m.group(1)[0].upper() + "B", text, flags=re.I)
+        if short == text:
+            continue
+        told += 1
+        if _content(short, rid) != _content(text, rid):
+            wrong.append(rid)
+    assert told >= 70
     assert not wrong, wrong

@@ -34,6 +34,10 @@ _OPERATOR_DEF = compile_gated(
 _FIRST_VEHICLE = compile_gated(
     rf"\A[^.]{{0,200}}?\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:test\s+)?(?:vehicle|car|robotaxi|shuttle)\b",
     re.I)
+# Headings abbreviated in capitals, as police and NHTSA narratives write them: NB, S/B, EB, SWB.
+_HEADING_ABBREV = compile_gated(r"\b(N|S|E|W|NE|NW|SE|SW)/?B\b")
+_COMPASS = {"N": "north", "S": "south", "E": "east", "W": "west", "NE": "northeast", "NW": "northwest",
+            "SE": "southeast", "SW": "southwest"}
 #: Capitalised words that open such a phrase without naming an operator.
 _NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another", "other", "second", "first"}) | \
     frozenset(MAKES) | frozenset(VAN_MODELS)
@@ -183,6 +187,9 @@ def normalise(text: str) -> str:
             if old in quoted:
                 quoted = quoted.replace(old, new)
     t = fre.sub(r"\s+", " ", quoted).strip()
+    if _HEADING_ABBREV.search(t):
+        # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
+        t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
     raw = t.encode("utf-8", "surrogatepass")
     n_upper = len(raw) - len(raw.translate(None, _UPPER_BYTES))
     n_alpha = len(raw) - len(raw.translate(None, _ALPHA_BYTES))
