@@ -77,6 +77,7 @@ EGO_DRIVER = compile_gated(
 PARTY_HEADS: dict[str, str] = {
     "pickup truck": "car", "pick-up truck": "car", "pickup": "car", "passenger vehicle": "car",
     "passenger car": "car", "police car": "car", "police vehicle": "car", "patrol car": "car", "suv": "car",
+    "sport utility vehicle": "car", "sports utility vehicle": "car",
     "sedan": "car", "coupe": "car", "hatchback": "car", "taxi": "car", "cab": "car", "car": "car",
     "vehicle": "car", "jeep": "car", "crossover": "car", "automobile": "car", "wagon": "car",
     "minivan": "van", "mini-van": "van", "van": "van", "sprinter": "van",

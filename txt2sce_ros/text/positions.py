@@ -105,7 +105,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     lane_ctx = fre.search(r"(?:(?:in|from)\s+the\s+(?:\w+\s+){0,2}(?:left|right)(?:\s+\w+){0,2}\s+lane|"
                          r"lane\s+to\s+(?:the|its|our|EGO's)\s+"
                          r"(?:left|right)|(?:left|right)\s+(?:adjacent\s+)?lane|to\s+the\s+(?:left|right)\s+of\s+EGO|"
-                         r"on\s+the\s+(?:left|right)|(?:to|from)\s+EGO's\s+(?:left|right)|(?:left|right)\s+side|"
+                         # (a side of a body, "struck the left side of EGO", "its right side", is no lane)
+                         r"on\s+the\s+(?:left|right)|(?:to|from|on)\s+EGO's\s+(?:left|right)|"
+                         r"(?:from|along)\s+the\s+(?:left|right)\s+side|"
                          r"bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
     if lane_ctx and fre.search(r"\b(?:into|onto)\s+(?:the\s+)?$", scan[max(0, lane_ctx.start() - 12):lane_ctx.start()],
