@@ -12,6 +12,13 @@ by the allocation count). `--trace-children` because the ROS wheels re-exec the 
 recorder flushes by size only here (`flush_interval=1e9`): under valgrind's ~50x slow-down its 0.5 s wall-clock
 flush would cut the run into hundreds of tiny drains a native run never makes. Compare a `rec` run with a `plain`
 run of the same scenario (and a checkout of the code before a change with one after, via PYTHONPATH).
+
+    ... python -m txt2sce_ros.bench._judge_callgrind offline
+
+measures offline judging instead: the bench's judging input with one copy of each scenario (both runs recorded
+into one bag, ~10,100 messages), judged once as a warm-up and once as part 2 (`judge_bag`: reading, decoding,
+frames, oracle, verdicts). Instructions per message = part 2's total / the message count it prints. Run as a
+file (`python .../_judge_callgrind.py offline`) with PYTHONPATH on another checkout, it judges with that code.
 """
 
 from __future__ import annotations
@@ -30,9 +37,11 @@ def main(argv: list[str] | None = None) -> int:
     from .judge import SCENARIOS, _lockstep
 
     args = sys.argv[1:] if argv is None else argv
+    if args == ["offline"]:
+        return _offline()
     if len(args) != 2 or args[0] not in ("plain", "rec") or args[1] not in SCENARIOS:
-        print(f"usage: python -m txt2sce_ros.bench._judge_callgrind {{plain|rec}} {{{'|'.join(SCENARIOS)}}}",
-              file=sys.stderr)
+        print(f"usage: python -m txt2sce_ros.bench._judge_callgrind {{plain|rec}} {{{'|'.join(SCENARIOS)}}} | "
+              f"offline", file=sys.stderr)
         return 2
     mode, name = args
     tmp = Path(tempfile.mkdtemp(prefix="txt2sce_judge_callgrind_"))
@@ -55,5 +64,30 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
+def _offline() -> int:
+    from oracle_monitor.bagread import read_bag
+    from oracle_monitor.judge import judge_bag
+    from oracle_monitor.runwriter import RunWriter
+    # Absolute: the file also runs as a script over another checkout's packages (PYTHONPATH), for a before figure.
+    from txt2sce_ros.bench.judge import SCENARIOS, _lockstep
+
+    tmp = Path(tempfile.mkdtemp(prefix="txt2sce_judge_callgrind_"))
+    try:
+        bag = tmp / "judge_input"
+        with RunWriter(bag, flush_interval=1e9) as w:
+            for name in SCENARIOS:
+                _lockstep(name, w)
+        messages = sum(1 for _ in read_bag(bag).messages())
+        judge_bag(bag)
+        gc.collect()
+        os.getppid()                        # callgrind dumps part 1 here: what follows is the measured judging
+        result = judge_bag(bag)
+        os.getppid()                        # end of part 2
+        print(f"offline judging: {messages} messages, {len(result.verdicts)} runs")
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return 0
+
+
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(_offline() if sys.argv[1:] == ["offline"] else main())
