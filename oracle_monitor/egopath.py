@@ -25,7 +25,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Goal
 
-from .geometry import BoxGroup, footprint
+from .geometry import FAR_SLACK, BoxGroup, footprint
 
 #: A mover counts as crossing the path when its heading differs from the path's by more than this (deg).
 CROSSING_DEG = 25.0
@@ -151,14 +151,20 @@ class EgoPath:
             return ""
         taus = np.arange(0.0, horizon + 1e-9, PREDICT_DT)
         min_sin = math.sin(math.radians(CROSSING_DEG))
+        box = None                              # the window's bounding box, once a mover needs it
         for obj in objects:
             if obj.is_static or obj.speed < min_speed:
                 continue
             c, s = math.cos(obj.heading), math.sin(obj.heading)
             cx, cy = obj.x + obj.center_x * c, obj.y + obj.center_x * s
             qx, qy = cx + obj.speed * taus * c, cy + obj.speed * taus * s
-            d2 = (qx[:, None] - pts[None, :, 0]) ** 2 + (qy[:, None] - pts[None, :, 1]) ** 2
             reach = 0.5 * ego.width + 0.5 * obj.width + margin
+            if box is None:
+                box = (float(pts[:, 0].min()), float(pts[:, 0].max()), float(pts[:, 1].min()),
+                       float(pts[:, 1].max()))
+            if course_apart(qx, qy, box, reach):
+                continue                        # no predicted point within reach of any path sample
+            d2 = (qx[:, None] - pts[None, :, 0]) ** 2 + (qy[:, None] - pts[None, :, 1]) ** 2
             hit = np.argwhere(d2 <= reach * reach)
             if len(hit) == 0:
                 continue
@@ -166,6 +172,19 @@ class EgoPath:
             if abs(math.sin(obj.heading - float(pts[j, 2]))) >= min_sin:
                 return obj.name
         return ""
+
+
+def course_apart(qx: np.ndarray, qy: np.ndarray, box: tuple[float, float, float, float], reach: float) -> bool:
+    """Whether the predicted course (qx, qy) keeps more than `reach` + `FAR_SLACK` from the box (x0, x1, y0, y1)
+    along x or along y: then every point of it is that far from every path sample in the box, and `crossing`'s
+    distance test (d² <= reach²) holds for none (a conservative pre-test; 1 mm of slack is far above the
+    rounding of d²). The course is start + speed·tau·(cos, sin) over increasing tau, each coordinate computed
+    by operations that keep order, so its first and last points bound it."""
+    far = reach + FAR_SLACK
+    x0, x1, y0, y1 = box
+    qx0, qx1, qy0, qy1 = float(qx[0]), float(qx[-1]), float(qy[0]), float(qy[-1])
+    return (min(qx0, qx1) - x1 > far or x0 - max(qx0, qx1) > far
+            or min(qy0, qy1) - y1 > far or y0 - max(qy0, qy1) > far)
 
 
 def _ahead(network: Any, start: Any, end: Any) -> bool:

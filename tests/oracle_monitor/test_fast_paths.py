@@ -223,3 +223,67 @@ def test_meets_and_foreseeable_answer_as_the_plain_box_tests() -> None:
             assert cf.foreseeable(name, until) == want
             answers["foreseen"] += want is not None
     assert 10 < answers["meets"] < 140 and 10 < answers["foreseen"] < 90      # both answers were exercised
+
+
+def _plain_crossing(path: EgoPath, ego: EntityState, front: tuple[float, float], objects, *, distance: float,
+                    horizon: float, margin: float, min_speed: float) -> str:
+    """`EgoPath.crossing` written out: every mover's whole course against every path sample, no pre-test."""
+    from oracle_monitor.egopath import CROSSING_DEG, PREDICT_DT
+
+    path._s_hint = 0.0
+    pts = path.window(path.locate(*front), distance)
+    taus = np.arange(0.0, horizon + 1e-9, PREDICT_DT)
+    for obj in objects:
+        if obj.is_static or obj.speed < min_speed:
+            continue
+        c, s = math.cos(obj.heading), math.sin(obj.heading)
+        cx, cy = obj.x + obj.center_x * c, obj.y + obj.center_x * s
+        qx, qy = cx + obj.speed * taus * c, cy + obj.speed * taus * s
+        d2 = (qx[:, None] - pts[None, :, 0]) ** 2 + (qy[:, None] - pts[None, :, 1]) ** 2
+        reach = 0.5 * ego.width + 0.5 * obj.width + margin
+        hit = np.argwhere(d2 <= reach * reach)
+        if len(hit) and abs(math.sin(obj.heading - float(pts[int(hit[0, 1]), 2]))) >= math.sin(
+                math.radians(CROSSING_DEG)):
+            return obj.name
+    return ""
+
+
+def test_crossing_with_its_pre_test_answers_as_the_plain_test() -> None:
+    # Movers placed around the path, heading every way, many whose course ends just short of or just inside
+    # reach of a sample (the pre-test's edge), some far: the answer (who crosses first) must be the plain one's,
+    # and the pre-test must never skip a course the plain distance test would find within reach.
+    from oracle_monitor.egopath import course_apart
+
+    rng = random.Random(23)
+    path = _path()
+    answers = {"": 0, "crossing": 0}
+    for trial in range(600):
+        k = rng.randrange(0, 90)
+        fx, fy = float(path.xyh[k, 0]), float(path.xyh[k, 1])
+        ego = _entity("ego", fx, fy, float(path.xyh[k, 2]))
+        objects = []
+        for j in range(4):
+            ang = rng.uniform(-math.pi, math.pi)
+            dist = rng.choice([rng.uniform(0.0, 30.0), rng.uniform(30.0, 80.0), rng.uniform(80.0, 400.0)])
+            x, y = fx + dist * math.cos(ang), fy + dist * math.sin(ang)
+            obj = EntityState(name=f"m{j}", category="car", t=0.0, x=x, y=y, heading=rng.uniform(-math.pi, math.pi),
+                              speed=rng.choice([0.0, rng.uniform(0.1, 3.0), rng.uniform(3.0, 20.0)]),
+                              length=4.5, width=rng.uniform(0.5, 2.6), center_x=1.3)
+            objects.append(obj)
+        kw = dict(distance=30.0, horizon=4.0, margin=0.5, min_speed=0.5)
+        path._s_hint = 0.0
+        path._located = None
+        got = path.crossing(ego, (fx, fy), tuple(objects), **kw)
+        want = _plain_crossing(path, ego, (fx, fy), tuple(objects), **kw)
+        assert got == want, trial
+        answers["crossing" if want else ""] += 1
+    assert answers["crossing"] > 30 and answers[""] > 30
+    # The pre-test on its own, at its edge: courses ending just beyond reach + 1 mm, or just within it.
+    xs, ys = np.array([0.0, 10.0]), np.array([0.0, 0.0])
+    box = (0.0, 10.0, 0.0, 0.0)
+    for gap in (1.0, 0.0011, 0.0009, 0.0, -0.5):
+        qx = np.array([10.0 + 1.5 + gap, 20.0])
+        apart = course_apart(qx, np.zeros(2), box, 1.5)
+        d2 = (qx[:, None] - xs[None, :]) ** 2 + (np.zeros(2)[:, None] - ys[None, :]) ** 2
+        assert apart == (gap > 0.001)
+        assert not (apart and (d2 <= 1.5 * 1.5).any())
