@@ -117,3 +117,17 @@ def test_a_body_side_named_left_or_right_reads_like_its_seat(seat: str, side: st
             wrong.append(rid)
     assert told >= 25
     assert set(wrong) <= BODY_SIDE_KNOWN, wrong
+
+
+@pytest.mark.parametrize("text,ego,party", [
+    # Some companies tell the accident in the present tense.
+    ("The Acme AV is stopped at a red light on Main Street. Shortly after, contact is made with the Acme AV's rear "
+     "bumper by a sedan that is traveling behind it.", ("stopped", ""), ("car", "R6", "same", "moving", "a")),
+    ("The AV is traveling northbound on Main Street in the right lane. A van traveling southbound enters the "
+     "oncoming lane and makes contact with the front of the AV.", ("moving", "a"), ("van", "R7", "left", "moving", "af")),
+])
+def test_a_report_told_in_the_present_tense(text: str, ego: tuple, party: tuple) -> None:
+    sk = extract(text, "present")
+    assert (sk.ego.start, sk.ego.actions) == ego
+    assert [(n.category, n.position, n.lane, n.start, n.actions) for n in sk.npcs] == [party]
+    assert sk.collision.with_ == "npc1"

@@ -58,7 +58,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
-          r"\b(?:entered|entering|enter|crossed|crossing|cross|moved|veered|maneuvered|manoeuvred|swerved|drove)\s+"
+          r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|manoeuvred|swerved|swerves|drove|drives)\s+"
           r"(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"

@@ -58,7 +58,7 @@ _LANE_CUES = compile_gated(
 _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
 # A lane the party moved into is where it went, not where it was.
-_INTO = compile_gated(r"\b(?:into|onto|entered|entering|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
+_INTO = compile_gated(r"\b(?:into|onto|entered|entering|enters|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
 _SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+"
                            r"(?:the\s+(?:first\s+|second\s+)?)?EGO\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"

@@ -395,7 +395,7 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 # characters can never lead to a match - possessive matching finds the same matches without the backtracking that
 # made this pattern cost more than any other in the extractor.
 _PART_OF_EGO = compile_gated(r"((?:[\w-]++\s++){1,6})(?:of|on|to)\s+EGO\b")
-_PASSIVE_CONTACT = compile_gated(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
+_PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
 _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+\s+){1,6})")
 
