@@ -1,64 +1,41 @@
-"""What must not change a sketch, checked on every studyable narrative (dev gold + study): rewrites a new user's
-reports make without changing the accident.
-
-- The operator's name. The AV is recognised by how the narrative introduces it, not by a list of companies: a
-  name the lexicon has never seen reads like a known one. (Before, 95 of 130 narratives changed: the AV became
-  another party.)
-- When it happened, told first without a comma ("On June 3, 2025 at 4:10 PM a Waymo AV was ..."): the sentence's
-  subject is still the AV. (Before, 20 of 66 narratives changed: the AV's stop or turn went to nobody.) Lighting
-  is read from the time, so the environment is left out of that comparison.
-- Headings abbreviated as police and NHTSA narratives write them ("traveling NB", "a S/B sedan"). (Before, 10 of
-  78 narratives changed.)
-- A side of a body named by its side, not its seat ("the left side of the AV" for "the driver side"): a body's
-  side is no lane. (Before, 7 of 63 narratives changed.)"""
+"""What must not change a sketch (`tests/text/invariance.py`): every rewrite a new user's reports make without
+changing the accident, on every studyable narrative, leaves the sketch as it was, but for the cases listed below
+with the reason each still reads differently. On the session-9 start code 343 of 1,213 rewritten narratives read
+differently (the AV taken for another party under a new operator's name in 99 of 130); now 11."""
 
 from __future__ import annotations
 
-import json
-import re
-
 import pytest
 
-from txt2sce_ros.paths import shared_dir
 from txt2sce_ros.text.extractor import extract
-from txt2sce_ros.text.mentions import _COMPANY_RE
 
-REPORTS = shared_dir() / "data" / "reports"
-#: A form-style NHTSA report ("Beep Event Level: 1 ... the Beep shuttle attendant ... Beep vehicle stopped") never
-#: introduces its AV as a vehicle of its operator's; only its known name tells it apart.
-FORM_STYLE = {"nhtsa-sgo-ads-30490-3168-v1"}
+from .invariance import REWRITES, Rewrite, changed
+
+#: Rewritten narratives that still read differently, and why.
+KNOWN: dict[str, set[str]] = {
+    # A form-style NHTSA report ("Beep Event Level: 1 ... the Beep shuttle attendant ...") never introduces its AV
+    # as a vehicle of its operator's: only the known name tells it apart.
+    **{f"operator renamed: {n}": {"nhtsa-sgo-ads-30490-3168-v1"} for n in ("Acme", "Avride", "Oxa Robotics")},
+    # "from the opposite direction ... collided with the front/left side corner": the corner's side is taken for
+    # where the party came from (R1 instead of R2).
+    "driver side -> left side": {"dmvca-zoox-20191122-r95"},
+    # "struck two unoccupied vehicles": a numbered group is counted after "made contact with", not after "struck".
+    "made contact with -> struck": {"dmvca-cruise-20190414-r21"},
+    # "the sport utility vehicle driver": "vehicle driver" reads as the AV's driver (10294); r256 reads the
+    # renamed SUV as crossing from the left (R1 instead of R5/left), cause not found yet.
+    "SUV -> sport utility vehicle": {"dmvca-waymo-20211204-r256", "nhtsa-sgo-ads-30610-10294-v1"},
+    # "St." inside a sentence before a lower-case word: the clause reading around the turn changes.
+    "Street -> St.": {"dmvca-cruise-20190905-r66", "dmvca-cruise-20230303-r431"},
+    # A "when" clause made a sentence of its own: the party's manoeuvre is read against another sentence's AV.
+    "', when a' -> '. Then a'": {"dmvca-cruise-20201024-r143", "dmvca-waymo-20240809-r603"},
+}
 
 
-def _studyable() -> dict[str, str]:
-    ids: set[str] = set()
-    for name in ("dev_gold.jsonl", "dev_gold_study.jsonl"):
-        ids |= {json.loads(line)["report_id"] for line in (REPORTS / name).read_text(encoding="utf-8").splitlines()}
-    rows = [json.loads(line) for line in (REPORTS / "dev.jsonl").read_text(encoding="utf-8").splitlines()]
-    return {r["id"]: r["text"] for r in rows if r["id"] in ids}
-
-
-def _content(text: str, rid: str, *, environment: bool = True) -> str:
-    d = extract(text, rid).to_dict()
-    d.pop("evidence", None)          # spans move with the rewrite
-    if not environment:
-        d.pop("environment")
-    return json.dumps(d, sort_keys=True)
-
-
-@pytest.mark.parametrize("new_name", ["Acme", "Avride", "Oxa Robotics"])
-def test_an_unknown_operator_name_reads_like_a_known_one(new_name: str) -> None:
-    renamed = 0
-    wrong = []
-    for rid, text in _studyable().items():
-        first = _COMPANY_RE.search(text)
-        if first is None:
-            continue
-        other = re.sub(rf"\b{re.escape(first.group(0))}\b", new_name, text)
-        renamed += 1
-        if _content(other, rid) != _content(text, rid):
-            wrong.append(rid)
-    assert renamed >= 120
-    assert set(wrong) <= FORM_STYLE, wrong
+@pytest.mark.parametrize("rw", REWRITES, ids=[r.name for r in REWRITES])
+def test_a_rewrite_leaves_the_sketch_as_it_was(rw: Rewrite) -> None:
+    told, ids = changed(rw)
+    assert told >= 5, "the rewrite no longer applies to the narratives"
+    assert set(ids) <= KNOWN.get(rw.name, set()), ids
 
 
 def test_a_new_operator_and_a_make_named_party() -> None:
@@ -69,54 +46,6 @@ def test_a_new_operator_and_a_make_named_party() -> None:
     assert (sk.ego.start, sk.ego.actions) == ("stopped", "")
     assert [(n.category, n.position, n.lane) for n in sk.npcs] == [("car", "R6", "same")]
     assert sk.collision.with_ == "npc1" and sk.collision.type == "rear_end"
-
-
-def test_a_time_told_first_without_a_comma_keeps_the_av_the_subject() -> None:
-    told = 0
-    wrong = []
-    for rid, text in _studyable().items():
-        if not text.startswith(("A ", "An ", "The ")):
-            continue
-        told += 1
-        timed = "On June 3, 2025 at 4:10 PM " + text[0].lower() + text[1:]
-        if _content(timed, rid, environment=False) != _content(text, rid, environment=False):
-            wrong.append(rid)
-    assert told >= 60
-    assert not wrong, wrong
-
-
-def test_abbreviated_headings_read_like_the_words() -> None:
-    told = 0
-    wrong = []
-    for rid, text in _studyable().items():
-        short = re.sub(r"\b(north|south|east|west)bound\b", lambda m: m.group(1)[0].upper() + "B", text, flags=re.I)
-        if short == text:
-            continue
-        told += 1
-        if _content(short, rid) != _content(text, rid):
-            wrong.append(rid)
-    assert told >= 70
-    assert not wrong, wrong
-
-
-#: "collided with the front/left side corner of the AV" after "from the opposite direction": the side of the corner
-#: is still read as where the party came from (R1 instead of R2).
-BODY_SIDE_KNOWN = {"dmvca-zoox-20191122-r95"}
-
-
-@pytest.mark.parametrize("seat,side", [("driver", "left"), ("passenger", "right")])
-def test_a_body_side_named_left_or_right_reads_like_its_seat(seat: str, side: str) -> None:
-    told = 0
-    wrong = []
-    for rid, text in _studyable().items():
-        renamed = re.sub(rf"\b{seat}(?:'s)? side\b", f"{side} side", text)
-        if renamed == text:
-            continue
-        told += 1
-        if _content(renamed, rid) != _content(text, rid):
-            wrong.append(rid)
-    assert told >= 25
-    assert set(wrong) <= BODY_SIDE_KNOWN, wrong
 
 
 @pytest.mark.parametrize("text,ego,party", [

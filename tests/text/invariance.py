@@ -1,0 +1,133 @@
+"""Rewrites that must not change a sketch: a measure of how the extractor holds on the way other reporters write.
+
+Each rewrite is one a new user's reports make without changing the accident (another operator's name, a heading
+abbreviated as police write it, the present tense, ...). It is applied to every studyable narrative (dev gold +
+study; never the check set or the holdout) that it changes, and the sketch of the rewritten text is compared with the
+sketch of the original: evidence spans aside (they move with the words), and the environment aside where the rewrite
+touches the time (lighting is read from it). A changed sketch is a phrasing the rules read one way and not the
+other: a fault that unseen narratives will meet too, found without reading them.
+
+    python -m tests.text.invariance            # every rewrite: narratives rewritten, sketches changed
+    PYTHONPATH=<other checkout> python -m tests.text.invariance   # the same on other code, for a before figure
+
+Session 9, studyable narratives, session-start code -> after: operator renamed 99/130 -> 1/130, a time told first
+without a comma 20/66 -> 0/66, headings abbreviated 10/78 -> 0/78, body sides named left/right 7/63 -> 1/63.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import lru_cache
+
+from txt2sce_ros.paths import shared_dir
+from txt2sce_ros.text.extractor import extract
+from txt2sce_ros.text.mentions import _COMPANY_RE
+
+REPORTS = shared_dir() / "data" / "reports"
+
+
+@dataclass(frozen=True)
+class Rewrite:
+    name: str
+    apply: Callable[[str], str]
+    environment: bool = True        # compare the environment too (False: the rewrite touches the time)
+
+
+def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], flags: int = 0) -> Callable[[str], str]:
+    return lambda t: re.sub(pattern, repl, t, flags=flags)
+
+
+def _operator(new: str) -> Callable[[str], str]:
+    """The first known operator named in the text, everywhere, renamed to `new`."""
+    def apply(t: str) -> str:
+        m = _COMPANY_RE.search(t)
+        return re.sub(rf"\b{re.escape(m.group(0))}\b", new, t) if m else t
+    return apply
+
+
+def _time_first(t: str) -> str:
+    return "On June 3, 2025 at 4:10 PM " + t[0].lower() + t[1:] if t.startswith(("A ", "An ", "The ")) else t
+
+
+def _our_vehicle(t: str) -> str:
+    m = _COMPANY_RE.search(t)
+    if not m:
+        return t
+    return re.sub(rf"\b([Tt])he {re.escape(m.group(0))} (?:AV|vehicle|autonomous vehicle)\b",
+                  lambda x: ("O" if x.group(1) == "T" else "o") + "ur vehicle", t)
+
+
+REWRITES: tuple[Rewrite, ...] = (
+    Rewrite("operator renamed: Acme", _operator("Acme")),
+    Rewrite("operator renamed: Avride", _operator("Avride")),
+    Rewrite("operator renamed: Oxa Robotics", _operator("Oxa Robotics")),
+    Rewrite("time told first, no comma", _time_first, environment=False),
+    Rewrite("headings abbreviated (NB, SB)",
+            _sub(r"\b(north|south|east|west)bound\b", lambda m: m.group(1)[0].upper() + "B", re.I)),
+    Rewrite("driver side -> left side", _sub(r"\bdriver(?:'s)? side\b", "left side")),
+    Rewrite("passenger side -> right side", _sub(r"\bpassenger side\b", "right side")),
+    Rewrite("the <operator> AV -> our vehicle", _our_vehicle),
+    Rewrite("made contact with -> collided with", _sub(r"\bmade contact with\b", "collided with")),
+    Rewrite("made contact with -> struck", _sub(r"\bmade contact with\b", "struck")),
+    Rewrite("was traveling -> was proceeding", _sub(r"\bwas traveling\b", "was proceeding")),
+    Rewrite("approximately -> about", _sub(r"\bapproximately\b", "about")),
+    Rewrite("SUV -> sport utility vehicle", lambda t: re.sub(r"\bSUV\b", "sport utility vehicle",
+                                                             re.sub(r"\b([Aa])n SUV\b", r"\1 SUV", t))),
+    Rewrite("cyclist -> bicyclist", _sub(r"\bcyclist\b", "bicyclist")),
+    Rewrite("Street -> St.", _sub(r"\b(Street|Avenue|Boulevard)\b(?!\.)",
+                                  lambda m: {"Street": "St.", "Avenue": "Ave.", "Boulevard": "Blvd."}[m.group(1)])),
+    Rewrite("', when a' -> '. Then a'", _sub(r",? when (a|an|the) ", r". Then \1 ")),
+    Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
+                                                         "reported and the police were not called to the scene."),
+)
+
+
+@lru_cache(maxsize=1)
+def studyable() -> dict[str, str]:
+    """id -> narrative of the dev gold and study sketches (dev.jsonl holds the texts)."""
+    ids: set[str] = set()
+    for name in ("dev_gold.jsonl", "dev_gold_study.jsonl"):
+        ids |= {json.loads(line)["report_id"] for line in (REPORTS / name).read_text(encoding="utf-8").splitlines()}
+    rows = [json.loads(line) for line in (REPORTS / "dev.jsonl").read_text(encoding="utf-8").splitlines()]
+    return {r["id"]: r["text"] for r in rows if r["id"] in ids}
+
+
+@lru_cache(maxsize=4096)
+def content(text: str, rid: str, environment: bool = True) -> str:
+    """The sketch as compared: evidence spans aside, and the environment when `environment` is False."""
+    d = extract(text, rid).to_dict()
+    d.pop("evidence", None)
+    if not environment:
+        d.pop("environment")
+    return json.dumps(d, sort_keys=True)
+
+
+def changed(rw: Rewrite) -> tuple[int, list[str]]:
+    """(narratives the rewrite changes, ids of those whose sketch changed with it)."""
+    told, ids = 0, []
+    for rid, text in studyable().items():
+        other = rw.apply(text)
+        if other == text:
+            continue
+        told += 1
+        if content(other, rid, rw.environment) != content(text, rid, rw.environment):
+            ids.append(rid)
+    return told, ids
+
+
+def main() -> None:
+    total_told = total_changed = 0
+    print(f"{'rewrite':<40}{'rewritten':>10}{'changed':>9}  first changed")
+    for rw in REWRITES:
+        told, ids = changed(rw)
+        total_told, total_changed = total_told + told, total_changed + len(ids)
+        print(f"{rw.name:<40}{told:>10}{len(ids):>9}  {', '.join(ids[:3])}")
+    print(f"{'all':<40}{total_told:>10}{total_changed:>9}  ({total_changed / max(1, total_told):.1%} of rewritten "
+          f"narratives read differently)")
+
+
+if __name__ == "__main__":
+    main()
