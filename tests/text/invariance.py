@@ -69,6 +69,7 @@ REWRITES: tuple[Rewrite, ...] = (
             _sub(r"\b(north|south|east|west)bound\b", lambda m: m.group(1)[0].upper() + "B", re.I)),
     Rewrite("driver side -> left side", _sub(r"\bdriver(?:'s)? side\b", "left side")),
     Rewrite("passenger side -> right side", _sub(r"\bpassenger side\b", "right side")),
+    Rewrite("passenger side -> passenger's side", _sub(r"\bpassenger side\b", "passenger's side")),
     Rewrite("the <operator> AV -> our vehicle", _our_vehicle),
     Rewrite("made contact with -> collided with", _sub(r"\bmade contact with\b", "collided with")),
     Rewrite("made contact with -> struck", _sub(r"\bmade contact with\b", "struck")),

@@ -38,7 +38,7 @@ from .mentions import Entity, Mention
 from .positions import exit_street
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
 
-_SIDE = r"(left|right|driver(?:'s)?|passenger)"
+_SIDE = r"(left|right|driver(?:'s)?|passenger(?:'s)?)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
 _LANE_CUES = compile_gated(
     r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+|our\s+|EGO's\s+)?(left|right)(?:\s+of\s+(?:EGO|it|us))?|"

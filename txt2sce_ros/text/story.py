@@ -35,7 +35,7 @@ BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+suppleme
                           r"updated)\b|\bsubmitted\b", re.I)
 
 
-_DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:\w+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
+_DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:[\w'-]+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
                    r"\b|\bdooring\b", re.I)
 
 
