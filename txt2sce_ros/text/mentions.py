@@ -124,7 +124,10 @@ _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|onl
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
 _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
-                        r"when|as|while|was|were|is|had|has|then|that|which|who|EGO|EGOD|,|;|:)$", re.I)
+                        r"when|as|while|was|were|is|had|has|then|that|which|who|EGO|EGOD|,|;|:|"
+                        # a verb taking the noun as its object ("struck two unoccupied vehicles") is no modifier
+                        r"struck|strikes|hit|hits|contacted|clipped|bumped|impacted|sideswiped|side-swiped|"
+                        r"rear-ended)$", re.I)
 _SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
                           r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
 # A sentence that opens with when it happened and no comma before its subject: "On June 3, 2025 at 4:10 PM PT a
