@@ -52,6 +52,7 @@ def ego_patterns(co: str) -> tuple[str, ...]:
         rf"\b(?:the|a|an|our)\s+(?:{co})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
         rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
         r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
+        r"\b(?:the|our)\s+(?:ego\s+vehicle|robo-?taxi)\b",
         r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
         r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
         r"\b(?:the\s+)?subject\s+vehicle\b",
