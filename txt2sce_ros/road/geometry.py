@@ -3,9 +3,10 @@
 Each primitive maps a local arc length `ds` in [0, length] (numpy arrays) to world (x, y, heading). Headings are
 radians counter-clockwise from +x and are not wrapped (callers wrap when they need to).
 
-Clothoids use the Fresnel integrals (`scipy.special.fresnel`), which are exact up to double precision, rather than
-a step-wise integration whose error grows with length. `poly3` needs its own arc-length parametrisation (the
-polynomial is in the local u coordinate, not in s), which is tabulated once at construction.
+Clothoids use the Fresnel integrals (`scipy.special.fresnel`, loaded by `scipy_alone`), which are exact up to
+double precision, rather than a step-wise integration whose error grows with length. `poly3` needs its own
+arc-length parametrisation (the polynomial is in the local u coordinate, not in s), which is tabulated once at
+construction.
 """
 
 from __future__ import annotations
@@ -134,8 +135,9 @@ class Spiral(Geometry):
         a = math.sqrt(math.pi / abs(c))
         sign = 1.0 if c > 0 else -1.0
         u0 = self.k0 / c
-        from scipy.special import fresnel   # here, not at import: scipy.special costs a cold start ~0.1 s
+        from .scipy_alone import fresnel as fresnel_ufunc   # on first use, without scipy.special's package
 
+        fresnel = fresnel_ufunc()
         s0, c0 = fresnel(u0 / a)
         s1, c1 = fresnel((u0 + ds) / a)
         dx = a * (c1 - c0)

@@ -181,7 +181,7 @@ class LanePath:
             i = lo + int(np.argmin((seg_x - x) ** 2 + (seg_y - y) ** 2))
         else:
             if self._tree is None:
-                from .kdtree import ckdtree   # on first use: scipy is a cold start's largest import
+                from .scipy_alone import ckdtree   # on first use: scipy is a cold start's largest import
 
                 self._tree = ckdtree()(np.column_stack([self._x, self._y]), balanced_tree=False, compact_nodes=False)
             i = int(self._tree.query([x, y])[1])
