@@ -12,7 +12,8 @@ other: a fault that unseen narratives will meet too, found without reading them.
 
 Session 9, studyable narratives, session-start code -> after: operator renamed 99/130 -> 1/130, a time told first
 without a comma 20/66 -> 0/66, headings abbreviated 10/78 -> 0/78, body sides named left/right 7/63 -> 1/63, the
-AV called "the robotaxi" 85/104 -> 0/104 and "the ego vehicle" 12/104 -> 0/104; all rewrites 444/1,864 -> 10/1,864.
+AV called "the robotaxi" 85/104 -> 0/104 and "the ego vehicle" 12/104 -> 0/104, "left-turn" / "lane-change"
+hyphenated 22/39 -> 0/39 and 7/7 -> 0/7; all rewrites 473/1,940 -> 10/1,940.
 """
 
 from __future__ import annotations
@@ -95,6 +96,12 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("Street -> St.", _sub(r"\b(Street|Avenue|Boulevard)\b(?!\.)",
                                   lambda m: {"Street": "St.", "Avenue": "Ave.", "Boulevard": "Blvd."}[m.group(1)])),
     Rewrite("', when a' -> '. Then a'", _sub(r",? when (a|an|the) ", r". Then \1 ")),
+    Rewrite("left turn -> left-turn", _sub(r"\b(left|right) turn\b", r"\1-turn")),
+    Rewrite("lane change -> lane-change", _sub(r"\blane change\b", "lane-change")),
+    Rewrite("making a left turn -> turning left", _sub(r"\bmaking a (left|right) turn\b", r"turning \1")),
+    Rewrite("reversed -> backed up", _sub(r"\breversed\b", "backed up")),
+    Rewrite("braked -> applied the brakes", _sub(r"\bbraked\b", "applied the brakes")),
+    Rewrite("began to proceed -> started to move", _sub(r"\bbegan to proceed\b", "started to move")),
     Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
                                                          "reported and the police were not called to the scene."),
 )

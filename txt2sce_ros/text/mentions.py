@@ -34,6 +34,7 @@ _OPERATOR_DEF = compile_gated(
 _FIRST_VEHICLE = compile_gated(
     rf"\A[^.]{{0,200}}?\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:test\s+)?(?:vehicle|car|robotaxi|shuttle)\b",
     re.I)
+_HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b", re.I)
 # Headings abbreviated in capitals, as police and NHTSA narratives write them: NB, S/B, EB, SWB.
 _HEADING_ABBREV = compile_gated(r"\b(N|S|E|W|NE|NW|SE|SW)/?B\b")
 _COMPASS = {"N": "north", "S": "south", "E": "east", "W": "west", "NE": "northeast", "NW": "northwest",
@@ -190,6 +191,9 @@ def normalise(text: str) -> str:
             if old in quoted:
                 quoted = quoted.replace(old, new)
     t = fre.sub(r"\s+", " ", quoted).strip()
+    if "-" in t:
+        # "a left-turn", "made a lane-change": the compounds read as their spaced forms, which the rules know.
+        t = _HYPHENATED.sub(r"\1 \2", t)
     if _HEADING_ABBREV.search(t):
         # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
         t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
