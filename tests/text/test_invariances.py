@@ -32,7 +32,7 @@ KNOWN: dict[str, set[str]] = {
 @pytest.mark.parametrize("rw", REWRITES, ids=[r.name for r in REWRITES])
 def test_a_rewrite_leaves_the_sketch_as_it_was(rw: Rewrite) -> None:
     told, ids = changed(rw)
-    assert told >= 5, "the rewrite no longer applies to the narratives"
+    assert told >= 4, "the rewrite no longer applies to the narratives"
     assert set(ids) <= KNOWN.get(rw.name, set()), ids
 
 
