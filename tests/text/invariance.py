@@ -13,7 +13,8 @@ other: a fault that unseen narratives will meet too, found without reading them.
 Session 9, studyable narratives, session-start code -> after: operator renamed 99/130 -> 1/130, a time told first
 without a comma 20/66 -> 0/66, headings abbreviated 10/78 -> 0/78, body sides named left/right 7/63 -> 1/63, the
 AV called "the robotaxi" 85/104 -> 0/104 and "the ego vehicle" 12/104 -> 0/104, "left-turn" / "lane-change"
-hyphenated 22/39 -> 0/39 and 7/7 -> 0/7; all rewrites 473/1,940 -> 10/1,940.
+hyphenated 22/39 -> 0/39 and 7/7 -> 0/7, "stop-sign", "red-light", "parking-lot" 26/36 -> 0/36, "on-coming"
+7/20 -> 0/20, "west bound" 5/72 -> 0/72; all rewrites 517/2,082 -> 10/2,082.
 """
 
 from __future__ import annotations
@@ -98,6 +99,10 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("', when a' -> '. Then a'", _sub(r",? when (a|an|the) ", r". Then \1 ")),
     Rewrite("left turn -> left-turn", _sub(r"\b(left|right) turn\b", r"\1-turn")),
     Rewrite("lane change -> lane-change", _sub(r"\blane change\b", "lane-change")),
+    Rewrite("stop sign, red light, parking lot hyphenated", _sub(r"\b(stop|red|parking) (sign|light|lot)\b", r"\1-\2")),
+    Rewrite("oncoming -> on-coming", _sub(r"\boncoming\b", "on-coming")),
+    Rewrite("rightmost -> right-most", _sub(r"\b(left|right)most\b", r"\1-most")),
+    Rewrite("westbound -> west bound", _sub(r"\b(north|south|east|west)bound\b", r"\1 bound")),
     Rewrite("making a left turn -> turning left", _sub(r"\bmaking a (left|right) turn\b", r"turning \1")),
     Rewrite("reversed -> backed up", _sub(r"\breversed\b", "backed up")),
     Rewrite("braked -> applied the brakes", _sub(r"\bbraked\b", "applied the brakes")),

@@ -34,7 +34,11 @@ _OPERATOR_DEF = compile_gated(
 _FIRST_VEHICLE = compile_gated(
     rf"\A[^.]{{0,200}}?\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:test\s+)?(?:vehicle|car|robotaxi|shuttle)\b",
     re.I)
-_HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b", re.I)
+_HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b|"
+                            r"\b(stop|red|traffic|parking|bike|bicycle|bus|turn|travel|through|center|centre|"
+                            r"median|curb|crossing)-(signs?|lights?|lots?|lanes?|signals?|lines?|guards?)\b", re.I)
+_SPLIT_WORD = compile_gated(r"\b(on)[- ](coming)\b|\b(left|right)[- ](most)\b|"
+                            r"\b((?:north|south)?(?:east|west)|north|south)[- ](bound)\b|\b(cross)[- ](walks?)\b", re.I)
 # Headings abbreviated in capitals, as police and NHTSA narratives write them: NB, S/B, EB, SWB.
 _HEADING_ABBREV = compile_gated(r"\b(N|S|E|W|NE|NW|SE|SW)/?B\b")
 _COMPASS = {"N": "north", "S": "south", "E": "east", "W": "west", "NE": "northeast", "NW": "northwest",
@@ -191,9 +195,12 @@ def normalise(text: str) -> str:
             if old in quoted:
                 quoted = quoted.replace(old, new)
     t = fre.sub(r"\s+", " ", quoted).strip()
+    # Compounds spelt another way than the rules read them: "a left-turn", "a lane-change", "the stop-sign", "a
+    # red-light", "the parking-lot", "the bike-lane" (spaced); "on-coming", "right-most", "west bound", "west-bound",
+    # "cross walk" (one word).
     if "-" in t:
-        # "a left-turn", "made a lane-change": the compounds read as their spaced forms, which the rules know.
-        t = _HYPHENATED.sub(r"\1 \2", t)
+        t = _HYPHENATED.sub(lambda m: " ".join(g for g in m.groups() if g), t)
+    t = _SPLIT_WORD.sub(lambda m: "".join(g for g in m.groups() if g), t)
     if _HEADING_ABBREV.search(t):
         # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
         t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
