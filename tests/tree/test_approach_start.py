@@ -26,12 +26,13 @@ AT_LINE_ALONE = "dmvca-cruise-20230421-r455"     # the AV stands at its stop lin
 AT_LINE_QUEUE = "dmvca-apple-20211111-r241"      # the AV stands at its line, a car 40 m behind it in its lane
 FAR = "dmvca-waymo-20230405-r448"                # the AV drives at 8 m/s, ~50 m from its line
 TURNING = "dmvca-waymo-20210712-r196"            # the AV near its line, its route turns left beyond it
+TURNING_FAR = "dmvca-cruise-20210421-r176"       # the AV at 8 m/s ~53 m from its line, turning right beyond it
 
 
 @pytest.fixture(scope="module")
 def seeds(tmp_path_factory) -> dict[str, Path]:
     out = tmp_path_factory.mktemp("seeds")
-    wanted = {AT_LINE_ALONE, AT_LINE_QUEUE, FAR, TURNING}
+    wanted = {AT_LINE_ALONE, AT_LINE_QUEUE, FAR, TURNING, TURNING_FAR}
     manifest = write_seeds([s for s in load_sketches(dev_gold_path()) if s.report_id in wanted], out, seed=0)
     return {b["report_id"]: out / b["file"] for b in manifest["built"]}
 
@@ -152,6 +153,24 @@ def test_the_approach_is_made_at_the_speed_of_the_turn_beyond_the_light(seeds):
     # a gentler comfort limit means a slower approach; a straight route has no turn speed
     assert turn_speed(ctx, 1.0) == pytest.approx(v_turn * (1.0 / init["approach_lateral_accel"]) ** 0.5)
     assert turn_speed(_ctx(seeds[FAR]), init["approach_lateral_accel"]) is None
+
+
+def test_a_start_far_enough_but_faster_than_the_turn_keeps_its_place_at_the_turn_speed(seeds):
+    # r176: far enough back for the dilemma zone at 8 m/s, but it would slow for its right turn after the onset;
+    # the turn's own approach would start it ahead of its seed start, past positions it must still reach, so the
+    # approach is its seed start at the turn's speed. Only that ego version counts as the approach (same place
+    # as the seed's own start: told apart by its speed).
+    from txt2sce_ros.tree.environment import turn_speed
+
+    init = tree_config()["trajectory"]["init_location"]
+    seed = seeds[TURNING_FAR]
+    ctx = _ctx(seed)
+    found = _configured(seed)
+    assert found is not None and found.s == pytest.approx(ctx.starts["ego"].s)
+    assert found.speed == pytest.approx(turn_speed(ctx, init["approach_lateral_accel"])) and found.speed < 8.0
+    ego = _variants(seed, BlockKind.EGO)
+    assert [v.operator for v in ego if v.features[1] == "approach"] == ["WPM-approach"]
+    assert _approach(seed) is None          # without the turn limit: the seed's start already approaches
 
 
 def test_the_red_comes_early_for_an_ego_that_speeds_up_and_catches_the_misreading_stack(seeds, tmp_path):

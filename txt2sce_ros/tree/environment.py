@@ -306,9 +306,11 @@ def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: fl
     line: where its route turns in the junction beyond the light, no faster than that turn allows at
     `lateral_accel` m/s^2 (`turn_speed`; an AV that slows for the turn after the onset would meet the red far
     enough back to stop, whatever it made of the yellow) — a seed whose own start is far enough back but faster
-    than that gets the approach too. Where the lane behind is taken (a party that started behind the AV in its
-    lane stays behind it), the start furthest back that is free, at the speed that still gives the `lead`, down
-    to `min_speed` (None: the full distance or nothing).
+    than that gets the approach too (from its own start, at the turn's speed, where the turn's start would lie
+    past a place the AV must still reach), and where the turn's start is not free, the approach at the seed's
+    speed is kept. Where the lane behind is taken (a party that started behind the AV in its lane stays behind
+    it), the start furthest back that is free, at the speed that still gives the `lead`, down to `min_speed`
+    (None: the full distance or nothing).
 
     None when the seed's start already gives that approach, no traffic light faces the AV on its start road, or
     no start is feasible (`feasible_s`: on the road and lane, never behind a party that started behind the AV in
@@ -331,7 +333,7 @@ def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: fl
             return None                          # the AV starts past the light: it never approaches it
         turn = turn_speed(ctx, lateral_accel) if lateral_accel else None
         slowed = turn is not None and turn < v
-        v = min(v, turn) if turn is not None else v
+        v_seed, v = v, (min(v, turn) if turn is not None else v)
         need = v * window + front
         if ahead >= need and not slowed:
             return None                          # the seed's own start already arrives at speed
@@ -341,6 +343,14 @@ def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: fl
         new_s = sig.s - sign * need
         if _free_start(ctx, ego, new_s, margin, min_gap):
             return Approach(str(sid), line, float(new_s), v)
+        if slowed and ahead >= need:
+            # the turn's start would lie ahead of the seed's, past a place the AV must still reach: the seed's
+            # own start, at the turn's speed (a longer lead)
+            return Approach(str(sid), line, float(ego.s), v)
+        need_seed = v_seed * window + front
+        if slowed and ahead < need_seed and _free_start(ctx, ego, sig.s - sign * need_seed, margin, min_gap):
+            # no room for the turn's approach: the approach at the seed's speed (it slows for the turn)
+            return Approach(str(sid), line, float(sig.s - sign * need_seed), v_seed)
         if min_speed is None:
             return None
         # the lane behind is taken: the furthest-back free start (1 m steps toward the line), slower

@@ -63,7 +63,10 @@ def _is_approach(private: etree._Element | None, ctx: SeedContext, cfg: dict[str
         return False
     init = cfg["trajectory"]["init_location"]
     found = configured_approach(ctx, init)
-    return found is not None and abs(lane_pos(tele).s - round(found.s, 3)) < 1e-6
+    # the speed too: an approach made from the seed's own start differs from it only in its speed
+    speed = initial_speed(private)
+    return found is not None and abs(lane_pos(tele).s - round(found.s, 3)) < 1e-6 \
+        and (speed is None or abs(speed - round(found.speed, 3)) < 1e-6)
 
 
 def _shift_bin(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any], n: int) -> int:
