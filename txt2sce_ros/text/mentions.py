@@ -37,6 +37,10 @@ _FIRST_VEHICLE = compile_gated(
 _HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b|"
                             r"\b(stop|red|traffic|parking|bike|bicycle|bus|turn|travel|through|center|centre|"
                             r"median|curb|crossing)-(signs?|lights?|lots?|lanes?|signals?|lines?|guards?)\b", re.I)
+_HYPHENATED_NEEDS = ("-turn", "-chang", "-sign", "-light", "-lot", "-lane", "-line", "-guard")
+_SPLIT_WORD_NEEDS = ("on coming", "on-coming", "left most", "left-most", "right most", "right-most", " bound",
+                     "-bound", "cross walk", "cross-walk")
+_HEADING_ABBREV_NEEDS = ("NB", "SB", "EB", "WB", "/B")
 _SPLIT_WORD = compile_gated(r"\b(on)[- ](coming)\b|\b(left|right)[- ](most)\b|"
                             r"\b((?:north|south)?(?:east|west)|north|south)[- ](bound)\b|\b(cross)[- ](walks?)\b", re.I)
 # Headings abbreviated in capitals, as police and NHTSA narratives write them: NB, S/B, EB, SWB.
@@ -51,7 +55,7 @@ _NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another",
 def _unknown_operator(t: str) -> str | None:
     """The operator's name the narrative gives its AV when the lexicon does not know it, else None."""
     # (The AV is introduced in the opening sentences: the rest of a long narrative is not searched.)
-    m = _OPERATOR_DEF.search(t, 0, 1000) or _FIRST_VEHICLE.search(t)
+    m = _OPERATOR_DEF.search(t, 0, 600) or _FIRST_VEHICLE.search(t)
     if m is None:
         return None
     name = " ".join(next(g for g in m.groups() if g).split())
@@ -198,10 +202,13 @@ def normalise(text: str) -> str:
     # Compounds spelt another way than the rules read them: "a left-turn", "a lane-change", "the stop-sign", "a
     # red-light", "the parking-lot", "the bike-lane" (spaced); "on-coming", "right-most", "west bound", "west-bound",
     # "cross walk" (one word).
-    if "-" in t:
+    # (Each rewrite is looked for only when a word it needs is in the text: a scan of every narrative costs more.)
+    low = t.lower()
+    if "-" in t and any(w in low for w in _HYPHENATED_NEEDS):
         t = _HYPHENATED.sub(lambda m: " ".join(g for g in m.groups() if g), t)
-    t = _SPLIT_WORD.sub(lambda m: "".join(g for g in m.groups() if g), t)
-    if _HEADING_ABBREV.search(t):
+    if any(w in low for w in _SPLIT_WORD_NEEDS):
+        t = _SPLIT_WORD.sub(lambda m: "".join(g for g in m.groups() if g), t)
+    if any(w in t for w in _HEADING_ABBREV_NEEDS) and _HEADING_ABBREV.search(t):
         # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
         t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
     raw = t.encode("utf-8", "surrogatepass")
