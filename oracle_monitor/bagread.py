@@ -104,6 +104,8 @@ class _Fallback(Exception):
 # --- indexed MCAP reading in rosbags' order, without its per-message I/O ----------------------------------------------
 
 _MSG_REC = struct.Struct("<BQHIQQ")         # opcode, record length, channel id, sequence, log time, publish time
+#: The largest MCAP file read the fast way (its wanted messages are all held in memory at once).
+FAST_READ_MAX_BYTES = 256 * 1024 * 1024
 
 
 def _indexed_messages(reader: Any, conns: list[Any]) -> list[RawMessage] | None:
@@ -123,6 +125,8 @@ def _indexed_messages(reader: Any, conns: list[Any]) -> list[RawMessage] | None:
     storage = storages[0]
     if type(storage) is not McapReader or not storage.chunks or storage.bio is None:
         return None
+    if storage.bio.seek(0, 2) > FAST_READ_MAX_BYTES:
+        return None         # the messages are held until sorted: past the bound, rosbags' streaming reading
     # rosbags' matching of the wanted connections to the file's channels (DirectoryReader.messages).
     channels: dict[int, tuple[str, str]] = {}
     for x in storage.connections:
@@ -134,19 +138,19 @@ def _indexed_messages(reader: Any, conns: list[Any]) -> list[RawMessage] | None:
     if not channels:
         return []
     bio = storage.bio
-    bio.seek(0)
-    whole = bio.read()
     runs: list[tuple[int, list[RawMessage]]] = []          # (chunk offset, its messages in time order)
     unpack = _MSG_REC.unpack_from
     for chunk in storage.chunks:
         if not any(chunk.channel_count.get(cid, 0) for cid in channels):
             continue
-        head = chunk.chunk_start_offset + 9
-        (crc,) = _U32.unpack_from(whole, head + 24)
-        start = head + 40 + len(chunk.compression)
-        stored = whole[start:start + chunk.compressed_size]
-        if len(stored) != chunk.compressed_size:
+        # One read per chunk (its header and stored records): memory stays one chunk, whatever the bag's size.
+        bio.seek(chunk.chunk_start_offset + 9)
+        start = 40 + len(chunk.compression)
+        piece = bio.read(start + chunk.compressed_size)
+        if len(piece) != start + chunk.compressed_size:
             raise ValueError("chunk past the end of the file")
+        (crc,) = _U32.unpack_from(piece, 24)
+        stored = piece[start:]
         data = decompress(stored, chunk.compression, chunk.uncompressed_size, crc)
         lo, hi = chunk.message_start_time, chunk.message_end_time + 1
         msgs: list[RawMessage] = []
@@ -186,7 +190,6 @@ def _log_time(m: RawMessage) -> int:
 
 def _time_offset_key(item: tuple[int, int, int, RawMessage]) -> tuple[int, int, int]:
     return item[0], item[1], item[2]
-
 
 
 def read_bag(path: str | Path) -> BagReading:

@@ -98,3 +98,16 @@ def test_damaged_chunk_is_left_to_rosbags(tmp_path: Path, monkeypatch: pytest.Mo
     monkeypatch.setattr(bagread, "_indexed_messages", lambda reader, conns: None)
     assert got == read()
     assert 0 < len(got[0]) < 600
+
+
+def test_a_file_past_the_bound_is_read_by_rosbags(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The fast path holds every wanted message at once: a bag larger than the bound streams through rosbags.
+    bag = tmp_path / "bag"
+    _write(bag, compress=False, seed=5)
+    with Reader(bag) as reader:
+        assert _indexed_messages(reader, list(reader.connections)) is not None
+        monkeypatch.setattr(bagread, "FAST_READ_MAX_BYTES", (bag / "bag.mcap").stat().st_size - 1)
+        assert _indexed_messages(reader, list(reader.connections)) is None
+    reading = read_bag(bag)
+    got = [(m.topic, m.msgtype, m.log_time_ns, bytes(m.data)) for m in reading.messages()]
+    assert got == _rosbags(bag, None) and reading.complete
