@@ -10,7 +10,8 @@ this way runs identically in both. The form (docs/seed_format.md):
 - a Story named after the controller (`signal_ctrl_<junction>`) with one Event per phase change, each holding one
   `TrafficSignalStateAction` per signal. `timed` plans start their events by `SimulationTimeCondition` at the
   phase's start time, cycling as a controller does until the time limit; a `triggered` plan (the dilemma-zone
-  yellow) starts its first event by a given condition and the later ones `delay` s after that event completed.
+  yellow) starts its first event by a given condition and the later ones `delay` s after that condition held
+  (its second phase may also start early: `EarlyStart`).
 
 `write_plan` makes the elements, `read_plan` turns them back into a `SignalPlan` (what the tree's TLS mutation,
 its features and the analysis labels read).
