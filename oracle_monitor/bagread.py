@@ -110,7 +110,7 @@ FAST_READ_MAX_BYTES = 256 * 1024 * 1024
 
 def _indexed_messages(reader: Any, conns: list[Any]) -> list[RawMessage] | None:
     """The messages `reader.messages(connections=conns)` would yield, in the same order with the same bytes, read
-    from the file in one piece instead of rosbags' few small reads per message (~40 % of an offline judge's time
+    with one read per chunk instead of rosbags' few small reads per message (~40 % of an offline judge's time
     went there). Only for the layout rosbags' own reading handles the same way: one MCAP file with a chunk index,
     no per-message compression. None otherwise (the caller uses rosbags); raises on anything malformed (the caller
     then lets rosbags read it, so damage is reported as before). The order is rosbags': each chunk's messages
