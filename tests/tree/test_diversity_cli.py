@@ -105,3 +105,18 @@ def test_a_seed_directory_is_not_taken_for_a_tree(tmp_path, capsys):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert "a seed directory, not a scenario tree" in err and "Traceback" not in err
+
+
+def test_a_mutation_config_need_hold_only_what_it_changes(tmp_path, capsys):
+    # Every setting a user's file leaves out keeps the bundled value; a misspelled section is refused.
+    part = tmp_path / "mutation.yaml"
+    part.write_text("tree:\n  mutations_per_block: 1\n")
+    assert main(["tree", str(CUT_IN), "--out", str(tmp_path / "t"), "--config", str(part), "--max-nodes", "8"]) == 0
+    (manifest,) = (tmp_path / "t").glob("*/manifest.json")
+    assert json.loads(manifest.read_text())["settings"]["mutations_per_block"] == 1
+    capsys.readouterr()
+    typo = tmp_path / "typo.yaml"
+    typo.write_text("tre:\n  mutations_per_block: 1\n")
+    assert main(["tree", str(CUT_IN), "--out", str(tmp_path / "u"), "--config", str(typo)]) == 2
+    err = capsys.readouterr().err
+    assert "typo.yaml, <tre>: unknown section" in err and "Traceback" not in err

@@ -14,7 +14,7 @@ import os
 import sys
 import time
 import zlib
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
-from ..config import load_config
+from ..config import check_sections, load_config
 from ..errors import InputError, Txt2SceError
 from ..xosc.validate import document_version, validate_xosc
 from .assembly import assemble
@@ -39,8 +39,15 @@ MANIFEST_SCHEMA = "txt2sce.tree/1"
 
 def tree_config(path: str | Path | None = None, *, mutations: int | None = None, prune_share: float | None = None,
                 validate: bool | None = None, max_nodes: int | None = None) -> dict[str, Any]:
-    """`config/mutation.yaml` (or `path`) with CLI overrides applied; a private copy the caller may change."""
-    cfg = copy.deepcopy(load_config("mutation", path))
+    """`config/mutation.yaml`, with the settings of `path` over it, and CLI overrides applied; a private copy the
+    caller may change. A user's file need hold only what it changes: every setting it leaves out keeps the bundled
+    value (before, a file without one key failed deep inside with a KeyError); a section the bundled file does not
+    have is refused (a misspelled one would change nothing)."""
+    cfg = copy.deepcopy(load_config("mutation"))
+    if path is not None:
+        given = load_config("mutation", path)
+        check_sections(given, cfg, str(path))
+        _merge_into(cfg, given)
     if mutations is not None:
         cfg["tree"]["mutations_per_block"] = int(mutations)
     if prune_share is not None:
@@ -52,6 +59,15 @@ def tree_config(path: str | Path | None = None, *, mutations: int | None = None,
     if not 0.0 < float(cfg["tree"]["prune_share"]) <= 1.0:
         raise InputError("prune share must be in (0, 1]", element="tree.prune_share")
     return cfg
+
+
+def _merge_into(base: dict[str, Any], given: Mapping[str, Any]) -> None:
+    """`given` over `base`, mapping by mapping (a user's value replaces a bundled one; lists are values)."""
+    for key, value in given.items():
+        if isinstance(value, Mapping) and isinstance(base.get(key), dict):
+            _merge_into(base[key], value)
+        else:
+            base[key] = copy.deepcopy(value)
 
 
 def expected_nodes(counts: Sequence[int]) -> int:
