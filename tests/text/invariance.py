@@ -14,7 +14,7 @@ Session 9, studyable narratives, session-start code -> after: operator renamed 9
 without a comma 20/66 -> 0/66, headings abbreviated 10/78 -> 0/78, body sides named left/right 7/63 -> 1/63, the
 AV called "the robotaxi" 85/104 -> 0/104 and "the ego vehicle" 12/104 -> 0/104, "left-turn" / "lane-change"
 hyphenated 22/39 -> 0/39 and 7/7 -> 0/7, "stop-sign", "red-light", "parking-lot" 26/36 -> 0/36, "on-coming"
-7/20 -> 0/20, "west bound" 5/72 -> 0/72; all rewrites 517/2,082 -> 10/2,082.
+7/20 -> 0/20, "west bound" 5/72 -> 0/72, "manoeuvre" 3/13 -> 0/13; all rewrites 520/2,095 -> 10/2,095.
 """
 
 from __future__ import annotations
@@ -107,6 +107,9 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("reversed -> backed up", _sub(r"\breversed\b", "backed up")),
     Rewrite("braked -> applied the brakes", _sub(r"\bbraked\b", "applied the brakes")),
     Rewrite("began to proceed -> started to move", _sub(r"\bbegan to proceed\b", "started to move")),
+    Rewrite("maneuver -> manoeuvre (British spelling)",
+            _sub(r"\bmaneuver(ing|ed|s)?\b", lambda m: {None: "manoeuvre", "ing": "manoeuvring", "ed": "manoeuvred",
+                                                       "s": "manoeuvres"}[m.group(1)])),
     Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
                                                          "reported and the police were not called to the scene."),
 )

@@ -1,6 +1,6 @@
 """What must not change a sketch (`tests/text/invariance.py`): every rewrite a new user's reports make without
 changing the accident, on every studyable narrative, leaves the sketch as it was, but for the cases listed below
-with the reason each still reads differently. On the session-9 start code 517 of 2,082 rewritten narratives read
+with the reason each still reads differently. On the session-9 start code 520 of 2,095 rewritten narratives read
 differently (the AV taken for another party under a new operator's name in 99 of 130); now 10."""
 
 from __future__ import annotations

@@ -37,6 +37,8 @@ _FIRST_VEHICLE = compile_gated(
 _HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b|"
                             r"\b(stop|red|traffic|parking|bike|bicycle|bus|turn|travel|through|center|centre|"
                             r"median|curb|crossing)-(signs?|lights?|lots?|lanes?|signals?|lines?|guards?)\b", re.I)
+_MANOEUVRE = compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I)
+_MANEUVER = {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering", "rable": "maneuverable"}
 _HYPHENATED_NEEDS = ("-turn", "-chang", "-sign", "-light", "-lot", "-lane", "-line", "-guard")
 _SPLIT_WORD_NEEDS = ("on coming", "on-coming", "left most", "left-most", "right most", "right-most", " bound",
                      "-bound", "cross walk", "cross-walk")
@@ -208,6 +210,8 @@ def normalise(text: str) -> str:
         t = _HYPHENATED.sub(lambda m: " ".join(g for g in m.groups() if g), t)
     if any(w in low for w in _SPLIT_WORD_NEEDS):
         t = _SPLIT_WORD.sub(lambda m: "".join(g for g in m.groups() if g), t)
+    if "manoeuv" in low:
+        t = _MANOEUVRE.sub(lambda m: _MANEUVER[m.group(1).lower()], t)   # British spelling, as the rules read US
     if any(w in t for w in _HEADING_ABBREV_NEEDS) and _HEADING_ABBREV.search(t):
         # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
         t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
