@@ -9,6 +9,7 @@ new entity, a definite one refers back to the latest compatible entity.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from . import fastre as fre
@@ -34,21 +35,31 @@ _OPERATOR_DEF = compile_gated(
 _FIRST_VEHICLE = compile_gated(
     rf"\A[^.]{{0,200}}?\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:test\s+)?(?:vehicle|car|robotaxi|shuttle)\b",
     re.I)
-_HYPHENATED = compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b|"
-                            r"\b(stop|red|traffic|parking|bike|bicycle|bus|turn|travel|through|center|centre|"
-                            r"median|curb|crossing)-(signs?|lights?|lots?|lanes?|signals?|lines?|guards?)\b", re.I)
-_MANOEUVRE = compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I)
-_MANEUVER = {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering", "rable": "maneuverable"}
-_HYPHENATED_NEEDS = ("-turn", "-chang", "-sign", "-light", "-lot", "-lane", "-line", "-guard")
-_SPLIT_WORD_NEEDS = ("on coming", "on-coming", "left most", "left-most", "right most", "right-most", " bound",
-                     "-bound", "cross walk", "cross-walk")
-_HEADING_ABBREV_NEEDS = ("NB", "SB", "EB", "WB", "/B")
-_SPLIT_WORD = compile_gated(r"\b(on)[- ](coming)\b|\b(left|right)[- ](most)\b|"
-                            r"\b((?:north|south)?(?:east|west)|north|south)[- ](bound)\b|\b(cross)[- ](walks?)\b", re.I)
-# Headings abbreviated in capitals, as police and NHTSA narratives write them: NB, S/B, EB, SWB.
-_HEADING_ABBREV = compile_gated(r"\b(N|S|E|W|NE|NW|SE|SW)/?B\b")
-_COMPASS = {"N": "north", "S": "south", "E": "east", "W": "west", "NE": "northeast", "NW": "northwest",
-            "SE": "southeast", "SW": "southwest"}
+# Spellings other than the ones the rules read, rewritten first: (words one of which the text must hold for the
+# pattern to be tried at all, looked for in the lower-cased text unless the rewrite is case-sensitive; pattern;
+# replacement). Scanning every narrative with every pattern costs more than the look for its words.
+_SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Match[str]], str]], ...] = (
+    # "a left-turn", "a lane-change", "the stop-sign", "a red-light", "the parking-lot", "the bike-lane": spaced
+    (("-turn", "-chang", "-sign", "-light", "-lot", "-lane", "-line", "-guard"), False,
+     compile_gated(r"\b(left|right|lane)-(turns?|turning|turned|change[sd]?|changing)\b|"
+                   r"\b(stop|red|traffic|parking|bike|bicycle|bus|turn|travel|through|center|centre|"
+                   r"median|curb|crossing)-(signs?|lights?|lots?|lanes?|signals?|lines?|guards?)\b", re.I),
+     lambda m: " ".join(g for g in m.groups() if g)),
+    # "on-coming", "right-most", "west bound", "west-bound", "cross walk": one word
+    (("on coming", "on-coming", "left most", "left-most", "right most", "right-most", " bound", "-bound",
+      "cross walk", "cross-walk"), False,
+     compile_gated(r"\b(on)[- ](coming)\b|\b(left|right)[- ](most)\b|"
+                   r"\b((?:north|south)?(?:east|west)|north|south)[- ](bound)\b|\b(cross)[- ](walks?)\b", re.I),
+     lambda m: "".join(g for g in m.groups() if g)),
+    # British spelling, as the rules read US
+    (("manoeuv",), False, compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I),
+     lambda m: {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering",
+                "rable": "maneuverable"}[m.group(1).lower()]),
+    # headings abbreviated in capitals, as police and NHTSA narratives write them: "traveling NB", "a S/B sedan"
+    (("NB", "SB", "EB", "WB", "/B"), True, compile_gated(r"\b(N|S|E|W|NE|NW|SE|SW)/?B\b"),
+     lambda m: {"N": "north", "S": "south", "E": "east", "W": "west", "NE": "northeast", "NW": "northwest",
+                "SE": "southeast", "SW": "southwest"}[m.group(1)] + "bound"),
+)
 #: Capitalised words that open such a phrase without naming an operator.
 _NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another", "other", "second", "first"}) | \
     frozenset(MAKES) | frozenset(VAN_MODELS)
@@ -201,20 +212,10 @@ def normalise(text: str) -> str:
             if old in quoted:
                 quoted = quoted.replace(old, new)
     t = fre.sub(r"\s+", " ", quoted).strip()
-    # Compounds spelt another way than the rules read them: "a left-turn", "a lane-change", "the stop-sign", "a
-    # red-light", "the parking-lot", "the bike-lane" (spaced); "on-coming", "right-most", "west bound", "west-bound",
-    # "cross walk" (one word).
-    # (Each rewrite is looked for only when a word it needs is in the text: a scan of every narrative costs more.)
     low = t.lower()
-    if "-" in t and any(w in low for w in _HYPHENATED_NEEDS):
-        t = _HYPHENATED.sub(lambda m: " ".join(g for g in m.groups() if g), t)
-    if any(w in low for w in _SPLIT_WORD_NEEDS):
-        t = _SPLIT_WORD.sub(lambda m: "".join(g for g in m.groups() if g), t)
-    if "manoeuv" in low:
-        t = _MANOEUVRE.sub(lambda m: _MANEUVER[m.group(1).lower()], t)   # British spelling, as the rules read US
-    if any(w in t for w in _HEADING_ABBREV_NEEDS) and _HEADING_ABBREV.search(t):
-        # "traveling NB on [XXX]", "a S/B sedan": the headings every rule reads are the words.
-        t = _HEADING_ABBREV.sub(lambda m: _COMPASS[m.group(1)] + "bound", t)
+    for words, cased, rx, repl in _SPELLINGS:
+        if any(w in (t if cased else low) for w in words):
+            t = rx.sub(repl, t)
     raw = t.encode("utf-8", "surrogatepass")
     n_upper = len(raw) - len(raw.translate(None, _UPPER_BYTES))
     n_alpha = len(raw) - len(raw.translate(None, _ALPHA_BYTES))
