@@ -141,16 +141,21 @@ def describe_live(pid: int, log: Path | None = None) -> str:
     except (OSError, IndexError, ValueError):
         parts.append("state unknown")
     if log is not None and log.is_file():
-        lines = [ln for ln in log.read_text(encoding="utf-8", errors="replace").splitlines() if ln.strip()]
+        lines = _log_lines(log)
         age = time.time() - log.stat().st_mtime
-        parts.append(f'last log {age:.0f} s ago: "{lines[-1].strip()[:120]}"' if lines else "no log output")
+        parts.append(f'last log {age:.0f} s ago: "{lines[-1][:120]}"' if lines else "no log output")
     return ", ".join(parts)
+
+
+def _log_lines(log: Path) -> list[str]:
+    """A node's log, its non-empty lines stripped."""
+    return [ln.strip() for ln in log.read_text(encoding="utf-8", errors="replace").splitlines() if ln.strip()]
 
 
 def last_error(log: Path) -> str:
     """The line of a node's log that says why it stopped: its last error line, else its last line."""
     try:
-        lines = [ln.strip() for ln in log.read_text(encoding="utf-8", errors="replace").splitlines() if ln.strip()]
+        lines = _log_lines(log)
     except OSError:
         return f"(no log at {log})"
     errors = [ln for ln in lines if "error" in ln.lower() or "exception" in ln.lower()]
