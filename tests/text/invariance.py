@@ -2,7 +2,7 @@
 
 Each rewrite is one a new user's reports make without changing the accident (another operator's name, a heading
 abbreviated as police write it, the present tense, ...). It is applied to every studyable narrative (dev gold +
-study; never the check set or the holdout) that it changes, and the sketch of the rewritten text is compared with the
+study only) that it changes, and the sketch of the rewritten text is compared with the
 sketch of the original: evidence spans aside (they move with the words), and the environment aside where the rewrite
 touches the time (lighting is read from it). A changed sketch is a phrasing the rules read one way and not the
 other: a fault that unseen narratives will meet too, found without reading them.
