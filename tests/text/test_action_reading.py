@@ -428,3 +428,11 @@ def test_a_move_told_in_the_pluperfect_is_the_avs() -> None:
 ])
 def test_a_turn_strayed_from_and_pulling_out(text: str, want: tuple[str, str]) -> None:
     assert _party(text) == want
+
+
+def test_a_relative_clause_after_a_possessed_place_is_the_party_s() -> None:
+    # "... in the lane to the AV's right, which was attempting to merge left": the vehicle merged, not the AV.
+    text = ("A Cruise AV traveling westbound on Eddy Street was struck on the right rear quarter panel by a vehicle "
+            "traveling westbound in the lane to the Cruise AV's right, which was attempting to merge left.")
+    assert _ego(text) == ("moving", "a")
+    assert _party(text) == ("moving", "af")

@@ -109,3 +109,18 @@ def test_over_long_narrative_is_refused_clearly() -> None:
     sk = extract(("The AV was traveling north when a car struck its rear bumper. " * 2000)[:MAX_NARRATIVE_CHARS // 4],
                  "long-ok")
     assert sk.npcs
+
+
+@pytest.mark.parametrize("part, move, where", [
+    ("rear quarter panel", "moved into the AV's lane", ("R6", "right")),  # its tail: it came from behind
+    ("rear bumper", "moved into the AV's lane", ("R6", "right")),
+    ("rear passenger door", "moved into the AV's lane", ("R5", "right")),  # the middle of the side: level with it
+    ("front passenger side", "moved into the AV's lane", ("R5", "right")),
+    ("rear quarter panel", "reversed", ("R5", "right")),  # backing up from level meets the AV's rear half
+])
+def test_contact_on_the_av_s_rear_half_puts_a_next_lane_party_behind(part: str, move: str,
+                                                                     where: tuple[str, str]) -> None:
+    text = (f"A Zoox vehicle was traveling eastbound on Harrison Street in the left lane. A sedan traveling "
+            f"eastbound in the right lane {move} and made contact with the Zoox vehicle's {part}.")
+    p = extract(text, "t").npcs[0]
+    assert (p.position, p.lane) == where

@@ -191,6 +191,12 @@ _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+)
                        r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
+# After a possessor inside a party's phrase of place ("to EGO's right, which was ..."): the place noun, then the
+# relative pronoun.
+_POSSESSED_RELATIVE = compile_gated(r"\s*[\w-]+(?:\s+[\w-]+)?\s*,\s*(?:that|which|who)\s+"
+                                    r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*(?:\w+ly\s+)?"
+                                    r"(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
+                                    re.I)
 
 
 @dataclass(frozen=True)
@@ -315,6 +321,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
         left = [m for m in ments if m.end <= b]
         rel = left[-1] if left and _RELATIVE.fullmatch(s[left[-1].end:b]) else None
+        if rel is None and len(left) >= 2 and s[left[-1].start:left[-1].end].endswith("'s") and \
+                left[-2].kind == "party" and _POSSESSED_RELATIVE.fullmatch(s[left[-1].end:b]) and \
+                not fre.search(r"[,;]", s[left[-2].end:left[-1].start]):
+            # "a vehicle traveling in the lane to EGO's right, which was attempting to merge left": the clause
+            # tells of the noun phrase's head (the vehicle), not of the possessor inside its place.
+            rel = left[-2]
         if rel is not None and not rel.subject and not fre.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
                 not (s[rel.end:b].strip() == "" and fre.match(r"\w+ing\b", s[b:e], re.I)):
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
