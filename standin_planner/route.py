@@ -1,5 +1,5 @@
 """Mission planning, as Autoware's mission planner does it: from the ego's pose and the goal, a lane-level route
-over the road model's routing graph (networkx shortest path), turned into the reference line the controllers
+over the road model's lane graph (`topology.shortest_lane_path`), turned into the reference line the controllers
 follow. Replanning happens when the ego is found off the route.
 
 Lane changes in a route (the graph's `change_left` / `change_right` edges) are blended into the line: it leaves
@@ -11,12 +11,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import networkx as nx
 import numpy as np
 
 from txt2sce_ros.contract import Goal
 from txt2sce_ros.errors import InputError
 from txt2sce_ros.road import LaneRef, RoadNetwork
+from txt2sce_ros.road.topology import shortest_lane_path
 
 from .refline import RefLine
 
@@ -38,23 +38,17 @@ class Route:
     goal_s: float               # arc length of the goal's projection on the line
 
 
-def _edge_kind(graph: nx.DiGraph, a: LaneRef, b: LaneRef) -> str:
+def _edge_kind(net: RoadNetwork, a: LaneRef, b: LaneRef) -> str:
     """'follow', 'change_left' or 'change_right' (the routing graph's edge kinds, docs/road_api.md)."""
-    return str((graph.get_edge_data(a, b) or {}).get("kind", "follow"))
-
-
-def _follow_only(graph: nx.DiGraph) -> nx.DiGraph:
-    return nx.subgraph_view(graph, filter_edge=lambda a, b: _edge_kind(graph, a, b) == "follow")
+    edge = net.lane_graph.succ.get(a, {}).get(b)
+    return "follow" if edge is None else edge[0]
 
 
 def lane_route(net: RoadNetwork, start: LaneRef, goal: LaneRef) -> list[LaneRef]:
     """Shortest lane sequence start -> goal, preferring one without lane changes (a stand-in keeps its lane when it
     can); raises InputError when the goal cannot be reached at all."""
-    graph = net.routing_graph
-    try:
-        return list(nx.shortest_path(_follow_only(graph), start, goal, weight="weight"))
-    except (nx.NetworkXNoPath, nx.NodeNotFound):
-        return net.route(start, goal)
+    path = shortest_lane_path(net.lane_graph, start, goal, follow_only=True)
+    return net.route(start, goal) if path is None else path
 
 
 def lane_widths(net: RoadNetwork, road_id: str, lane_id: int, road_s: np.ndarray) -> np.ndarray:
@@ -200,8 +194,7 @@ def _plan_route(net: RoadNetwork, x: float, y: float, heading: float, goal: Goal
     lanes = lane_route(net, start, target)
     if lanes == [start] and _behind(net, start, (x, y), (goal.x, goal.y)):
         lanes = _loop_route(net, start)
-    graph = net.routing_graph
-    kinds = [_edge_kind(graph, a, b) for a, b in zip(lanes[:-1], lanes[1:])]
+    kinds = [_edge_kind(net, a, b) for a, b in zip(lanes[:-1], lanes[1:])]
     tail = _extend(net, lanes[-1], GOAL_EXTENSION)
     full = list(lanes) + tail
     kinds += ["follow"] * len(tail)
@@ -228,13 +221,12 @@ def _behind(net: RoadNetwork, ref: LaneRef, ego: tuple[float, float], goal: tupl
 
 def _loop_route(net: RoadNetwork, start: LaneRef) -> list[LaneRef]:
     """The shortest way from `start` round and back onto it (a ring road, a block)."""
-    graph = _follow_only(net.routing_graph)
     best: list[LaneRef] | None = None
     for nxt in net.successors(start):
-        try:
-            path = [start] + list(nx.shortest_path(graph, nxt, start, weight="weight"))
-        except (nx.NetworkXNoPath, nx.NodeNotFound):
+        tail = shortest_lane_path(net.lane_graph, nxt, start, follow_only=True)
+        if tail is None:
             continue
+        path = [start] + tail
         if best is None or len(path) < len(best):
             best = path
     if best is None:

@@ -26,6 +26,7 @@ if TYPE_CHECKING:   # pragma: no cover
     import networkx as nx
 
     from .lookup import LaneIndex, LaneMatch, LanePoint
+    from .topology import LaneGraph
 
 DRIVING_TYPES = ("driving",)
 
@@ -353,6 +354,13 @@ class RoadNetwork:
         from .topology import predecessors
 
         return predecessors(self, ref)
+
+    @cached_property
+    def lane_graph(self) -> "LaneGraph":
+        """The lane-level routing graph as plain dicts (`topology.LaneGraph`); `route` searches it."""
+        from .topology import build_lane_graph
+
+        return build_lane_graph(self)
 
     @cached_property
     def routing_graph(self) -> "nx.DiGraph":

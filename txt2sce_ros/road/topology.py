@@ -10,7 +10,10 @@ the junction's connections whose incoming road is this road and whose connecting
 
 from __future__ import annotations
 
+import heapq
+import itertools
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -205,43 +208,142 @@ def lane_length(net: "RoadNetwork", ref: LaneRef) -> float:
     return cache[ref]
 
 
-def build_routing_graph(net: "RoadNetwork") -> nx.DiGraph:
+@dataclass(frozen=True, slots=True)
+class LaneGraph:
+    """The lane-level routing graph as plain dicts (no networkx: a cold process that routes need not import it).
+
+    `succ[a][b]` and `pred[b][a]` hold the edge a -> b as (kind, weight); every dict keeps the order in which
+    `build_lane_graph` added its keys, which is the order networkx keeps for the same additions, so
+    `shortest_lane_path` visits neighbours as networkx's search over `routing_graph` does."""
+
+    nodes: dict[LaneRef, dict[str, object]]          # lane -> length, road, junction, type
+    succ: dict[LaneRef, dict[LaneRef, tuple[str, float]]]
+    pred: dict[LaneRef, dict[LaneRef, tuple[str, float]]]
+
+
+def build_lane_graph(net: "RoadNetwork") -> LaneGraph:
     """Lane-level graph over drivable lanes: 'follow' edges (weight = length of the lane left behind) and
     'change_left'/'change_right' edges between same-direction neighbours (weight LANE_CHANGE_COST)."""
-    import networkx as nx   # on first use: a cold start that never routes does not pay for networkx
-
-    succ, _ = _relations(net)
-    g = nx.DiGraph()
-    for ref in succ:
+    succ_rel, _ = _relations(net)
+    nodes: dict[LaneRef, dict[str, object]] = {}
+    for ref in succ_rel:
         road = net.roads[ref.road_id]
         lane = road.sections[ref.section].lanes[ref.lane_id]
         if lane.type in DRIVABLE_TYPES:
-            g.add_node(ref, length=lane_length(net, ref), road=ref.road_id, junction=road.junction,
-                       type=lane.type)
-    for ref in list(g.nodes):
-        for nxt in succ[ref]:
-            if nxt in g:
-                g.add_edge(ref, nxt, kind="follow", weight=g.nodes[ref]["length"])
+            nodes[ref] = {"length": lane_length(net, ref), "road": ref.road_id, "junction": road.junction,
+                          "type": lane.type}
+    succ: dict[LaneRef, dict[LaneRef, tuple[str, float]]] = {ref: {} for ref in nodes}
+    pred: dict[LaneRef, dict[LaneRef, tuple[str, float]]] = {ref: {} for ref in nodes}
+
+    def add(a: LaneRef, b: LaneRef, kind: str, weight: float) -> None:
+        # A second edge a -> b replaces the first's data in place (its position in both dicts stays).
+        succ[a][b] = pred[b][a] = (kind, weight)
+
+    for ref in nodes:
+        for nxt in succ_rel[ref]:
+            if nxt in nodes:
+                add(ref, nxt, "follow", nodes[ref]["length"])  # type: ignore[arg-type]
         for side in ("left", "right"):
             nb = neighbour(net, ref, side)
-            if nb is not None and nb in g:
-                g.add_edge(ref, nb, kind=f"change_{side}", weight=LANE_CHANGE_COST)
+            if nb is not None and nb in nodes:
+                add(ref, nb, f"change_{side}", LANE_CHANGE_COST)
+    return LaneGraph(nodes, succ, pred)
+
+
+def build_routing_graph(net: "RoadNetwork") -> nx.DiGraph:
+    """`net.lane_graph` as a networkx DiGraph (edge attributes `kind` and `weight`, node attributes as there),
+    nodes and edges added in the lane graph's order, for callers that want networkx's algorithms."""
+    import networkx as nx   # on first use: a cold start that never asks for this graph does not pay for networkx
+
+    lg = net.lane_graph
+    g = nx.DiGraph()
+    for ref, attrs in lg.nodes.items():
+        g.add_node(ref, **attrs)
+    for a, out in lg.succ.items():
+        for b, (kind, weight) in out.items():
+            g.add_edge(a, b, kind=kind, weight=weight)
     return g
+
+
+def shortest_lane_path(graph: LaneGraph, start: LaneRef, goal: LaneRef, *, follow_only: bool = False
+                       ) -> list[LaneRef] | None:
+    """The least-weight lane sequence start -> goal (inclusive) over the graph's edges (only 'follow' edges with
+    `follow_only`); None when either lane is not in the graph or no path exists.
+
+    A bidirectional Dijkstra search that expands, alternately, the nearest unsettled lane from the start (along
+    `succ`) and from the goal (along `pred`), and stops when a lane is settled from both sides, answering with the
+    best meeting lane seen while relaxing. It is written to give exactly the path `networkx.shortest_path(
+    routing_graph, start, goal, weight="weight")` gives, ties included (tested against it on every map): the two
+    heaps order equal distances by one shared push counter, neighbours are visited in insertion order, a lane's
+    tentative distance and predecessor change only on a strict improvement, and a meeting lane replaces the best
+    one only when strictly shorter."""
+    if start not in graph.nodes or goal not in graph.nodes:
+        return None
+    if start == goal:
+        return [start]
+    sides = (graph.succ, graph.pred)
+    settled: tuple[dict[LaneRef, float], dict[LaneRef, float]] = ({}, {})
+    tentative: tuple[dict[LaneRef, float], dict[LaneRef, float]] = ({start: 0.0}, {goal: 0.0})
+    parent: tuple[dict[LaneRef, LaneRef | None], dict[LaneRef, LaneRef | None]] = ({start: None}, {goal: None})
+    pushes = itertools.count()
+    heaps: tuple[list, list] = ([(0, next(pushes), start)], [(0, next(pushes), goal)])
+    best: float | None = None
+    meet: LaneRef | None = None
+    side = 1
+    while heaps[0] and heaps[1]:
+        side = 1 - side
+        dist, _, lane = heapq.heappop(heaps[side])
+        done = settled[side]
+        if lane in done:
+            continue
+        done[lane] = dist
+        if lane in settled[1 - side]:
+            return _joined(parent, meet)
+        seen, other_seen, back, heap = tentative[side], tentative[1 - side], parent[side], heaps[side]
+        for nb, (kind, weight) in sides[side][lane].items():
+            if follow_only and kind != "follow":
+                continue
+            via = dist + weight
+            if nb in done:
+                continue
+            if nb not in seen or via < seen[nb]:
+                seen[nb] = via
+                heapq.heappush(heap, (via, next(pushes), nb))
+                back[nb] = lane
+                if nb in other_seen:
+                    total = via + other_seen[nb]
+                    if best is None or best > total:
+                        best, meet = total, nb
+    return None
+
+
+def _joined(parent: tuple[dict[LaneRef, LaneRef | None], dict[LaneRef, LaneRef | None]], meet: LaneRef | None
+            ) -> list[LaneRef]:
+    """The path through `meet`: its forward predecessors back to the start, then its backward ones to the goal."""
+    head: list[LaneRef] = []
+    cur = meet
+    while cur is not None:
+        head.append(cur)
+        cur = parent[0][cur]
+    head.reverse()
+    cur = parent[1][meet]  # type: ignore[index]
+    while cur is not None:
+        head.append(cur)
+        cur = parent[1][cur]
+    return head
 
 
 def route(net: "RoadNetwork", start: LaneRef, goal: LaneRef) -> list[LaneRef]:
     """Shortest lane-level path from `start` to `goal` (inclusive), lane changes allowed."""
     start, goal = _check(net, start), _check(net, goal)
-    g = net.routing_graph
+    graph = net.lane_graph
     for ref in (start, goal):
-        if ref not in g:
+        if ref not in graph.nodes:
             raise InputError(f"lane {ref} is not drivable", source=net.source, element="lane")
-    import networkx as nx
-
-    try:
-        return list(nx.shortest_path(g, start, goal, weight="weight"))
-    except nx.NetworkXNoPath:
-        raise InputError(f"no route from {start} to {goal}", source=net.source, element="lane") from None
+    path = shortest_lane_path(graph, start, goal)
+    if path is None:
+        raise InputError(f"no route from {start} to {goal}", source=net.source, element="lane")
+    return path
 
 
 def lane_end_heading(net: "RoadNetwork", ref: LaneRef, at_exit: bool) -> float:
