@@ -14,29 +14,6 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                    ego_actions: str = "", behind_av: frozenset[str] = frozenset()) -> tuple[str, str | None, bool]:
     """(position, lane, known): where the party was relative to the AV when the interaction began.
     `behind_av`: head nouns of parties already placed behind the AV (R6); whoever follows them is behind too."""
-    pos, lane, known = _read_position(d, e, ego_heading, ego_turning, ego_actions, behind_av)
-    if pos == "R5" and lane in ("left", "right") and e.idx == d.partner and _came_from_behind(d, e, lane):
-        return "R6", lane, known
-    return pos, lane, known
-
-
-def _came_from_behind(d: Doc, e: Entity, lane: str) -> bool:
-    """A party in the next lane that touched the AV's rear half on that side, moving forward and not said to be
-    ahead or level, was level with the AV's tail or further back when the interaction began (R6, not R5): the
-    point of contact constrains where it can have been."""
-    fore, cside = ego_contact_part(d)
-    if fore != "rear" or cside not in (None, lane) or any(a.who == e.idx and a.code in "ik" for a in d.acts):
-        return False  # (a party moving off or backing up beside the AV meets its rear half from level)
-    if fre.search(r"\brear\s+(?:\w+\s+){0,2}door", d.sents[d.contact_sent], re.I) and not fre.search(
-            r"\brear\s+(?:quarter|bumper|corner|end|fender|wheel|tire|light)|\btail", d.sents[d.contact_sent], re.I):
-        return False  # a rear door is the middle of the car's side: level with it, not behind
-    pre = " ".join(d.sents[m.sent][max(0, m.start - 50):m.start] for m in e.mentions[:2])
-    return not fre.search(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent)\b",
-                          context(d, e) + " " + pre, re.I)
-
-
-def _read_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool, ego_actions: str,
-                   behind_av: frozenset[str]) -> tuple[str, str | None, bool]:
     ctx = context(d, e)
     # A party said to be on another street than the AV's is on a crossing road: the AV is at a junction with it.
     cross = _on_other_street(d, ctx)

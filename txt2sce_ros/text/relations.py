@@ -356,6 +356,12 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
     return None
 
 
+_TAIL_END = compile_gated(r"\brear\s+(?:quarter|bumper|corner|end|fender|wheel|tire|light)|\btail(?:light|gate)?\b|"
+                          r"\bback\s+(?:bumper|corner)", re.I)
+_REAR_DOOR = compile_gated(r"\brear\s+(?:\w+\s+){0,2}door", re.I)
+_LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent)\b", re.I)
+
+
 def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
           ego_turning: bool = False) -> Placement:
     """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
@@ -420,6 +426,16 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
         # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
+        used.append(contact)
+    if pos == "R5" and lane in ("left", "right") and not along and contact is not None and \
+            fore == "rear" and cside in ("", lane) and not backing and \
+            not any(a.who == e.idx and a.code == "i" for a in d.acts) and \
+            (_TAIL_END.search(d.sents[d.contact_sent]) or not _REAR_DOOR.search(d.sents[d.contact_sent])) and \
+            not _LEVEL.search(context(d, e)):
+        # In the next lane and touching the AV's rear on that side (its quarter, bumper or corner; a rear door
+        # alone is the middle of the side): it was level with the AV's tail or further back when the interaction
+        # began, not ahead of it. One that stood beside it and moved off meets the rear half from level.
+        pos, rule = "R6", rule + "; contact on the AV's rear, beside it"
         used.append(contact)
     if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
             not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and

@@ -333,7 +333,7 @@ def context(d: Doc, e: Entity) -> str:
     return " | ".join(parts)
 
 
-TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
+TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn(?!ed)|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
                          r"\bchang(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+)?(?:left|right)|"
                          r"\b(?:left|right)\s+lane"
                          r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
