@@ -15,7 +15,7 @@ def test_blocks_of_the_junction_seed_in_insertion_order(junction_bytes):
     d = disassemble(junction_bytes, source=str(JUNCTION), new_obstacle_slots=1)
     got = [(b.kind, b.key, len(b.slots)) for b in d.blocks]
     assert got == [
-        (BlockKind.EGO, "ego", 1),
+        (BlockKind.EGO, "ego", 2),                  # Init Private + the StopTrigger's goal condition
         (BlockKind.WEATHER, "environment", 1),
         (BlockKind.SIGNAL, "signal_ctrl_4", 4),      # an Init GlobalAction per light + the signal Story
         (BlockKind.NPC, "npc1", 2),                 # ScenarioObject + Init Private
@@ -24,6 +24,7 @@ def test_blocks_of_the_junction_seed_in_insertion_order(junction_bytes):
         (BlockKind.OBSTACLE, "obs1", 2),
         (BlockKind.NEW_OBSTACLE, "obs2", 2),        # first free obstacle name
     ]
+    assert d.blocks[0].fragments[1].startswith('<Condition name="ego_goal_reached"')
     assert d.blocks[1].fragments[0].startswith("<Environment name=\"environment\">")
     assert d.blocks[3].fragments[1].startswith("<Private entityRef=\"npc1\">")
     assert d.blocks[-1].fragments == ("", "")

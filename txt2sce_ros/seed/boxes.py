@@ -15,6 +15,12 @@ if TYPE_CHECKING:
     from ..contract import EntityState
 
 
+#: m kept between any two footprints at t=0: a contact in the first frame is an invalid scenario, not a collision.
+#: 0.3 m asked for, plus 5 cm for the player placing a lane position a little differently from the plan's samples.
+#: (The seed planner's start separation and the tree's category mutation keep the same clearance.)
+START_CLEARANCE = 0.35
+
+
 def box_corners(x: float, y: float, h: float, length: float, width: float, center_x: float) -> np.ndarray:
     c, s = math.cos(h), math.sin(h)
     cx, cy = x + center_x * c, y + center_x * s

@@ -10,7 +10,7 @@ import numpy as np
 
 from ..sketch import Party
 from .actor import Actor, predicted_gap
-from .plan_start import START_CLEARANCE
+from .boxes import START_CLEARANCE
 from .sides import on_reported_side, reported_code, start_position
 from .track import Track
 

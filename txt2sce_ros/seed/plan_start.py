@@ -10,12 +10,10 @@ import math
 import numpy as np
 
 from .actor import Actor, predicted_gap
+from .boxes import START_CLEARANCE
 from .kinematics import box_corners, boxes_gap
 from .track import Track
 
-#: m kept between any two footprints at t=0: a contact in the first frame is an invalid scenario, not a collision.
-#: 0.3 m asked for, plus 5 cm for the player placing a lane position a little differently from the plan's samples.
-START_CLEARANCE = 0.35
 #: m a start may be moved along its path to clear another entity
 MAX_START_SHIFT = 30.0
 

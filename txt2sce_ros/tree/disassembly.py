@@ -5,7 +5,7 @@ Blocks are found by tag name and `name`/`entityRef` attributes, as `docs/seed_fo
 | block | elements |
 |---|---|
 | weather | `Storyboard/Init/Actions/GlobalAction/EnvironmentAction/Environment` |
-| ego | `Init/Actions/Private[@entityRef='ego']` (its ScenarioObject stays in T: the AV is not mutated) |
+| ego | `Init/Actions/Private[@entityRef='ego']` (its ScenarioObject stays in T: the AV is not mutated) + the StopTrigger's condition that the ego reached its goal (`ego_goal_condition`: a version that carries the route through a light moves the run's end with it) |
 | npc | `Entities/ScenarioObject[@name=X]` + `Init/Actions/Private[@entityRef=X]` for each party X |
 | signal | the Init `GlobalAction`s that set lights + the signal Story (`seed.signal_story`: timed state actions) |
 | event | each `Story/Act/ManeuverGroup/Maneuver/Event` |
@@ -36,6 +36,17 @@ from .xml import parse_bytes, to_text
 _MARK = "@txt2sce-slot:"
 _MARK_RE = re.compile(r"<!--@txt2sce-slot:(\d+)-->")
 DEFAULT_ORDER = ("ego", "weather", "new_party", "signal", "npc", "event", "new_signal", "obstacle", "new_obstacle")
+
+
+def ego_goal_condition(root: etree._Element) -> etree._Element | None:
+    """The Storyboard StopTrigger's Condition that ends the run when the ego reaches its goal (a
+    ReachPositionCondition the ego triggers), or None."""
+    for cond in root.iterfind("Storyboard/StopTrigger/ConditionGroup/Condition"):
+        by = cond.find("ByEntityCondition")
+        if by is not None and by.find("EntityCondition/ReachPositionCondition") is not None and \
+                [e.get("entityRef") for e in by.iterfind("TriggeringEntities/EntityRef")] == ["ego"]:
+            return cond
+    return None
 
 
 def entity_kind(name: str) -> BlockKind:
@@ -103,7 +114,8 @@ def disassemble(seed: bytes | str, *, source: str = "<seed>", order: tuple[str, 
         kind = entity_kind(name)
         if kind is BlockKind.EGO:
             if "ego" in privates:
-                found[kind].append(("ego", [privates["ego"]]))
+                goal = ego_goal_condition(root)
+                found[kind].append(("ego", [privates["ego"]] + ([goal] if goal is not None else [])))
             continue
         parts = [obj] + ([privates[name]] if name in privates else [])
         found[kind].append((name, parts))

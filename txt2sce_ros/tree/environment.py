@@ -17,7 +17,7 @@ from ..seed.context import LanePos, SeedContext
 from ..seed.model import SignalPhase, SignalPlan
 from ..seed.signal_story import DecodedPlan, EarlyStart, read_plan, write_plan
 from .dynamics import initial_speed
-from .trajectory import feasible_s, footprint_extent
+from .trajectory import feasible_s, footprint_extent, starts_clear
 from .values import Recorder, uniform
 
 
@@ -290,6 +290,8 @@ class Approach:
     line: LanePos       # its stop line on the AV's lane
     s: float            # the AV's new start s (same road and lane as the seed's start)
     speed: float        # m/s at the start
+    goal: LanePos | None = None     # the route's new end beyond the light's junction (`through_light`); None: the
+                                    # seed's route (it already crosses the line)
 
 
 def approach_start(ctx: SeedContext, *, speed: float, margin: float, min_gap: float,
@@ -385,26 +387,134 @@ def _free_start(ctx: SeedContext, ego: LanePos, new_s: float, margin: float, min
 
 
 def configured_approach(ctx: SeedContext, init: dict[str, Any]) -> Approach | None:
-    """`approach_start` with the settings of `config/mutation.yaml` `trajectory.init_location` (`init`)."""
+    """The AV's approach start for a dilemma-zone yellow with the settings of `config/mutation.yaml`
+    `trajectory.init_location` (`init`): `through_light` where the seed's route ends short of the light it faces,
+    else `approach_start`."""
+    through = through_light(ctx, speed=float(init["approach_speed"]), beyond=float(init["through_beyond"]),
+                            slack=float(init["max_shift"]), lateral_accel=float(init["approach_lateral_accel"]))
+    if through is not None:
+        return through
     return approach_start(ctx, speed=float(init["approach_speed"]), margin=float(init["margin"]),
                           min_gap=float(init["min_gap"]), lateral_accel=float(init["approach_lateral_accel"]),
                           min_speed=float(init["approach_min_speed"]))
+
+
+def through_light(ctx: SeedContext, *, speed: float, beyond: float, slack: float = 10.0,
+                  timing: SignalTiming | None = None, lateral_accel: float | None = None) -> Approach | None:
+    """WPM on the AV's route for a dilemma-zone yellow where the seed's route ends short of the light the AV faces
+    on its start road (a report about a side-swipe on a signalised approach: its conflict, and so its goal, lie
+    before the junction). A yellow there tests nothing, the run ending before the AV meets the line; this carries
+    the AV's route, and with it the run's end, through the light: `beyond` m into the road the AV's lane leads to
+    across the junction (straight on where it can, else the gentlest turn), with the AV started on its approach,
+    `lead` s of driving short of the zone (as `approach_start`), at its seed speed (`speed` when it stood), no
+    faster than the turn through the junction allows at `lateral_accel` m/s^2.
+
+    The approach start must leave the AV's way to the line free: its footprint clear of every other start (any
+    lane) and no entity starting in its lane between it and the line (a queue or an obstacle there would stop it
+    before the line, masking the yellow). It is taken up to `slack` m further back where the first place is not
+    free, else the seed's own start where that is far enough back and its way free; None where neither is, no
+    traffic light faces the AV on its start road ahead of it, the route already crosses the line, or no lane
+    leads on across the junction."""
+    net, m, ego = ctx.network, ctx.map, ctx.starts.get("ego")
+    route = ctx.ego_route
+    if net is None or m is None or ego is None or not m.has_road(ego.road) or len(route) < 2:
+        return None
+    timing = timing or signal_timing()
+    sign = m.direction(ego.road, ego.lane)
+    end = route[-1]
+    for sid in ctx.ego_signals:
+        sig = net.signals.get(sid)
+        if sig is None or not sig.is_traffic_light or str(sig.road_id) != ego.road:
+            continue
+        if sign * (sig.s - ego.s) <= 0.0 or end.road != ego.road or sign * (sig.s - end.s) <= 0.0:
+            return None                  # past the light, or the route already crosses its line
+        lanes = tuple(getattr(sig, "controlled_lanes", ()) or ())
+        line = LanePos(road=ego.road, lane=int(ego.lane if not lanes or ego.lane in lanes else lanes[0]),
+                       s=float(sig.s))
+        exit_ = _across_junction(ctx, ego.road, ego.lane, float(sig.s), beyond)
+        if exit_ is None:
+            return None
+        goal, connecting = exit_
+        seed_v = initial_speed(ctx.root.find("Storyboard/Init/Actions/Private[@entityRef='ego']")) or 0.0
+        v = seed_v if seed_v > 0.0 else float(speed)
+        k = _max_curvature(ctx, [connecting])
+        if lateral_accel and k >= 1e-3:
+            v = min(v, math.sqrt(lateral_accel / k))
+        front = footprint_extent(ctx.root.find("Entities/ScenarioObject[@name='ego']"))[1]
+        need = v * (timing.yellow + timing.margin + timing.lead) + front
+        for back in np.arange(need, need + slack + 1e-9, 1.0):
+            new_s = float(sig.s - sign * back)
+            if _way_free(ctx, ego, new_s, float(sig.s)):
+                return Approach(str(sid), line, new_s, float(round(v, 3)), goal)
+        if sign * (sig.s - ego.s) >= need and _way_free(ctx, ego, ego.s, float(sig.s)):
+            return Approach(str(sid), line, float(ego.s), float(round(v, 3)), goal)
+        return None
+    return None
+
+
+def _across_junction(ctx: SeedContext, road: str, lane: int, s: float, beyond: float
+                     ) -> tuple[LanePos, str] | None:
+    """(the position `beyond` m into the road that lane `lane` of `road` leads to across the junction at its end,
+    the connecting road taken): straight on where a connection goes straight, else the one of least curvature.
+    None where the lane leads into no junction."""
+    net, m = ctx.network, ctx.map
+    try:
+        ref = net.lane_ref(road, lane, s)
+        options = [c for c in net.successors(ref) if m.has_road(c.road_id) and m.in_junction(c.road_id)]
+    except (KeyError, IndexError, ValueError):
+        return None
+    if not options:
+        return None
+    straight = [c for c in options if net.turn_type(ref, c) == "straight"]
+    conn = (straight or sorted(options, key=lambda c: (_max_curvature(ctx, [c.road_id]), c.road_id)))[0]
+    outs = [o for o in net.successors(conn) if m.has_road(o.road_id) and not m.in_junction(o.road_id)]
+    if not outs:
+        return None
+    out = outs[0]
+    length = m.road_length(out.road_id)
+    d = m.direction(out.road_id, out.lane_id)
+    at = min(beyond, 0.5 * length)
+    return LanePos(road=str(out.road_id), lane=int(out.lane_id), s=float(round(at if d > 0 else length - at, 3))), \
+        str(conn.road_id)
+
+
+def _way_free(ctx: SeedContext, ego: LanePos, new_s: float, line_s: float) -> bool:
+    """The AV started at `new_s` on its lane: on the road and the lane's type there, its footprint START_CLEARANCE
+    m clear of every other start (any lane), and no entity starting in its lane between it and the line."""
+    m = ctx.map
+    if not 0.5 <= new_s <= m.road_length(ego.road) - 0.5 or \
+            m.lane_type(ego.road, ego.lane, new_s) != m.lane_type(ego.road, ego.lane, ego.s):
+        return False
+    sign = m.direction(ego.road, ego.lane)
+    if any((p.road, p.lane) == (ego.road, ego.lane) and 0.0 <= sign * (p.s - new_s) <= sign * (line_s - new_s)
+           for name, p in ctx.starts.items() if name != "ego"):
+        return False
+    return starts_clear(ctx, "ego", ctx.root.find("Entities/ScenarioObject[@name='ego']"),
+                        LanePos(ego.road, ego.lane, new_s, ego.offset))
 
 
 def turn_speed(ctx: SeedContext, lateral_accel: float) -> float | None:
     """The speed (m/s) at which the AV's route through the junction beyond its start road takes its sharpest bend
     with `lateral_accel` m/s^2 of lateral acceleration: sqrt(a / k) for the largest mean curvature k over 5 m of
     the route's junction roads (None when the route crosses no junction or goes straight through it)."""
-    net, m = ctx.network, ctx.map
-    if net is None or m is None:
+    if ctx.network is None or ctx.map is None:
         return None
+    k_max = _max_curvature(ctx, [wp.road for wp in ctx.ego_route[1:]])
+    if k_max < 1e-3:                 # radius over 1 km: straight on
+        return None
+    return math.sqrt(lateral_accel / k_max)
+
+
+def _max_curvature(ctx: SeedContext, roads: list[str]) -> float:
+    """The largest mean curvature (1/m) over 5 m of the junction roads among `roads` (0 for none)."""
+    net, m = ctx.network, ctx.map
     k_max = 0.0
-    for wp in ctx.ego_route[1:]:
-        if not m.has_road(wp.road) or not m.in_junction(wp.road):
+    for road in roads:
+        if not m.has_road(road) or not m.in_junction(road):
             continue
-        length = m.road_length(wp.road)
+        length = m.road_length(road)
         ss = np.linspace(0.0, length, max(int(length), 2) + 1)
-        heading = np.unwrap([net.road_heading(wp.road, float(x)) for x in ss])
+        heading = np.unwrap([net.road_heading(road, float(x)) for x in ss])
         span = min(5.0, length)
         for a in ss:
             b = min(a + span, length)
@@ -412,9 +522,7 @@ def turn_speed(ctx: SeedContext, lateral_accel: float) -> float | None:
                 break
             ha, hb = np.interp([a, b], ss, heading)
             k_max = max(k_max, abs(hb - ha) / (b - a))
-    if k_max < 1e-3:                 # radius over 1 km: straight on
-        return None
-    return math.sqrt(lateral_accel / k_max)
+    return k_max
 
 
 #: m: the map's lights within this distance of the light facing the AV belong to its junction (a new plan sets them).

@@ -65,8 +65,15 @@ def _is_approach(private: etree._Element | None, ctx: SeedContext, cfg: dict[str
     found = configured_approach(ctx, init)
     # the speed too: an approach made from the seed's own start differs from it only in its speed
     speed = initial_speed(private)
-    return found is not None and abs(lane_pos(tele).s - round(found.s, 3)) < 1e-6 \
-        and (speed is None or abs(speed - round(found.speed, 3)) < 1e-6)
+    if found is None or abs(lane_pos(tele).s - round(found.s, 3)) >= 1e-6 \
+            or (speed is not None and abs(speed - round(found.speed, 3)) >= 1e-6):
+        return False
+    if found.goal is None:
+        return True
+    # an approach through the light (`through_light`) also carries the route's end past it
+    end = private.find("PrivateAction/RoutingAction/AssignRouteAction/Route/Waypoint[last()]/Position/LanePosition")
+    return end is not None and (lane_pos(end).road, lane_pos(end).lane) == (found.goal.road, found.goal.lane) \
+        and abs(lane_pos(end).s - round(found.goal.s, 3)) < 1e-6
 
 
 def _shift_bin(private: etree._Element | None, entity: str, ctx: SeedContext, cfg: dict[str, Any], n: int) -> int:

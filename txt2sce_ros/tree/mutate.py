@@ -32,7 +32,7 @@ from .environment import configured_approach, dilemma_yellow, new_signal, obstac
 from .features import block_features, split_event_name
 from .parties import ROLE_EXCLUDES, ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
-from .trajectory import keep_clear_of_queue, move_start, place_near_ego, shift_init_location, wpm_lane_change
+from .trajectory import clear_of_starts, keep_clear_of_queue, move_start, route_through, place_near_ego, shift_init_location, wpm_lane_change
 from .values import Recorder, uniform
 from .xml import parse_fragment, to_text
 
@@ -115,7 +115,11 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                                     "AbsoluteTargetSpeed")
                 if speed is not None:
                     rec.set(speed, "value", approach.speed, digits=3)
-                emit(els, "WPM-approach", rec)
+                operator = "WPM-approach"
+                if approach.goal is not None:       # the route, and the run's end, carried through the light
+                    route_through(els, approach.goal, rec)
+                    operator = "WPM-approach+route"
+                emit(els, operator, rec)
         elif block.kind is BlockKind.NPC:
             for cat in _choices("npc", list(cfg["physical"]["categories"]), cfg, rng):
                 els, rec = _parse(block.fragments), Recorder()
@@ -129,6 +133,10 @@ def block_variants(block: Block, ctx: SeedContext, cfg: dict[str, Any], *, seed:
                     ops += "+WPM-init"
                 if priv is not None:
                     keep_clear_of_queue(priv, block.key, els[0], ctx, rec, cfg["trajectory"]["init_location"])
+                    # the new size must not reach into another start in any lane (moved back, or the version
+                    # dropped: every node under it would start in a collision)
+                    if not clear_of_starts(priv, block.key, els[0], ctx, rec, cfg["trajectory"]["init_location"]):
+                        continue
                 emit(els, ops, rec)
             # one more version: the party as in the seed, started close to the AV (where the road allows)
             els, rec = _parse(block.fragments), Recorder()

@@ -14,6 +14,8 @@ from typing import Any
 import numpy as np
 from lxml import etree
 
+from ..errors import Txt2SceError
+from ..seed.boxes import START_CLEARANCE, box_corners, boxes_gap
 from ..seed.context import LanePos, SeedContext, lane_pos
 from .values import Recorder, gaussian, uniform
 
@@ -149,6 +151,31 @@ def move_start(private: etree._Element, new_s: float, rec: Recorder) -> float:
     return float(text)
 
 
+def route_through(parts: list[etree._Element | None], goal: LanePos, rec: Recorder) -> None:
+    """Carry the ego's route to `goal` (`environment.through_light`): the route's last waypoint becomes `goal` and
+    the waypoints between its first and last go (they lay on the way to the old end, some now behind the moved
+    start); the ego block's goal condition (`parts[1]`, the StopTrigger's ReachPosition) moves with it, so the run
+    ends there and not at the old goal, short of the light."""
+    route = parts[0].find("PrivateAction/RoutingAction/AssignRouteAction/Route")
+    if route is None:
+        return
+    points = route.findall("Waypoint")
+    for wp in points[1:-1]:
+        rec.note(f"Route/Waypoint/LanePosition[@s='{wp.find('Position/LanePosition').get('s')}']", "waypoint", None)
+        route.remove(wp)
+    targets = [points[-1].find("Position/LanePosition")]
+    if len(parts) > 1 and parts[1] is not None:
+        targets.append(parts[1].find("ByEntityCondition/EntityCondition/ReachPositionCondition/Position/"
+                                     "LanePosition"))
+    for lp in targets:
+        if lp is None:
+            continue
+        rec.set(lp, "roadId", goal.road)
+        rec.set(lp, "laneId", str(goal.lane))
+        rec.set(lp, "s", goal.s, digits=3)
+        rec.set(lp, "offset", goal.offset, digits=3)
+
+
 def footprint_extent(obj: etree._Element | None) -> tuple[float, float]:
     """(rear, front) m of a ScenarioObject's footprint from its reference point along its heading (0, 0 unknown)."""
     bb = obj.find("*/BoundingBox") if obj is not None else None
@@ -222,3 +249,68 @@ def place_near_ego(private: etree._Element, entity: str, obj: etree._Element, ct
         return 0.0
     text = rec.set(tele, "s", new_s, digits=3)
     return float(text) - start.s
+
+
+def _start_box(ctx: SeedContext, name: str, obj: etree._Element | None, pos: LanePos | None = None
+               ) -> np.ndarray | None:
+    """Corners of `name`'s footprint at its start (`pos` on its lane instead, where given); None where the object
+    has no bounding box or the start cannot be placed on the map."""
+    bb = obj.find("*/BoundingBox") if obj is not None else None
+    dims = bb.find("Dimensions") if bb is not None else None
+    if dims is None:
+        return None
+    try:
+        if pos is None:
+            st = ctx.start(name)
+            x, y, h = st.x, st.y, st.h
+        else:
+            x, y, h = ctx.network.lane_to_world(pos.road, pos.lane, pos.s, pos.offset)
+    except (Txt2SceError, KeyError, IndexError, ValueError, AttributeError):
+        return None
+    center = bb.find("Center")
+    return box_corners(x, y, h, float(dims.get("length", "0")), float(dims.get("width", "0")),
+                       float(center.get("x", "0")) if center is not None else 0.0)
+
+
+def starts_clear(ctx: SeedContext, entity: str, obj: etree._Element | None, pos: LanePos | None = None) -> bool:
+    """Whether `entity`'s footprint (object `obj`) at its start, or at `pos` on a lane, keeps START_CLEARANCE m
+    from the footprint of every other entity's start in the seed, in any lane (True where it has no footprint)."""
+    box = _start_box(ctx, entity, obj, pos)
+    if box is None:
+        return True
+    for name in ctx.entities:
+        other = _start_box(ctx, name, ctx.root.find(f"Entities/ScenarioObject[@name='{name}']")) \
+            if name != entity else None
+        if other is not None and boxes_gap(box, other) < START_CLEARANCE:
+            return False
+    return True
+
+
+def clear_of_starts(private: etree._Element, entity: str, obj: etree._Element, ctx: SeedContext, rec: Recorder,
+                    cfg: dict[str, Any], *, step: float = 0.5) -> bool:
+    """After NCM gave a party another category's size at the seed's start, keep its footprint clear of every other
+    entity's start, in any lane (`starts_clear`): a motorcycle riding beside the AV becomes a car, van or truck
+    whose footprint reaches into the AV's (the same-lane queue is `keep_clear_of_queue`'s; `feasible_s` compares
+    reference points, not footprints, and only across `BESIDE` m). Where it overlaps, the start moves back along
+    its own lane (then, failing that, forward) by the smallest multiple of `step` up to `max_shift` m that clears
+    every footprint and stays `feasible_s`; a world start (the first vertex of the party's own path) is not moved.
+    Returns False where no clear start exists: the caller drops the version (an overlap at t = 0 is an invalid
+    scenario, not a test). Another layer's version (the AV's start shifted) is not seen here; the seed's starts
+    are."""
+    tele = private.find("PrivateAction/TeleportAction/Position/LanePosition")
+    if tele is None or ctx.map is None or not ctx.map.has_road(lane_pos(tele).road):
+        # a world start (a party starting on a path of its own, its trajectory's first vertex): moving it would
+        # leave the path's start where it was, so it stays, or the version goes where its footprint overlaps
+        return starts_clear(ctx, entity, obj)
+    start = lane_pos(tele)
+    if starts_clear(ctx, entity, obj, start):
+        return True
+    sign = ctx.map.direction(start.road, start.lane)
+    for k in range(1, int(float(cfg["max_shift"]) / step) + 1):
+        for way in (-sign, sign):                       # back along the lane's driving direction first
+            new_s = start.s + way * k * step
+            if feasible_s(ctx, entity, start, new_s, cfg["margin"], min_gap=0.0) and \
+                    starts_clear(ctx, entity, obj, LanePos(start.road, start.lane, new_s, start.offset)):
+                move_start(private, new_s, rec)
+                return True
+    return False
