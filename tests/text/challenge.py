@@ -65,6 +65,12 @@ change "to prepare for a right turn" named again as "the lane change", reversing
 into a red-light runner that struck its passenger side), scored before any fix: 7/11, 9/11, 11/12; after 10/11, 10/11,
 12/12; 474-477, chain collisions (a party told after the AV's contact that strikes another party), scored before any
 fix: 6/8, 5/8, 4/4; after 7/8, 6/8, 4/4 (474 still misses: "a pickup truck following the sedan" is taken for the sedan).
+Session 10: 600-648, parties in the lane to the AV's left or right told by their place on the road, by the point of
+contact on the AV ("struck on the right rear quarter panel by a vehicle ... in the lane to the AV's right"), left
+turns across the AV's path from the opposite approach, side words that are not the party's ("right of way", "its
+left turned"), lane changes told as drifting over the lane line or swinging out into the oncoming lane, scored before
+any fix: 35/38, 32/38, 33/37 (four narratives with contested labels dropped, six labels corrected to the files'
+conventions after scoring); after 36/38, 35/38, 34/37.
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

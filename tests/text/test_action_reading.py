@@ -436,3 +436,12 @@ def test_a_relative_clause_after_a_possessed_place_is_the_party_s() -> None:
             "traveling westbound in the lane to the Cruise AV's right, which was attempting to merge left.")
     assert _ego(text) == ("moving", "a")
     assert _party(text) == ("moving", "af")
+
+
+@pytest.mark.parametrize("move, code", [("drifted over the lane line", "g"),
+                                        ("swung out into the oncoming lane", "f")])
+def test_a_sideways_move_told_without_lane_change_words(move: str, code: str) -> None:
+    # Over the line between two lanes, or out into the opposing lane: a lane change, its side from where it went.
+    text = (f"A Zoox vehicle was traveling eastbound on Tropicana Avenue in the middle lane. A sedan traveling "
+            f"eastbound in the lane to the left of the Zoox vehicle {move} and made contact with the Zoox vehicle.")
+    assert _party(text)[1].endswith(code)

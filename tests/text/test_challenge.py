@@ -15,7 +15,7 @@ def test_challenge_set_holds() -> None:
 # The batches written beside the events work (challenge_positions.jsonl), held apart so both files can grow at once.
 def test_challenge_positions_file_holds() -> None:
     sc = score(POSITIONS)
-    assert sc.reports == 91 and sc.parties == 97
-    assert sc.position >= 92, sc.misses
-    assert sc.events >= 78, sc.misses
-    assert sc.ego >= 87, sc.misses
+    assert sc.reports == 128 and sc.parties == 135
+    assert sc.position >= 128, sc.misses
+    assert sc.events >= 113, sc.misses
+    assert sc.ego >= 121, sc.misses

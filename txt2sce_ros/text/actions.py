@@ -59,8 +59,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
           r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|"
-          r"manoeuvred|swerved|swerves|drove|drives)\s+"
-          r"(?:into\s+)?the\s+(?:oncoming|"
+          r"manoeuvred|swerved|swerves|drove|drives|swung|swings|swinging|pulled|pulling|went|going)\s+"
+          r"(?:out\s+|over\s+|wide\s+)?(?:into\s+)?the\s+(?:oncoming|"
           r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
@@ -104,7 +104,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "shifted over toward the center lane", "crossed over the lane line into EGO's lane", "moved toward our lane"
           r"\b(?:mov|shift|drift|veer|swerv|edg|nudg|inch|steer|swung|swing|cross|merg|wander)(?:ed|ing|es|e|s)?\s+"
           r"(?:over\s+)?(?:(?:across|over)\s+(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
-          r"(?:into|toward|towards)\s+(?:the\s+|EGO's\s+|our\s+|its\s+)(?:[\w-]+\s+){0,3}lane\b"),
+          r"(?:into|toward|towards)\s+(?:the\s+|EGO's\s+|our\s+|its\s+)(?:[\w-]+\s+){0,3}lane\b|"
+          # "drifted over the lane line", "veered across the dividing line": over the line between two lanes
+          r"\b(?:mov|shift|drift|veer|swerv|edg|cross|wander)(?:ed|ing|es|e|s)?\s+(?:over|across)\s+(?:the\s+)?"
+          r"(?:lane\s+(?:line|divider|markings?|boundary)|(?:dividing|white|dashed)\s+(?:lane\s+)?line)"),
     ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
