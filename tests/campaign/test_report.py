@@ -96,3 +96,18 @@ def test_report_says_what_was_tested_explains_codes_and_marks_a_partial_campaign
         if line.startswith("| ") and not line.startswith("| element"):
             element, meaning = [c.strip() for c in line.strip("|").split("|")][:2]
             assert meaning and (meaning != element or ":" not in element), line
+
+
+def test_campaign_summary_tells_the_runs_once_and_the_baseline_apart(capsys) -> None:
+    from txt2sce_ros.campaign.pipeline import CampaignSummary
+    from txt2sce_ros.campaign.runs import RunsSummary
+    from txt2sce_ros.cli.cmd_campaign import print_summary
+
+    summary = CampaignSummary(start_stage="scenarios", scenarios=5,
+                              runs=RunsSummary(total=5, skipped=1, ran=4, verdicts={"fail": 3, "pass": 1}),
+                              baseline_runs=RunsSummary(total=5, skipped=0, ran=5, verdicts={"pass": 5}),
+                              planner={"name": "standin", "version": "0.1.0", "settings": {}})
+    print_summary(summary)
+    out = capsys.readouterr().out
+    assert out.count("4 new (fail 3, pass 1)") == 1
+    assert "baseline:   5 new (pass 5), 0 already done" in out
