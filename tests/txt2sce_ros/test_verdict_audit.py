@@ -32,8 +32,8 @@ def test_a_failure_says_something_about_the_planner_unless_every_category_was_fo
                        ("pass", (), {}), ("error", (), {})])
     assert (who.failed, who.planner) == (3, 2)
     assert who.unavoidable == {"Collisions": 1, "Smooth": 1}
-    assert who.line() == ("3 failures: 1 unavoidable by scripted parties (categories labelled: Collisions 1, "
-                          "Smooth 1), 2 say something about the planner")
+    assert who.line() == ("3 failures: 1 unavoidable by scripted parties (every failing category labelled); "
+                          "labels by category: Collisions 1, Smooth 1; 2 say something about the planner")
 
 
 def test_the_report_shows_the_labels_beside_the_verdicts(tmp_path: Path) -> None:

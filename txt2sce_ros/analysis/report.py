@@ -107,7 +107,8 @@ def markdown(res: CampaignResults, an: Analysis, *, title: str = "txt2sce campai
                       "run's record (`unavoidable`)."]
     labelled = [r for r in res.runs if r["verdict"] == "fail" and _labels(r)]
     if labelled:
-        parts += ["", f"Failing runs with a category made unavoidable by the scripted parties ({len(labelled)}; "
+        parts += ["", f"Failing runs with at least one category made unavoidable by the scripted parties "
+                      f"({len(labelled)}; "
                       f"the first {min(len(labelled), MAX_LABELLED)}):", ""]
         parts.append(_md_table(["scenario", "verdict", "unavoidable", "why"], [
             (f"{r.get('tree') or ''} {r['scenario_id']}".strip(), "fail " + ", ".join(r["categories"]),
