@@ -36,9 +36,7 @@ class LaneTrack:
         s = np.linspace(self.s0, self.s1, n)
         s_eval = s.copy()
         s_eval[-1] = self.s1 - 1e-9        # stay inside this section at its end
-        x, y, h = net.lane_to_world_array(ref.road_id, ref.lane_id, s_eval, section=ref.section)
-        _, _, href = net.reference(ref.road_id, s_eval)
-        inner, outer = net.lane_bounds(ref.road_id, ref.lane_id, s_eval, ref.section)
+        x, y, h, href, inner, outer = net.lane_frame_array(ref.road_id, ref.lane_id, s_eval, section=ref.section)
         self.forward = net.lane_forward(ref.road_id, ref.lane_id, float(s_eval[0]))
         self.s = s
         self.x, self.y = np.asarray(x, float), np.asarray(y, float)

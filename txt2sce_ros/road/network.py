@@ -135,18 +135,25 @@ class RoadNetwork:
                             *, section: int | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Lane centre + offset (toward +t) at road s (array, all in one lane section); heading = driving
         direction of the lane, including the lane centre's slope relative to the reference line."""
+        return self.lane_frame_array(road_id, lane_id, s, offset, section=section)[:3]
+
+    def lane_frame_array(self, road_id: str | int, lane_id: int, s: np.ndarray, offset: np.ndarray | float = 0.0,
+                         *, section: int | None = None) -> tuple[np.ndarray, ...]:
+        """`lane_to_world_array`'s (x, y, heading), then what it computed on the way: the reference line's
+        heading at s and the lane's (inner t, outer t) there (the values `reference` and `lane_bounds` give), for
+        a caller that needs all of them (a lane track) without evaluating the road twice."""
         road = self.road(road_id)
         s_arr = np.atleast_1d(np.asarray(s, dtype=float))
-        inner, outer, t, x, y, h = self._lane_points(road, lane_id, s_arr, offset, section)
+        inner, outer, t, x, y, href = self._lane_points(road, lane_id, s_arr, offset, section)
         # Slope of the lane centre: dt/ds over (1 - k t) is the angle between lane centre and reference line.
         eps = 0.05
         i2, o2 = self.lane_bounds(road.id, lane_id, s_arr + eps, section)
         dt = (0.5 * (i2 + o2) - 0.5 * (inner + outer)) / eps
         k = road.plan_view.curvature(s_arr)
-        h = h + np.arctan2(dt, np.maximum(1.0 - k * t, 1e-3))
+        h = href + np.arctan2(dt, np.maximum(1.0 - k * t, 1e-3))
         if not self.lane_forward(road.id, lane_id, float(s_arr[0])):
             h = h + math.pi
-        return x, y, np.arctan2(np.sin(h), np.cos(h))
+        return x, y, np.arctan2(np.sin(h), np.cos(h)), href, inner, outer
 
     def _lane_points(self, road: Road, lane_id: int, s_arr: np.ndarray, offset: np.ndarray | float,
                      section: int | None) -> tuple[np.ndarray, ...]:
