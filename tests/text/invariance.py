@@ -110,6 +110,20 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("maneuver -> manoeuvre (British spelling)",
             _sub(r"\bmaneuver(ing|ed|s)?\b", lambda m: {None: "manoeuvre", "ing": "manoeuvring", "ed": "manoeuvred",
                                                        "s": "manoeuvres"}[m.group(1)])),
+    # Session 10: paraphrases of manoeuvres, speeds, times and parties that reports use interchangeably.
+    Rewrite("turned/turning left -> made/making a left turn",
+            _sub(r"\bturn(ed|ing) (left|right)\b", lambda m: ("made" if m.group(1) == "ed" else "making")
+                 + f" a {m.group(2)} turn")),
+    Rewrite("was traveling -> was driving", _sub(r"\bwas traveling\b", "was driving")),
+    Rewrite("traveling <dir>bound -> heading <dir>", _sub(r"\btraveling (north|south|east|west)bound\b",
+                                                          r"heading \1")),
+    Rewrite("MPH -> miles per hour", _sub(r"\b(\d+) ?(?:MPH|mph)\b", r"\1 miles per hour")),
+    Rewrite("12-hour clock -> 24-hour clock", _sub(r"\b(1[0-2]|[1-9]):([0-5]\d) ?([AP])\.?M\.?", lambda m: (
+        f"{(int(m.group(1)) % 12) + (12 if m.group(3) == 'P' else 0):02d}:{m.group(2)}")), environment=False),
+    Rewrite("a pedestrian -> a person on foot", _sub(r"\b([Aa]) pedestrian\b", r"\1 person on foot")),
+    Rewrite("passenger vehicle -> passenger car", _sub(r"\bpassenger vehicle\b", "passenger car")),
+    Rewrite("struck -> hit", _sub(r"\bstruck\b", "hit")),
+    Rewrite("was stopped -> was stationary", _sub(r"\bwas stopped\b", "was stationary")),
     Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
                                                          "reported and the police were not called to the scene."),
 )

@@ -445,3 +445,30 @@ def test_a_sideways_move_told_without_lane_change_words(move: str, code: str) ->
     text = (f"A Zoox vehicle was traveling eastbound on Tropicana Avenue in the middle lane. A sedan traveling "
             f"eastbound in the lane to the left of the Zoox vehicle {move} and made contact with the Zoox vehicle.")
     assert _party(text)[1].endswith(code)
+
+
+@pytest.mark.parametrize("move", ["switched lanes", "entered the Zoox vehicle's lane", "cut off the Zoox vehicle",
+                                  "crossed the lane line into the Zoox vehicle's lane",
+                                  "began to encroach into the Zoox vehicle's lane", "changed lanes"])
+def test_a_lane_change_however_told_keeps_the_party_in_its_lane(move: str) -> None:
+    # The move into the AV's lane from the right is to the left; "in the right lane changed lanes" keeps its lane
+    # cue (a verb "changed" after "right lane" is no "right lane change").
+    text = (f"A Zoox vehicle was traveling northbound on Koval Lane in the left lane. A sedan traveling northbound in "
+            f"the right lane {move} and made contact with the Zoox vehicle.")
+    p = extract(text, "t").npcs[0]
+    assert (p.position, p.lane, p.actions) == ("R5", "right", "af")
+
+
+def test_a_turn_told_as_making_one_is_under_way_when_the_av_slows_in_it() -> None:
+    text = ("A Zoox vehicle was traveling west on Main Street and making a right turn onto 1st Street. While "
+            "executing the turn, the Zoox vehicle braked. A motorcycle then struck the rear bumper of the Zoox "
+            "vehicle.")
+    assert _ego(text) == ("moving", "ec")
+
+
+def test_a_participle_after_a_short_phrase_of_means_is_the_party_s() -> None:
+    # "bumped a person on foot crossing the street": the person crossed, not the operator who bumped them.
+    text = ("The Nuro vehicle was stopped at a stop sign on Webster Street. When reversing, the operator bumped a "
+            "person on foot crossing the street behind the Nuro vehicle.")
+    assert _ego(text) == ("stopped", "k")
+    assert _party(text) == ("moving", "m")

@@ -87,11 +87,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b|"
           r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?right\b"
           r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))"),
-    ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
+    ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
+          r"\bswitch(?:ed|ing|es)?\s+lanes\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
-          r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing)\b|"
-          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|\b(?:moved|moving|came|coming|pulled|pulling)\s+"
+          r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing|es)?\b|"
+          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|\b(?:moved|moving|move|came|coming|come|pulled|pulling)\s+"
           r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
+          # "entered EGO's lane": the AV's own lane, entered from beside it
+          r"\benter(?:ed|ing|s)?\s+(?:into\s+)?(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
           # "changed into the AV's lane", "moved over into the middle lane in front of the AV", "partially entered
           # the leftmost through lane ahead of the AV": a move into the lane the AV is in, from the party's side.
           r"\bchang(?:ed|ing|es?)\s+(?:lanes?\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
@@ -103,7 +106,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:chang|mov|merg|shift)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:[\w-]+\s+){0,3}lane\b|"
           # "shifted over toward the center lane", "crossed over the lane line into EGO's lane", "moved toward our lane"
           r"\b(?:mov|shift|drift|veer|swerv|edg|nudg|inch|steer|swung|swing|cross|merg|wander)(?:ed|ing|es|e|s)?\s+"
-          r"(?:over\s+)?(?:(?:across|over)\s+(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
+          r"(?:over\s+)?(?:(?:(?:across|over)\s+)?(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
           r"(?:into|toward|towards)\s+(?:the\s+|EGO's\s+|our\s+|its\s+)(?:[\w-]+\s+){0,3}lane\b|"
           # "drifted over the lane line", "veered across the dividing line": over the line between two lanes
           r"\b(?:mov|shift|drift|veer|swerv|edg|cross|wander)(?:ed|ing|es|e|s)?\s+(?:over|across)\s+(?:the\s+)?"
@@ -194,6 +197,9 @@ _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+)
                        r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
+# A short phrase of means or place between a party's noun and its participle ("on foot", "on a bicycle", "in a
+# wheelchair").
+_PP_BEFORE_PARTICIPLE = compile_gated(r"\s+(?:on|in|with)\s+(?:(?:a|an|the|its|his|her|their)\s+)?[\w-]+\s+", re.I)
 # After a possessor inside a party's phrase of place ("to EGO's right, which was ..."): the place noun, then the
 # relative pronoun.
 _POSSESSED_RELATIVE = compile_gated(r"\s*[\w-]+(?:\s+[\w-]+)?\s*,\s*(?:that|which|who)\s+"
@@ -335,6 +341,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
             # the centerline": a participle right after a noun tells that noun's move.
             rel = None
+        if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
+                _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
+            rel = left[-1]  # "a person on foot crossing the street": the participle tells of the noun, not the subject
         if code == "h" and s[b:e].lower() == "stopped" and left and left[-1].kind == "party" and \
                 left[-1].entity >= 0 and not s[left[-1].end:b].strip():
             # "navigated around a double-parked vehicle stopped in the right lane": a past participle right after

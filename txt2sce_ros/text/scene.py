@@ -169,6 +169,10 @@ def lane_count(t: str) -> int | None:
     return n or None
 
 
+# Words for standing still (a red the AV stood at is its signal when its actions begin).
+_STANDING = r"(?:stopped|waiting|stationary|idle|idling|halted|queued|at\s+(?:a\s+)?(?:standstill|rest))"
+
+
 def signal_state(t: str, *, layout: str, control: str) -> str:
     """The AV's light when its actions begin."""
     if not layout.startswith("junction") and layout != "roundabout":
@@ -177,8 +181,8 @@ def signal_state(t: str, *, layout: str, control: str) -> str:
         return "none"
     if control != "signal":
         return "unknown"
-    if fre.search(r"\bEGO(?:D)?\b[^.]{0,60}\b(?:stopped|waiting|stop)\b[^.]{0,30}\bred\b|\bred\s+light\b[^.]{0,40}"
-                 r"\bEGO\b[^.]{0,20}\b(?:stopped|waiting)|\bstopped\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
+    if fre.search(rf"\bEGO(?:D)?\b[^.]{{0,60}}\b(?:{_STANDING}|stop)\b[^.]{{0,30}}\bred\b|\bred\s+light\b[^.]{{0,40}}"
+                 rf"\bEGO\b[^.]{{0,20}}\b{_STANDING}\b|\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
         return "red"
     if fre.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
         return "green"

@@ -187,7 +187,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
                 # "was traveling north ... causing the AV to steer to the right": a run along its lane, then the
                 # lane change; one told in progress ("was changing lanes when") opens the string.
                 prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
-            turning = [a for a in pre[:-1] if a.code in ("d", "e") and fre.match(r"turning\b", a.text, re.I)]
+            turning = [a for a in pre[:-1] if a.code in ("d", "e") and _turning(d, a)]
             if last.code == "c" and turning and all(a.code in ("c", "h", "S") or a is turning[-1]
                                                     for a in pre[pre.index(turning[-1]):]):
                 # "was traveling west and turning right onto X. While executing the turn, the AV braked": it was
@@ -206,6 +206,13 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         else:
             prefix = [Act(last.sent, last.pos, "a", -1, "")]
     return sequence(prefix + post, stopped=stopped, ego=True, side=None)
+
+
+def _turning(d: Doc, a: Act) -> bool:
+    """A turn told as under way: "turning right", "making a right turn", "executing a left turn"."""
+    return bool(fre.match(r"turning\b", a.text, re.I) or fre.search(
+        r"\b(?:making|executing|completing|performing)\s+(?:a|an|the|its)\s+(?:\w+\s+)?$",
+        d.sents[a.sent][max(0, a.pos - 40):a.pos], re.I))
 
 
 _MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", compile_gated(r"\boncoming\b|\bapproaching\b|"

@@ -336,7 +336,7 @@ def context(d: Doc, e: Entity) -> str:
 TURN_WORDS = compile_gated(r"\b(?:left|right)[- ](?:hand\s+)?turn(?!ed)|\bturn(?:ed|ing|s)?\s+(?:left|right)|"
                          r"\bchang(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+)?(?:left|right)|"
                          r"\b(?:left|right)\s+lane"
-                         r"\s+change|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
+                         r"\s+changes?\b|\blane\s+change\s+to\s+the\s+(?:left|right)|\bright\s+of\s+way|\bleft\s+the\s+"
                          r"scene", re.I)
 
 
