@@ -24,7 +24,7 @@ SAMPLE_DS = 0.25     # m; chord error on a 50 m radius is 0.16 mm
 
 class LaneTrack:
     __slots__ = ("ref", "forward", "s0", "s1", "s", "x", "y", "h", "nx", "ny", "tc", "length", "_plan", "_sl",
-                 "_hint", "__weakref__")
+                 "_hint", "_k", "_k_lo", "_k_hi", "__weakref__")
 
     def __init__(self, net: RoadNetwork, ref: LaneRef) -> None:
         road = net.road(ref.road_id)
@@ -45,6 +45,7 @@ class LaneTrack:
         self.tc = 0.5 * (inner + outer)
         self.length = float(np.sum(np.hypot(np.diff(self.x), np.diff(self.y))))     # of the lane centre
         self._plan = road.plan_view
+        self._k, self._k_lo, self._k_hi = _constant_curvature(road.plan_view, self.s0, self.s1)
         # Scalar lookups run on Python lists: indexing numpy arrays one float at a time is several times slower.
         self._sl = self.s.tolist()
         self.x, self.y, self.h = self.x.tolist(), self.y.tolist(), self.h.tolist()
@@ -87,7 +88,7 @@ class LaneTrack:
         """Road s per metre travelled at `offset` (toward +t) from the lane centre, at road s: 1/(1 - k·t) with
         the reference line's curvature k there. Evaluated once where a step starts, as esmini does, so a step
         that starts on a straight keeps its length in road s even if it ends in the curve that follows."""
-        k = self._plan.curvature_at(s)
+        k = self._k if self._k_lo <= s < self._k_hi else self._plan.curvature_at(s)
         if k == 0.0:
             return 1.0
         kt = k * (self.center_t(s) + offset)
@@ -108,6 +109,34 @@ class LaneTrack:
 
     def exit_s(self) -> float:
         return self.s1 if self.forward else self.s0
+
+
+def _constant_curvature(plan: Any, s0: float, s1: float) -> tuple[float, float, float]:
+    """(k, lo, hi): the reference line's curvature is k at every road s in [lo, hi), which covers [s0, s1] when
+    every geometry there is a line or an arc of one curvature (most lanes), so the per-step `ds_per_metre` needs no
+    geometry look-up; else an empty range. [lo, hi) is exactly the set of s for which `PlanView.geometry_at`
+    picks one of those geometries (its index: bisect over the geometry starts, clamped to the ends), and k is
+    the value their `curvature_local` returns, so the answer is the same float either way."""
+    from txt2sce_ros.road.geometry import Arc, Line
+
+    starts, geos = plan._start_list, plan.geometries
+    last = len(geos) - 1
+
+    def index(s: float) -> int:
+        return min(max(bisect.bisect_right(starts, s) - 1, 0), last)
+
+    i0, i1 = index(s0), index(s1)
+    values = set()
+    for g in geos[i0:i1 + 1]:
+        if type(g) in (Line, Arc):
+            values.add(g.curvature_local(0.0))
+        else:
+            return 0.0, math.inf, -math.inf
+    if len(values) != 1:
+        return 0.0, math.inf, -math.inf
+    lo = -math.inf if i0 == 0 else starts[i0]
+    hi = math.inf if i1 == last else starts[i1 + 1]
+    return values.pop(), lo, hi
 
 
 class TrackCache:
