@@ -124,3 +124,23 @@ def test_contact_on_the_av_s_rear_half_puts_a_next_lane_party_behind(part: str, 
             f"eastbound in the right lane {move} and made contact with the Zoox vehicle's {part}.")
     p = extract(text, "t").npcs[0]
     assert (p.position, p.lane) == where
+
+
+@pytest.mark.parametrize("party, where", [
+    ("A sedan going the other way", ("R7", "left")),
+    ("A sedan traveling toward the Zoox vehicle", ("R7", "left")),
+    ("A sedan heading toward the Zoox vehicle", ("R7", "left")),
+    ("A pedestrian heading toward the Zoox vehicle", ("R5", "right")),  # on foot: from the curb, not oncoming
+])
+def test_a_party_running_at_the_av_head_on_is_oncoming(party: str, where: tuple[str, str]) -> None:
+    text = (f"A Zoox vehicle was traveling northbound on Koval Lane. {party} crossed the center line and struck the "
+            f"front of the Zoox vehicle.")
+    p = extract(text, "t").npcs[0]
+    assert (p.position, p.lane) == where
+
+
+def test_a_bare_compass_origin_at_a_junction_places_a_crossing_party() -> None:
+    text = ("A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road on "
+            "a green light. A sedan traveling on Flamingo Road from the west ran the red light and struck the driver "
+            "side of the Zoox vehicle.")
+    assert extract(text, "t").npcs[0].position == "R1"

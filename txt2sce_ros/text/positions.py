@@ -58,6 +58,10 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
+    if not oncoming and e.category in ("car", "van", "truck", "bus", "motorcycle"):
+        # A vehicle "heading/coming/moving toward EGO" runs at it head-on; not one that "began moving toward EGO
+        # from the bus lane" (a sideways move), nor anyone on foot (who may walk at the AV from any side).
+        oncoming = _TOWARD_EGO.search(near)
     if ego_turning and (ex := exit_street(d)) and _party_street(ctx) == ex and \
             not fre.search(r"\b(?:turn\w*|onto)\b", ctx[:60], re.I) and \
             not fre.search(r"\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b", ctx, re.I):
@@ -83,7 +87,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
-    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I)
+    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I) or (
+        # at a junction a bare origin does ("traveling on Flamingo Road from the west")
+        junction and fre.search(r"\bfrom\s+the\s+(north|south|east|west)\b(?!\s*-?\s*bound)", ctx, re.I))
     if compass and ego_heading is not None:
         origin = {"north": 0, "east": 90, "south": 180, "west": 270}[compass.group(1).lower()]
         rel_origin = (origin - ego_heading) % 360  # 90: on the AV's right, 270: on its left
@@ -173,6 +179,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
+_TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
+                         r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b"
+                         r"(?![^|.]{0,25}\bfrom\s+(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}lane\b)", re.I)
 _CLAUSE_END = re.compile(r"[;]|\b(?:when|while|as|but|after|before|because|until|then)\b|"
                          r",?\s+(?:and\s+)?(?:EGO|(?:the|a|an)\s+(?:other\s+)?(?!opposite\b|oncoming\b)\w+)\s+"
                          r"(?:was|were|had|is|yield\w*|stopp\w*|wait\w*|brak\w*)\b", re.I)

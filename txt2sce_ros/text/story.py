@@ -23,7 +23,12 @@ from .scene import PRIOR_TURN
 # approach ("from the opposite side of the intersection", "facing EGO").
 ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                          r"\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
-                         r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b", re.I)
+                         r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b|"
+                         # "going the other way", "in the other direction", "traveling toward EGO" (a vehicle's run
+                         # at it; "moving toward" or "heading toward" is also said of a sideways move or one on foot)
+                         r"\b(?:the\s+)?other\s+(?:way|direction)\b|"
+                         r"\b(?:travel(?:l)?(?:ed|ing|s)?|driv(?:ing|es)|drove)\s+(?:directly\s+|straight\s+)?"
+                         r"towards?\s+EGO\b", re.I)
 
 T = TypeVar("T")
 
