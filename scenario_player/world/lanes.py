@@ -69,6 +69,11 @@ class LaneTrack:
 
     def pose(self, s: float, offset: float = 0.0) -> tuple[float, float, float]:
         """World (x, y, heading of the lane's driving direction) at road s, `offset` toward +t."""
+        return self.pose_center(s, offset)[:3]
+
+    def pose_center(self, s: float, offset: float = 0.0) -> tuple[float, float, float, float]:
+        """`pose(s, offset)` (world x, y, heading of the lane's driving direction at road s, `offset` toward +t)
+        and `center_t(s)`, from one segment look-up: a storyboard entity's step needs both at its new s."""
         i, f = self._idx(self._sl, s)
         x = self.x[i] + f * (self.x[i + 1] - self.x[i])
         y = self.y[i] + f * (self.y[i + 1] - self.y[i])
@@ -78,7 +83,7 @@ class LaneTrack:
             ny = self.ny[i] + f * (self.ny[i + 1] - self.ny[i])
             x += offset * nx
             y += offset * ny
-        return float(x), float(y), float(h)
+        return float(x), float(y), float(h), float(self.tc[i] + f * (self.tc[i + 1] - self.tc[i]))
 
     def center_t(self, s: float) -> float:
         i, f = self._idx(self._sl, s)

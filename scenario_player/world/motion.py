@@ -113,9 +113,11 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
             end_s = tr.exit_s() if not ent.reverse else tr.entry_s()
             nxt = world.tracks.predecessors(tr.ref) if ent.reverse else world.tracks.successors(tr.ref)
             ok = not (abs(ent.s - end_s) < 1e-6 and not nxt)
-        x, y, h = ent.track.pose(ent.s, ent.offset)
-        ent._sync_road()
-        road = ent._road                # just synced from the track: read it without the stale check
+        tr = ent.track
+        x, y, h, tc = tr.pose_center(ent.s, ent.offset)
+        # The entity's road coordinates from its track (as `Entity._sync_road`, with the centre just computed).
+        ent._road = road = (tr.ref.road_id, tr.ref.lane_id, ent.s, tc + ent.offset)
+        ent.road_stale = False
         if ent.heading_override is not None and ent.offset == ent.offset:
             h = ent.heading_override
         else:
