@@ -472,3 +472,19 @@ def test_a_participle_after_a_short_phrase_of_means_is_the_party_s() -> None:
             "person on foot crossing the street behind the Nuro vehicle.")
     assert _ego(text) == ("stopped", "k")
     assert _party(text) == ("moving", "m")
+
+
+@pytest.mark.parametrize("stop", ["halted", "was brought to a stop", "made a sudden stop", "came to rest",
+                                  "pulled to a stop"])
+def test_a_stop_however_told(stop: str) -> None:
+    text = (f"A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {stop} for a pedestrian and a "
+            f"sedan traveling behind it struck its rear bumper.")
+    assert _ego(text) == ("moving", "ah")
+
+
+@pytest.mark.parametrize("start", ["pulled away from the stop line", "resumed travel"])
+def test_a_start_however_told(start: str) -> None:
+    # "pulled away from the stop line" moves off from a stop, it leaves no parking space.
+    text = (f"A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle "
+            f"{start} and a sedan traveling behind it struck its rear bumper.")
+    assert _ego(text) == ("stopped", "i")

@@ -213,3 +213,11 @@ def test_the_avs_side_is_the_part_named_nearest_it() -> None:
     from txt2sce_ros.text.relations import _ego_body_side
     m = _ego_body_side("A delivery van misjudged the space and its right mirror struck the left mirror of EGO.")
     assert m is not None and m.group(0) == "left mirror"
+
+
+@pytest.mark.parametrize("noun, category", [("convertible", "car"), ("limousine", "car"), ("cement mixer", "truck"),
+                                            ("coach", "bus"), ("dirt bike", "motorcycle"), ("runner", "pedestrian")])
+def test_more_party_nouns_have_their_category(noun: str, category: str) -> None:
+    sk = extract(f"A Waymo AV was stopped at a red light on Mission Street. A {noun} traveling behind the Waymo AV "
+                 f"struck its rear bumper.", "t")
+    assert [p.category for p in sk.npcs] == [category]

@@ -25,7 +25,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("O", r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
-          r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|stop\b)|"
+          r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|"
+          r"stop\b(?!\s+(?:line|bar|sign|light)))|"
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)|"
 
           r"\b(?:proceeded|pulled|pulling|moved|merged)\s+(?:back\s+)?(?:out\s+)?into\s+the\s+(?:driving|travel|traffic)\s+lane\b|"
@@ -48,13 +49,16 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
-          r"\bstops\b|\byield(?:ed|ing|s)?\b"),
+          r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
+          r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
+          r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b"),
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
           r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
-          r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b"),
+          r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
+          r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
@@ -146,8 +150,8 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
-    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield"),
-    "i": ("began", "begin", "start", "forward", "proceed", "off"),
+    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield", "rest"),
+    "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane"), "P": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
