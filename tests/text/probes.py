@@ -1,0 +1,133 @@
+"""Wording probes: one slot at a time, many wordings of the same fact in one fixed sentence, the reading that must
+come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
+narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below before
+changing any rule; on that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10
+oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts and 49 of 56 party nouns came out right; now
+all of them (`tests/text/test_probes.py` holds that).
+
+    python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from txt2sce_ros.sketch import Sketch
+from txt2sce_ros.text.extractor import extract
+
+
+@dataclass(frozen=True)
+class Probe:
+    name: str
+    template: str                       # "{w}": the wording; "{W}": the wording with a capital (sentence start)
+    wordings: tuple[str, ...]
+    want: Callable[[Sketch], object]    # the reading compared
+    expected: object | Callable[[str], object]
+
+
+def _party(sk: Sketch) -> object:
+    return [(p.position, p.lane, p.actions) for p in sk.npcs][:1]
+
+
+def _position(sk: Sketch) -> object:
+    return [(p.position, p.lane) for p in sk.npcs][:1]
+
+
+_CATEGORIES = {
+    "car": ("sedan", "hatchback", "coupe", "SUV", "pickup truck", "taxi", "cab", "Tesla", "police car", "convertible",
+            "limousine", "minicab", "jeep", "crossover", "passenger car"),
+    "van": ("minivan", "delivery van", "cargo van", "Sprinter van", "panel van"),
+    "truck": ("box truck", "tractor-trailer", "semi-truck", "dump truck", "garbage truck", "tow truck", "fire truck",
+              "cement mixer", "big rig", "18-wheeler", "delivery truck"),
+    "bus": ("city bus", "Muni bus", "school bus", "shuttle bus", "coach"),
+    "motorcycle": ("motorcyclist", "moped", "motor scooter", "dirt bike", "motorbike"),
+    "bicycle": ("cyclist", "bicyclist", "bike rider", "e-bike rider"),
+    "scooter": ("scooter rider", "e-scooter rider", "skateboarder", "scooterist"),
+    "pedestrian": ("pedestrian", "jogger", "man", "woman", "child", "person", "runner"),
+}
+
+PROBES: tuple[Probe, ...] = (
+    Probe("lane change into the AV's lane from the right",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the left lane. A sedan traveling northbound in the "
+          "right lane {w} and made contact with the Zoox vehicle.",
+          ("changed lanes into the Zoox vehicle's lane", "made a lane change into the Zoox vehicle's lane",
+           "began to change lanes to the left", "merged into the Zoox vehicle's lane", "moved over into the Zoox "
+           "vehicle's lane", "entered the Zoox vehicle's lane", "encroached into the Zoox vehicle's lane",
+           "crossed into the Zoox vehicle's lane", "swerved into the Zoox vehicle's lane", "veered into the Zoox "
+           "vehicle's lane", "drifted into the Zoox vehicle's lane", "cut into the Zoox vehicle's lane",
+           "cut in front of the Zoox vehicle", "cut off the Zoox vehicle", "merged left", "moved left",
+           "initiated a left lane change", "attempted to merge into the Zoox vehicle's lane",
+           "crossed the lane line into the Zoox vehicle's lane", "changed lanes in front of the Zoox vehicle",
+           "made an abrupt lane change", "switched lanes", "changed lanes", "began to encroach into the Zoox "
+           "vehicle's lane", "crossed over into the Zoox vehicle's lane", "drifted over the lane line"),
+          _party, [("R5", "right", "af")]),
+    Probe("a party behind the standing AV",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. A sedan {w} struck the rear of the Zoox vehicle.",
+          ("traveling behind the Zoox vehicle", "following the Zoox vehicle", "trailing the Zoox vehicle",
+           "directly behind the Zoox vehicle", "that had been following the Zoox vehicle", "approaching from behind",
+           "approaching from the rear", "coming up behind the Zoox vehicle", "to the rear of the Zoox vehicle",
+           "close behind the Zoox vehicle", "following too closely", "tailgating the Zoox vehicle",
+           "which was following the Zoox vehicle"),
+          _party, [("R6", "same", "a")]),
+    Probe("an oncoming party",
+          "A Zoox vehicle was traveling northbound on Koval Lane. {W} crossed the center line and struck the front "
+          "of the Zoox vehicle.",
+          ("an oncoming sedan", "a sedan traveling in the opposite direction", "a sedan coming from the opposite "
+           "direction", "a southbound sedan", "a sedan traveling southbound on Koval Lane", "a sedan heading south on "
+           "Koval Lane", "a sedan going the other way", "a sedan in the opposing lane", "a sedan traveling toward the "
+           "Zoox vehicle", "a sedan heading toward the Zoox vehicle"),
+          _position, [("R7", "left")]),
+    Probe("a party crossing from the AV's left",
+          "A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road on a "
+          "green light. {W} ran the red light and struck the driver side of the Zoox vehicle.",
+          ("a sedan traveling eastbound on Flamingo Road", "a sedan heading east on Flamingo Road", "an eastbound "
+           "sedan on Flamingo Road", "a sedan approaching from the left on Flamingo Road", "a sedan coming from the "
+           "Zoox vehicle's left", "a sedan on the cross street approaching from the left", "a sedan traveling on "
+           "Flamingo Road from the west", "a sedan entering from the left"),
+          _position, [("R1", None)]),
+    Probe("the AV stopping",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} for a pedestrian and a sedan "
+          "traveling behind it struck its rear bumper.",
+          ("came to a stop", "came to a complete stop", "stopped", "braked to a stop", "slowed to a stop", "halted",
+           "came to a halt", "was brought to a stop", "stopped abruptly", "made a sudden stop", "came to rest",
+           "pulled to a stop"),
+          lambda sk: (sk.ego.start, sk.ego.actions), ("moving", "ah")),
+    Probe("the AV moving off",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
+          "and a sedan traveling behind it struck its rear bumper.",
+          ("began to move forward", "started moving", "proceeded forward", "moved forward", "pulled away from the "
+           "stop line", "started to proceed", "resumed travel", "moved off", "inched forward", "crept forward",
+           "began to proceed through the intersection", "proceeded into the intersection"),
+          lambda sk: (sk.ego.start, sk.ego.actions), ("stopped", "i")),
+    Probe("a party's category",
+          "A Waymo AV was stopped at a red light on Mission Street. {W} traveling behind the Waymo AV struck its rear "
+          "bumper.",
+          tuple(("an " if n[0].lower() in "aeiou" else "a ") + n for ns in _CATEGORIES.values() for n in ns),
+          lambda sk: [p.category for p in sk.npcs],
+          lambda w: [next(c for c, ns in _CATEGORIES.items() if w.split(" ", 1)[1] in ns)]),
+)
+
+
+def run(probe: Probe) -> list[str]:
+    """The wordings of `probe` not read as wanted, each with what was read."""
+    misses = []
+    for w in probe.wordings:
+        sk = extract(probe.template.format(w=w, W=w[:1].upper() + w[1:]), "probe")
+        want = probe.expected(w) if callable(probe.expected) else probe.expected
+        got = probe.want(sk)
+        if got != want:
+            misses.append(f"{w!r}: read {got}, want {want}")
+    return misses
+
+
+def main() -> None:
+    for probe in PROBES:
+        misses = run(probe)
+        print(f"{probe.name:<48} {len(probe.wordings) - len(misses):>3} / {len(probe.wordings)}")
+        for m in misses:
+            print("    miss:", m)
+
+
+if __name__ == "__main__":
+    main()
