@@ -2,8 +2,8 @@
 come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below before
 changing any rule; on that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10
-oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts and 49 of 56 party nouns came out right; now
-all of them (`tests/text/test_probes.py` holds that).
+oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts, 19 of 23 contact verbs and 49 of 56 party
+nouns came out right; now all of them (`tests/text/test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -100,6 +100,15 @@ PROBES: tuple[Probe, ...] = (
            "stop line", "started to proceed", "resumed travel", "moved off", "inched forward", "crept forward",
            "began to proceed through the intersection", "proceeded into the intersection"),
           lambda sk: (sk.ego.start, sk.ego.actions), ("stopped", "i")),
+    Probe("contact told by its verb",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. A sedan traveling in the lane to its left moved "
+          "right and {w} the left side of the Zoox vehicle.",
+          ("made contact with", "struck", "hit", "collided with", "sideswiped", "bumped", "clipped", "scraped",
+           "brushed", "grazed", "tapped", "impacted", "ran into", "crashed into", "made impact with", "came into "
+           "contact with", "contacted", "smashed into", "slammed into", "rubbed against", "knocked into",
+           "side-swiped", "touched"),
+          lambda sk: (_party(sk), sk.collision.with_, sk.collision.type), ([("R5", "left", "ag")], "npc1",
+                                                                           "side_swipe")),
     Probe("a party's category",
           "A Waymo AV was stopped at a red light on Mission Street. {W} traveling behind the Waymo AV struck its rear "
           "bumper.",

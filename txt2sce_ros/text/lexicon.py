@@ -148,7 +148,8 @@ CONTACT = compile_gated(
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|touched|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
-    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|cycled|walked)\s+into|"
+    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into|"
+    r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
