@@ -2,8 +2,8 @@
 come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below before
 changing any rule; on that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10
-oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts, 19 of 23 contact verbs and 49 of 56 party
-nouns came out right; now all of them (`tests/text/test_probes.py` holds that).
+oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV,
+19 of 23 contact verbs and 49 of 56 party nouns came out right; now all of them (`tests/text/test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -100,6 +100,21 @@ PROBES: tuple[Probe, ...] = (
            "stop line", "started to proceed", "resumed travel", "moved off", "inched forward", "crept forward",
            "began to proceed through the intersection", "proceeded into the intersection"),
           lambda sk: (sk.ego.start, sk.ego.actions), ("stopped", "i")),
+    Probe("the AV turning at a junction",
+          "A Zoox vehicle was traveling northbound on Koval Lane. At the intersection with Flamingo Road, the Zoox "
+          "vehicle {w} and a sedan traveling behind it struck its rear bumper.",
+          ("turned left", "made a left turn", "executed a left turn", "completed a left turn", "made an unprotected "
+           "left turn", "took a left", "hung a left", "performed a left turn", "turned right", "made a right turn",
+           "took a right", "made a right-hand turn", "made a U-turn", "made a three-point turn"),
+          lambda sk: sk.ego.actions, lambda w: "a" + ("j" if "-turn" in w.lower() or "point" in w else
+                                                     "d" if "left" in w else "e")),
+    Probe("the AV named in the reports' ways",
+          "{W} was stopped at a red light on Koval Lane. A sedan traveling behind {w} struck its rear bumper.",
+          ("the Waymo AV", "the AV", "our AV", "the autonomous vehicle", "the self-driving car", "the robotaxi",
+           "the driverless vehicle", "the test vehicle", "the ADS vehicle", "the subject vehicle", "the Zoox "
+           "robotaxi", "the Cruise vehicle", "our test vehicle", "the automated vehicle", "the ego vehicle"),
+          lambda sk: (sk.ego.start, sk.ego.actions, [(p.category, p.position, p.lane) for p in sk.npcs]),
+          ("stopped", "", [("car", "R6", "same")])),
     Probe("contact told by its verb",
           "A Zoox vehicle was stopped at a red light on Koval Lane. A sedan traveling in the lane to its left moved "
           "right and {w} the left side of the Zoox vehicle.",

@@ -115,9 +115,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "drifted over the lane line", "veered across the dividing line": over the line between two lanes
           r"\b(?:mov|shift|drift|veer|swerv|edg|cross|wander)(?:ed|ing|es|e|s)?\s+(?:over|across)\s+(?:the\s+)?"
           r"(?:lane\s+(?:line|divider|markings?|boundary)|(?:dividing|white|dashed)\s+(?:lane\s+)?line)"),
-    ("d", r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
+    ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
+          r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
-    ("e", r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
+    ("e", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+right\b(?!\s+lane)|"
+          r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
