@@ -2,8 +2,9 @@
 come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below before
 changing any rule; on that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10
-oncoming and 7 of 8 crossing parties, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV,
-19 of 23 contact verbs and 49 of 56 party nouns came out right; now all of them (`tests/text/test_probes.py` holds that).
+oncoming and 7 of 8 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 7 of 12
+stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23 contact verbs and 49 of 56 party nouns
+came out right; now all of them (`tests/text/test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -86,6 +87,22 @@ PROBES: tuple[Probe, ...] = (
            "Zoox vehicle's left", "a sedan on the cross street approaching from the left", "a sedan traveling on "
            "Flamingo Road from the west", "a sedan entering from the left"),
           _position, [("R1", None)]),
+    Probe("a pedestrian on the leg the AV turns onto",
+          "A Zoox vehicle was traveling northbound on Koval Lane and turning right onto Flamingo Road at the "
+          "intersection. The Zoox vehicle made contact with {w}.",
+          ("a pedestrian crossing in the crosswalk", "a pedestrian who was walking in the crosswalk", "a pedestrian "
+           "crossing Flamingo Road in the crosswalk", "a pedestrian in the crosswalk", "a pedestrian who stepped "
+           "into the crosswalk", "a pedestrian walking across Flamingo Road", "a pedestrian crossing Flamingo Road",
+           "a jogger crossing in the marked crosswalk"),
+          lambda sk: [(p.category, p.position, p.lane, p.actions) for p in sk.npcs], [("pedestrian", "R4", None, "m")]),
+    Probe("a pedestrian crossing mid-block from the right",
+          "A Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue. The Zoox "
+          "vehicle braked but made contact with {w}.",
+          ("a pedestrian who darted into the street from the right", "a pedestrian who ran into the road from "
+           "between parked cars on the right", "a pedestrian jaywalking from the right side of the road",
+           "a pedestrian crossing mid-block from the right", "a pedestrian who walked out from the right curb"),
+          lambda sk: [(p.category, p.position, p.lane, p.actions) for p in sk.npcs],
+          [("pedestrian", "R5", "right", "m")]),
     Probe("the AV stopping",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} for a pedestrian and a sedan "
           "traveling behind it struck its rear bumper.",

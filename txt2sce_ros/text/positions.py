@@ -102,6 +102,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                           ctx, re.I)
     if junction and from_side and e.category != "pedestrian":  # one on foot crosses the AV's own approach
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
+    if not junction and from_side and e.category in ("pedestrian", "bicycle", "scooter"):
+        return "R5", from_side.group(1).lower(), True  # mid-block, in from the curb on that side (sketch.md)
     if junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
         return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
@@ -239,9 +241,11 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
     AV is then on the street it turned onto)."""
     if fre.search(r"\bafter\s+(?:\w+\s+){0,2}$", d.text[max(0, offset - 30):offset], re.I):
         return False  # "After EGO made a right turn from Pleasant Street, ...": done before
-    if fre.match(r"EGO\s+(?:was|is)\s+(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|turning|executing|"
-                 r"completing)\b", d.text[offset:offset + 60], re.I):
-        return True  # "EGO was making a right turn from Stockton Street": the turn is going on as the party comes
+    if fre.match(r"EGO\s+(?:was|is)\s+(?:\w+ing\b[^.;]{0,80}?\band\s+)?(?:in\s+the\s+(?:process|middle)\s+of\s+)?"
+                 r"(?:making|turning|executing|completing)\b", d.text[offset:offset + 160], re.I):
+        # "EGO was making a right turn from Stockton Street", "EGO was traveling north and turning right onto X":
+        # the turn is going on as the party comes
+        return True
     sent = max(0, bisect.bisect_right(d.starts, offset) - 1) if d.starts else 0
     first = d.once("first_party_sentence", lambda: min(
         (m.sent for e in d.ents for m in e.mentions[:1] if m.sent not in d.summary), default=None))

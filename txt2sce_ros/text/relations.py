@@ -326,7 +326,8 @@ def _crosses_exit_street(d: Doc, clause: str) -> re.Match[str] | None:
     ex = exit_street(d)
     if m or not ex:
         return m
-    return fre.search(rf"\bcross\w*\s+(?:the\s+)?{re.escape(ex)}\s+\w+", clause, re.I)
+    return fre.search(rf"\b(?:cross\w*|(?:walk|ran|run|jogg|rid|rode|mov)\w*\s+across)\s+(?:the\s+)?"
+                      rf"{re.escape(ex)}\s+\w+", clause, re.I)
 
 
 def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
