@@ -1,10 +1,10 @@
 """Wording probes: one slot at a time, many wordings of the same fact in one fixed sentence, the reading that must
 come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
-narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below before
-changing any rule; on that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10
-oncoming and 7 of 8 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 7 of 12
-stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23 contact verbs and 49 of 56 party nouns
-came out right; now all of them (`tests/text/test_probes.py` holds that).
+narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below; on
+that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10 oncoming and 7 of 8
+crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling
+out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23
+contact verbs and 49 of 56 party nouns came out right (176 of 216); now all of them (`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -103,6 +103,21 @@ PROBES: tuple[Probe, ...] = (
            "a pedestrian crossing mid-block from the right", "a pedestrian who walked out from the right curb"),
           lambda sk: [(p.category, p.position, p.lane, p.actions) for p in sk.npcs],
           [("pedestrian", "R5", "right", "m")]),
+    Probe("a parked party pulling out into the AV's path",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. A sedan that had been parked on "
+          "the right side of the road {w} into the path of the Zoox vehicle and the Zoox vehicle struck its driver "
+          "side.",
+          ("pulled out of a parking space", "pulled away from the curb", "merged into traffic from the curb",
+           "pulled out from a parked position", "left its parking spot", "pulled out of a parallel parking spot",
+           "exited a parking space", "pulled out from the curb"),
+          lambda sk: [(p.position, p.lane, p.start, p.actions) for p in sk.npcs], [("R5", "right", "stopped", "if")]),
+    Probe("the weather told",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. A sedan traveling behind it struck its rear "
+          "bumper. {W}",
+          ("it was raining at the time.", "conditions were rainy.", "weather conditions were clear.", "there was "
+           "heavy fog.", "it was snowing.", "the weather was clear."),
+          lambda sk: sk.environment.weather,
+          lambda w: "rain" if "rain" in w else "fog" if "fog" in w else "snow" if "snow" in w else "clear"),
     Probe("the AV stopping",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} for a pedestrian and a sedan "
           "traveling behind it struck its rear bumper.",

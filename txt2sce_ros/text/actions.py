@@ -22,7 +22,9 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
-    ("O", r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
+    ("O", r"\b(?:left|leaving|leaves|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
+          r"(?:curbside\s+|parallel\s+)?(?:parking\s+(?:spot|space|stall|position)|parked\s+position|curb)\b|"
+          r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|"
@@ -155,7 +157,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield", "rest"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic", "lane"), "P": ("pull",),
+    "O": ("pull", "traffic", "lane", "left", "leav", "exit", "depart"), "P": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),

@@ -57,7 +57,7 @@ _OPPOSING_LANE = compile_gated(r"\b(?:oncoming|opposing|opposite)\s+(?:\w+\s+)?l
 _WEATHER_P = (("rain", r"\brain(?:ing|y|ed)?\b|\bdrizzl"), ("fog", r"\bfog(?:gy)?\b|\bmist(?:y)?\b"),
             ("snow", r"\bsnow(?:ing|y)?\b|\bsleet\b"), ("cloudy", r"\bcloudy\b|\bovercast\b"),
             ("clear", r"\bsunny\b|\bclear\s+(?:weather|skies|day|conditions)\b|\bweather:?\s+clear\b|"
-                      r"\bweather\s+was\s+clear\b"))
+                      r"\bweather(?:\s+conditions)?\s+(?:was|were)\s+(?:\w+\s+)?clear\b"))
 _SURFACE_P = (("wet", r"\bwet\b|\bslick\b|\bpuddl"), ("snow_ice", r"\bic(?:y|e)\b|\bsnow[- ]covered\b"),
             ("dry", r"\bdry\s+(?:road|pavement|surface|roadway)\b|\bsurface:?\s+dry\b"))
 _WEATHER = tuple((w, compile_gated(p, re.I)) for w, p in _WEATHER_P)
