@@ -1,10 +1,11 @@
 """Wording probes: one slot at a time, many wordings of the same fact in one fixed sentence, the reading that must
 come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below; on
-that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 7 of 10 oncoming and 7 of 8
+that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 9 of 12 passing the standing AV
+on its left, 7 of 10 oncoming and 7 of 8
 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling
 out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23
-contact verbs and 49 of 56 party nouns came out right (176 of 216); now all of them (`test_probes.py` holds that).
+contact verbs and 49 of 56 party nouns came out right (185 of 228); now all of them (`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -71,6 +72,16 @@ PROBES: tuple[Probe, ...] = (
            "close behind the Zoox vehicle", "following too closely", "tailgating the Zoox vehicle",
            "which was following the Zoox vehicle"),
           _party, [("R6", "same", "a")]),
+    Probe("a party passing the standing AV on its left",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. A motorcycle {w} and made contact with the Zoox "
+          "vehicle's left mirror.",
+          ("passed the Zoox vehicle on the left", "attempted to pass the Zoox vehicle on the left", "overtook the "
+           "Zoox vehicle on the left", "tried to get around the Zoox vehicle on the left side", "squeezed past the "
+           "Zoox vehicle on the left", "drove past the Zoox vehicle on its left", "passed on the left of the Zoox "
+           "vehicle", "was passing the Zoox vehicle on the driver side", "came around the left side of the Zoox "
+           "vehicle", "attempted to overtake the Zoox vehicle on the left", "passed to the left of the Zoox vehicle",
+           "passed the left side of the Zoox vehicle"),
+          _party, [("R6", "left", "a")]),
     Probe("an oncoming party",
           "A Zoox vehicle was traveling northbound on Koval Lane. {W} crossed the center line and struck the front "
           "of the Zoox vehicle.",

@@ -87,7 +87,8 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          # standing AV: beside a moving one it may be alongside)
                          r"(?P<between>(?:rode|riding|ride|traveling|travelling|driving|drove|moving|going|went)\s+"
                          r"(?:\w+\s+){0,2}between\s+EGO\s+and)|"
-                         r"(?:go|going|went|drove|driving|maneuver\w*|manoeuvr\w*|steer\w*)\s+around(?=\s+(?:the\s+"
+                         r"(?:go|going|went|get|getting|got|come|came|coming|drove|driving|maneuver\w*|manoeuvr\w*|"
+                         r"steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          # "a sedan that was also going around": the same pass as the traffic told before it
                          r"also\s+(?:going|driving|moving|getting)\s+(?:around|past)(?!\s+(?:a|an|the)\s+(?!EGO))|"
@@ -256,7 +257,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
-            if fre.match(r"\s+(?:the|a|an)\s+(?!EGO)", win[m.end():]):
+            if fre.match(r"\s+(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+EGO)",
+                         win[m.end():]):
                 continue  # "changed lanes to pass the bus": the AV passing something, not the party passing it
             if m.group("between") and d.ego_start != "stopped":
                 continue
