@@ -1,11 +1,11 @@
-"""Wording probes: one slot at a time, many wordings of the same fact in one fixed sentence, the reading that must
-come out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
+"""Wording probes: one slot at a time, many wordings of the same fact in one fixed sentence, the reading that must come
+out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below; on
 that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 9 of 12 passing the standing AV
-on its left, 7 of 10 oncoming and 7 of 8
-crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling
-out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23
-contact verbs and 49 of 56 party nouns came out right (185 of 228); now all of them (`test_probes.py` holds that).
+on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming and 7 of 8 crossing parties, 6 of 8
+pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling out, 5 of 6 weather
+wordings, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23 contact verbs and 49 of
+56 party nouns came out right (190 of 238); now all of them (`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -82,6 +82,15 @@ PROBES: tuple[Probe, ...] = (
            "vehicle", "attempted to overtake the Zoox vehicle on the left", "passed to the left of the Zoox vehicle",
            "passed the left side of the Zoox vehicle"),
           _party, [("R6", "left", "a")]),
+    Probe("a party standing ahead that the AV runs into",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
+          "of {w}.",
+          ("a sedan stopped ahead of it", "a sedan that had stopped in front of it", "a stalled sedan in its lane",
+           "a sedan waiting at the light ahead", "a sedan stopped in traffic ahead", "a sedan that was stationary "
+           "ahead", "a sedan that had come to a stop in front of it", "a sedan idling in the lane ahead", "a sedan "
+           "queued ahead of it", "a sedan stopped at the stop sign ahead"),
+          lambda sk: ([(p.position, p.lane, p.start, p.actions) for p in sk.npcs], sk.ego.actions, sk.collision.type),
+          ([("R5", "same", "stopped", "")], "a", "rear_end")),
     Probe("an oncoming party",
           "A Zoox vehicle was traveling northbound on Koval Lane. {W} crossed the center line and struck the front "
           "of the Zoox vehicle.",

@@ -193,7 +193,9 @@ _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+
                          r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
-                         r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b",
+                         r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
+                         # "a sedan waiting at the light ahead", "a sedan queued ahead of it": a noun's state
+                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling)\s+(?:in|at|on|for|behind|ahead)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
@@ -202,7 +204,7 @@ _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|d
 
 _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?|(?:[\w-]+\s+){1,2}?)?"
                        r"(?:that|which|who)\s+)?"
-                       r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*"
+                       r"(?:(?:had\s+been|has\s+been|had|has|was|were|is|then|also)\s+)*"
                        r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
                        re.I)
 # A short phrase of means or place between a party's noun and its participle ("on foot", "on a bicycle", "in a
@@ -352,7 +354,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
             rel = left[-1]  # "a person on foot crossing the street": the participle tells of the noun, not the subject
-        if code == "h" and s[b:e].lower() == "stopped" and left and left[-1].kind == "party" and \
+        if (code == "h" and s[b:e].lower() == "stopped" or code == "S" and fre.match(
+                r"(?:waiting|queued|idling|stalled|parked)\b", s[b:e], re.I)) and left and left[-1].kind == "party" and \
                 left[-1].entity >= 0 and not s[left[-1].end:b].strip():
             # "navigated around a double-parked vehicle stopped in the right lane": a past participle right after
             # a noun is that noun's state, not the subject's stop.

@@ -161,7 +161,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # opening state is stopped; the participle before it only describes the car.
             pacts = pacts[setup_stop[0]:]
         pacts, under_way = opens_under_way(pacts, "cdefgjF")
-        stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting)\b", " ".join(m.mods for m in e.mentions)))
+        stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued|disabled)\b",
+                                  " ".join(m.mods for m in e.mentions)))
         # An oncoming party's move into the AV's lane is to its own left: its side is not the AV's.
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
         if start == "moving" and acts[:1] in ("b", "c") and not under_way:
