@@ -4,8 +4,9 @@ narratives happen not to use, so a gap shows before a user's report meets it. Se
 that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 9 of 12 passing the standing AV
 on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming and 7 of 8 crossing parties, 6 of 8
 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling out, 5 of 6 weather
-wordings, 7 of 12 stops, 11 of 12 starts, 11 of 14 turns, 15 of 15 names of the AV, 19 of 23 contact verbs and 49 of
-56 party nouns came out right (190 of 238); now all of them (`test_probes.py` holds that).
+wordings, 7 of 12 stops, 11 of 12 starts, 12 of 16 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV,
+19 of 23 contact verbs and 49 of 56 party nouns came out right (202 of 254); now all of them (`test_probes.py` holds
+that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -138,6 +139,15 @@ PROBES: tuple[Probe, ...] = (
            "heavy fog.", "it was snowing.", "the weather was clear."),
           lambda sk: sk.environment.weather,
           lambda w: "rain" if "rain" in w else "fog" if "fog" in w else "snow" if "snow" in w else "clear"),
+    Probe("the AV changing lanes",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the middle lane. The Zoox vehicle {w} and made "
+          "contact with a sedan that was traveling in that lane.",
+          ("changed lanes to the left", "moved into the left lane", "merged left", "began a lane change to the left",
+           "initiated a left lane change", "shifted into the left lane", "switched into the left lane", "made a lane "
+           "change into the left lane", "moved over to the left lane", "changed into the lane to its left", "moved "
+           "one lane to the left", "steered into the left lane", "changed lanes to the right", "moved into the right "
+           "lane", "merged into the lane to its right", "moved one lane over to the right"),
+          lambda sk: sk.ego.actions, lambda w: "ag" if "right" in w else "af"),
     Probe("the AV stopping",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} for a pedestrian and a sedan "
           "traveling behind it struck its rear bumper.",

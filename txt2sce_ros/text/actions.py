@@ -63,7 +63,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
-          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move)\s+into\s+the\s+left\s+lane|"
+          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching)\s+into\s+the\s+left\s+lane|"
+          # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
+          r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
+          r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
+          r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+left\b|"
           r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|"
           r"manoeuvred|swerved|swerves|drove|drives|swung|swings|swinging|pulled|pulling|went|going)\s+"
           r"(?:out\s+|over\s+|wide\s+)?(?:into\s+)?the\s+(?:oncoming|"
@@ -83,8 +87,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
-          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move)\s+(?:into\s+the\s+right\s+lane|over\s+to\s+"
-          r"the\s+right)|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
+          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:into\s+the\s+right\s+lane|"
+          r"over\s+to\s+the\s+right)|"
+          r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
+          r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
+          r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
