@@ -110,7 +110,11 @@ def find_contact(d: Doc) -> None:
     for i, s in enumerate(d.sents):
         ments = d.ments[i]
         has_ego = any(m.kind in ("ego", "egod") for m in ments) or fre.search(r"\b(?:was|were|been|got)\s+"
-                                                                             r"(?:struck|hit|contacted)", s, re.I)
+                                                                             r"(?:struck|hit|contacted)", s, re.I) or (
+            # "EGO was stopped at a light. A sedan traveling behind it struck its rear bumper": the pronoun is the
+            # AV, the subject of the sentence before, when a party is this sentence's subject.
+            i > 0 and any(m.kind in ("ego", "egod") and m.subject for m in d.ments[i - 1]) and
+            any(m.kind == "party" and m.subject for m in ments) and fre.search(r"\b(?:it|its)\b", s, re.I))
         if not has_ego:
             continue
         for m in CONTACT.finditer(s):
