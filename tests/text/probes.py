@@ -2,11 +2,11 @@
 out. Where the invariance tool (`invariance.py`) rewrites real narratives, a probe asks for the wordings real
 narratives happen not to use, so a gap shows before a user's report meets it. Session 10 wrote the sets below; on
 that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 9 of 12 passing the standing AV
-on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming and 7 of 8 crossing parties, 6 of 8
-pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars pulling out, 5 of 6 weather
-wordings, 7 of 12 stops, 11 of 12 starts, 12 of 16 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV,
-0 of 4 contacts told with a pronoun for the AV, 19 of 23 contact verbs and 49 of 56 party nouns came out right (203
-of 258); now all of them (`test_probes.py` holds that).
+on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 of 9 opposite-approach left turns and
+7 of 8 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars
+pulling out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 12 of 16 lane changes of the AV, 11 of 14
+turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19 of 23 contact verbs and 49 of 56
+party nouns came out right (210 of 267); now all of them (`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -100,6 +100,17 @@ PROBES: tuple[Probe, ...] = (
            "Koval Lane", "a sedan going the other way", "a sedan in the opposing lane", "a sedan traveling toward the "
            "Zoox vehicle", "a sedan heading toward the Zoox vehicle"),
           _position, [("R7", "left")]),
+    Probe("a party turning left across the AV's path from the opposite approach",
+          "A Zoox vehicle was traveling northbound on Koval Lane and proceeded through the intersection with Flamingo "
+          "Road on a green light. {W} and the Zoox vehicle struck its passenger side.",
+          ("an oncoming sedan turned left in front of the Zoox vehicle", "a sedan traveling in the opposite direction "
+           "made a left turn across the Zoox vehicle's path", "a southbound sedan turned left onto Flamingo Road",
+           "a sedan coming from the opposite direction turned left across its path", "a sedan approaching from the "
+           "opposite direction attempted a left turn", "a sedan traveling southbound on Koval Lane made an "
+           "unprotected left turn", "a sedan in the opposing left turn lane turned left", "a sedan from the opposite "
+           "approach turned left in front of the Zoox vehicle", "an oncoming sedan made a left turn into the Zoox "
+           "vehicle's path"),
+          lambda sk: [(p.position, p.lane, p.actions[-1:]) for p in sk.npcs], [("R2", None, "d")]),
     Probe("a party crossing from the AV's left",
           "A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road on a "
           "green light. {W} ran the red light and struck the driver side of the Zoox vehicle.",
@@ -215,7 +226,7 @@ def run(probe: Probe) -> list[str]:
 def main() -> None:
     for probe in PROBES:
         misses = run(probe)
-        print(f"{probe.name:<48} {len(probe.wordings) - len(misses):>3} / {len(probe.wordings)}")
+        print(f"{probe.name:<72} {len(probe.wordings) - len(misses):>3} / {len(probe.wordings)}")
         for m in misses:
             print("    miss:", m)
 

@@ -21,7 +21,7 @@ from .scene import PRIOR_TURN
 
 # Said of a party travelling the other way: "oncoming", "opposite direction", and at a junction the opposite
 # approach ("from the opposite side of the intersection", "facing EGO").
-ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+direction\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
+ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                          r"\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
                          r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b|"
                          # "going the other way", "in the other direction", "traveling toward EGO" (a vehicle's run
