@@ -5,8 +5,8 @@ that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behi
 on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 of 9 opposite-approach left turns and
 7 of 8 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars
 pulling out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 12 of 16 lane changes of the AV, 11 of 14
-turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19 of 23 contact verbs and 49 of 56
-party nouns came out right (210 of 267); now all of them (`test_probes.py` holds that).
+turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19 of 23 contact verbs, 21 of 23
+objects struck and 49 of 56 party nouns came out right (231 of 290); now all of them (`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -202,6 +202,18 @@ PROBES: tuple[Probe, ...] = (
           ("a sedan traveling behind it struck its rear bumper.", "a sedan behind it rear-ended it.", "a sedan that "
            "was following it struck it from behind.", "a sedan traveling behind it collided with its rear bumper."),
           lambda sk: (sk.collision.with_, sk.collision.type), ("npc1", "rear_end")),
+    Probe("an object the AV struck",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it struck {w}.",
+          ("a parked car", "a parked vehicle", "an unoccupied parked car", "a traffic cone", "a pole", "a light pole",
+           "a utility pole", "a fire hydrant", "a street sign", "a bollard", "a curb", "a median", "a guardrail",
+           "a concrete barrier", "a gate", "a tree", "debris in the road", "a ladder in the roadway", "a dog",
+           "a deer", "a fence", "a fire hydrant on the curb", "a pole on the median"),
+          lambda sk: [o.category for o in sk.obstacles] + [p.category for p in sk.npcs],
+          lambda w: [next(c for c, words in (("parked_vehicle", ("parked",)), ("cone", ("cone",)),
+                                            ("pole", ("pole", "hydrant", "sign", "bollard")),
+                                            ("barrier", ("curb", "median", "guardrail", "barrier", "gate", "fence")),
+                                            ("debris", ("debris", "ladder")), ("animal", ("dog", "deer")),
+                                            ("other", ("tree",))) if any(x in w for x in words))]),
     Probe("a party's category",
           "A Waymo AV was stopped at a red light on Mission Street. {W} traveling behind the Waymo AV struck its rear "
           "bumper.",

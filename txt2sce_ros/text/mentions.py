@@ -520,8 +520,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 prev.entity >= 0 and fre.fullmatch(r"\s*(?:of|on)\s+(?:a|an|the)?\s*", _between(sents, prev, m)):
             target = ents[prev.entity]
             target.heads.add(m.head)
-            if m.category == "barrier":
-                target.category = "barrier"
+            if m.category == "barrier" and target.category == "other":
+                target.category = "barrier"  # (but "a fire hydrant on the curb" stays the hydrant it names first)
             m.entity = target.idx
             target.mentions.append(m)
             prev = m
