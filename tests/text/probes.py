@@ -4,9 +4,10 @@ narratives happen not to use, so a gap shows before a user's report meets it. Se
 that session's start code (2e462c3) 17 of 26 lane changes, 13 of 13 parties behind, 9 of 12 passing the standing AV
 on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 of 9 opposite-approach left turns and
 7 of 8 crossing parties, 6 of 8 pedestrians on the turning AV's exit leg and 3 of 5 mid-block, 6 of 8 parked cars
-pulling out, 5 of 6 weather wordings, 7 of 12 stops, 11 of 12 starts, 12 of 16 lane changes of the AV, 11 of 14
-turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19 of 23 contact verbs, 21 of 23
-objects struck and 49 of 56 party nouns came out right (231 of 290); now all of them (`test_probes.py` holds that).
+pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
+lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
+of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
+(`test_probes.py` holds that).
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -159,6 +160,23 @@ PROBES: tuple[Probe, ...] = (
            "one lane to the left", "steered into the left lane", "changed lanes to the right", "moved into the right "
            "lane", "merged into the lane to its right", "moved one lane over to the right"),
           lambda sk: sk.ego.actions, lambda w: "ag" if "right" in w else "af"),
+    Probe("the road's layout",
+          "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
+          ("at the intersection of Koval Lane and Flamingo Road", "at the T-intersection with Flamingo Road", "at a "
+           "three-way intersection", "in a parking lot", "in the parking garage", "in a roundabout", "at the traffic "
+           "circle", "on the freeway", "on Interstate 280", "on a curved section of Koval Lane", "at the four-way stop "
+           "at Flamingo Road", "at the crossroads with Flamingo Road", "at the junction with Flamingo Road", "at a "
+           "T-junction", "mid-block on Koval Lane"),
+          lambda sk: sk.road.layout,
+          lambda w: ("junction3" if ("T-" in w or "three-way" in w) else "parking" if "parking" in w else
+                     "roundabout" if ("roundabout" in w or "circle" in w) else "curve" if "curved" in w else
+                     "straight" if any(x in w for x in ("freeway", "Interstate", "mid-block")) else "junction4")),
+    Probe("the AV's light",
+          "A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road {w}. "
+          "A sedan traveling eastbound on Flamingo Road struck the driver side of the Zoox vehicle.",
+          ("on a green light", "on a solid green", "while the signal was red", "on a yellow light", "as the light "
+           "changed to yellow", "at a red signal", "with the green traffic signal", "on a flashing yellow"),
+          lambda sk: sk.signal_state, lambda w: next(c for c in ("green", "red", "yellow") if c in w)),
     Probe("the AV stopping",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} for a pedestrian and a sedan "
           "traveling behind it struck its rear bumper.",

@@ -9,7 +9,7 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import NUMBER_WORDS
 
-_JUNCTION = compile_gated(r"\bintersection\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
+_JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
                        r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
                        r"\bthe\s+light\s+turned\b|"
@@ -39,7 +39,9 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
                       r"road|curb|driveway|oncoming|traffic)", re.I)
 _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
-                     r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b", re.I)
+                     r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
+                     r"\b(?:solid|flashing|steady)\s+(?:green|red|yellow|amber)\b|\b(?:green|red|yellow|amber)\s+"
+                     r"(?:turn\s+)?arrow\b", re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
 _ONE_WAY = compile_gated(r"\bone[- ]way\b", re.I)
 _TWO_WAY = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\s+(?:lane|traffic|direction)\b|"
