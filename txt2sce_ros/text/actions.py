@@ -164,7 +164,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield", "rest"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic", "lane", "left", "leav", "exit", "depart"), "P": ("pull",),
+    "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
     "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
