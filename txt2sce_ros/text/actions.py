@@ -51,7 +51,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
-          r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
+          r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
+          r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b"),
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
@@ -91,7 +92,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"over\s+to\s+the\s+right)|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
-          r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
+          r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
+          r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
@@ -104,7 +106,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bswitch(?:ed|ing|es)?\s+lanes\b|"
           r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing|es)?\b|"
-          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|\b(?:moved|moving|move|came|coming|come|pulled|pulling)\s+"
+          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|"
+          r"\b(?:moved|moving|move|came|coming|come|pulled|pulling)\s+"
           r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
           # "entered EGO's lane": the AV's own lane, entered from beside it
           r"\benter(?:ed|ing|s)?\s+(?:into\s+)?(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
@@ -161,7 +164,8 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
-    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"), "h": ("stop", "halt", "standstill", "yield", "rest"),
+    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"),
+    "h": ("stop", "halt", "standstill", "yield", "rest"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
@@ -362,8 +366,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
             rel = left[-1]  # "a person on foot crossing the street": the participle tells of the noun, not the subject
         if (code == "h" and s[b:e].lower() == "stopped" or code == "S" and fre.match(
-                r"(?:waiting|queued|idling|stalled|parked)\b", s[b:e], re.I)) and left and left[-1].kind == "party" and \
-                left[-1].entity >= 0 and not s[left[-1].end:b].strip():
+                r"(?:waiting|queued|idling|stalled|parked)\b", s[b:e], re.I)) and left and \
+                left[-1].kind == "party" and left[-1].entity >= 0 and not s[left[-1].end:b].strip():
             # "navigated around a double-parked vehicle stopped in the right lane": a past participle right after
             # a noun is that noun's state, not the subject's stop.
             out.append(Act(sent=sent_idx, pos=b, code="S", who=left[-1].entity, text=s[b:e]))

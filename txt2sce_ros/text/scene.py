@@ -9,7 +9,8 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import NUMBER_WORDS
 
-_JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|\btraffic\s+(?:light|signal)s?\b|"
+_JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
+                       r"\btraffic\s+(?:light|signal)s?\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
                        r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
                        r"\bthe\s+light\s+turned\b|"
