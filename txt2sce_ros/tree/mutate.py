@@ -32,7 +32,8 @@ from .environment import configured_approach, dilemma_yellow, new_signal, obstac
 from .features import block_features, split_event_name
 from .parties import ROLE_EXCLUDES, ROLE_NEEDS, ROLES, new_party
 from .physical import DIM_ATTRS, entity_element, dm, init_speed_follow, ncm
-from .trajectory import clear_of_starts, keep_clear_of_queue, move_start, route_through, place_near_ego, shift_init_location, wpm_lane_change
+from .trajectory import (clear_of_starts, keep_clear_of_queue, move_start, place_near_ego, route_through,
+                         shift_init_location, wpm_lane_change)
 from .values import Recorder, uniform
 from .xml import parse_fragment, to_text
 
