@@ -34,6 +34,10 @@ def _party(sk: Sketch) -> object:
     return [(p.position, p.lane, p.actions) for p in sk.npcs][:1]
 
 
+def _ego(sk: Sketch) -> object:
+    return sk.ego.start, sk.ego.actions
+
+
 def _position(sk: Sketch) -> object:
     return [(p.position, p.lane) for p in sk.npcs][:1]
 
@@ -183,14 +187,14 @@ PROBES: tuple[Probe, ...] = (
           ("came to a stop", "came to a complete stop", "stopped", "braked to a stop", "slowed to a stop", "halted",
            "came to a halt", "was brought to a stop", "stopped abruptly", "made a sudden stop", "came to rest",
            "pulled to a stop"),
-          lambda sk: (sk.ego.start, sk.ego.actions), ("moving", "ah")),
+          _ego, ("moving", "ah")),
     Probe("the AV moving off",
           "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
           "and a sedan traveling behind it struck its rear bumper.",
           ("began to move forward", "started moving", "proceeded forward", "moved forward", "pulled away from the "
            "stop line", "started to proceed", "resumed travel", "moved off", "inched forward", "crept forward",
            "began to proceed through the intersection", "proceeded into the intersection"),
-          lambda sk: (sk.ego.start, sk.ego.actions), ("stopped", "i")),
+          _ego, ("stopped", "i")),
     Probe("the AV turning at a junction",
           "A Zoox vehicle was traveling northbound on Koval Lane. At the intersection with Flamingo Road, the Zoox "
           "vehicle {w} and a sedan traveling behind it struck its rear bumper.",
