@@ -13,27 +13,16 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-from ..errors import Txt2SceError
-from ..seed.boxes import box_corners, boxes_gap
+from ..seed.boxes import boxes_gap
 from ..seed.context import SeedContext
+from .trajectory import start_box
 
 
 def overlapping_starts(node: str | Path) -> list[tuple[str, str]]:
     """Pairs (sorted names) of entities of scenario `node` whose footprints overlap at their starts."""
     ctx = SeedContext.from_file(node)
-    boxes = {}
-    for name in ctx.entities:
-        bb = ctx.root.find(f"Entities/ScenarioObject[@name='{name}']/*/BoundingBox")
-        dims = bb.find("Dimensions") if bb is not None else None
-        if dims is None:
-            continue
-        try:
-            st = ctx.start(name)
-        except (Txt2SceError, KeyError, IndexError, ValueError):
-            continue
-        center = bb.find("Center")
-        boxes[name] = box_corners(st.x, st.y, st.h, float(dims.get("length", "0")), float(dims.get("width", "0")),
-                                  float(center.get("x", "0")) if center is not None else 0.0)
+    boxes = {name: box for name in ctx.entities
+             if (box := start_box(ctx, name, ctx.root.find(f"Entities/ScenarioObject[@name='{name}']"))) is not None}
     return [(a, b) for a, b in itertools.combinations(sorted(boxes), 2) if boxes_gap(boxes[a], boxes[b]) < 0.0]
 
 

@@ -251,7 +251,7 @@ def place_near_ego(private: etree._Element, entity: str, obj: etree._Element, ct
     return float(text) - start.s
 
 
-def _start_box(ctx: SeedContext, name: str, obj: etree._Element | None, pos: LanePos | None = None
+def start_box(ctx: SeedContext, name: str, obj: etree._Element | None, pos: LanePos | None = None
                ) -> np.ndarray | None:
     """Corners of `name`'s footprint at its start (`pos` on its lane instead, where given); None where the object
     has no bounding box or the start cannot be placed on the map."""
@@ -275,11 +275,11 @@ def _start_box(ctx: SeedContext, name: str, obj: etree._Element | None, pos: Lan
 def starts_clear(ctx: SeedContext, entity: str, obj: etree._Element | None, pos: LanePos | None = None) -> bool:
     """Whether `entity`'s footprint (object `obj`) at its start, or at `pos` on a lane, keeps START_CLEARANCE m
     from the footprint of every other entity's start in the seed, in any lane (True where it has no footprint)."""
-    box = _start_box(ctx, entity, obj, pos)
+    box = start_box(ctx, entity, obj, pos)
     if box is None:
         return True
     for name in ctx.entities:
-        other = _start_box(ctx, name, ctx.root.find(f"Entities/ScenarioObject[@name='{name}']")) \
+        other = start_box(ctx, name, ctx.root.find(f"Entities/ScenarioObject[@name='{name}']")) \
             if name != entity else None
         if other is not None and boxes_gap(box, other) < START_CLEARANCE:
             return False
