@@ -213,20 +213,18 @@ _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|d
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 
+# The end of a relative clause's verb group before its verb: an adverb, an attempt or a beginning.
+_ATTEMPT = r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?"
 _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?|(?:[\w-]+\s+){1,2}?)?"
                        r"(?:that|which|who)\s+)?"
-                       r"(?:(?:had\s+been|has\s+been|had|has|was|were|is|then|also)\s+)*"
-                       r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
-                       re.I)
+                       r"(?:(?:had\s+been|has\s+been|had|has|was|were|is|then|also)\s+)*" + _ATTEMPT, re.I)
 # A short phrase of means or place between a party's noun and its participle ("on foot", "on a bicycle", "in a
 # wheelchair").
 _PP_BEFORE_PARTICIPLE = compile_gated(r"\s+(?:on|in|with)\s+(?:(?:a|an|the|its|his|her|their)\s+)?[\w-]+\s+", re.I)
 # After a possessor inside a party's phrase of place ("to EGO's right, which was ..."): the place noun, then the
 # relative pronoun.
 _POSSESSED_RELATIVE = compile_gated(r"\s*[\w-]+(?:\s+[\w-]+)?\s*,\s*(?:that|which|who)\s+"
-                                    r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*(?:\w+ly\s+)?"
-                                    r"(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?",
-                                    re.I)
+                                    r"(?:(?:had\s+been|has\s+been|was|were|is|then|also)\s+)*" + _ATTEMPT, re.I)
 
 
 @dataclass(frozen=True)
