@@ -38,6 +38,10 @@ def _ego(sk: Sketch) -> object:
     return sk.ego.start, sk.ego.actions
 
 
+def _npc_actions(sk: Sketch) -> object:
+    return [(p.start, p.actions) for p in sk.npcs][:1]
+
+
 def _position(sk: Sketch) -> object:
     return [(p.position, p.lane) for p in sk.npcs][:1]
 
@@ -54,6 +58,8 @@ _CATEGORIES = {
     "scooter": ("scooter rider", "e-scooter rider", "skateboarder", "scooterist"),
     "pedestrian": ("pedestrian", "jogger", "man", "woman", "child", "person", "runner"),
 }
+
+_AV_STOPPED = "The Waymo AV was stopped at a red light on Mission Street at 16th Street. "
 
 PROBES: tuple[Probe, ...] = (
     Probe("lane change into the AV's lane from the right",
@@ -242,6 +248,275 @@ PROBES: tuple[Probe, ...] = (
           tuple(("an " if n[0].lower() in "aeiou" else "a ") + n for ns in _CATEGORIES.values() for n in ns),
           lambda sk: [p.category for p in sk.npcs],
           lambda w: [next(c for c, ns in _CATEGORIES.items() if w.split(" ", 1)[1] in ns)]),
+    # Session 11: NPC action strings (sketch.md's codes and hard-case rules), one manoeuvre per set.
+    Probe("a party standing behind the AV that moves off into it",
+          _AV_STOPPED + "A sedan stopped behind the Waymo AV {w} and struck the rear bumper of the Waymo AV.",
+          ("began to move forward", "started moving", "moved forward", "rolled forward", "crept forward",
+           "inched forward", "began to roll forward", "pulled forward", "proceeded forward", "accelerated from a stop",
+           "started to accelerate", "moved off", "began to proceed", "lurched forward", "suddenly accelerated forward",
+           "released its brakes and rolled forward", "pulled away from the stop line", "drove forward",
+           "accelerated", "began to creep forward"),
+          _npc_actions, [("stopped", "i")]),
+    Probe("a party stopped on the cross street that turns",
+          "The Zoox vehicle was traveling northbound on Koval Lane through the intersection with Flamingo Road. "
+          "A sedan {w} onto Koval Lane and made contact with the passenger side of the Zoox vehicle.",
+          ("that had been stopped at the stop sign on Flamingo Road turned right",
+           "stopped at the stop sign on Flamingo Road made a right turn",
+           "waiting at the stop sign on Flamingo Road began to turn right",
+           "that had come to a stop at the stop sign on Flamingo Road then turned right",
+           "sitting at the stop sign on Flamingo Road started a right turn",
+           "idling at the stop sign on Flamingo Road turned right",
+           "that was stationary at the stop sign on Flamingo Road proceeded to turn right",
+           "which had stopped at the stop sign on Flamingo Road began a right turn",
+           "stopped at the red light on Flamingo Road began making a right turn",
+           "that had been stopped at the stop sign on Flamingo Road turned left",
+           "stopped at the stop sign on Flamingo Road made a left turn",
+           "waiting at the stop sign on Flamingo Road began to turn left",
+           "that was stopped at the limit line on Flamingo Road pulled out and turned left",
+           "which had been waiting at the stop sign on Flamingo Road started a left turn"),
+          _npc_actions, lambda w: [("stopped", "id" if "left" in w else "ie")]),
+    Probe("a party ahead slowing to a stop",
+          "The Waymo AV was traveling northbound on Mission Street behind a sedan. The sedan {w} and the Waymo AV "
+          "made contact with its rear bumper.",
+          ("slowed to a stop", "came to a stop", "came to a sudden stop", "braked to a stop", "stopped suddenly",
+           "braked hard and stopped", "abruptly stopped", "came to a complete stop", "stopped short",
+           "slammed on its brakes and stopped", "halted", "came to an abrupt halt", "decelerated to a stop",
+           "slowed and stopped", "stopped in the travel lane", "suddenly stopped", "came to a standstill"),
+          _npc_actions, [("moving", "ah")]),
+    Probe("a party ahead slowing",
+          "The Waymo AV was traveling northbound on Mission Street behind a sedan. The sedan {w} and the Waymo AV "
+          "made contact with its rear bumper.",
+          ("slowed down", "braked", "decelerated", "reduced its speed", "slowed suddenly", "braked abruptly",
+           "hit its brakes", "slowed", "braked hard", "began to slow", "started to slow down", "abruptly slowed"),
+          _npc_actions, [("moving", "ac")]),
+    Probe("a party standing ahead that backs into the AV",
+          _AV_STOPPED.replace("at a red light", "behind a sedan at a red light") +
+          "The sedan {w} and made contact with the front bumper of the Waymo AV.",
+          ("reversed", "backed up", "began to reverse", "rolled backward", "rolled back", "started backing up",
+           "shifted into reverse and backed up", "drove in reverse", "moved backward", "traveled in reverse",
+           "reversed toward the Waymo AV", "began backing up", "started to back up", "rolled backwards",
+           "moved in reverse", "suddenly reversed"),
+          _npc_actions, [("stopped", "k")]),
+    Probe("a party backing out of a space",
+          "The Waymo AV was traveling slowly through a parking lot on Mission Street. A sedan {w} and made contact "
+          "with the passenger side of the Waymo AV.",
+          ("reversed out of a parking space", "backed out of a parking spot", "backed out of its parking stall",
+           "reversed out of a driveway", "backed out of a driveway", "was backing out of a parking space",
+           "began to back out of a parking spot", "reversed from a parallel parking spot",
+           "pulled out of a parking space in reverse", "backed out of a parking stall", "reversed out of its space",
+           "started to reverse out of a parking spot"),
+          _npc_actions, [("stopped", "k")]),
+    Probe("a party on the left changing into the AV's lane after a run",
+          "The Zoox vehicle was traveling northbound on Koval Lane in the right lane. A sedan was traveling "
+          "northbound in the left lane. The sedan {w} and made contact with the driver side of the Zoox vehicle.",
+          ("changed lanes to the right", "moved right", "merged right", "made a right lane change",
+           "changed into the right lane", "moved into the right lane", "cut over into the right lane",
+           "swerved right", "veered into the right lane", "drifted into the right lane", "merged into the right lane",
+           "began a lane change to the right", "changed lanes", "merged into the Zoox vehicle's lane",
+           "cut into the Zoox vehicle's lane", "encroached into the Zoox vehicle's lane", "switched lanes"),
+          _npc_actions, [("moving", "ag")]),
+    Probe("a party beside the AV turning across it at the junction",
+          "The Zoox vehicle was traveling northbound on Koval Lane in the right lane and entered the intersection "
+          "with Flamingo Road. A sedan traveling northbound in the left lane {w} and made contact with the driver "
+          "side of the Zoox vehicle.",
+          ("turned right", "made a right turn", "began a right turn", "attempted a right turn", "initiated a right "
+           "turn", "executed a right turn", "made a right-hand turn", "took a right", "began turning right",
+           "started to turn right", "attempted to turn right", "turned right onto Flamingo Road",
+           "made a sudden right turn", "made an illegal right turn from the left lane"),
+          _npc_actions, [("moving", "ae")]),
+    Probe("a party beside the AV turning left across it",
+          "The Zoox vehicle was traveling northbound on Koval Lane in the left lane and entered the intersection "
+          "with Flamingo Road. A sedan traveling northbound in the right lane {w} and made contact with the "
+          "passenger side of the Zoox vehicle.",
+          ("turned left", "made a left turn", "began a left turn", "attempted a left turn", "initiated a left turn",
+           "executed a left turn", "made a left-hand turn", "took a left", "began turning left",
+           "started to turn left", "attempted to turn left", "turned left onto Flamingo Road",
+           "made a prohibited left turn", "made a sudden left turn"),
+          _npc_actions, [("moving", "ad")]),
+    Probe("an oncoming party making a U-turn",
+          "The Zoox vehicle was traveling northbound on Koval Lane. A sedan traveling southbound on Koval Lane {w} "
+          "and made contact with the front of the Zoox vehicle.",
+          ("made a U-turn", "made a u-turn", "performed a U-turn", "executed a U turn", "attempted a U-turn",
+           "began a U-turn", "made a three-point turn", "made an illegal U-turn", "turned around", "did a U-turn",
+           "made a uturn", "began to make a U-turn", "attempted to make a U-turn", "pulled a U-turn"),
+          _npc_actions, [("moving", "aj")]),
+    Probe("a rider crossing the AV's path",
+          "The Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue. "
+          "A cyclist {w} and made contact with the front of the Zoox vehicle.",
+          ("rode across the street", "crossed the street", "crossed in front of the Zoox vehicle",
+           "darted across the road", "crossed Koval Lane mid-block", "rode off the sidewalk into the street",
+           "cut across the road", "crossed the roadway", "rode across Koval Lane", "entered the roadway from the "
+           "sidewalk", "crossed against the light", "rode out from between parked cars"),
+          _npc_actions, [("moving", "m")]),
+    Probe("a vehicle leaving a driveway or lot across the AV's path",
+          "The Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue. "
+          "A sedan {w} and made contact with the passenger side of the Zoox vehicle.",
+          ("exited a driveway", "pulled out of a driveway", "emerged from a parking lot", "left a parking garage",
+           "pulled out of an alley", "exited a private driveway", "came out of a driveway", "exited a parking lot",
+           "pulled out of a parking lot", "drove out of a driveway", "exited an alley", "pulled out of a gas station",
+           "exited a shopping center driveway"),
+          _npc_actions, [("moving", "m")]),
+    Probe("a party merging from an on-ramp",
+          "The Zoox vehicle was traveling northbound on Interstate 15 in the rightmost lane. A pickup truck "
+          "traveling on the on-ramp to the right of the Zoox vehicle {w} and made contact with its passenger side.",
+          ("merged onto the freeway", "merged into the Zoox vehicle's lane", "merged left", "entered the freeway",
+           "merged into traffic", "moved into the Zoox vehicle's lane", "attempted to merge", "began merging",
+           "merged without yielding", "merged onto the interstate", "merged into the rightmost lane"),
+          _npc_actions, [("moving", "af")]),
+    Probe("a party changing lanes and then stopping",
+          "The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan traveling in the left "
+          "lane changed lanes to the right in front of the Waymo AV and then {w}. The Waymo AV made contact with "
+          "the rear bumper of the sedan.",
+          ("stopped suddenly", "braked to a stop", "came to an abrupt stop", "slammed on its brakes and stopped",
+           "came to a stop", "stopped", "abruptly stopped", "came to a complete stop", "halted", "slowed to a stop"),
+          _npc_actions, [("moving", "agh")]),
+    Probe("what a party did after the contact is left out",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan traveling behind the Waymo AV struck "
+          "its rear bumper and {w}.",
+          ("fled the scene", "drove away", "left the scene without stopping", "then drove off",
+           "continued on its way", "then pulled over to the curb", "came to a stop", "stopped a short distance ahead",
+           "reversed and drove away", "made a U-turn and left", "turned right onto 16th Street and left the scene",
+           "sped away", "accelerated away", "pulled into a parking lot", "changed lanes and drove off",
+           "backed up and fled"),
+          _npc_actions, [("moving", "a")]),
+    Probe("what a party did after the contact, told in a sentence of its own",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan traveling behind the Waymo AV struck "
+          "its rear bumper. The sedan then {w}.",
+          ("fled the scene", "drove away", "left the scene without stopping", "pulled over to the curb",
+           "came to a stop", "reversed and drove away", "made a U-turn and left", "turned right onto 16th Street",
+           "sped away", "accelerated away", "pulled into a parking lot", "changed lanes and drove off",
+           "backed up and fled", "drove around the Waymo AV and left"),
+          _npc_actions, [("moving", "a")]),
+    Probe("a party standing still throughout that the backing AV strikes",
+          "The Waymo AV was stopped on Mission Street. The Waymo AV reversed and made contact with a sedan {w}.",
+          ("stopped behind it", "that was stopped behind it", "waiting behind it", "which was stationary behind it",
+           "idling behind it", "that had stopped behind it", "sitting behind it", "queued behind it",
+           "that was at a complete stop behind it", "stopped at the light behind it", "that was waiting behind it",
+           "standing behind it"),
+          _npc_actions, [("stopped", "")]),
+    Probe("a party already turning when the story takes it up",
+          "The Zoox vehicle was stopped at the stop line on Koval Lane at Flamingo Road. A sedan that {w} from "
+          "Flamingo Road onto Koval Lane made contact with the Zoox vehicle's front left fender.",
+          ("was making a right turn", "was in the process of turning right", "was turning right",
+           "was completing a right turn", "was executing a right turn", "was in the middle of a right turn",
+           "was negotiating a right turn", "was making a left turn", "was turning left",
+           "was in the process of making a left turn"),
+          _npc_actions, lambda w: [("moving", "d" if "left" in w else "e")]),
+    Probe("a party already changing lanes when the story takes it up",
+          "The Zoox vehicle was traveling northbound on Koval Lane in the right lane when a sedan in the left lane "
+          "that {w} made contact with the driver side of the Zoox vehicle.",
+          ("was changing lanes to the right", "was in the process of changing lanes to the right",
+           "was merging right", "was moving into the right lane", "was changing lanes", "was merging into the "
+           "right lane", "was in the middle of a lane change", "was making a lane change to the right"),
+          _npc_actions, [("moving", "g")]),
+    Probe("a party behind speeding up",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan traveling behind the Waymo AV {w} and "
+          "struck the rear bumper of the Waymo AV.",
+          ("accelerated", "sped up", "increased its speed", "picked up speed", "accelerated rapidly",
+           "suddenly accelerated", "began to accelerate", "gained speed", "sped up suddenly", "increased speed"),
+          _npc_actions, [("moving", "ab")]),
+    Probe("a party standing behind the AV that moves off, told in a sentence of its own",
+          "The Waymo AV was stopped at a red light on Mission Street. A passenger car was stopped behind the Waymo "
+          "AV. {W} and made contact with the rear bumper of the Waymo AV.",
+          ("the passenger car then began to move forward", "when the light turned green, the passenger car "
+           "proceeded forward", "moments later, the passenger car rolled forward", "the passenger car then "
+           "accelerated", "shortly thereafter, the passenger car started moving", "after the light turned green, "
+           "the passenger car moved forward", "the passenger car then crept forward", "the passenger car then "
+           "proceeded", "the passenger car then started to move", "the passenger car then drove forward",
+           "subsequently, the passenger car moved forward", "the passenger car then pulled forward"),
+          _npc_actions, [("stopped", "i")]),
+    Probe("an oncoming party turning left across the AV, the whole string",
+          "The Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road "
+          "on a green light. A sedan traveling southbound on Koval Lane {w} and made contact with the front of the "
+          "Zoox vehicle.",
+          ("turned left onto Flamingo Road", "made a left turn", "began a left turn", "initiated a left turn",
+           "proceeded to turn left", "attempted an unprotected left turn", "made a left turn in front of the Zoox "
+           "vehicle", "turned left across the Zoox vehicle's path", "failed to yield and turned left",
+           "began to turn left", "executed a left turn onto Flamingo Road", "made a sudden left turn",
+           "started to make a left turn", "turned left in front of the Zoox vehicle"),
+          _npc_actions, [("moving", "ad")]),
+    Probe("a party ahead that stops and then backs into the AV",
+          "The Waymo AV was traveling northbound on Mission Street behind a sedan. The sedan came to a stop and "
+          "then {w}, making contact with the front bumper of the Waymo AV.",
+          ("reversed", "backed up", "began to reverse", "rolled backward", "started backing up",
+           "reversed toward the Waymo AV", "began backing up", "shifted into reverse", "moved backward",
+           "started to reverse"),
+          _npc_actions, [("moving", "ahk")]),
+    Probe("a party ahead pulling over to the curb",
+          "The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan traveling ahead of "
+          "the Waymo AV {w}, and the Waymo AV made contact with its rear bumper.",
+          ("pulled over to the curb", "pulled over to the right", "pulled to the curb", "began to pull over",
+           "attempted to parallel park", "pulled into a parking space", "began to park at the curb",
+           "pulled over", "was pulling over", "started to pull over to the curb"),
+          _npc_actions, lambda w: [("moving", "l" if w.startswith("was") else "al")]),
+    Probe("a party beside the AV moving into its lane, told of the lane",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan in the adjacent lane "
+          "to the right of the Waymo AV {w} and made contact with its passenger side.",
+          ("moved into the Waymo AV's path", "entered the lane occupied by the Waymo AV", "came into the Waymo "
+           "AV's lane", "crossed into the lane the Waymo AV was traveling in", "began to drift into the Waymo AV's "
+           "lane", "made an unsafe lane change", "changed lanes without signaling", "merged into the Waymo AV's "
+           "lane of travel", "moved over into the Waymo AV's lane of travel", "cut over in front of the Waymo AV",
+           "encroached upon the Waymo AV's lane", "crossed the dashed lane line", "failed to stay in its lane",
+           "moved over into the Waymo AV's lane", "attempted a lane change into the Waymo AV's lane"),
+          _npc_actions, [("moving", "af")]),
+    Probe("an oncoming party crossing into the AV's lane",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan traveling southbound on Mission Street "
+          "{w} and made contact with the front of the Waymo AV.",
+          ("crossed the center line", "crossed the double yellow line", "drifted into the northbound lane",
+           "veered into oncoming traffic", "swerved across the centerline", "crossed into the Waymo AV's lane",
+           "entered the opposing lane", "drifted over the double yellow lines", "crossed over the median",
+           "moved into the oncoming lane", "crossed the centerline into the Waymo AV's lane",
+           "drifted across the center line", "veered into the Waymo AV's lane"),
+          _npc_actions, [("moving", "af")]),
+    Probe("a party standing beside the AV that moves off into its lane",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan that was stopped in "
+          "the right lane {w} and made contact with the passenger side of the Waymo AV.",
+          ("pulled forward and merged into the Waymo AV's lane", "began to move and changed lanes to the left",
+           "moved off and cut in front of the Waymo AV", "started moving and moved into the left lane",
+           "proceeded forward and merged left", "accelerated and changed lanes into the Waymo AV's lane",
+           "began to proceed and moved left", "pulled out and changed lanes to the left"),
+          _npc_actions, [("stopped", "if")]),
+    Probe("a party standing still throughout that the AV moves into",
+          "The Waymo AV was traveling northbound on Mission Street in the right lane. The Waymo AV changed lanes to "
+          "the left and made contact with a sedan {w}.",
+          ("stopped in the left lane", "that was stopped in traffic in the left lane", "waiting in the left lane",
+           "sitting in traffic in the left lane", "that was stationary in the left lane", "idling in the left lane",
+           "that had stopped in the left lane", "queued in the left lane", "that was at a standstill in the left "
+           "lane", "standing in the left lane"),
+          _npc_actions, [("stopped", "")]),
+    Probe("a party's manoeuvre told in the present tense",
+          "At about 11:35 am our vehicle is traveling northbound on First Street in the left lane. A sedan "
+          "traveling in the right lane {w} and strikes our passenger side.",
+          ("changes lanes to the left", "merges left", "moves into our lane", "cuts in front of our vehicle",
+           "swerves into our lane", "begins to change lanes", "turns left", "makes a left turn",
+           "begins to make a left turn", "begins to turn left", "slows to a stop", "comes to a stop",
+           "stops suddenly", "makes a U-turn", "speeds up", "accelerates", "slows down",
+           "brakes", "pulls over", "drifts into our lane", "veers left", "crosses into our lane"),
+          _npc_actions, lambda w: [("moving",
+                             "a" + (
+                                 "d" if "left turn" in w or "turn left" in w or w == "turns left" else
+                                 "h" if "stop" in w else "j" if "U-turn" in w else "b" if w in ("speeds up",
+                                 "accelerates") else "c" if w in ("slows down", "brakes") else "l" if "over" in w
+                                 else "f"))]),
+    Probe("a standing party's move off told in the present tense",
+          "Our vehicle is stopped at a red light on First Street. A sedan that is stopped behind our vehicle {w} and "
+          "strikes our rear bumper.",
+          ("begins to move forward", "moves forward", "rolls forward", "creeps forward", "pulls forward",
+           "starts moving", "proceeds forward", "begins to roll", "inches forward", "accelerates"),
+          _npc_actions, [("stopped", "i")]),
+    Probe("a standing party that strikes the AV moved off",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan {w} struck the rear bumper of the "
+          "Waymo AV.",
+          ("that was stopped behind the Waymo AV", "waiting behind the Waymo AV", "stopped behind the Waymo AV",
+           "that had stopped behind the Waymo AV", "which was stationary behind the Waymo AV",
+           "idling behind the Waymo AV", "that was waiting behind the Waymo AV", "queued behind the Waymo AV"),
+          _npc_actions, [("stopped", "i")]),
+    Probe("a party the backing AV strikes, of which no motion is told",
+          "The Waymo AV was stopped on Mission Street. The Waymo AV {w} and made contact with a passenger vehicle "
+          "behind it.",
+          ("reversed", "backed up", "began to reverse", "rolled backward", "switched to reverse gear",
+           "started backing up", "moved backward", "reversed slowly", "began backing up"),
+          _npc_actions, [("stopped", "")]),
 )
 
 

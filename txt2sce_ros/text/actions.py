@@ -22,7 +22,8 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
-    ("O", r"\b(?:left|leaving|leaves|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
+    # Left in reverse, a space is backed out of (`k`), not pulled out of: "(?!...in reverse)" closes the pattern.
+    ("O", r"(?:\b(?:left|leaving|leaves|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parking\s+(?:spot|space|stall|position)|parked\s+position|curb)\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
@@ -33,22 +34,25 @@ PHRASES: tuple[tuple[str, str], ...] = (
 
           r"\b(?:proceeded|pulled|pulling|moved|merged)\s+(?:back\s+)?(?:out\s+)?into\s+the\s+(?:driving|travel|traffic)\s+lane\b|"
           r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
-          r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb)"),
+          r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb))"
+          r"(?!\s+in\s+reverse)"),
     # "pulled out and struck": out of a parking spot if it was parked, else a start from where it stopped
     ("P", r"\bpull(?:ed|ing|s)?\s+out(?=\s*(?:,|\band\b|\bsuddenly\b|\bdirectly\b|\bjust\b))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
-    ("j", r"\bu-?\s?turn|\bmulti-?point\s+turn|\bthree-point\s+turn"),
+    ("j", r"\bu-?\s?turn|\bturn(?:ed|ing|s)?\s+around\b|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
           r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
+          r"\b(?:mov|roll|drift|creep|crept|coast)(?:ed|ing|es|e|s)?\s+backwards?\b|"
           r"\bbacking\b"),
     ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
-          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|\bpulling\s+to\s+the\s+curb|"
+          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|"
+          r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
           r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel\s+)?parking\s+maneuver"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
-          r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to)\s+(?:a|an)\s+"
+          r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
@@ -57,13 +61,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b"),
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
-          r"driving|creeping)|\b(?:moved|moving|move|pulled|pulling|nudged|nudging|crept|creep|creeping|edged|"
-          r"edging|inched|inching|rolled|rolling)\s+forward\b|\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
+          r"driving|creeping)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
+          r"accelerated)\s+forward\b|"
+          r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
-          r"ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|e)\s+(?:left|to\s+the\s+left|"
+          r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching)\s+into\s+the\s+left\s+lane|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
@@ -78,7 +83,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|"
           # Into a left-turn lane is a move to the left ("was entering the leftmost dedicated left turn lane").
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
-          r"left[- ]turn\s+(?:lane|pocket|bay)|\bswerv(?:ed|ing)\s+"
+          r"left[- ]turn\s+(?:lane|pocket|bay)|\bswerv(?:ed|ing|es)\s+"
           r"(?:to\s+the\s+)?left\b|\bcross(?:ed|ing|es)?\s+(?:over\s+)?(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|(?:center\s+|centre\s+)?median|yellow\s+line)|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?left\b|"
           # a sideways move told without "lane": "moved left and made contact", "drifted over the center line"
@@ -87,7 +92,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:drift|veer|swerv|wander)(?:ed|ing|e|s)?\s+(?:over|across)\s+(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
-          r"(?:ed|ing|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|e)\s+(?:right|to\s+the\s+"
+          r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:into\s+the\s+right\s+lane|"
           r"over\s+to\s+the\s+right)|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
@@ -99,16 +104,25 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
           r"right[- ]turn\s+(?:lane|pocket|bay)|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
-          r"right\b|\bswerv(?:ed|ing)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b|"
+          r"right\b|\bswerv(?:ed|ing|es)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b|"
           r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?right\b"
           r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))"),
-    ("F", r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|e)\s+lanes?\b|\blane\s+change\b|"
+    # Onto a freeway from its ramp is a merge into the lane beside it ("entered the freeway").
+    ("F", r"\benter(?:ed|ing|s)?\s+(?:onto\s+)?the\s+(?:freeway|highway|interstate|expressway|motorway)\b|"
+          r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|es|e)\s+lanes?\b|\blane\s+change\b|"
           r"\bswitch(?:ed|ing|es)?\s+lanes\b|"
-          r"\bmerg(?:ed|ing|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
-          r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing)\b|\bencroach(?:ed|ing|es)?\b|"
-          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|"
+          r"\bmerg(?:ed|ing|es|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
+          r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing|es)\b|\bencroach(?:ed|ing|es)?\b|"
+          r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing|s)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|"
           r"\b(?:moved|moving|move|came|coming|come|pulled|pulling)\s+"
           r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
+          # "moved into EGO's path", "entered the lane occupied by EGO": the AV's lane named by its path or by it
+          r"\b(?:moved|moving|came|coming|pulled|pulling|swerved|veered|cut)\s+(?:over\s+)?into\s+(?:EGO's|our)\s+"
+          r"path\b|\b(?:enter(?:ed|ing|s)?|(?:mov|merg|chang|cross)(?:ed|ing|es|e)\s+(?:over\s+)?into)\s+the\s+"
+          r"lane\s+(?:occupied\s+by|of)\s+EGO\b|"
+          # leaving its own lane toward the AV: "failed to stay in its lane", "drifted out of its lane"
+          r"\bfail(?:ed|ing|s)?\s+to\s+(?:stay|remain|keep|maintain)\s+(?:in\s+)?(?:its|their|his|her)\s+lane\b|"
+          r"\b(?:drift|veer|swerv|wander|stray|mov)(?:ed|ing|es|e|s)?\s+out\s+of\s+(?:its|their|his|her)\s+lane\b|"
           # "entered EGO's lane": the AV's own lane, entered from beside it
           r"\benter(?:ed|ing|s)?\s+(?:into\s+)?(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
           # "changed into the AV's lane", "moved over into the middle lane in front of the AV", "partially entered
@@ -125,6 +139,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:over\s+)?(?:(?:(?:across|over)\s+)?(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
           r"(?:into|toward|towards)\s+(?:the\s+|EGO's\s+|our\s+|its\s+)(?:[\w-]+\s+){0,3}lane\b|"
           # "drifted over the lane line", "veered across the dividing line": over the line between two lanes
+          r"\bcross(?:ed|ing|es)?\s+(?:the\s+)?(?:(?:dashed|dividing|white|broken)\s+(?:lane\s+)?|lane\s+)"
+          r"(?:line|divider|markings?|boundary)\b|"
           r"\b(?:mov|shift|drift|veer|swerv|edg|cross|wander)(?:ed|ing|es|e|s)?\s+(?:over|across)\s+(?:the\s+)?"
           r"(?:lane\s+(?:line|divider|markings?|boundary)|(?:dividing|white|dashed)\s+(?:lane\s+)?line)"),
     ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
@@ -137,24 +153,38 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
           r"lanes|driveway|alley)|\b(?:pull(?:ed|ing)\s+"
-          r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing)\s+from)\s+(?:a|an|the)\s+"
-          r"(?:\w+\s+)?(?:driveway|garage|"
-          r"parking\s+(?:lot|garage|structure|spot|space)|alley)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
+          r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing|es|e)\s+from|"
+          r"(?:came|coming|drove|driving|rolled|rolling)\s+out\s+of)\s+(?:a|an|the)\s+"
+          r"(?:[\w-]+\s+){0,2}?(?:driveway|garage|gas\s+station|"
+          r"parking\s+(?:lot|garage|structure|spot|space|area)|alley|(?:shopping\s+)?(?:center|plaza|mall)|business)"
+          r"(?!\s+in\s+reverse)|"
+          # a walker or rider out on the road from its edge, or across a named street ("rode across Koval Lane")
+          r"\bent(?:er|ered|ering|ers)\s+the\s+(?:roadway|road|street)\s+from\s+(?:the\s+|a\s+)?(?:[\w-]+\s+){0,2}?"
+          r"(?:curb|sidewalk|median|driveway|parking\s+lot)\b|"
+          r"\b(?:walk(?:ed|ing)|ran|running|rode|riding|cycl(?:ed|ing)|skat(?:ed|ing)|cut|cutting|dart(?:ed|ing))\s+"
+          r"across\s+(?:[\w.]+\s+){1,3}?(?:street|st|road|rd|avenue|ave|lane|boulevard|blvd|drive|way)\b|"
+          # crossing told by where it was not allowed: "crossed mid-block", "crossed against the light"
+          r"\bcross(?:ed|ing|es)\b[^.,;]{0,40}?(?:\bmid-?block\b|\bagainst\s+the\s+(?:light|signal|red)\b|"
+          r"\boutside\s+(?:of\s+)?(?:the|a)\s+crosswalk\b)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
           r"\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
           r"(?:of\s+traffic\s+|from\s+(?:the\s+)?(?:[\w-]+\s+){0,2}(?:curb|sidewalk|median)\s+(?:directly\s+|just\s+)?)?"
           r"in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
-          r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding)\s+(?:out\s+)?"
+          r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding|cut|cutting)\s+"
+          r"(?:out\s+)?"
           r"(?:off\s+the\s+(?:curb|sidewalk|median|(?:traffic\s+)?island)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
           r"out\s+(?:from\s+(?:between|behind)|in\s+front)|across\s+(?:the\s+)?(?:street|road|roadway|lanes?|"
           r"intersection|crosswalk))"),
-    ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+pedal)|\bsped\s+up\b|\bspeeding\s+up\b|\bincreas(?:ed|ing|es)\s+"
+    ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+(?:pedal|forward))|"
+          r"\b(?:pick(?:ed|ing|s)?\s+up|gain(?:ed|ing|s)?)\s+speed\b|\bsped\s+up\b|\bspeed(?:ing|s)\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
-          r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak"),
+          r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
+          r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
+          r"\breduc(?:ed|ing|es)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
-          r"drift(?:ed|ing)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
+          r"drift(?:ed|ing|s)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
           r"pull(?:ed|ing|s)?\s+up\s+(?:behind|beside|next\s+to|alongside)|"
@@ -169,9 +199,9 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
-    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift"),
-    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas"),
-    "c": ("slow", "decelerat", "brak"), "A": ("straight",), "Y": ("turn",),
+    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line"),
+    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
+    "c": ("slow", "decelerat", "brak", "reduc"), "A": ("straight",), "Y": ("turn",),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
@@ -189,10 +219,15 @@ _INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}
 _PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are)\s+(?:(?:already|still|actively|currently|just|slowly)\s+)?"
                           r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
 _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are)\s+(?:(?:already|still|currently|just)\s+)?"
-                               r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
-                               r"completing|conducting|negotiating)\s+(?:a|an|its|the|their|his|her)\s+"
+                               r"(?:(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
+                               r"completing|conducting|negotiating)|in\s+the\s+(?:middle|midst)\s+of|"
+                               r"(?:partway|midway|halfway)\s+(?:through|into))\s+(?:a|an|its|the|their|his|her)\s+"
                                r"(?:[\w-]+\s+)?$", re.I)
+# "abruptly stopped", "suddenly halted": a manner adverb makes a stop an event of a party on its way.
+_SUDDEN = compile_gated(r"\b(?:suddenly|abruptly|quickly|unexpectedly|immediately)\s+$", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+_NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
+_PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
 # "forcing the AV to steer left", "which caused EGO to brake": the object of the causing verb did it; no intention.
 _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|ing|s)|requir(?:ed|ing|es)|"
                      r"compell(?:ed|ing))\s+(?:(?:EGO|EGOD|it|him|her|them|the\s+[\w-]+|an?\s+[\w-]+)\s+){1,2}"
@@ -200,13 +235,14 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
-                         r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+rest|standing|"
+                         r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
                          r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
                          r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
                          # "a sedan waiting at the light ahead", "a sedan queued ahead of it": a noun's state
-                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling)\s+(?:in|at|on|for|behind|ahead)\b",
+                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+"
+                         r"(?:in|at|on|for|behind|ahead)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
@@ -238,6 +274,9 @@ class Act:
     #: Told in the progressive ("was making a right turn", "a truck merging onto the highway", "while changing
     #: lanes"): the manoeuvre was under way when the story took it up, so the party's string opens with it.
     under_way: bool = False
+    #: A stop told as something the party did on its way ("the sedan stopped", "abruptly stopped", "halted"), not
+    #: as where it stood ("a vehicle stopped behind EGO").
+    on_its_way: bool = False
 
 
 def heading_of(s: str) -> int | None:
@@ -328,10 +367,13 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     for b, e, code in sorted(spans):
         before = s[max(0, b - 40):b]
         caused = _CAUSED.search(before)
-        if _INTENT.search(before) and not caused and (not _INTENT_OK.search(before) or
-                                                      _INTENT_TO_BEGIN.search(before)):
+        # "failed to yield and turned left": a past tense after the conjunction opens a clause of its own, out of
+        # the reach of the intention or negation before it ("preparing to stop and turn" stays an intention).
+        own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
+        if _INTENT.search(before) and not caused and not own_clause and (not _INTENT_OK.search(before) or
+                                                                         _INTENT_TO_BEGIN.search(before)):
             continue
-        if _NEGATED.search(before):
+        if _NEGATED.search(before) and not own_clause:
             continue  # "did not immediately proceed"
         if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
                                             r"(?:that\s+(?:were|was|had)\s+(?:been\s+)?)?$", before, re.I):
@@ -363,8 +405,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
             rel = left[-1]  # "a person on foot crossing the street": the participle tells of the noun, not the subject
-        if (code == "h" and s[b:e].lower() == "stopped" or code == "S" and fre.match(
-                r"(?:waiting|queued|idling|stalled|parked)\b", s[b:e], re.I)) and left and \
+        # "The sedan stopped and ...": the finite verb of a subject the story already named; "a vehicle stopped
+        # in the right lane": a past participle telling where a noun stood.
+        finite = code == "h" and bool(left) and left[-1].subject and left[-1].det == "the" and \
+            not s[left[-1].end:b].strip()
+        if (code == "h" and s[b:e].lower() == "stopped" and not finite or code == "S" and fre.match(
+                r"(?:waiting|queued|idling|stalled|parked|sitting|standing)\b", s[b:e], re.I)) and left and \
                 left[-1].kind == "party" and left[-1].entity >= 0 and not s[left[-1].end:b].strip():
             # "navigated around a double-parked vehicle stopped in the right lane": a past participle right after
             # a noun is that noun's state, not the subject's stop.
@@ -405,7 +451,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 continue
             code = "d" if "left" in (side[-1][0] or side[-1][1]).lower() else "e"
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e],
-                       under_way=_in_progress(s, b, e, rel)))
+                       under_way=_in_progress(s, b, e, rel),
+                       on_its_way=code == "h" and (finite or bool(_SUDDEN.search(before)) or
+                                                   s[b:e].lower().startswith("halt"))))
     # A state "was stopped" and the "stopped" inside it are one fact; "accelerated while still in reverse" is
     # the backing up, not a speed-up forward.
     dedup: list[Act] = []

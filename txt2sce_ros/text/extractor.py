@@ -19,7 +19,8 @@ from .positions import obstacle_position, party_position
 from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
-from .sequences import collision_type, ego_sequence, moved_off_into_object, opens_under_way, prepend_modifier_acts, sequence
+from .sequences import (collision_type, ego_sequence, moved_off_into_object, opens_under_way, prepend_modifier_acts,
+                        sequence, standing_party)
 from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
 
@@ -160,18 +161,19 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # "A passenger car, traveling in the same direction, was stopped in the adjacent lane": the scene's
             # opening state is stopped; the participle before it only describes the car.
             pacts = pacts[setup_stop[0]:]
-        pacts, under_way = opens_under_way(pacts, "cdefgjF")
+        pacts, under_way = opens_under_way(pacts, "cdefgjlF")
         stopped = bool(fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued|disabled)\b",
                                   " ".join(m.mods for m in e.mentions)))
         # An oncoming party's move into the AV's lane is to its own left: its side is not the AV's.
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
-        if start == "moving" and acts[:1] in ("b", "c") and not under_way:
-            acts = "a" + acts  # speeding up or slowing is done by a party already on its way
+        if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
+            acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way
         if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5" and not under_way:
             acts = "a" + acts  # it travelled along the AV's road before turning off it
         if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \
                 not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):
             acts = "m"  # a pedestrian on the move in a collision report is crossing the AV's path (sketch.md, `m`)
+        start, acts = standing_party(d, e, pacts, start, acts, ego_actions)
         if acts.startswith("am"):
             acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:

@@ -32,6 +32,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 c = "f"
         if c == "T":
             continue
+        if c == "i" and "accelerat" in a.text.lower() and start == "moving" and (not codes or codes[-1] != "h"):
+            c = "b"  # "began to accelerate" while on its way speeds up; only from a standstill is it a start
         if c == "O":
             # Out of a parking spot at the curb: it stood, moved off, and moved into the traffic lane (left from
             # a right-hand curb, right from a left-hand one).
@@ -47,7 +49,7 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         if not codes and c == "k":  # backing away is from a standstill (sketch.md)
             start = "stopped"
         if not codes and c == "h" and not ego and not stopped:
-            if fre.search(r"\b(?:to\s+(?:a|an)\s|suddenly|abruptly|short|quickly|hard)", a.text, re.I):
+            if a.on_its_way or fre.search(r"\b(?:to\s+(?:a|an)\s|suddenly|abruptly|short|quickly|hard)", a.text, re.I):
                 codes.append("a")  # "the bus stopped suddenly", "came to a stop": an event of a party under way
             else:
                 start = "stopped"  # "a vehicle stopped behind EGO then ...": where it stood
@@ -86,6 +88,25 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     s = "".join(out)
     s = fre.sub(r"h+", "h", s)
     return start, s
+
+
+def struck_by(d: Doc, e: Entity) -> bool:
+    """Did party `e` do the contact ("a sedan stopped behind it struck its rear bumper"), as the subject of the
+    contact verb (not "EGO was struck by a sedan", not "EGO made contact with a sedan")?"""
+    if d.contact_sent is None or d.partner != e.idx:
+        return False
+    return who_for(d.contact_pos, d.ments[d.contact_sent], None, d.sents[d.contact_sent]) == e.idx
+
+
+def standing_party(d: Doc, e: Entity, told: list[Act], start: str, actions: str, ego_actions: str) -> tuple[str, str]:
+    """A party's string where the text tells no move of it: a party standing that struck the AV moved off first
+    (`i`, sketch.md: strings begin where the interaction does); one the backing AV struck, of which no motion is
+    told, stood still throughout (`stopped`, empty)."""
+    if start == "stopped" and not actions and struck_by(d, e):
+        return start, "i"
+    if not told and ego_actions.endswith("k") and d.partner == e.idx and not struck_by(d, e):
+        return "stopped", ""
+    return start, actions
 
 
 def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
