@@ -140,9 +140,12 @@ def _trie_pattern(words: list[str]) -> str:
 
 _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
-_NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
+_NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
-                             r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane-splitting" is a rider
+                             r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
+_RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
+                              r"\bfor\s+(?:a|the|its|an\s+\w+)\s+pick-?up\s*(?:[.,;]|$|\b(?:and|when|while|at|on|in)\b)|"
+                              r"\bpick-?up\s+(?:location|zone|spot|point)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
 _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
@@ -370,6 +373,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 continue  # a make is a street only after a preposition of place ("east on Lincoln Way")
             if head[0].isupper() and hl in ("van", "post", "mission", "gate", "church") and m.start() > 0:
                 continue
+            if hl in ("pickup", "pick-up") and _RIDER_PICKUP.search(s[max(0, m.start() - 30):m.end() + 30]):
+                continue  # "stopped for a passenger pickup": a robotaxi's errand, not a pickup truck
         back = _last_words(s, m.start(), 5) if hl not in ("ego", "egod") else []
         mods: list[str] = []
         det = ""

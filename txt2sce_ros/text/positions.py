@@ -182,7 +182,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
 
 
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
-                         r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b"
+                         r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
                          r"(?![^|.]{0,25}\bfrom\s+(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}lane\b)", re.I)
 _CLAUSE_END = re.compile(r"[;]|\b(?:when|while|as|but|after|before|because|until|then)\b|"
                          r",?\s+(?:and\s+)?(?:EGO|(?:the|a|an)\s+(?:other\s+)?(?!opposite\b|oncoming\b)\w+)\s+"

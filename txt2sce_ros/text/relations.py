@@ -246,7 +246,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                     not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
                 cues.append(Cue("lane", "same", (base + m.start(), base + m.end())))
         for m in _BEHIND.finditer(win):
-            if m.group(0).lower().endswith(" it") and _EGO_CLAUSE.search(win[:m.start()]):
+            if m.group(0).lower().endswith(" it") and (_EGO_CLAUSE.search(win[:m.start()]) or fre.search(
+                    r"\bEGO\s+(?:then\s+|subsequently\s+|also\s+)?$", win[:m.start()])):
                 # "... the front bumper of EGO, which had come to a stop behind it": the AV is behind the party
                 cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
                 continue
@@ -384,7 +385,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     rule = "first reading"
     backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(context(d, e)))
-    along = [c for c in cues if c.kind == "along"]
+    along = _nearest_first([c for c in cues if c.kind == "along"], d, e)
     passing = [c for c in cues if c.kind == "passing"]
     contact = next((c for c in cues if c.kind == "contact"), None)
     fore, cside, flank = (contact.value.split("/") if contact else ("", "", ""))
@@ -406,6 +407,17 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
                        context(d, e), re.I):
         # Coming up in a lane beside an AV that stood still: it came from behind.
         pos, rule = "R6", "approaching a standing AV"
+    elif pos == "R5" and d.ego_start == "stopped" and not ego_actions and not backing and contact is not None and \
+            (flank or fore == "rear" or not fore) and \
+            any(c.kind == "lane" and c.value in ("left", "right") and c.value == (cside or c.value) for c in cues) and \
+            not any(a.who == e.idx and a.code not in "abc" for a in d.acts) and not _LEVEL.search(context(d, e)) and \
+            not fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued|standing)\b",
+                           " ".join(m.mods for m in e.mentions) + " " + context(d, e)[:60], re.I):
+        # On the move in a lane beside an AV that stood still throughout, without a turn, a lane change or a start
+        # from a stop of its own, and touching the AV's side: it was passing it, so it came from behind
+        # (sketch.md: a party passing a stopped AV is R6 on the side it passed).
+        pos, rule = "R6", "passing a standing AV"
+        used.append(contact)
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
     pass_side = next((c.value for c in passing if c.value), "")
     if lanes and pass_side and all(c.value == "same" for c in lanes):

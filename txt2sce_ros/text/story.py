@@ -28,7 +28,7 @@ ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|
                          # at it; "moving toward" or "heading toward" is also said of a sideways move or one on foot)
                          r"\b(?:the\s+)?other\s+(?:way|direction)\b|"
                          r"\b(?:travel(?:l)?(?:ed|ing|s)?|driv(?:ing|es)|drove)\s+(?:directly\s+|straight\s+)?"
-                         r"towards?\s+EGO\b", re.I)
+                         r"towards?\s+EGO\b(?!'s)", re.I)  # "toward EGO's destination lane" is no run at it
 
 T = TypeVar("T")
 
@@ -406,7 +406,8 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 _PART_OF_EGO = compile_gated(r"((?:[\w-]++\s++){1,6})(?:of|on|to)\s+EGO\b")
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
-_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+\s+){1,6})")
+# "EGO's left rear." names the part at the sentence end too
+_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[^\w\s-])|$)){1,6})")
 
 
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
