@@ -39,8 +39,8 @@ def _trie(words: tuple[str, ...]) -> str:
 _CO = _trie(COMPANIES)
 #: The companies as one regex alternation (for callers that look for an operator's name).
 COMPANY_ALTERNATION = _CO
-_AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|truck|shuttle|prius|"
-            r"robotaxi|suv)")
+_AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|(?:box\s+)?truck|shuttle|"
+            r"prius|robotaxi|suv|van)")
 
 def ego_patterns(co: str) -> tuple[str, ...]:
     """Ways the narratives name the AV (the ego), with `co` the alternation of operators' names. Order matters:
@@ -51,7 +51,12 @@ def ego_patterns(co: str) -> tuple[str, ...]:
         rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
         rf"\b(?:the|a|an|our)\s+(?:{co})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
         rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
-        r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck)",
+        r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck|"
+        r"shuttle)",
+        r"\b(?:the|a|an|our)\s+(?:(?-i:[A-Z])[\w-]*(?:\.\w+)?\s+){0,3}robo-?taxi\b",
+        r"\b(?:the|our)\s+reporting\s+(?:entity's\s+)?(?:vehicle|car)\b",
+        # "the Mercedes test vehicle", "a Valeo AV test vehicle": an operator not listed, named before "test vehicle"
+        r"\b(?:the|a|an|our)\s+(?:(?-i:[A-Z])[\w-]*(?:\.\w+)?\s+){1,3}(?:(?:autonomous|av|automated)\s+)?test\s+(?:vehicle|car)\b",
         r"\b(?:the|our)\s+(?:ego\s+vehicle|robo-?taxi)\b",
         r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
         r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
@@ -147,7 +152,8 @@ CONTACT = compile_gated(
     r"came\s+into\s+contact|(?:projected|thrown|threw|flung|propelled|launched|kicked\s+up)\s+(?:[\w-]+\s+){0,4}?(?:onto|into|at|against)\s+EGO\b|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|touched|ran\s+over|running\s+over|"
-    r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|"
+    r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|scratched|nicked|"
+    r"dinged|dented|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"

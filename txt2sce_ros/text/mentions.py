@@ -203,6 +203,25 @@ def _company_key(name: str) -> str:
     return _COMPANY_ALIASES.get(key, key)
 
 
+# "V1 (our AV)", "Vehicle 1 (the Cruise AV)", "Car 1 (AV)": a numbered label the narrative gives the AV.
+_AV_LABEL = compile_gated(r"\b(?:vehicle|car|unit)\s*#?\s*([1-9])\s*\(\s*(?:the\s+|our\s+|an?\s+)?(?:[\w.-]+\s+){0,3}?"
+                          r"(?:AV|ADS|autonomous\s+vehicle|test\s+vehicle|ego|self-driving\s+vehicle|vehicle|car)\s*\)",
+                          re.I)
+
+
+def _numbered_av(t: str) -> str:
+    """The OL 316 numbering: "V2" spelled "Vehicle 2", and a label defined as the AV ("Vehicle 1 (our AV)")
+    replaced by "the AV" wherever the text uses it."""
+    if fre.search(r"\bV[1-9]\b", t):
+        t = fre.sub(r"\bV([1-9])\b", r"Vehicle \1", t)
+    m = _AV_LABEL.search(t)
+    if m:
+        n = m.group(1)
+        t = t[:m.start()] + "the AV" + t[m.end():]
+        t = fre.sub(rf"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*{n}\b(?!\s*\))", "the AV", t, flags=re.I)
+    return t
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -225,6 +244,7 @@ def normalise(text: str) -> str:
     if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
     ego_res, company_re = _name_patterns(_unknown_operator(t))
+    t = _numbered_av(t)
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
     numbered = fre.search(r"\((?:vehicle|car|v)\s*#?\s*[2-9]\)", t, re.I) is not None
@@ -269,8 +289,15 @@ def normalise(text: str) -> str:
     if "EGO" not in t:
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
         # the narrative introduces is the AV, and so is that noun with "the" afterwards.
-        first = fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
-        if first:
+        # (the subject the narrative opens with first: "The Udelv van was stopped ...")
+        first = fre.match(r"(?:the|a|an|our)\s+(?:[\w.-]+\s+){0,3}?(vehicle|car|truck|shuttle|bus|van|suv|pod|robot)\b"
+                          r"(?=\s+(?:was|is|had|has|were)\b)", t, re.I) or \
+            fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
+        if fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*1\b", t, re.I) and \
+                fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*2\b", t, re.I):
+            # "Vehicle 1 was stopped ... Vehicle 2 rear-ended Vehicle 1": the form's numbering, the AV first
+            t = fre.sub(r"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*1\b", "EGO", t, flags=re.I)
+        elif first:
             noun = first.group(1)
             t = t[:first.start()] + "EGO" + fre.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
     t = fre.sub(r"\bEGO(?:\s+EGO)+\b", "EGO", t)
@@ -550,7 +577,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                     target = e
                     break
         if target is None and m.det != "a" and m.kind == "party" and m.head in _GENERIC and \
-                not _LOCATIVE_AFTER.match(sents[m.sent][m.end:]) and not m.mods:
+                not _LOCATIVE_AFTER.match(sents[m.sent][m.end:]) and not m.mods and \
+                not _NUMBER_LABEL.match(sents[m.sent][m.end:]):  # "Vehicle 2" is the report's second vehicle
             # "the vehicle" with nothing before it to refer to: these narratives mean the AV.
             m.kind, m.category = "ego", "ego"
             prev = m

@@ -100,7 +100,7 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 _ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
-                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d.,]))\b", re.I)
+                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b", re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
 # The AV is the subject of the clause that ends in "behind it" ("EGO, which had stopped behind it", "EGO came to a
 # stop behind it"): the AV is behind. Not "EGO slowed for a motorcyclist behind it", where "it" is the AV.
@@ -121,6 +121,7 @@ _EDGE_RIDERS = ("bicycle", "scooter")
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
+_RELATIVE_LANE = compile_gated(r"\b(?:EGO|us|it|its|our|adjacent|neighbou?ring)\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
 
@@ -418,7 +419,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # (sketch.md: a party passing a stopped AV is R6 on the side it passed).
         pos, rule = "R6", "passing a standing AV"
         used.append(contact)
+    # A lane said relative to the AV ("to the left of EGO", "the adjacent lane") outranks a lane's name on the road
+    # ("the right lane of the freeway"), which says where the party is only against the AV's own lane.
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
+    beside = [c for c in lanes if c.value in ("left", "right") and _RELATIVE_LANE.search(d.text[c.span[0]:c.span[1]])]
+    if beside:
+        lanes = beside + [c for c in lanes if c not in beside]
     pass_side = next((c.value for c in passing if c.value), "")
     if lanes and pass_side and all(c.value == "same" for c in lanes):
         # "traveling behind EGO, then passed it on the right": it came up in the AV's lane and passed on that side

@@ -407,7 +407,7 @@ _PART_OF_EGO = compile_gated(r"((?:[\w-]++\s++){1,6})(?:of|on|to)\s+EGO\b")
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
 # "EGO's left rear." names the part at the sentence end too
-_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[^\w\s-])|$)){1,6})")
+_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
 
 
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
