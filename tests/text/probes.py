@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 32 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 36 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 340 of
-their 407 wordings came out right, now all.
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 389 of
+their 470 wordings came out right, now all.
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -520,6 +520,52 @@ PROBES: tuple[Probe, ...] = (
           ("reversed", "backed up", "began to reverse", "rolled backward", "switched to reverse gear",
            "started backing up", "moved backward", "reversed slowly", "began backing up"),
           _npc_actions, [("stopped", "")]),
+    Probe("a party behind moving off at the light, told the reports' ways",
+          "The Waymo AV was stopped at a red light on Mission Street with a sedan stopped behind it. When the light "
+          "turned green, the sedan {w} and struck the rear of the Waymo AV, which had not yet moved.",
+          ("began to proceed", "began to accelerate from its stop", "started to proceed", "began moving again",
+           "resumed motion", "started up again", "released its brake", "began rolling", "departed from the stop",
+           "pulled away from the light", "moved off from the stop line", "accelerated from a stop",
+           "proceeded from a stop", "took off", "began to pull forward", "started to roll forward"),
+          _npc_actions, [("stopped", "i")]),
+    Probe("a party standing ahead that the AV moving off runs into",
+          "The Waymo AV was stopped at a red light on Mission Street. When the light turned green, the Waymo AV "
+          "proceeded forward and made contact with {w}.",
+          ("a vehicle stopped ahead of it", "a stopped pickup truck", "a stationary SUV in its lane",
+           "a disabled vehicle in its lane", "a vehicle waiting to turn left ahead of it",
+           "a vehicle yielding to pedestrians ahead of it", "a vehicle that had stopped to let a passenger out",
+           "a vehicle stopped in a queue ahead", "a vehicle that was stopped for the red light ahead",
+           "the rear of a sedan that was stopped in traffic", "a sedan that remained stopped ahead of it",
+           "a sedan that had not yet moved"),
+          _npc_actions, [("stopped", "")]),
+    Probe("a party on the right moving into the AV's lane, told the reports' ways",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling in the right "
+          "lane {w} and made contact with the passenger side of the Waymo AV.",
+          ("began to move into the Waymo AV's lane", "attempted to enter the Waymo AV's lane", "moved laterally "
+           "into the Waymo AV's lane", "came over into the Waymo AV's lane", "made a lane change maneuver",
+           "executed a lane change", "performed a lane change to the left", "initiated a lane change into the lane "
+           "occupied by the Waymo AV", "shifted lanes", "darted into the Waymo AV's lane", "squeezed into the "
+           "Waymo AV's lane", "began to merge in front of the Waymo AV", "merged in front of the Waymo AV",
+           "made an abrupt lane change into the Waymo AV's lane", "changed lanes abruptly",
+           "swung into the Waymo AV's lane", "pulled into the Waymo AV's lane", "moved from the right lane into "
+           "the left lane", "entered the left lane from the right lane", "attempted to move over",
+           "began changing lanes", "started to change lanes", "began to encroach on the Waymo AV's "
+           "lane", "nosed into the Waymo AV's lane", "made an unsafe lane change to the left"),
+          _npc_actions, [("moving", "af")]),
+    Probe("a party on the cross street going straight through the junction",
+          "The Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road "
+          "on a green light. A {w} and struck the passenger side of the Zoox vehicle.",
+          ("cyclist traveling westbound on Flamingo Road rode through the intersection",
+           "cyclist traveling westbound on Flamingo Road crossed the intersection",
+           "sedan traveling westbound on Flamingo Road ran the red light",
+           "sedan traveling westbound on Flamingo Road crossed the intersection against the red light",
+           "sedan traveling westbound on Flamingo Road proceeded into the intersection",
+           "sedan traveling westbound on Flamingo Road drove through the intersection",
+           "sedan traveling westbound on Flamingo Road failed to stop at the red light",
+           "sedan traveling westbound on Flamingo Road entered the intersection",
+           "sedan approaching from the right on Flamingo Road continued straight through the intersection",
+           "motorcyclist heading west on Flamingo Road went through the intersection"),
+          _npc_actions, [("moving", "a")]),
 )
 
 

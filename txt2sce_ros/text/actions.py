@@ -59,8 +59,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b"),
+    # "began to move into EGO's lane" begins the move it names, not a start from a standstill.
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
-          r"edge|accelerate|pull\s+(?:forward|out|away))|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
+          r"edge|accelerate|pull\s+(?:forward|out|away))(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
+          r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated)\s+forward\b|"
           r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
@@ -74,6 +76,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+left\b|"
+          # "moved from the right lane into the left lane": the lane it went into names the side
+          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
+          r"(?:adjacent\s+)?left(?:most)?\s+lane\b|"
           r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|"
           r"manoeuvred|swerved|swerves|drove|drives|swung|swings|swinging|pulled|pulling|went|going)\s+"
           r"(?:out\s+|over\s+|wide\s+)?(?:into\s+)?the\s+(?:oncoming|"
@@ -98,6 +103,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
+          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
+          r"(?:adjacent\s+)?right(?:most)?\s+lane\b|"
           r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
@@ -110,7 +117,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # Onto a freeway from its ramp is a merge into the lane beside it ("entered the freeway").
     ("F", r"\benter(?:ed|ing|s)?\s+(?:onto\s+)?the\s+(?:freeway|highway|interstate|expressway|motorway)\b|"
           r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|es|e)\s+lanes?\b|\blane\s+change\b|"
-          r"\bswitch(?:ed|ing|es)?\s+lanes\b|"
+          r"\b(?:switch|shift)(?:ed|ing|es|s)?\s+lanes\b|"
+          # Any verb of motion into the AV's lane ("darted", "nosed", "squeezed", "moved laterally into EGO's lane"):
+          # the lane entered tells the manoeuvre, whatever the verb; a turn into it is the turn's end, not a change.
+          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|ran|rode|swung|cut|slid|crept)\s+(?:\w+ly\s+)?(?:over\s+|back\s+)?into\s+"
+          r"(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
+          # "attempted to move over": over, with no side told, is toward the lane beside it
+          r"\b(?:mov|shift|edg|swung|swing)(?:ed|ing|es|e|s)?\s+over\b(?!\s+(?:to\s+|toward\s+|into\s+)?(?:the\s+)?"
+          r"(?:left|right|curb|shoulder|side|far))|"
           r"\bmerg(?:ed|ing|es|e)\b|\b(?:maneuver(?:ed|ing)?|manoeuvr(?:ed|ing)|navigat(?:ed|ing)|proceed(?:ed|ing)?|"
           r"go(?:ing)?|went|drove|driving|steer(?:ed|ing))\s+around\b|\bswerv(?:ed|ing|es)\b|\bencroach(?:ed|ing|es)?\b|"
           r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing|s)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|"
@@ -199,7 +213,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
-    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line"),
+    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc"), "A": ("straight",), "Y": ("turn",),
 }
@@ -234,7 +248,8 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
                      r"to\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
-_STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
+_STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|"
+                         r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
                          r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
@@ -242,7 +257,7 @@ _STATE_STOP = compile_gated(r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+
                          r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
                          # "a sedan waiting at the light ahead", "a sedan queued ahead of it": a noun's state
                          r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+"
-                         r"(?:in|at|on|for|behind|ahead)\b",
+                         r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
                       rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"

@@ -176,6 +176,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
                 not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):
             acts = "m"  # a pedestrian on the move in a collision report is crossing the AV's path (sketch.md, `m`)
         start, acts = standing_party(d, e, pacts, start, acts, ego_actions)
+        if pos in ("R1", "R2", "R3") and e.category in ("car", "van", "truck", "bus", "motorcycle") and "m" in acts:
+            # A motor vehicle on another approach of the junction that goes across it ("crossed the intersection
+            # against the red light") travels straight along its own road; `m` is for walkers and riders crossing
+            # and for vehicles leaving a driveway or lot (sketch.md).
+            acts = fre.sub(r"a+", "a", acts.replace("m", "a"))
         if acts.startswith("am"):
             acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:
