@@ -566,6 +566,142 @@ PROBES: tuple[Probe, ...] = (
            "sedan approaching from the right on Flamingo Road continued straight through the intersection",
            "motorcyclist heading west on Flamingo Road went through the intersection"),
           _npc_actions, [("moving", "a")]),
+    # Session 11 (obstacles, the road's layout and control, the AV's own start and actions, refusals): written from
+    # the spec's definitions and the ways the companies' reports tell these facts.
+    Probe("a parked, unattended vehicle the AV struck is an obstacle",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a vehicle parked along the curb", "a parked and unoccupied SUV", "a car parked on the right side of the "
+           "street", "a parallel-parked sedan", "a vehicle that was parked at the curb", "an unattended vehicle",
+           "a stationary, unoccupied vehicle", "a legally parked pickup truck", "an empty parked car", "a vehicle "
+           "parked in a parking space", "a parked passenger vehicle", "a vehicle that was legally parked",
+           "a box truck parked in the loading zone", "the mirror of an unoccupied car", "a vehicle that was parked "
+           "and unoccupied", "a car that had been parked on the street", "a double-parked delivery van"),
+          lambda sk: ([o.category for o in sk.obstacles], len(sk.npcs), sk.collision.type),
+          (["parked_vehicle"], 0, "hit_object")),
+    Probe("a door opened into the AV's path is an obstacle; its vehicle did not move",
+          "A Zoox vehicle was traveling northbound on Koval Lane when {w}.",
+          ("the driver of a parked car opened the driver side door into the Zoox vehicle", "the occupant of a parked "
+           "vehicle opened a door into the side of the Zoox vehicle", "a passenger exiting a parked car opened the "
+           "rear door and it made contact with the Zoox vehicle", "the door of a parked car swung open and struck the "
+           "Zoox vehicle", "a parked vehicle's door was opened into the Zoox vehicle's path and made contact with it",
+           "a person in a parked SUV opened the door into the Zoox vehicle", "it was struck by the opening door of a "
+           "parked vehicle", "a car door opened into its path and struck it", "it made contact with the open door "
+           "of a parked car", "the driver of a parked sedan flung the door open and it hit the Zoox vehicle"),
+          lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]), (["door"], [])),
+    Probe("the AV meeting the curb, told by its verb",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it {w} the curb.",
+          ("mounted", "drove up onto", "jumped", "hopped", "rode up onto", "clipped", "scraped", "struck",
+           "ran up onto", "went up on", "made contact with", "rubbed against", "bumped into", "drove over"),
+          lambda sk: ([o.category for o in sk.obstacles], sk.collision.with_, sk.collision.type),
+          (["barrier"], "obs1", "hit_object")),
+    Probe("road furniture and objects in the road, by their names",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a street light", "a streetlight", "a lamp post", "a light standard", "a metal railing", "a tire in the "
+           "roadway", "a wheel stop", "a parking gate arm", "a K-rail", "a traffic signal pole", "a stop sign",
+           "a yield sign", "a parking sign", "a road closure sign", "a concrete column", "a construction barrel",
+           "a traffic barricade", "a crash cushion", "a loose tire", "a mattress in the roadway",
+           "a traffic delineator"),
+          lambda sk: [o.category for o in sk.obstacles] + [p.category for p in sk.npcs],
+          lambda w: [next(c for c, words in (("cone", ("barrel", "delineator")),
+                                            ("pole", ("light", "lamp", "pole", "sign", "column")),
+                                            ("barrier", ("railing", "wheel stop", "gate", "K-rail", "barricade",
+                                                         "cushion")),
+                                            ("debris", ("tire", "mattress"))) if any(x in w for x in words))]),
+    Probe("a sign, signal pole or stop line the AV struck is not its traffic control",
+          "A Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue when it "
+          "made contact with {w}.",
+          ("a stop sign", "a traffic signal pole", "a stop sign on the right side of the road", "the post of a "
+           "stop sign", "a traffic light pole"),
+          lambda sk: (sk.road.layout, sk.road.control, sk.signal_state), ("straight", "none", "none")),
+    Probe("scraped pavement is no obstacle",
+          "A Zoox vehicle was traveling northbound on Koval Lane when {w}.",
+          ("its undercarriage scraped the pavement", "it struck a pothole", "its front bumper scraped the driveway "
+           "apron", "its underbody made contact with the roadway at the bottom of a steep hill", "it bottomed out "
+           "on a dip in the road", "its front fascia contacted the ground", "its undercarriage made contact with a "
+           "speed bump", "its front bumper scraped the road surface", "its underside scraped the street at the "
+           "crest of the hill"),
+          lambda sk: (len(sk.obstacles), len(sk.npcs), sk.collision.with_, sk.collision.type, "npcs" in sk.missing),
+          (0, 0, None, "other", True)),
+    Probe("an obstacle's lane",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a traffic cone in the adjacent left lane", "a traffic cone in the lane to its right", "a traffic cone "
+           "in the middle of its lane", "debris on the shoulder", "a traffic cone in the left lane next to it",
+           "debris in the right lane beside it", "a ladder lying in its lane", "a parked car on its right",
+           "a vehicle parked in the bike lane", "a parked car in the parking lane", "a pole on the sidewalk",
+           "a fire hydrant at the curb", "a traffic cone placed in the lane to its left"),
+          lambda sk: [(o.position, o.lane) for o in sk.obstacles],
+          lambda w: [("R5", "left" if "left" in w else "right" if "right lane" in w or "to its right" in w else
+                      "same" if ("its lane" in w or "middle" in w) else "shoulder")]),
+    Probe("a parked vehicle on the far side of a two-way street",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("an unoccupied vehicle parked on the southbound side of Koval Lane", "a vehicle parked on the opposite "
+           "side of the street", "a car parked on the other side of the road", "a parked car facing the oncoming "
+           "direction on the opposite side of Koval Lane", "a vehicle parked along the opposite curb"),
+          lambda sk: [(o.category, o.position, o.lane) for o in sk.obstacles], [("parked_vehicle", "R7", "shoulder")]),
+    Probe("the AV's traffic control",
+          "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
+          ("at a stop sign on Koval Lane", "at the all-way stop at Koval Lane and Flamingo Road", "at a four-way "
+           "stop-controlled intersection", "at the stop line of a stop-controlled intersection", "at the signalized "
+           "intersection of Koval Lane and Flamingo Road", "at the traffic light at Koval Lane and Flamingo Road",
+           "at an uncontrolled intersection", "at a 2-way stop at Flamingo Road", "at a two-way stop at Flamingo "
+           "Road", "at a stop-sign-controlled intersection", "at the stoplight on Koval Lane", "at a stop light on "
+           "Koval Lane", "at a traffic signal on Koval Lane", "at the signal at Flamingo Road", "at an unsignalized "
+           "intersection", "at a three-way stop on Koval Lane"),
+          lambda sk: (sk.road.layout, sk.road.control),
+          lambda w: ("junction3" if "three-way" in w else "junction4",
+                     "none" if ("uncontrolled" in w or "unsignalized" in w) else
+                     "stop_sign" if "stop" in w.replace("stop light", "").replace("stoplight", "") else "signal")),
+    Probe("a place that is no junction",
+          "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
+          ("at a mid-block crosswalk on Koval Lane", "in a driveway on Koval Lane", "in a pick-up and drop-off zone",
+           "at the curb on Koval Lane", "in traffic on Koval Lane", "on Koval Lane between Flamingo Road and Harmon "
+           "Avenue", "on Koval Lane near Flamingo Road", "on [XXX] near [XXX]", "on the highway",
+           "at a marked mid-block crosswalk", "in the drive-thru lane"),
+          lambda sk: (sk.road.layout, sk.road.control, [p.category for p in sk.npcs]), ("straight", "none", ["car"])),
+    Probe("the AV standing when the interaction begins",
+          "A Zoox vehicle was {w} on Koval Lane when a sedan traveling behind it struck its rear bumper.",
+          ("stationary", "at a standstill", "stopped in traffic", "queued in traffic", "completely stopped",
+           "parked at the curb", "holding its position", "stopped and waiting", "sitting stationary", "fully "
+           "stopped", "standing still", "at a complete stop", "at rest", "motionless", "not moving"),
+          _ego, ("stopped", "")),
+    Probe("the AV moving along its lane",
+          "A Zoox vehicle was {w} on Koval Lane when a sedan traveling behind it struck its rear bumper.",
+          ("driving northbound", "proceeding northbound", "operating northbound", "heading north", "in motion",
+           "going straight", "cruising", "moving slowly", "northbound", "en route northbound", "traveling straight",
+           "continuing straight", "moving forward", "rolling forward slowly"),
+          _ego, ("moving", "a")),
+    Probe("the AV slowing",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} and a sedan traveling behind it "
+          "struck its rear bumper.",
+          ("slowed down", "decelerated", "reduced its speed", "braked", "applied its brakes", "began to slow",
+           "was slowing for traffic ahead", "reduced speed", "lowered its speed", "began decelerating",
+           "slowed for a pedestrian", "braked lightly"),
+          _ego, ("moving", "ac")),
+    Probe("the AV pulling over",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} and a sedan traveling behind it "
+          "struck its rear bumper.",
+          ("pulled over to the curb", "pulled to the right side of the road to drop off a passenger", "was pulling "
+           "over", "pulled over to pick up a passenger", "began pulling over to the curb", "pulled into a parking "
+           "spot at the curb", "moved to the curb to drop off a passenger", "was pulling to the curb"),
+          _ego, ("moving", "al")),
+    Probe("the AV backing",
+          "A Zoox vehicle was parked on Koval Lane. The Zoox vehicle {w} and struck a sedan that was stopped behind "
+          "it.",
+          ("reversed", "backed up", "was backing out of a parking space", "began reversing", "was reversing",
+           "moved in reverse", "backed out of its parking spot", "began to back up", "reversed out of a parking "
+           "space"),
+          _ego, ("stopped", "k")),
+    Probe("a party placed by where it touched the AV is no refusal",
+          "A Zoox vehicle was {w}.",
+          ("stopped on Koval Lane. A cyclist then made contact with the front of the stationary Zoox vehicle",
+           "stopped on Koval Lane. A pedestrian then made contact with the left side of the Zoox vehicle",
+           "traveling on Koval Lane when a scooter rider made contact with the right side of the Zoox vehicle",
+           "stopped on Koval Lane. A cyclist then made contact with the Zoox vehicle's rear bumper",
+           "traveling on Koval Lane when a sedan made contact with the Zoox vehicle's front bumper",
+           "traveling on Koval Lane when a sedan made contact with the Zoox vehicle",
+           "traveling on Koval Lane when the Zoox vehicle made contact with a bicyclist's back tire"),
+          lambda sk: [m for m in sk.missing if m in ("position", "actions")],
+          lambda w: [] if any(part in w for part in ("front", "rear", "side")) else ["position", "actions"]),
 )
 
 

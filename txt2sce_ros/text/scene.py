@@ -10,16 +10,17 @@ from .fastre import compile_gated
 from .lexicon import NUMBER_WORDS
 
 _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
-                       r"\btraffic\s+(?:light|signal)s?\b|"
+                       r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
+                       r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
-                       r"\b(?:all|two|four|three)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
+                       r"\b(?:all|two|four|three|\d)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
                        r"\bthe\s+light\s+turned\b|"
                        # waiting in a turn pocket: turn lanes end at a junction
                        r"\b(?:stopped|waiting|queued)\s+in\s+(?:a|the)\s+(?:dedicated\s+)?(?:left|right)[- ]turn\s+"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
-_T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\bthree-way\s+intersection\b|"
+_T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\b(?:three|3)-way\s+(?:intersection|stop)\b|"
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
@@ -40,10 +41,21 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
                       r"road|curb|driveway|oncoming|traffic)", re.I)
 _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
-                     r"\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
+                     r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady)\s+(?:green|red|yellow|amber)\b|\b(?:green|red|yellow|amber)\s+"
                      r"(?:turn\s+)?arrow\b", re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
+# A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
+_NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
+                            r"\bno\s+traffic\s+(?:control|signals?|lights?)\b", re.I)
+# Road furniture the AV struck that happens to be a sign or a signal's pole tells of no control and no junction
+# ("made contact with a stop sign", "the post of a stop sign", "a traffic signal pole"); a place that is no junction
+# though it has a crosswalk ("a mid-block crosswalk").
+_NOT_CONTROL = compile_gated(r"\b(?:stop\s+sign|traffic\s+(?:light|signal)|signal|light)\s+(?:pole|post|standard|mast|"
+                             r"arm|box|cabinet)s?\b|\b(?:post|pole|base)\s+of\s+(?:a|an|the)\s+(?:stop\s+sign|traffic\s+"
+                             r"(?:light|signal))\b|\b(?:contact\s+with|struck|striking|hit|hitting|collided\s+with|"
+                             r"into|knocked\s+(?:down|over))\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?stop\s+sign\b|"
+                             r"\bmid-?\s?block\s+(?:pedestrian\s+)?crosswalk\b", re.I)
 _ONE_WAY = compile_gated(r"\bone[- ]way\b", re.I)
 _TWO_WAY = compile_gated(r"\boncoming\b|\bopposite\s+direction\b|\bopposing\s+(?:lane|traffic|direction)\b|"
                       r"\bon-?coming\b|\bopposite\s+lane\b|\btraveling\s+the\s+wrong\s+way\b", re.I)
@@ -111,7 +123,8 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     intersections the AV was only near do not count."""
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
-        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", s))))
+        cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", _NOT_CONTROL.sub(
+            " ", s)))))
         if fre.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
@@ -139,11 +152,13 @@ def road(t: str, *, junction: bool) -> RoadInfo:
         layout = "straight"
     else:
         layout = "unknown"
-    t = _DISPLAYED.sub(" ", t)
+    t = _NOT_CONTROL.sub(" ", _DISPLAYED.sub(" ", t))
     if _STOP_SIGN.search(t):
         control = "stop_sign"
     elif _SIGNAL.search(t) and layout.startswith("junction"):
         control = "signal"
+    elif _NO_CONTROL.search(t) and layout.startswith("junction"):
+        control = "none"
     elif layout.startswith("junction") or layout == "roundabout":
         control = "unknown"
     else:
