@@ -141,6 +141,9 @@ OBSTACLE_HEADS: dict[str, str] = {
     "tree": "other", "branch": "other", "cable": "other", "wire": "other", "bin": "other", "trash can": "other",
     "dumpster": "other", "cart": "other", "shopping cart": "other", "skateboard": "other", "box": "other",
     "bag": "other", "basketball hoop": "other",
+    "street light": "pole", "streetlight": "pole", "lamp post": "pole", "lamppost": "pole", "light standard": "pole",
+    "light post": "pole", "wheel stop": "barrier", "parking block": "barrier", "crash cushion": "barrier",
+    "attenuator": "barrier", "tire": "debris", "tyre": "debris",
 }
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
 PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
@@ -156,6 +159,9 @@ CONTACT = compile_gated(
     r"dinged|dented|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
+    # climbing a curb or median is contact with it ("mounted the curb", "drove up onto the median")
+    r"(?:mounted|mounting|jumped|jumping|hopped|hopping|(?:drove|driving|rode|riding|ran|running|went|going)\s+up\s+"
+    r"on(?:to)?)(?=\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}(?:curb|kerb|median|island|sidewalk|divider)s?\b)|"
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")

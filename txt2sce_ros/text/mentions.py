@@ -419,6 +419,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 break
             mods.insert(0, wl)
         mod_text = " ".join(mods)
+        if hl in ("tire", "tyre") and (det == "the" or _OWN_PART.search(mod_text)):
+            continue  # "its right front tire": a part of a vehicle; "a tire in the roadway" is an object
         kind, cat = _category(head, mod_text)
         count = 1
         if kind == "group" and not det and mod_text and _NUMBERS.get(mod_text.split()[0]) and hl in _COUNTED_GROUPS:
@@ -440,6 +442,11 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 cat = "van"
             det, mod_text = prev.det, (prev.mods + " " + prev.head).strip()
             start = prev.start
+        elif out and out[-1].kind == "obstacle" and kind == "obstacle" and gap.strip() == "":
+            # "a metal railing", "a plastic crate": the last noun names the object, the first its material
+            prev = out.pop()
+            det, mod_text = prev.det, (prev.mods + " " + prev.head).strip()
+            start = prev.start
         else:
             start = m.start() - sum(len(w) + 1 for w in mods)
         pre = s[max(0, start - 60):max(0, start)]
@@ -451,6 +458,7 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     return out
 
 
+_OWN_PART = compile_gated(r"\b(?:front|rear|back|left|right|driver|passenger|spare|its|their|his|her)\b", re.I)
 _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
                    r"\s*(?:[\w-]+\s+){0,2}$", re.I)
 _AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is)?\s*(?:double[- ])?parked\b", re.I)
