@@ -6,6 +6,8 @@ import bisect
 import re
 
 from . import fastre as fre
+from .fastre import compile_gated
+from .lexicon import CARDINALS
 from .mentions import Entity
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
 
@@ -268,11 +270,32 @@ def _onto_av_street(d: Doc, ctx: str) -> bool:
     return bool(street and m and m.group(1).strip().lower() == street)
 
 
+# An object's lane told relative to the AV's ("a cone in the adjacent left lane", "debris in the lane to its right",
+# "in the left lane next to it"): a lane named without such a word may be the AV's own.
+_OBJECT_NEXT_LANE = compile_gated(r"\b(?:in|into|within)\s+the\s+(?:adjacent\s+(left|right)\s+lane|(left|right)[- ]"
+                                  r"adjacent\s+lane|lane\s+to\s+(?:its|the|EGO's)\s+(left|right)|(left|right)\s+lane\s+"
+                                  r"(?:next\s+to|beside|adjacent\s+to)\s+(?:it|EGO)\b)", re.I)
+# An object on the far side of a two-way street ("parked on the opposite side of the street", "along the opposite
+# curb"; a heading opposite the AV's, "parked on southbound 36th Avenue"): beside the oncoming lane.
+_FAR_SIDE = compile_gated(r"\b(?:opposite|other|far)\s+(?:side|curb)\b", re.I)
+_SIDE_HEADING = compile_gated(r"\b(?:on|along)\s+(?:the\s+)?(north|south|east|west)bound\b", re.I)
+
+
 def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> tuple[str, str]:
     ctx = context(d, e)
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     cat = "door" if e.idx in d.doors else e.category
-    if cat in ("barrier",) and fre.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + ctx, re.I):
+    own = ctx.split(" | ")[0]  # what the first mention itself says of its place
+    next_lane = _OBJECT_NEXT_LANE.search(own)
+    told = _SIDE_HEADING.search(own)
+    ego_heading = heading(d, -1)
+    far = bool(_FAR_SIDE.search(own)) or (told is not None and ego_heading is not None and
+                                          (CARDINALS[told.group(1).lower()] - ego_heading) % 360 == 180)
+    if far and cat != "door":
+        return "R7", "shoulder"
+    if next_lane:
+        lane = next(g for g in next_lane.groups() if g).lower()
+    elif cat in ("barrier",) and fre.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + ctx, re.I):
         lane = "left"
     elif fre.search(r"\bon\s+the\s+divider|\bon\s+the\s+median", ctx, re.I):
         lane = "left"
