@@ -402,6 +402,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 continue
             if hl in ("pickup", "pick-up") and _RIDER_PICKUP.search(s[max(0, m.start() - 30):m.end() + 30]):
                 continue  # "stopped for a passenger pickup": a robotaxi's errand, not a pickup truck
+        if PARTY_HEADS.get(hl) == "pedestrian" and _IN_VEHICLE.match(after):
+            continue  # "a person in a parked SUV opened the door": an occupant, no one on foot
         back = _last_words(s, m.start(), 5) if hl not in ("ego", "egod") else []
         mods: list[str] = []
         det = ""
@@ -458,6 +460,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     return out
 
 
+_IN_VEHICLE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:sitting\s+|seated\s+)?(?:in|inside)\s+(?:a|an|the)\s+"
+                            r"(?:[\w-]+\s+){0,2}?(?:car|vehicle|suv|sedan|truck|van|minivan|pickup|taxi|cab|bus)\b", re.I)
 _OWN_PART = compile_gated(r"\b(?:front|rear|back|left|right|driver|passenger|spare|its|their|his|her)\b", re.I)
 _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
                    r"\s*(?:[\w-]+\s+){0,2}$", re.I)

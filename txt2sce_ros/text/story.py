@@ -41,7 +41,9 @@ BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+suppleme
 
 
 _DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:[\w'-]+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
-                   r"\b|\bdooring\b", re.I)
+                   r"\b|\bdooring\b|\bdoors?\b[^.]{0,40}?\b(?:swung|flew|popped|came)\s+open\b", re.I)
+# "the (open) door of a parked car": the vehicle named right after the door owns it.
+_OF_OWNER = compile_gated(r"^\s*(?:\w+\s+){0,3}?of\s+(?:a|an|the|its|their)\s*$", re.I)
 
 
 _AROUND = compile_gated(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
@@ -287,13 +289,19 @@ def add_doors(d: Doc) -> None:
     """"opened a rear door into the side of the AV": a door obstacle, owned by the latest vehicle named before."""
     for i, s in enumerate(d.sents):
         for m in _DOOR.finditer(s):
-            owners = [x for x in d.ments[i] if x.kind == "party" and x.start < m.start() and x.entity >= 0]
+            door_at = m.start() + m.group(0).lower().index("door")
+            owners = [x for x in d.ments[i] if x.kind == "party" and x.start > door_at and x.entity >= 0 and
+                      _OF_OWNER.match(s[door_at + 4:x.start])][:1] or \
+                [x for x in d.ments[i] if x.kind == "party" and x.start < m.start() and x.entity >= 0]
             if not owners:
                 owners = [x for j in range(max(0, i - 2), i) for x in d.ments[j] if x.kind == "party" and x.entity >= 0]
-            if not owners:
-                continue
-            owner = owners[-1].entity
             idx = len(d.ents)
+            # "a car door opened into its path": a vehicle's door whose vehicle the text does not name apart (the
+            # door stands for it)
+            if not owners and not fre.search(r"\b(?:car|vehicle|truck|van|suv|taxi|cab)\s+doors?\b",
+                                             s[max(0, door_at - 12):door_at + 5], re.I):
+                continue
+            owner = owners[-1].entity if owners else idx
             ment = Mention(sent=i, start=m.start(), end=m.end(), kind="obstacle", head="door", category="other",
                            det="a", mods="", subject=False, entity=idx)
             ent = Entity(idx=idx, kind="obstacle", category="other", heads={"door"}, mentions=[ment])
