@@ -194,7 +194,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         # A party standing still throughout that the AV, moving forward, ran into stood in its path: both its
         # manoeuvre (none) and its place (ahead, in the AV's lane: the first reading) are told.
         in_path = start == "stopped" and not acts and ego_start == "moving" and "k" not in ego_actions
-        if not known and not pacts and not in_path and (e.idx == d.partner or d.partner is None):
+        # The part of the AV it touched (its front, rear, a side) tells where the party was: a place a reader can
+        # tell, so no refusal (sketch.md: `position` is missing only when the place cannot be told).
+        touched = any(c.kind == "contact" and any(c.value.split("/")[:2]) for c in placed.seen)
+        if not known and not pacts and not in_path and not touched and (e.idx == d.partner or d.partner is None):
             # Only the party the conflict is about can leave a scenario unbuildable: a bystander the text does
             # not place still gets its best reading (sketch.md: refuse only what is truly missing).
             missing += ["position", "actions"]
