@@ -50,7 +50,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
           r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
-          r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel\s+)?parking\s+maneuver"),
+          r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel\s+)?parking\s+maneuver|"
+          # to the roadside to let a passenger on or off: pulling over
+          r"\b(?:pull(?:ed|ing|s)?|mov(?:ed|ing|es|e)|steer(?:ed|ing|s)?)\s+(?:over\s+)?to\s+the\s+(?:curb|(?:right\s+)?side\s+of\s+the\s+(?:road|"
+          r"street))\b(?=[^.]{0,30}\b(?:drop|pick|let|load|unload|board|park)|[^.]{0,4}$)"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
           r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
@@ -194,7 +197,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
           r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
-          r"\breduc(?:ed|ing|es)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
+          r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
@@ -208,14 +211,14 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
-    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park"),
+    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side"),
     "h": ("stop", "halt", "standstill", "yield", "rest"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
-    "c": ("slow", "decelerat", "brak", "reduc"), "A": ("straight",), "Y": ("turn",),
+    "c": ("slow", "decelerat", "brak", "reduc", "speed"), "A": ("straight",), "Y": ("turn",),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
@@ -251,7 +254,7 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|"
                          r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
-                         r"yielding|idling)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
+                         r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
                          r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
@@ -376,7 +379,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 continue  # an earlier (more specific) phrase already covers this text
             spans.append((m.start(), m.end(), code))
     for m in _STATE_STOP.finditer(s):
-        if not any(m.start() < e and m.end() > b for b, e, _ in spans) or "stop" in m.group(0).lower():
+        # (its own words win where they hold "stop", or deny a move: "was not moving")
+        if not any(m.start() < e and m.end() > b for b, e, _ in spans) or "stop" in m.group(0).lower() or \
+                "not moving" in m.group(0).lower():
             spans.append((m.start(), m.end(), "S"))
     out: list[Act] = []
     for b, e, code in sorted(spans):

@@ -200,8 +200,9 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
-        elif last.code == "i" and not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
+        elif last.code == "i" and not last.under_way and not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
             stopped, prefix = True, [last]  # "moved off on a green light": no run told before it, it stood
+            # ("was moving forward", told in progress, is a run along its lane)
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
             if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
