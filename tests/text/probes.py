@@ -693,7 +693,7 @@ PROBES: tuple[Probe, ...] = (
           _ego, ("stopped", "k")),
     Probe("a party placed by where it touched the AV is no refusal",
           "A Zoox vehicle was {w}.",
-          ("stopped on Koval Lane. A cyclist then made contact with the front of the stationary Zoox vehicle",
+          ("stopped on Koval Lane. A cyclist then made contact with the front of the Zoox vehicle",
            "stopped on Koval Lane. A pedestrian then made contact with the left side of the Zoox vehicle",
            "traveling on Koval Lane when a scooter rider made contact with the right side of the Zoox vehicle",
            "stopped on Koval Lane. A cyclist then made contact with the Zoox vehicle's rear bumper",
