@@ -10,7 +10,10 @@ of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out r
 (`test_probes.py` holds that). Session 11 added 36 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
 parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 389 of
-their 470 wordings came out right, now all.
+their 470 wordings came out right, now all. Four sets of whole scenes came with them (a party beside, ahead or behind
+the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
+OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
+vehicle or its role): 137 of their 159 narratives read right on 39a178f, now all.
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -64,7 +67,340 @@ _CATEGORIES = {
 
 _AV_STOPPED = "The Waymo AV was stopped at a red light on Mission Street at 16th Street. "
 
+def _partner_position(sk: Sketch) -> object:
+    return next(((p.position, p.lane) for p in sk.npcs if p.id == sk.collision.with_), None)
+
+
+def _scenes(name: str, want: Callable[[Sketch], object], cases: tuple[tuple[str, object], ...]) -> Probe:
+    """A probe of whole narratives, each with its own reading: scenes told as different operators tell them."""
+    table = dict(cases)
+    return Probe(name, "{w}", tuple(table), want, table.__getitem__)
+
+
 PROBES: tuple[Probe, ...] = (
+    _scenes('a party beside, ahead or behind, told as each operator tells it', _position, (
+            ("A Cruise autonomous vehicle was traveling northbound on Valencia Street in the right lane. A sedan "
+             "traveling in the left lane overtook the Cruise AV and then merged right, making contact with the front "
+             "left bumper of the Cruise AV.", [('R6', 'left')]),
+            ("A Cruise autonomous vehicle was traveling northbound on Valencia Street in the right lane. A sedan "
+             "passed the Cruise AV on the left and then merged right, making contact with the front left bumper of the"
+             " Cruise AV.", [('R6', 'left')]),
+            ("A Zoox vehicle was traveling in the right lane of Koval Lane. A vehicle approaching from behind in the "
+             "left lane changed lanes to the right and sideswiped the Zoox vehicle.", [('R6', 'left')]),
+            ("The Waymo AV was traveling southbound on Rural Road in the right lane when a passenger car in the left "
+             "lane, traveling at a higher speed, made a right lane change and made contact with the driver side of the"
+             " Waymo AV.", [('R6', 'left')]),
+            ("The Waymo AV was traveling southbound on Rural Road in the right lane when a passenger car that was "
+             "traveling in the left lane behind the Waymo AV made a right lane change and made contact with the rear "
+             "driver side of the Waymo AV.", [('R6', 'left')]),
+            ("A Zoox vehicle was stopped at a red light in the right lane of Koval Lane. A box truck in the left lane "
+             "made a wide right turn and its trailer made contact with the left side of the Zoox vehicle.",
+             [('R5', 'left')]),
+            ("A Zoox vehicle was stopped at a red light in the right lane of Koval Lane. A box truck to the left of "
+             "the Zoox vehicle made a wide right turn and contacted the Zoox vehicle's front left corner.",
+             [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the middle lane. A taxi in the lane to the "
+             "left of the Cruise AV swerved into the Cruise AV's lane and struck the Cruise AV's driver side mirror.",
+             [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street. A vehicle traveling alongside the Cruise AV on "
+             "its left veered right and scraped the left side of the Cruise AV.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street. A vehicle on the Cruise AV's left side veered "
+             "right and scraped the Cruise AV.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the number two lane. A vehicle in the number "
+             "one lane changed lanes to the right and struck the Cruise AV's left front fender.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the #2 lane. A vehicle in the #1 lane changed "
+             "lanes to the right and struck the Cruise AV's left front fender.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the rightmost lane. A vehicle in the center "
+             "lane changed lanes to the right and struck the Cruise AV's left front fender.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the right lane. A vehicle in the middle lane "
+             "changed lanes to the right and struck the Cruise AV's left front fender.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the middle lane. A vehicle in the leftmost "
+             "lane changed lanes to the right and struck the Cruise AV's left front fender.", [('R5', 'left')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the middle lane. A vehicle in the rightmost "
+             "lane changed lanes to the left and struck the Cruise AV's right front fender.", [('R5', 'right')]),
+            ("The Cruise AV was traveling eastbound on Folsom Street in the left lane. A vehicle in the center lane "
+             "changed lanes to the left and struck the Cruise AV's right front fender.", [('R5', 'right')]),
+            ("The Zoox vehicle was stopped in the right lane waiting to turn right. A sedan went around the Zoox "
+             "vehicle on the left and then turned right in front of it, making contact with the front left of the Zoox"
+             " vehicle.", [('R6', 'left')]),
+            ("The Apple vehicle was traveling in the left lane of Lawrence Expressway. A pickup truck traveling in the"
+             " right lane sped up, passed the Apple vehicle and then cut into its lane, clipping its front right "
+             "bumper.", [('R6', 'right')]),
+            ("The Waymo AV was traveling in the left lane when a vehicle in the right lane, which was slightly ahead "
+             "of the Waymo AV, began changing lanes to the left and made contact with the Waymo AV's passenger side.",
+             [('R5', 'right')]),
+            ("The Waymo AV was traveling in the right lane when a vehicle in the left lane slightly behind the Waymo "
+             "AV began changing lanes to the right and made contact with the Waymo AV's driver side.",
+             [('R6', 'left')]),
+            ("The Waymo AV was traveling in the right lane when a vehicle in the left lane, slightly behind the Waymo "
+             "AV, began changing lanes to the right and made contact with the Waymo AV's driver side.",
+             [('R6', 'left')]),
+            ("The Cruise AV was traveling on Mission Street. A motorcyclist splitting lanes on the Cruise AV's left "
+             "side made contact with the Cruise AV's left mirror.", [('R6', 'left')]),
+            ("A Zoox test vehicle was traveling eastbound on Harmon Avenue in the right lane when a passenger vehicle "
+             "traveling in the left lane made an unsafe lane change into the Zoox vehicle's lane. The passenger "
+             "vehicle's right rear made contact with the Zoox vehicle's front left.", [('R5', 'left')]),
+            ("A Zoox test vehicle was traveling eastbound on Harmon Avenue in the right lane. A passenger vehicle "
+             "traveling eastbound in the left lane began to merge into the Zoox lane, and its right side contacted the"
+             " Zoox vehicle's left rear.", [('R6', 'left')]),
+            ("A Zoox test vehicle was stopped at a red light in the right lane. A box truck positioned to the left of "
+             "the Zoox vehicle began a right turn and contacted the left side of the Zoox vehicle.",
+             [('R5', 'left')]),
+            ("The Zoox vehicle was travelling southbound on Folsom Street when a vehicle on its left side moved into "
+             "its lane and made contact with the Zoox vehicle.", [('R5', 'left')]),
+            ("The Zoox vehicle was traveling in the number 2 lane of Las Vegas Boulevard. A motorcycle traveling in "
+             "the number 1 lane moved into the number 2 lane and struck the Zoox vehicle's left side.",
+             [('R5', 'left')]),
+            ("A Cruise autonomous vehicle (\"Cruise AV\"), operating in driverless autonomous mode, was traveling "
+             "westbound on Geary Boulevard in the right lane. A Toyota Camry in the left lane moved into the Cruise "
+             "AV's lane, making contact with the driver side of the Cruise AV.", [('R5', 'left')]),
+            ("A Cruise autonomous vehicle (\"Cruise AV\"), operating in autonomous mode, was traveling northbound "
+             "on Van Ness Avenue. A vehicle traveling in the adjacent lane to the left of the Cruise AV drifted "
+             "into the Cruise AV's lane and made contact with the Cruise AV's driver side mirror.", [('R5', 'left')]),
+            ("A Cruise autonomous vehicle (\"Cruise AV\"), operating in autonomous mode, was stopped in the right lane "
+             "of Market Street. A vehicle traveling in the left lane made a right turn from the left lane across the "
+             "Cruise AV's path and made contact with the front bumper of the Cruise AV.", [('R5', 'left')]),
+            ("A Cruise autonomous vehicle (\"Cruise AV\"), operating in autonomous mode, was traveling on Market "
+             "Street. A vehicle approaching from behind on the Cruise AV's left overtook it and made contact with "
+             "the driver side of the Cruise AV.", [('R6', 'left')]),
+            ("A Cruise autonomous vehicle (\"Cruise AV\"), operating in autonomous mode, was traveling on Market "
+             "Street. A Prius in the lane to its left, traveling slightly behind the Cruise AV, changed lanes and "
+             "struck the left rear door of the Cruise AV.", [('R6', 'left')]),
+            ("On May 4, 2022 at 3:10 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+             "California was in a collision involving a passenger car on Geary Boulevard. The Waymo AV was traveling "
+             "westbound on Geary Boulevard in the right lane. A passenger car traveling westbound in the adjacent left"
+             " lane initiated a lane change to the right, and the front passenger side of the passenger car made "
+             "contact with the rear driver side of the Waymo AV.", [('R6', 'left')]),
+            ("On May 4, 2022 at 3:10 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+             "California was in a collision involving a passenger car on Geary Boulevard. The Waymo AV was traveling "
+             "westbound on Geary Boulevard. A passenger car that was traveling westbound to the left of the Waymo AV "
+             "initiated a lane change to the right, and the passenger side of the passenger car made contact with the "
+             "driver side of the Waymo AV.", [('R5', 'left')]),
+            ("On May 4, 2022 at 3:10 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix, Arizona was "
+             "in a collision involving a passenger car. The Waymo AV was stopped in the right turn lane at a red "
+             "light. A passenger car in the adjacent through lane to the left of the Waymo AV made a right turn from "
+             "the through lane and made contact with the front driver side of the Waymo AV.", [('R5', 'left')]),
+            ("On May 4, 2022 at 3:10 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix, Arizona was "
+             "in a collision involving a pickup truck. The Waymo AV was stopped facing north at a red light. The "
+             "pickup truck, which had been stopped to the left of the Waymo AV, proceeded forward and turned right in "
+             "front of the Waymo AV, making contact with the front bumper of the Waymo AV.", [('R5', 'left')]),
+            ("An Apple test vehicle in autonomous mode was traveling in the right lane of Stevens Creek Boulevard. A "
+             "vehicle in the left lane merged into the Apple vehicle's lane, striking the Apple vehicle's front left "
+             "fender.", [('R5', 'left')]),
+            ("The Pony.ai vehicle was traveling in the middle lane of Fremont Boulevard in autonomous mode. A vehicle "
+             "from the left lane changed lanes into the Pony.ai vehicle's lane and the rear of that vehicle made "
+             "contact with the front of the Pony.ai vehicle.", [('R5', 'left')]),
+            ("The WeRide AV was traveling straight in lane 2. A sedan in lane 1 made a right lane change and hit the "
+             "left side of the WeRide AV.", [('R5', 'left')]),
+            ("A Nuro vehicle was traveling eastbound on Bellaire Boulevard in the right lane. A pickup truck that was "
+             "passing the Nuro vehicle on the left cut back into the right lane and struck the front left of the Nuro "
+             "vehicle.", [('R6', 'left')]),
+            ("The Mercedes-Benz test vehicle was traveling in the right lane on Interstate 280. A vehicle traveling in"
+             " the left lane next to the test vehicle moved right and its right side made contact with the test "
+             "vehicle's left side.", [('R5', 'left')]),
+            ("The Apple vehicle was traveling in the left lane of El Camino Real. A vehicle traveling in the right "
+             "lane changed lanes into the Apple vehicle's lane and made contact with the front right of the Apple "
+             "vehicle.", [('R5', 'right')]),
+            ("The Apple vehicle was stopped at a red light. A vehicle pulled up on the right side of the Apple vehicle"
+             " and, while turning right, made contact with the Apple vehicle's right rear.", [('R6', 'right')]),
+            ("The Apple vehicle was stopped at a red light. A vehicle pulled up alongside the Apple vehicle on the "
+             "right and, while turning right, made contact with the Apple vehicle's right front bumper.",
+             [('R6', 'right')]),
+            ("The Apple test vehicle was traveling straight. A bicycle on its right side moved left into its path and "
+             "made contact with the Apple vehicle's passenger side.", [('R5', 'right')]),
+            ("The Apple test vehicle was traveling straight on Stevens Creek. A cyclist riding in the bike lane made a"
+             " left turn in front of the Apple vehicle and was struck.", [('R5', 'right')]),
+            ("The AV was traveling in the right lane when a vehicle in front of the AV stopped abruptly and the AV "
+             "rear-ended it.", [('R5', 'same')]),
+            ("The AV was traveling in the right lane. The vehicle ahead braked suddenly and the AV made contact with "
+             "its rear bumper.", [('R5', 'same')]),
+            ("The AV was traveling in the right lane. The lead vehicle braked hard and the AV struck it.",
+             [('R5', 'same')]),
+            ("The AV was stopped in traffic. The vehicle in front of the AV reversed and struck the AV's front bumper.",
+             [('R5', 'same')]),
+            ("The AV was stopped in traffic. The car ahead rolled backward and struck the AV's front bumper.",
+             [('R5', 'same')]),
+            ("The AV was stopped in traffic behind a box truck. The box truck began to back up and struck the front of"
+             " the AV.", [('R5', 'same')]),
+            ("The AV was stopped at a red light when it was struck from behind by a sedan.", [('R6', 'same')]),
+            ("The AV was stopped at a red light when a sedan collided with the rear of the AV.", [('R6', 'same')]),
+            ("The AV was slowing for traffic when the following vehicle failed to stop and struck the AV.",
+             [('R6', 'same')]),
+            ("The AV was slowing for traffic when the vehicle behind it failed to stop and struck the AV.",
+             [('R6', 'same')]),
+            ("The AV was traveling in the middle lane when a vehicle in the right lane attempted to pass the AV and "
+             "made contact with the AV's right side.", [('R6', 'right')]),
+            ("The AV was stopped at the curb when a vehicle traveling in the lane to its left struck its left mirror.",
+             [('R6', 'left')]),
+            ("The AV was double-parked for a passenger pickup when a passing vehicle struck its left mirror.",
+             [('R6', 'left')]),
+            ("The AV was stopped in the right lane for a pickup when a box truck passing in the adjacent lane clipped "
+             "its left mirror.", [('R6', 'left')]),
+            ("The AV was traveling in the right lane when a vehicle entered its lane from the right shoulder, striking"
+             " the AV's right side.", [('R5', 'right')]),
+            ("The AV was traveling in the right lane when a vehicle merged from the on-ramp on the right and struck "
+             "the AV's passenger side.", [('R5', 'right')]),
+            ("The AV was traveling in the left lane when a vehicle in the center lane merged left and struck the AV's "
+             "passenger side.", [('R5', 'right')]),
+            ("The Cruise AV was stopped at a red light at the intersection of Market Street and 5th Street. A vehicle "
+             "next to the Cruise AV on the left made a right turn in front of the Cruise AV and struck its front "
+             "bumper.", [('R5', 'left')]),
+            ("The Cruise AV was stopped at a red light at the intersection of Market Street and 5th Street. A vehicle "
+             "on the Cruise AV's left side turned right across its path and made contact with its front bumper.",
+             [('R5', 'left')]),
+            ("The Cruise AV was waiting at the intersection of Market Street and 5th Street. A taxi that was also "
+             "waiting at the light, to the left of the Cruise AV, made a right turn when the light turned green and "
+             "made contact with the Cruise AV's front left fender.", [('R5', 'left')]),
+            ("The Waymo AV was proceeding straight through the intersection when a vehicle traveling in the same "
+             "direction in the left lane made a right turn in front of the Waymo AV, and the Waymo AV made contact "
+             "with its passenger side.", [('R5', 'left')]),
+            ("The Waymo AV was proceeding straight through the intersection when a vehicle approaching from behind in "
+             "the left lane made a right turn in front of the Waymo AV, and the Waymo AV made contact with its "
+             "passenger side.", [('R6', 'left')]),
+            ("The Waymo AV was traveling northbound on 3rd Street and entered the intersection at Oak Street. A "
+             "northbound vehicle on its left made a right turn onto Oak Street and collided with the front left of the"
+             " Waymo AV.", [('R5', 'left')]),
+            ("The Waymo AV was traveling northbound on 3rd Street and entered the intersection at Oak Street. Another "
+             "northbound vehicle, to the left of the Waymo AV, turned right onto Oak Street and collided with the "
+             "Waymo AV.", [('R5', 'left')]),
+            ("The Zoox vehicle was turning left at the intersection from the right of two left turn lanes. A vehicle "
+             "turning left from the leftmost turn lane drifted into the Zoox vehicle's lane and contacted its driver "
+             "side.", [('R5', 'left')]),
+            ("The Zoox vehicle was turning left at the intersection. A vehicle turning left beside it on its left "
+             "drifted into the Zoox vehicle's lane and contacted its driver side.", [('R5', 'left')]),
+            ("The Zoox vehicle was turning left at the intersection. A vehicle that was turning left alongside it in "
+             "the adjacent turn lane to its left cut into its path and contacted its left side.", [('R5', 'left')]),
+            ("The Cruise AV was traveling in the right lane on Geary Boulevard approaching the intersection with "
+             "Masonic Avenue. A vehicle in the left lane behind the Cruise AV sped up and turned right in front of the"
+             " Cruise AV at the intersection, striking the Cruise AV's front left.", [('R6', 'left')]),
+    )),
+    _scenes('a party at or near a junction, by its road and heading', _position, (
+            ("The Waymo AV was making an unprotected left turn from northbound Main Street onto Oak Street when an "
+             "oncoming sedan traveling straight through the intersection made contact with the front passenger side of"
+             " the Waymo AV.", [('R2', None)]),
+            ("The Cruise AV was stopped at the stop sign on Main Street at the intersection with Oak Street. After "
+             "stopping, the Cruise AV proceeded into the intersection. A vehicle approaching from the left on Oak "
+             "Street did not stop and struck the driver side of the Cruise AV.", [('R1', None)]),
+            ("The Cruise AV was stopped at the stop sign on Main Street at the intersection with Oak Street. A vehicle"
+             " on Oak Street approaching from the Cruise AV's right did not stop and struck the passenger side of the "
+             "Cruise AV.", [('R3', None)]),
+            ("The Cruise AV was proceeding straight through the intersection of Main Street and Oak Street on a green "
+             "light when a vehicle on the cross street ran the red light from the right and struck the passenger side "
+             "of the Cruise AV.", [('R3', None)]),
+            ("The Waymo AV was turning right from Main Street onto Oak Street. A vehicle traveling on Oak Street from "
+             "the left, heading toward the Waymo AV's destination lane, made contact with the Waymo AV's front.",
+             [('R1', None)]),
+            ("The Zoox vehicle was stopped at a red light on Main Street. A vehicle on the opposite side of the "
+             "intersection made a left turn and cut the corner, striking the front of the Zoox vehicle.",
+             [('R2', None)]),
+            ("The AV was traveling north on Main Street when a vehicle exited a parking lot on the right side of the "
+             "road and struck the AV's passenger side.", [('R5', 'right')]),
+            ("The AV was traveling north on Main Street when a vehicle pulled out of a driveway on the left and struck"
+             " the AV's driver side.", [('R5', 'left')]),
+            ("The AV was traveling north on Main Street when a vehicle pulled out of a driveway to the AV's right and "
+             "struck the AV.", [('R5', 'right')]),
+            ("The AV was traveling north on Main Street when a vehicle that was parked along the left curb pulled out "
+             "and struck the AV.", [('R5', 'left')]),
+            ("The AV was stopped at a red light on northbound Main Street at the intersection of Oak Street, in the "
+             "left-turn lane. A vehicle in the adjacent left turn lane to the right of the AV turned left and drifted "
+             "into the AV's lane, striking its passenger side.", [('R5', 'right')]),
+            ("The AV was in the right of two left-turn lanes turning left from Main Street onto Oak Street. A vehicle "
+             "turning left from the left turn lane to the left of the AV drifted into the AV's path and made contact "
+             "with the AV's driver side.", [('R5', 'left')]),
+            ("The Waymo AV was traveling eastbound on Main Street and was making a right turn onto Oak Street. A "
+             "cyclist riding eastbound in the bike lane to the right of the Waymo AV continued straight and made "
+             "contact with the Waymo AV's passenger side.", [('R5', 'right')]),
+            ("The Waymo AV was traveling eastbound on Main Street and was making a right turn onto Oak Street. A "
+             "cyclist approaching from behind in the bike lane continued straight and made contact with the Waymo AV's"
+             " passenger side.", [('R6', 'right')]),
+            ("The Waymo AV was traveling eastbound on Main Street and was making a left turn onto Oak Street. A "
+             "westbound cyclist on Main Street continued straight through the intersection and made contact with the "
+             "Waymo AV.", [('R2', None)]),
+            ("The Waymo AV was traveling eastbound on Main Street and was making a left turn onto Oak Street. A "
+             "pedestrian crossing Oak Street in the crosswalk made contact with the Waymo AV.", [('R4', None)]),
+            ("The Waymo AV was traveling northwest on El Camino Real and entered the intersection at Westborough "
+             "Boulevard on a green light. A vehicle traveling northeast on Westborough Boulevard entered the "
+             "intersection against a red light and struck the driver side of the Waymo AV.", [('R1', None)]),
+            ("The Waymo AV was traveling northwest on El Camino Real and entered the intersection at Westborough "
+             "Boulevard on a green light. A vehicle traveling southwest on Westborough Boulevard entered the "
+             "intersection against a red light and struck the passenger side of the Waymo AV.", [('R3', None)]),
+            ("The Waymo AV was traveling northwest on El Camino Real and entered the intersection at Westborough "
+             "Boulevard on a green light. A vehicle traveling southeast on El Camino Real turned left in front of the "
+             "Waymo AV.", [('R2', None)]),
+            ("The Waymo AV was stopped facing northeast on Folsom Street at a red light. A vehicle traveling northeast"
+             " on Folsom Street behind the Waymo AV struck its rear.", [('R6', 'same')]),
+            ("The Cruise AV was traveling northeast bound on Folsom Street. A vehicle traveling southwest bound on "
+             "Folsom Street crossed into the Cruise AV's lane and struck its front.", [('R7', 'left')]),
+            ("The Cruise AV was traveling north on Valencia Street. A cyclist traveling south on Valencia Street in "
+             "the bike lane on the other side of the road swerved and struck the Cruise AV.", [('R7', 'left')]),
+            ("The Zoox vehicle was traveling westbound on Harmon Avenue approaching Koval Lane. A vehicle traveling "
+             "southbound on Koval Lane failed to stop at the red light and struck the right side of the Zoox vehicle.",
+             [('R3', None)]),
+            ("The Zoox vehicle was traveling westbound on Harmon Avenue approaching Koval Lane. A vehicle traveling "
+             "northbound on Koval Lane failed to stop at the red light and struck the left side of the Zoox vehicle.",
+             [('R1', None)]),
+            ("The Waymo AV was traveling south on 2nd Avenue when a vehicle exiting a parking garage on the west side "
+             "of the street pulled out and struck the Waymo AV.", [('R5', 'right')]),
+            ("The Waymo AV was traveling north on 2nd Avenue when a vehicle exiting a parking garage on the west side "
+             "of the street pulled out and struck the Waymo AV.", [('R5', 'left')]),
+    )),
+    _scenes("the party struck, in the forms' numbering and other operators' words", _partner_position, (
+            ("V1 (our AV) was traveling southbound in lane 2. V2 was traveling southbound in lane 1. V2 changed lanes "
+             "into lane 2 and the right side of V2 struck the left side of V1.", ('R5', 'left')),
+            ("Vehicle 1 (AV) was stopped at a red light in the #1 lane. Vehicle 2 was stopped behind Vehicle 1. When "
+             "the light turned green, Vehicle 2 moved forward and rear-ended Vehicle 1.", ('R6', 'same')),
+            ("Our AV was proceeding straight in the middle lane when the vehicle in the right lane made an unsafe lane"
+             " change to the left, hitting our AV on the right front door.", ('R5', 'right')),
+            ("The subject vehicle was traveling eastbound in the rightmost lane. The other vehicle, traveling "
+             "eastbound in the adjacent lane to the left, attempted to make a right turn across the subject vehicle's "
+             "lane and collided with the subject vehicle's left front.", ('R5', 'left')),
+            ("The test vehicle was travelling in the left lane at approximately 25 mph when a Honda Civic in the right"
+             " lane sped up, overtook the test vehicle and merged in front of it, striking the front right bumper of "
+             "the test vehicle.", ('R6', 'right')),
+            ("While the AV was stopped at the intersection waiting for the light, a white Toyota on its left side "
+             "attempted a right turn in front of the AV and made contact with the AV's front left corner.",
+             ('R5', 'left')),
+            ("The AutoX vehicle was traveling in autonomous mode in the second lane from the right. A vehicle on the "
+             "left side of the AutoX vehicle suddenly changed lanes to the right and made contact with the AutoX "
+             "vehicle's left side.", ('R5', 'left')),
+            ("The Pony.ai vehicle was stopped at a red light. A motorcycle came up from behind between the Pony.ai "
+             "vehicle and the vehicle to its left and scratched the left side of the Pony.ai vehicle.",
+             ('R6', 'left')),
+            ("The Nuro vehicle was traveling northbound in the right lane. A Ford F-150 traveling in the lane to the "
+             "left of the Nuro vehicle began to drift right and made contact with the left side mirror of the Nuro "
+             "vehicle.", ('R5', 'left')),
+            ("The Argo AV was travelling in the center lane. A sedan, which had been traveling behind the Argo AV in "
+             "the left lane, changed lanes to the right and struck the Argo AV's left rear quarter panel.",
+             ('R6', 'left')),
+            ("The Motional vehicle was stopped in traffic. A scooter rider traveling between the Motional vehicle and "
+             "parked cars on the right struck the Motional vehicle's right mirror.", ('R6', 'right')),
+            ("The Lyft AV was driving in the rightmost lane. A vehicle to its left and slightly ahead turned right "
+             "across its path, and the AV struck the vehicle's passenger side.", ('R5', 'left')),
+            ("The Aurora vehicle was traveling in the second lane from the left on I-45. A tractor-trailer in the "
+             "leftmost lane moved right into the Aurora vehicle's lane and the trailer contacted the Aurora vehicle's "
+             "driver side.", ('R5', 'left')),
+            ("The Apple test vehicle was merging onto the freeway from an on-ramp when a vehicle in the right lane of "
+             "the freeway, to the left of the test vehicle, struck the test vehicle's left side.", ('R5', 'left')),
+            ("The Mercedes test vehicle was waiting to turn left. A car behind it in the same lane pulled out to the "
+             "left to go around it and hit its left rear corner.", ('R6', 'same')),
+    )),
+    Probe("the AV named by its operator, its vehicle or its role",
+          "{W} was stopped at a red light on Main Street. A sedan traveling behind {w} failed to stop and struck the "
+          "rear of {w}.",
+          ("the Kodiak truck", "the Nuro R2", "the Beep shuttle", "the May Mobility vehicle",
+           "the Motional IONIQ            5", "the Zoox robotaxi", "the Aurora truck", "the Tesla Robotaxi",
+           "the ADS-equipped vehicle", "the            Ghost vehicle", "the Waymo Jaguar I-PACE",
+           "the Cruise Bolt", "the autonomous shuttle", "the automated            vehicle", "the ego vehicle",
+           "the reporting vehicle", "the Gatik box truck", "the Argo test vehicle", "the Lyft AV",
+           "the Pony.ai test car", "the WeRide robotaxi", "the AutoX vehicle", "the DiDi vehicle",
+           "the Apollo vehicle", "the Mercedes-Benz vehicle", "the Toyota Research Institute vehicle",
+           "the TRI            vehicle", "the Volvo XC90 test vehicle", "the Nvidia test vehicle",
+           "the Qualcomm test vehicle", "the            Valeo test vehicle", "the Plus truck",
+           "the TuSimple truck", "the Einride pod", "the Avride robot", "the            Serve robot",
+           "the Starship robot", "the Cruise Origin", "the Wayve vehicle", "the Vay vehicle",
+           "the            Imagry vehicle", "the Applied Intuition test vehicle", "the Woven Planet vehicle"),
+          lambda sk: (sk.ego.start, [(p.category, p.position, p.lane) for p in sk.npcs]),
+          ("stopped", [("car", "R6", "same")])),
     Probe("lane change into the AV's lane from the right",
           "A Zoox vehicle was traveling northbound on Koval Lane in the left lane. A sedan traveling northbound in the "
           "right lane {w} and made contact with the Zoox vehicle.",

@@ -36,7 +36,8 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
 from .positions import exit_street
-from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase
+from .lexicon import CARDINALS
+from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger(?:'s)?)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
@@ -50,6 +51,9 @@ _LANE_CUES = compile_gated(
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
     r"\bto\s+its\s+(left|right)\b|"
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
+    # "to the rear left of EGO", "to the left and slightly behind EGO": a side and an end together
+    r"\bto\s+(?:the\s+)?(?:rear|front)\s+(left|right)\s+of\s+EGO\b|"
+    r"\bto\s+(?:the\s+)?(left|right)\s+and\s+(?:slightly\s+|just\s+)?(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO\b|"
     r"\bbetween\s+(?:the\s+)?EGO\s+and\s+(?:the\s+)?(curb|sidewalk|shoulder|median|parked\s+cars)\b|"
     r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b|"
     # "a taxi parked at the curb ahead": the curb is on the right unless a side is named
@@ -67,7 +71,7 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
                         r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|rear[- ]?ended\s+by|struck\s+from\s+behind\s+by|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
-                        r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
+                        r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|to\s+(?:the\s+)?rear\s+(?:left|right)\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
                         r"from\s+behind|"
                         # came up beside the AV, tried to get ahead of it, went faster than it: it was behind
                         r"(?:rode|riding|ride|came|coming|come|pulled|pulling|drove|driving|moved|moving)\s+up\s+"
@@ -80,14 +84,15 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
-                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got)\s+past|"
+                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got|"
+                         r"accelerat\w+|sped|speeding|raced|racing|zoomed|pulled|pulling)\s+past|"
                          # squeezing between the AV and the curb, filtering through queued traffic: a pass
                          r"squeez\w*\s+(?:between|past|by|through)|filter\w*\s+(?:between|past|through)|"
                          # riding on between a standing AV and the curb or parked cars (place() keeps it to a
                          # standing AV: beside a moving one it may be alongside)
                          r"(?P<between>(?:rode|riding|ride|traveling|travelling|driving|drove|moving|going|went)\s+"
                          r"(?:\w+\s+){0,2}between\s+EGO\s+and)|"
-                         r"(?:go|going|went|get|getting|got|come|came|coming|drove|driving|maneuver\w*|manoeuvr\w*|"
+                         r"(?:go|going|went|get|getting|got|come|came|coming|drive|drove|driving|maneuver\w*|manoeuvr\w*|"
                          r"steer\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          # "a sedan that was also going around": the same pass as the traffic told before it
@@ -121,6 +126,9 @@ _EDGE_RIDERS = ("bicycle", "scooter")
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
+_COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
+                              r"(?:street|road|roadway|block|(?:(?-i:[A-Z0-9])[\w-]*\s+){1,3}(?:street|st|avenue|ave|"
+                              r"boulevard|blvd|road|rd|way|drive|dr|lane|ln))\b", re.I)
 _RELATIVE_LANE = compile_gated(r"\b(?:EGO|us|it|its|our|adjacent|neighbou?ring)\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
@@ -242,6 +250,13 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue  # read against the AV's own lane above
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
+        for m in _COMPASS_SIDE.finditer(win):
+            # "a vehicle exiting a garage on the west side of the street": west is the left of a northbound AV
+            ego_h = heading(d, -1)
+            if ego_h is not None:
+                rel = (CARDINALS[m.group(1).lower()] - ego_h) % 360
+                if rel in (90, 270):
+                    cues.append(Cue("lane", "right" if rel == 90 else "left", (base + m.start(), base + m.end())))
         for m in _SAME_LANE.finditer(win):
             if not _INTO.search(win[max(0, m.start() - 25):m.start()]) and \
                     not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
