@@ -1038,6 +1038,30 @@ PROBES: tuple[Probe, ...] = (
            "traveling on Koval Lane when the Zoox vehicle made contact with a bicyclist's back tire"),
           lambda sk: [m for m in sk.missing if m in ("position", "actions")],
           lambda w: [] if any(part in w for part in ("front", "rear", "side")) else ["position", "actions"]),
+    Probe("an AV standing at a light that turned green stood at a red",
+          "A Zoox vehicle was stopped at the intersection of Koval Lane and Flamingo Road. {W} and a sedan traveling "
+          "behind it struck its rear bumper.",
+          ("when the light turned green, the Zoox vehicle proceeded", "after the signal turned green, the Zoox "
+           "vehicle began to move", "the light then turned green", "once the traffic light changed to green, the "
+           "Zoox vehicle moved forward", "the signal cycled to green and the Zoox vehicle started to proceed",
+           "when its light turned green, the Zoox vehicle began to proceed", "the traffic signal subsequently "
+           "turned green"),
+          lambda sk: (sk.ego.start, sk.road.control, sk.signal_state), ("stopped", "signal", "red")),
+    Probe("the moving AV's green, told in more ways",
+          "A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road {w} "
+          "when a sedan traveling eastbound on Flamingo Road struck its driver side.",
+          ("on a protected green arrow", "with a green traffic signal", "after the light turned green", "on a green "
+           "signal", "with a steady green light", "on a green ball", "on a circular green", "while its light was "
+           "green", "with the green light"),
+          lambda sk: (sk.road.control, sk.signal_state), ("signal", "green")),
+    Probe("the AV turning into or out of a driveway or lot: no junction",
+          "A Zoox vehicle {w} when a sedan traveling behind it struck its rear bumper.",
+          ("was turning right into a driveway", "was turning left into a parking lot entrance", "was exiting a "
+           "parking lot and turning right onto Koval Lane", "was turning left out of a driveway onto Koval Lane",
+           "was making a right turn into a gas station", "was turning right into the driveway of a grocery store",
+           "was turning left into an alley"),
+          lambda sk: (sk.road.layout, sk.ego.actions[-1:]),
+          lambda w: ("straight", "d" if "left" in w else "e")),
 )
 
 

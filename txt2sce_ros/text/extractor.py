@@ -232,7 +232,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     r = road(scene, junction=junction)
     if r.layout == "unknown":
         missing.append("road")
-    sig = signal_state(t, layout=r.layout, control=r.control)
+    sig = signal_state(t, layout=r.layout, control=r.control, ego_start=ego_start)
     env = environment(t)
     for slot, spans in scene_spans(t, r, env, sig).items():
         ev.spans(slot, spans)

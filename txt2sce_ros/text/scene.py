@@ -42,8 +42,9 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"road|curb|driveway|oncoming|traffic)", re.I)
 _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
-                     r"\b(?:solid|flashing|steady)\s+(?:green|red|yellow|amber)\b|\b(?:green|red|yellow|amber)\s+"
-                     r"(?:turn\s+)?arrow\b", re.I)
+                     r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
+                     r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
+                     r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b", re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
@@ -191,7 +192,12 @@ def lane_count(t: str) -> int | None:
 _STANDING = r"(?:stopped|waiting|stationary|idle|idling|halted|queued|at\s+(?:a\s+)?(?:standstill|rest))"
 
 
-def signal_state(t: str, *, layout: str, control: str) -> str:
+# A light that turned green was red before it: an AV that stood when the interaction began stood at that red.
+_TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
+                              r"went|cycled)\s+(?:to\s+)?green\b", re.I)
+
+
+def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving") -> str:
     """The AV's light when its actions begin."""
     if not layout.startswith("junction") and layout != "roundabout":
         return "none"
@@ -199,6 +205,8 @@ def signal_state(t: str, *, layout: str, control: str) -> str:
         return "none"
     if control != "signal":
         return "unknown"
+    if ego_start == "stopped" and _TURNED_GREEN.search(t):
+        return "red"  # sketch.md: "an AV stopped at a red light that moves off on green has red"
     if fre.search(rf"\bEGO(?:D)?\b[^.]{{0,60}}\b(?:{_STANDING}|stop)\b[^.]{{0,30}}\bred\b|\bred\s+light\b[^.]{{0,40}}"
                  rf"\bEGO\b[^.]{{0,20}}\b{_STANDING}\b|\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
         return "red"
