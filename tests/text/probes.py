@@ -1062,6 +1062,17 @@ PROBES: tuple[Probe, ...] = (
            "was turning left into an alley"),
           lambda sk: (sk.road.layout, sk.ego.actions[-1:]),
           lambda w: ("straight", "d" if "left" in w else "e")),
+    Probe("an object in the AV's lane that it went around took part",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it slowed behind {w} and began to change lanes to "
+          "the left. A sedan traveling in the left lane struck its driver side.",
+          ("a double-parked vehicle", "a double-parked delivery truck", "a vehicle double-parked in its lane",
+           "a parked garbage truck blocking its lane", "a box truck that was double parked", "an unattended box "
+           "truck in its lane", "an illegally parked car in its lane", "a delivery van parked in the travel lane",
+           "a dumpster in the road", "debris in its lane", "a traffic cone in its lane", "a fallen tree branch in its "
+           "lane", "a car that was double-parked ahead of it", "a vehicle parked in its lane"),
+          lambda sk: ([(o.position, o.lane) for o in sk.obstacles], [(p.position, p.lane) for p in sk.npcs],
+                      sk.ego.actions),
+          ([("R5", "same")], [("R5", "left")], "acf")),
 )
 
 

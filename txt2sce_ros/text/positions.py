@@ -306,13 +306,14 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
             lane = "left"
     elif fre.search(r"\bon\s+the\s+right\b|\bright\s+side\b", ctx, re.I) and cat == "parked_vehicle":
         lane = "shoulder"
-    elif fre.search(r"\b(?:in|on)\s+(?:its|the|EGO's)\s+lane|\bin\s+the\s+(?:middle|road|roadway)|\bahead\b", ctx,
-                   re.I):
+    elif fre.search(r"\b(?:in|on|blocking|obstructing|within)\s+(?:its|the|EGO's)\s+(?:own\s+|travel\s+)?lane|"
+                    r"\bin\s+the\s+(?:middle|road|roadway)|\bahead\b", ctx, re.I):
         lane = "same"
-    elif e.kind == "party" and e.parked and not fre.search(r"double", " ".join(m.mods for m in e.mentions)):
-        lane = "shoulder"
+    elif e.kind == "party" and e.parked and not fre.search(r"double", " ".join(m.mods for m in e.mentions) + own):
+        lane = "shoulder"  # (a double-parked vehicle stands in a travel lane)
     else:
-        lane = side_named(ctx) if fre.search(r"\b(?:to|on)\s+the\s+(?:left|right)\b", ctx, re.I) else "same"
+        lane = (side_named(ctx) or "same") if fre.search(r"\b(?:to|on)\s+the\s+(?:left|right)\b", ctx, re.I) else \
+            "same"
     if cat == "door":
         owner = d.ents[d.doors[e.idx]]
         oc = context(d, owner) + " " + full
