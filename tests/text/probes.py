@@ -1073,6 +1073,13 @@ PROBES: tuple[Probe, ...] = (
           lambda sk: ([(o.position, o.lane) for o in sk.obstacles], [(p.position, p.lane) for p in sk.npcs],
                       sk.ego.actions),
           ([("R5", "same")], [("R5", "left")], "acf")),
+    Probe("the AV named by its operator and a vehicle noun, then by the noun alone",
+          "The {w} was stopped at a red light on Koval Lane when a sedan traveling behind the {w} struck the {w}'s "
+          "rear bumper.",
+          ("May shuttle", "Beep shuttle", "Aurora truck", "Kodiak autonomous truck", "Nuro R2", "Kodiak "
+           "Driver-equipped truck", "Zoox robotaxi", "Navya shuttle", "Gatik box truck", "Nuro delivery pod"),
+          lambda sk: (sk.ego.start, [(p.category, p.position, p.lane) for p in sk.npcs], sk.collision.type),
+          ("stopped", [("car", "R6", "same")], "rear_end")),
 )
 
 

@@ -94,7 +94,7 @@ def _name_patterns(operator: str | None) -> tuple[list[re.Pattern[str]], re.Patt
     return _NAME_RES[operator]
 
 
-_FIRST_EGO_NOUN = compile_gated(r"\b(?:a|an|the)\s+(?:[A-Z][\w.-]*\s+){1,3}(shuttle|Prius|robotaxi)\b")
+_FIRST_EGO_NOUN = compile_gated(r"\b(?:[Aa]n?|[Tt]he)\s+[A-Z][\w.-]*\s+(?:[\w.-]+\s+){0,2}?(shuttle|Prius|robotaxi|truck|R2|pod)\b")
 _UPPER_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 _ALPHA_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
 _NEGATED_NP = compile_gated(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
