@@ -54,6 +54,8 @@ class Evaluation:
     #: Complete gold reports (empty `missing`) and those whose conflict a seed would reproduce (`conflict_exact`).
     complete: list[str] = field(default_factory=list)
     conflict_ok: list[str] = field(default_factory=list)
+    #: For each complete report whose conflict is not reproduced: the parts it misses (`conflict_misses`).
+    conflict_missed: Counter[str] = field(default_factory=Counter)
     over_refused: list[str] = field(default_factory=list)  # complete in gold, `missing` in the prediction
     under_refused: list[str] = field(default_factory=list)  # incomplete in gold, buildable in the prediction
 
@@ -159,6 +161,8 @@ def compare(gold: Sketch, pred: Sketch, ev: Evaluation) -> None:
             ev.over_refused.append(rid)
         elif conflict_exact(gold, pred):
             ev.conflict_ok.append(rid)
+        else:
+            ev.conflict_missed.update(conflict_misses(gold, pred))
     elif not pred.missing:
         ev.under_refused.append(rid)
 
@@ -167,6 +171,23 @@ def _party_key(p: Party | Obstacle | None) -> tuple[object, ...] | None:
     if p is None:
         return None
     return (p.category, p.position, p.lane, getattr(p, "actions", None))
+
+
+def conflict_misses(gold: Sketch, pred: Sketch) -> list[str]:
+    """The parts of the conflict the prediction gets wrong (empty when `conflict_exact`): where a report fails."""
+    out = [name for name, g, p in (("AV start", gold.ego.start, pred.ego.start),
+                                   ("AV actions", gold.ego.actions, pred.ego.actions),
+                                   ("layout", gold.road.layout, pred.road.layout)) if g != p]
+    gw, pw = gold.collision.with_, pred.collision.with_
+    gp, pp = (gold.party(gw) if gw else None), (pred.party(pw) if pw else None)
+    if (gp is None) != (pp is None) or (gp is not None and pp is not None and type(gp) is not type(pp)):
+        out.append("collision party: none, or an NPC for an obstacle")
+    elif gp is not None and pp is not None:
+        out += [f"collision party {name}" for name, g, p in (
+            ("category", gp.category, pp.category), ("position", gp.position, pp.position),
+            ("lane", gp.lane, pp.lane), ("actions", getattr(gp, "actions", None), getattr(pp, "actions", None)))
+            if g != p]
+    return out
 
 
 def conflict_exact(gold: Sketch, pred: Sketch) -> bool:
@@ -206,6 +227,9 @@ def format_diagnostics(ev: Evaluation, by_source: dict[str, Evaluation] | None =
     action-string errors, and the main slots per source."""
     lines = [f"Conflict reproduced exactly (collision party category/position/lane/actions + AV start/actions + "
              f"layout): {len(ev.conflict_ok)}/{len(ev.complete)} complete reports = {ev.conflict_rate:.1%}",
+             "  missed parts (a report can miss several): "
+             + (", ".join(f"{k} {n}" for k, n in sorted(ev.conflict_missed.items(), key=lambda kv: (-kv[1], kv[0])))
+                or "none"),
              f"Over-refusals (complete in gold, `missing` predicted): {len(ev.over_refused)}"
              + (f"  {', '.join(ev.over_refused[:6])}" if ev.over_refused else ""),
              f"Under-refusals (incomplete in gold, predicted buildable): {len(ev.under_refused)}"
