@@ -10,10 +10,11 @@ of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out r
 (`test_probes.py` holds that). Session 11 added 36 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
 parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 389 of
-their 470 wordings came out right, now all. Four sets of whole scenes came with them (a party beside, ahead or behind
+their 470 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
-vehicle or its role): 137 of their 159 narratives read right on 39a178f, now all.
+vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
+AV there): 147 of their 176 narratives read right on 39a178f, now all.
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -383,6 +384,50 @@ PROBES: tuple[Probe, ...] = (
              "the freeway, to the left of the test vehicle, struck the test vehicle's left side.", ('R5', 'left')),
             ("The Mercedes test vehicle was waiting to turn left. A car behind it in the same lane pulled out to the "
              "left to go around it and hit its left rear corner.", ('R6', 'same')),
+    )),
+    _scenes('a party using the opposing lane, passing through or beside the AV at a junction', _position, (
+            ("The Cruise AV was stopped at a red light at the intersection of Mission Street and 16th Street. A "
+             "vehicle driving in the opposing lane to get around the queue of traffic turned right in front of the "
+             "Cruise AV and struck its front left corner.", [('R6', 'left')]),
+            ("The Cruise AV was stopped at a red light at the intersection of Mission Street and 16th Street. A "
+             "vehicle traveling on the wrong side of the road to bypass the line of stopped cars made contact with the"
+             " Cruise AV's front left bumper.", [('R6', 'left')]),
+            ("The Cruise AV was stopped at a red light at the intersection. A motorcycle using the oncoming lane to "
+             "pass the stopped traffic swerved back and struck the Cruise AV's left mirror.", [('R6', 'left')]),
+            ("The Waymo AV was traveling through the intersection. A vehicle on its left that was traveling in the "
+             "same direction made a left turn and its rear struck the Waymo AV's front left.", [('R5', 'left')]),
+            ("The Waymo AV was proceeding through the intersection when a vehicle that had been traveling next to it "
+             "on the left made a sudden right turn in front of the Waymo AV.", [('R5', 'left')]),
+            ("The Zoox vehicle was traveling through the intersection on a green light. A vehicle in the adjacent left"
+             " lane that was also proceeding through the intersection drifted right and sideswiped the Zoox vehicle.",
+             [('R5', 'left')]),
+            ("The Zoox vehicle was stopped at the intersection waiting to turn right. A vehicle approached from behind"
+             " on the left and attempted to turn right from the through lane, making contact with the Zoox vehicle's "
+             "front left corner.", [('R6', 'left')]),
+            ("The Zoox vehicle was traveling westbound and entered the intersection. A westbound vehicle to its left "
+             "entered the intersection at the same time and turned right across the Zoox vehicle's path.",
+             [('R5', 'left')]),
+            ("The Waymo AV was traveling northbound on Main Street and entered the intersection at Oak Street on a "
+             "green light. A vehicle passing through the intersection from the left struck the driver side of the "
+             "Waymo AV.", [('R1', None)]),
+            ("The Waymo AV was traveling northbound on Main Street and entered the intersection at Oak Street on a "
+             "green light. An eastbound vehicle on Oak Street drove past the stop sign without stopping and struck the"
+             " Waymo AV.", [('R1', None)]),
+            ("The Waymo AV was stopped at a red light. A vehicle in the left lane passed through the intersection and "
+             "then swerved right, striking the front left of the Waymo AV.", [('R5', 'left')]),
+            ("The Cruise AV was traveling in the right lane. A vehicle in the left lane, passing by at speed, swerved "
+             "into the Cruise AV's lane and struck the Cruise AV's front left fender.", [('R6', 'left')]),
+            ("The Cruise AV was traveling in the right lane. A pedestrian passing in front of the Cruise AV from the "
+             "right curb was struck.", [('R5', 'right')]),
+            ("The Zoox vehicle was traveling in the right lane. An oncoming vehicle passed the Zoox vehicle and "
+             "clipped its left mirror.", [('R7', 'left')]),
+            ("The Zoox vehicle was traveling on Main Street. A vehicle going past the parked cars on the left side of "
+             "the street pulled into the Zoox vehicle's lane ahead of it and braked, and the Zoox vehicle struck its "
+             "rear.", [('R5', 'left')]),
+            ("The AV was stopped at a stop sign. A vehicle passing through the intersection on the cross street from "
+             "the right struck the front of the AV.", [('R3', None)]),
+            ("The AV was stopped at a stop sign. A vehicle that went past the AV's stop line and then reversed struck "
+             "the front of the AV.", [('R5', 'same')]),
     )),
     Probe("the AV named by its operator, its vehicle or its role",
           "{W} was stopped at a red light on Main Street. A sedan traveling behind {w} failed to stop and struck the "

@@ -80,6 +80,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         side_m = fre.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
         if side_m:
             return "R5", side_m.group(1).lower(), True
+        if (side := side_named(ctx)) and not fre.search(r"\bbehind\b|\bfrom\s+the\s+rear\b", ctx, re.I):
+            return "R5", side, True  # "on its left ... traveling in the same direction": beside it, on that side
     if oncoming or rel == 180:
         if junction:
             return "R2", None, True

@@ -53,6 +53,7 @@ _LANE_CUES = compile_gated(
     r"\b(?:on|along)\s+the\s+(left|right)\s+(?:side\s+)?of\s+EGO\b|"
     # "to the rear left of EGO", "to the left and slightly behind EGO": a side and an end together
     r"\bto\s+(?:the\s+)?(?:rear|front)\s+(left|right)\s+of\s+EGO\b|"
+    r"\bfrom\s+(?:behind|the\s+rear)\s+on\s+the\s+(left|right)\b|"
     r"\bto\s+(?:the\s+)?(left|right)\s+and\s+(?:slightly\s+|just\s+)?(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO\b|"
     r"\bbetween\s+(?:the\s+)?EGO\s+and\s+(?:the\s+)?(curb|sidewalk|shoulder|median|parked\s+cars)\b|"
     r"\b(bike\s+lane|bicycle\s+lane|sidewalk|parking\s+lane|curb\s+lane|curbside|shoulder|median)\b|"
@@ -126,6 +127,15 @@ _EDGE_RIDERS = ("bicycle", "scooter")
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
+_PASSED_OTHER = compile_gated(r"(?:[\w-]+\s+){0,2}?(?:pass(?:ed|ing|es)?|past|around)\s+(?:(?:through|into|across|over|"
+                              r"beyond)\s+(?:the\s+|a\s+)?(?:intersection|crosswalk|junction|light|signal|stop|crossing|"
+                              r"gate|roundabout)|(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+"
+                              r"EGO|(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b))", re.I)
+_PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pass|passing|overtake|overtaking|bypass|"
+                            r"bypassing|get\w*\s+ahead\s+of|cut\w*)\s+(?:around|past|by|through)?\s*(?:the|a)\s+"
+                            r"(?:long\s+)?(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b"
+                            r"(?:\s+(?:of\s+)?(?:traffic|vehicles|cars))?|\bbypass(?:ed|ing)?\s+(?:the\s+)?traffic\b)",
+                            re.I)
 _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
                               r"(?:street|road|roadway|block|(?:(?-i:[A-Z0-9])[\w-]*\s+){1,3}(?:street|st|avenue|ave|"
                               r"boulevard|blvd|road|rd|way|drive|dr|lane|ln))\b", re.I)
@@ -269,19 +279,27 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue
             cues.append(Cue("along", "behind", (base + m.start(), base + m.end())))
         for m in _AHEAD.finditer(win):
-            if _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]) or \
+            # (the move read on the words as told: `win` has its turn words blanked)
+            if _MOVED_TO.search(s[a + max(0, m.start() - 45):a + m.start()]) or \
                     _INTO_LANE.search(win[max(0, m.start() - 40):m.start()]):
                 continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
             if fre.match(r"\s+(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+EGO)",
-                         win[m.end():]):
-                continue  # "changed lanes to pass the bus": the AV passing something, not the party passing it
+                         win[m.end():]) or _PASSED_OTHER.match(win, m.start()):
+                # "changed lanes to pass the bus", "going past the parked cars", "passed through the intersection":
+                # passing something else, or through a place, is no pass of the AV
+                continue
             if m.group("between") and d.ego_start != "stopped":
                 continue
             cues.append(Cue("passing", _side(m.group("side")) or "", (base + m.start(), base + m.end())))
+        for m in _PASS_QUEUE.finditer(win):
+            # "to get around the queue of traffic", "passing the stopped cars": it came up from behind the AV's queue
+            cues.append(Cue("passing", "", (base + m.start(), base + m.end())))
         for m in ONCOMING.finditer(win):
-            path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane", win[m.end():], re.I)
+            # "the oncoming lane", "the wrong side of the road": a path it drove on, not a direction it came from
+            path = fre.match(r"\s*(?:traffic\s+|travel\s+)?lane|\s+of\s+(?:the\s+)?(?:road|street|roadway)\b",
+                             win[m.end():], re.I)
             cues.append(Cue("direction", "opposite-lane" if path else "opposite", (base + m.start(), base + m.end())))
     if e.idx == d.partner and d.contact_sent is not None:
         fore, _ = ego_contact_part(d)
