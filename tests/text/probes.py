@@ -1134,6 +1134,15 @@ PROBES: tuple[Probe, ...] = (
           lambda w: (["scooter" if "unicycl" in w else "car" if any(x in w for x in ("motorist", "Uber", "cruiser",
                                                                                        "golf")) else "truck"],
                      "npc1", [])),
+    Probe("a place on a street told without a street's name, and no place at all (refused for `road`)",
+          "The Waymo AV {w} when a sedan rear-ended it.",
+          ("was stopped in a queue of vehicles", "was waiting behind a line of cars", "was stopped to drop off a "
+           "passenger", "was stopped for a passenger pickup", "was backing out of a parking space", "was parked in "
+           "a parking space", "was stopped at the curb", "was stopped in a bike lane", "was picking up a passenger",
+           "was stopped", "was in motion", "was in autonomous mode"),
+          lambda sk: ("road" in sk.missing, sk.road.layout),
+          lambda w: (True, "unknown") if w in ("was stopped", "was in motion", "was in autonomous mode") else
+          (False, "straight")),
 )
 
 
