@@ -6,7 +6,8 @@ from dataclasses import replace
 
 from txt2sce_ros.paths import shared_dir
 from txt2sce_ros.sketch import Sketch, load_sketches
-from txt2sce_ros.text.evaluate import TABLE_IV, EXTRA, evaluate, format_table
+from txt2sce_ros.text.evaluate import (EXTRA, TABLE_IV, conflict_misses, evaluate, format_diagnostics,
+                                     format_table)
 
 GOLD = [s for s in load_sketches(shared_dir() / "data" / "reports" / "dev_gold.jsonl") if isinstance(s, Sketch)]
 
@@ -43,3 +44,18 @@ def test_missing_prediction_scores_as_empty_and_is_listed() -> None:
     ev = evaluate(GOLD[:3], {})
     assert ev.unmatched_gold == [g.report_id for g in GOLD[:3]]
     assert "without a prediction" in format_table(ev)
+
+
+def test_a_failed_conflict_is_counted_by_the_parts_it_misses() -> None:
+    # One gold report with an NPC partner, read back with the partner's lane and the AV's actions wrong.
+    g = next(x for x in GOLD if not x.missing and x.collision.with_ and x.collision.with_.startswith("npc")
+             and x.party(x.collision.with_).lane in ("left", "right"))
+    partner = g.party(g.collision.with_)
+    flipped = {"left": "right", "right": "left"}[partner.lane]
+    pred = replace(g, npcs=tuple(replace(n, lane=flipped) if n.id == partner.id else n for n in g.npcs),
+                   ego=replace(g.ego, actions=g.ego.actions + "h"))
+    assert conflict_misses(g, g) == []
+    assert conflict_misses(g, pred) == ["AV actions", "collision party lane"]
+    ev = evaluate([g], {g.report_id: pred})
+    assert ev.conflict_ok == [] and ev.conflict_missed == {"AV actions": 1, "collision party lane": 1}
+    assert "missed parts (a report can miss several): AV actions 1, collision party lane 1" in format_diagnostics(ev)
