@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 36 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 40 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 389 of
-their 470 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 421 of
+their 513 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
@@ -1143,6 +1143,43 @@ PROBES: tuple[Probe, ...] = (
           lambda sk: ("road" in sk.missing, sk.road.layout),
           lambda w: (True, "unknown") if w in ("was stopped", "was in motion", "was in autonomous mode") else
           (False, "straight")),
+    Probe("a party on its way pulling out of its lane",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling behind a bus "
+          "in the right lane {w} and made contact with the passenger side of the Waymo AV.",
+          ("pulled out from behind the bus into the Waymo AV's lane", "pulled out to pass the bus",
+           "pulled out around the bus", "pulled out into the left lane", "suddenly pulled out",
+           "pulled out and tried to pass the bus", "pulled out of its lane", "swung out around the bus",
+           "pulled out from behind the bus", "swung out to pass the bus"),
+          _npc_actions, [("moving", "af")]),
+    Probe("a party standing partly in the AV's lane",
+          "The Waymo AV was traveling northbound on Mission Street when it made contact with a sedan {w}.",
+          ("that was stopped partially in its lane", "stopped partially encroaching into its lane",
+           "that was stopped with its rear protruding into the Waymo AV's lane",
+           "that had stopped straddling the lane line", "stopped partly in the Waymo AV's lane",
+           "that was stationary and partially blocking the Waymo AV's lane",
+           "that was stopped, encroaching into the Waymo AV's lane", "waiting partially in the Waymo AV's lane",
+           "that was stopped at an angle across the lane line"),
+          _npc_actions, [("stopped", "")]),
+    Probe("a party's move after a phrase that names the AV",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan {w} changed lanes to the "
+          "left and made contact with the passenger side of the Waymo AV.",
+          ("traveling to the right of the Waymo AV", "in the lane to the right of the Waymo AV",
+           "traveling alongside the Waymo AV on its right", "that was next to the Waymo AV on the right",
+           "which had been traveling beside the Waymo AV in the right lane", "driving in the right lane next to the "
+           "Waymo AV", "that was traveling parallel to the Waymo AV in the right lane", "in the right lane, slightly "
+           "ahead of the Waymo AV,", "traveling in the same direction as the Waymo AV in the right lane",
+           "positioned to the right of the Waymo AV", "in the adjacent right lane, just ahead of the Waymo AV,",
+           "traveling in the right lane, which was adjacent to the Waymo AV's lane,"),
+          _npc_actions, [("moving", "af")]),
+    Probe("a party's move told after the AV's own clause",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane {w} changed lanes to the left and "
+          "made contact with the passenger side of the Waymo AV.",
+          ("when a sedan in the right lane", "when a sedan traveling in the right lane", ", when a sedan in the "
+           "right lane", "as a sedan in the right lane", "and a sedan in the right lane", "while a sedan in the right "
+           "lane", ". Suddenly, a sedan in the right lane", ". At the same time, a sedan in the right lane",
+           ". Shortly thereafter, a sedan in the right lane", ". Simultaneously, a sedan in the right lane",
+           ". Moments later, a sedan in the right lane", "; a sedan in the right lane"),
+          _npc_actions, [("moving", "af")]),
 )
 
 

@@ -36,8 +36,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb))"
           r"(?!\s+in\s+reverse)"),
-    # "pulled out and struck": out of a parking spot if it was parked, else a start from where it stopped
-    ("P", r"\bpull(?:ed|ing|s)?\s+out(?=\s*(?:,|\band\b|\bsuddenly\b|\bdirectly\b|\bjust\b))"),
+    # "pulled out and struck", "swung out around the bus": out of a parking spot if it was parked, a start if it
+    # stood, a move out of its lane if it was on its way (sequences.sequence); out of a driveway or lot is `m`.
+    ("P", r"\b(?:pull(?:ed|ing|s)?|sw(?:ung|ing|ings|inging))\s+out\b(?!\s+(?:of\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}"
+          r"(?:driveway|garage|parking|lot|alley|space|spot|stall|gas)|into\s+the\s+intersection))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
@@ -215,7 +217,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "h": ("stop", "halt", "standstill", "yield", "rest"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull",),
+    "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed"), "A": ("straight",), "Y": ("turn",),
@@ -259,7 +261,7 @@ _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
                          r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
                          # "a sedan waiting at the light ahead", "a sedan queued ahead of it": a noun's state
-                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+"
+                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+(?:\w+ly\s+)?"
                          r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"

@@ -153,7 +153,9 @@ _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|a
                         # a verb taking the noun as its object ("struck two unoccupied vehicles") is no modifier
                         r"struck|strikes|hit|hits|contacted|clipped|bumped|impacted|sideswiped|side-swiped|"
                         r"rear-ended)$", re.I)
-_SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|as|while|and|then|but|after|before|until|because|where|once|"
+# ("in the same direction as EGO": a comparison's "as" opens no clause.)
+_SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|(?<!direction\s)(?<!way\s)(?<!same\s)as|while|and|then|"
+                          r"but|after|before|until|because|where|once|"
                           r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
 # A sentence that opens with when it happened and no comma before its subject: "On June 3, 2025 at 4:10 PM PT a
 # Waymo AV was stopped ...", "At approximately 9:44 AM the AV ...".

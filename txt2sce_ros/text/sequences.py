@@ -23,7 +23,11 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
     for k, a in enumerate(acts):
         c = a.code
         if c == "P":
-            c = "O" if any(x.code == "S" and "park" in x.text.lower() for x in acts[:k]) else "i"
+            # told travelling before it, with no stop since: "a sedan traveling behind a bus pulled out"
+            on_its_way = start == "moving" and any(x.code in "aA" for x in acts[:k]) and not (
+                codes and codes[-1] == "h") and not any(x.code == "S" for x in acts[:k])
+            c = "O" if any(x.code == "S" and "park" in x.text.lower() for x in acts[:k]) else \
+                "F" if on_its_way else "i"
         if c == "F" and codes and codes[-1] == "m" and not ego:
             continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
         if c == "F":
