@@ -39,7 +39,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # "pulled out and struck", "swung out around the bus": out of a parking spot if it was parked, a start if it
     # stood, a move out of its lane if it was on its way (sequences.sequence); out of a driveway or lot is `m`.
     ("P", r"\b(?:pull(?:ed|ing|s)?|sw(?:ung|ing|ings|inging))\s+out\b(?!\s+(?:of\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}"
-          r"(?:driveway|garage|parking|lot|alley|space|spot|stall|gas)|into\s+the\s+intersection))"),
+          r"(?:driveway|garage|parking|lot|alley|space|spot|stall|gas)|into\s+the\s+intersection|"
+          # "swung out into the oncoming lane", "pulled out into the left lane": the lane named tells the move
+          r"into\s+the\s+(?:oncoming|opposing|opposite|left|right)\b))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
@@ -76,7 +78,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
-          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching)\s+into\s+the\s+left\s+lane|"
+          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+(?:out\s+)?"
+          r"into\s+the\s+left\s+lane|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
@@ -104,7 +107,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:into\s+the\s+right\s+lane|"
-          r"over\s+to\s+the\s+right)|"
+          r"over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+)?into\s+the\s+right\s+lane\b|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
@@ -464,6 +467,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 code in "abcdefghikF" and who >= 0:
             # "both vehicles proceeded forward": the AV did it too.
             out.append(Act(sent=sent_idx, pos=b, code=code, who=-1, text=s[b:e]))
+        if code == "P" and fre.search(r"\b(?:driveway|parking\s+(?:lot|garage|structure)|garage|alley)\b",
+                                      s[max(0, b - 90):b], re.I):
+            code = "m"  # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road
         if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         if code == "Y":
