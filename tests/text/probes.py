@@ -1080,9 +1080,15 @@ PROBES: tuple[Probe, ...] = (
            "stopped on Koval Lane. A cyclist then made contact with the Zoox vehicle's rear bumper",
            "traveling on Koval Lane when a sedan made contact with the Zoox vehicle's front bumper",
            "traveling on Koval Lane when a sedan made contact with the Zoox vehicle",
-           "traveling on Koval Lane when the Zoox vehicle made contact with a bicyclist's back tire"),
+           "traveling on Koval Lane when the Zoox vehicle made contact with a bicyclist's back tire",
+           "traveling on Koval Lane when a sedan rear-ended the Zoox vehicle", "traveling on Koval Lane when the Zoox "
+           "vehicle rear-ended a sedan", "traveling on Koval Lane when a sedan collided head-on with the Zoox vehicle",
+           "traveling on Koval Lane when a sedan struck the Zoox vehicle from behind", "traveling on Koval Lane when "
+           "a sedan T-boned the Zoox vehicle", "traveling on Koval Lane when a sedan sideswiped the Zoox vehicle"),
           lambda sk: [m for m in sk.missing if m in ("position", "actions")],
-          lambda w: [] if any(part in w for part in ("front", "rear", "side")) else ["position", "actions"]),
+          # (a broadside or a sideswipe with no side named leaves the side unknown)
+          lambda w: [] if any(part in w for part in ("front", "rear", "side ", "behind", "head-on")) else
+          ["position", "actions"]),
     Probe("an AV standing at a light that turned green stood at a red",
           "A Zoox vehicle was stopped at the intersection of Koval Lane and Flamingo Road. {W} and a sedan traveling "
           "behind it struck its rear bumper.",

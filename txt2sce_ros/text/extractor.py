@@ -10,9 +10,12 @@ lists are in `lexicon`.
 
 from __future__ import annotations
 
+import re
+
 from ..errors import InputError
 from ..sketch import Collision, EgoInfo, Obstacle, Party, Sketch
 from . import fastre as fre
+from .fastre import compile_gated
 from .actions import find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
@@ -72,6 +75,9 @@ class Evidence:
             if got:
                 out.append((slot, tuple(got)))
         return tuple(out)
+
+
+_GEOMETRY_TOLD = compile_gated(r"\brear[- ]?end(?:ed|ing|s)?\b|\bhead[- ]?on\b|\bfrom\s+behind\b", re.I)
 
 
 def extract(text: str, report_id: str) -> Sketch:
@@ -196,7 +202,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         in_path = start == "stopped" and not acts and ego_start == "moving" and "k" not in ego_actions
         # The part of the AV it touched (its front, rear, a side) tells where the party was: a place a reader can
         # tell, so no refusal (sketch.md: `position` is missing only when the place cannot be told).
-        touched = any(c.kind == "contact" and any(c.value.split("/")[:2]) for c in placed.seen)
+        # So does a contact named by its geometry ("rear-ended", "head-on", "from behind").
+        touched = any(c.kind == "contact" and any(c.value.split("/")[:2]) for c in placed.seen) or \
+            (e.idx == d.partner and d.contact_sent is not None and
+             bool(_GEOMETRY_TOLD.search(d.sents[d.contact_sent])))
         if not known and not pacts and not in_path and not touched and (e.idx == d.partner or d.partner is None):
             # Only the party the conflict is about can leave a scenario unbuildable: a bystander the text does
             # not place still gets its best reading (sketch.md: refuse only what is truly missing).

@@ -164,7 +164,7 @@ CONTACT = compile_gated(
     r"dinged|dented|"
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
-    r"bottom(?:ed|ing)\s+out|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
+    r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
     # climbing a curb or median is contact with it ("mounted the curb", "drove up onto the median")
     r"(?:mounted|mounting|jumped|jumping|hopped|hopping|(?:drove|driving|rode|riding|ran|running|went|going)\s+up\s+"
     r"on(?:to)?)(?=\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}(?:curb|kerb|median|island|sidewalk|divider)s?\b)|"
