@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 40 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 42 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 421 of
-their 513 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 443 of
+their 548 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
@@ -679,7 +679,7 @@ PROBES: tuple[Probe, ...] = (
           ("reversed", "backed up", "began to reverse", "rolled backward", "rolled back", "started backing up",
            "shifted into reverse and backed up", "drove in reverse", "moved backward", "traveled in reverse",
            "reversed toward the Waymo AV", "began backing up", "started to back up", "rolled backwards",
-           "moved in reverse", "suddenly reversed"),
+           "moved in reverse", "suddenly reversed", "transitioned into reverse and began to accelerate"),
           _npc_actions, [("stopped", "k")]),
     Probe("a party backing out of a space",
           "The Waymo AV was traveling slowly through a parking lot on Mission Street. A sedan {w} and made contact "
@@ -947,6 +947,32 @@ PROBES: tuple[Probe, ...] = (
            "sedan approaching from the right on Flamingo Road continued straight through the intersection",
            "motorcyclist heading west on Flamingo Road went through the intersection"),
           _npc_actions, [("moving", "a")]),
+    Probe("a party's manoeuvres in order, up to the contact",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling ahead of the "
+          "Waymo AV in the right lane {w}, and the Waymo AV made contact with it.",
+          ("came to a stop and then proceeded forward", "stopped, then started moving again",
+           "slowed down and then accelerated", "slowed, then sped up", "changed lanes to the left and then stopped",
+           "merged left and then braked to a stop", "changed lanes to the left and then back to the right",
+           "moved into the left lane and then moved back into the right lane", "stopped, reversed",
+           "came to a stop and began to reverse", "accelerated and then changed lanes to the left",
+           "sped up and merged left", "slowed and then changed lanes to the left",
+           "braked and then moved into the left lane"),
+          _npc_actions, lambda w: [("moving", {
+              "came to a stop and then proceeded forward": "ahi", "stopped, then started moving again": "ahi",
+              "slowed down and then accelerated": "acb", "slowed, then sped up": "acb",
+              "changed lanes to the left and then stopped": "afh", "merged left and then braked to a stop": "afh",
+              "changed lanes to the left and then back to the right": "afg",
+              "moved into the left lane and then moved back into the right lane": "afg",
+              "stopped, reversed": "ahk", "came to a stop and began to reverse": "ahk",
+              "accelerated and then changed lanes to the left": "abf", "sped up and merged left": "abf",
+              "slowed and then changed lanes to the left": "acf",
+              "braked and then moved into the left lane": "acf"}[w])]),
+    Probe("a party backing and then driving forward into the AV",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan ahead of the Waymo AV {w} and made "
+          "contact with the Waymo AV.",
+          ("reversed, then drove forward and changed lanes to the left", "backed up and then pulled forward into "
+           "the left lane", "reversed a few feet, then moved forward and merged left"),
+          _npc_actions, [("stopped", "kif")]),
     # Session 11 (obstacles, the road's layout and control, the AV's own start and actions, refusals): written from
     # the spec's definitions and the ways the companies' reports tell these facts.
     Probe("a parked, unattended vehicle the AV struck is an obstacle",

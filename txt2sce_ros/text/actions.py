@@ -47,7 +47,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
     ("j", r"\bu-?\s?turn|\bturn(?:ed|ing|s)?\s+around\b|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
-          r"\bback(?:ed|ing|s)?\s+(?:up|out|into|away)\b|\brolled\s+back(?:wards?)?\b|"
+          r"\bback(?:ed|ing|s)\s+(?:up|out|into|away)\b|(?<=\bto\s)back\s+(?:up|out|into|away)\b|"
+          r"\brolled\s+back(?:wards?)?\b|"
           r"\b(?:mov|roll|drift|creep|crept|coast)(?:ed|ing|es|e|s)?\s+backwards?\b|"
           r"\bbacking\b"),
     ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
@@ -71,15 +72,17 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"edge|accelerate|pull\s+(?:forward|out|away))(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
-          r"accelerated)\s+forward\b|"
+          r"accelerated|drove|drives|driving)\s+forward\b|"
           r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
-          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+(?:out\s+)?"
-          r"into\s+the\s+left\s+lane|"
+          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
+          r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=forward\s)into\s+the\s+(?:adjacent\s+)?left(?:most)?\s+lane\b|"
+          # "changed lanes to the right and then back to the left": the return told without its verb
+          r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+left\b|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
@@ -106,8 +109,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
-          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:into\s+the\s+right\s+lane|"
-          r"over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+)?into\s+the\s+right\s+lane\b|"
+          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
+          r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
+          r"(?<=forward\s)into\s+the\s+(?:adjacent\s+)?right(?:most)?\s+lane\b|"
+          r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+right\b|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"

@@ -36,6 +36,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 c = "f"
         if c == "T":
             continue
+        if c == "i" and "accelerat" in a.text.lower() and codes and codes[-1] == "k":
+            continue  # "transitioned into reverse and began to accelerate": the backing, faster; no start forward
         if c == "i" and "accelerat" in a.text.lower() and start == "moving" and (not codes or codes[-1] != "h"):
             c = "b"  # "began to accelerate" while on its way speeds up; only from a standstill is it a start
         if c == "O":
@@ -81,8 +83,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "a"  # an explicit "continued straight" is a manoeuvre of its own
             if out and out[-1] == "a":
                 continue
-        if c == "i" and out and out[-1] != "h":
-            continue  # "began moving towards" while already moving is no start from a standstill
+        if c == "i" and out and out[-1] not in "hk":
+            continue  # "began moving towards" while already moving is no start; forward after backing up is one
         if c == "h" and out and out[-1] == "c":
             out[-1] = "h"
             continue
