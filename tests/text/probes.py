@@ -1166,6 +1166,16 @@ PROBES: tuple[Probe, ...] = (
           lambda w: (["scooter" if "unicycl" in w else "car" if any(x in w for x in ("motorist", "Uber", "cruiser",
                                                                                        "golf")) else "truck"],
                      "npc1", [])),
+    Probe("the AV already turning when the interaction begins",
+          "The Zoox vehicle {w} when a cyclist in the bike lane struck its right side.",
+          ("was traveling northbound on Koval Lane and turning right onto Flamingo Road", "was making a right turn "
+           "from Koval Lane onto Flamingo Road", "was in the process of turning right onto Flamingo Road", "was "
+           "completing a right turn onto Flamingo Road", "was executing a right turn onto Flamingo Road", "had begun "
+           "a right turn onto Flamingo Road", "was turning right from Koval Lane onto Flamingo Road", "was traveling "
+           "northbound on Koval Lane, turning right onto Flamingo Road,", "was proceeding to turn right onto "
+           "Flamingo Road", "was in the middle of a right turn onto Flamingo Road", "was beginning to turn right "
+           "onto Flamingo Road", "was starting its right turn onto Flamingo Road"),
+          lambda sk: (sk.road.layout, sk.ego.start, sk.ego.actions), ("junction4", "moving", "e")),
     Probe("a place on a street told without a street's name, and no place at all (refused for `road`)",
           "The Waymo AV {w} when a sedan rear-ended it.",
           ("was stopped in a queue of vehicles", "was waiting behind a line of cars", "was stopped to drop off a "

@@ -260,7 +260,8 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
                      r"compell(?:ed|ing))\s+(?:(?:EGO|EGOD|it|him|her|them|the\s+[\w-]+|an?\s+[\w-]+)\s+){1,2}"
                      r"to\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
-                        r"proceeded|continued|continue|went\s+on|about)\s+to\s+(?:\w+\s+){0,2}$", re.I)
+                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about)\s+to\s+"
+                        r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|"
                          r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
