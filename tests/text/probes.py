@@ -1166,6 +1166,13 @@ PROBES: tuple[Probe, ...] = (
           lambda w: (["scooter" if "unicycl" in w else "car" if any(x in w for x in ("motorist", "Uber", "cruiser",
                                                                                        "golf")) else "truck"],
                      "npc1", [])),
+    Probe("an object ahead stays ahead when another party is said to be behind the AV",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} and a sedan traveling behind it "
+          "struck its rear bumper.",
+          ("moved into the left lane to go around a double-parked vehicle and then stopped", "stopped behind a "
+           "double-parked box truck", "slowed for debris in its lane", "stopped for a traffic cone in its lane",
+           "braked to avoid a ladder in the roadway", "stopped for a fallen tree in the road"),
+          lambda sk: [(o.position, o.lane) for o in sk.obstacles], [("R5", "same")]),
     Probe("the AV already turning when the interaction begins",
           "The Zoox vehicle {w} when a cyclist in the bike lane struck its right side.",
           ("was traveling northbound on Koval Lane and turning right onto Flamingo Road", "was making a right turn "

@@ -322,7 +322,10 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
         lane = "left" if fre.search(r"\bon\s+the\s+right\b|\bbetween\b|\bmiddle\s+of\s+the\s+road", oc, re.I) else \
             "shoulder" if fre.search(r"\bparked\b|\bcurb\b", oc, re.I) else (side_named(oc) or "shoulder")
     pos = "R5"
-    if fre.search(r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", full, re.I) or \
+    # Behind the AV: said of the object itself, or (for the object the AV touched) its rear touched or the AV backing
+    # into it; words about another party in the same sentences ("a sedan traveling behind it") are not the object's.
+    if fre.search(r"\bbehind\s+(?:it|EGO)\b", own, re.I) or (e.idx == d.partner and fre.search(
+            r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", full, re.I)) or \
             (ego_codes.endswith("k") and e.idx == d.partner):
         pos = "R6"
     elif d.junction and ego_turning and e.idx == d.partner:
