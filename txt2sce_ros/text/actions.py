@@ -23,9 +23,11 @@ _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
     # Left in reverse, a space is backed out of (`k`), not pulled out of: "(?!...in reverse)" closes the pattern.
-    ("O", r"(?:\b(?:left|leaving|leaves|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
+    ("O", r"(?:\b(?:left|leav(?:e|es|ing)|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parking\s+(?:spot|space|stall|position)|parked\s+position|curb)\b|"
-          r"\bpull(?:ed|ing|s)?\s+(?:out\s+)?(?:of|from)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
+          # out of its space by any verb of moving forward ("moved out of", "began to move forward out of")
+          r"\b(?:pull|mov|driv|drove|roll|edg|nos|inch|creep|crept|came|com)\w*\s+(?:forward\s+)?(?:out\s+)?(?:of|from)\s+"
+          r"(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
           r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|"
