@@ -74,6 +74,9 @@ def _later_name(name: str) -> Callable[[str], str]:
     return apply
 
 
+_BODY_PART = (r"(?:(?:front|rear|left|right|driver(?:'s)?|passenger(?:'s)?)[ -]){1,3}(?:side|bumper|door|fender|corner|"
+              r"quarter panel|mirror|wheel)")
+
 REWRITES: tuple[Rewrite, ...] = (
     Rewrite("operator renamed: Acme", _operator("Acme")),
     Rewrite("operator renamed: Avride", _operator("Avride")),
@@ -126,6 +129,25 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("was stopped -> was stationary", _sub(r"\bwas stopped\b", "was stationary")),
     Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
                                                          "reported and the police were not called to the scene."),
+    # Session 11: where the AV was touched told the other way round, lane and junction synonyms, a standstill told
+    # as a halt, and words reports use interchangeably.
+    Rewrite("the <part> of the AV -> the AV's <part>", _sub(
+        rf"\bthe ({_BODY_PART}) of the ((?:\w+ ){{0,2}}?(?:AV|vehicle))\b", lambda m: f"the {m.group(2)}'s {m.group(1)}")),
+    Rewrite("the AV's <part> -> the <part> of the AV", _sub(
+        rf"\bthe ((?:Waymo|Cruise|Zoox) (?:AV|vehicle))(?:'s|\u2019s) ({_BODY_PART})", r"the \2 of the \1")),
+    Rewrite("driver side -> driver's side", _sub(r"\bdriver side\b", "driver's side")),
+    Rewrite("left lane -> left-hand lane", _sub(r"\b(left|right) lane\b", r"\1-hand lane")),
+    Rewrite("adjacent lane -> neighboring lane", _sub(r"\badjacent lane\b", "neighboring lane")),
+    Rewrite("intersection -> junction", _sub(r"\bintersection\b", "junction")),
+    Rewrite("stopped -> halted", _sub(r"\bstopped\b", "halted")),
+    Rewrite("came to a stop -> stopped", _sub(r"\bcame to a (?:complete )?stop\b", "stopped")),
+    Rewrite("attempted to -> tried to", _sub(r"\battempted to\b", "tried to")),
+    Rewrite("Shortly thereafter -> Moments later", _sub(r"\bShortly (?:thereafter|after)\b", "Moments later")),
+    Rewrite("made contact with -> came into contact with", _sub(r"\bmade contact with\b", "came into contact with")),
+    Rewrite("SUV -> sedan", _sub(r"\bSUV\b", "sedan")),
+    Rewrite("passenger car -> sedan", _sub(r"\bpassenger (?:car|vehicle)\b", "sedan")),
+    Rewrite("'At the time of the impact ...' dropped", _sub(r"At the time of the impact[^.]*\.\s*", "")),
+    Rewrite("a/the vehicle -> a/the car", _sub(r"\b(a|the) (white |black |silver )?vehicle\b", r"\1 \2car")),
 )
 
 

@@ -4,7 +4,10 @@ with the reason each still reads differently. On the session-9 start code 520 of
 differently (the AV taken for another party under a new operator's name in 99 of 130); now 10. Session 10 added
 nine rewrites (manoeuvre, speed, clock, party and state paraphrases): 5 of the 243 narratives they change read
 differently at first (a red light the AV was "stationary" at, a turn told as "making a right turn", "a person on
-foot crossing the street" taken for the AV's crossing); now 1."""
+foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 15 (the AV's part told the other way
+round, lane and junction synonyms, "halted", words reports use interchangeably): 24 of their 418 rewritten narratives
+read differently on that session's start code (39a178f: "left-hand lane", "neighboring lane", "junction", "halted" and
+"driver's side" not read as their usual spellings); now 1."""
 
 from __future__ import annotations
 
@@ -28,10 +31,18 @@ KNOWN: dict[str, set[str]] = {
     # "St." inside a sentence before a lower-case word: the clause reading around the turn changes.
     "Street -> St.": {"dmvca-cruise-20190905-r66", "dmvca-cruise-20230303-r431"},
     # A "when" clause made a sentence of its own: the party's manoeuvre is read against another sentence's AV.
-    "', when a' -> '. Then a'": {"dmvca-cruise-20201024-r143", "dmvca-waymo-20240809-r603"},
+    # (r202: the rewrite cuts the AV's own sentence, "... on Cabrillo Street and. Then the intersection was clear,
+    # began to proceed westbound": the AV's heading is lost, and the cyclist that struck its rear driver's side is
+    # read as behind it.)
+    "', when a' -> '. Then a'": {"dmvca-cruise-20201024-r143", "dmvca-waymo-20240809-r603",
+                                 "dmvca-waymo-20210801-r202"},
     # "a person on foot on a scooter ... the pedestrian": a rider named "person" first and "pedestrian" later is
     # read as two parties (the scooter's rider and a pedestrian).
     "a pedestrian -> a person on foot": {"dmvca-cruise-20230617-r484"},
+    # "the front of the pickup truck made contact with the stopped Waymo AV's rear driver side and with the rear
+    # driver side of another pickup truck": the contact is given to the second pickup (the last party named before
+    # the verb's object), and once the AV's part is read it places that pickup behind the AV.
+    "the <part> of the AV -> the AV's <part>": {"dmvca-waymo-20241014-r619"},
 }
 
 

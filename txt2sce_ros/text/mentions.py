@@ -51,6 +51,13 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      compile_gated(r"\b(on)[- ](coming)\b|\b(left|right)[- ](most)\b|"
                    r"\b((?:north|south)?(?:east|west)|north|south)[- ](bound)\b|\b(cross)[- ](walks?)\b", re.I),
      lambda m: "".join(g for g in m.groups() if g)),
+    # Synonyms the rules read in one spelling: "the left-hand lane", "the neighboring lane", "a T-junction",
+    # "came to a halt" (the rules know "left lane", "adjacent lane", "intersection", "stop")
+    (("-hand", " hand", "neighbo", "junction", "halt"), False,
+     compile_gated(r"\b(left|right)[- ]hand(?=\s+(?:lanes?|turns?|side|curb|shoulder|edge|corner)\b)|"
+                   r"\b(neighbou?ring)(?=\s+lanes?\b)|\b(junction)(s?)\b|\b(halt)(ed|ing|s)?\b", re.I),
+     lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + m.group(4))
+     if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
     # British spelling, as the rules read US
     (("manoeuv",), False, compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I),
      lambda m: {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering",

@@ -413,6 +413,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # "passed EGO by driving in the oncoming lane": the lane is its path, the party goes the AV's way.
         pos = "R6"
         lane = lane if pos in ("R5", "R6") and lane not in (None, "same") else "left"
+    elif pos in ("R1", "R3") and d.junction and heading(d, e.idx) is None and \
+            (opp := next((c for c in cues if c.kind == "direction" and c.value == "opposite"), None)):
+        # Read onto a crossing road from the side of the AV it struck, but said to come "from the opposite
+        # direction": the opposite approach (R2); a heading of its own would have placed it.
+        return Placement("R2", None, "opposite direction", (opp,), tuple(cues))
     elif pos not in ("R5", "R6"):
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     if any(c.kind == "direction" and c.value == "opposite" for c in cues):

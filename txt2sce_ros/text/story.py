@@ -411,7 +411,7 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 # possessive: a word ([\w-]) is always followed by whitespace and whitespace by a word or "of", so giving back
 # characters can never lead to a match - possessive matching finds the same matches without the backtracking that
 # made this pattern cost more than any other in the extractor.
-_PART_OF_EGO = compile_gated(r"((?:[\w-]++\s++){1,6})(?:of|on|to)\s+EGO\b")
+_PART_OF_EGO = compile_gated(r"((?:[\w'-]++\s++){1,6})(?:of|on|to)\s+EGO\b")  # "the rear driver's side of EGO"
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
 # "EGO's left rear." names the part at the sentence end too
