@@ -9,7 +9,7 @@ import re
 import pytest
 
 from txt2sce_ros.paths import shared_dir
-from txt2sce_ros.text.fastre import Gated, factors_of, folded, gate
+from txt2sce_ros.text.fastre import Gated, end_gate, factors_of, folded, gate, twin
 from txt2sce_ros.text.mentions import normalise, sentences
 
 _MODULES = ("lexicon", "mentions", "actions", "story", "sequences", "scene")
@@ -124,15 +124,59 @@ def test_scoped_case_sensitivity_is_not_folded() -> None:
     assert folded(re.compile(r"plain")) is None  # case-sensitive already
 
 
-def test_patterns_anchored_at_the_start_scan_without_a_prefilter() -> None:
-    # A pattern anchored at the text's start is tried at one position; a factor prefilter would search the whole
-    # text for every factor first (~10x the scan). Such a pattern keeps its folded scan, not a prefilter, and
-    # matches as the raw regex does; one anchored per line, or only in one branch, keeps the prefilter.
+def test_patterns_anchored_at_the_start_are_not_gated() -> None:
+    # A pattern anchored at the text's start is tried by `re` at one position: a factor looked for in the whole text,
+    # or the text lowered for a folded scan, costs more than that attempt. Such a pattern is left as it is; one
+    # anchored per line, or only in one branch, keeps its prefilter.
     rx = re.compile(r"^\s*(?:lanes?|racks?|stops?|paths?|signals?)\b(?!-)", re.I)
-    g = gate(rx)
-    assert isinstance(g, Gated) and g.factors == () and g.cs is not None
-    for s in (" Lane of the street ahead", "lane-splitting", "the lane", " SIGNALS were red and the stop", "stops"):
-        assert (g.search(s) and g.search(s).span()) == (rx.search(s) and rx.search(s).span()), s
+    assert gate(rx) is rx
+    assert gate(re.compile(r"\Alanes?\b", re.I)).pattern == r"\Alanes?\b"
     assert factors_of(re.compile(r"\Alanes?\b", re.I)) is None
     assert factors_of(re.compile(r"^\s*(?:lanes?|racks?)\b", re.I | re.M)) is not None
     assert factors_of(re.compile(r"^lanes?\b|\bracks?\b", re.I)) is not None
+    assert isinstance(gate(re.compile(r"^lanes?\b|\bracks?\b", re.I)), Gated)
+
+
+def test_case_sensitive_twin_matches_as_the_original() -> None:
+    # A leading \b moved behind the first literal, ASCII classes: the same spans and groups on ASCII text, and
+    # the original itself on any other text.
+    for pat in (r"\bEGO\b", r"\bEGO(?:\s+EGO)+\b", r"\b(?:was|were)\s+(\w+)\b", r"\brear\b|\bback\b|\btail",
+                r"\b(St|Ave)\.(?=\s+[a-z])", r"x*"):
+        rx = re.compile(pat)
+        g = gate(rx)
+        assert isinstance(g, Gated) and g.cs is not None and not g.fold, pat
+        for s in ("EGO EGO  EGO\tEGOD was hit", "the rear of EGO, its back and tail", "St. west Ave. (Ave. x",
+                  "were  stopped, was_x WAS here", "xEGO EGOx EGO_ EGO\x1cEGO", "\u00e9EGO EGO\u00e9 was \u00e9t\u00e9 EGO"):
+            for text in (s, s * 3):
+                want = [(m.span(), m.groups()) for m in rx.finditer(text)]
+                assert [(m.span(), m.groups()) for m in g.finditer(text)] == want, (pat, text)
+                assert g.sub("#", text) == rx.sub("#", text) and g.findall(text) == rx.findall(text), (pat, text)
+                got, raw = g.search(text, 3), rx.search(text, 3)
+                assert (got and (got.span(), got.groups())) == (raw and (raw.span(), raw.groups())), (pat, text)
+    assert twin(re.compile(r"\bthe\s+(?i:SUV)\b")) is None  # a scoped flag: the original runs
+    assert twin(re.compile(r"\bthe", re.I)) is None  # IGNORECASE: the folded scan's case
+
+
+def test_end_gate_never_hides_a_match() -> None:
+    # A pattern anchored at the end: its reverse, anchored at the start of the reversed text, must accept every text
+    # the original matches (trailing newline, spaces, words of any case), and turn most others away.
+    cases = (r"\b(?:a|an|the|another|one)\s*$", r"\b(?:not|n't|never)\s+(?:\w+\s+){0,2}$", r"(?:^|[,;:]|\bwhen)\s*$",
+             r"\b(?:into|onto)\s+(?:the\s+)?(?!x)$", r"\bhad\s+(?:already\s+|just\s+)?\Z", r"\bEGO's\s+(?:[\w-]++\s+){0,2}$")
+    texts = ["A car drove into the ", "the car was the\n", "it had not yet ", "He said, ", "THE CAR HAD JUST ",
+             "onto  ", "the vehicle when\n\n", "x had", "EGO's left rear ", "when", "then an", "another one\n",
+             "struck EGO's ", "it did n't ", "\u212aelvin was the "]
+    turned_away = 0
+    for pat in cases:
+        for flags in (re.I, 0):
+            rx = re.compile(pat, flags)
+            end = end_gate(rx)
+            assert end is not None, pat
+            g = gate(rx)
+            for t in texts + [t + " and then the car " for t in texts]:
+                want = [m.span() for m in rx.finditer(t)]
+                assert [m.span() for m in g.finditer(t)] == want, (pat, t)
+                assert g.sub("#", t) == rx.sub("#", t) and bool(g.search(t)) == bool(want), (pat, t)
+                turned_away += not g._may_match(t)
+    assert turned_away > 100
+    assert end_gate(re.compile(r"\bthe\s+$", re.M)) is None  # "$" at every line end: not one end
+    assert end_gate(re.compile(r"\s*$")) is None  # matches every text: no gate

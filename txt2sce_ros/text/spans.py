@@ -11,23 +11,33 @@ from __future__ import annotations
 
 import bisect
 import re
+from itertools import accumulate
 
-_WORD = re.compile(r"[A-Za-z0-9]+")
+_WORD_SPLIT = re.compile(r"([A-Za-z0-9]+)")
 _RUN = 8  # words aligned in one step where both texts agree
 _LOOKAHEAD = 40  # original words one normalised word may skip (a dropped parenthesis, an AV's long name)
+
+
+def _words(text: str) -> tuple[list[tuple[int, int]], list[str]]:
+    """The spans of the text's words ([A-Za-z0-9] runs) and the words lowercased.
+
+    (One split keeps the words and the text between them in order; their running lengths are the spans. The
+    words are ASCII, so lowercasing them joined keeps them one for one; positions come from the text as it is,
+    since lowercasing a non-ASCII text can change its length. Several times cheaper than a match object per word.)"""
+    parts = _WORD_SPLIT.split(text)  # [between, word, between, word, ..., between]
+    ends = list(accumulate(map(len, parts)))
+    spans = list(zip(ends[0::2], ends[1::2]))
+    return spans, " ".join(parts[1::2]).lower().split()
 
 
 class OffsetMap:
     """Normalised-text span -> original-text span."""
 
     def __init__(self, original: str, normalised: str) -> None:
-        # The words are ASCII ([A-Za-z0-9]), so lowercasing them joined keeps them one for one; positions come from
-        # the texts as they are (lowercasing a non-ASCII text can change its length).
-        orig_spans = [m.span() for m in _WORD.finditer(original)]
-        orig_words = " ".join(_WORD.findall(original)).lower().split()
+        orig_spans, orig_words = _words(original)
         self._len = len(original)
-        self._starts = [m.start() for m in _WORD.finditer(normalised)]  # normalised word starts, ascending
-        norm_words = " ".join(_WORD.findall(normalised)).lower().split()
+        norm_spans, norm_words = _words(normalised)
+        self._starts = [a for a, _ in norm_spans]  # normalised word starts, ascending
         self._map: list[tuple[int, int] | None] = []  # original span of each normalised word, None if unaligned
         j, n_orig, n_norm = 0, len(orig_words), len(norm_words)
         i = 0
