@@ -140,8 +140,8 @@ def test_patterns_anchored_at_the_start_are_not_gated() -> None:
 def test_case_sensitive_twin_matches_as_the_original() -> None:
     # A leading \b moved behind the first literal, ASCII classes: the same spans and groups on ASCII text, and
     # the original itself on any other text.
-    for pat in (r"\bEGO\b", r"\bEGO(?:\s+EGO)+\b", r"\b(?:was|were)\s+(\w+)\b", r"\brear\b|\bback\b|\btail",
-                r"\b(St|Ave)\.(?=\s+[a-z])", r"\b(?:at|as|EGO)\b|\bthe\s+(?:EGO|EGOD)(?:'s)?"):
+    for pat in (r"\bEGO\b", r"\bEGO(?:\s+EGO)+\b", r"\b(?:was|were)\s+(\w+)\b", r"\b(rear|back|tail)\b",
+                r"\b(St|Ave)\.(?=\s+[a-z])", r"\bthe\s+(?:EGO|EGOD)(?:'s)?"):
         rx = re.compile(pat)
         g = gate(rx)
         assert isinstance(g, Gated) and g.cs is not None and not g.fold, pat

@@ -236,12 +236,6 @@ def _hoist_boundary(seq: Any) -> None:
             b.data = [(_c.AT, _c.AT_BOUNDARY)] + b.data
             _hoist_boundary(b)
         seq.data = data[1:]
-    elif nop is _c.BRANCH:
-        # "\ba|\bb": the parser took the shared "\b" out of the branches; it goes back into each.
-        for b in nav[1]:
-            b.data = [(_c.AT, _c.AT_BOUNDARY)] + b.data
-            _hoist_boundary(b)
-        seq.data = data[1:]
 
 
 def _merge_prefixes(seq: Any) -> None:
