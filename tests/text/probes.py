@@ -1029,6 +1029,17 @@ PROBES: tuple[Probe, ...] = (
                                             ("barrier", ("railing", "wheel stop", "gate", "K-rail", "barricade",
                                                          "cushion")),
                                             ("debris", ("tire", "mattress"))) if any(x in w for x in words))]),
+    Probe("more objects in or beside the road, by their names",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a piece of wood", "a wooden plank", "a chunk of concrete", "a hubcap", "a steel plate", "a wheel chock",
+           "a railroad crossing arm", "a parking gate arm", "a drive-thru overhang", "an awning", "a sandwich board",
+           "a newspaper stand", "a garbage can", "a sawhorse", "a parking bumper", "a concrete construction "
+           "barrier"),
+          lambda sk: [o.category for o in sk.obstacles] + [p.category for p in sk.npcs],
+          lambda w: [next(c for c, words in (("debris", ("wood", "plank", "chunk", "hubcap", "plate", "chock")),
+                                            ("barrier", ("arm", "sawhorse", "bumper", "barrier")),
+                                            ("pole", ("sandwich",)),
+                                            ("other", ("overhang", "awning", "stand", "can"))) if any(x in w for x in words))]),
     Probe("a sign, signal pole or stop line the AV struck is not its traffic control",
           "A Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue when it "
           "made contact with {w}.",

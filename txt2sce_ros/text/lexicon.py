@@ -106,7 +106,7 @@ PARTY_HEADS: dict[str, str] = {
     "motorist": "car", "uber": "car", "police cruiser": "car", "cruiser": "car", "golf cart": "car",
     "ambulance": "truck", "street sweeper": "truck", "sweeper": "truck", "rv": "truck", "motorhome": "truck",
     "motor home": "truck", "camper": "truck", "forklift": "truck", "bulldozer": "truck", "excavator": "truck",
-    "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter",
+    "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter", "wheelchair": "pedestrian",
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
@@ -149,6 +149,12 @@ OBSTACLE_HEADS: dict[str, str] = {
     "street light": "pole", "streetlight": "pole", "lamp post": "pole", "lamppost": "pole", "light standard": "pole",
     "light post": "pole", "wheel stop": "barrier", "parking block": "barrier", "crash cushion": "barrier",
     "attenuator": "barrier", "tire": "debris", "tyre": "debris",
+    # (not "wheel", "equipment", "bench": a vehicle's "wheel well", "radar equipment", "bench seat" in the damage
+    # told would name an object)
+    "wood": "debris", "plank": "debris", "chunk": "debris", "hubcap": "debris", "steel plate": "debris",
+    "wheel chock": "debris", "crossing arm": "barrier", "gate arm": "barrier", "overhang": "other", "awning": "other",
+    "sandwich board": "pole", "newspaper stand": "other", "newsstand": "other", "garbage can": "other",
+    "garbage bin": "other", "sawhorse": "barrier", "parking bumper": "barrier",
 }
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
 PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
