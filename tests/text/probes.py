@@ -1039,7 +1039,8 @@ PROBES: tuple[Probe, ...] = (
           lambda w: [next(c for c, words in (("debris", ("wood", "plank", "chunk", "hubcap", "plate", "chock")),
                                             ("barrier", ("arm", "sawhorse", "bumper", "barrier")),
                                             ("pole", ("sandwich",)),
-                                            ("other", ("overhang", "awning", "stand", "can"))) if any(x in w for x in words))]),
+                                            ("other", ("overhang", "awning", "stand", "can")))
+                          if any(x in w for x in words))]),
     Probe("a sign, signal pole or stop line the AV struck is not its traffic control",
           "A Zoox vehicle was traveling northbound on Koval Lane between Flamingo Road and Harmon Avenue when it "
           "made contact with {w}.",
@@ -1166,8 +1167,8 @@ PROBES: tuple[Probe, ...] = (
           lambda sk: (sk.road.layout, sk.ego.actions[-1:]),
           lambda w: ("straight", "d" if "left" in w else "e")),
     Probe("an object in the AV's lane that it went around took part",
-          "A Zoox vehicle was traveling northbound on Koval Lane when it slowed behind {w} and began to change lanes to "
-          "the left. A sedan traveling in the left lane struck its driver side.",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it slowed behind {w} and began to change lanes "
+          "to the left. A sedan traveling in the left lane struck its driver side.",
           ("a double-parked vehicle", "a double-parked delivery truck", "a vehicle double-parked in its lane",
            "a parked garbage truck blocking its lane", "a box truck that was double parked", "an unattended box "
            "truck in its lane", "an illegally parked car in its lane", "a delivery van parked in the travel lane",
