@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 44 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 46 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 460 of
-their 568 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 464 of
+their 592 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
@@ -67,6 +67,15 @@ _CATEGORIES = {
 }
 
 _AV_STOPPED = "The Waymo AV was stopped at a red light on Mission Street at 16th Street. "
+# A lane entered after a verb of going forward or of starting (two probe sets: a party moving, one standing).
+_LANE_ENTERED_GOING = ("began to proceed into the Waymo AV's lane", "proceeded into the Waymo AV's lane",
+                       "started moving into the Waymo AV's lane", "moved forward into the Waymo AV's lane",
+                       "pulled forward into the Waymo AV's lane", "crept into the Waymo AV's lane",
+                       "inched into the Waymo AV's lane", "began to creep into the Waymo AV's lane",
+                       "proceeded to enter the Waymo AV's lane", "began to nose into the Waymo AV's lane",
+                       "rolled forward into the Waymo AV's lane",
+                       "proceeded forward into the lane occupied by the Waymo AV")
+
 
 def _partner_position(sk: Sketch) -> object:
     return next(((p.position, p.lane) for p in sk.npcs if p.id == sk.collision.with_), None)
@@ -988,6 +997,14 @@ PROBES: tuple[Probe, ...] = (
           ("began to pull out", "pulled out", "pulled away from the curb", "pulled out from its parking spot",
            "began pulling out", "started to pull out"),
           _npc_actions, [("stopped", "ig")]),
+    Probe("a moving party entering the AV's lane by a verb of going forward",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling in the right "
+          "lane {w} and made contact with the passenger side of the Waymo AV.",
+          _LANE_ENTERED_GOING, _npc_actions, [("moving", "af")]),
+    Probe("a standing party entering the AV's lane by a verb of going forward",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan that was stopped in "
+          "the right lane {w} and made contact with the passenger side of the Waymo AV.",
+          _LANE_ENTERED_GOING, _npc_actions, [("stopped", "if")]),
     # Session 11 (obstacles, the road's layout and control, the AV's own start and actions, refusals): written from
     # the spec's definitions and the ways the companies' reports tell these facts.
     Probe("a parked, unattended vehicle the AV struck is an obstacle",

@@ -82,7 +82,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
-          r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=forward\s)into\s+the\s+(?:adjacent\s+)?left(?:most)?\s+lane\b|"
+          r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:travel\s+|through\s+)?lane\b|"
           # "changed lanes to the right and then back to the left": the return told without its verb
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+left\b|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
@@ -113,7 +113,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
           r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
-          r"(?<=forward\s)into\s+the\s+(?:adjacent\s+)?right(?:most)?\s+lane\b|"
+          r"(?<=\s)into\s+the\s+(?:adjacent\s+)?right\s+(?:travel\s+|through\s+)?lane\b|"
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+right\b|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
@@ -137,6 +137,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # the lane entered tells the manoeuvre, whatever the verb; a turn into it is the turn's end, not a change.
           r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|ran|rode|swung|cut|slid|crept)\s+(?:\w+ly\s+)?(?:over\s+|back\s+)?into\s+"
           r"(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
+          # ... and after any verb group that ends in one of going ("began to proceed into EGO's lane", "moved
+          # forward into the lane occupied by EGO"): the lane entered, read on its own (no overlap with the start)
+          r"(?<=\s)into\s+(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+|driving\s+)?lane\b|"
+          r"(?<=\s)into\s+the\s+lane\s+(?:occupied\s+by|of)\s+EGO\b|"
           # "attempted to move over": over, with no side told, is toward the lane beside it
           r"\b(?:mov|shift|edg|swung|swing)(?:ed|ing|es|e|s)?\s+over\b(?!\s+(?:to\s+|toward\s+|into\s+)?(?:the\s+)?"
           r"(?:left|right|curb|shoulder|side|far))|"
@@ -388,9 +392,15 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if needs is not None and not needs & present:
             continue
         for m in rx.finditer(s):
-            if any(m.start() < e and m.end() > b for b, e, _ in spans):
-                continue  # an earlier (more specific) phrase already covers this text
-            spans.append((m.start(), m.end(), code))
+            start = m.start()
+            if any(start < e and m.end() > b for b, e, _ in spans):
+                # An earlier (more specific) phrase already covers this text; but where it took only the verb of
+                # a move into a lane ("began to proceed | into EGO's lane"), the lane entered is read on its own.
+                into = m.group(0).lower().find("into ") if code in ("f", "g", "F") else -1
+                start = m.start() + into
+                if into <= 0 or any(start < e and m.end() > b for b, e, _ in spans):
+                    continue
+            spans.append((start, m.end(), code))
     for m in _STATE_STOP.finditer(s):
         # (its own words win where they hold "stop", or deny a move: "was not moving")
         if not any(m.start() < e and m.end() > b for b, e, _ in spans) or "stop" in m.group(0).lower() or \
@@ -499,6 +509,15 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 a.pos - (dedup[-1].pos + len(dedup[-1].text)) <= 2:
             continue  # "reversing into a parking space": where the backing was headed; the string ends at contact
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
+        if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
+                turn.code in ("d", "e", "j", "m", "O", "P") and turn.sent == a.sent and 0 <= a.pos - turn.pos <= 70:
+            continue  # "turned right into EGO's lane", "pulled out of its space into the left lane": where it ended
+        if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
+                turn.code in ("f", "g", "F") and turn.sent == a.sent and 0 <= a.pos - turn.pos - len(turn.text) <= 3:
+            if turn.code == "F":  # "merged | into the left lane": one move, its side told by the lane
+                dedup[dedup.index(turn)] = Act(turn.sent, turn.pos, a.code, turn.who, turn.text + " " + a.text,
+                                               turn.under_way)
+            continue
         if (a.code == "F" or (a.code in ("f", "g") and a.text[:5].lower() == "enter")) and turn is not None and \
                 turn.code in ("d", "e") and fre.fullmatch(r"[^,.;]{0,60}\band\s+(?:\w+ly\s+)?",
                                                          s[turn.pos + len(turn.text):a.pos]) and \
