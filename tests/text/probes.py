@@ -1102,6 +1102,14 @@ PROBES: tuple[Probe, ...] = (
           lambda w: ("junction3" if "three-way" in w else "junction4",
                      "none" if ("uncontrolled" in w or "unsignalized" in w) else
                      "stop_sign" if "stop" in w.replace("stop light", "").replace("stoplight", "") else "signal")),
+    Probe("a junction's legs, told in more ways",
+          "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
+          ("at a 3-way intersection", "at a three-legged intersection", "at a tee intersection", "where Koval Lane "
+           "ends at Flamingo Road", "at the end of Koval Lane where it meets Flamingo Road", "at a three way "
+           "intersection", "at a Y-intersection", "at a five-way intersection", "at a 4-way intersection",
+           "where the bike lane ends at the intersection", "at the T intersection of Koval Lane and Flamingo Road"),
+          lambda sk: sk.road.layout,
+          lambda w: "junction4" if any(x in w for x in ("five", "4-way", "bike lane")) else "junction3"),
     Probe("a place that is no junction",
           "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
           ("at a mid-block crosswalk on Koval Lane", "in a driveway on Koval Lane", "in a pick-up and drop-off zone",

@@ -20,7 +20,13 @@ _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bs
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
-_T_JUNCTION = compile_gated(r"\bT-?\s?(?:junction|intersection|instersection)\b|\b(?:three|3)-way\s+(?:intersection|stop)\b|"
+_T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
+                         r"\b(?:three|3)[- ]?(?:way|legged|leg)\s+(?:intersection|stop|junction)\b|"
+                         # "where Koval Lane ends at Flamingo Road", "the end of X where it meets Y": a road ending
+                         # (a street's name, capitalised: "the bike lane ends at the intersection" is no T)
+                         r"\b(?-i:(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln)\.?\s+"
+                         r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
+                         r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
                          r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
