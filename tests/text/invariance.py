@@ -130,9 +130,10 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("boilerplate appended", lambda t: t.rstrip() + " Both vehicles sustained minor damage. No injuries were "
                                                          "reported and the police were not called to the scene."),
     # Session 11: where the AV was touched told the other way round, lane and junction synonyms, a standstill told
-    # as a halt, and words reports use interchangeably.
+    # as a halt, headings told with a verb, passives, and words reports use interchangeably.
     Rewrite("the <part> of the AV -> the AV's <part>", _sub(
-        rf"\bthe ({_BODY_PART}) of the ((?:\w+ ){{0,2}}?(?:AV|vehicle))\b", lambda m: f"the {m.group(2)}'s {m.group(1)}")),
+        rf"\bthe ({_BODY_PART}) of the ((?:\w+ ){{0,2}}?(?:AV|vehicle))\b",
+        lambda m: f"the {m.group(2)}'s {m.group(1)}")),
     Rewrite("the AV's <part> -> the <part> of the AV", _sub(
         rf"\bthe ((?:Waymo|Cruise|Zoox) (?:AV|vehicle))(?:'s|\u2019s) ({_BODY_PART})", r"the \2 of the \1")),
     Rewrite("driver side -> driver's side", _sub(r"\bdriver side\b", "driver's side")),
@@ -148,6 +149,23 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("passenger car -> sedan", _sub(r"\bpassenger (?:car|vehicle)\b", "sedan")),
     Rewrite("'At the time of the impact ...' dropped", _sub(r"At the time of the impact[^.]*\.\s*", "")),
     Rewrite("a/the vehicle -> a/the car", _sub(r"\b(a|the) (white |black |silver )?vehicle\b", r"\1 \2car")),
+    Rewrite("traveling -> travelling", _sub(r"\btraveling\b", "travelling")),
+    Rewrite("was stopped -> was at a standstill", _sub(r"\bwas stopped\b", "was at a standstill")),
+    Rewrite("approximately -> roughly", _sub(r"\bapproximately\b", "roughly")),
+    Rewrite("(bi)cyclist -> bike rider", _sub(r"\b(?:bi)?cyclist\b", "bike rider")),
+    Rewrite("struck -> impacted", _sub(r"\bstruck\b", "impacted")),
+    Rewrite("when -> as", _sub(r"\bwhen\b", "as")),
+    Rewrite("'then' dropped", _sub(r"\bthen ", "")),
+    Rewrite("the Waymo AV -> Waymo's vehicle", _sub(r"\b[Tt]he Waymo AV\b", "Waymo's vehicle")),
+    Rewrite("the <operator> AV -> the AV", _sub(r"\b([Tt])he (?:Waymo|Cruise|Zoox) (?:AV|vehicle)\b", r"\1he AV")),
+    Rewrite("northbound -> north-bound", _sub(r"\b(north|south|east|west)bound\b", r"\1-bound")),
+    Rewrite("traveling <dir>bound -> going <dir>", _sub(r"\btraveling (north|south|east|west)bound\b", r"going \1")),
+    Rewrite("yielded -> gave way", _sub(r"\byielded\b", "gave way")),
+    Rewrite("slowed/decelerated -> reduced speed", _sub(r"\b(?:decelerated|slowed down|slowed)\b", "reduced speed")),
+    Rewrite("pickup truck -> pickup", _sub(r"\bpickup truck\b", "pickup")),
+    Rewrite("<side> lane -> <side> traffic lane",
+            _sub(r"\b(left|right|center|middle|adjacent) lane\b", r"\1 traffic lane")),
+    Rewrite("in autonomous mode -> in self-driving mode", _sub(r"\bin autonomous mode\b", "in self-driving mode")),
 )
 
 

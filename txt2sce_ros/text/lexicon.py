@@ -177,7 +177,7 @@ CONTACT = compile_gated(
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
-    r"(?:was|is|were|are)\s+(?:hit|struck)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs))\b", re.I)
+    r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs))\b", re.I)
 NEGATION = compile_gated(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
 CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,

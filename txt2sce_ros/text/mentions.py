@@ -38,6 +38,8 @@ _FIRST_VEHICLE = compile_gated(
 # Spellings other than the ones the rules read, rewritten first: (words one of which the text must hold for the
 # pattern to be tried at all, looked for in the lower-cased text unless the rewrite is case-sensitive; pattern;
 # replacement). Scanning every narrative with every pattern costs more than the look for its words.
+# ("going north" is travel along a road as "traveling northbound" is: the rules read the latter)
+_TRAVEL_VERB = {"going": "traveling", "went": "traveled"}
 _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Match[str]], str]], ...] = (
     # "a left-turn", "a lane-change", "the stop-sign", "a red-light", "the parking-lot", "the bike-lane": spaced
     (("-turn", "-chang", "-sign", "-light", "-lot", "-lane", "-line", "-guard"), False,
@@ -58,6 +60,24 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"\b(neighbou?ring)(?=\s+lanes?\b)|\b(junction)(s?)\b|\b(halt)(ed|ing|s)?\b", re.I),
      lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + m.group(4))
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
+    # "the left traffic lane", "the adjacent travel lane": the lane the rules know by its side
+    (("traffic lane", "travel lane", "driving lane"), False,
+     compile_gated(r"\b(left|right|center|centre|middle|adjacent|leftmost|rightmost|opposing|oncoming|same|far\s+left|"
+                   r"far\s+right|neighbou?ring|other|next)\s+(?:traffic|travel|driving)\s+(lanes?)\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)}"),
+    # a heading told with a verb and a bare compass point ("going north", "riding west"): the "-bound" the rules read
+    (("north", "south", "east", "west"), False,
+     compile_gated(r"\b(going|driving|moving|proceeding|riding|walking|headed|continuing|continued|drove|went|rode)\s+"
+                   r"(north|south|east|west|northeast|northwest|southeast|southwest)\b(?!\s*-?\s*(?:bound|ward|ern))",
+                   re.I),
+     lambda m: f"{_TRAVEL_VERB.get(m.group(1).lower(), m.group(1))} {m.group(2)}bound"),
+    # "gave way to", "reduced its speed", "a change of lanes", "self-driving mode"
+    (("way", "reduc", "change of lane", "self-driving mode"), False,
+     compile_gated(r"\b(gave|giving|give|gives)\s+way\b|\b(reduced|reducing|reduces)\s+(?:(?:its|his|her|their)\s+)?speed\b|"
+                   r"\ba\s+change\s+of\s+lanes?\b|\b(self-driving)(?=\s+mode\b)", re.I),
+     lambda m: ({"gave": "yielded", "giving": "yielding", "give": "yield", "gives": "yields"}[m.group(1).lower()]
+                if m.group(1) else {"reduced": "slowed", "reducing": "slowing", "reduces": "slows"}[m.group(2).lower()]
+                if m.group(2) else "autonomous" if m.group(3) else "a lane change")),
     # British spelling, as the rules read US
     (("manoeuv",), False, compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I),
      lambda m: {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering",

@@ -111,8 +111,9 @@ def find_contact(d: Doc) -> None:
     candidates: list[tuple[int, int, int | None]] = []
     for i, s in enumerate(d.sents):
         ments = d.ments[i]
-        has_ego = any(m.kind in ("ego", "egod") for m in ments) or fre.search(r"\b(?:was|were|been|got)\s+"
-                                                                             r"(?:struck|hit|contacted)", s, re.I) or (
+        has_ego = any(m.kind in ("ego", "egod") for m in ments) or fre.search(r"\b(?:was|were|been|got)\s+(?:\w+ly\s+)?"
+                                                                             r"(?:struck|hit|contacted|impacted)", s,
+                                                                             re.I) or (
             # "EGO was stopped at a light. A sedan traveling behind it struck its rear bumper": the pronoun is the
             # AV, the subject of the sentence before, when a party is this sentence's subject.
             i > 0 and any(m.kind in ("ego", "egod") and m.subject for m in d.ments[i - 1]) and
@@ -412,7 +413,8 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 # characters can never lead to a match - possessive matching finds the same matches without the backtracking that
 # made this pattern cost more than any other in the extractor.
 _PART_OF_EGO = compile_gated(r"((?:[\w'-]++\s++){1,6})(?:of|on|to)\s+EGO\b")  # "the rear driver's side of EGO"
-_PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended)"
+_PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended|"
+                                 r"impacted|sideswiped|side-swiped)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
 # "EGO's left rear." names the part at the sentence end too
 _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
