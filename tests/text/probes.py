@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 46 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 47 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 464 of
-their 592 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 472 of
+their 602 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
@@ -1005,6 +1005,20 @@ PROBES: tuple[Probe, ...] = (
           "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan that was stopped in "
           "the right lane {w} and made contact with the passenger side of the Waymo AV.",
           _LANE_ENTERED_GOING, _npc_actions, [("stopped", "if")]),
+    Probe("a party on the cross street that waited at its sign and then went",
+          "The Zoox vehicle was traveling northbound on Koval Lane through the intersection with Flamingo Road. "
+          "A sedan on Flamingo Road {w} and struck the passenger side of the Zoox vehicle.",
+          ("stopped at the stop sign and then proceeded into the intersection",
+           "came to a stop at the stop sign, then entered the intersection",
+           "waited at the stop sign before proceeding into the intersection",
+           "that had stopped at the stop sign pulled into the intersection",
+           "stopped at the stop sign, then drove into the intersection",
+           "which had been stopped at the red light, entered the intersection",
+           "after stopping at the stop sign, proceeded into the intersection",
+           "that was stopped at the stop sign began to proceed",
+           "stopped at the limit line and then accelerated into the intersection",
+           "waiting at the stop sign pulled out"),
+          _npc_actions, [("stopped", "i")]),
     # Session 11 (obstacles, the road's layout and control, the AV's own start and actions, refusals): written from
     # the spec's definitions and the ways the companies' reports tell these facts.
     Probe("a parked, unattended vehicle the AV struck is an obstacle",

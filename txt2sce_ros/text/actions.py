@@ -258,6 +258,9 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are)\s+(?:(?:already|still|
                                r"(?:[\w-]+\s+)?$", re.I)
 # "abruptly stopped", "suddenly halted": a manner adverb makes a stop an event of a party on its way.
 _SUDDEN = compile_gated(r"\b(?:suddenly|abruptly|quickly|unexpectedly|immediately)\s+$", re.I)
+# What a stop is made at when it is where a party waited: a sign, a light, a line.
+_AT_CONTROL = compile_gated(r"\s+(?:at|for)\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(?:stop\s+(?:sign|line|bar)|limit\s+line|"
+                            r"(?:traffic\s+)?(?:light|signal)|red|crosswalk)\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
@@ -268,7 +271,7 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
-_STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|"
+_STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
                          r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
                          r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
@@ -490,6 +493,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "m"  # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road
         if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
+        elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
+            code = "S"  # a party's stop "at the stop sign", "for the red light": where it waited
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))
