@@ -1116,6 +1116,17 @@ PROBES: tuple[Probe, ...] = (
           lambda w: ("junction3" if "three-way" in w else "junction4",
                      "none" if ("uncontrolled" in w or "unsignalized" in w) else
                      "stop_sign" if "stop" in w.replace("stop light", "").replace("stoplight", "") else "signal")),
+    Probe("the AV's traffic control, told as a control or a form field",
+          "{W}. The Beep shuttle was stopped at the intersection of [XXX] and [XXX] when a sedan traveling behind it "
+          "struck its rear bumper.",
+          ("Traffic Control: Traffic Signal", "Traffic Control: Stop Sign", "Traffic Control: None", "the "
+           "intersection is signal-controlled", "the intersection is signal controlled", "it is a light-controlled "
+           "intersection", "the intersection is controlled by a traffic signal", "the intersection is controlled by "
+           "stop signs", "the intersection has no traffic controls", "it is an uncontrolled intersection"),
+          lambda sk: (sk.road.control, sk.signal_state),
+          lambda w: ("stop_sign", "none") if "top" in w else ("none", "none") if ("None" in w or " no " in w or
+                                                                                  "uncontrolled" in w) else
+          ("signal", "unknown")),
     Probe("a junction's legs, told in more ways",
           "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
           ("at a 3-way intersection", "at a three-legged intersection", "at a tee intersection", "where Koval Lane "

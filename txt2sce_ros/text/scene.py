@@ -53,11 +53,12 @@ _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|b
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
-                     r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b", re.I)
+                     r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b", re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
-                            r"\bno\s+traffic\s+(?:control|signals?|lights?)\b", re.I)
+                            r"\bno\s+traffic\s+(?:controls?|signals?|lights?)\b|"
+                            r"\btraffic\s+control(?:\s+device)?s?\s*:\s*none\b", re.I)
 # Road furniture the AV struck that happens to be a sign or a signal's pole tells of no control and no junction
 # ("made contact with a stop sign", "the post of a stop sign", "a traffic signal pole"); a place that is no junction
 # though it has a crosswalk ("a mid-block crosswalk").
@@ -210,8 +211,8 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
     """The AV's light when its actions begin."""
     if not layout.startswith("junction") and layout != "roundabout":
         return "none"
-    if control == "stop_sign":
-        return "none"
+    if control in ("stop_sign", "none"):
+        return "none"  # (a junction the text says has no control has no signal either)
     if control != "signal":
         return "unknown"
     if ego_start == "stopped" and _TURNED_GREEN.search(t):
