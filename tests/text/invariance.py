@@ -166,6 +166,22 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("<side> lane -> <side> traffic lane",
             _sub(r"\b(left|right|center|middle|adjacent) lane\b", r"\1 traffic lane")),
     Rewrite("in autonomous mode -> in self-driving mode", _sub(r"\bin autonomous mode\b", "in self-driving mode")),
+    Rewrite("made contact with -> contacted", _sub(r"\bmade contact with\b", "contacted")),
+    Rewrite("a passenger vehicle -> a motorist", _sub(r"\b([Aa]) passenger (?:vehicle|car)\b", r"\1 motorist")),
+    Rewrite("front bumper -> front end", _sub(r"\bfront bumper\b", "front end")),
+    Rewrite("left side -> driver side", _sub(r"\bleft side\b", "driver side")),
+    Rewrite("right side -> passenger side", _sub(r"\bright side\b", "passenger side")),
+    Rewrite("behind the AV -> to the rear of the AV",
+            _sub(r"\bbehind the ((?:Waymo |Cruise |Zoox )?(?:AV|vehicle))\b", r"to the rear of the \1")),
+    Rewrite("green/red light -> green/red signal", _sub(r"\b(green|red) light\b", r"\1 signal")),
+    Rewrite("the test driver -> the safety driver", _sub(r"\bthe test driver\b", "the safety driver")),
+    Rewrite("manual mode -> conventional mode", _sub(r"\bmanual mode\b", "conventional mode")),
+    Rewrite("scooterist -> scooter rider", _sub(r"\bscooterist\b", "scooter rider")),
+    Rewrite("heavy truck -> large truck", _sub(r"\bheavy truck\b", "large truck")),
+    Rewrite("began to -> started to", _sub(r"\bbegan to\b", "started to")),
+    Rewrite("parked car -> parallel-parked car", _sub(r"\bparked (car|vehicle)\b", r"parallel-parked \1")),
+    Rewrite("double-parked -> double parked", _sub(r"\bdouble-parked\b", "double parked")),
+    Rewrite("mph -> MPH", _sub(r"\bmph\b", "MPH")),
 )
 
 

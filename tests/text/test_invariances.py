@@ -4,10 +4,11 @@ with the reason each still reads differently. On the session-9 start code 520 of
 differently (the AV taken for another party under a new operator's name in 99 of 130); now 10. Session 10 added
 nine rewrites (manoeuvre, speed, clock, party and state paraphrases): 5 of the 243 narratives they change read
 differently at first (a red light the AV was "stationary" at, a turn told as "making a right turn", "a person on
-foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 31 (the AV's part told the other way
+foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 46 (the AV's part told the other way
 round, lane and junction synonyms, "halted", "the left traffic lane", "going north", "gave way", "reduced speed",
-"was impacted", words reports use interchangeably): 73 of their 1,021 rewritten narratives read differently on that
-session's start code (39a178f: those spellings not read as their usual ones); now 1."""
+"was impacted", "to the rear of", "a parallel-parked car", "a motorist", words reports use interchangeably): 97 of
+their 1,301 rewritten narratives read differently on that session's start code (39a178f: those spellings not read as
+their usual ones); now 1."""
 
 from __future__ import annotations
 

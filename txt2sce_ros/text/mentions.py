@@ -62,8 +62,8 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
     # "the left traffic lane", "the adjacent travel lane": the lane the rules know by its side
     (("traffic lane", "travel lane", "driving lane"), False,
-     compile_gated(r"\b(left|right|center|centre|middle|adjacent|leftmost|rightmost|opposing|oncoming|same|far\s+left|"
-                   r"far\s+right|neighbou?ring|other|next)\s+(?:traffic|travel|driving)\s+(lanes?)\b", re.I),
+     compile_gated(r"\b(left|right|center|centre|middle|adjacent|leftmost|rightmost|far\s+left|far\s+right|"
+                   r"neighbou?ring)\s+(?:traffic|travel|driving)\s+(lanes?)\b", re.I),
      lambda m: f"{m.group(1)} {m.group(2)}"),
     # a heading told with a verb and a bare compass point ("going north", "riding west"): the "-bound" the rules read
     (("north", "south", "east", "west"), False,
@@ -78,6 +78,13 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      lambda m: ({"gave": "yielded", "giving": "yielding", "give": "yield", "gives": "yields"}[m.group(1).lower()]
                 if m.group(1) else {"reduced": "slowed", "reducing": "slowing", "reduces": "slows"}[m.group(2).lower()]
                 if m.group(2) else "autonomous" if m.group(3) else "a lane change")),
+    # "made a right" (a turn), "cut ahead of", "traveling to the rear of", "a parallel-parked car"
+    (("made a ", "ahead of", "to the rear of", "parallel"), False,
+     compile_gated(r"\b(made|making|make|makes)\s+a\s+(left|right)\b(?!\s*-?\s*(?:turn|lane|side|hand|of\b))|"
+                   r"\b(cut|cutting|cuts|pulled|pulling|merged|merging|swerved|swerving|moved|moving)\s+ahead\s+of\b|"
+                   r"\b(to\s+the\s+rear\s+of)\b|\b(parallel[- ]parked)\b", re.I),
+     lambda m: (f"{m.group(1)} a {m.group(2)} turn" if m.group(1) else f"{m.group(3)} in front of" if m.group(3)
+                else "behind" if m.group(4) else "parked")),
     # British spelling, as the rules read US
     (("manoeuv",), False, compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I),
      lambda m: {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering",
