@@ -7,10 +7,10 @@ on its left, 5 of 10 standing ahead that the AV runs into, 7 of 10 oncoming, 8 o
 pulling out, 5 of 6 weather wordings, 14 of 15 road layouts, 6 of 8 lights, 7 of 12 stops, 11 of 12 starts, 12 of 16
 lane changes of the AV, 11 of 14 turns, 15 of 15 names of the AV, 0 of 4 contacts told with a pronoun for the AV, 19
 of 23 contact verbs, 21 of 23 objects struck and 49 of 56 party nouns came out right (251 of 313); now all of them
-(`test_probes.py` holds that). Session 11 added 47 sets on parties' action strings (sketch.md's codes and hard-case
+(`test_probes.py` holds that). Session 11 added 48 sets on parties' action strings (sketch.md's codes and hard-case
 rules: moving off, stopping, slowing, backing, U-turns, crossing, driveways, merges, strings that end at the contact,
-parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 472 of
-their 602 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
+parties standing throughout, manoeuvres under way, the present tense); on that session's start code (39a178f) 475 of
+their 618 wordings came out right, now all. Five sets of whole scenes came with them (a party beside, ahead or behind
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
@@ -1019,6 +1019,16 @@ PROBES: tuple[Probe, ...] = (
            "stopped at the limit line and then accelerated into the intersection",
            "waiting at the stop sign pulled out"),
           _npc_actions, [("stopped", "i")]),
+    Probe("a party beside the AV getting in front of it",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling in the right "
+          "lane {w}, and the Waymo AV made contact with its rear bumper.",
+          ("moved in front of the Waymo AV", "got in front of the Waymo AV", "pulled in front of the Waymo AV",
+           "came in front of the Waymo AV", "swerved in front of the Waymo AV", "cut the Waymo AV off",
+           "merged in front of the Waymo AV", "darted in front of the Waymo AV", "moved over in front of the Waymo "
+           "AV", "slid in front of the Waymo AV", "cut over in front of the Waymo AV", "squeezed in front of the "
+           "Waymo AV", "nosed in front of the Waymo AV", "jumped in front of the Waymo AV",
+           "moved directly in front of the Waymo AV", "pulled directly into the Waymo AV's path"),
+          _npc_actions, [("moving", "af")]),
     # Session 11 (obstacles, the road's layout and control, the AV's own start and actions, refusals): written from
     # the spec's definitions and the ways the companies' reports tell these facts.
     Probe("a parked, unattended vehicle the AV struck is an obstacle",

@@ -149,9 +149,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bveer(?:ed|ing|s)\s+into\b|\bdrift(?:ed|ing|s)\s+into\b|\bsw(?:ung|ing|ings|inging)\s+wide\s+into\b|"
           r"\b(?:moved|moving|move|came|coming|come|pulled|pulling)\s+"
           r"(?:over\s+)?into\s+(?:EGO's|the\s+EGO's|its|our|the\s+same)\s+lane\b|"
-          # "moved into EGO's path", "entered the lane occupied by EGO": the AV's lane named by its path or by it
-          r"\b(?:moved|moving|came|coming|pulled|pulling|swerved|veered|cut)\s+(?:over\s+)?into\s+(?:EGO's|our)\s+"
-          r"path\b|\b(?:enter(?:ed|ing|s)?|(?:mov|merg|chang|cross)(?:ed|ing|es|e)\s+(?:over\s+)?into)\s+the\s+"
+          # "entered the lane occupied by EGO": the AV's lane named by it
+          r"\b(?:enter(?:ed|ing|s)?|(?:mov|merg|chang|cross)(?:ed|ing|es|e)\s+(?:over\s+)?into)\s+the\s+"
           r"lane\s+(?:occupied\s+by|of)\s+EGO\b|"
           # leaving its own lane toward the AV: "failed to stay in its lane", "drifted out of its lane"
           r"\bfail(?:ed|ing|s)?\s+to\s+(?:stay|remain|keep|maintain)\s+(?:in\s+)?(?:its|their|his|her)\s+lane\b|"
@@ -176,6 +175,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:line|divider|markings?|boundary)\b|"
           r"\b(?:mov|shift|drift|veer|swerv|edg|cross|wander)(?:ed|ing|es|e|s)?\s+(?:over|across)\s+(?:the\s+)?"
           r"(?:lane\s+(?:line|divider|markings?|boundary)|(?:dividing|white|dashed)\s+(?:lane\s+)?line)"),
+    # "moved in front of EGO", "got in front of EGO", "pulled into EGO's path", "cut EGO off": a move across the
+    # AV's front; from a lane beside the AV it is a lane change into its lane (sequences.sequence), else no letter.
+    ("Q", r"\b(?:mov|pull|came|com|got|get|swerv|dart|slid|slip|squeez|nos|jump|swung|swing|duck|veer|drift|edg|"
+          r"shift|steer)\w*\s+(?:over\s+|back\s+|out\s+)?(?:directly\s+|right\s+|just\s+|immediately\s+|suddenly\s+)?"
+          r"(?:in\s+front\s+of\s+EGO\b|into\s+(?:EGO's|our)\s+path\b)|\bcut(?:s|ting)?\s+EGO\s+off\b"),
     ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
           r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
@@ -235,6 +239,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed"), "A": ("straight",), "Y": ("turn",),
+    "Q": ("front", "path", "off"),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
@@ -306,7 +311,8 @@ class Act:
     sent: int
     pos: int
     code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state),
-    # "O" (out of a parking spot), "P" (pulled out: "O" if it was parked, else a start)
+    # "O" (out of a parking spot), "P" (pulled out: "O" if it was parked, else a start), "Q" (across the AV's
+    # front: a lane change from a lane beside it, else nothing)
     who: int  # entity index, -1 = ego
     text: str
     #: Told in the progressive ("was making a right turn", "a truck merging onto the highway", "while changing

@@ -187,6 +187,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # against the red light") travels straight along its own road; `m` is for walkers and riders crossing
             # and for vehicles leaving a driveway or lot (sketch.md).
             acts = fre.sub(r"a+", "a", acts.replace("m", "a"))
+        if e.category == "pedestrian" and set(acts) & set("fg"):
+            # A walker's sideways move into the road ("darted in front of EGO") is its crossing of the AV's path.
+            acts = fre.sub(r"m+", "m", acts.replace("f", "m").replace("g", "m"))
         if acts.startswith("am"):
             acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:

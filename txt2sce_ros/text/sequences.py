@@ -28,6 +28,10 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 codes and codes[-1] == "h") and not any(x.code == "S" for x in acts[:k])
             c = "O" if any(x.code == "S" and "park" in x.text.lower() for x in acts[:k]) else \
                 "F" if on_its_way else "i"
+        if c == "Q":
+            if side not in ("left", "right"):
+                continue  # across the AV's front from its own lane, a junction or the roadside: told by other words
+            c = "F"
         if c == "F" and codes and codes[-1] == "m" and not ego:
             continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
         if c == "F":
