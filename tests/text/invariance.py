@@ -182,6 +182,7 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("parked car -> parallel-parked car", _sub(r"\bparked (car|vehicle)\b", r"parallel-parked \1")),
     Rewrite("double-parked -> double parked", _sub(r"\bdouble-parked\b", "double parked")),
     Rewrite("mph -> MPH", _sub(r"\bmph\b", "MPH")),
+    Rewrite("proceeded -> continued", _sub(r"\bproceeded\b", "continued")),
 )
 
 

@@ -4,11 +4,11 @@ with the reason each still reads differently. On the session-9 start code 520 of
 differently (the AV taken for another party under a new operator's name in 99 of 130); now 10. Session 10 added
 nine rewrites (manoeuvre, speed, clock, party and state paraphrases): 5 of the 243 narratives they change read
 differently at first (a red light the AV was "stationary" at, a turn told as "making a right turn", "a person on
-foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 46 (the AV's part told the other way
+foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 47 (the AV's part told the other way
 round, lane and junction synonyms, "halted", "the left traffic lane", "going north", "gave way", "reduced speed",
-"was impacted", "to the rear of", "a parallel-parked car", "a motorist", words reports use interchangeably): 97 of
-their 1,301 rewritten narratives read differently on that session's start code (39a178f: those spellings not read as
-their usual ones); now 1."""
+"was impacted", "to the rear of", "a parallel-parked car", "a motorist", "continued", words reports use
+interchangeably): 103 of their 1,321 rewritten narratives read differently on that session's start code (39a178f: those
+spellings not read as their usual ones); now 2."""
 
 from __future__ import annotations
 
@@ -44,6 +44,9 @@ KNOWN: dict[str, set[str]] = {
     # driver side of another pickup truck": the contact is given to the second pickup (the last party named before
     # the verb's object), and once the AV's part is read it places that pickup behind the AV.
     "the <part> of the AV -> the AV's <part>": {"dmvca-waymo-20241014-r619"},
+    # "EGO then continued to enter the rightmost lane": "continued to <verb>" is not read as "proceeded to <verb>"
+    # (it may be "continued to brake"), so the AV's move-off before the lane change is lost.
+    "proceeded -> continued": {"nhtsa-sgo-ads-30270-9606-v1"},
 }
 
 

@@ -85,6 +85,12 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"\b(to\s+the\s+rear\s+of)\b|\b(parallel[- ]parked)\b", re.I),
      lambda m: (f"{m.group(1)} a {m.group(2)} turn" if m.group(1) else f"{m.group(3)} in front of" if m.group(3)
                 else "behind" if m.group(4) else "parked")),
+    # "continued into the intersection", "continued forward": moving on is proceeding ("continued to brake" is not)
+    (("continu",), False,
+     compile_gated(r"\b(continued|continuing|continues|continue)(?=\s+(?:into|onto|forward|through|straight|across|"
+                   r"along|down|up|on\b|ahead|northbound|southbound|eastbound|westbound)|\s*[,.;]|\s*$)", re.I),
+     lambda m: {"continued": "proceeded", "continuing": "proceeding", "continues": "proceeds",
+                "continue": "proceed"}[m.group(1).lower()]),
     # British spelling, as the rules read US
     (("manoeuv",), False, compile_gated(r"\bmanoeuv(re|res|red|ring|rable)\b", re.I),
      lambda m: {"re": "maneuver", "res": "maneuvers", "red": "maneuvered", "ring": "maneuvering",
