@@ -332,8 +332,8 @@ def _ascii_spaces(seq: Any) -> bool:
 
 
 def _scanner(rx: re.Pattern[str], fold: bool) -> re.Pattern[str]:
-    """The pattern recompiled for scanning ASCII text: literals lowercased when `fold` (its text is then the
-    lowercase one), a leading `\\b` moved behind its literal, ASCII classes where they are exact. Raises
+    r"""The pattern recompiled for scanning ASCII text: literals lowercased when `fold` (its text is then the
+    lowercase one), a leading `\b` moved behind its literal, ASCII classes where they are exact. Raises
     _Unfoldable (or anything from an unexpected parse tree) where that is not derivable."""
     tree = _p.parse(rx.pattern, rx.flags)
     flags = rx.flags
@@ -395,10 +395,10 @@ def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
 
 
 def twin(rx: re.Pattern[str]) -> re.Pattern[str] | None:
-    """A case-sensitive pattern recompiled for ASCII texts, where it matches exactly as the original (every span
+    r"""A case-sensitive pattern recompiled for ASCII texts, where it matches exactly as the original (every span
     and group), or None.
 
-    Why: a pattern opening with `\\b` ("\\bEGO\\b", "\\bEGO\\s+EGOD\\b") is tried by `re` at every position of the
+    Why: a pattern opening with `\b` ("\bEGO\b", "\bEGO\s+EGOD\b") is tried by `re` at every position of the
     text; with the boundary moved behind its first literal `re` looks for that literal in C, ~10x faster on a
     narrative. ASCII classes spare a Unicode category query per character."""
     if not isinstance(rx.pattern, str) or rx.flags & (re.IGNORECASE | re.LOCALE | re.ASCII):
@@ -412,8 +412,8 @@ def twin(rx: re.Pattern[str]) -> re.Pattern[str] | None:
 
 
 def _reversed(seq: Any) -> list[tuple[Any, Any]]:
-    """The parse-tree items of `seq` for the reversed text: the sequence and every group in it read backwards.
-    Assertions other than the symmetric `\\b`/`\\B` are dropped and possessive or atomic parts made plain: the
+    r"""The parse-tree items of `seq` for the reversed text: the sequence and every group in it read backwards.
+    Assertions other than the symmetric `\b`/`\B` are dropped and possessive or atomic parts made plain: the
     reversed pattern then matches the reverse of every match of the original, and perhaps more (a gate needs
     no more than that)."""
     out: list[tuple[Any, Any]] = []
@@ -446,7 +446,7 @@ _PLAIN_ENDS = ("x", " x", "x ", ".x")
 
 
 def end_gate(rx: re.Pattern[str]) -> re.Pattern[str] | None:
-    """For a pattern anchored at the text's end ("...\\s*$"), the reversed pattern run anchored at the start of
+    r"""For a pattern anchored at the text's end ("...\s*$"), the reversed pattern run anchored at the start of
     the reversed text: where it fails, the original has no match (every match ends at the end of the text, or
     before a final newline, and its reverse starts there). None for other patterns.
 
@@ -469,7 +469,7 @@ def end_gate(rx: re.Pattern[str]) -> re.Pattern[str] | None:
 
 
 def _start_anchored(rx: re.Pattern[str]) -> bool:
-    """Is the pattern anchored at the text's start (`\\A`, or `^` without MULTILINE)? `re` then tries one position."""
+    r"""Is the pattern anchored at the text's start (`\A`, or `^` without MULTILINE)? `re` then tries one position."""
     try:
         data = _p.parse(rx.pattern, rx.flags).data
     except Exception:
