@@ -14,7 +14,7 @@ their 611 wordings came out right, now all. Five sets of whole scenes came with 
 the AV told as each operator tells it; a party at a junction by its road and compass heading; the party struck in the
 OL 316 forms' numbering, "V1 (our AV)", and other operators' words; the AV named by an operator not listed, its
 vehicle or its role; a party using the opposing lane to get around a queue, passing through a junction, beside the
-AV there): 147 of their 176 narratives read right on 39a178f, now all. Session 11 also added 28 sets on objects
+AV there): 147 of their 177 narratives read right on 39a178f, now all. Session 11 also added 28 sets on objects
 (what counts, by name and by verb; doors; lanes; the far side of the street), the road's layout and control, the AV's
 own start and actions, and refusals (a party placed by the part of the AV it touched or by the contact's geometry, a
 party or place named in rarer words), written from sketch.md's definitions and the operators' ways of telling them:
@@ -359,6 +359,9 @@ PROBES: tuple[Probe, ...] = (
              "of the street pulled out and struck the Waymo AV.", [('R5', 'left')]),
     )),
     _scenes("the party struck, in the forms' numbering and other operators' words", _partner_position, (
+            ("The Cruise AV was stopped at a red light. A sedan traveling behind the Cruise AV failed to stop. The "
+             "front of the sedan then made contact with the rear bumper of the Cruise AV and with a parked van.",
+             ("R6", "same")),
             ("V1 (our AV) was traveling southbound in lane 2. V2 was traveling southbound in lane 1. V2 changed lanes "
              "into lane 2 and the right side of V2 struck the left side of V1.", ('R5', 'left')),
             ("Vehicle 1 (AV) was stopped at a red light in the #1 lane. Vehicle 2 was stopped behind Vehicle 1. When "

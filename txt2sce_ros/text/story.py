@@ -135,7 +135,12 @@ def find_contact(d: Doc) -> None:
                 # The doer of the contact verb, when it is not the AV; else what the AV touched (after the verb).
                 who = who_for(m.start(), ments, None)
                 after = [x for x in others if x.start >= m.end()]
-                if who is not None and who >= 0:
+                # "The front of the pickup truck then made contact with ...": the owner of the part is the doer
+                owner = [x for x in others if x.start < m.start() and _PART_OWNER.search(s[max(0, x.start - 40):x.start])
+                         and not fre.search(r"[,;]|\b(?:when|as|while|and|after|before)\b", s[x.end:m.start()], re.I)]
+                if who is None and owner:
+                    partner = owner[-1].entity
+                elif who is not None and who >= 0:
                     partner = who
                 elif after:
                     partner = after[0].entity
@@ -413,6 +418,8 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 # characters can never lead to a match - possessive matching finds the same matches without the backtracking that
 # made this pattern cost more than any other in the extractor.
 _PART_OF_EGO = compile_gated(r"((?:[\w'-]++\s++){1,6})(?:of|on|to)\s+EGO\b")  # "the rear driver's side of EGO"
+_PART_OWNER = compile_gated(r"^(?:[\w-]+\s+){0,2}?(?:front|rear|back|side|corner|bumper|door|fender|mirror|end|trailer|"
+                            r"wheel|tire|hood|bed|load|cargo)\s+of\s+(?:the|a|an|its)\s+$", re.I)
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended|"
                                  r"impacted|sideswiped|side-swiped)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
