@@ -234,6 +234,10 @@ def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
 def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
     """A party named after the AV's contact that itself makes contact in the next sentences ("A second passenger
     car then made contact with the SUV"): a chain collision's party takes part in the event (sketch.md)."""
+    if e.kind == "party" and d.contact_sent is not None and first.sent == d.contact_sent and \
+            first.start > d.contact_pos and first.sent not in d.summary and \
+            fre.search(r"\band\s+(?:also\s+)?(?:with|into)\b", d.sents[first.sent][d.contact_pos:first.start], re.I):
+        return True  # "made contact with EGO's rear and with the side of another pickup truck": the same contact
     if e.kind != "party" or d.contact_sent is None or first.sent in d.summary or \
             not 0 < first.sent - d.contact_sent <= 2:
         return False
