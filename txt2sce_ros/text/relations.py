@@ -127,13 +127,16 @@ _EDGE_RIDERS = ("bicycle", "scooter")
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
+# The traffic the AV stands or moves in ("the queue", "the line of cars", "the stopped traffic"): passing it is
+# passing the AV's queue from behind.
+_QUEUE = r"(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b"
 _PASSED_OTHER = compile_gated(r"(?:[\w-]+\s+){0,2}?(?:pass(?:ed|ing|es)?|past|around)\s+(?:(?:through|into|across|over|"
                               r"beyond)\s+(?:the\s+|a\s+)?(?:intersection|crosswalk|junction|light|signal|stop|crossing|"
                               r"gate|roundabout)|(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+"
-                              r"EGO|(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b))", re.I)
+                              rf"EGO|{_QUEUE}))", re.I)
 _PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pass|passing|overtake|overtaking|bypass|"
                             r"bypassing|get\w*\s+ahead\s+of|cut\w*)\s+(?:around|past|by|through)?\s*(?:the|a)\s+"
-                            r"(?:long\s+)?(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b"
+                            rf"(?:long\s+)?{_QUEUE}"
                             r"(?:\s+(?:of\s+)?(?:traffic|vehicles|cars))?|\bbypass(?:ed|ing)?\s+(?:the\s+)?traffic\b)",
                             re.I)
 _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
