@@ -5,22 +5,27 @@ gathered as `Cue`s, each from one kind of fact the narrative states about the pa
 
 | kind | values | read from |
 |---|---|---|
-| `lane` | left / right / same | "in the lane to the left of EGO", "left adjacent lane", "bike lane" (right), "on EGO's right" |
+| `lane` | left / right / same | "in the lane to the left of EGO", "left adjacent lane", "bike lane", "on EGO's right" |
 | `along` | behind / ahead | "behind", "following", "from the rear", "ahead of EGO", "in front of EGO" |
-| `passing` | behind (+ side) | "passing/overtaking EGO on the left": a same-direction party that passes comes from behind |
+| `passing` | behind (+ side) | "passing/overtaking EGO on the left", "to get around the queue": it came from behind |
 | `contact` | front / rear, left / right | the part of the AV the party touched ("left rear corner", "passenger door") |
-| `direction` | opposite | "oncoming", "opposite direction", opposed compass headings |
+| `direction` | opposite, its path | "oncoming", "opposite direction"; "the oncoming lane", "the wrong side of the road"|
 
-and combined in a fixed order, highest first, so a rule can be read and its weight seen:
+(a side of the street told by compass, "on the west side of 2nd Avenue", is a `lane` cue read against the AV's
+heading) and combined in a fixed order, highest first, so a rule can be read and its weight seen:
 
 0. A pedestrian or rider the turning AV meets at a junction, in a crosswalk or yielded to, is on the leg the AV
    turns onto (R4).
-1. A party travelling the other way keeps the first reading (R2 at a junction, R7 elsewhere).
-2. Along the AV's road (R5/R6): an explicit `along` cue decides front/behind; else `passing` (behind); else the
-   contact on the AV's rear half (behind) or front half (ahead) for a party not backing up; else the first reading.
-3. The lane: an explicit `lane` cue; else the side the `passing` cue names; else the side of the AV the party
-   touched, for a party ahead or passing (one behind that strikes a rear corner was most often right behind);
+1. A party travelling the other way keeps the first reading (R2 at a junction, R7 elsewhere); one that drives the
+   opposing lane to pass is behind (R6); one read onto a crossing road but said to come "from the opposite direction"
+   is the opposite approach (R2).
+2. Along the AV's road (R5/R6): an explicit `along` cue (nearest the party's name first) decides front/behind; else
+   `passing` (behind); else the contact on the AV's rear half (behind) or front half (ahead) for a party not backing
+   up; else a party moving in the lane beside an AV that stood throughout and touching its side passed it (behind);
    else the first reading.
+3. The lane: an explicit `lane` cue (one said relative to the AV before a lane's name on the road); else the side
+   the `passing` cue names; else the side of the AV the party touched, for a party ahead or passing (one behind
+   that strikes a rear corner was most often right behind); else the first reading.
 4. A cyclist or scooterist read in the AV's lane from no explicit same-lane phrase rides at the road's edge: on the
    side of the AV it touched, else the curb side (right).
 
