@@ -9,7 +9,7 @@ gathered as `Cue`s, each from one kind of fact the narrative states about the pa
 | `along` | behind / ahead | "behind", "following", "from the rear", "ahead of EGO", "in front of EGO" |
 | `passing` | behind (+ side) | "passing/overtaking EGO on the left", "to get around the queue": it came from behind |
 | `contact` | front / rear, left / right | the part of the AV the party touched ("left rear corner", "passenger door") |
-| `direction` | opposite, its path | "oncoming", "opposite direction"; "the oncoming lane", "the wrong side of the road"|
+| `direction` | opposite, path | "oncoming", "opposite direction"; "the oncoming lane", "the wrong side of the road"|
 
 (a side of the street told by compass, "on the west side of 2nd Avenue", is a `lane` cue read against the AV's
 heading) and combined in a fixed order, highest first, so a rule can be read and its weight seen:
