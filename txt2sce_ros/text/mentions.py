@@ -66,13 +66,14 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"neighbou?ring)\s+(?:traffic|travel|driving)\s+(lanes?)\b", re.I),
      lambda m: f"{m.group(1)} {m.group(2)}"),
     # a heading told with a verb and a bare compass point ("going north", "riding west"): the "-bound" the rules read
-    (("north", "south", "east", "west"), False,
+    (("going ", "driving ", "moving ", "proceeding ", "riding ", "walking ", "headed ", "continu", "drove ", "went ",
+      "rode "), False,
      compile_gated(r"\b(going|driving|moving|proceeding|riding|walking|headed|continuing|continued|drove|went|rode)\s+"
                    r"(north|south|east|west|northeast|northwest|southeast|southwest)\b(?!\s*-?\s*(?:bound|ward|ern))",
                    re.I),
      lambda m: f"{_TRAVEL_VERB.get(m.group(1).lower(), m.group(1))} {m.group(2)}bound"),
     # "gave way to", "reduced its speed", "a change of lanes", "self-driving mode"
-    (("way", "reduc", "change of lane", "self-driving mode"), False,
+    (("gave way", "giving way", "give way", "gives way", "reduc", "change of lane", "self-driving mode"), False,
      compile_gated(r"\b(gave|giving|give|gives)\s+way\b|\b(reduced|reducing|reduces)\s+(?:(?:its|his|her|their)\s+)?speed\b|"
                    r"\ba\s+change\s+of\s+lanes?\b|\b(self-driving)(?=\s+mode\b)", re.I),
      lambda m: ({"gave": "yielded", "giving": "yielding", "give": "yield", "gives": "yields"}[m.group(1).lower()]
