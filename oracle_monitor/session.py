@@ -107,6 +107,7 @@ class JudgeSession:
         self._next_max_key = -1                             # and of the previous run (where it ended)
         self._prev_end_key = -1
         self.dropped = 0                                    # late messages of finished runs
+        self._judged_envelope: ScenarioEnvelope | None = None  # the scenario of the run judged last
 
     # --- dispatch ------------------------------------------------------------------------------------------------
 
@@ -244,6 +245,13 @@ class JudgeSession:
                 self._end_run(None)               # a scenario that never produced a frame
                 return self._start(envelope) if self.run is None else None
         if run is None:
+            last = self._judged_envelope
+            if envelope is not None and last is not None and envelope.id == last.id:
+                # The judged run's scenario delivered again (transient-local history reaching a late-matched
+                # reader): no new run. A replay of it starts with the player's 'started' status, which takes it.
+                return None
+            if envelope is None and last is not None and sid == last.id:
+                envelope = last
             # No reset of the assembler here: `finish` cleared it, and what it holds now (parts of a first frame
             # that came before its scenario) is this run's.
             run = RunState()
@@ -304,6 +312,7 @@ class JudgeSession:
         if run.notes:
             verdict = replace(verdict, notes=tuple(run.notes) + verdict.notes)
         self.verdicts.append(verdict)
+        self._judged_envelope = run.envelope
         self.run = None
         self.assembler.reset()
         if self._used:                            # the next run takes the next generation of every topic

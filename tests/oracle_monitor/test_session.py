@@ -169,3 +169,25 @@ def test_a_run_broken_at_t0_then_a_run_from_t0() -> None:
     a, b = s.verdicts
     assert a.verdict is Verdict.ERROR and "planner_not_responding" in a.error
     assert (b.scenario_id, b.verdict, b.frames) == ("b", Verdict.PASS, 121)
+
+
+def test_the_judged_runs_scenario_delivered_again_starts_no_run() -> None:
+    # Transient-local history: a reader matched late gets run a's scenario again after a ended. That copy is no
+    # run of its own (it was judged "nothing observed" beside a's real verdict); a replay of a, which the player
+    # announces with a 'started' status, still is, and keeps a's scenario.
+    s = JudgeSession(PARAMS)
+    s.on_message(c.TOPIC_GOAL, ros_io.goal_to_pose(Goal(60.0, 0.0, 0.0)))
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "started"))
+    _feed(s, straight_run(lambda t: 10.0, 6.0))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 6.0, "goal_reached"))
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    s.close()
+    assert [(v.scenario_id, v.verdict) for v in s.verdicts] == [("a", Verdict.PASS)]
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "started"))
+    s.on_message(c.TOPIC_GOAL, ros_io.goal_to_pose(Goal(60.0, 0.0, 0.0)))
+    _feed(s, straight_run(lambda t: 10.0, 6.0))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 6.0, "goal_reached"))
+    replay = s.verdicts[-1]
+    assert len(s.verdicts) == 2 and (replay.scenario_id, replay.verdict) == ("a", Verdict.PASS)
+    assert not any("road network not loaded" in n for n in replay.notes)
