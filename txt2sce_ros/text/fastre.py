@@ -49,6 +49,22 @@ COMMON = frozenset({"the", "and", "was", "were", "into", "over", "with", "that",
 _REPEATS = {_c.MAX_REPEAT, _c.MIN_REPEAT} | ({_c.POSSESSIVE_REPEAT} if hasattr(_c, "POSSESSIVE_REPEAT") else set())
 
 
+def _children(op: Any, av: Any) -> list[Any]:
+    """The sub-trees under one node of a parsed pattern: a group's body, each alternative, a repeat's body, a
+    lookaround's body, an atomic group. The walkers of the tree below descend through these."""
+    if op is _c.SUBPATTERN:
+        return [av[3]]
+    if op is _c.BRANCH:
+        return list(av[1])
+    if op in _REPEATS:
+        return [av[2]]
+    if op in (_c.ASSERT, _c.ASSERT_NOT):
+        return [av[1]]
+    if hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
+        return [av]
+    return []
+
+
 def _minimal(factors: set[str]) -> frozenset[str]:
     """Drop factors that contain another factor: finding the shorter one is already implied."""
     keep = sorted(factors, key=len)
@@ -181,20 +197,11 @@ def _fold(seq: Any) -> None:
             seq.data[k] = (op, ord(chr(av).lower()))
         elif op is _c.IN:
             seq.data[k] = (op, _fold_class(av))
-        elif op is _c.SUBPATTERN:
-            group, add_flags, del_flags, body = av
-            if (add_flags | del_flags) & (re.IGNORECASE | re.LOCALE | re.ASCII):
+        elif kids := _children(op, av):
+            if op is _c.SUBPATTERN and (av[1] | av[2]) & (re.IGNORECASE | re.LOCALE | re.ASCII):
                 raise _Unfoldable  # a scoped case-sensitive part ("(?-i:[A-Z])") cannot run on lowercase text
-            _fold(body)
-        elif op is _c.BRANCH:
-            for b in av[1]:
-                _fold(b)
-        elif op in _REPEATS:
-            _fold(av[2])
-        elif op in (_c.ASSERT, _c.ASSERT_NOT):
-            _fold(av[1])
-        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
-            _fold(av)
+            for kid in kids:
+                _fold(kid)
         elif op not in (_c.AT, _c.ANY):
             raise _Unfoldable  # back-references, conditionals
 
@@ -245,18 +252,10 @@ def _merge_prefixes(seq: Any) -> None:
     them or for none), but tests the shared literal once per position instead of once per alternative. Only
     neighbours merge: moving an alternative before another could change which match is found."""
     for k, (op, av) in enumerate(seq.data):
-        if op is _c.SUBPATTERN:
-            _merge_prefixes(av[3])
-        elif op is _c.BRANCH:
-            for b in av[1]:
-                _merge_prefixes(b)
+        for kid in _children(op, av):
+            _merge_prefixes(kid)
+        if op is _c.BRANCH:
             seq.data[k] = (op, (av[0], _merged(av[1], seq.state)))
-        elif op in _REPEATS:
-            _merge_prefixes(av[2])
-        elif op in (_c.ASSERT, _c.ASSERT_NOT):
-            _merge_prefixes(av[1])
-        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
-            _merge_prefixes(av)
 
 
 def _merged(branches: list[Any], state: Any) -> list[Any]:
@@ -311,20 +310,8 @@ def _ascii_spaces(seq: Any) -> bool:
                     return False
                 seq.data[k] = (op, [x for x in av if not (x[0] is _c.CATEGORY and x[1] is _c.CATEGORY_SPACE)]
                                + list(_ASCII_SPACE))
-        elif op is _c.SUBPATTERN:
-            if not _ascii_spaces(av[3]):
-                return False
-        elif op is _c.BRANCH:
-            if not all(_ascii_spaces(b) for b in av[1]):
-                return False
-        elif op in _REPEATS:
-            if not _ascii_spaces(av[2]):
-                return False
-        elif op in (_c.ASSERT, _c.ASSERT_NOT):
-            if not _ascii_spaces(av[1]):
-                return False
-        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
-            if not _ascii_spaces(av):
+        elif kids := _children(op, av):
+            if not all(_ascii_spaces(kid) for kid in kids):
                 return False
         elif op is _c.CATEGORY:
             return False  # a bare category outside a class: not produced by the parser for \s; be safe
@@ -359,23 +346,8 @@ def _scanner(rx: re.Pattern[str], fold: bool) -> re.Pattern[str]:
 
 def _scoped_flags(seq: Any) -> bool:
     """Does any group of the tree switch flags on or off ("(?i:...)", "(?-i:...)")?"""
-    for op, av in seq.data:
-        if op is _c.SUBPATTERN:
-            if av[1] | av[2] or _scoped_flags(av[3]):
-                return True
-        elif op is _c.BRANCH:
-            if any(_scoped_flags(b) for b in av[1]):
-                return True
-        elif op in _REPEATS:
-            if _scoped_flags(av[2]):
-                return True
-        elif op in (_c.ASSERT, _c.ASSERT_NOT):
-            if _scoped_flags(av[1]):
-                return True
-        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
-            if _scoped_flags(av):
-                return True
-    return False
+    return any((op is _c.SUBPATTERN and av[1] | av[2]) or any(_scoped_flags(kid) for kid in _children(op, av))
+               for op, av in seq.data)
 
 
 def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
