@@ -259,10 +259,14 @@ def _numbered_av(t: str) -> str:
         t = fre.sub(r"\bV([1-9])\b", r"Vehicle \1", t)
     m = _AV_LABEL.search(t)
     if m:
-        n = m.group(1)
-        t = t[:m.start()] + "the AV" + t[m.end():]
-        t = fre.sub(rf"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*{n}\b(?!\s*\))", "the AV", t, flags=re.I)
+        t = _rename_label(t[:m.start()] + "the AV" + t[m.end():], m.group(1), "the AV")
     return t
+
+
+def _rename_label(t: str, number: str, name: str) -> str:
+    """Every use of the report's label "(the) Vehicle <number>" ("Car", "Unit"; not a definition in parentheses)
+    replaced by `name`."""
+    return fre.sub(rf"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*{number}\b(?!\s*\))", name, t, flags=re.I)
 
 
 def normalise(text: str) -> str:
@@ -339,7 +343,7 @@ def normalise(text: str) -> str:
         if fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*1\b", t, re.I) and \
                 fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*2\b", t, re.I):
             # "Vehicle 1 was stopped ... Vehicle 2 rear-ended Vehicle 1": the form's numbering, the AV first
-            t = fre.sub(r"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*1\b", "EGO", t, flags=re.I)
+            t = _rename_label(t, "1", "EGO")
         elif first:
             noun = first.group(1)
             t = t[:first.start()] + "EGO" + fre.sub(rf"\bthe\s+{noun}\b", "EGO", t[first.end():], flags=re.I)
