@@ -147,8 +147,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
         placed = place(d, e, (pos, lane), ego_actions, ego_turning)
         pos, lane = placed.position, placed.lane
-        # a cue of the scene placed it (along, passing, contact) or named its lane
-        known = known or not placed.rule.startswith("first reading") or "; lane" in placed.rule
+        known = known or placed.cue_placed
         slot = f"npcs[{k - 1}]"
         if not known or placed.conflicting:
             weak += [f"{slot}.position", f"{slot}.lane"]

@@ -167,6 +167,11 @@ class Placement:
     seen: tuple[Cue, ...] = ()  # every cue gathered
 
     @property
+    def cue_placed(self) -> bool:
+        """A cue of the scene decided the place (along, passing, contact, ...) or named the lane: the place is told."""
+        return not self.rule.startswith("first reading") or "; lane" in self.rule
+
+    @property
     def conflicting(self) -> bool:
         """Lane cues that disagree: the reading is weak (hybrid mode asks a model)."""
         return len({c.value for c in self.seen if c.kind == "lane"}) > 1
