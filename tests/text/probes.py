@@ -92,6 +92,31 @@ def _scenes(name: str, want: Callable[[Sketch], object], cases: tuple[tuple[str,
 
 
 PROBES: tuple[Probe, ...] = (
+    _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
+            sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
+            ("Our vehicle was stopped at a red light. A car behind us struck our rear bumper.",
+             ("npc1", [("R6", "same")])),
+            ("Our AV was stopped at a red light. A car behind us hit our rear bumper.", ("npc1", [("R6", "same")])),
+            ("Our test vehicle was stopped at a red light. The car behind struck our rear bumper.",
+             ("npc1", [("R6", "same")])),
+            ("We were stopped at a red light when a car behind us struck our rear bumper.",
+             ("npc1", [("R6", "same")])),
+            ("We were traveling northbound in the right lane when a sedan in the left lane changed lanes and struck "
+             "our driver side door.", ("npc1", [("R5", "left")])),
+            ("Our autonomous vehicle was waiting to turn left. A pickup truck behind us then rear-ended our vehicle.",
+             ("npc1", [("R6", "same")])),
+            ("At about 9 am we were proceeding through the intersection on a green light when a sedan on the cross "
+             "street to our right ran the red light and struck our passenger side.", ("npc1", [("R3", None)])),
+    )),
+    _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
+            lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
+            ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "
+             "then made contact with the SUV and pushed it into the Waymo AV.", [("R6", "same"), ("R6", "same")]),
+            ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "
+             "then struck the SUV, which then struck the Waymo AV.", [("R6", "same"), ("R6", "same")]),
+            ("The Waymo AV was stopped at a red light. A white SUV stopped directly behind the Waymo AV. A passenger "
+             "car then collided with the white SUV, pushing it into the Waymo AV.", [("R6", "same"), ("R6", "same")]),
+    )),
     _scenes('a party beside, ahead or behind, told as each operator tells it', _position, (
             ("A Cruise autonomous vehicle was traveling northbound on Valencia Street in the right lane. A sedan "
              "traveling in the left lane overtook the Cruise AV and then merged right, making contact with the front "

@@ -142,7 +142,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     ev.acts("ego.actions", [a for a in d.acts if a.who == -1 and before_contact(d, a.sent, a.pos)])
     missing: list[str] = []
     idmap: dict[int, str] = {}
-    behind: set[str] = set()
+    behind: set[int] = set()
     for k, e in enumerate(parties, 1):
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
         placed = place(d, e, (pos, lane), ego_actions, ego_turning)
@@ -154,7 +154,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         ev.mention(f"{slot}.category", e)
         ev.spans(f"{slot}.position", [c.span for c in placed.cues] or None, fallback=e)
         if pos == "R6":
-            behind |= e.heads
+            behind.add(e.idx)
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]
         if not any(a.code in "defgjkmFT" for a in pacts):
             # The telling gives no manoeuvre of the party but the summary does ("A Nissan made a left turn into

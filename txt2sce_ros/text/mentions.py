@@ -269,6 +269,15 @@ def _rename_label(t: str, number: str, name: str) -> str:
     return fre.sub(rf"\b(?:the\s+)?(?:vehicle|car|unit)\s*#?\s*{number}\b(?!\s*\))", name, t, flags=re.I)
 
 
+_FIRST_PERSON = compile_gated(r"\bour\s+(?:own\s+)?(?:vehicle|car|av|test\s+vehicle|autonomous\s+vehicle|robotaxi|"
+                              r"shuttle|truck)\b|\b[Ww]e\s+were\s+(?:stopped|traveling|travelling|driving|waiting|"
+                              r"proceeding|moving|slowing|turning|making|approaching|parked|in\s+the)\b", re.I)
+# "we were stopped" reads "EGO was stopped"; "we" before a verb of driving is the AV.
+_WE_DROVE = compile_gated(r"\b[Ww]e\s+(were)\b|\b[Ww]e\b(?=\s+(?:then\s+|had\s+|slowly\s+)?(?:stopped|proceeded|"
+                          r"turned|slowed|braked|began|started|entered|merged|changed|moved|drove|accelerated|"
+                          r"reversed|backed|yielded|came|pulled|continued|approached|made|attempted|waited|had\s+been)\b)")
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -291,6 +300,9 @@ def normalise(text: str) -> str:
     if n_upper > 0.6 * n_alpha:
         t = t.lower()  # all-caps narratives: case carries no information there
     ego_res, company_re = _name_patterns(_unknown_operator(t))
+    # Told in the first person ("our vehicle ... behind us", "We were stopped"): looked for before the AV's names
+    # are replaced, since "our AV" and "our vehicle" are among them.
+    first_person = _FIRST_PERSON.search(t) is not None
     t = _numbered_av(t)
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
@@ -323,9 +335,11 @@ def normalise(text: str) -> str:
         return m.group(0) if co and av_company and _company_key(co.group(0)) != av_company else " EGO"
     for rx in ego_res:
         t = rx.sub(ego_or_other, t)
-    if fre.search(r"\bour\s+(?:vehicle|car|av|test\s+vehicle)\b", t, re.I):
-        # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us").
+    if first_person:
+        # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us"); "we" is the
+        # AV where it drives ("we were stopped", "we proceeded"), not the company reporting ("we are reporting").
         t = fre.sub(r"\bus\b(?!\s+(?:hwy|highway|route|\d))", "EGO", t)
+        t = _WE_DROVE.sub(lambda m: "EGO was" if m.group(1) else "EGO", t)
         t = fre.sub(r"\bour\b(?=\s+(?:front|rear|passenger|driver|left|right|bumper|side|lane|vehicle's))",
                    "EGO's", t)
     # "a Navya ARMA shuttle ... the shuttle", "a Nuro Prius ... the Prius": a distinctive noun the AV was named

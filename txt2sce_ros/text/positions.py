@@ -13,20 +13,21 @@ from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, heading
 
 
 def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
-                   ego_actions: str = "", behind_av: frozenset[str] = frozenset()) -> tuple[str, str | None, bool]:
+                   ego_actions: str = "", behind_av: frozenset[int] = frozenset()) -> tuple[str, str | None, bool]:
     """(position, lane, known): where the party was relative to the AV when the interaction began.
-    `behind_av`: head nouns of parties already placed behind the AV (R6); whoever follows them is behind too."""
+    `behind_av`: the entities already placed behind the AV (R6); whoever follows them is behind too."""
     ctx = context(d, e)
     # A party said to be on another street than the AV's is on a crossing road: the AV is at a junction with it.
     cross = _on_other_street(d, ctx)
     junction = d.junction or cross
     # Behind a party already placed behind the AV, or striking one in a chain ("a second motorcyclist then
-    # collided with the first motorcyclist"): it came from further behind.
-    queue = fre.search(r"\b(?:behind|following|trailing|collided\s+with|made\s+contact\s+with|rear[- ]ended|struck)\s+"
-                       r"(?:the|a|an)\s+"
-                       r"(?:[\w-]+\s+)?([\w-]+)", ctx or d.sents[e.first.sent][e.first.end:], re.I)
-    if queue and queue.group(1).lower() in behind_av:
-        return "R6", "same", True
+    # collided with the first motorcyclist"): it came from further behind. The other party is the one named next
+    # after the verb, by its mention, however many words its name has ("the passenger car", "the white SUV").
+    for m in e.mentions:
+        for x in d.ments[m.sent]:
+            if x.start > m.end and x.kind == "party" and x.entity in behind_av and _CHAIN.search(
+                    d.sents[m.sent][m.end:x.start][-80:]):
+                return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
     pre = " ".join(fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
                    for m in e.mentions[:2])
@@ -185,6 +186,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
+_CHAIN = compile_gated(r"\b(?:behind|following|trailing|collided\s+with|made\s+contact\s+with|rear[- ]ended|struck|"
+                       r"hit)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?$", re.I)
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
                          r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
                          r"(?![^|.]{0,25}\bfrom\s+(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}lane\b)", re.I)
