@@ -77,6 +77,11 @@ def _later_name(name: str) -> Callable[[str], str]:
 _BODY_PART = (r"(?:(?:front|rear|left|right|driver(?:'s)?|passenger(?:'s)?)[ -]){1,3}(?:side|bumper|door|fender|corner|"
               r"quarter panel|mirror|wheel)")
 
+#: Makes and models for the party's usual nouns (a new user's narratives name parties so).
+_MAKE_MODEL = {"passenger car": "Toyota Camry", "passenger vehicle": "Honda Accord", "sedan": "Nissan Altima",
+               "SUV": "Ford Explorer", "pickup truck": "Ford F-150"}
+
+
 REWRITES: tuple[Rewrite, ...] = (
     Rewrite("operator renamed: Acme", _operator("Acme")),
     Rewrite("operator renamed: Avride", _operator("Avride")),
@@ -183,6 +188,24 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("double-parked -> double parked", _sub(r"\bdouble-parked\b", "double parked")),
     Rewrite("mph -> MPH", _sub(r"\bmph\b", "MPH")),
     Rewrite("proceeded -> continued", _sub(r"\bproceeded\b", "continued")),
+    # Session 12: a party by its make and model, compass words other operators use, other names for the AV.
+    Rewrite("a party named by make and model", _sub(r"\b(passenger car|passenger vehicle|sedan|SUV|pickup truck)\b(?! \()",
+                                                    lambda m: _MAKE_MODEL[m.group(1)])),
+    Rewrite("traveling <dir>bound -> traveling in a <dir>erly direction",
+            _sub(r"\btraveling (north|south|east|west)bound\b", r"traveling in a \1erly direction")),
+    Rewrite("traveling <dir>bound -> heading in a <dir>erly direction",
+            _sub(r"\btraveling (north|south|east|west)bound\b", r"heading in a \1erly direction")),
+    Rewrite("<dir>bound -> <dir>ward", _sub(r"\b(north|south|east|west)bound\b", r"\1ward")),
+    Rewrite("was traveling -> had been traveling", _sub(r"\bwas traveling\b", "had been traveling")),
+    Rewrite("came to a stop -> came to rest", _sub(r"\bcame to a (?:complete )?stop\b", "came to rest")),
+    Rewrite("the <operator> AV -> the autonomous vehicle",
+            _sub(r"\b([Tt])he (?:Waymo|Cruise|Zoox) (?:AV|vehicle)\b", r"\1he autonomous vehicle")),
+    Rewrite("the <operator> AV -> the robotaxi", _sub(r"\b([Tt])he (?:Waymo|Cruise|Zoox) (?:AV|vehicle)\b", r"\1he robotaxi")),
+    Rewrite("in the <side> lane -> in the lane on the <side>", _sub(r"\bin the (left|right) lane\b", r"in the lane on the \1")),
+    Rewrite("made contact with -> impacted", _sub(r"\bmade contact with\b", "impacted")),
+    Rewrite("lane of travel -> lane", _sub(r"\blane of travel\b", "lane")),
+    Rewrite("proceeding -> moving", _sub(r"\bproceeding\b", "moving")),
+    Rewrite("stationary -> stopped", _sub(r"\bstationary\b", "stopped")),
 )
 
 

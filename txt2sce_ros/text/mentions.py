@@ -60,11 +60,12 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"\b(neighbou?ring)(?=\s+lanes?\b)|\b(junction)(s?)\b|\b(halt)(ed|ing|s)?\b", re.I),
      lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + m.group(4))
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
-    # "the left traffic lane", "the adjacent travel lane": the lane the rules know by its side
-    (("traffic lane", "travel lane", "driving lane"), False,
+    # "the left traffic lane", "the adjacent travel lane", "the lane on the left": the lane the rules know by its side
+    (("traffic lane", "travel lane", "driving lane", "lane on the"), False,
      compile_gated(r"\b(left|right|center|centre|middle|adjacent|leftmost|rightmost|far\s+left|far\s+right|"
-                   r"neighbou?ring)\s+(?:traffic|travel|driving)\s+(lanes?)\b", re.I),
-     lambda m: f"{m.group(1)} {m.group(2)}"),
+                   r"neighbou?ring)\s+(?:traffic|travel|driving)\s+(lanes?)\b|"
+                   r"\b(lane)\s+on\s+the\s+(left|right)\b(?!\s+(?:side\s+)?of\b)", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)}" if m.group(1) else f"{m.group(4)} {m.group(3)}"),
     # a heading told with a verb and a bare compass point ("going north", "riding west"): the "-bound" the rules read
     (("going ", "driving ", "moving ", "proceeding ", "riding ", "walking ", "headed ", "continu", "drove ", "went ",
       "rode "), False,
@@ -72,6 +73,11 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"(north|south|east|west|northeast|northwest|southeast|southwest)\b(?!\s*-?\s*(?:bound|ward|ern))",
                    re.I),
      lambda m: f"{_TRAVEL_VERB.get(m.group(1).lower(), m.group(1))} {m.group(2)}bound"),
+    # "in a northerly direction", "in the northbound direction", "heading northward": the "-bound" the rules read
+    (("erly direction", "ern direction", "bound direction", "ward"), False,
+     compile_gated(r"\bin\s+(?:an?|the)\s+(north|south|east|west|northeast|northwest|southeast|southwest)"
+                   r"(?:erly|ern|bound)?\s+direction\b|\b(north|south|east|west)wards?\b", re.I),
+     lambda m: f"{m.group(1) or m.group(2)}bound"),
     # "gave way to", "reduced its speed", "a change of lanes", "self-driving mode"
     (("gave way", "giving way", "give way", "gives way", "reduc", "change of lane", "self-driving mode"), False,
      compile_gated(r"\b(gave|giving|give|gives)\s+way\b|\b(reduced|reducing|reduces)\s+(?:(?:its|his|her|their)\s+)?speed\b|"
@@ -307,9 +313,11 @@ def normalise(text: str) -> str:
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
     numbered = fre.search(r"\((?:vehicle|car|v)\s*#?\s*[2-9]\)", t, re.I) is not None
-    for m in fre.finditer(r"\b([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I) if numbered else ():
-        head = m.group(1)
-        t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(2)}\b(?!\))", f"the {head}", t, flags=re.I)
+    for m in fre.finditer(r"\b(?:([A-Za-z][\w-]*)\s+)?([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t,
+                          re.I) if numbered else ():
+        # "A Ford Explorer (Vehicle 2)": the make and the model name the party; the model alone is no party noun.
+        head = f"{m.group(1)} {m.group(2)}" if (m.group(1) or "").lower() in MAKES else m.group(2)
+        t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(3)}\b(?!\))", f"the {head}", t, flags=re.I)
     # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.
     one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
     if one and company_re.search(t[max(0, one.start() - 60):one.start()]):

@@ -186,7 +186,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
-_CHAIN = compile_gated(r"\b(?:behind|following|trailing|collided\s+with|made\s+contact\s+with|rear[- ]ended|struck|"
+_CHAIN = compile_gated(r"\b(?:behind|following|trailing|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+with|"
+                       r"rear[- ]ended|struck|impacted|contacted|"
                        r"hit)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?$", re.I)
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
                          r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
