@@ -206,6 +206,23 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("lane of travel -> lane", _sub(r"\blane of travel\b", "lane")),
     Rewrite("proceeding -> moving", _sub(r"\bproceeding\b", "moving")),
     Rewrite("stationary -> stopped", _sub(r"\bstationary\b", "stopped")),
+    Rewrite("behind the AV -> in back of the AV",
+            _sub(r"\bbehind (the (?:Waymo |Cruise |Zoox )?(?:AV|vehicle))\b", r"in back of \1")),
+    Rewrite("turn <side> -> turn to the <side>",
+            _sub(r"\bturn(ed|ing)? (left|right)\b", lambda m: f"turn{m.group(1) or ''} to the {m.group(2)}")),
+    Rewrite("approaching -> nearing", _sub(r"\bapproaching\b", "nearing")),
+    Rewrite("intersection -> crossroads", _sub(r"\bintersection\b", "crossroads")),
+    Rewrite("at a red light -> for a red light", _sub(r"\bat a red light\b", "for a red light")),
+    Rewrite("on the <side> -> on the <side>-hand side", _sub(r"\bon the (left|right)\b(?! (?:side|of|lane))", r"on the \1-hand side")),
+    Rewrite("entered the intersection -> drove into the intersection",
+            _sub(r"\bentered the intersection\b", "drove into the intersection")),
+    Rewrite("an oncoming <party> -> a <party> approaching from the opposite direction", _sub(
+        r"\b(an|the) oncoming (vehicle|car|truck|pickup truck|passenger vehicle|bus|cyclist|bicyclist|SUV|sedan)\b",
+        lambda m: ("a" if m.group(1) == "an" else m.group(1)) + f" {m.group(2)} approaching from the opposite direction")),
+    Rewrite("traveling -> driving (every use)", _sub(r"\btraveling\b", "driving")),
+    Rewrite("passenger vehicle -> private vehicle", _sub(r"\bpassenger vehicle\b", "private vehicle")),
+    Rewrite("in the same direction -> in the same direction of travel",
+            _sub(r"\bin the same direction\b", "in the same direction of travel")),
 )
 
 

@@ -47,6 +47,9 @@ KNOWN: dict[str, set[str]] = {
     # "EGO then continued to enter the rightmost lane": "continued to <verb>" is not read as "proceeded to <verb>"
     # (it may be "continued to brake"), so the AV's move-off before the lane change is lost.
     "proceeded -> continued": {"nhtsa-sgo-ads-30270-9606-v1"},
+    # "seeing the vehicle approaching from the opposite direction crossing the centerline": the party's crossing of
+    # the centre line is no longer read as a lane change when the participle follows a participle.
+    "an oncoming <party> -> a <party> approaching from the opposite direction": {"dmvca-cruise-20201024-r143"},
 }
 
 

@@ -55,11 +55,17 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      lambda m: "".join(g for g in m.groups() if g)),
     # Synonyms the rules read in one spelling: "the left-hand lane", "the neighboring lane", "a T-junction",
     # "came to a halt" (the rules know "left lane", "adjacent lane", "intersection", "stop")
-    (("-hand", " hand", "neighbo", "junction", "halt"), False,
+    (("-hand", " hand", "neighbo", "junction", "halt", "crossroad"), False,
      compile_gated(r"\b(left|right)[- ]hand(?=\s+(?:lanes?|turns?|side|curb|shoulder|edge|corner)\b)|"
-                   r"\b(neighbou?ring)(?=\s+lanes?\b)|\b(junction)(s?)\b|\b(halt)(ed|ing|s)?\b", re.I),
-     lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + m.group(4))
+                   r"\b(neighbou?ring)(?=\s+lanes?\b)|\b(junction|crossroad)(s?)\b|\b(halt)(ed|ing|s)?\b", re.I),
+     lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + (
+         m.group(4) if m.group(3).lower() == "junction" else ""))
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
+    # "turned to the right", "in back of", "nearing the intersection": the words the rules read
+    (("to the left", "to the right", "in back of", "nearing"), False,
+     compile_gated(r"\b(turn(?:ed|ing|s)?)\s+to\s+the\s+(left|right)\b(?!\s+(?:lane|side|of|curb|shoulder)\b)|"
+                   r"\b(in\s+back\s+of)\b|\b(nearing)\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)}" if m.group(1) else "behind" if m.group(3) else "approaching"),
     # "the left traffic lane", "the adjacent travel lane", "the lane on the left": the lane the rules know by its side
     (("traffic lane", "travel lane", "driving lane", "lane on the"), False,
      compile_gated(r"\b(left|right|center|centre|middle|adjacent|leftmost|rightmost|far\s+left|far\s+right|"

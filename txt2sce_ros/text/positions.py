@@ -175,7 +175,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         from_right = (turns[0] == "d") != bool(follows)
         return ("R3" if from_right else "R1"), None, True
     if junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
-            fre.search(r"\bentered\s+the\s+intersection", ctx, re.I)):
+            fre.search(r"\b(?:entered|drove\s+into|proceeded\s+into|came\s+into)\s+the\s+intersection", ctx, re.I)):
         # Straight into the intersection and into the AV's side: it came from the side it struck.
         side = side_named(ctx) or cside
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
