@@ -223,6 +223,23 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("passenger vehicle -> private vehicle", _sub(r"\bpassenger vehicle\b", "private vehicle")),
     Rewrite("in the same direction -> in the same direction of travel",
             _sub(r"\bin the same direction\b", "in the same direction of travel")),
+    # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts).
+    Rewrite("After completing/making -> Having completed/made",
+            _sub(r"\bAfter (completing|making)\b", lambda m: "Having " + {"completing": "completed",
+                                                                          "making": "made"}[m.group(1)])),
+    Rewrite("After <AV> made a turn -> After making a turn",
+            _sub(r"\bAfter the (?:Waymo|Cruise|Zoox) AV made a (left|right) turn\b", r"After making a \1 turn")),
+    Rewrite("would have come to a full stop -> would have stopped",
+            _sub(r"\bwould have come to a (?:full |complete )?stop\b", "would have stopped")),
+    Rewrite("pulled behind -> pulled up behind", _sub(r"\bpulled behind\b", "pulled up behind")),
+    Rewrite("came to a stop -> came to a halt", _sub(r"\bcame to a stop\b", "came to a halt")),
+    Rewrite("disengaged from autonomous mode to -> took manual control to",
+            _sub(r"\bdisengaged (?:the [\w ]+? )?from autonomous mode to\b", "took manual control to")),
+    Rewrite("As <AV> moved into -> As <AV> merged into", _sub(r"\b(As the \w+ AV) moved into\b", r"\1 merged into")),
+    Rewrite("pulling into / entering a driveway or lot -> turning into",
+            _sub(r"\b(?:pulling into|entering) (a|the) (driveway|parking lot)\b", r"turning into \1 \2")),
+    Rewrite("parallel parking -> parallel-parking", _sub(r"\bparallel parking\b", "parallel-parking")),
+    Rewrite(", yielding to -> , giving way to", _sub(r", yielding to\b", ", giving way to")),
 )
 
 

@@ -1356,6 +1356,94 @@ PROBES: tuple[Probe, ...] = (
            ". Shortly thereafter, a sedan in the right lane", ". Simultaneously, a sedan in the right lane",
            ". Moments later, a sedan in the right lane", "; a sedan in the right lane"),
           _npc_actions, [("moving", "af")]),
+    # Session 12: the AV's own start and actions, read from the real dev narratives the extractor got wrong (a turn
+    # told as done before the story, a counterfactual stop, parking that ended backing into a parked car, pulling
+    # up behind a standing vehicle, a yield beside a run or as a state, a stop made for the party met, a take-over
+    # made to turn, a move told again at the contact, a driveway or lot entered), each told in other words.
+    Probe("the AV's turn told as done before the story",
+          "The Waymo AV was traveling north on Jones Street. {W}, the Waymo AV's passenger side mirror made contact "
+          "with the mirror of a parked car.",
+          ("After completing a right turn onto Jones Street", "After making a left turn from Clay Street",
+           "After the Waymo AV made a right turn from Pleasant Street", "After turning right onto Jones Street",
+           "After the Waymo AV had completed a left turn onto Jones Street", "Shortly after turning left from Clay "
+           "Street", "Having completed a right turn onto Jones Street", "After it finished a right turn onto Jones "
+           "Street", "Just after making a right turn onto Jones Street"),
+          _ego, ("moving", "a")),
+    Probe("the AV's stop that would have happened (a counterfactual tells no manoeuvre)",
+          "The Waymo AV was approaching a stop sign on Mission Street. {W} The operator then moved the vehicle past "
+          "the stop line, colliding with a cyclist's back tire.",
+          ("If left in autonomy, the vehicle would have come to a full stop before the stop line.",
+           "If left in autonomy, the vehicle would have stopped at the line and remained stopped.",
+           "The operator took over before the vehicle could have stopped.",
+           "If the operator had not taken over, the AV would have come to a stop.",
+           "Had the AV stayed in autonomy, it would have stopped before the line.",
+           "The AV would have yielded at the line."),
+          _ego, ("moving", "a")),
+    Probe("the AV parking, its rear end meeting a parked car (it backed)",
+          "While the test driver of the Waymo AV {w} on Vicente Street, the rear of the Waymo AV made contact with the "
+          "front of a parked pickup truck.",
+          ("was parallel parking", "was parallel parking in manual mode", "was attempting to parallel park",
+           "was pulling into a parking space", "was maneuvering into a parking spot"),
+          _ego, ("moving", "lk")),
+    Probe("the AV pulling up behind a standing vehicle (a stop)",
+          "While traveling southwest on Townsend Street, the Waymo AV approached a double-parked vehicle. The Waymo AV "
+          "{w}. An SUV following behind the Waymo AV passed it on the left and made contact with its rear left sensor.",
+          ("pulled behind the double-parked vehicle", "pulled up behind the double-parked vehicle",
+           "pulled in behind the double-parked vehicle", "pulled behind the parked vehicle",
+           "pulled up behind a stopped truck", "came to a stop behind the double-parked vehicle",
+           "stopped behind the double-parked vehicle"),
+          _ego, ("moving", "ah")),
+    Probe("the AV yielding beside its run or its slowing (it slowed, no stop)",
+          "A Zoox vehicle was {w} a pedestrian. A truck in the left adjacent lane abruptly turned right and cut in "
+          "front of the Zoox vehicle, making contact with its left front sensor.",
+          ("proceeding southbound in the right lane on Sixth Street, yielding to", "proceeding southbound in the right "
+           "lane on Sixth Street while yielding to", "traveling south on Sixth Street, yielding to",
+           "slowing on Sixth Street, yielding to", "moving slowly along Sixth Street, yielding to",
+           "driving south on Sixth Street and slowed when yielding to"),
+          _ego, ("moving", "ac")),
+    Probe("the AV yielding as what it was doing (standing, a turn not begun)",
+          "The Waymo AV {w} a pedestrian in the crosswalk. A SUV approaching from behind the Waymo AV passed on the "
+          "left side, making contact with the Waymo AV's rear left sensor housing.",
+          ("was attempting to make a right turn from 24th Street onto Capp Street while yielding to",
+           "was trying to turn right onto Capp Street while yielding to", "was attempting to turn right onto Capp "
+           "Street while waiting for", "was yielding to", "was preparing to turn right onto Capp Street while "
+           "yielding to", "was waiting to make a right turn onto Capp Street, yielding to",
+           "was stopped on 24th Street while yielding to"),
+          _ego, ("stopped", "")),
+    Probe("the AV stopping for the very party that struck it (the meeting began on its way)",
+          "The Waymo AV came to a stop in the parking lot {w} an oncoming pickup truck. While the Waymo AV was stopped,"
+          " the pickup truck passed it on the left, making contact with its rear left sensor.",
+          ("while yielding to", "to yield to", "for", "while yielding to both pedestrians and", "when it yielded to",
+           "yielding to"),
+          _ego, ("moving", "ah")),
+    Probe("the AV's driver taking over to make the turn (the purpose was carried out)",
+          "The Cruise AV was yielding to an oncoming scooterist at the intersection with Howard Street. The driver of "
+          "the Cruise AV {w} and, shortly thereafter, the scooterist made contact with the right side of the Cruise "
+          "AV.",
+          ("disengaged from autonomous mode to make the left turn", "disengaged autonomy to complete the left turn",
+           "took manual control to make the left turn", "took over to turn left", "disengaged the AV to turn left",
+           "took control of the vehicle to make the left turn"),
+          _ego, ("stopped", "id")),
+    Probe("the AV's move told again at the contact (the string ends with it)",
+          "The Waymo AV was stopped at a red light in the middle lane. When the light turned green, the Waymo AV "
+          "attempted to merge into the left lane and make a left turn. {W}, the adjacent pickup truck began to "
+          "proceed forward and made contact with the driver side of the Waymo AV.",
+          ("As the Waymo AV moved into the left lane", "While the Waymo AV was moving into the left lane",
+           "As the Waymo AV merged into the left lane", "Just as the Waymo AV changed lanes to the left",
+           "When the Waymo AV moved into the left lane", "As the Waymo AV was merging into the left lane"),
+          _ego, ("stopped", "if")),
+    Probe("the AV entering a driveway or lot (a turn to the side it touched)",
+          "The Zoox vehicle scraped a parked car at low speed as it was {w}, making contact with its left front "
+          "bumper.",
+          ("pulling into a driveway", "turning into a driveway", "entering a parking lot",
+           "pulling into a parking garage", "entering a driveway", "driving into a parking lot",
+           "pulling into the driveway on its left"),
+          _ego, ("moving", "d")),
+    Probe("the AV entering a lot or driveway, the right side touched",
+          "The Waymo AV was {w} on Pacific Avenue when the front right sensor made contact with a fence.",
+          ("entering a parking lot", "pulling into a driveway", "turning into a parking garage",
+           "entering the lot of a gas station", "pulling into a parking lot"),
+          _ego, ("moving", "e")),
 )
 
 

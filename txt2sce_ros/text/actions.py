@@ -53,11 +53,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\brolled\s+back(?:wards?)?\b|"
           r"\b(?:mov|roll|drift|creep|crept|coast)(?:ed|ing|es|e|s)?\s+backwards?\b|"
           r"\bbacking\b"),
-    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel\s+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
-          r"\binto\s+a\s+(?:parallel\s+)?parking\s+"
+    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel[-\s]+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
+          # "was parallel parking" is a manoeuvre under way; only "was parallel parked" tells where a car stood
+          r"(?:(?<=\bwas\s)|(?<=\bwere\s))parallel[-\s]+parking\b(?!\s+(?:spot|space|position|stall|lane))|"
+          r"\binto\s+a\s+(?:parallel[-\s]+)?parking\s+"
           r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
-          r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel\s+)?parking\s+maneuver|"
+          r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel[-\s]+)?parking\s+maneuver|"
           # to the roadside to let a passenger on or off: pulling over
           r"\b(?:pull(?:ed|ing|s)?|mov(?:ed|ing|es|e)|steer(?:ed|ing|s)?)\s+(?:over\s+)?to\s+the\s+(?:curb|(?:right\s+)?side\s+of\s+the\s+(?:road|"
           r"street))\b(?=[^.]{0,30}\b(?:drop|pick|let|load|unload|board|park)|[^.]{0,4}$)"),
@@ -68,7 +70,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
           r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
-          r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b"),
+          r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b|"
+          # Pulling (up or in) behind a vehicle that stands ("pulled behind the double-parked vehicle") ends behind
+          # it: a stop. Behind a moving one it is following (the `a` phrase below).
+          r"\bpull(?:ed|ing|s)?\s+(?:up\s+|in\s+)?behind\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:double[- ]parked|"
+          r"parked|stopped|stalled|stationary|disabled|idling)\b"),
     # "began to move into EGO's lane" begins the move it names, not a start from a standstill.
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|pull\s+(?:forward|out|away))(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
@@ -187,6 +193,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
           r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
+    # Into a driveway, a lot or a garage off the road is a turn whose side the sentence or the contact tells
+    # (sequences.ego_sequence resolves it for the AV; a party's is left to its other words).
+    ("D", r"\b(?:enter(?:ed|ing|s)?|(?:pull|turn)(?:ed|ing|s)?\s+into|(?:drive|drives|driving|drove)\s+into)\s+(?:a|an|the)\s+"
+          r"(?:[\w-]+\s+){0,2}?(?:driveway|(?:parking\s+)?lot|parking\s+(?:garage|structure)|garage)\b"),
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
           r"lanes|driveway|alley)|\b(?:pull(?:ed|ing)\s+"
@@ -232,14 +242,14 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side"),
-    "h": ("stop", "halt", "standstill", "yield", "rest"),
+    "h": ("stop", "halt", "standstill", "yield", "rest", "behind"),
     "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed"), "A": ("straight",), "Y": ("turn",),
-    "Q": ("front", "path", "off"),
+    "Q": ("front", "path", "off"), "D": ("driveway", "lot", "garage"),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
 _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
@@ -247,7 +257,7 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 # ("yielded to a parallel parking vehicle"), not an infinitive.
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"prepar(?:e|ed|ing)\s+for|(?:get|getting)\s+ready\s+(?:for|to)|"
-                     r"intending\s+to|in\s+order\s+to|should|would|must|ought\s+to|"
+                     r"intending\s+to|in\s+order\s+to|should|would|could|might|must|ought\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
@@ -266,6 +276,24 @@ _SUDDEN = compile_gated(r"\b(?:suddenly|abruptly|quickly|unexpectedly|immediatel
 # What a stop is made at when it is where a party waited: a sign, a light, a line.
 _AT_CONTROL = compile_gated(r"\s+(?:at|for)\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(?:stop\s+(?:sign|line|bar)|limit\s+line|"
                             r"(?:traffic\s+)?(?:light|signal)|red|crosswalk)\b", re.I)
+# "If left in autonomy, the vehicle would have come to a full stop and remained stopped": a sentence that opens
+# with a condition and tells what would have happened tells no manoeuvre at all.
+_HYPOTHETICAL = compile_gated(r"^\W*if\b[^.]*\bwould\b", re.I)
+# "EGOD disengaged from autonomous mode to make the left turn": the driver took over to do it, and the story goes
+# on from there; the purpose of a take-over is the manoeuvre made, not an intention.
+_TAKEOVER_TO = compile_gated(r"\b(?:disengag\w*|took\s+(?:over|(?:manual\s+)?control))\b[^.,;]{0,60}?\bto\s+"
+                             r"(?:\w+\s+){0,2}$", re.I)
+# "was attempting to make a right turn ... while yielding to a pedestrian": an attempt while still waiting has not
+# begun.
+_ATTEMPT_WAITING = compile_gated(r"\b(?:was|were)\s+(?:attempting|trying)\s+to\s+(?:\w+\s+){0,2}$", re.I)
+_WHILE_WAITING = compile_gated(r"[^.;]*?\bwhile\s+(?:yielding|waiting|stopped)\b", re.I)
+# "was proceeding south ..., yielding to a pedestrian", "slowed to 3 MPH when yielding": a yield told beside a run
+# or a slowing of the AV, with no stop told, is the reason it slowed (`c`), not a stop of its own; told alone as
+# what the AV was doing ("was yielding", "while yielding"), it is the AV standing where it waited (`S`).
+_YIELD_ASIDE = compile_gated(r"(?:,|\bwhen|\bwhile|\bas)\s*$", re.I)
+_AV_MOVING = compile_gated(r"\b(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|driving|drove|moving|mov(?:ed|es)\s+forward|"
+                           r"slow(?:ed|ing)|decelerat(?:ed|ing)|approach(?:ed|ing)|continu(?:ed|ing))\b", re.I)
+_STOP_TOLD = compile_gated(r"\bstop|\bstationary\b|\bwaiting\b|\bhalt|\bstandstill\b|\bparked\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
@@ -312,7 +340,8 @@ class Act:
     pos: int
     code: str  # a-m, "F" (lane change, side unknown), "T" (turn, side from headings), "S" (stopped state),
     # "O" (out of a parking spot), "P" (pulled out: "O" if it was parked, else a start), "Q" (across the AV's
-    # front: a lane change from a lane beside it, else nothing)
+    # front: a lane change from a lane beside it, else nothing), "D" (into a driveway or lot: a turn, its side
+    # told by the sentence or the contact)
     who: int  # entity index, -1 = ego
     text: str
     #: Told in the progressive ("was making a right turn", "a truck merging onto the highway", "while changing
@@ -416,6 +445,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 "not moving" in m.group(0).lower():
             spans.append((m.start(), m.end(), "S"))
     out: list[Act] = []
+    if _HYPOTHETICAL.search(s):
+        spans = []
     for b, e, code in sorted(spans):
         before = s[max(0, b - 40):b]
         caused = _CAUSED.search(before)
@@ -423,7 +454,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         # the reach of the intention or negation before it ("preparing to stop and turn" stays an intention).
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
         if _INTENT.search(before) and not caused and not own_clause and (not _INTENT_OK.search(before) or
-                                                                         _INTENT_TO_BEGIN.search(before)):
+                                                                         _INTENT_TO_BEGIN.search(before)) and \
+                not _TAKEOVER_TO.search(s[max(0, b - 100):b]):
+            continue
+        if code in "defgjDFTY" and _ATTEMPT_WAITING.search(before) and _WHILE_WAITING.match(s[e:]):
             continue
         if _NEGATED.search(before) and not own_clause:
             continue  # "did not immediately proceed"
@@ -501,6 +535,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
             code = "S"  # a party's stop "at the stop sign", "for the red light": where it waited
+        if code == "h" and who == -1 and s[b:e].lower() == "yielding":
+            if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
+                code = "c"
+            elif fre.search(r"\b(?:was|were|while)\s+$", before, re.I):
+                code = "S"  # "was yielding", "while yielding": where the AV stood waiting, a state (no event)
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))

@@ -22,8 +22,8 @@ from .positions import obstacle_position, party_position
 from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
-from .sequences import (collision_type, ego_sequence, moved_off_into_object, opens_under_way, prepend_modifier_acts,
-                        sequence, standing_party)
+from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
+                        prepend_modifier_acts, sequence, standing_party)
 from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
 
@@ -127,6 +127,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
          ([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].start) for e in parties) == first_pos)
     ego_start, ego_actions = ego_sequence(d, first_pos, party_first=first_is_party)
     ego_actions = moved_off_into_object(d, obstacles, ego_actions)
+    ego_start, ego_actions = backed_into_object(d, obstacles, ego_start, ego_actions)
     d.ego_start = ego_start
     if ego_start == "moving" and not ego_actions:
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane

@@ -35,7 +35,7 @@ _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[
                         r"\bturn(?:ed|ing|s)?\s+(?:left|right)\b[^.,;]{0,50}?\b(?:to\s+enter|into)\s+"
                         r"(?:[\w.'-]+\s+){1,3}(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way)\b", re.I)
 # A turn finished before the interaction began: the AV is then on the street (and heading) it turned onto.
-PRIOR_TURN = compile_gated(r"\b(?:after|had)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
+PRIOR_TURN = compile_gated(r"\b(?:after|had|having)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
                          r"\bonto\b|\bafter\s+turning\b", re.I)
 _ROUNDABOUT = compile_gated(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
 _PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"

@@ -9,7 +9,7 @@ from .actions import Act, turn_from_headings, who_for
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
-from .story import Doc, before_contact, context
+from .story import TURN_WORDS, Doc, before_contact, context, ego_contact_part
 
 _FORWARD = set("abdefgjm")
 #: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
@@ -38,8 +38,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "f" if (ego or side != "left") else "g"
             if fre.search(r"around", a.text, re.I) and not ego:
                 c = "f"
-        if c == "T":
-            continue
+        if c in ("T", "D"):
+            continue  # a turn whose side nothing told (ego_sequence resolves the AV's "D" before this)
         if c == "i" and "accelerat" in a.text.lower() and codes and codes[-1] == "k":
             continue  # "transitioned into reverse and began to accelerate": the backing, faster; no start forward
         if c == "i" and "accelerat" in a.text.lower() and start == "moving" and (not codes or codes[-1] != "h"):
@@ -163,7 +163,8 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green)."""
     # A summary sentence still tells the AV's state ("was stopped ... when a vehicle reversed into it").
     acts = [a for a in d.acts if a.who == -1 and (a.sent not in d.summary or a.code == "S")
-            and before_contact(d, a.sent, a.pos)]
+            and before_contact(d, a.sent, a.pos) and not _done_before(d, a)]
+    acts = _ended_in_retold_move(d, [_driveway_turn(d, a) for a in acts])
     if first_party_pos is None:
         return sequence(acts, stopped=False, ego=True, side=None)
     fs, fp = first_party_pos
@@ -208,6 +209,10 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
             # state ("was stopped") is where the AV waited when it began.
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
+        elif last.code == "h" and not _waited(d, last) and _stopped_for_partner(d, last):
+            # "EGO came to a stop in the parking lot while yielding to ... an oncoming pickup truck", which then
+            # struck it: the AV stopped for the very party it met, so the interaction began while it was on its way.
+            prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
         elif last.code == "i" and not last.under_way and not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
@@ -238,6 +243,92 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         else:
             prefix = [Act(last.sent, last.pos, "a", -1, "")]
     return sequence(prefix + post, stopped=stopped, ego=True, side=None)
+
+
+# "After completing a right turn onto Taraval, ...", "After EGO made a right turn from Pleasant Street, ...", "had made
+# a right turn from Oakdell Rd.": a turn told as done before the clause that tells the story.
+# "Having completed ...", "Shortly after turning left ...": an "after" that opens the sentence or a clause, or a
+# pluperfect; "EGO stopped after turning right" (mid-clause) may tell the story's own order and is left alone.
+_DONE_BEFORE = compile_gated(r"(?:(?:^|[,;])\W*(?:(?:shortly|just|immediately|right|soon)\s+)?after|\bhad|\bhaving)\s+"
+                             r"(?:just\s+)?(?:(?:EGO|EGOD|it)\s+(?:had\s+)?)?(?:(?:completing|completed|making|made|turning|"
+                             r"turned|finishing|finished|executing|executed)\b[^,.;]*)?$", re.I)
+
+
+def _done_before(d: Doc, a: Act) -> bool:
+    """A turn of the AV told as finished before the interaction: it set the AV's road and heading (read elsewhere),
+    and is no part of the action string, which starts when the interaction begins (sketch.md)."""
+    return a.code in "deTj" and bool(_DONE_BEFORE.search(d.sents[a.sent][:a.pos]))
+
+
+_RETOLD = compile_gated(r"^\W*(?:as|while|when|just\s+as)\s+EGO\s+(?:was\s+)?$", re.I)
+
+
+def _ended_in_retold_move(d: Doc, acts: list[Act]) -> list[Act]:
+    """"EGO attempted to merge into the left lane and make a left turn ... As EGO moved into the left lane, the pickup
+    made contact": the contact sentence opens by telling again a move the AV made before it; the contact came
+    during that move, so the string ends with it, and what was told between (the turn it meant to make next) had not
+    happened (sketch.md: strings end at the contact)."""
+    for k, a in enumerate(acts):
+        if a.sent != d.contact_sent or a.code not in "defgjklF" or not _RETOLD.match(d.sents[a.sent][:a.pos]):
+            continue
+        first = next((j for j in range(k) if acts[j].code == a.code and acts[j].sent < a.sent), None)
+        if first is not None and any(x.code not in "aA" for x in acts[first + 1:k]):
+            return acts[:first + 1] + acts[k + 1:]
+    return acts
+
+
+_SIDE_WORD = compile_gated(r"\b(?:left|right|driver|passenger)\b", re.I)
+
+
+def _driveway_turn(d: Doc, a: Act) -> Act:
+    """The AV's move into a driveway or lot ("D") is a turn; its side is the one the sentence says of it ("a
+    driveway on the right"), else the side of the AV that touched (its inner corner meets what stands at the kerb:
+    "pulling into a driveway, making contact with its left front bumper"), else unknown ("D", left out)."""
+    if a.code != "D":
+        return a
+    s = d.sents[a.sent]
+    said = fre.match(r"\s*(?:on|to)\s+(?:the|its|EGO's)\s+(left|right)\b", s[a.pos + len(a.text):])
+    side = said.group(1).lower() if said else None
+    if side is None and d.contact_sent is not None:
+        words = {w.lower() for w in _SIDE_WORD.findall(TURN_WORDS.sub(" ", d.sents[d.contact_sent]))}
+        sides = {"left" if w in ("left", "driver") else "right" for w in words}
+        side = sides.pop() if len(sides) == 1 else None
+    if side is None:
+        return a
+    return Act(a.sent, a.pos, "d" if side == "left" else "e", a.who, a.text, a.under_way)
+
+
+_FOR_IT = compile_gated(r"\b(?:yield\w*|for)\s+(?:[^.;]*?\band\s+)?(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def _stopped_for_partner(d: Doc, stop: Act) -> bool:
+    """Is the AV's stop told as made for the party it then met ("came to a stop ... while yielding to both
+    pedestrians and an oncoming pickup truck")?"""
+    if d.partner is None:
+        return False
+    s = d.sents[stop.sent]
+    end = stop.pos + len(stop.text)
+    m = next((x for x in d.ments[stop.sent] if x.entity == d.partner and x.start >= end), None)
+    return m is not None and bool(_FOR_IT.search(s[end:m.start]))
+
+
+_BACKING_PARTS = frozenset({"parked_vehicle", "barrier", "pole", "other", "cone"})
+
+
+def backed_into_object(d: Doc, obstacles: list[Entity], start: str, actions: str) -> tuple[str, str]:
+    """"While EGOD was parallel parking ..., the rear of EGO made contact with the front of a parked pickup truck":
+    an object standing still that the AV touched with its rear end was backed into (a forward-moving AV meets
+    nothing with it), so the string ends backing (`k`); with nothing else told, the AV backed from a standstill."""
+    if d.partner is None or "k" in actions or d.partner in d.doors:
+        return start, actions
+    e = next((x for x in obstacles if x.idx == d.partner), None)
+    if e is None or (e.category not in _BACKING_PARTS and e.kind != "party"):
+        return start, actions
+    if ego_contact_part(d) != ("rear", None):
+        return start, actions  # a rear corner ("the right rear sensor housing") is also met going forward, steering
+    if actions in ("", "a"):
+        return "stopped", "k"
+    return start, actions + "k"
 
 
 def _turning(d: Doc, a: Act) -> bool:
