@@ -43,6 +43,25 @@ def _sub(pattern: str, repl: str | Callable[[re.Match[str]], str], flags: int = 
     return lambda t: re.sub(pattern, repl, t, flags=flags)
 
 
+def _subs(*pairs: tuple[str, str]) -> Callable[[str], str]:
+    """Several substitutions of one kind of wording, applied in turn (one rewrite: each alone meets too few)."""
+    def apply(t: str) -> str:
+        for pattern, repl in pairs:
+            t = re.sub(pattern, repl, t)
+        return t
+    return apply
+
+
+_HAVING = {"completing": "completed", "making": "made", "turning": "turned"}
+
+
+def _after_having(t: str) -> str:
+    """"After completing a right turn" -> "After having completed a right turn"; "After the Waymo AV made a right
+    turn" -> "After the Waymo AV had made a right turn"."""
+    t = re.sub(r"\b([Aa])fter (completing|making|turning)\b", lambda m: f"{m.group(1)}fter having {_HAVING[m.group(2)]}", t)
+    return re.sub(r"\b([Aa])fter (the \w+ AV|it) (made|completed|turned)\b", r"\1fter \2 had \3", t)
+
+
 def _operator(new: str) -> Callable[[str], str]:
     """The first known operator named in the text, everywhere, renamed to `new`."""
     def apply(t: str) -> str:
@@ -223,23 +242,21 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("passenger vehicle -> private vehicle", _sub(r"\bpassenger vehicle\b", "private vehicle")),
     Rewrite("in the same direction -> in the same direction of travel",
             _sub(r"\bin the same direction\b", "in the same direction of travel")),
-    # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts).
-    Rewrite("After completing/making -> Having completed/made",
-            _sub(r"\bAfter (completing|making)\b", lambda m: "Having " + {"completing": "completed",
-                                                                          "making": "made"}[m.group(1)])),
-    Rewrite("After <AV> made a turn -> After making a turn",
-            _sub(r"\bAfter the (?:Waymo|Cruise|Zoox) AV made a (left|right) turn\b", r"After making a \1 turn")),
-    Rewrite("would have come to a full stop -> would have stopped",
-            _sub(r"\bwould have come to a (?:full |complete )?stop\b", "would have stopped")),
-    Rewrite("pulled behind -> pulled up behind", _sub(r"\bpulled behind\b", "pulled up behind")),
-    Rewrite("came to a stop -> came to a halt", _sub(r"\bcame to a stop\b", "came to a halt")),
-    Rewrite("disengaged from autonomous mode to -> took manual control to",
-            _sub(r"\bdisengaged (?:the [\w ]+? )?from autonomous mode to\b", "took manual control to")),
-    Rewrite("As <AV> moved into -> As <AV> merged into", _sub(r"\b(As the \w+ AV) moved into\b", r"\1 merged into")),
-    Rewrite("pulling into / entering a driveway or lot -> turning into",
-            _sub(r"\b(?:pulling into|entering) (a|the) (driveway|parking lot)\b", r"turning into \1 \2")),
-    Rewrite("parallel parking -> parallel-parking", _sub(r"\bparallel parking\b", "parallel-parking")),
-    Rewrite(", yielding to -> , giving way to", _sub(r", yielding to\b", ", giving way to")),
+    # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts),
+    # each rewrite told as another operator would tell the same moves.
+    Rewrite("after completing a turn -> after having completed it", _after_having),
+    Rewrite("the AV's stop words (came to a halt, pulled up behind, would have stopped)",
+            _subs((r"\bcame to a stop\b", "came to a halt"), (r"\bpulled behind\b", "pulled up behind"),
+                  (r"\bwould have come to a (?:full |complete )?stop\b", "would have stopped"))),
+    Rewrite("', yielding to' <-> ' while yielding to'", _sub(r"(, | while )yielding to\b",
+                                                             lambda m: (" while " if m.group(1) == ", " else ", ")
+                                                             + "yielding to")),
+    Rewrite("disengaged (from) autonomous mode -> transitioned to manual mode",
+            _sub(r"\bdisengaged (?:the (?:\w+ )?AV )?(?:from )?(?:autonomous mode|autonomy)\b", "transitioned to manual mode")),
+    Rewrite("As the AV -> Just as the AV", _sub(r"\bAs the (\w+) AV\b", r"Just as the \1 AV")),
+    Rewrite("the AV's way off the road (turning into a driveway or lot, parallel-parking)",
+            _subs((r"\b(?:pulling into|entering) (a|the) (driveway|parking lot)\b", r"turning into \1 \2"),
+                  (r"\bparallel parking\b", "parallel-parking"))),
 )
 
 

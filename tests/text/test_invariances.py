@@ -8,7 +8,9 @@ foot crossing the street" taken for the AV's crossing); now 1. Session 11 added 
 round, lane and junction synonyms, "halted", "the left traffic lane", "going north", "gave way", "reduced speed",
 "was impacted", "to the rear of", "a parallel-parked car", "a motorist", "continued", words reports use
 interchangeably): 103 of their 1,321 rewritten narratives read differently on that session's start code (39a178f: those
-spellings not read as their usual ones); now 2."""
+spellings not read as their usual ones); now 2. Session 12 added 6 on the AV's own moves ("after having completed"
+a turn, stop words, ", yielding" / "while yielding", "transitioned to manual mode", "Just as the AV", a driveway or
+lot "turned into" and "parallel-parking"): 4 of their 67 rewritten narratives read differently on 746ca19, now 0."""
 
 from __future__ import annotations
 

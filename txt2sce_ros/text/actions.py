@@ -281,12 +281,13 @@ _AT_CONTROL = compile_gated(r"\s+(?:at|for)\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(
 _HYPOTHETICAL = compile_gated(r"^\W*if\b[^.]*\bwould\b", re.I)
 # "EGOD disengaged from autonomous mode to make the left turn": the driver took over to do it, and the story goes
 # on from there; the purpose of a take-over is the manoeuvre made, not an intention.
-_TAKEOVER_TO = compile_gated(r"\b(?:disengag\w*|took\s+(?:over|(?:manual\s+)?control))\b[^.,;]{0,60}?\bto\s+"
-                             r"(?:\w+\s+){0,2}$", re.I)
-# "was attempting to make a right turn ... while yielding to a pedestrian": an attempt while still waiting has not
-# begun.
+_TAKEOVER_TO = compile_gated(r"\b(?:disengag\w*|took\s+(?:over|(?:manual\s+)?control)|(?:transitioned|switched|changed)\s+"
+                             r"(?:[\w-]+\s+){0,4}?to\s+manual(?:\s+mode)?)\b[^.,;]{0,60}?\bto\s+(?:\w+\s+){0,2}$", re.I)
+# "was attempting to make a right turn ... while yielding to a pedestrian" (or ", yielding to"): an attempt while
+# still waiting has not begun.
 _ATTEMPT_WAITING = compile_gated(r"\b(?:was|were)\s+(?:attempting|trying)\s+to\s+(?:\w+\s+){0,2}$", re.I)
-_WHILE_WAITING = compile_gated(r"[^.;]*?\bwhile\s+(?:yielding|waiting|stopped)\b", re.I)
+# (a full stop before a lower-case word ends an abbreviation, "from 24th St. onto Capp St. while", not the sentence)
+_WHILE_WAITING = compile_gated(r"(?:[^.;]|\.(?=\s+[a-z]))*?(?:\bwhile\s+|,\s*)(?:yielding|waiting|stopped)\b")
 # "was proceeding south ..., yielding to a pedestrian", "slowed to 3 MPH when yielding": a yield told beside a run
 # or a slowing of the AV, with no stop told, is the reason it slowed (`c`), not a stop of its own; told alone as
 # what the AV was doing ("was yielding", "while yielding"), it is the AV standing where it waited (`S`).
@@ -538,8 +539,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
             if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
                 code = "c"
-            elif fre.search(r"\b(?:was|were|while)\s+$", before, re.I):
-                code = "S"  # "was yielding", "while yielding": where the AV stood waiting, a state (no event)
+            elif fre.search(r"(?:\b(?:was|were|while)|,)\s*$", before, re.I):
+                code = "S"  # "was yielding", "while yielding", ", yielding": where the AV stood waiting (no event)
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))

@@ -250,7 +250,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
 # "Having completed ...", "Shortly after turning left ...": an "after" that opens the sentence or a clause, or a
 # pluperfect; "EGO stopped after turning right" (mid-clause) may tell the story's own order and is left alone.
 _DONE_BEFORE = compile_gated(r"(?:(?:^|[,;])\W*(?:(?:shortly|just|immediately|right|soon)\s+)?after|\bhad|\bhaving)\s+"
-                             r"(?:just\s+)?(?:(?:EGO|EGOD|it)\s+(?:had\s+)?)?(?:(?:completing|completed|making|made|turning|"
+                             r"(?:just\s+)?(?:(?:EGO|EGOD|it)\s+(?:had\s+)?|having\s+)?(?:(?:completing|completed|making|made|turning|"
                              r"turned|finishing|finished|executing|executed)\b[^,.;]*)?$", re.I)
 
 
