@@ -112,6 +112,22 @@ PROBES: tuple[Probe, ...] = (
             ("At about 9 am we were proceeding through the intersection on a green light when a sedan on the cross "
              "street to our right ran the red light and struck our passenger side.", ("npc1", [("R3", None)])),
     )),
+    _scenes("the AV's part named in another sentence than the contact's; a cut-in placed by the part it touched",
+            _position, (
+            ("On March 3 a Zoox vehicle was struck on the rear bumper by a sedan. The Zoox vehicle was stopped at a red "
+             "light on Folsom Street when the sedan hit it.", [("R6", "same")]),
+            ("On March 3 a Zoox vehicle was struck on its rear bumper by a sedan. The Zoox vehicle was stopped at a "
+             "red light on Folsom Street when the sedan hit the Zoox vehicle, which was stopped.", [("R6", "same")]),
+            ("The Zoox vehicle was traveling north on Kearny in the rightmost lane when a bus attempted to change lanes "
+             "in front of the Zoox vehicle, impacting its front passenger side fender. The bus then hit the Zoox "
+             "vehicle.", [("R5", "right")]),
+            ("The Zoox vehicle was traveling north on Kearny when a sedan attempted a lane change in front of the Zoox "
+             "vehicle, striking its front driver side bumper.", [("R5", "left")]),
+            ("The Cruise AV was traveling in the left lane when a pickup truck merged into the Cruise AV's lane and "
+             "made contact with the Cruise AV's front right bumper.", [("R5", "right")]),
+            ("The Cruise AV was traveling in the right lane when a pickup truck merged into the Cruise AV's lane and "
+             "made contact with the Cruise AV's front left bumper.", [("R5", "left")]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

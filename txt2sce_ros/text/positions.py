@@ -28,6 +28,12 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if x.start > m.end and x.kind == "party" and x.entity in behind_av and _CHAIN.search(
                     d.sents[m.sent][m.end:x.start][-80:]):
                 return "R6", "same", True
+    # ... or by its noun, where the two were taken for one party ("a second motorcyclist then collided with the first
+    # motorcyclist")
+    heads = {h for k in behind_av for h in d.ents[k].heads}
+    queue = _CHAIN_NOUN.search(ctx or d.sents[e.first.sent][e.first.end:]) if heads else None
+    if queue and any((w or "").lower() in heads for w in queue.groups()):
+        return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
     pre = " ".join(fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
                    for m in e.mentions[:2])
@@ -186,9 +192,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
-_CHAIN = compile_gated(r"\b(?:behind|following|trailing|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+with|"
-                       r"rear[- ]ended|struck|impacted|contacted|"
-                       r"hit)\s+(?:the|a|an)\s+(?:[\w-]+\s+)?$", re.I)
+# The verbs that put one party right behind another: following it, or striking it in a chain.
+_CHAIN_VERBS = (r"\b(?:behind|following|trailing|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+with|"
+                r"rear[- ]ended|struck|impacted|contacted|hit)\s+(?:the|a|an)\s+")
+_CHAIN = compile_gated(_CHAIN_VERBS + r"(?:[\w-]+\s+)?$", re.I)
+_CHAIN_NOUN = compile_gated(_CHAIN_VERBS + r"([\w-]+)(?:\s+([\w-]+))?", re.I)
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
                          r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
                          r"(?![^|.]{0,25}\bfrom\s+(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}lane\b)", re.I)

@@ -487,9 +487,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     elif pass_side:
         lane, rule = pass_side, rule + "; passing side"
         used.append(next(c for c in passing if c.value))
-    elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fg"]):
-        # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round.
-        lane, rule = ("right" if changes[0] == "f" else "left"), rule + "; cut in"
+    elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fgF"]):
+        # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round. A
+        # lane change of no stated side came from the side of the AV it touched, else it is written as a move to
+        # the left (sequences.sequence), so it came from the right: the place and the action string agree.
+        lane = {"f": "right", "g": "left"}.get(changes[0]) or (cside if contact is not None and cside else "right")
+        rule += "; cut in"
     elif pos == "R6" and lane == "same" and (moves := [c for c in ego_actions if c in "fg"]) and \
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.

@@ -427,6 +427,10 @@ _PART_OWNER = compile_gated(r"^(?:[\w-]+\s+){0,2}?(?:front|rear|back|side|corner
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended|"
                                  r"impacted|sideswiped|side-swiped)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
+# "in front of EGO, impacting its front passenger side sensors": a participle of contact after the AV's name
+_ITS_PART = compile_gated(r"\bEGO\b[^.;]{0,40},\s+(?:impacting|striking|hitting|contacting|damaging|clipping|scraping)\s+"
+                          r"its\s+((?:[\w-]+\s+){1,5})", re.I)
+_PART_WORD = compile_gated(r"\b(?:front|rear|back|tail|hood|driver|passenger|left|right)\b", re.I)
 # "EGO's left rear." names the part at the sentence end too
 _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
 
@@ -437,15 +441,27 @@ def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
     return d.once(f"ego_contact_part:{d.contact_sent}", lambda: _ego_contact_part(d))
 
 
-def _ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
-    if d.contact_sent is None:
-        return None, None
-    s = d.sents[d.contact_sent]
+def _ego_parts(s: str) -> list[str]:
+    """The AV's parts a sentence names: "the rear driver side of EGO", "EGO's front bumper", "EGO was struck on the
+    passenger side", "... EGO, impacting its front fender"."""
     parts = [m.group(1) for m in _PART_OF_EGO.finditer(s)]
     passive = _PASSIVE_CONTACT.search(s)
     if passive:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
     parts += [m.group(1) for m in _EGOS_PART.finditer(s)]
+    parts += [m.group(1) for m in _ITS_PART.finditer(s)]
+    return parts
+
+
+def _ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
+    if d.contact_sent is None:
+        return None, None
+    parts = _ego_parts(d.sents[d.contact_sent])
+    if not _PART_WORD.search(" ".join(parts)):
+        # The contact sentence names no part of the AV ("it hit EGO, which was stopped"): the part is the one
+        # another sentence of the contact names ("EGO was struck on the passenger side fender by a bus").
+        parts = next((p for k, s in enumerate(d.sents) if k != d.contact_sent and CONTACT.search(s)
+                      and _PART_WORD.search(" ".join(p := _ego_parts(s)))), [])
     text = " ".join(parts).lower()
     rear = fre.search(r"\brear\b|\bback\b|\btail", text)
     front = fre.search(r"\bfront\b|\bhood\b", text)
