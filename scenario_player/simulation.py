@@ -30,7 +30,7 @@ from .actions.longitudinal import SpeedAction
 from .actions.teleport import TeleportAction
 from .conditions.by_entity import ByEntityCondition, ReachPositionCondition
 from .storyboard.build import build_storyboard
-from .storyboard.element import State
+from .storyboard.element import all_complete
 from .storyboard.tree import index_elements
 from .syntax.scenario import Scenario
 from .syntax.xml import ParseContext
@@ -260,17 +260,21 @@ class Simulation:
             story.tick(w)
         # 2. actions
         order = w.order
-        before = [(e.x, e.y, e.road_t, e.road_id) if e.track is not None else (e.x, e.y, 0.0, None)
-                  for e in order]
+        before = []
+        for e in order:
+            if e.track is None:
+                before.append((e.x, e.y, 0.0, None))
+            else:
+                road = e.road()
+                before.append((e.x, e.y, road[3], road[0]))
         w.step_runs(dt)
         # 4. kinematics of everyone the storyboard drives, and 5. their derived states (each reads only the
-        # entity's own motion and the road, not the time or the other entities)
-        for ent, (_px, _py, pt, proad) in zip(order, before):
+        # entity's own motion and the road, not the time or the other entities, so one entity's motion and
+        # derived state may come before the next entity's motion)
+        locate_free = self.locate_free
+        for ent, (px, py, pt, proad) in zip(order, before):
             if ent.present and not ent.planner:
                 move_storyboard(w, ent, dt, pt, proad)
-        locate_free = self.locate_free
-        for ent, (px, py, _pt, _pr) in zip(order, before):
-            if ent.present and not ent.planner:
                 derive(w, ent, dt, px, py, locate_free)
                 ent._prev_speed, ent._prev_h = ent.speed, ent.h
         self._before = before
@@ -307,7 +311,7 @@ class Simulation:
         ego = self.ego
         stop = self.storyboard.stop_trigger
         stories = self.storyboard.stories
-        if stop is None and stories and all(s.state is State.COMPLETE for s in stories):
+        if stop is None and stories and all_complete(stories):
             self._finish("storyboard_complete")
         elif ego.planner and self.config.stop_on_ego_collision and ego.colliding:
             self._finish("collision")

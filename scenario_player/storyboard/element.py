@@ -28,6 +28,20 @@ class Transition(str, enum.Enum):
     SKIP = "skip"
 
 
+# The members as module constants, the same objects: the storyboard is ticked every step, and reading a member off
+# its Enum class (`State.RUNNING`) costs ~180 ns on Python 3.11 against ~10 ns for a module global.
+STANDBY, RUNNING, COMPLETE = State.STANDBY, State.RUNNING, State.COMPLETE
+
+
+def all_complete(elements: list["StoryboardElement"]) -> bool:
+    """`all(e.state is COMPLETE for e in elements)` without the generator (called for every running element
+    every step)."""
+    for e in elements:
+        if e.state is not COMPLETE:
+            return False
+    return True
+
+
 class StoryboardElement:
     """Base of Story, Act, ManeuverGroup, Maneuver, Event and Action. Subclasses override the `_on_*` hooks."""
 
@@ -37,7 +51,7 @@ class StoryboardElement:
         self.name = name
         self.line = line
         self.max_executions = max(1, max_executions)
-        self.state = State.STANDBY
+        self.state = STANDBY
         self.last_transition: Transition | None = None
         self.transition_step = -10
         self.executions = 0
@@ -51,26 +65,26 @@ class StoryboardElement:
         world.log_transition(self, transition)
 
     def start(self, world: "World") -> None:
-        if self.state is not State.STANDBY:
+        if self.state is not STANDBY:
             return
-        self._mark(world, Transition.START, State.RUNNING)
+        self._mark(world, Transition.START, RUNNING)
         self._on_start(world)
 
     def end(self, world: "World") -> None:
         """Normal completion of one execution; restarts into standby while executions remain."""
-        if self.state is not State.RUNNING:
+        if self.state is not RUNNING:
             return
         self.executions += 1
         again = self.executions < self.max_executions
-        self._mark(world, Transition.END, State.STANDBY if again else State.COMPLETE)
+        self._mark(world, Transition.END, STANDBY if again else COMPLETE)
         self._on_end(world, again)
 
     def stop(self, world: "World") -> None:
-        if self.state is State.COMPLETE:
+        if self.state is COMPLETE:
             return
         for child in self.children:
             child.stop(world)
-        self._mark(world, Transition.STOP, State.COMPLETE)
+        self._mark(world, Transition.STOP, COMPLETE)
         self._on_stop(world)
 
     def skip(self, world: "World") -> None:
@@ -80,7 +94,7 @@ class StoryboardElement:
 
     def reset_children(self) -> None:
         for child in self.children:
-            child.state = State.STANDBY
+            child.state = STANDBY
             child.executions = 0
             child.reset_children()
             child._on_reset()
@@ -103,11 +117,12 @@ class StoryboardElement:
 
     def tick(self, world: "World") -> None:
         """Evaluate triggers and advance the life cycle (called once per step, top-down)."""
-        if self.state is State.RUNNING:
-            for child in self.children:
+        if self.state is RUNNING:
+            children = self.children
+            for child in children:
                 child.tick(world)
-            if self.children and all(c.state is State.COMPLETE for c in self.children):
+            if children and all_complete(children):
                 self.end(world)
-                if self.state is State.STANDBY:
+                if self.state is STANDBY:
                     # Another execution: start again at once (ManeuverGroup/Maneuver have no trigger).
                     self.start(world)

@@ -14,7 +14,7 @@ from lxml import etree
 from ..actions import ActionSpec, action_from_xml
 from ..conditions import Trigger, trigger_from_xml
 from ..syntax.xml import ParseContext
-from .element import State, StoryboardElement, Transition
+from .element import RUNNING, STANDBY, State, StoryboardElement, Transition, all_complete
 
 if TYPE_CHECKING:
     from ..world.world import World
@@ -41,8 +41,10 @@ class ActionElement(StoryboardElement):
     def tick(self, world: "World") -> None:
         # An action ends at the first tick after its runs finished, never in the tick it started: an instant
         # action (teleport, step speed) completes one step later, which is when esmini reports its end too.
-        if (self.state is State.RUNNING and self.transition_step < world.step_index
-                and all(r.done for r in self.runs)):  # type: ignore[attr-defined]
+        if self.state is RUNNING and self.transition_step < world.step_index:
+            for r in self.runs:
+                if not r.done:  # type: ignore[attr-defined]
+                    return
             self.end(world)
 
 
@@ -57,18 +59,19 @@ class Event(StoryboardElement):
         self.maneuver: Maneuver | None = None
 
     def tick(self, world: "World") -> None:
-        if self.state is State.STANDBY:
+        if self.state is STANDBY:
             if self.trigger is None or self.trigger.evaluate(world):
                 self._try_start(world)
-        if self.state is State.RUNNING:
-            for child in self.children:
+        if self.state is RUNNING:
+            children = self.children
+            for child in children:
                 child.tick(world)
-            if all(c.state is State.COMPLETE for c in self.children):
+            if all_complete(children):
                 self.end(world)
 
     def _try_start(self, world: "World") -> None:
         siblings = [e for e in (self.maneuver.children if self.maneuver else []) if e is not self]
-        running = [e for e in siblings if e.state is State.RUNNING]
+        running = [e for e in siblings if e.state is RUNNING]
         if self.priority == "skip" and running:
             self.skip(world)
             return
@@ -105,12 +108,12 @@ class Act(StoryboardElement):
         self.start_trigger, self.stop_trigger = start, stop
 
     def tick(self, world: "World") -> None:
-        if self.state is State.STANDBY and (self.start_trigger is None or self.start_trigger.evaluate(world)):
+        if self.state is STANDBY and (self.start_trigger is None or self.start_trigger.evaluate(world)):
             self.start(world)
-        if self.state is State.RUNNING and self.stop_trigger is not None and self.stop_trigger.evaluate(world):
+        if self.state is RUNNING and self.stop_trigger is not None and self.stop_trigger.evaluate(world):
             self.stop(world)
             return
-        super().tick(world)
+        StoryboardElement.tick(self, world)
 
 
 class Story(StoryboardElement):

@@ -103,20 +103,23 @@ class _Resolver:
         self.catalogs = catalogs
 
     def walk(self, el: etree._Element, scope: ParameterScope) -> None:
-        decls = el.find("ParameterDeclarations")
-        if decls is not None:
+        # Every element of the document passes here, so its children and their tags are read once (lxml makes a
+        # new str for each `.tag` read, and `find` goes through ElementPath): the first ParameterDeclarations
+        # child is the one `el.find` would return.
+        children = list(el)
+        tags = [child.tag for child in children]
+        if "ParameterDeclarations" in tags:
             scope = scope.child()
-            _declare(decls, scope, self.source)
-        for key, value in el.attrib.items():
+            _declare(children[tags.index("ParameterDeclarations")], scope, self.source)
+        for key, value in el.items():
             if "$" in value and el.tag != "ParameterDeclaration":
                 el.set(key, scope.resolve(value, source=self.source, element=el.tag, line=el.sourceline))
-        for child in list(el):
-            if not isinstance(child.tag, str) or child.tag == "ParameterDeclarations":
+        for child, tag in zip(children, tags):
+            if not isinstance(tag, str) or tag == "ParameterDeclarations":
                 continue
-            if child.tag == "CatalogReference":
-                child = self._replace_reference(child, scope)
-                if child is None:
-                    continue
+            if tag == "CatalogReference":
+                self._replace_reference(child, scope)
+                continue
             self.walk(child, scope)
 
     def _replace_reference(self, ref: etree._Element, scope: ParameterScope) -> etree._Element | None:

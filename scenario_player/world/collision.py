@@ -13,20 +13,18 @@ if TYPE_CHECKING:
 Poly = list[tuple[float, float]]
 
 
-def _project(poly: Poly, ax: float, ay: float) -> tuple[float, float]:
-    vals = [p[0] * ax + p[1] * ay for p in poly]
-    return min(vals), max(vals)
-
-
 def obb_overlap(a: Poly, b: Poly) -> bool:
     """True if two rectangles (corners in order) overlap or touch."""
+    # The projections are written out (no helper call, one list per box and axis): the contact scan runs this for
+    # every pair whose circles meet, every step.
     for poly in (a, b):
         for i in (0, 1):
-            ex, ey = poly[i + 1][0] - poly[i][0], poly[i + 1][1] - poly[i][1]
+            p, q = poly[i], poly[i + 1]
+            ex, ey = q[0] - p[0], q[1] - p[1]
             ax, ay = -ey, ex
-            amin, amax = _project(a, ax, ay)
-            bmin, bmax = _project(b, ax, ay)
-            if amax < bmin or bmax < amin:
+            va = [c[0] * ax + c[1] * ay for c in a]
+            vb = [c[0] * ax + c[1] * ay for c in b]
+            if max(va) < min(vb) or max(vb) < min(va):
                 return False
     return True
 
@@ -55,13 +53,12 @@ def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
     n = len(live)
     if n < 2:
         return []
-    cos, sin, hypot = math.cos, math.sin, math.hypot
+    cos, sin = math.cos, math.sin
     geo = []
     for e in live:
         sp = e.spec
         c, s = cos(e.h), sin(e.h)
-        geo.append((e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y,
-                    0.5 * hypot(sp.length, sp.width)))
+        geo.append((e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y, e.radius))
     pairs: list[tuple[str, str]] = []
     corners: dict[int, Poly] | None = None
     for i in range(n - 1):

@@ -20,12 +20,13 @@ class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
                  "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "_road",
-                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed", "_static")
+                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed", "_static", "radius", "still")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
         self.name = spec.name
         self._static = spec.is_static             # a property of the (immutable) spec; read for every frame
+        self.radius = 0.5 * math.hypot(spec.length, spec.width)   # of the footprint's enclosing circle (contacts)
         self.x = self.y = self.h = 0.0
         self.speed = self.accel = self.yaw_rate = 0.0
         self.track: LaneTrack | None = None       # lane the entity follows (None: free motion)
@@ -52,6 +53,9 @@ class Entity:
         self.corner_cache = None
         self.placed = False                       # teleported during this step's triggers/actions
         self.reverse = False                      # moves against its lane's driving direction (heading says so)
+        # The last standing step on a lane, for `motion.move_storyboard` to repeat while its inputs stay the same
+        # objects: (track, s, offset, heading override, reverse, ok, x, y, h, road); None: none to repeat.
+        self.still: tuple | None = None
 
     # -- placement ------------------------------------------------------------------------------------------------
     def place_on_lane(self, track: LaneTrack, s: float, offset: float, heading: float | None = None) -> None:
@@ -88,6 +92,10 @@ class Entity:
                 return self._road
             self._road = (None, None, 0.0, 0.0)
         return self._road
+
+    def road(self) -> tuple[str | None, int | None, float, float]:
+        """(road id, lane id, road s, road t), located first when stale: the four properties below in one call."""
+        return self._road if not self.road_stale else self._fresh()
 
     def set_road(self, road_id: str | None, lane_id: int | None, s: float, t: float) -> None:
         self._road = (road_id, lane_id, s, t)

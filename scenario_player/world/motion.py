@@ -22,8 +22,12 @@ if TYPE_CHECKING:
     from .world import World
 
 
+_PI = math.pi
+_TWO_PI = 2.0 * math.pi
+
+
 def _wrap(a: float) -> float:
-    return (a + math.pi) % (2.0 * math.pi) - math.pi
+    return (a + _PI) % _TWO_PI - _PI
 
 
 def _next_track(world: "World", route_lanes: set, track: "LaneTrack", backward: bool = False
@@ -90,13 +94,21 @@ def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
 
 
 def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, prev_road: str | None) -> None:
-    for run in ent.runs.values():
-        if run.moves_entity:
-            return
+    runs = ent.runs
+    if runs:
+        for run in runs.values():
+            if run.moves_entity:
+                return
     if ent.placed:
         ent.placed = False          # teleported this step: it appears there, and moves from the next step
         return
     dist = ent.speed * dt
+    if dist == 0.0 and not runs:
+        still = ent.still
+        if (still is not None and still[0] is ent.track and still[1] is ent.s and still[2] is ent.offset
+                and still[3] is ent.heading_override and still[4] is ent.reverse and ent.lane_locked):
+            _stand_again(ent, still, dt)
+            return
     if ent.track is not None and ent.lane_locked:
         s_before, track_before = ent.s, ent.track
         along = dist
@@ -135,9 +147,27 @@ def move_storyboard(world: "World", ent: "Entity", dt: float, prev_t: float, pre
             ent.end_of_road_time = (0.0 if ent.end_of_road_time is None else ent.end_of_road_time + dt)
             if ent.s == s_before and ent.track is track_before:
                 ent.speed = 0.0     # could not move at all: stuck at the end (esmini stops it there)
+        # A step that stood on its lane (no distance, no runs) at an s inside the track, away from s = 0 (where
+        # s + 0.0 could turn -0.0 into 0.0), gives the same result again while its inputs stay the same objects:
+        # the standing branch above is then a function of (track, s, offset, heading override, reverse) alone.
+        ent.still = ((ent.track, ent.s, ent.offset, ent.heading_override, ent.reverse, ok, x, y, h, road)
+                     if dist == 0.0 and not runs and ent.track is track_before and ent.s != 0.0
+                     and track_before.s0 <= s_before <= track_before.s1 else None)
     elif dist != 0.0:
         ent.x += dist * math.cos(ent.h)
         ent.y += dist * math.sin(ent.h)
+
+
+def _stand_again(ent: "Entity", still: tuple, dt: float) -> None:
+    """`move_storyboard`'s lane branch for an entity standing where its last step left it (see `Entity.still`):
+    the same assignments with the values that step computed."""
+    ok, ent.x, ent.y, ent.h, ent._road = still[5:]
+    ent.road_stale = False
+    if ok:
+        ent.end_of_road_time = None
+    else:
+        ent.end_of_road_time = 0.0 if ent.end_of_road_time is None else ent.end_of_road_time + dt
+        ent.speed = 0.0
 
 
 def move_planner(world: "World", ent: "Entity", cmd: ControlCommand | None, dt: float) -> bool:
@@ -157,7 +187,7 @@ def move_planner(world: "World", ent: "Entity", cmd: ControlCommand | None, dt: 
 def derive(world: "World", ent: "Entity", dt: float, px: float, py: float, locate: bool) -> None:
     """Acceleration, yaw rate, odometer, stand-still time, and road coordinates of free-moving entities."""
     ent.accel = (ent.speed - ent._prev_speed) / dt
-    ent.yaw_rate = _wrap(ent.h - ent._prev_h) / dt
+    ent.yaw_rate = ((ent.h - ent._prev_h + _PI) % _TWO_PI - _PI) / dt       # _wrap, written out (every step)
     ent.odometer += math.hypot(ent.x - px, ent.y - py)
     ent.standstill_time = ent.standstill_time + dt if abs(ent.speed) < 1e-3 else 0.0
     if ent.track is None or not ent.lane_locked:

@@ -46,7 +46,7 @@ class World:
         self.elements: dict[tuple[str, str], Element] = {}
         self.notes: list[str] = []                 # e.g. storyboard actions ignored on the planner-driven ego
         self.transitions: list[tuple[float, str, str, str]] = []
-        self._static_cache: dict[int, Pose] = {}
+        self._static_cache: dict[int, tuple[Any, Pose]] = {}    # id(position) -> (position, its pose)
         self._routes: dict[int, tuple[LanePath, list[LaneRef]]] = {}
         self.running: list[Run] = []
         self.global_runs: list[Run] = []
@@ -86,13 +86,14 @@ class World:
 
     # -- positions ------------------------------------------------------------------------------------------------
     def resolve_cached(self, position: Any) -> Pose:
-        """Resolve a position; absolute ones once per run (conditions test them every step)."""
+        """Resolve a position; absolute ones once per run (conditions test them every step, so a cached one is
+        found first, by identity)."""
+        hit = self._static_cache.get(id(position))
+        if hit is not None and hit[0] is position:
+            return hit[1]
         if type(position).__name__ in STATIC_POSITIONS:
-            key = id(position)
-            pose = self._static_cache.get(key)
-            if pose is None:
-                pose = position.resolve(self)
-                self._static_cache[key] = pose
+            pose = position.resolve(self)
+            self._static_cache[id(position)] = (position, pose)
             return pose
         return position.resolve(self)
 
