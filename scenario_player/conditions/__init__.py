@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from lxml import etree
 
-from ..syntax.xml import ParseContext
+from ..syntax.xml import ParseContext, children, first
 from .base import Check, Condition, ConditionGroup, Trigger
 from .by_entity import BY_ENTITY, ByEntityCondition
 from .by_value import BY_VALUE
@@ -31,7 +31,7 @@ def condition_from_xml(ctx: ParseContext, el: etree._Element) -> Condition:
     elif body.tag == "ByEntityCondition":
         te = ctx.child(body, "TriggeringEntities")
         rule = ctx.req(te, "triggeringEntitiesRule")
-        entities = tuple(ctx.req(r, "entityRef") for r in te.findall("EntityRef"))
+        entities = tuple(ctx.req(r, "entityRef") for r in children(te, "EntityRef"))
         inner = ctx.only_child(ctx.child(body, "EntityCondition"))
         parser = BY_ENTITY.get(str(inner.tag))
         if parser is None:
@@ -46,10 +46,10 @@ def condition_from_xml(ctx: ParseContext, el: etree._Element) -> Condition:
 
 
 def trigger_from_xml(ctx: ParseContext, el: etree._Element | None) -> Trigger | None:
-    if el is None or el.find("ConditionGroup") is None:
+    if el is None or first(el, "ConditionGroup") is None:
         return None     # an empty <StartTrigger/> is no trigger at all: the element starts at once (as esmini)
-    return Trigger([ConditionGroup([condition_from_xml(ctx, c) for c in g.findall("Condition")])
-                    for g in el.findall("ConditionGroup")])
+    return Trigger([ConditionGroup([condition_from_xml(ctx, c) for c in children(g, "Condition")])
+                    for g in children(el, "ConditionGroup")])
 
 
 __all__ = ["Condition", "ConditionGroup", "Trigger", "trigger_from_xml", "condition_from_xml"]

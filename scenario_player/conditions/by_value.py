@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 from lxml import etree
 
+from ..storyboard.element import State, Transition
 from ..syntax.xml import ParseContext
 from .base import Check, Rule
 
@@ -15,6 +16,11 @@ if TYPE_CHECKING:
 
 _STATES = ("startTransition", "endTransition", "stopTransition", "skipTransition", "completeState",
            "runningState", "standbyState")
+#: The member each state name asks about (an element's state and last transition are always members, so `is`
+#: answers what comparing `.value` with the name's stem did, without the Enum property read every step).
+_WANTED: dict[str, State | Transition] = {
+    name: (State(name[: -len("State")]) if name.endswith("State") else Transition(name[: -len("Transition")]))
+    for name in _STATES}
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,12 +54,12 @@ class StoryboardElementStateCondition(Check):
 
     def holds(self, world: "World") -> bool:
         element = world.storyboard_element(self.element_type, self.ref)
-        if self.state.endswith("State"):
-            return element.state.value == self.state[: -len("State")]
+        want = _WANTED[self.state]
+        if type(want) is State:
+            return element.state is want
         # A transition is momentary: visible in the step it happened and the next one, so a condition evaluated
         # earlier in the step than the element still sees it exactly once per evaluation order.
-        return (element.last_transition is not None and element.last_transition.value == self.state[: -len("Transition")]
-                and world.step_index - element.transition_step <= 1)
+        return element.last_transition is want and world.step_index - element.transition_step <= 1
 
 
 @dataclass(frozen=True, slots=True)

@@ -13,7 +13,7 @@ from lxml import etree
 
 from ..actions import ActionSpec, action_from_xml
 from ..conditions import Trigger, trigger_from_xml
-from ..syntax.xml import ParseContext
+from ..syntax.xml import ParseContext, children, first
 from .element import RUNNING, STANDBY, State, StoryboardElement, Transition, all_complete
 
 if TYPE_CHECKING:
@@ -128,13 +128,14 @@ def _actors(ctx: ParseContext, mg: etree._Element) -> tuple[str, ...]:
     if ctx.bool(actors, "selectTriggeringEntities", False):
         # Actors chosen at run time from the entities that triggered the events: not implemented.
         ctx.note_unsupported(actors, "Actors selectTriggeringEntities=true")
-    return tuple(ctx.req(r, "entityRef") for r in actors.findall("EntityRef"))
+    return tuple(ctx.req(r, "entityRef") for r in children(actors, "EntityRef"))
 
 
 def _event(ctx: ParseContext, el: etree._Element, actors: tuple[str, ...]) -> Event:
-    event = Event(ctx.req(el, "name"), el.get("priority", "overwrite"), trigger_from_xml(ctx, el.find("StartTrigger")),
-                  ctx.int(el, "maximumExecutionCount", 1), el.sourceline)
-    for a in el.findall("Action"):
+    event = Event(ctx.req(el, "name"), el.get("priority", "overwrite"),
+                  trigger_from_xml(ctx, first(el, "StartTrigger")), ctx.int(el, "maximumExecutionCount", 1),
+                  el.sourceline)
+    for a in children(el, "Action"):
         spec = action_from_xml(ctx, a)
         event.children.append(ActionElement(a.get("name", ""), spec, actors, a.sourceline))
     if not event.children:
@@ -144,7 +145,7 @@ def _event(ctx: ParseContext, el: etree._Element, actors: tuple[str, ...]) -> Ev
 
 def _maneuver(ctx: ParseContext, el: etree._Element, actors: tuple[str, ...]) -> Maneuver:
     man = Maneuver(ctx.req(el, "name"), line=el.sourceline)
-    for e in el.findall("Event"):
+    for e in children(el, "Event"):
         event = _event(ctx, e, actors)
         event.maneuver = man
         man.children.append(event)
@@ -153,15 +154,15 @@ def _maneuver(ctx: ParseContext, el: etree._Element, actors: tuple[str, ...]) ->
 
 def story_from_xml(ctx: ParseContext, el: etree._Element) -> Story:
     story = Story(el.get("name", ""), line=el.sourceline)
-    for act_el in el.findall("Act"):
-        act = Act(ctx.req(act_el, "name"), trigger_from_xml(ctx, act_el.find("StartTrigger")),
-                  trigger_from_xml(ctx, act_el.find("StopTrigger")), act_el.sourceline)
-        for mg_el in act_el.findall("ManeuverGroup"):
+    for act_el in children(el, "Act"):
+        act = Act(ctx.req(act_el, "name"), trigger_from_xml(ctx, first(act_el, "StartTrigger")),
+                  trigger_from_xml(ctx, first(act_el, "StopTrigger")), act_el.sourceline)
+        for mg_el in children(act_el, "ManeuverGroup"):
             actors = _actors(ctx, mg_el)
             mg = ManeuverGroup(ctx.req(mg_el, "name"), actors, ctx.int(mg_el, "maximumExecutionCount", 1),
                                mg_el.sourceline)
             # A Maneuver catalog reference was already replaced by the Maneuver itself.
-            for m in mg_el.findall("Maneuver"):
+            for m in children(mg_el, "Maneuver"):
                 mg.children.append(_maneuver(ctx, m, actors))
             act.children.append(mg)
         story.children.append(act)

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Callable, Protocol
 from lxml import etree
 
 from ..world.pose import Pose
-from .xml import ParseContext
+from .xml import ParseContext, first
 
 if TYPE_CHECKING:
     from ..world.world import World
@@ -67,7 +67,7 @@ class _EntityOffset:
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "_EntityOffset":
         return cls(ctx.req(el, "entityRef"), ctx.float(el, "dx"), ctx.float(el, "dy"),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
+                   Orientation.from_xml(ctx, first(el, "Orientation")))
 
 
 class RelativeWorldPosition(_EntityOffset):
@@ -104,7 +104,7 @@ class RoadPosition:
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "RoadPosition":
         return cls(ctx.req(el, "roadId"), ctx.float(el, "s"), ctx.float(el, "t"),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
+                   Orientation.from_xml(ctx, first(el, "Orientation")))
 
     def resolve(self, world: "World") -> Pose:
         return world.road_pose(self.road_id, self.s, self.t, self.orientation)
@@ -120,7 +120,7 @@ class RelativeRoadPosition:
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "RelativeRoadPosition":
         return cls(ctx.req(el, "entityRef"), ctx.float(el, "ds"), ctx.float(el, "dt"),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
+                   Orientation.from_xml(ctx, first(el, "Orientation")))
 
     def resolve(self, world: "World") -> Pose:
         road_id, s, t = world.road_coordinates(self.entity)
@@ -138,7 +138,7 @@ class LanePosition:
     @classmethod
     def from_xml(cls, ctx: ParseContext, el: etree._Element) -> "LanePosition":
         return cls(ctx.req(el, "roadId"), ctx.int(el, "laneId"), ctx.float(el, "s"), ctx.float(el, "offset", 0.0),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
+                   Orientation.from_xml(ctx, first(el, "Orientation")))
 
     def resolve(self, world: "World") -> Pose:
         return world.lane_pose(self.road_id, self.lane_id, self.s, self.offset, self.orientation)
@@ -159,7 +159,7 @@ class RelativeLanePosition:
         else:
             ds = ctx.float(el, "ds", 0.0)
         return cls(ctx.req(el, "entityRef"), ctx.int(el, "dLane"), ds, ctx.float(el, "offset", 0.0),
-                   Orientation.from_xml(ctx, el.find("Orientation")))
+                   Orientation.from_xml(ctx, first(el, "Orientation")))
 
     def resolve(self, world: "World") -> Pose:
         return world.relative_lane_pose(self.entity, self.d_lane, self.ds, self.offset, self.orientation)
@@ -178,7 +178,7 @@ class RoutePosition:
         from .routes import Route
 
         ref = ctx.child(el, "RouteRef")
-        route_el = ref.find("Route")
+        route_el = first(ref, "Route")
         if route_el is None:
             raise ctx.error(ref, "RouteRef holds no Route (or its CatalogReference did not resolve)")
         route = Route.from_xml(ctx, route_el)

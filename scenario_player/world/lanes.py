@@ -74,16 +74,29 @@ class LaneTrack:
     def pose_center(self, s: float, offset: float = 0.0) -> tuple[float, float, float, float]:
         """`pose(s, offset)` (world x, y, heading of the lane's driving direction at road s, `offset` toward +t)
         and `center_t(s)`, from one segment look-up: a storyboard entity's step needs both at its new s."""
-        i, f = self._idx(self._sl, s)
-        x = self.x[i] + f * (self.x[i + 1] - self.x[i])
-        y = self.y[i] + f * (self.y[i + 1] - self.y[i])
-        h = self.h[i] + f * (self.h[i + 1] - self.h[i])
+        # `_idx` written out for the common case (s in the hinted segment): every moving entity asks this each step.
+        keys = self._sl
+        i = self._hint
+        k0 = keys[i]
+        k1 = keys[i + 1]
+        if not (k0 <= s < k1):
+            i = self._idx(keys, s)[0]
+            k0 = keys[i]
+            k1 = keys[i + 1]
+        span = k1 - k0
+        f = (s - k0) / span if span > 0 else 0.0
+        j = i + 1
+        xs, ys, hs, tcs = self.x, self.y, self.h, self.tc
+        x = xs[i] + f * (xs[j] - xs[i])
+        y = ys[i] + f * (ys[j] - ys[i])
+        h = hs[i] + f * (hs[j] - hs[i])
         if offset:
-            nx = self.nx[i] + f * (self.nx[i + 1] - self.nx[i])
-            ny = self.ny[i] + f * (self.ny[i + 1] - self.ny[i])
+            nxs, nys = self.nx, self.ny
+            nx = nxs[i] + f * (nxs[j] - nxs[i])
+            ny = nys[i] + f * (nys[j] - nys[i])
             x += offset * nx
             y += offset * ny
-        return float(x), float(y), float(h), float(self.tc[i] + f * (self.tc[i + 1] - self.tc[i]))
+        return float(x), float(y), float(h), float(tcs[i] + f * (tcs[j] - tcs[i]))
 
     def center_t(self, s: float) -> float:
         i, f = self._idx(self._sl, s)

@@ -80,13 +80,18 @@ def lane_walk(world: "World", track: "LaneTrack", s: float, ds: float, route_lan
 def move_on_lane(world: "World", ent: "Entity", dist: float) -> bool:
     """Advance `dist` metres along the lane's driving direction (negative: against it); False when the lane
     network ends (the entity stays at the end)."""
-    assert ent.track is not None
+    track = ent.track
+    assert track is not None
     lateral = ent.runs.get("lateral")
     # The entity advances at the radius of its own path (its offset), unless its lateral action keeps it
     # measured along the lane centre.
     offset = ent.offset if lateral is None or lateral.travels_at_offset else 0.0
-    ds = dist * ent.track.ds_per_metre(ent.s, offset)
-    track, s, ok, flips = lane_walk(world, ent.track, ent.s, ds, ent.route_lanes)
+    ds = dist * track.ds_per_metre(ent.s, offset)
+    s, left = track.advance(ent.s, ds)
+    if left <= 1e-12:
+        ent.s = s                       # within the lane (what `lane_walk` returns when nothing is left over)
+        return True
+    track, s, ok, flips = lane_walk(world, track, ent.s, ds, ent.route_lanes)
     if flips % 2:
         ent.offset = -ent.offset        # +t of the new road points the other way relative to travel
     ent.track, ent.s = track, s

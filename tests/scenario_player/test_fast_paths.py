@@ -1,0 +1,147 @@
+"""Shortcuts the batch player takes for speed give the bits of the plain computation they skip:
+
+- a lane entity standing where its last standing step left it repeats that step (`Entity.still`);
+- documents with nothing to substitute skip the parameter walk;
+- `syntax.xml.first` / `children` are lxml's `find` / `findall` for plain tag names;
+- the contact scan's written-out separating-axis test agrees with the projections as sets of values.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+import scenario_player.simulation as simulation_module
+from scenario_player import Simulation, SimulationConfig, load_scenario
+from scenario_player.syntax import document
+from scenario_player.syntax.xml import children, first
+from scenario_player.world import motion
+from scenario_player.world.collision import obb_overlap
+
+from .conftest import xosc
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "scenarios"
+
+# Files with many standing steps: parked and waiting vehicles, a pedestrian, a red light.
+STANDING = [xosc("traffic_lights"), xosc("straight_500m"), xosc("drop-bike"), xosc("pedestrian"),
+            EXAMPLES / "fault_no_start_when_close.xosc", EXAMPLES / "benign_parked_car.xosc"]
+
+
+def _run(path: Path, mode: str) -> tuple[dict, str, float]:
+    sim = Simulation(load_scenario(path), SimulationConfig(ego_mode=mode, time_limit=20.0))
+    status = sim.run()
+    return sim.trajectory, status.end_reason, status.t
+
+
+def test_standing_repeat_gives_the_bits_of_the_lane_walk(esmini, monkeypatch: pytest.MonkeyPatch) -> None:
+    repeats = []
+    real_repeat = motion._stand_again
+
+    def counting(ent: object, still: tuple, dt: float) -> None:
+        repeats.append(1)
+        real_repeat(ent, still, dt)     # type: ignore[arg-type]
+
+    monkeypatch.setattr(motion, "_stand_again", counting)
+    fast = {(p.name, m): _run(p, m) for p in STANDING for m in ("storyboard", "planner")}
+    assert len(repeats) > 2000, "the scenarios stand still often: the repeat must have been taken"
+
+    real_move = simulation_module.move_storyboard
+
+    def never_repeat(world: object, ent: object, *args: object) -> None:
+        ent.still = None                # type: ignore[attr-defined]
+        real_move(world, ent, *args)    # type: ignore[arg-type]
+
+    monkeypatch.setattr(simulation_module, "move_storyboard", never_repeat)
+    repeats.clear()
+    for (name, mode), (traj, end, t) in fast.items():
+        p = next(f for f in STANDING if f.name == name)
+        slow_traj, slow_end, slow_t = _run(p, mode)
+        assert (slow_end, slow_t) == (end, t), (name, mode)
+        assert slow_traj.keys() == traj.keys()
+        for ent in traj:
+            assert slow_traj[ent].tobytes() == traj[ent].tobytes(), (name, mode, ent)
+    assert not repeats
+
+
+def test_documents_without_substitutions_resolve_as_walked(esmini, monkeypatch: pytest.MonkeyPatch) -> None:
+    files = sorted(EXAMPLES.glob("*.xosc")) + sorted((esmini / "xosc").glob("*.xosc"))
+    skipped = 0
+    resolved = {}
+    for f in files:
+        doc = document.resolve_document(f.read_bytes(), source=str(f), base_dir=f.parent)
+        skipped += not document._NEEDS_WALK(doc.root)
+        resolved[f] = (etree.tostring(doc.root), doc.parameters)
+    assert skipped >= 17, "the examples hold no parameter references: their walk is skipped"
+    monkeypatch.setattr(document, "_NEEDS_WALK", lambda root: True)
+    for f in files:
+        doc = document.resolve_document(f.read_bytes(), source=str(f), base_dir=f.parent)
+        assert (etree.tostring(doc.root), doc.parameters) == resolved[f], f.name
+
+
+@pytest.mark.parametrize("text, walk", [
+    (b'<OpenSCENARIO><ParameterDeclarations/><Storyboard x="1"/></OpenSCENARIO>', False),
+    (b'<OpenSCENARIO><Storyboard x="$a"/></OpenSCENARIO>', True),
+    (b'<OpenSCENARIO><Storyboard x="&#36;a"/></OpenSCENARIO>', True),           # a `$` written as a reference
+    (b'<OpenSCENARIO><Entities><CatalogReference/></Entities></OpenSCENARIO>', True),
+    (b'<OpenSCENARIO><Storyboard><ParameterDeclarations/></Storyboard></OpenSCENARIO>', True),
+])
+def test_walk_is_skipped_only_with_nothing_to_act_on(text: bytes, walk: bool) -> None:
+    assert document._NEEDS_WALK(etree.fromstring(text)) is walk
+
+
+def test_a_nested_declaration_without_name_is_still_refused() -> None:
+    text = (b'<OpenSCENARIO><Storyboard><Story><ParameterDeclarations><ParameterDeclaration value="1"/>'
+            b'</ParameterDeclarations></Story></Storyboard></OpenSCENARIO>')
+    from txt2sce_ros.errors import InputError
+
+    with pytest.raises(InputError, match="without name"):
+        document.resolve_document(text, source="t.xosc", base_dir=Path("."))
+
+
+def test_first_and_children_are_find_and_findall(esmini) -> None:
+    for f in sorted((esmini / "xosc").glob("*.xosc"))[:8] + [EXAMPLES / "benign_parked_car.xosc"]:
+        root = etree.parse(str(f)).getroot()
+        for el in root.iter():
+            if not isinstance(el.tag, str):
+                continue
+            for tag in {c.tag for c in el if isinstance(c.tag, str)} | {"Missing"}:
+                assert first(el, tag) is el.find(tag)
+                assert children(el, tag) == el.findall(tag)
+
+
+def _box(cx: float, cy: float, h: float, length: float, width: float) -> list[tuple[float, float]]:
+    c, s = math.cos(h), math.sin(h)
+    return [(cx + c * dx - s * dy, cy + s * dx + c * dy)
+            for dx, dy in ((length / 2, width / 2), (-length / 2, width / 2), (-length / 2, -width / 2),
+                           (length / 2, -width / 2))]
+
+
+def _overlap_by_sets(a: list, b: list) -> bool:
+    """The separating-axis test stated plainly: on the edge normals of both boxes, the projection intervals."""
+    for poly in (a, b):
+        for i in (0, 1):
+            ax, ay = -(poly[i + 1][1] - poly[i][1]), poly[i + 1][0] - poly[i][0]
+            pa = sorted(p[0] * ax + p[1] * ay for p in a)
+            pb = sorted(p[0] * ax + p[1] * ay for p in b)
+            if pa[-1] < pb[0] or pb[-1] < pa[0]:
+                return False
+    return True
+
+
+def test_contact_test_agrees_with_the_plain_statement() -> None:
+    rng = random.Random(7)
+    hits = 0
+    for _ in range(4000):
+        a = _box(rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-4, 4), rng.uniform(0.5, 5), rng.uniform(0.5, 2))
+        b = _box(rng.uniform(-3, 3), rng.uniform(-3, 3), rng.choice([0.0, math.pi / 2, rng.uniform(-4, 4)]),
+                 rng.uniform(0.5, 5), rng.uniform(0.5, 2))
+        got = obb_overlap(a, b)
+        assert got == _overlap_by_sets(a, b)
+        hits += got
+    assert 400 < hits < 3600
+    touching = _box(0.0, 0.0, 0.0, 2.0, 2.0), _box(2.0, 0.0, 0.0, 2.0, 2.0)     # edges meet exactly
+    assert obb_overlap(*touching)
