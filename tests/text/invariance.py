@@ -242,6 +242,20 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("passenger vehicle -> private vehicle", _sub(r"\bpassenger vehicle\b", "private vehicle")),
     Rewrite("in the same direction -> in the same direction of travel",
             _sub(r"\bin the same direction\b", "in the same direction of travel")),
+    Rewrite("approached from behind -> came up from behind", _sub(
+        r"\bapproach(ed|ing) from (behind|the rear)\b", lambda m: ("came" if m.group(1) == "ed" else "coming") +
+        " up from " + m.group(2))),
+    Rewrite("directly behind -> immediately behind", _sub(r"\bdirectly behind\b", "immediately behind")),
+    Rewrite("traveling behind the AV -> following the AV",
+            _sub(r"\b(?:traveling|driving) behind (the (?:Waymo |Cruise |Zoox )?(?:AV|vehicle))\b", r"following \1")),
+    Rewrite("rear bumper -> back bumper", _sub(r"\brear bumper\b", "back bumper")),
+    Rewrite("the front of the AV -> the AV's front end",
+            _sub(r"\bthe front of (the (?:Waymo |Cruise |Zoox )?(?:AV|vehicle))\b", r"\1's front end")),
+    Rewrite("oncoming lane -> opposing lane", _sub(r"\boncoming (traffic )?lane\b", "opposing lane")),
+    Rewrite("from the <side> -> from the AV's <side>",
+            _sub(r"\bfrom the (left|right)\b(?! (?:side|lane|turn))", r"from the AV's \1")),
+    Rewrite("a passenger vehicle -> another vehicle", _sub(r"\ba passenger vehicle\b", "another vehicle")),
+    Rewrite("came to a stop behind -> stopped behind", _sub(r"\bcame to a (?:complete )?stop behind\b", "stopped behind")),
     # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts),
     # each rewrite told as another operator would tell the same moves.
     Rewrite("after completing a turn -> after having completed it", _after_having),

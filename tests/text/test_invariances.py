@@ -52,6 +52,10 @@ KNOWN: dict[str, set[str]] = {
     # "seeing the vehicle approaching from the opposite direction crossing the centerline": the party's crossing of
     # the centre line is no longer read as a lane change when the participle follows a participle.
     "an oncoming <party> -> a <party> approaching from the opposite direction": {"dmvca-cruise-20201024-r143"},
+    # "Cyclist 3 traveling behind the Cruise AV veered left to avoid another vehicle pulling out of a curbside
+    # parking spot": the original places that other vehicle behind the AV only because the cyclist's "behind EGO"
+    # falls in its window; with "following" it does not, and the vehicle is read ahead (R5/right; gold R6/right).
+    "traveling behind the AV -> following the AV": {"dmvca-cruise-20220129-r278"},
 }
 
 

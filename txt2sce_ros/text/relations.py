@@ -69,7 +69,8 @@ _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|pane
 _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
 # A lane the party moved into is where it went, not where it was.
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enters|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
-_SAME_LANE = compile_gated(r"\b(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind\s+"
+_SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind|"
+                           r"(?:directly\s+|closely\s+)?following)\s+"  # "a sedan following EGO" travels behind it
                            r"(?:the\s+(?:first\s+|second\s+)?)?EGO\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO|in\s+the\s+travel\s+lane)\b", re.I)
