@@ -271,6 +271,11 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("the AV's way off the road (turning into a driveway or lot, parallel-parking)",
             _subs((r"\b(?:pulling into|entering) (a|the) (driveway|parking lot)\b", r"turning into \1 \2"),
                   (r"\bparallel parking\b", "parallel-parking"))),
+    Rewrite("slowed to a stop -> slowed to stop",
+            _sub(r"\b(slowed|slowing|braked|braking|decelerated) to a (?:complete )?stop\b", r"\1 to stop")),
+    Rewrite("a stop behind a standing vehicle (complete stop, ', which was stopped')",
+            _subs((r"\bcame to a stop behind\b", "came to a complete stop behind"),
+                  (r"(?<!,) that was stopped\b", ", which was stopped"))),
 )
 
 

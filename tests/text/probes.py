@@ -22,7 +22,10 @@ party or place named in rarer words), written from sketch.md's definitions and t
 actions, each from a reading the real dev narratives showed wrong (a turn done before the story, a counterfactual
 stop, parking that ended backing, pulling up behind a standing vehicle, a yield beside a run or as a state, a stop
 made for the party met, a take-over made to turn, a move told again at the contact, a driveway or lot entered): 11
-of their 74 wordings came out right on that session's start code (746ca19), now all.
+of their 74 wordings came out right on that session's start code (746ca19), now all; 9 more sets from the
+challenge narratives' AV misses (a stop told after the move that followed it, a stop under way, waiting at a light
+behind a car, the same moment after the contact, into the junction to turn, ...): 12 of their 49 wordings then, now
+all.
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -1466,6 +1469,103 @@ PROBES: tuple[Probe, ...] = (
           ("entering a parking lot", "pulling into a driveway", "turning into a parking garage",
            "entering the lot of a gas station", "pulling into a parking lot"),
           _ego, ("moving", "e")),
+    # Session 12, second batch: the AV's start and actions in the challenge narratives' wordings the rules missed
+    # (a stop told after the move that followed it, a stop under way, waiting at a light behind a car, the same
+    # moment after the contact, into the junction to turn, a braking told after the contact, a state after a comma,
+    # a walker going into the AV's path, a party's state continued by a participle).
+    Probe('the AV moving off after a stop told after it (it stood first)',
+          'The Zoox vehicle was proceeding through a four-way stop intersection {w}. A pickup truck '
+          'approaching from the right on the cross street failed to stop at its stop sign and hit the right '
+          'side of the Zoox vehicle.',
+          ('after stopping',
+           'after coming to a stop',
+           'after having stopped',
+           'after coming to a complete stop',
+           'after stopping at the stop sign',
+           'after it had stopped'),
+          _ego, ('stopped', 'i')),
+    Probe('the AV slowing to stop (a stop under way: moving, ah)',
+          'A Pony.ai vehicle in autonomous mode was {w} for a red light on southbound Main Street. A '
+          'motorcycle traveling behind the AV in the same lane was unable to stop and struck the rear bumper '
+          'of the AV.',
+          ('slowing to stop',
+           'braking to stop',
+           'slowing to a stop',
+           'decelerating to stop',
+           'coming to a stop',
+           'stopping',
+           'slowing down to stop'),
+          _ego, ('moving', 'ah')),
+    Probe('the AV stopped behind a car waiting at the light, then following it (stopped, i)',
+          'A Cruise AV was traveling northbound on Larkin Street. The Cruise AV {w} for the red light. When '
+          'the light turned green, the Nissan proceeded through the intersection and the Cruise AV began to '
+          "follow. A Honda traveling eastbound on Geary Boulevard, from the Cruise AV's left, entered the "
+          'intersection against the red light and made contact with the front driver side of the Cruise AV.',
+          ('came to a stop behind a Nissan Sentra that was stopped',
+           'stopped behind a Nissan Sentra that was waiting',
+           'came to a stop behind a Nissan Sentra, which was stopped',
+           'came to a stop behind a Nissan that was stopped',
+           'came to a stop behind a Nissan that was waiting'),
+          _ego, ('stopped', 'i')),
+    Probe("the AV's move in an 'as' clause after the contact (same moment, in the string)",
+          'A Zoox vehicle in autonomous mode was waiting at a red light on eastbound Harrison Street. A '
+          "pedestrian walked into the Zoox vehicle's front bumper {w}.",
+          ('as the light turned green and the Zoox vehicle began to move',
+           'as the Zoox vehicle began to move',
+           'while the Zoox vehicle was starting to move forward',
+           'just as the light turned green and the Zoox vehicle started to move',
+           'as the Zoox vehicle began moving'),
+          _ego, ('stopped', 'i')),
+    Probe('the AV moving into the junction to turn (the turn begun)',
+          'A Waymo AV was stopped at a red light in the left turn lane on Van Ness Avenue. After the light '
+          'turned green, the Waymo AV {w}. A passenger vehicle in the adjacent left turn lane drifted into the '
+          "Waymo AV's lane, making contact with the Waymo AV's passenger side.",
+          ('proceeded into the intersection to turn left',
+           'entered the intersection to make a left turn',
+           'moved into the intersection to turn left',
+           'pulled into the intersection to make its left turn',
+           'proceeded into the intersection to complete a left turn'),
+          _ego, ('stopped', 'id')),
+    Probe("the AV's braking told after the contact as before the impact",
+          'An Apple test vehicle in autonomous mode was traveling southbound on De Anza Boulevard. A '
+          "northbound vehicle made a left turn in front of the Apple vehicle, and the Apple vehicle's front "
+          'bumper struck the right rear of the turning vehicle. {W}.',
+          ('The Apple vehicle had braked before the impact',
+           'The Apple vehicle braked prior to the collision',
+           'The Apple vehicle had slowed before the contact',
+           'The test driver had applied the brakes before the impact',
+           'The Apple vehicle decelerated before impact'),
+          _ego, ('moving', 'ac')),
+    Probe("the AV's state told as ', stopped in traffic' (where it stood)",
+          'The Zoox vehicle was in the right lane of Las Vegas Boulevard, {w}. A sport utility vehicle in the '
+          "left lane passed the Zoox vehicle, and its right mirror struck the Zoox vehicle's left mirror.",
+          ('stopped in traffic behind a bus',
+           'stopped in traffic',
+           'stopped behind a bus',
+           'stopped at a red light',
+           'stopped in a queue of vehicles',
+           'stopped at the light'),
+          _ego, ('stopped', '')),
+    Probe("a walker going into the AV's path (no contact yet)",
+          'The Waymo AV was making a right turn at the intersection when a pedestrian who was crossing the '
+          'street {w} the path of the Waymo AV. The Waymo AV stopped, but its front bumper contacted the '
+          "pedestrian's leg.",
+          ('walked into',
+           'ran into',
+           'stepped into',
+           'darted into',
+           'walked directly into'),
+          _ego, ('moving', 'eh')),
+    Probe("a party's state told on by a participle ('stopped ... waiting to park')",
+          'The AV was traveling westbound on Broadway when it approached a vehicle that was stopped in the '
+          'travel lane {w}. The AV slowed, and the vehicle, which was reversing into a parking space, made '
+          "contact with the AV's front right bumper.",
+          ('waiting to parallel park',
+           'waiting to park',
+           'idling in front of a space',
+           'sitting with its hazards on',
+           'standing with its reverse lights on'),
+          _ego, ('moving', 'ac')),
 )
 
 

@@ -10,7 +10,8 @@ round, lane and junction synonyms, "halted", "the left traffic lane", "going nor
 interchangeably): 103 of their 1,321 rewritten narratives read differently on that session's start code (39a178f: those
 spellings not read as their usual ones); now 2. Session 12 added 6 on the AV's own moves ("after having completed"
 a turn, stop words, ", yielding" / "while yielding", "transitioned to manual mode", "Just as the AV", a driveway or
-lot "turned into" and "parallel-parking"): 4 of their 67 rewritten narratives read differently on 746ca19, now 0."""
+lot "turned into" and "parallel-parking"): 4 of their 67 rewritten narratives read differently on 746ca19, now 0;
+and 2 more ("slowed to stop", a stop behind a standing vehicle told two ways): 4 of 9 then, now 0."""
 
 from __future__ import annotations
 

@@ -57,7 +57,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "was parallel parking" is a manoeuvre under way; only "was parallel parked" tells where a car stood
           r"(?:(?<=\bwas\s)|(?<=\bwere\s))parallel[-\s]+parking\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel[-\s]+)?parking\s+"
-          r"(?:space|spot|stall)|\b(?:to|attempting\s+to)\s+park\b|"
+          r"(?:space|spot|stall)|(?<!waiting\s)(?<!preparing\s)(?<!planning\s)\b(?:to|attempting\s+to)\s+park\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
           r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel[-\s]+)?parking\s+maneuver|"
           # to the roadside to let a passenger on or off: pulling over
@@ -69,6 +69,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
           r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
+          # "was slowing to stop for a red light": slowing that ends at a standstill
+          r"\b(?:slow|brak|decelerat)(?:ed|ing|es|e|s)?\s+(?:down\s+)?to\s+stop\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b|"
           # Pulling (up or in) behind a vehicle that stands ("pulled behind the double-parked vehicle") ends behind
@@ -77,7 +79,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"parked|stopped|stalled|stationary|disabled|idling)\b"),
     # "began to move into EGO's lane" begins the move it names, not a start from a standstill.
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
-          r"edge|accelerate|pull\s+(?:forward|out|away))(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
+          r"edge|accelerate|follow|pull\s+(?:forward|out|away))"
+          r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+forward\b|"
@@ -283,6 +286,10 @@ _HYPOTHETICAL = compile_gated(r"^\W*if\b[^.]*\bwould\b", re.I)
 # on from there; the purpose of a take-over is the manoeuvre made, not an intention.
 _TAKEOVER_TO = compile_gated(r"\b(?:disengag\w*|took\s+(?:over|(?:manual\s+)?control)|(?:transitioned|switched|changed)\s+"
                              r"(?:[\w-]+\s+){0,4}?to\s+manual(?:\s+mode)?)\b[^.,;]{0,60}?\bto\s+(?:\w+\s+){0,2}$", re.I)
+# "proceeded into the intersection to turn left": moving into the junction to turn is the turn begun (the contact
+# comes in it); to go around something there ("entered the intersection to maneuver around the truck") stays a plan.
+_INTO_JUNCTION_TO = compile_gated(r"\b(?:proceed|mov|pull|enter|edg|creep|inch)(?:ed|ing)\s+(?:forward\s+)?(?:into\s+)?"
+                                  r"the\s+intersection\s+to\s+(?:\w+\s+){0,2}$", re.I)
 # "was attempting to make a right turn ... while yielding to a pedestrian" (or ", yielding to"): an attempt while
 # still waiting has not begun.
 _ATTEMPT_WAITING = compile_gated(r"\b(?:was|were)\s+(?:attempting|trying)\s+to\s+(?:\w+\s+){0,2}$", re.I)
@@ -295,6 +302,10 @@ _YIELD_ASIDE = compile_gated(r"(?:,|\bwhen|\bwhile|\bas)\s*$", re.I)
 _AV_MOVING = compile_gated(r"\b(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|driving|drove|moving|mov(?:ed|es)\s+forward|"
                            r"slow(?:ed|ing)|decelerat(?:ed|ing)|approach(?:ed|ing)|continu(?:ed|ing))\b", re.I)
 _STOP_TOLD = compile_gated(r"\bstop|\bstationary\b|\bwaiting\b|\bhalt|\bstandstill\b|\bparked\b", re.I)
+# Where a standing AV is ("stopped in traffic", "stopped at the light", "stopped behind a bus").
+_IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
+                          r"at\s+(?:a|the)\s+(?:red\s+)?(?:light|signal|stop\s+sign)|"
+                          r"behind\b)", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
@@ -456,7 +467,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
         if _INTENT.search(before) and not caused and not own_clause and (not _INTENT_OK.search(before) or
                                                                          _INTENT_TO_BEGIN.search(before)) and \
-                not _TAKEOVER_TO.search(s[max(0, b - 100):b]):
+                not _TAKEOVER_TO.search(s[max(0, b - 100):b]) and \
+                not (code in "dejY" and _INTO_JUNCTION_TO.search(s[max(0, b - 80):b])):
             continue
         if code in "defgjDFTY" and _ATTEMPT_WAITING.search(before) and _WHILE_WAITING.match(s[e:]):
             continue
@@ -536,6 +548,18 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
             code = "S"  # a party's stop "at the stop sign", "for the red light": where it waited
+        if code == "S" and fre.match(r"(?:waiting|queued|idling|sitting|standing)\b", s[b:e], re.I):
+            # "a vehicle that was stopped in the travel lane waiting to parallel park": a participle right after a
+            # party's state, in the same clause, tells more of that state.
+            prev = next((x for x in reversed(out) if x.sent == sent_idx and x.code == "S" and x.who >= 0), None)
+            if prev is not None and not fre.search(r"[,;]|\b(?:and|but|when|while|as)\b",
+                                                   s[prev.pos + len(prev.text):b], re.I):
+                who = prev.who
+        if code == "h" and who == -1 and s[b:e].lower() == "stopped" and fre.search(r",\s*$", before) and \
+                _IN_PLACE.match(s[e:]):
+            code = "S"  # "EGO was in the right lane, stopped in traffic behind a bus": where it stood
+        if code in "hS" and who == -1 and fre.search(r"\bafter\s+(?:having\s+|(?:it|EGO)\s+had\s+)?$", before, re.I):
+            code = "S"  # "was proceeding through the intersection after stopping": it had stood (sequences)
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
             if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
                 code = "c"

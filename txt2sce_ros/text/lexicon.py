@@ -168,7 +168,9 @@ CONTACT = compile_gated(
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|touched|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|scratched|nicked|"
     r"dinged|dented|"
-    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into|"
+    # (into the path, the street or traffic is where one went, not what one struck: "walked into the path of EGO")
+    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into(?!\s+(?:the\s+|its\s+|"
+    r"EGO's\s+)?(?:path|street|road|roadway|crosswalk|intersection|traffic|lane|travel\s+lane)\b)|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
     r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
     # climbing a curb or median is contact with it ("mounted the curb", "drove up onto the median")

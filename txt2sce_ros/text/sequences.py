@@ -150,11 +150,19 @@ def opens_under_way(acts: list[Act], codes: str = "defgjF") -> tuple[list[Act], 
     return acts[k:], True
 
 
+_CONTROL = compile_gated(r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b", re.I)
+
+
+def _at_control(d: Doc, stop: Act, reach: int = 60) -> bool:
+    """A stop told at a light, a sign, a line or a crosswalk, within `reach` characters of its clause ("came to a
+    stop behind a Nissan Sentra that was stopped for the red light")."""
+    clause = fre.split(r";|,(?!\s*(?:which|that|who)\b)", d.sents[stop.sent][stop.pos:stop.pos + reach])[0]
+    return bool(_CONTROL.search(clause if reach > 60 else d.sents[stop.sent][stop.pos:stop.pos + reach]))
+
+
 def _waited(d: Doc, stop: Act) -> bool:
     """A stop that is where the AV waited (a state, a yield, a light, a sign), not an event of the story."""
-    return stop.code == "S" or bool(fre.search(r"yield", stop.text, re.I)) or bool(fre.search(
-        r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b",
-        d.sents[stop.sent][stop.pos:stop.pos + 60], re.I))
+    return stop.code == "S" or bool(fre.search(r"yield", stop.text, re.I)) or _at_control(d, stop, 100)
 
 
 def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
@@ -165,6 +173,8 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     acts = [a for a in d.acts if a.who == -1 and (a.sent not in d.summary or a.code == "S")
             and before_contact(d, a.sent, a.pos) and not _done_before(d, a)]
     acts = _ended_in_retold_move(d, [_driveway_turn(d, a) for a in acts])
+    # "was proceeding through the intersection after stopping": the stop came first, though told last.
+    acts.sort(key=lambda a: (a.sent, not (a.code == "S" and _AFTER.search(d.sents[a.sent][:a.pos])), a.pos))
     if first_party_pos is None:
         return sequence(acts, stopped=False, ego=True, side=None)
     fs, fp = first_party_pos
@@ -175,8 +185,14 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         clause_start = m[-1].start()
     else:
         clause_start = 0
-    pre = [a for a in acts if (a.sent, a.pos) < (fs, clause_start)]
-    post = [a for a in acts if (a.sent, a.pos) >= (fs, clause_start)]
+    # A stop where the AV waited (a light, a sign), told in the first party's own clause before the party ("EGO came
+    # to a stop behind a Nissan that was stopped for the red light"), is where the AV stood when it began.
+    pre = [a for a in acts if (a.sent, a.pos) < (fs, clause_start) or
+           (a.sent == fs and a.pos < fp and a.code == "h" and not a.under_way and "yield" not in a.text.lower() and
+            _at_control(d, a, 100) and
+            not any(x.who == -1 and x.code not in "hS" for x in acts
+                    if (fs, clause_start) <= (x.sent, x.pos) < (fs, a.pos)))]
+    post = [a for a in acts if a not in pre]
     stopped = False
     prefix: list[Act] = []
     stops = [k for k, a in enumerate(pre) if a.code in ("h", "S")]
@@ -208,6 +224,9 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
             # state ("was stopped") is where the AV waited when it began.
+            prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
+        elif last.code == "h" and last.under_way and not last.text.lower().startswith("yield"):
+            # "was slowing to stop for a red light when ...": a stop still under way is an event of an AV on its way
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code == "h" and not _waited(d, last) and _stopped_for_partner(d, last):
             # "EGO came to a stop in the parking lot while yielding to ... an oncoming pickup truck", which then
@@ -260,6 +279,7 @@ def _done_before(d: Doc, a: Act) -> bool:
     return a.code in "deTj" and bool(_DONE_BEFORE.search(d.sents[a.sent][:a.pos]))
 
 
+_AFTER = compile_gated(r"\bafter\s+(?:having\s+|(?:it|EGO)\s+had\s+)?$", re.I)
 _RETOLD = compile_gated(r"^\W*(?:as|while|when|just\s+as)\s+EGO\s+(?:was\s+)?$", re.I)
 
 

@@ -208,16 +208,31 @@ _AFTERWARDS = compile_gated(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\
                          r"\bdamaging\b|\bresulting\b", re.I)
 
 
+# Only a braking is read there: the AV's reaction just before the contact, told after it.
+_BEFORE_IMPACT = compile_gated(r"\b(?:brak(?:ed|ing)|slow(?:ed|ing)|decelerat(?:ed|ing)|applied\s+(?:the\s+)?brakes)\b"
+                               r"[^.;]{0,30}?\b(?:before|prior\s+to)\s+(?:the\s+)?(?:impact|contact|collision)\b", re.I)
+_SAME_TIME = compile_gated(r"\b(?:as|while|just\s+as)\b", re.I)
+_LATER = compile_gated(r"\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
+                       r"\bdamaging\b|\bresulting\b", re.I)
+
+
 def before_contact(d: Doc, sent: int, pos: int) -> bool:
     """Is text position (sent, pos) part of the story up to the contact? In the contact sentence, words after the
     contact verb still are, unless a new clause ("and proceeded left", "then") tells what came next."""
     if d.contact_sent is None:
         return True
     if sent != d.contact_sent:
-        return sent < d.contact_sent
+        # "EGO had braked before the impact.": a later sentence that places its telling before the contact
+        return sent < d.contact_sent or bool(_BEFORE_IMPACT.search(d.sents[sent]))
     if pos <= d.contact_pos:
         return True
-    return not _AFTERWARDS.search(d.sents[sent][d.contact_pos:pos])
+    after = d.sents[sent][d.contact_pos:pos]
+    # "walked into EGO's front bumper as the light turned green and EGO began to move": a clause of the same moment
+    # ("as", "while") runs to the sentence's end; its "and" joins what happened then, not what came next.
+    same_time = _SAME_TIME.search(after)
+    if same_time and not _AFTERWARDS.search(after[:same_time.start()]):
+        return not _LATER.search(after[same_time.end():])
+    return not _AFTERWARDS.search(after)
 
 
 def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
