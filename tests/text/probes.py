@@ -131,6 +131,55 @@ PROBES: tuple[Probe, ...] = (
             ("The Cruise AV was traveling in the right lane when a pickup truck merged into the Cruise AV's lane and "
              "made contact with the Cruise AV's front left bumper.", [("R5", "left")]),
     )),
+    _scenes("the party's own flank met by the AV's front; a merge into the AV's lane from a side", _position, (
+            ("The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan in the left "
+             "lane began to change lanes to the right, and the front of the Waymo AV made contact with the "
+             "right rear of the sedan.",
+             [("R5", "left")]),
+            ("The Cruise AV was traveling eastbound in the right lane when a passenger vehicle merged into its "
+             "lane from the left. The Cruise AV's front bumper made contact with the passenger side of the "
+             "vehicle.",
+             [("R5", "left")]),
+            ("The Zoox vehicle was traveling in the right lane. A vehicle traveling in the left lane moved "
+             "into the Zoox vehicle's lane, and the front right of the Zoox vehicle made contact with the rear "
+             "passenger side of the vehicle.",
+             [("R5", "left")]),
+            ("The AV was traveling straight in the center lane when a pickup truck from the left lane cut in "
+             "front of it. The AV struck the right rear bumper of the pickup truck.",
+             [("R5", "left")]),
+            ("The Waymo AV was stopped in the right lane at a red light. A box truck passing on the left side "
+             "of the Waymo AV made contact with the Waymo AV's side mirror with its right side.",
+             [("R6", "left")]),
+            ("The Cruise AV was traveling in the left lane when a sedan in the right lane merged left, and the "
+             "front left of the Cruise AV contacted the driver side rear door of the sedan.",
+             [("R5", "right")]),
+            ("The Cruise AV was traveling in the right lane when a passenger vehicle changed lanes in front of "
+             "it. The front of the Cruise AV made contact with the passenger side of the vehicle.",
+             [("R5", "left")]),
+            ("The Cruise AV was traveling in the left lane when a sedan moved over in front of it. The Cruise "
+             "AV's front bumper struck the driver side of the sedan.",
+             [("R5", "right")]),
+            ("The Cruise AV was traveling in the right lane behind a sedan. The sedan braked suddenly and the "
+             "front of the Cruise AV made contact with the left rear corner of the sedan.",
+             [("R5", "same")]),
+            ("The Waymo AV was traveling northbound on Mission Street and entered the intersection with 16th "
+             "Street on a green light. A sedan traveling westbound on 16th Street entered the intersection "
+             "against a red light, and the front of the Waymo AV made contact with the driver side of the "
+             "sedan.",
+             [("R3", None)]),
+            ("The Cruise AV was proceeding through the intersection on a green light when a vehicle entered "
+             "the intersection from the right, running the red light. The front bumper of the Cruise AV struck "
+             "the driver side doors of the vehicle.",
+             [("R3", None)]),
+            ("The Cruise AV was proceeding through the intersection on a green light when a vehicle entered "
+             "the intersection, running the red light. The front bumper of the Cruise AV struck the passenger "
+             "side of the vehicle.",
+             [("R1", None)]),
+            ("The Zoox vehicle was proceeding through the intersection when a pickup truck ran the stop sign "
+             "and entered the intersection. The Zoox vehicle's front end collided with the driver side of the "
+             "pickup truck.",
+             [("R3", None)]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

@@ -182,8 +182,10 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return ("R3" if from_right else "R1"), None, True
     if junction and e.category in ("car", "van", "truck", "bus", "motorcycle") and (
             fre.search(r"\b(?:entered|drove\s+into|proceeded\s+into|came\s+into)\s+the\s+intersection", ctx, re.I)):
-        # Straight into the intersection and into the AV's side: it came from the side it struck.
-        side = side_named(ctx) or cside
+        # Straight into the intersection and into the AV's side: it came from the side it struck. Its own flank
+        # met by the AV's front puts it on the other side ("EGO's front end struck the driver side of the pickup").
+        met = flank_met(d, e) if e.idx == d.partner and fore == "front" and not cside else None
+        side = {"left": "right", "right": "left"}[met] if met else side_named(ctx) or cside
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
     if fre.search(r"\bbehind\b", ctx, re.I):
         return "R6", "same", True
@@ -203,6 +205,22 @@ _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<
 _CLAUSE_END = re.compile(r"[;]|\b(?:when|while|as|but|after|before|because|until|then)\b|"
                          r",?\s+(?:and\s+)?(?:EGO|(?:the|a|an)\s+(?:other\s+)?(?!opposite\b|oncoming\b)\w+)\s+"
                          r"(?:was|were|had|is|yield\w*|stopp\w*|wait\w*|brak\w*)\b", re.I)
+
+
+# The party's own flank named as where it was touched: "the passenger side of the sedan", "the rear driver side door
+# of the vehicle" (a corner or a bumper may be an off-centre rear-end: no flank).
+_FLANK_OF = compile_gated(r"\b(?:(?:front|rear)[- ])?(left|right|driver(?:'s)?|passenger(?:'s)?)(?:[- ](?:front|rear))?[- ]"
+                          r"(?:side|door|quarter|fender|panel)\w*(?:\s+(?:door|panel))?\s+of\s+(?:the|a|an|that)\s+"
+                          r"(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def flank_met(d: Doc, e: Entity) -> str | None:
+    """The side of its own body (left/right) the party was touched on in the contact sentence, if named. Met by the
+    AV's front, it tells where the party came from: the other side."""
+    for m in e.mentions:
+        if m.sent == d.contact_sent and (f := _FLANK_OF.search(d.sents[m.sent][max(0, m.start - 60):m.start])):
+            return "left" if f.group(1)[0] in "lLdD" else "right"
+    return None
 
 
 def _own_clause(after: str) -> str:

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import exit_street
+from .positions import exit_street, flank_met
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -52,6 +52,8 @@ _LANE_CUES = compile_gated(
     r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
     r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+(?:EGO|us)\b|\b(?:on|to)\s+(?:EGO's|our)\s+(left|right)\b|"
     r"\bon\s+its\s+(left|right)\b|"
+    # "merged into its lane from the left": where it came from, beside the AV
+    r"\binto\s+(?:EGO's|its|our)\s+lane\s+from\s+(?:the\s+|EGO's\s+|its\s+)?(left|right)\b(?!\s+(?:turn|side\s+of))|"
     # "a sedan stopped to its left": a party is not beside itself, so "its" is the AV (a move "to its left" is not)
     r"(?<!veered\s)(?<!swerved\s)(?<!steered\s)(?<!moved\s)(?<!merged\s)(?<!drifted\s)(?<!turned\s)"
     r"\bto\s+its\s+(left|right)\b|"
@@ -490,10 +492,18 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         used.append(next(c for c in passing if c.value))
     elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fgF"]):
         # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round. A
-        # lane change of no stated side came from the side of the AV it touched, else it is written as a move to
-        # the left (sequences.sequence), so it came from the right: the place and the action string agree.
-        lane = {"f": "right", "g": "left"}.get(changes[0]) or (cside if contact is not None and cside else "right")
+        # lane change of no stated side came from the side of the AV it touched, or from the side opposite its own
+        # flank the AV's front met, else it is written as a move to the left (sequences.sequence), so it came from
+        # the right: the place and the action string agree.
+        met = flank_met(d, e) if contact is not None and fore == "front" and not cside else None
+        lane = {"f": "right", "g": "left"}.get(changes[0]) or (cside if contact is not None and cside else None) or \
+            ({"left": "right", "right": "left"}[met] if met else "right")
         rule += "; cut in"
+    elif pos == "R5" and lane == "same" and contact is not None and fore == "front" and not cside and not along and \
+            (met := flank_met(d, e)):
+        # The AV's front met the party's flank ("the front of EGO struck the passenger side of the sedan"): the party
+        # was crossing or cutting across its path from the other side.
+        lane, rule = {"left": "right", "right": "left"}[met], rule + "; its flank met by the AV's front"
     elif pos == "R6" and lane == "same" and (moves := [c for c in ego_actions if c in "fg"]) and \
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.

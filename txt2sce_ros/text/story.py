@@ -445,6 +445,8 @@ _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struc
 # "in front of EGO, impacting its front passenger side sensors": a participle of contact after the AV's name
 _ITS_PART = compile_gated(r"\bEGO\b[^.;]{0,40},\s+(?:impacting|striking|hitting|contacting|damaging|clipping|scraping)\s+"
                           r"its\s+((?:[\w-]+\s+){1,5})", re.I)
+_PART_END = re.compile(r"\b(?:collided|made|struck|hit|contacted|impacted|came|was|were|had|sideswiped|scraped|"
+                       r"clipped|rubbed|touched|bumped|with|against|into)\b", re.I)
 _PART_WORD = compile_gated(r"\b(?:front|rear|back|tail|hood|driver|passenger|left|right)\b", re.I)
 # "EGO's left rear." names the part at the sentence end too
 _EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
@@ -463,7 +465,8 @@ def _ego_parts(s: str) -> list[str]:
     passive = _PASSIVE_CONTACT.search(s)
     if passive:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
-    parts += [m.group(1) for m in _EGOS_PART.finditer(s)]
+    # "EGO's front end collided with the driver side of the pickup": the AV's part ends where the verb begins
+    parts += [_PART_END.split(m.group(1), 1)[0] for m in _EGOS_PART.finditer(s)]
     parts += [m.group(1) for m in _ITS_PART.finditer(s)]
     return parts
 
