@@ -110,6 +110,21 @@ class _Recorder:
                 r.append((t, e.x, e.y, e.h, e.speed))
 
 
+#: The time of step k, `round(k * dt, 9)`, by dt: rounding to 9 digits goes through a decimal conversion
+#: (~0.5 us, once per step), and every run at one dt asks the same values. Kept up to this many steps per dt.
+_STEP_TIMES: dict[float, list[float]] = {}
+_TIMES_KEPT = 200_000
+
+
+def _step_times(dt: float) -> list[float]:
+    times = _STEP_TIMES.get(dt)
+    if times is None:
+        if len(_STEP_TIMES) >= 16:       # a few step sizes per process; a stream of others is not kept
+            _STEP_TIMES.clear()
+        times = _STEP_TIMES[dt] = [round(0 * dt, 9)]
+    return times
+
+
 def _pick_ego(names: list[str], wanted: str | None) -> str:
     if wanted:
         return wanted
@@ -136,6 +151,8 @@ class Simulation:
         self.end_reason = ""
         self.verdict_hint = ""
         self.slip_steps = 0
+        self._end_time = self.time_limit - 1e-9
+        self._times = _step_times(self.config.dt)
         self._build()
 
     # -- life cycle -----------------------------------------------------------------------------------------------
@@ -292,8 +309,16 @@ class Simulation:
                 if move_planner(w, ent, command, dt):
                     self.slip_steps += 1
         # 5. derived states
-        w.t = t = round((w.step_index + 1) * dt, 9)
-        w.step_index += 1
+        k = w.step_index + 1
+        times = self._times
+        if k < len(times):
+            t = times[k]
+        else:
+            t = round(k * dt, 9)
+            if k == len(times) and k <= _TIMES_KEPT:
+                times.append(t)
+        w.t = t
+        w.step_index = k
         w.signals.step(t)
         locate_free = self.locate_free
         for ent, (px, py, _pt, _pr) in zip(order, before):
@@ -318,7 +343,7 @@ class Simulation:
         elif ego.planner and self.goal is not None and math.hypot(
                 ego.x - self.goal.x, ego.y - self.goal.y) <= self.goal.tolerance:
             self._finish("goal_reached")
-        elif t >= self.time_limit - 1e-9:
+        elif t >= self._end_time:
             self._finish("time_limit")
 
     def _finish(self, reason: str, verdict_hint: str = "") -> None:

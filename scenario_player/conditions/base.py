@@ -131,12 +131,18 @@ class ConditionGroup:
 class Trigger:
     """StartTrigger/StopTrigger: OR of groups. An empty trigger never fires (a missing one is handled by callers)."""
 
-    __slots__ = ("groups",)
+    __slots__ = ("groups", "_only")
 
     def __init__(self, groups: list[ConditionGroup]) -> None:
         self.groups = groups
+        # One group of one condition (most triggers): evaluating it is evaluating that condition (its value is
+        # a bool), without the two loops; triggers are evaluated every step.
+        self._only = groups[0].conditions[0] if len(groups) == 1 and len(groups[0].conditions) == 1 else None
 
     def evaluate(self, world: "World") -> bool:
+        only = self._only
+        if only is not None:
+            return only.evaluate(world)
         result = False
         for group in self.groups:
             if group.evaluate(world):

@@ -43,40 +43,57 @@ def point_in_box(p: tuple[float, float], poly: Poly) -> bool:
 
 
 def detect(entities: list["Entity"]) -> list[tuple[str, str]]:
-    """Pairs of present entities whose footprints overlap; a bounding-circle test prunes far pairs first.
+    """Pairs of present entities whose footprints overlap; bounding circles prune far pairs first.
 
-    Runs every step for every pair, so the centres are computed inline (the same expressions as
-    `measure.box_center`, hence the same bits) and corners only for the pairs the circles cannot separate. With
-    the handful of entities of a scenario, plain floats beat numpy arrays here (array set-up costs more than the
-    pairs)."""
+    Runs every step for every pair. A pair whose reference points lie farther apart than their `Entity.reach`
+    (enclosing radius, the box centre's offset from the reference point, and 0.5 m of slack for rounding) is
+    skipped before any trigonometry: their box centres are then farther apart than the two radii, so the circle
+    test below would skip it too (the slack is far above the rounding of these sums; a heading that is not finite
+    makes the centres NaN, which that test never skips, so such a pair is not skipped here either). For the other
+    pairs the centres are computed inline (the same expressions as `measure.box_center`, hence the same bits) and
+    corners only for the pairs the circles cannot separate. With the handful of entities of a scenario, plain
+    floats beat numpy arrays here (array set-up costs more than the pairs)."""
     live = [e for e in entities if e.present]
     n = len(live)
     if n < 2:
         return []
-    cos, sin = math.cos, math.sin
-    geo = []
-    for e in live:
-        sp = e.spec
-        c, s = cos(e.h), sin(e.h)
-        geo.append((e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y, e.radius))
     pairs: list[tuple[str, str]] = []
+    geo: list[tuple[float, float, float] | None] = [None] * n
     corners: dict[int, Poly] | None = None
     for i in range(n - 1):
-        xi, yi, ri = geo[i]
+        ei = live[i]
+        exi, eyi, reach_i, hi = ei.x, ei.y, ei.reach, ei.h
         for j in range(i + 1, n):
-            xj, yj, rj = geo[j]
-            dx, dy = xi - xj, yi - yj
-            r = ri + rj
+            ej = live[j]
+            dx, dy = exi - ej.x, eyi - ej.y
+            reach = reach_i + ej.reach
+            if dx * dx + dy * dy > reach * reach and hi - hi == 0.0 and ej.h - ej.h == 0.0:
+                continue
+            gi = geo[i]
+            if gi is None:
+                gi = geo[i] = _centre(ei)
+            gj = geo[j]
+            if gj is None:
+                gj = geo[j] = _centre(ej)
+            dx, dy = gi[0] - gj[0], gi[1] - gj[1]
+            r = gi[2] + gj[2]
             if dx * dx + dy * dy > r * r:
                 continue
             if corners is None:
                 corners = {}
             ci = corners.get(i)
             if ci is None:
-                ci = corners[i] = box_corners(live[i])
+                ci = corners[i] = box_corners(ei)
             cj = corners.get(j)
             if cj is None:
-                cj = corners[j] = box_corners(live[j])
+                cj = corners[j] = box_corners(ej)
             if obb_overlap(ci, cj):
-                pairs.append((live[i].name, live[j].name))
+                pairs.append((ei.name, ej.name))
     return pairs
+
+
+def _centre(e: "Entity") -> tuple[float, float, float]:
+    """The footprint's centre and enclosing radius (the centre as `measure.box_center` computes it)."""
+    sp = e.spec
+    c, s = math.cos(e.h), math.sin(e.h)
+    return e.x + c * sp.center_x - s * sp.center_y, e.y + s * sp.center_x + c * sp.center_y, e.radius

@@ -20,13 +20,16 @@ class Entity:
     __slots__ = ("spec", "name", "x", "y", "h", "speed", "accel", "yaw_rate", "track", "s", "offset",
                  "runs", "route_lanes", "odometer", "standstill_time", "end_of_road_time", "offroad_time",
                  "colliding", "planner", "present", "lane_locked", "_prev_speed", "_prev_h", "_road",
-                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed", "_static", "radius", "still")
+                 "road_stale", "locator", "heading_override", "corner_cache", "reverse", "placed", "_static", "radius", "reach", "still")
 
     def __init__(self, spec: EntitySpec) -> None:
         self.spec = spec
         self.name = spec.name
         self._static = spec.is_static             # a property of the (immutable) spec; read for every frame
         self.radius = 0.5 * math.hypot(spec.length, spec.width)   # of the footprint's enclosing circle (contacts)
+        # How far from the reference point the footprint can reach, with 0.5 m to spare (the contact scan's
+        # first, trigonometry-free test)
+        self.reach = self.radius + math.hypot(spec.center_x, spec.center_y) + 0.5
         self.x = self.y = self.h = 0.0
         self.speed = self.accel = self.yaw_rate = 0.0
         self.track: LaneTrack | None = None       # lane the entity follows (None: free motion)

@@ -95,6 +95,8 @@ class SignalBoard:
 
     def step(self, t: float) -> None:
         """Advance controller phases whose duration has elapsed."""
+        if not self.phase_start:
+            return                      # no controllers (most scenarios): nothing to copy and walk each step
         for name, (idx, start) in list(self.phase_start.items()):
             ctrl = self.controllers[name]
             if t < start:

@@ -273,18 +273,26 @@ class World:
 
     def step_runs(self, dt: float) -> None:
         """Actions phase: every running action advances once (global first, then in start order)."""
-        for run in self.global_runs:
-            if not run.done:
-                run.step(self, dt)
-        self.global_runs = [r for r in self.global_runs if not r.done]
+        if self.global_runs:
+            for run in self.global_runs:
+                if not run.done:
+                    run.step(self, dt)
+            self.global_runs = [r for r in self.global_runs if not r.done]
+        if not self.running:
+            return
         # Longitudinal runs first: lateral shapes over distance and trajectories use this step's speed.
         for run in self.running:
             if not run.done and "longitudinal" in run.domains and not run.moves_entity:
                 run.step(self, dt)
+        finished = False
         for run in self.running:
             if not run.done and ("longitudinal" not in run.domains or run.moves_entity):
                 run.step(self, dt)
-        if any(r.done for r in self.running):
+        for run in self.running:
+            if run.done:
+                finished = True
+                break
+        if finished:
             for run in self.running:
                 if run.done:
                     ent = run.entity
