@@ -25,7 +25,8 @@ made for the party met, a take-over made to turn, a move told again at the conta
 of their 74 wordings came out right on that session's start code (746ca19), now all; 9 more sets from the
 challenge narratives' AV misses (a stop told after the move that followed it, a stop under way, waiting at a light
 behind a car, the same moment after the contact, into the junction to turn, ...): 12 of their 49 wordings then, now
-all.
+all; and 5 on who did a participle after a comma and on contacts (named again in the damage, a move into a part of
+the AV or onto it, a braking at the contact): 6 of 24 then, now all.
 
     python -m tests.text.probes          # per probe set: wordings read as wanted, and every miss
 """
@@ -86,6 +87,18 @@ _LANE_ENTERED_GOING = ("began to proceed into the Waymo AV's lane", "proceeded i
                        "proceeded to enter the Waymo AV's lane", "began to nose into the Waymo AV's lane",
                        "rolled forward into the Waymo AV's lane",
                        "proceeded forward into the lane occupied by the Waymo AV")
+
+
+def _partner_told(sk: Sketch) -> object:
+    return sk.collision.with_, sk.missing
+
+
+def _partner_touched(sk: Sketch) -> object:
+    return sk.collision.with_, sk.collision.type != "none"
+
+
+def _partner_id(sk: Sketch) -> object:
+    return sk.collision.with_
 
 
 def _partner_position(sk: Sketch) -> object:
@@ -1615,6 +1628,55 @@ PROBES: tuple[Probe, ...] = (
            'sitting with its hazards on',
            'standing with its reverse lights on'),
           _ego, ('moving', 'ac')),
+    # Session 12, third batch: who did a participle after a comma, the contact named again in the damage, contacts
+    # told as a move into a part of the AV or onto it, a braking at the contact.
+    Probe("the AV standing while a party behind it, going around, merges (a comma's participle is the subject's)",
+          'The Waymo AV was stopped in the right lane while boarding a passenger. A passenger vehicle stopped '
+          'behind the Waymo AV then attempted to go around the Waymo AV, {w} with traffic in the center lane '
+          'and making contact with the Waymo AV.',
+          ('attempting to merge',
+           'trying to merge',
+           'merging',
+           'beginning to merge',
+           'about to merge'),
+          _ego, ('stopped', '')),
+    Probe('the contact named again in the damage told after it (the partner stays the one that struck)',
+          'The Waymo AV was stopped at a red light on Pine Street. A sedan stopped behind the Waymo AV then '
+          'attempted to go around it, colliding instead with a third vehicle and also making contact with the '
+          'Waymo AV. {W}',
+          ('The Waymo AV and the sedan that made contact with it sustained minor damage.',
+           'The Waymo AV and the sedan, which struck it, sustained minor damage.',
+           'Both the Waymo AV and the sedan that collided with it sustained damage.',
+           'The Waymo AV and the vehicle that hit it sustained moderate damage.'),
+          _partner_told, ('npc1', ())),
+    Probe("a party's move that ends in a part of the AV (a contact)",
+          'The Waymo AV was stopped facing southwest on Fulton Street while yielding to pedestrians in a '
+          'crosswalk when a passenger vehicle {w} of the Waymo AV. Both vehicles sustained minor damage.',
+          ('reversed at a low speed from an adjacent driveway into the right rear bumper',
+           'backed out of a driveway into the rear bumper',
+           'rolled backward into the front bumper',
+           'reversed into the right rear corner',
+           'backed up into the front'),
+          _partner_touched, ('npc1', True)),
+    Probe('a walker jumping onto the AV (a contact)',
+          'The Cruise AV stopped for a pedestrian on Hayes Street. The pedestrian approached the Cruise AV and '
+          '{w} of the Cruise AV.',
+          ('jumped onto the hood',
+           'climbed onto the hood',
+           'leaped onto the hood',
+           'jumped up onto the hood',
+           'climbed onto the roof'),
+          _partner_id, 'npc1'),
+    Probe('the AV braking just before the contact (a reaction, no manoeuvre)',
+          'A Zoox vehicle was stopped in the left turn lane, yielding to cross traffic. The operator '
+          'disengaged and proceeded to make the left turn. An SUV from the left continued straight, and the '
+          "operator {w} the front of the Zoox vehicle made contact with the SUV's passenger side.",
+          ('braked just before',
+           'braked immediately before',
+           'applied the brakes moments before',
+           'braked right before',
+           'braked a split second before'),
+          _ego, ('stopped', 'id')),
 )
 
 

@@ -50,6 +50,10 @@ KNOWN: dict[str, set[str]] = {
     # "EGO then continued to enter the rightmost lane": "continued to <verb>" is not read as "proceeded to <verb>"
     # (it may be "continued to brake"), so the AV's move-off before the lane change is lost.
     "proceeded -> continued": {"nhtsa-sgo-ads-30270-9606-v1"},
+    # "stopped in the lane on the right of a three lane, one-way street": the AV's lane so told is not read as the
+    # rightmost, so the party behind it that merges into the center lane is read as in the AV's lane (R6/same,
+    # `if`: the gold reading) instead of on its left (R6/left, `ifg`).
+    "in the <side> lane -> in the lane on the <side>": {"dmvca-waymo-20220206-r282"},
     # "seeing the vehicle approaching from the opposite direction crossing the centerline": the party's crossing of
     # the centre line is no longer read as a lane change when the participle follows a participle.
     "an oncoming <party> -> a <party> approaching from the opposite direction": {"dmvca-cruise-20201024-r143"},

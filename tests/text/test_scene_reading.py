@@ -22,9 +22,9 @@ REPORTS = shared_dir() / "data" / "reports"
 #: set's floors are below the issue's targets: see the closing note; raise them as the extractor improves.
 HELD = {
     "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.85, "npc_events": 0.85,
-                 "obstacle_quantity": 0.95, "completeness": 0.95, "ego_start": 1.0, "ego_actions": 0.95},
+                 "obstacle_quantity": 0.95, "completeness": 0.95, "ego_start": 1.0, "ego_actions": 0.96},
     "dev_gold_study": {"npc_quantity": 0.94, "npc_type": 0.88, "npc_position": 0.75, "npc_events": 0.82,
-                       "obstacle_quantity": 0.99, "completeness": 0.96, "ego_start": 1.0, "ego_actions": 0.95},
+                       "obstacle_quantity": 0.99, "completeness": 0.96, "ego_start": 1.0, "ego_actions": 0.96},
     "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.49, "npc_events": 0.75,
                        "obstacle_quantity": 0.92, "completeness": 0.97, "ego_start": 0.97, "ego_actions": 0.87},
 }

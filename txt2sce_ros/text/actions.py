@@ -302,6 +302,10 @@ _YIELD_ASIDE = compile_gated(r"(?:,|\bwhen|\bwhile|\bas)\s*$", re.I)
 _AV_MOVING = compile_gated(r"\b(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|driving|drove|moving|mov(?:ed|es)\s+forward|"
                            r"slow(?:ed|ing)|decelerat(?:ed|ing)|approach(?:ed|ing)|continu(?:ed|ing))\b", re.I)
 _STOP_TOLD = compile_gated(r"\bstop|\bstationary\b|\bwaiting\b|\bhalt|\bstandstill\b|\bparked\b", re.I)
+_AT_CONTACT = compile_gated(r"\s+(?:\w+\s+)?(?:just|immediately|moments?|right|a\s+split\s+second)\s+(?:before|prior\s+to)\s+"
+                            r"(?:the\s+)?(?:[^.;]{0,60}?\b(?:(?:made|came\s+into)\s+contact|contacted|struck|hit|collided|"
+                            r"impact(?:ed)?)|impact|contact|"
+                            r"collision)\b", re.I)
 # Where a standing AV is ("stopped in traffic", "stopped at the light", "stopped behind a bus").
 _IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
                           r"at\s+(?:a|the)\s+(?:red\s+)?(?:light|signal|stop\s+sign)|"
@@ -472,6 +476,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue
         if code in "defgjDFTY" and _ATTEMPT_WAITING.search(before) and _WHILE_WAITING.match(s[e:]):
             continue
+        if code == "c" and _AT_CONTACT.match(s[e:]):
+            continue  # "braked just before the front of EGO made contact": a reaction at the contact, no manoeuvre
         if _NEGATED.search(before) and not own_clause:
             continue  # "did not immediately proceed"
         if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
@@ -500,6 +506,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 not (s[rel.end:b].strip() == "" and fre.match(r"\w+ing\b", s[b:e], re.I)):
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
             # the centerline": a participle right after a noun tells that noun's move.
+            rel = None
+        elif rel is not None and not rel.subject and fre.match(r"\s*,", s[rel.end:b]) and \
+                not fre.search(r"\b(?:that|which|who)\b", s[rel.end:b]):
+            # "attempted to go around EGO, attempting to merge with traffic": a participle set off by a comma after
+            # the object tells more of the clause's subject (a free adjunct), not of the object before the comma.
             rel = None
         if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):

@@ -172,6 +172,12 @@ CONTACT = compile_gated(
     r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into(?!\s+(?:the\s+|its\s+|"
     r"EGO's\s+)?(?:path|street|road|roadway|crosswalk|intersection|traffic|lane|travel\s+lane)\b)|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
+    # a move that ends in a part of the AV: "reversed at a low speed from an adjacent driveway into the right rear
+    # bumper of EGO", "jumped onto the hood of EGO"
+    r"(?:reversed|backed|rolled|drifted|veered|swerved|drove|moved)(?=[^.;]{0,60}?\binto\s+(?:(?:the\s+)?(?:[\w-]+\s+){0,3}"
+    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\s+of\s+EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
+    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\b))|"
+    r"(?:jumped|climbed|leaped|leapt|landed)\s+(?:up\s+)?onto\s+(?:the\s+)?(?:hood|roof|windshield|bumper|trunk)\s+of\s+EGO|"
     r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
     # climbing a curb or median is contact with it ("mounted the curb", "drove up onto the median")
     r"(?:mounted|mounting|jumped|jumping|hopped|hopping|(?:drove|driving|rode|riding|ran|running|went|going)\s+up\s+"

@@ -33,7 +33,11 @@ ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|
 T = TypeVar("T")
 
 _SUMMARY = compile_gated(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
-                      r"\b|\breceived\s+notice\b|\bcollision\s+involving\b", re.I)
+                      r"\b|\breceived\s+notice\b|\bcollision\s+involving\b|"
+                      # "EGO and the passenger vehicle that made contact with it sustained moderate damage": the damage
+                      # told after the event, its contact named again only to say whose damage
+                      r"\b(?:that|which|who)\s+(?:had\s+)?(?:(?:made|came\s+into)\s+contact|contacted|impacted|collided|"
+                      r"struck|hit)\b[^.]*\bsustained\b", re.I)
 
 
 BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+supplement\b|\breport\s+was\s+(?:originally|"
