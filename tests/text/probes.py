@@ -193,6 +193,32 @@ PROBES: tuple[Probe, ...] = (
              "pickup truck.",
              [("R3", None)]),
     )),
+    _scenes("a party that passed the AV and moved back: its side is where it passed, not the lane it went to",
+            _position, (
+            ("The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan passed the "
+             "Waymo AV on the left and then cut back to the right lane, making contact with the front left of "
+             "the Waymo AV.",
+             [("R6", "left")]),
+            ("The Cruise AV was traveling in the right lane when a motorcycle passed it on the left side and "
+             "moved back to the right lane in front of the AV, clipping its front bumper.",
+             [("R6", "left")]),
+            ("The AV was traveling in the right lane of a two-lane road. A pickup truck overtook the AV on its "
+             "left and swerved into the right lane ahead of it, striking the AV's front left fender.",
+             [("R6", "left")]),
+            ("The Zoox vehicle was traveling in the left lane. A vehicle passed on the right and then changed "
+             "into the left lane, contacting the Zoox vehicle's front right bumper.",
+             [("R6", "right")]),
+            ("The Waymo AV was stopped in the right lane behind a double-parked truck. A passenger car passed "
+             "the Waymo AV on the left and pulled back into the right lane, making contact with the Waymo AV's "
+             "front left corner.",
+             [("R6", "left")]),
+            ("The Cruise AV was traveling in the left lane on Geary Boulevard. A cyclist in the bike lane "
+             "passed the Cruise AV on the right and contacted the passenger side mirror.",
+             [("R6", "right")]),
+            ("The Waymo AV was traveling in the right lane. A box truck in the left lane passed the Waymo AV "
+             "and then merged right, its rear end striking the Waymo AV's front left bumper.",
+             [("R6", "left")]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

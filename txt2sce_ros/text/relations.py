@@ -126,7 +126,8 @@ _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|"
                          r"(?:changing|change|changed)\s+lanes?|lane[- ]change[sd]?)\s+"
                          # "cut back to the left directly in front of EGO": where it went, a few words on
-                         r"(?:(?:back|right|left|directly|suddenly|abruptly|in|over|to|the)\s+){0,5}$", re.I)
+                         r"(?:(?:back|right|left|directly|suddenly|abruptly|in|into|over|to|the|lane|center|middle|"
+                         r"adjacent)\s+){0,6}$", re.I)
 # The other party's own front named in the contact sentence ("its front right bumper", "the front of the sedan").
 _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0,2}?front\b|"
                              r"\bfront\s+(?:\w+\s+){0,2}?of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
@@ -274,7 +275,9 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             side = _side(next(g for g in m.groups() if g))
             if any(a0 <= m.start() < b0 for a0, b0 in absolute):
                 continue  # read against the AV's own lane above
-            if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]):
+            if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]) and \
+                    not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
+                # ("cut back to the right lane": where it went)
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         for m in _COMPASS_SIDE.finditer(win):
             # "a vehicle exiting a garage on the west side of the street": west is the left of a northbound AV
