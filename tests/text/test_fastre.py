@@ -181,3 +181,39 @@ def test_end_gate_never_hides_a_match() -> None:
     assert turned_away > 100
     assert end_gate(re.compile(r"\bthe\s+$", re.M)) is None  # "$" at every line end: not one end
     assert end_gate(re.compile(r"\s*$")) is None  # matches every text: no gate
+
+
+def test_squeezed_white_space_is_the_regex_sub_it_replaces() -> None:
+    # normalise squeezes white space with str.split: exact only while `re`'s \s and str.isspace take the same
+    # characters, on every code point.
+    from txt2sce_ros.text.mentions import _squeeze
+
+    space = re.compile(r"\s")
+    ws = [chr(c) for c in range(0x110000) if space.match(chr(c)) or chr(c).isspace()]
+    assert all(space.match(c) and c.isspace() for c in ws) and len(ws) > 20
+    for text in ("a" + "".join(f"{c}b{c}{c}" for c in ws) + " \t", "".join(ws), "  x  ", "x", "", "\u200bx\u00a0y"):
+        assert _squeeze(text) == re.sub(r"\s+", " ", text).strip(), text
+
+
+def test_alternatives_gather_by_opening_only_where_the_match_cannot_change() -> None:
+    # "made|hit|making": "making" can begin only where "hit" cannot, so it joins "made" ("ma(?:de|king)");
+    # "abx|\w+|ab": "ab" may not move before "\w+" (both can begin at an "a"), else "abc" would match "ab".
+    from txt2sce_ros.text import fastre
+
+    def top(pattern: str) -> int:
+        tree = fastre._p.parse(pattern)
+        fastre._merge_prefixes(tree)
+        return len(tree.data[0][1][1]) if tree.data[0][0] is fastre._c.BRANCH else 1
+
+    assert top("made|hit|making") == 2 and top(r"\bmade|\bhit|\bmaking|x") == 3 and top("made|hit|[m-z]aking") == 3
+    assert top(r"abx|\w+|ab") == 3 and top("abx|(?:b|c)d|ab") == 2 and top("abx|(?:a|c)d|ab") == 3
+    for pat, texts in ((r"(?:abx|\w+|ab)", ("abc ab abx", "ABX Ab")),
+                       (r"\b(?:made|hit|making|mad|hits|[m-z]aking)\b", ("making mad hits made taking", "MAKING Hit")),
+                       (r"(?:ab|c\w|a|cd|abc)+", ("abcdab cd ab abc", "CDABC"))):
+        rx = re.compile(pat, re.I)
+        cs = folded(rx)
+        assert cs is not None, pat
+        g = gate(rx)
+        for t in texts:
+            assert [m.span() for m in cs.finditer(t.lower())] == [m.span() for m in rx.finditer(t)], (pat, t)
+            assert [m.span() for m in g.finditer(t)] == [m.span() for m in rx.finditer(t)], (pat, t)

@@ -246,11 +246,14 @@ def _hoist_boundary(seq: Any) -> None:
 
 
 def _merge_prefixes(seq: Any) -> None:
-    """Rewrite, in place, neighbouring alternatives that open with the same literal as that literal followed by
-    their alternation ("made...|making...|makes..." -> "ma(?:de...|king...|kes...)"), in every alternation of the
-    tree. `re` tries the alternatives in the same order and reaches the same match (the literal holds for all of
-    them or for none), but tests the shared literal once per position instead of once per alternative. Only
-    neighbours merge: moving an alternative before another could change which match is found."""
+    """Rewrite, in place, alternatives that open with the same literal (or `\\b` and the same literal) as that
+    opening followed by their alternation ("made...|making...|makes..." -> "ma(?:de...|king...|kes...)"), in every
+    alternation of the tree. `re` tests the shared opening once per position instead of once per alternative.
+
+    Alternatives are gathered across others only where that cannot change the match: an alternative moves before
+    another only when no character can begin a match of both (their sets of first characters are known and
+    disjoint), so at any position the alternatives that can match are tried in the same order as before; where a
+    first character is not known (a class with categories, an optional opening) nothing moves past it."""
     for k, (op, av) in enumerate(seq.data):
         for kid in _children(op, av):
             _merge_prefixes(kid)
@@ -258,22 +261,68 @@ def _merge_prefixes(seq: Any) -> None:
             seq.data[k] = (op, (av[0], _merged(av[1], seq.state)))
 
 
+def _first_chars(data: Any) -> frozenset[int] | None:
+    """The characters a match of the item sequence can begin with, or None where that is not known (it may match
+    an empty string, or begins with a class of categories or a negated class)."""
+    for op, av in data:
+        if op is _c.AT or op in (_c.ASSERT, _c.ASSERT_NOT):
+            continue  # zero-width: the first character comes from what follows
+        if op is _c.LITERAL:
+            return frozenset((av,))
+        if op is _c.IN:
+            chars: set[int] = set()
+            for o, a in av:
+                if o is _c.LITERAL:
+                    chars.add(a)
+                elif o is _c.RANGE and a[1] - a[0] < 128:
+                    chars.update(range(a[0], a[1] + 1))
+                else:
+                    return None
+            return frozenset(chars)
+        if op is _c.SUBPATTERN:
+            body = av[3]
+            return _first_chars(body.data) if body.getwidth()[0] > 0 else None
+        if op is _c.BRANCH:
+            sets = [_first_chars(b.data) for b in av[1]]
+            return None if any(f is None for f in sets) else frozenset().union(*sets)  # type: ignore[arg-type]
+        if op in _REPEATS:
+            lo, _hi, body = av
+            return _first_chars(body.data) if lo >= 1 else None
+        return None
+    return None  # nothing that consumes a character: it may match an empty string
+
+
+def _opening(b: Any) -> tuple[Any, ...] | None:
+    """The opening alternatives can share: a literal, or `\\b` and a literal."""
+    d = b.data
+    if d and d[0][0] is _c.LITERAL:
+        return (d[0],)
+    if len(d) > 1 and d[0] == (_c.AT, _c.AT_BOUNDARY) and d[1][0] is _c.LITERAL:
+        return (d[0], d[1])
+    return None
+
+
 def _merged(branches: list[Any], state: Any) -> list[Any]:
-    runs: list[tuple[Any, list[Any]]] = []  # (leading literal item or None, neighbouring alternatives)
+    runs: list[tuple[Any, frozenset[int] | None, list[Any]]] = []  # (opening or None, first characters, alternatives)
     for b in branches:
-        head = b.data[0] if b.data and b.data[0][0] is _c.LITERAL else None
-        if head is not None and runs and runs[-1][0] == head:
-            runs[-1][1].append(b)
+        head, first = _opening(b), _first_chars(b.data)
+        for run in reversed(runs) if head is not None else ():
+            if run[0] == head:
+                run[2].append(b)
+                break
+            if run[1] is None or first is None or run[1] & first:
+                runs.append((head, first, [b]))  # it may not move before this one
+                break
         else:
-            runs.append((head, [b]))
+            runs.append((head, first, [b]))
     out = []
-    for head, bs in runs:
+    for head, _first, bs in runs:
         if head is None or len(bs) == 1:
             out += bs
             continue
-        tails = _merged([_p.SubPattern(state, b.data[1:]) for b in bs], state)
-        out.append(_p.SubPattern(state, [head] + (list(tails[0].data) if len(tails) == 1 else
-                                                  [(_c.BRANCH, (None, tails))])))
+        tails = _merged([_p.SubPattern(state, b.data[len(head):]) for b in bs], state)
+        out.append(_p.SubPattern(state, list(head) + (list(tails[0].data) if len(tails) == 1 else
+                                                      [(_c.BRANCH, (None, tails))])))
     return out
 
 

@@ -295,6 +295,13 @@ _WE_DROVE = compile_gated(r"\b[Ww]e\s+(were)\b|\b[Ww]e\b(?=\s+(?:then\s+|had\s+|
                           r"reversed|backed|yielded|came|pulled|continued|approached|made|attempted|waited|had\s+been)\b)")
 
 
+def _squeeze(t: str) -> str:
+    """Every run of white space as one space, none at the ends: `re.sub(r"\\s+", " ", t).strip()`. (`str.split`
+    and `re`'s `\\s` on text both take Unicode's white space, `Py_UNICODE_ISSPACE`: the same text, without a regex
+    match and a replacement for every gap between words; tested on every code point.)"""
+    return " ".join(t.split())
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -306,7 +313,7 @@ def normalise(text: str) -> str:
         for old, new in _QUOTE_PAIRS:
             if old in quoted:
                 quoted = quoted.replace(old, new)
-    t = fre.sub(r"\s+", " ", quoted).strip()
+    t = _squeeze(quoted)
     low = t.lower()
     for words, cased, rx, repl in _SPELLINGS:
         if any(w in (t if cased else low) for w in words):
@@ -384,7 +391,7 @@ def normalise(text: str) -> str:
     t = EGO_DRIVER.sub(_ego_driver, t)
     t = fre.sub(r"\bEGOD\s+of\s+EGO\b", "EGOD", t)
     t = fre.sub(r"\bEGO\s+EGOD\b", "EGOD", t)
-    return fre.sub(r"\s+", " ", t).strip()
+    return _squeeze(t)
 
 
 _OWNER_BEFORE = compile_gated(r"(?:\b(?:" + "|".join(re.escape(h) for h in sorted(set(PARTY_HEADS) | set(MAKES),
