@@ -67,6 +67,7 @@ def test_gated_patterns_agree_with_the_raw_regex_on_dev(texts: list[str]) -> Non
                 assert g.sub(r"<\g<0>>", s) == g.rx.sub(r"<\g<0>>", s), (name, s)
                 assert g.sub(lambda m: m.group(0).upper(), s, 1) == g.rx.sub(lambda m: m.group(0).upper(), s, 1)
             assert g.findall(s) == g.rx.findall(s), (name, s)
+            assert g.split(s) == g.rx.split(s), (name, s)
             skipped += not g._may_match(s)
     assert skipped > 1000  # the gate does skip work on real text, or it is pure overhead
 
@@ -217,3 +218,21 @@ def test_alternatives_gather_by_opening_only_where_the_match_cannot_change() -> 
         for t in texts:
             assert [m.span() for m in cs.finditer(t.lower())] == [m.span() for m in rx.finditer(t)], (pat, t)
             assert [m.span() for m in g.finditer(t)] == [m.span() for m in rx.finditer(t)], (pat, t)
+
+
+def test_small_opening_classes_spelled_out_match_as_the_original() -> None:
+    # "[,;]|\bwhen\b" -> ",|;|w(?<!\w.)hen\b": every alternative opens with a literal, so `re` skips to them in C;
+    # the same spans, groups and pieces of a split as the original, on ASCII text and on any other.
+    cases = ((r"[,;]|\bwhen\b|\bas\b|\bwhile\b", 0), (r"\b(?:[Aa]n?|[Tt]he)\s+([A-Z]\w*)", 0),
+             (r"\b(?:Mt|[Aa]pprox|S|N|U\.S)\.", 0), (r"[2-5]\s*(lanes?)", 0), (r"([,;])|\b(?:when|as)\b", re.I),
+             (r"\b(?:[Aa]n?|[Tt]he)\b", re.I))
+    texts = ("When it stopped, as the car waited; while a truck passed: Approx. 5 mph", "an Apple the Zoox A the",
+             "approx. 3 lanes, S. Main St. N. U.S. Mt. x_as as_ 2as _when", "THE when_ AN an, 9 lanes 3lane",
+             "caf\u00e9 when \u212aelvin, as")
+    for pat, flags in cases:
+        rx = re.compile(pat, flags)
+        g = gate(rx)
+        assert isinstance(g, Gated) and g.cs is not None, pat
+        for t in texts + tuple(t * 3 for t in texts):
+            assert [(m.span(), m.groups()) for m in g.finditer(t)] == [(m.span(), m.groups()) for m in rx.finditer(t)]
+            assert g.split(t) == rx.split(t) and g.sub("#", t) == rx.sub("#", t), (pat, t)

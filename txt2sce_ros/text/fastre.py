@@ -326,6 +326,70 @@ def _merged(branches: list[Any], state: Any) -> list[Any]:
     return out
 
 
+#: A class of at most this many characters that opens an alternative is spelled out as one alternative per
+#: character (`_spell_out`); a larger one stays a class.
+MAX_SPELLED = 8
+
+
+def _class_chars(items: list[tuple[Any, Any]]) -> list[int] | None:
+    """The characters of a class of plain characters and small ranges, or None (categories, negation, large)."""
+    chars: list[int] = []
+    for op, av in items:
+        if op is _c.LITERAL:
+            chars.append(av)
+        elif op is _c.RANGE and av[1] - av[0] < MAX_SPELLED:
+            chars.extend(range(av[0], av[1] + 1))
+        else:
+            return None
+    chars = list(dict.fromkeys(chars))
+    return chars if len(chars) <= MAX_SPELLED else None
+
+
+def _few_frequent(alts: list[list[tuple[Any, Any]]]) -> bool:
+    """Do the alternatives begin with known characters of which at most three are lowercase letters?"""
+    sets = [_first_chars(a) for a in alts]
+    if any(f is None for f in sets):
+        return False
+    return sum(97 <= c <= 122 for c in frozenset().union(*sets)) <= 3  # type: ignore[arg-type]
+
+
+def _openings(data: list[tuple[Any, Any]]) -> list[list[tuple[Any, Any]]]:
+    """The item sequence `data` as alternatives in the same order, spelled out at their opening (see `_spell_out`)."""
+    if not data:
+        return [data]
+    op, av = data[0]
+    if op is _c.BRANCH:
+        # "(?:x|y)z" is "xz|yz": the same alternatives tried in the same order
+        return [a for b in av[1] for a in _openings(list(b.data) + data[1:])]
+    k = 1 if op is _c.AT and av is _c.AT_BOUNDARY and len(data) > 1 else 0
+    if k and data[1][0] is _c.BRANCH:
+        alts = [data[:1] + a for a in _openings(data[1:])]
+        return alts if _few_frequent(alts) else [data]
+    if data[k][0] is _c.IN and (chars := _class_chars(data[k][1])):
+        return [data[:k] + [(_c.LITERAL, ch)] + data[k + 1:] for ch in chars]
+    return [data]
+
+
+def _spell_out(seq: Any) -> None:
+    r"""Rewrite, in place, the opening of the pattern so that `re` can skip in C to where a match may begin (a
+    "charset prefix": every alternative of the opening alternation starts with a literal):
+
+    - a small class opening the pattern or one of its opening alternatives is spelled out, one alternative per
+      character ("[,;]|when" -> ",|;|when", "[Aa]n" -> "An|an"): only one of them can match where the
+      class did, in the class's place in the order, so the match is the same;
+    - a `` before an alternation (Python 3.11 inlines "(?:x|y)") moves into each alternative ("x|y"),
+      where `_hoist_boundary` then puts it behind each first literal, but only where those first characters
+      include at most three lowercase letters (the frequent ones): where they are most letters, the look-behind
+      at each of them costs more than the failed `` it replaces (measured in session 11).
+
+    Alternations are spelled out only at the opening; where that gives no literal-first alternatives the tree
+    stays as it was."""
+    alts = _openings(list(seq.data))
+    if len(alts) > 1 and len(alts) <= 64 and all(_literal_first(_p.SubPattern(seq.state, a[1:] if a[:1] == [
+            (_c.AT, _c.AT_BOUNDARY)] else a)) for a in alts):
+        seq.data = [(_c.BRANCH, (None, [_p.SubPattern(seq.state, a) for a in alts]))]
+
+
 def _literal_first(seq: Any) -> bool:
     """Does every match of the tree begin with a literal character (so `re` can look for it in C)?"""
     data = seq.data
@@ -380,10 +444,11 @@ def _scanner(rx: re.Pattern[str], fold: bool) -> re.Pattern[str]:
     elif _scoped_flags(tree):
         raise _Unfoldable  # "(?i:...)" inside: its letters' cases under ASCII rules are not worth proving here
     _merge_prefixes(tree)
+    _spell_out(tree)
     _hoist_boundary(tree)
     if not fold and not _literal_first(tree):
-        # A case-sensitive pattern gains only where `re` can now look for its first literal (measured: "\s+",
-        # "[,;]|\bwhen\b" ran no faster, or slower, through the twin).
+        # A case-sensitive pattern gains only where `re` can now look for its first literal (measured: "\s+"
+        # ran no faster, or slower, through the twin; "[,;]|\bwhen\b" spelled out runs ~20x faster).
         raise _Unfoldable
     if _ascii_spaces(tree):
         # The scanner only ever reads ASCII text, where ASCII \w, \d and \b agree with Unicode's and cost a
@@ -648,7 +713,12 @@ class Gated:
         return "".join(parts)
 
     def split(self, s: str, *a: Any) -> list[str]:
-        return self.rx.split(s, *a) if self._may_match(s) else [s]
+        low = self._low(s)
+        if low is None:
+            return [s]
+        if low and not self.fold:
+            return self.cs.split(s, *a)  # type: ignore[union-attr]  # a twin matches as the original does
+        return self.rx.split(s, *a)
 
     def __repr__(self) -> str:
         return (f"Gated({self.rx!r}, factors={self.factors!r}, folded={self.cs is not None and self.fold}, "
