@@ -353,24 +353,24 @@ def _few_frequent(alts: list[list[tuple[Any, Any]]]) -> bool:
     return sum(97 <= c <= 122 for c in frozenset().union(*sets)) <= 3  # type: ignore[arg-type]
 
 
-def _openings(data: list[tuple[Any, Any]]) -> list[list[tuple[Any, Any]]]:
+def _openings(data: list[tuple[Any, Any]], wordcased: bool = False) -> list[list[tuple[Any, Any]]]:
     """The item sequence `data` as alternatives in the same order, spelled out at their opening (see `_spell_out`)."""
     if not data:
         return [data]
     op, av = data[0]
     if op is _c.BRANCH:
         # "(?:x|y)z" is "xz|yz": the same alternatives tried in the same order
-        return [a for b in av[1] for a in _openings(list(b.data) + data[1:])]
+        return [a for b in av[1] for a in _openings(list(b.data) + data[1:], wordcased)]
     k = 1 if op is _c.AT and av is _c.AT_BOUNDARY and len(data) > 1 else 0
     if k and data[1][0] is _c.BRANCH:
-        alts = [data[:1] + a for a in _openings(data[1:])]
-        return alts if _few_frequent(alts) else [data]
+        alts = [data[:1] + a for a in _openings(data[1:], wordcased)]
+        return alts if wordcased or _few_frequent(alts) else [data]
     if data[k][0] is _c.IN and (chars := _class_chars(data[k][1])):
         return [data[:k] + [(_c.LITERAL, ch)] + data[k + 1:] for ch in chars]
     return [data]
 
 
-def _spell_out(seq: Any) -> None:
+def _spell_out(seq: Any, wordcased: bool = False) -> None:
     r"""Rewrite, in place, the opening of the pattern so that `re` can skip in C to where a match may begin (a
     "charset prefix": every alternative of the opening alternation starts with a literal):
 
@@ -384,7 +384,7 @@ def _spell_out(seq: Any) -> None:
 
     Alternations are spelled out only at the opening; where that gives no literal-first alternatives the tree
     stays as it was."""
-    alts = _openings(list(seq.data))
+    alts = _openings(list(seq.data), wordcased)
     if len(alts) > 1 and len(alts) <= 64 and all(_literal_first(_p.SubPattern(seq.state, a[1:] if a[:1] == [
             (_c.AT, _c.AT_BOUNDARY)] else a)) for a in alts):
         seq.data = [(_c.BRANCH, (None, [_p.SubPattern(seq.state, a) for a in alts]))]
@@ -444,7 +444,9 @@ def _scanner(rx: re.Pattern[str], fold: bool) -> re.Pattern[str]:
     elif _scoped_flags(tree):
         raise _Unfoldable  # "(?i:...)" inside: its letters' cases under ASCII rules are not worth proving here
     _merge_prefixes(tree)
-    _spell_out(tree)
+    _spell_out(tree, fold)
+    if fold:
+        _wordcased(tree, _EITHER, True)
     _hoist_boundary(tree)
     if not fold and not _literal_first(tree):
         # A case-sensitive pattern gains only where `re` can now look for its first literal (measured: "\s+"
@@ -456,6 +458,112 @@ def _scanner(rx: re.Pattern[str], fold: bool) -> re.Pattern[str]:
         tree.state.flags = (tree.state.flags & ~re.UNICODE) | re.ASCII
         flags = (flags & ~re.UNICODE) | re.ASCII
     return _compiler.compile(tree, flags)  # type: ignore[no-any-return]
+
+
+# The folded scanner reads the lowercase text with every letter that begins a word in upper case (`wordcase`):
+# a `\b` before a letter of the pattern then is that letter in upper case, and `re` skips in C to the few places
+# where a word begins with one of the pattern's first letters, instead of trying the pattern at every position.
+_WORD, _NONWORD, _EITHER = "word", "nonword", "either"
+_AFTER_WORD_CHAR = re.compile(r"[0-9_][A-Z]")
+_WORDCASE: dict[str, str] = {}
+
+
+def wordcase(low: str) -> str:
+    r"""The lowercase ASCII text `low` with each letter that begins a word (a `\b` before it: no letter, digit or
+    underscore before it) in upper case, every other letter in lower case. `str.title` does that except after a
+    digit or an underscore, which are word characters: those letters are put back in lower case."""
+    out = _WORDCASE.get(low)
+    if out is None:
+        if len(_WORDCASE) >= _LOWER_MAX:
+            _WORDCASE.clear()
+        out = low.title()
+        if _AFTER_WORD_CHAR.search(out):
+            out = _AFTER_WORD_CHAR.sub(lambda m: m.group(0).lower(), out)
+        _WORDCASE[low] = out
+    return out
+
+
+def _char_kind(ch: int) -> str:
+    return _WORD if chr(ch).isalnum() and ch < 128 or ch == 95 else _NONWORD
+
+
+def _class_kind(items: list[tuple[Any, Any]]) -> str:
+    """What a character matched by the class is: a word character, none, or either."""
+    kinds: set[str] = set()
+    for op, av in items:
+        if op is _c.LITERAL:
+            kinds.add(_char_kind(av))
+        elif op is _c.RANGE and av[1] < 128:
+            kinds.update(_char_kind(ch) for ch in range(av[0], av[1] + 1))
+        elif op is _c.CATEGORY and av in (_c.CATEGORY_DIGIT, _c.CATEGORY_WORD):
+            kinds.add(_WORD)
+        elif op is _c.CATEGORY and av in (_c.CATEGORY_SPACE, _c.CATEGORY_NOT_WORD):
+            kinds.add(_NONWORD)
+        else:
+            return _EITHER  # a negation, other categories, wide ranges
+    return kinds.pop() if len(kinds) == 1 else _EITHER
+
+
+def _upper_too(items: list[tuple[Any, Any]]) -> list[tuple[Any, Any]]:
+    """A (folded) class that also takes the upper case of each lowercase letter it holds (negated or not)."""
+    out = list(items)
+    for op, av in items:
+        if op is _c.LITERAL and 97 <= av <= 122:
+            out.append((_c.LITERAL, av - 32))
+        elif op is _c.RANGE and max(av[0], 97) <= min(av[1], 122):
+            out.append((_c.RANGE, (max(av[0], 97) - 32, min(av[1], 122) - 32)))
+    return out
+
+
+def _wordcased(seq: Any, before: str, apply: bool) -> str:
+    """Rewrite, in place when `apply`, a folded pattern's items for the `wordcase` text; `before` tells what the
+    character before them is in any match (a word character, none or either). Returns what the last character
+    matched by them is. A letter after no word character is upper case there, after one lower case, else either;
+    classes take both cases of their letters; a `\b` right before an upper-case letter is implied by it."""
+    data = seq.data
+    for k, (op, av) in enumerate(data):
+        if op is _c.LITERAL:
+            if apply and 97 <= av <= 122:
+                data[k] = (_c.LITERAL, av - 32) if before == _NONWORD else (_c.LITERAL, av) if before == _WORD else \
+                    (_c.IN, [(_c.LITERAL, av), (_c.LITERAL, av - 32)])
+            before = _char_kind(av)
+        elif op is _c.NOT_LITERAL:
+            if apply and 97 <= av <= 122:
+                data[k] = (_c.IN, [(_c.NEGATE, None), (_c.LITERAL, av), (_c.LITERAL, av - 32)])
+            before = _EITHER
+        elif op is _c.IN:
+            if apply:
+                data[k] = (op, _upper_too(av))
+            before = _class_kind(av)
+        elif op is _c.ANY:
+            before = _EITHER
+        elif op is _c.AT:
+            if av in (_c.AT_BOUNDARY, _c.AT_BEGINNING, _c.AT_BEGINNING_STRING, _c.AT_BEGINNING_LINE):
+                before = _NONWORD  # (for a letter right after it: a `\b` before a letter has no word character before)
+            elif av is _c.AT_NON_BOUNDARY:
+                before = _WORD
+        elif op is _c.SUBPATTERN:
+            before = _wordcased(av[3], before, apply)
+        elif op is _c.BRANCH:
+            ends = {_wordcased(b, before, apply) for b in av[1]}
+            before = ends.pop() if len(ends) == 1 else _EITHER
+        elif op in _REPEATS:
+            lo, hi, body = av
+            start = before
+            if hi > 1 and _wordcased(body, before, False) != before:
+                start = _EITHER  # a later round follows the body's own end
+            end = _wordcased(body, start, apply)
+            before = end if lo >= 1 else (end if end == before else _EITHER)
+        elif op in (_c.ASSERT, _c.ASSERT_NOT):
+            _wordcased(av[1], before if av[0] == 1 else _EITHER, apply)  # (a look-behind's start is not known)
+        elif hasattr(_c, "ATOMIC_GROUP") and op is _c.ATOMIC_GROUP:
+            before = _wordcased(av, before, apply)
+        else:
+            raise _Unfoldable  # back-references, conditionals
+    if apply:
+        seq.data = [it for i, it in enumerate(data) if not (it == (_c.AT, _c.AT_BOUNDARY) and i + 1 < len(data) and
+                                                             data[i + 1][0] is _c.LITERAL and 65 <= data[i + 1][1] <= 90)]
+    return before
 
 
 def _scoped_flags(seq: Any) -> bool:
@@ -615,7 +723,7 @@ class Gated:
                     break
             else:
                 return None
-        return low if self.cs is not None else ""  # type: ignore[return-value]
+        return wordcase(low) if self.cs is not None else ""  # type: ignore[arg-type]
 
     def _may_match(self, s: str, whole: bool = True) -> bool:
         return self._low(s, whole) is not None
