@@ -9,7 +9,7 @@ import re
 import pytest
 
 from txt2sce_ros.paths import shared_dir
-from txt2sce_ros.text.fastre import Gated, end_gate, factors_of, folded, gate, twin, wordcase
+from txt2sce_ros.text.fastre import Gated, end_gate, factors_of, folded, gate, twin, word_scanner, wordcase
 from txt2sce_ros.text.mentions import normalise, sentences
 
 _MODULES = ("lexicon", "mentions", "actions", "story", "sequences", "scene")
@@ -116,7 +116,7 @@ def test_folded_classes_match_as_ignorecase_does() -> None:
             ch = chr(code)
             for s in (ch, f"St.{ch}x", f"dR.{ch}"):
                 want = [m.span() for m in rx.finditer(s)]
-                assert [m.span() for m in cs.finditer(wordcase(s.lower()))] == want, (pat, s)
+                assert [m.span() for m in cs.finditer(s.lower())] == want, (pat, s)
 
 
 def test_scoped_case_sensitivity_is_not_folded() -> None:
@@ -216,7 +216,7 @@ def test_alternatives_gather_by_opening_only_where_the_match_cannot_change() -> 
         assert cs is not None, pat
         g = gate(rx)
         for t in texts:
-            assert [m.span() for m in cs.finditer(wordcase(t.lower()))] == [m.span() for m in rx.finditer(t)], (pat, t)
+            assert [m.span() for m in cs.finditer(t.lower())] == [m.span() for m in rx.finditer(t)], (pat, t)
             assert [m.span() for m in g.finditer(t)] == [m.span() for m in rx.finditer(t)], (pat, t)
 
 
@@ -236,3 +236,37 @@ def test_small_opening_classes_spelled_out_match_as_the_original() -> None:
         for t in texts + tuple(t * 3 for t in texts):
             assert [(m.span(), m.groups()) for m in g.finditer(t)] == [(m.span(), m.groups()) for m in rx.finditer(t)]
             assert g.split(t) == rx.split(t) and g.sub("#", t) == rx.sub("#", t), (pat, t)
+
+
+def test_wordcase_puts_exactly_the_letters_after_a_boundary_in_upper_case(texts: list[str]) -> None:
+    def reference(low: str) -> str:
+        return re.sub(r"\b[a-z]", lambda m: m.group(0).upper(), low)  # \b before a letter: it begins a word
+
+    for t in texts[:400] + ["3rd st_x a1b2c _ab 4th-street don't x", "", "a", "1a", "_a", "a_a", "9 9a a9 a"]:
+        if t.isascii():
+            assert wordcase(t.lower()) == reference(t.lower()), t
+
+
+def test_word_scanner_matches_as_the_original() -> None:
+    # The word-cased scanner: letters after no word character in upper case, after one in lower case, either
+    # where the pattern does not tell (an optional part, a repeat, a class); a \b before a capital dropped.
+    cases = (r"\b(?:made|hit|making)\b", r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)", r"\bx?(?:ray|ran)\b",
+             r"(?:\w+\s+){0,2}\b(?:lane|lanes)\b", r"\b(?:[Aa]n|[Tt]he)\s+(?:cruise|waymo)", r"\b(?:a|b)+c",
+             r"\b(?:st|ave)\.(?=\s+[a-z0-9(,])", r"\bre-?enter(?:ed)?\b", r"\b(?:l[a-e]ft|ri[^x]ht)\b",
+             r"\b(EGO|it|the\s+(?:car|van))(?:'s)?\b")
+    texts = ("Made it; making, hit THE car (1) vehicle1 the vehicle 1 Xray ran xran", "a b lanes lane_x 2lanes 3 lane",
+             "An Cruise the waymo thecruise aabc bac c abc", "St. x Ave. 9 st.x re-entered reentered rE-ENTER",
+             "left lxft LEFT right rixht riGHT", "EGO's it's the car's thecar the  van x_it it_")
+    words = 0
+    for pat in cases:
+        rx = re.compile(pat, re.I)
+        cs = word_scanner(rx)
+        words += cs is not None
+        g = gate(rx)
+        for t in texts + tuple(t.upper() for t in texts) + tuple(t * 2 for t in texts):
+            want = [m.span() for m in rx.finditer(t)]
+            if cs is not None:
+                assert [m.span() for m in cs.finditer(wordcase(t.lower()))] == want, (pat, t)
+            assert [m.span() for m in g.finditer(t)] == want and g.sub("#", t) == rx.sub("#", t), (pat, t)
+            assert [m.span() for m in g.finditer(t, 3)] == [m.span() for m in rx.finditer(t, 3)], (pat, t)
+    assert words >= 5
