@@ -182,3 +182,44 @@ def test_contact_scan_finds_the_pairs_of_the_plain_scan() -> None:
         assert detect(ents) == want
         found += len(want)
     assert found > 300
+
+
+def _first_bad_reference(root: etree._Element, names: set[str]) -> tuple[str, int] | None:
+    """The plain statement of the entity-reference check: every element in document order, its attributes in
+    the check's order, an empty trailer reference allowed."""
+    from scenario_player.syntax.scenario import _ENTITY_ATTRS
+
+    for el in root.iter():
+        if not isinstance(el.tag, str):
+            continue
+        for attr in _ENTITY_ATTRS:
+            ref = el.get(attr)
+            if el.tag == "TrailerRef" and not ref:
+                continue
+            if ref is not None and ref not in names:
+                return str(el.tag), el.sourceline
+    return None
+
+
+def test_reference_check_refuses_the_first_unknown_reference(esmini) -> None:
+    from scenario_player.syntax.scenario import _ENTITY_ATTRS, _check_references
+    from scenario_player.syntax.xml import ParseContext
+    from txt2sce_ros.errors import InputError
+
+    rng = random.Random(3)
+    refused = 0
+    for f in sorted((esmini / "xosc").glob("*.xosc")):
+        doc = document.resolve_document(f.read_bytes(), source=str(f), base_dir=f.parent)
+        holders = [el for el in doc.root.iter() if isinstance(el.tag, str) and any(el.get(a) for a in _ENTITY_ATTRS)]
+        names = {o.get("name") for o in doc.root.iter("ScenarioObject")}
+        for el in rng.sample(holders, min(2, len(holders))):        # two unknown references, in either order
+            el.set(next(a for a in _ENTITY_ATTRS if el.get(a)), f"Ghost{el.sourceline}")
+        want = _first_bad_reference(doc.root, names)
+        try:
+            _check_references(ParseContext(str(f)), doc.root, names)
+            got = None
+        except InputError as exc:
+            got = (exc.element, exc.line)
+            refused += 1
+        assert got == want, f.name
+    assert refused >= 15
