@@ -1703,6 +1703,13 @@ PROBES: tuple[Probe, ...] = (
            'braked right before',
            'braked a split second before'),
           _ego, ('stopped', 'id')),
+    Probe("a party's turn told 'while making' it (under way: the string opens with the turn)",
+          "The Apple test vehicle was stopped in the left turn lane at the park exit on Manet Drive. A Toyota "
+          "Corolla, traveling at approximately 6 mph, {w} into the park entrance and struck the Apple test vehicle.",
+          ("swung wide while making a right turn", "swung wide outside of its lane while making a right turn",
+           "cut the corner while making a left turn", "went wide while completing a right turn",
+           "swung wide while performing a left turn"),
+          _npc_actions, lambda w: [("moving", "d" if "left turn" in w else "e")]),
 )
 
 

@@ -54,6 +54,10 @@ KNOWN: dict[str, set[str]] = {
     # rightmost, so the party behind it that merges into the center lane is read as in the AV's lane (R6/same,
     # `if`: the gold reading) instead of on its left (R6/left, `ifg`).
     "in the <side> lane -> in the lane on the <side>": {"dmvca-waymo-20220206-r282"},
+    # "swung wide ... while making a right turn" reads the turn under way (`e`, the gold); "while turning right" does
+    # not (`ae`): the challenge set reads "traveling in the opposite direction ... lost control while turning left"
+    # as a run, then the turn (`ad`), and the two are not yet told apart.
+    "making a left turn -> turning left": {"dmvca-apple-20190919-r70"},
     # "seeing the vehicle approaching from the opposite direction crossing the centerline": the party's crossing of
     # the centre line is no longer read as a lane change when the participle follows a participle.
     "an oncoming <party> -> a <party> approaching from the opposite direction": {"dmvca-cruise-20201024-r143"},

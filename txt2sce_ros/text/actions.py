@@ -269,7 +269,8 @@ _INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}
 # "was making a right turn", "were in the process of changing lanes", "while turning": the manoeuvre in progress.
 _PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are)\s+(?:(?:already|still|actively|currently|just|slowly)\s+)?"
                           r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
-_PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are)\s+(?:(?:already|still|currently|just)\s+)?"
+# ("swung wide ... while making a right turn": "while" with the noun of the manoeuvre tells it under way too)
+_PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|still|currently|just)\s+)?"
                                r"(?:(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
                                r"completing|conducting|negotiating)|in\s+the\s+(?:middle|midst)\s+of|"
                                r"(?:partway|midway|halfway)\s+(?:through|into))\s+(?:a|an|its|the|their|his|her)\s+"
