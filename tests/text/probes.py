@@ -219,6 +219,21 @@ PROBES: tuple[Probe, ...] = (
              "and then merged right, its rear end striking the Waymo AV's front left bumper.",
              [("R6", "left")]),
     )),
+    _scenes("a rider splitting the lane between the AV and another vehicle: the rider is the party that touched it",
+            lambda sk: [(p.category, p.position, p.lane) for p in sk.npcs if p.id == sk.collision.with_], (
+            ("The AV was stopped in the right lane at a red light. A motorcycle lane splitting between the AV "
+             "and a car in the left lane struck the AV's left mirror.",
+             [("motorcycle", "R6", "left")]),
+            ("The Waymo AV was stopped in traffic in the right lane. A motorcyclist riding between the Waymo "
+             "AV and a pickup truck in the left lane made contact with the Waymo AV's driver side mirror.",
+             [("motorcycle", "R6", "left")]),
+            ("The Cruise AV was stopped at a red light. A cyclist squeezing between the Cruise AV and the curb "
+             "struck the passenger side mirror of the Cruise AV.",
+             [("bicycle", "R6", "right")]),
+            ("The Cruise AV was stopped in traffic behind a stopped box truck on Post Street. A pedestrian who was "
+             "standing in the roadway between the AV and the box truck was contacted when the AV inched forward.",
+             [("pedestrian", "R5", "same")]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

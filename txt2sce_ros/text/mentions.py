@@ -215,6 +215,8 @@ _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|a
 _SUBJ_BEFORE = compile_gated(r"(?:^|[,;:]|\b(?:when|(?<!direction\s)(?<!way\s)(?<!same\s)as|while|and|then|"
                           r"but|after|before|until|because|where|once|"
                           r"since|so|which|that|who|shortly\s+thereafter|thereafter|meanwhile|also))\s*$", re.I)
+# "lane splitting between EGO and a car": the second of a pair after "between" is no clause's subject
+_BETWEEN_AND = compile_gated(r"\bbetween\s+(?:[\w'-]+\s+){1,4}and\s*$", re.I)
 # A sentence that opens with when it happened and no comma before its subject: "On June 3, 2025 at 4:10 PM PT a
 # Waymo AV was stopped ...", "At approximately 9:44 AM the AV ...".
 _TIME_INTRO = compile_gated(r"^\s*(?:on|at|around|about|approximately|shortly\s+(?:before|after))\b"
@@ -540,7 +542,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             start = m.start() - sum(len(w) + 1 for w in mods)
         pre = s[max(0, start - 60):max(0, start)]
         pre_wo_det = _DET_END.sub("", pre)
-        subject = bool(_SUBJ_BEFORE.search(pre_wo_det)) or (start <= 60 and pre_wo_det.strip() == "") or \
+        subject = (bool(_SUBJ_BEFORE.search(pre_wo_det)) and not _BETWEEN_AND.search(pre_wo_det)) or \
+            (start <= 60 and pre_wo_det.strip() == "") or \
             (start <= 120 and bool(_TIME_INTRO.match(_DET_END.sub("", s[:max(0, start)]))))
         out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
                            det=det, mods=mod_text, subject=subject, count=count))

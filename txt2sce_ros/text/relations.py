@@ -97,6 +97,8 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          r"accelerat\w+|sped|speeding|raced|racing|zoomed|pulled|pulling)\s+past|"
                          # squeezing between the AV and the curb, filtering through queued traffic: a pass
                          r"squeez\w*\s+(?:between|past|by|through)|filter\w*\s+(?:between|past|through)|"
+                         # "a motorcyclist riding between EGO and a pickup truck": splitting the lane beside it
+                         r"(?:rode|riding|rides|traveling|travelling|driving|moving|went|going)\s+between\s+(?:EGO\b|$)|"
                          # riding on between a standing AV and the curb or parked cars (place() keeps it to a
                          # standing AV: beside a moving one it may be alongside)
                          r"(?P<between>(?:rode|riding|ride|traveling|travelling|driving|drove|moving|going|went)\s+"

@@ -105,6 +105,8 @@ def struck_by(d: Doc, e: Entity) -> bool:
     contact verb (not "EGO was struck by a sedan", not "EGO made contact with a sedan")?"""
     if d.contact_sent is None or d.partner != e.idx:
         return False
+    if fre.search(r"\b(?:was|were|been|got|is|are)\s+(?:\w+ly\s+)?$", d.sents[d.contact_sent][:d.contact_pos], re.I):
+        return False  # "a pedestrian standing between EGO and the truck was contacted": the subject was struck
     return who_for(d.contact_pos, d.ments[d.contact_sent], None, d.sents[d.contact_sent]) == e.idx
 
 
