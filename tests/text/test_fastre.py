@@ -253,7 +253,8 @@ def test_word_scanner_matches_as_the_original() -> None:
     cases = (r"\b(?:made|hit|making)\b", r"\b(?:the\s+)?(?:vehicle|car)\s*\(?1\)?(?=\W)", r"\bx?(?:ray|ran)\b",
              r"(?:\w+\s+){0,2}\b(?:lane|lanes)\b", r"\b(?:[Aa]n|[Tt]he)\s+(?:cruise|waymo)", r"\b(?:a|b)+c",
              r"\b(?:st|ave)\.(?=\s+[a-z0-9(,])", r"\bre-?enter(?:ed)?\b", r"\b(?:l[a-e]ft|ri[^x]ht)\b",
-             r"\b(EGO|it|the\s+(?:car|van))(?:'s)?\b")
+             r"\b(EGO|it|the\s+(?:car|van))(?:'s)?\b", r"\b(?:the\s+|an?\s+)?(?:(?:av|ego)\s+)?(?:driver|operator)s?\b",
+             r"\b(?:x(?:yz)?)?(?:y|z)?(ab|c)")
     texts = ("Made it; making, hit THE car (1) vehicle1 the vehicle 1 Xray ran xran", "a b lanes lane_x 2lanes 3 lane",
              "An Cruise the waymo thecruise aabc bac c abc", "St. x Ave. 9 st.x re-entered reentered rE-ENTER",
              "left lxft LEFT right rixht riGHT", "EGO's it's the car's thecar the  van x_it it_")

@@ -371,6 +371,14 @@ def _openings(data: list[tuple[Any, Any]], wordcased: bool = False) -> list[list
         # "(?:x|y)z" is "xz|yz": the same alternatives tried in the same order
         return [a for b in av[1] for a in _openings(list(b.data) + data[1:], wordcased)]
     k = 1 if op is _c.AT and av is _c.AT_BOUNDARY and len(data) > 1 else 0
+    nop, nav = data[k]
+    if wordcased and nop is _c.SUBPATTERN and not (nav[1] | nav[2]):
+        # "(x)y" is "xy" to a folded scanner: the original, anchored where it found a match, makes the groups
+        return _openings(data[:k] + list(nav[3].data) + data[k + 1:], wordcased)
+    if wordcased and nop is _c.MAX_REPEAT and nav[0] == 0 and nav[1] == 1:
+        # "(?:x)?y" is "xy|y": greedy, the optional part is tried first, then left out
+        return _openings(data[:k] + list(nav[2].data) + data[k + 1:], wordcased) + \
+            _openings(data[:k] + data[k + 1:], wordcased)
     if k and data[1][0] is _c.BRANCH:
         alts = [data[:1] + a for a in _openings(data[1:], wordcased)]
         return alts if wordcased or _few_frequent(alts) else [data]
