@@ -276,6 +276,11 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("a stop behind a standing vehicle (complete stop, ', which was stopped')",
             _subs((r"\bcame to a stop behind\b", "came to a complete stop behind"),
                   (r"(?<!,) that was stopped\b", ", which was stopped"))),
+    Rewrite("yielded to -> stopped for", _sub(r"\byielded to\b", "stopped for")),
+    Rewrite("was stopped -> was waiting", _sub(r"\bwas stopped\b", "was waiting")),
+    Rewrite("began to accelerate -> started accelerating / began to move -> started moving",
+            _subs((r"\bbegan to accelerate\b", "started accelerating"), (r"\bbegan to move\b", "started moving"),
+                  (r"\bbegan to proceed\b", "started proceeding"))),
 )
 
 

@@ -11,7 +11,9 @@ interchangeably): 103 of their 1,321 rewritten narratives read differently on th
 spellings not read as their usual ones); now 2. Session 12 added 6 on the AV's own moves ("after having completed"
 a turn, stop words, ", yielding" / "while yielding", "transitioned to manual mode", "Just as the AV", a driveway or
 lot "turned into" and "parallel-parking"): 4 of their 67 rewritten narratives read differently on 746ca19, now 0;
-and 2 more ("slowed to stop", a stop behind a standing vehicle told two ways): 4 of 9 then, now 0."""
+and 2 more ("slowed to stop", a stop behind a standing vehicle told two ways): 4 of 9 then, now 0; and 3 more
+("yielded to" -> "stopped for", "was stopped" -> "was waiting", "started accelerating/moving/proceeding"): 2 of 34
+then (both "started accelerating"), now 0."""
 
 from __future__ import annotations
 

@@ -82,7 +82,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"edge|accelerate|follow|pull\s+(?:forward|out|away))"
           r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
-          r"driving|creeping)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
+          r"driving|creeping|accelerating)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+forward\b|"
           r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"

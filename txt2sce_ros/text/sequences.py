@@ -188,10 +188,11 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     else:
         clause_start = 0
     # A stop where the AV waited (a light, a sign), told in the first party's own clause before the party ("EGO came
-    # to a stop behind a Nissan that was stopped for the red light"), is where the AV stood when it began.
+    # to a stop behind a Nissan that was stopped for the red light"), is where the AV stood when it began; a stop
+    # made for the party ("stopped for a scooterist ... violating a red light") is not.
     pre = [a for a in acts if (a.sent, a.pos) < (fs, clause_start) or
            (a.sent == fs and a.pos < fp and a.code == "h" and not a.under_way and "yield" not in a.text.lower() and
-            _at_control(d, a, 100) and
+            not _FOR_IT.search(s[a.pos + len(a.text):fp]) and _at_control(d, a, 100) and
             not any(x.who == -1 and x.code not in "hS" for x in acts
                     if (fs, clause_start) <= (x.sent, x.pos) < (fs, a.pos)))]
     post = [a for a in acts if a not in pre]
