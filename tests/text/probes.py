@@ -234,6 +234,32 @@ PROBES: tuple[Probe, ...] = (
              "standing in the roadway between the AV and the box truck was contacted when the AV inched forward.",
              [("pedestrian", "R5", "same")]),
     )),
+    _scenes("the AV placed relative to the party (\"the AV was in the lane to the left of a bus\")", _position, (
+            ("The Waymo AV was following a box truck in the right lane on Mission Street. The box truck "
+             "stopped suddenly and the Waymo AV made contact with the rear of the box truck.",
+             [("R5", "same")]),
+            ("The Cruise AV was traveling in the lane to the left of a city bus. The bus merged left into the "
+             "Cruise AV's lane and made contact with the Cruise AV's right side.",
+             [("R5", "right")]),
+            ("The Zoox vehicle was traveling to the right of a pickup truck on Folsom Street. The pickup truck "
+             "drifted right into the Zoox vehicle's lane and struck its left side.",
+             [("R5", "left")]),
+            ("The Waymo AV was passing a box truck that was stopped in the right lane when the box truck "
+             "pulled out into the Waymo AV's lane and made contact with its right side.",
+             [("R5", "right")]),
+            ("The AV was traveling behind a sedan on Van Ness Avenue when the sedan braked abruptly. The AV "
+             "was unable to stop and struck the rear of the sedan.",
+             [("R5", "same")]),
+            ("The Waymo AV was ahead of a motorcycle in the adjacent left lane. The motorcycle changed lanes "
+             "to the right and struck the rear of the Waymo AV.",
+             [("R6", "left")]),
+            ("The Cruise AV was in the left lane alongside a delivery van in the right lane. The delivery van "
+             "moved left into the Cruise AV and contacted its passenger side.",
+             [("R5", "right")]),
+            ("The Waymo AV was stopped at a red light with a pickup truck behind it. When the light turned "
+             "green, the pickup truck accelerated and struck the rear of the Waymo AV.",
+             [("R6", "same")]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

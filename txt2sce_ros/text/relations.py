@@ -124,6 +124,7 @@ _EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,
                             r"\bEGO\s+(?:came|stopped|pulled|remained|waited|queued)\b[^.;,]{0,30}?\b(?:stop|stopped|"
                             r"up|waiting|queued|remained)\s+(?:directly\s+|immediately\s+)?$", re.I)
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
+_OF_PARTY = re.compile(r"\s+of\s+(?:(?:the|a|an)\s+)?", re.I)
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
                          r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|"
                          r"(?:changing|change|changed)\s+lanes?|lane[- ]change[sd]?)\s+"
@@ -280,6 +281,11 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]) and \
                     not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
                 # ("cut back to the right lane": where it went)
+                if side in ("left", "right") and (of := _OF_PARTY.match(win, m.end())) and \
+                        any(x.sent == sent and x.start == a + of.end() for x in e.mentions):
+                    # "EGO was traveling in the lane to the left of a city bus": the AV's side of the party, so
+                    # the party is on the AV's other side
+                    side = "right" if side == "left" else "left"
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         for m in _COMPASS_SIDE.finditer(win):
             # "a vehicle exiting a garage on the west side of the street": west is the left of a northbound AV
