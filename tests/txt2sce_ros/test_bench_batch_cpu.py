@@ -27,3 +27,19 @@ def test_a_directory_without_the_player_is_refused(tmp_path: Path) -> None:
         pytest.skip("shared esmini not found")
     with pytest.raises(SystemExit, match="not a checkout"):
         batch_cpu.main(["--rounds", "1", "--checkouts", str(tmp_path)])
+
+
+def test_a_checkouts_child_runs_that_checkouts_player_from_any_directory(tmp_path: Path, monkeypatch) -> None:
+    """Started inside another tree, the child must not import that tree's packages (`python -c` puts the current
+    directory first on sys.path): here the current directory holds a `txt2sce_ros` that cannot be imported."""
+    shadow = tmp_path / "txt2sce_ros"
+    shadow.mkdir()
+    (shadow / "__init__.py").write_text("raise ImportError('the current directory was imported')\n")
+    monkeypatch.chdir(tmp_path)
+    from txt2sce_ros.paths import shared_dir
+
+    xosc = shared_dir() / "data" / "conformance" / "esmini" / "xosc" / "straight_500m.xosc"
+    if not xosc.is_file():
+        pytest.skip("shared esmini conformance data not present")
+    _cpu, _wall, reached = batch_cpu._child(HERE, f'[["{xosc}", 1.0]]')
+    assert reached == [1.0]

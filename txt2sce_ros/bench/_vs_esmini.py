@@ -134,7 +134,8 @@ def batch_pair(files: Sequence[Path]) -> BatchResult:
                 ends.append((f, end))
     job = json.dumps([[str(f), end] for f, end in ends])
     c0, t0 = _children_cpu(), time.perf_counter()
-    proc = subprocess.run([sys.executable, "-c", "from txt2sce_ros.bench._vs_esmini import batch_child; "
+    # -P: the player PYTHONPATH (or the install) names, not one that happens to sit in the current directory.
+    proc = subprocess.run([sys.executable, "-P", "-c", "from txt2sce_ros.bench._vs_esmini import batch_child; "
                            "batch_child()"], input=job, capture_output=True, text=True, timeout=900, check=False)
     ours = Timed(time.perf_counter() - t0, _children_cpu() - c0)
     if proc.returncode != 0:

@@ -43,7 +43,9 @@ def _child(checkout: Path, job: str, *, write_bytecode: bool = False) -> tuple[f
         env.pop("PYTHONDONTWRITEBYTECODE", None)
     r0 = os.times()
     t0 = time.perf_counter()
-    proc = subprocess.run([sys.executable, "-c", "from txt2sce_ros.bench._vs_esmini import batch_child; "
+    # -P: `python -c` would otherwise put the current directory first on sys.path, so a bench started inside one
+    # checkout ran that checkout's player for every checkout given (PYTHONPATH comes after it).
+    proc = subprocess.run([sys.executable, "-P", "-c", "from txt2sce_ros.bench._vs_esmini import batch_child; "
                            "batch_child()"], input=job, capture_output=True, text=True, env=env, timeout=900,
                           check=False)
     wall = time.perf_counter() - t0
