@@ -1751,6 +1751,14 @@ PROBES: tuple[Probe, ...] = (
            "cut the corner while making a left turn", "went wide while completing a right turn",
            "swung wide while performing a left turn"),
           _npc_actions, lambda w: [("moving", "d" if "left turn" in w else "e")]),
+    Probe("a party turning and ending in front of the AV (where the turn ends, no lane change)",
+          "A Zoox vehicle in manual mode was proceeding southbound in the turn lane on Sixth Street with a green "
+          "light. A large truck in the left adjacent lane abruptly {w} the Zoox vehicle, making contact with the "
+          "left front sensor.",
+          ("turned right and cut in front of", "turned right and pulled in front of",
+           "made a right turn and moved in front of", "turned right and got in front of",
+           "turned right and swerved in front of", "turned right and came in front of"),
+          _party, [("R5", "left", "ae")]),
 )
 
 

@@ -605,11 +605,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 dedup[dedup.index(turn)] = Act(turn.sent, turn.pos, a.code, turn.who, turn.text + " " + a.text,
                                                turn.under_way)
             continue
-        if (a.code == "F" or (a.code in ("f", "g") and a.text[:5].lower() == "enter")) and turn is not None and \
+        if (a.code in ("F", "Q") or (a.code in ("f", "g") and a.text[:5].lower() == "enter")) and turn is not None and \
                 turn.code in ("d", "e") and fre.fullmatch(r"[^,.;]{0,60}\band\s+(?:\w+ly\s+)?",
                                                          s[turn.pos + len(turn.text):a.pos]) and \
                 not _DEVIATION.match(a.text):
-            # "turned right and cut in front of EGO", "... and entered the right lane": where the turn ends; but
+            # "turned right and cut (or pulled) in front of EGO", "... and entered the right lane": where the turn ends; but
             # "turned left and drifted into EGO's lane" strays from it: a move of its own.
             continue
         if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
