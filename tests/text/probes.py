@@ -260,6 +260,39 @@ PROBES: tuple[Probe, ...] = (
              "green, the pickup truck accelerated and struck the rear of the Waymo AV.",
              [("R6", "same")]),
     )),
+    _scenes("a crossing road told as the side, perpendicular or intersecting street; a side told as 'from its right'",
+            _position, (
+            ("The Waymo AV was traveling northbound on Valencia Street through the intersection with 16th "
+             "Street on a green light. A vehicle on the side street to the right ran the red light and struck "
+             "the passenger side of the Waymo AV.",
+             [("R3", None)]),
+            ("The Cruise AV was proceeding straight through the intersection when a vehicle coming from the "
+             "perpendicular street on the left failed to stop and collided with the driver side of the Cruise "
+             "AV.",
+             [("R1", None)]),
+            ("The AV was traveling east on Oak Street and entered the intersection with Pine Street. A "
+             "southbound sedan on Pine Street entered the intersection and struck the right side of the AV.",
+             [("R3", None)]),
+            ("The AV was traveling east on Oak Street and entered the intersection with Pine Street. A "
+             "northbound sedan on Pine Street entered the intersection and struck the left side of the AV.",
+             [("R1", None)]),
+            ("The Zoox vehicle was proceeding through a four-way stop intersection when a pickup truck "
+             "approaching from its right did not stop at the stop sign and struck the Zoox vehicle's front "
+             "passenger side.",
+             [("R3", None)]),
+            ("The Waymo AV was traveling southbound on Fillmore Street through the intersection at Geary when "
+             "a northbound vehicle on Fillmore turned left in front of the Waymo AV and the two vehicles "
+             "collided.",
+             [("R2", None)]),
+            ("The Waymo AV was stopped at the stop sign on northbound 24th Street at Church Street. A "
+             "westbound vehicle on Church Street turned right onto northbound 24th Street and made contact "
+             "with the front of the Waymo AV.",
+             [("R3", None)]),
+            ("The Cruise AV was waiting at a red light on westbound Geary at Masonic. A vehicle traveling "
+             "southbound on Masonic turned right onto westbound Geary and swung wide, contacting the front "
+             "bumper of the Cruise AV.",
+             [("R3", None)]),
+    )),
     _scenes("a party striking one already placed behind the AV is behind it too", _position_all := (
             lambda sk: [(p.position, p.lane) for p in sk.npcs]), (
             ("The Waymo AV was stopped at a red light. An SUV stopped directly behind the Waymo AV. A passenger car "

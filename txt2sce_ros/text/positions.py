@@ -109,7 +109,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    from_side = fre.search(r"\bfrom\s+(?:the|EGO's)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
+    from_side = fre.search(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
                           ctx, re.I)
     if junction and from_side and e.category != "pedestrian":  # one on foot crosses the AV's own approach
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
@@ -289,7 +289,8 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
 def _on_other_street(d: Doc, ctx: str) -> bool:
     """Is the party put on a street other than the AV's ("a vehicle on Leavenworth Street ...", "on the cross
     street")?"""
-    if fre.search(r"\b(?:on|from)\s+the\s+cross(?:ing)?\s+street\b|\bcross\s+street's\b", ctx, re.I):
+    if fre.search(r"\b(?:on|from)\s+(?:the|a)\s+(?:cross(?:ing)?|side|perpendicular|intersecting)\s+(?:street|road)\b|"
+                  r"\bcross\s+street's\b", ctx, re.I):
         return True
     street, theirs = av_street(d), _party_street(ctx)
     return bool(street and theirs and theirs != street and theirs != exit_street(d))
