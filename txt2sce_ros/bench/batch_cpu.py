@@ -11,8 +11,9 @@ against the same esmini passes. The files, end times and batch child are `bench 
     txt2sce bench batch_cpu                          # this checkout, 3 rounds (--quick: 1 round, a fifth of the files)
     python -m txt2sce_ros.bench.batch_cpu --rounds 5 --checkouts /work/base10 /work/h19
 
-A checkout's batch child is started with PYTHONPATH set to that checkout, so any checkout with `scenario_player`
-and `txt2sce_ros.bench._vs_esmini.batch_child` can be measured. The children must reach the same end times
+A checkout's batch child is started with PYTHONPATH set to that checkout (and as `python -P`, so that the current
+directory, perhaps another checkout, does not come first), so any checkout with `scenario_player` and
+`txt2sce_ros.bench._vs_esmini.batch_child` can be measured. The children must reach the same end times
 (checked: the comparison is only meaningful between runs doing the same work).
 """
 
