@@ -11,7 +11,9 @@ time trying alternatives that cannot match. Two exact rewrites, both derived onc
    twin of the pattern for lowercase text (literals lowercased, letter classes given their lowercase members); it
    runs on `text.lower()` to find where each match starts, and the original pattern, anchored there, returns the
    match object - on the original text, so groups, callbacks and replacements see the original characters. A
-   disagreement in the end position raises instead of returning a different result.
+   disagreement in the end position raises instead of returning a different result. Where that lets `re` skip
+   to a first literal or set of first characters, the scan reads the *word-cased* text instead (`wordcase`: each
+   letter that begins a word in upper case), where a `\b` before a letter is that letter in upper case.
 
 Both run only on ASCII texts, where IGNORECASE matching and `str.lower` agree exactly (Unicode case folding, such
 as the Kelvin sign matching "k", is why any other text runs the original pattern). Where the derivation meets
