@@ -256,6 +256,17 @@ REWRITES: tuple[Rewrite, ...] = (
             _sub(r"\bfrom the (left|right)\b(?! (?:side|lane|turn))", r"from the AV's \1")),
     Rewrite("a passenger vehicle -> another vehicle", _sub(r"\ba passenger vehicle\b", "another vehicle")),
     Rewrite("came to a stop behind -> stopped behind", _sub(r"\bcame to a (?:complete )?stop behind\b", "stopped behind")),
+    Rewrite("a <party> -> a white <party>", _sub(
+        r"\b([Aa]) (passenger vehicle|passenger car|sedan|SUV|pickup truck|box truck|van)\b", r"\1 white \2")),
+    Rewrite("was traveling -> was traveling at approximately 20 mph",
+            _sub(r"\bwas traveling\b(?! at)", "was traveling at approximately 20 mph")),
+    Rewrite("the AV's quoted short name dropped", _sub(r"\s*\((?:\u201c|\")[^)]*?(?:\u201d|\")\)", "")),
+    Rewrite("a sedan/SUV -> a 2019 sedan/SUV", _sub(r"\b([Aa]) (sedan|SUV)\b", r"\1 2019 \2")),
+    Rewrite("At the time of the impact -> At the time of the collision",
+            _sub(r"\bAt the time of the impact\b", "At the time of the collision")),
+    Rewrite("there were no injuries -> no one was hurt", _sub(r"\b[Tt]here were no (?:reported )?injuries\b", "no one was hurt")),
+    Rewrite("police were not called -> no police report was made",
+            _sub(r"\bpolice were not called\b", "no police report was made")),
     # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts),
     # each rewrite told as another operator would tell the same moves.
     Rewrite("after completing a turn -> after having completed it", _after_having),

@@ -333,7 +333,10 @@ _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\
                          r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
-                      rf"moving|riding|was)\s+(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
+                      rf"moving|riding|was)\s+"
+                      # "traveling at approximately 20 mph northwest": a speed told between the verb and its heading
+                      rf"(?:at\s+(?:approximately\s+|about\s+|around\s+|roughly\s+)?\d+\s*(?:mph|miles\s+per\s+hour|"
+                      rf"km/h)\s+)?(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
                       rf"\bon\s+({_DIR})bound\b|\b({_DIR})bound\b)", re.I)
 
 

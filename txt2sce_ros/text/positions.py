@@ -71,7 +71,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # A vehicle "heading/coming/moving toward EGO" runs at it head-on; not one that "began moving toward EGO
         # from the bus lane" (a sideways move), nor anyone on foot (who may walk at the AV from any side).
         oncoming = _TOWARD_EGO.search(near)
-    if ego_turning and (ex := exit_street(d)) and _party_street(ctx) == ex and \
+    if ego_turning and (ex := exit_street(d)) and same_street(_party_street(ctx), ex) and \
             not fre.search(r"\b(?:turn\w*|onto)\b", ctx[:60], re.I) and \
             not fre.search(r"\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b", ctx, re.I):
         # On the street the AV turns onto, and not itself turning onto it; one said to come from the AV's left or
@@ -248,8 +248,23 @@ def _read_av_street(d: Doc) -> str | None:
     turned_from = _turn_street(d, "from", 40)
     if turned_from:
         return turned_from
-    m = fre.search(rf"\bEGO\b[^.]{{0,80}}?\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
-    return m.group(1).strip().lower() if m else None
+    for i, s in enumerate(d.sents):
+        for m in d.ments[i]:
+            if m.kind != "ego":
+                continue
+            # Read in the AV's own clause: up to the next party named, a clause word or 160 characters ("EGO,
+            # operating in driverless autonomous mode, was traveling at approximately 20 mph eastbound on Bush
+            # Street"), not on into another's ("... as EGO began to enter, the SUV turned left onto Larkin Street").
+            end = min([x.start for x in d.ments[i] if x.start > m.end and x.kind in ("party", "obstacle")] +
+                      [m.end + 160])
+            clause = _AV_CLAUSE_END.split(s[m.end:end], 1)[0]
+            if (on := _ON_STREET.search(clause)):
+                return on.group(1).strip().lower()
+    return None
+
+
+_ON_STREET = re.compile(rf"\b(?:on|along|onto)\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}")
+_AV_CLAUSE_END = re.compile(r"\b(?:when|while|as|then|and\s+(?:a|an|the)\s)\b|;", re.I)
 
 
 def _party_street(ctx: str) -> str | None:
@@ -293,7 +308,21 @@ def _on_other_street(d: Doc, ctx: str) -> bool:
                   r"\bcross\s+street's\b", ctx, re.I):
         return True
     street, theirs = av_street(d), _party_street(ctx)
-    return bool(street and theirs and theirs != street and theirs != exit_street(d))
+    return bool(street and theirs and not same_street(theirs, street) and not same_street(theirs, exit_street(d)))
+
+
+def same_street(a: str | None, b: str | None) -> bool:
+    """Two names of one street: equal, or one letter apart in a name of five or more (the narratives keep their
+    typos: "on Winson Drive ... onto westbound Winston Drive")."""
+    if a is None or b is None:
+        return False
+    if a == b:
+        return True
+    if min(len(a), len(b)) < 5 or abs(len(a) - len(b)) > 1 or re.sub(r"\D", "", a) != re.sub(r"\D", "", b):
+        return False  # (numbered streets differ by their number: 18th and 19th Avenue are two streets)
+    # one substitution, insertion or deletion
+    i = next((k for k, (x, y) in enumerate(zip(a, b)) if x != y), min(len(a), len(b)))
+    return a[i + 1:] == b[i + 1:] or a[i:] == b[i + 1:] or a[i + 1:] == b[i:]
 
 
 def _onto_av_street(d: Doc, ctx: str) -> bool:
