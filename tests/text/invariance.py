@@ -267,6 +267,8 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("there were no injuries -> no one was hurt", _sub(r"\b[Tt]here were no (?:reported )?injuries\b", "no one was hurt")),
     Rewrite("police were not called -> no police report was made",
             _sub(r"\bpolice were not called\b", "no police report was made")),
+    Rewrite("the Waymo AV -> the Waymo AV, in autonomous mode, (an aside after its name)",
+            lambda t: re.sub(r"\b(The Waymo AV) (was|had)\b", r"\1, in autonomous mode, \2", t, count=1)),
     # Session 12: the AV's own start and actions (the readings of sequences.ego_sequence and actions.find_acts),
     # each rewrite told as another operator would tell the same moves.
     Rewrite("after completing a turn -> after having completed it", _after_having),

@@ -67,6 +67,9 @@ KNOWN: dict[str, set[str]] = {
     # parking spot": the original places that other vehicle behind the AV only because the cyclist's "behind EGO"
     # falls in its window; with "following" it does not, and the vehicle is read ahead (R5/right; gold R6/right).
     "traveling behind the AV -> following the AV": {"dmvca-cruise-20220129-r278"},
+    # "EGO, in autonomous mode, was stopped in the right lane of a three lane, one-way street": the AV's own lane is
+    # read in its clause, which the aside's comma ends, so the lane is lost (the party then reads R6/same, as gold).
+    "the Waymo AV -> the Waymo AV, in autonomous mode, (an aside after its name)": {"dmvca-waymo-20220206-r282"},
 }
 
 

@@ -411,7 +411,9 @@ def _heading(d: Doc, who: int) -> int | None:
                     return heading_of(said.group(0))
                 # Read up to the next party named in the sentence: its heading is its own.
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
-                window = s[m.end:min([m.end + 120, *nxt])]
+                # (up to the next party named; 200 characters hold an aside: "EGO, in autonomous mode, had stopped
+                # at a stop sign on Cabrillo Street and, when the intersection was clear, began to proceed westbound")
+                window = s[m.end:min([m.end + 200, *nxt])]
                 approach = fre.search(r"\bfrom\s+((?:north|south|east|west)+)bound\b", window, re.I)
                 if who == -1:
                     # "after completing a right turn ... onto westbound Haight": the heading it turned to
