@@ -126,13 +126,14 @@ def _factors(seq: Any, fold: bool = True) -> frozenset[str] | None:
     return max(candidates, key=_score)
 
 
-def factors_of(rx: re.Pattern[str]) -> frozenset[str] | None:
+def factors_of(rx: re.Pattern[str], tree: Any = None) -> frozenset[str] | None:
     """The pattern's prefilter factors, or None when no useful set is derivable: lowercase for an IGNORECASE pattern
-    (looked for in the lowercase text), as written for a case-sensitive one (looked for in the text itself)."""
+    (looked for in the lowercase text), as written for a case-sensitive one (looked for in the text itself).
+    `tree`: the pattern already parsed (only read here)."""
     if not isinstance(rx.pattern, str):
         return None
     try:
-        tree = _p.parse(rx.pattern, rx.flags)
+        tree = tree if tree is not None else _p.parse(rx.pattern, rx.flags)
         if tree.data and tree.data[0] == (_c.AT, _c.AT_BEGINNING_STRING) or \
                 tree.data and tree.data[0] == (_c.AT, _c.AT_BEGINNING) and not rx.flags & re.MULTILINE:
             # Anchored at the start: the scan tries one position and fails fast, while the prefilter would look
@@ -726,10 +727,10 @@ def end_gate(rx: re.Pattern[str]) -> re.Pattern[str] | None:
         return None
 
 
-def _start_anchored(rx: re.Pattern[str]) -> bool:
+def _start_anchored(rx: re.Pattern[str], tree: Any = None) -> bool:
     r"""Is the pattern anchored at the text's start (`\A`, or `^` without MULTILINE)? `re` then tries one position."""
     try:
-        data = _p.parse(rx.pattern, rx.flags).data
+        data = (tree if tree is not None else _p.parse(rx.pattern, rx.flags)).data
     except Exception:
         return False
     return bool(data) and (data[0] == (_c.AT, _c.AT_BEGINNING_STRING) or
@@ -903,16 +904,20 @@ class Gated:
 def gate(rx: re.Pattern[str]) -> re.Pattern[str]:
     """`rx` behind a literal prefilter, an end gate and/or a faster scanner when derivable, else `rx` itself (typed
     as a pattern for callers)."""
-    if _start_anchored(rx):
+    try:  # parsed once for the checks below, which only read the tree (the scanners rewrite their own parse)
+        tree = _p.parse(rx.pattern, rx.flags) if isinstance(rx.pattern, str) else None
+    except Exception:  # an unexpected parser: no gate (always correct)
+        return rx
+    if _start_anchored(rx, tree):
         # `re` tries one position: any check (a factor looked for in the whole text, the text lowered for a folded
         # scan) costs more than the attempt (measured: ~2.7x on "^\s*(?:on|at|...)").
         return rx
-    fs = factors_of(rx)
+    fs = factors_of(rx, tree)
     # The folded scanner only for patterns that cannot match an empty string: `sub` and `finditer` above rely
     # on it (their empty-match rules would otherwise need copying). A twin matches exactly as the original, empty
     # matches included.
     try:
-        nonempty = isinstance(rx.pattern, str) and _p.parse(rx.pattern, rx.flags).getwidth()[0] > 0
+        nonempty = tree is not None and tree.getwidth()[0] > 0
     except Exception:  # an unexpected parser: no folded scan (always correct)
         nonempty = False
     words = False
