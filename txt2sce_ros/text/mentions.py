@@ -84,6 +84,9 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"(north|south|east|west|northeast|northwest|southeast|southwest)\b(?!\s*-?\s*(?:bound|ward|ern))",
                    re.I),
      lambda m: f"{_TRAVEL_VERB.get(m.group(1).lower(), m.group(1))} {m.group(2)}bound"),
+    # "autonomous driving mode", "manual driving mode": a mode, not a driving (the rules read "autonomous mode")
+    (("driving mode",), False, compile_gated(r"\b(autonomous|manual|conventional)\s+driving(?=\s+mode\b)", re.I),
+     lambda m: m.group(1)),
     # "in a northerly direction", "in the northbound direction", "heading northward": the "-bound" the rules read
     (("erly direction", "ern direction", "bound direction", "ward"), False,
      compile_gated(r"\bin\s+(?:an?|the)\s+(north|south|east|west|northeast|northwest|southeast|southwest)"
