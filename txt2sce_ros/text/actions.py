@@ -129,7 +129,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
           r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
           r"(?:adjacent\s+)?right(?:most)?\s+lane\b|"
-          r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+)?lane|"
+          r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+){0,2}lane|"  # ("re-entering the far right lane")
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"

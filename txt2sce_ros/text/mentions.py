@@ -84,6 +84,8 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                    r"(north|south|east|west|northeast|northwest|southeast|southwest)\b(?!\s*-?\s*(?:bound|ward|ern))",
                    re.I),
      lambda m: f"{_TRAVEL_VERB.get(m.group(1).lower(), m.group(1))} {m.group(2)}bound"),
+    # "a ped", "two peds" (police and NHTSA shorthand): a pedestrian
+    ((" ped",), False, compile_gated(r"\b(ped)(s?)\b", re.I), lambda m: f"pedestrian{m.group(2)}"),
     # "autonomous driving mode", "manual driving mode": a mode, not a driving (the rules read "autonomous mode")
     (("driving mode",), False, compile_gated(r"\b(autonomous|manual|conventional)\s+driving(?=\s+mode\b)", re.I),
      lambda m: m.group(1)),
