@@ -630,23 +630,21 @@ def folded(rx: re.Pattern[str]) -> re.Pattern[str] | None:
     Why: with IGNORECASE, `re` enters every alternative of an alternation at every position; case-sensitive
     alternatives starting with a literal are skipped after one character compare. On the extractor's word lists
     that makes the same scan several times faster."""
-    if not isinstance(rx.pattern, str) or not rx.flags & re.IGNORECASE or rx.flags & (re.LOCALE | re.ASCII):
-        return None
-    try:
-        return _scanner(rx, fold=True)
-    except _Unfoldable:
-        return None
-    except Exception:  # an unexpected parse-tree shape: keep the original pattern only (always correct)
-        return None
+    return _folded_scanner(rx, words=False)
 
 
 def word_scanner(rx: re.Pattern[str]) -> re.Pattern[str] | None:
     """The folded scanner of an IGNORECASE pattern for the `wordcase` text of ASCII texts, where that lets `re` skip
     to a first literal or set of first characters; else None."""
+    return _folded_scanner(rx, words=True)
+
+
+def _folded_scanner(rx: re.Pattern[str], words: bool) -> re.Pattern[str] | None:
+    """`_scanner(rx, fold=True, words=words)` for an IGNORECASE str pattern, None where it is not derivable."""
     if not isinstance(rx.pattern, str) or not rx.flags & re.IGNORECASE or rx.flags & (re.LOCALE | re.ASCII):
         return None
     try:
-        return _scanner(rx, fold=True, words=True)
+        return _scanner(rx, fold=True, words=words)
     except _Unfoldable:
         return None
     except Exception:  # an unexpected parse-tree shape: keep the original pattern only (always correct)

@@ -184,8 +184,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             fre.search(r"\b(?:entered|drove\s+into|proceeded\s+into|came\s+into)\s+the\s+intersection", ctx, re.I)):
         # Straight into the intersection and into the AV's side: it came from the side it struck. Its own flank
         # met by the AV's front puts it on the other side ("EGO's front end struck the driver side of the pickup").
-        met = flank_met(d, e) if e.idx == d.partner and fore == "front" and not cside else None
-        side = {"left": "right", "right": "left"}[met] if met else side_named(ctx) or cside
+        side = (side_from_flank(d, e) if e.idx == d.partner and fore == "front" and not cside else None) or \
+            side_named(ctx) or cside
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
     if fre.search(r"\bbehind\b", ctx, re.I):
         return "R6", "same", True
@@ -214,12 +214,12 @@ _FLANK_OF = compile_gated(r"\b(?:(?:front|rear)[- ])?(left|right|driver(?:'s)?|p
                           r"(?:[\w-]+\s+){0,2}$", re.I)
 
 
-def flank_met(d: Doc, e: Entity) -> str | None:
-    """The side of its own body (left/right) the party was touched on in the contact sentence, if named. Met by the
-    AV's front, it tells where the party came from: the other side."""
+def side_from_flank(d: Doc, e: Entity) -> str | None:
+    """The side (left/right) the party came from, told by its own flank the contact sentence says was touched:
+    met by the AV's front (the callers' condition), its left flank faced the AV, so it came from the right."""
     for m in e.mentions:
         if m.sent == d.contact_sent and (f := _FLANK_OF.search(d.sents[m.sent][max(0, m.start - 60):m.start])):
-            return "left" if f.group(1)[0] in "lLdD" else "right"
+            return "right" if f.group(1)[0] in "lLdD" else "left"
     return None
 
 

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import exit_street, flank_met
+from .positions import exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -506,15 +506,15 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # lane change of no stated side came from the side of the AV it touched, or from the side opposite its own
         # flank the AV's front met, else it is written as a move to the left (sequences.sequence), so it came from
         # the right: the place and the action string agree.
-        met = flank_met(d, e) if contact is not None and fore == "front" and not cside else None
+        came = side_from_flank(d, e) if contact is not None and fore == "front" and not cside else None
         lane = {"f": "right", "g": "left"}.get(changes[0]) or (cside if contact is not None and cside else None) or \
-            ({"left": "right", "right": "left"}[met] if met else "right")
+            came or "right"
         rule += "; cut in"
     elif pos == "R5" and lane == "same" and contact is not None and fore == "front" and not cside and not along and \
-            (met := flank_met(d, e)):
+            (came := side_from_flank(d, e)):
         # The AV's front met the party's flank ("the front of EGO struck the passenger side of the sedan"): the party
         # was crossing or cutting across its path from the other side.
-        lane, rule = {"left": "right", "right": "left"}[met], rule + "; its flank met by the AV's front"
+        lane, rule = came, rule + "; its flank met by the AV's front"
     elif pos == "R6" and lane == "same" and (moves := [c for c in ego_actions if c in "fg"]) and \
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.

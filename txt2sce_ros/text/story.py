@@ -208,16 +208,18 @@ def find_contact(d: Doc) -> None:
                 break
 
 
-_AFTERWARDS = compile_gated(r"\band\b|\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
-                         r"\bdamaging\b|\bresulting\b", re.I)
+# Words that tell what came next; `_LATER` is the same list less "and" (which in a clause of the same moment joins
+# what happened then).
+_LATER_WORDS = (r"\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|\bdamaging\b|"
+                r"\bresulting\b")
+_AFTERWARDS = compile_gated(r"\band\b|" + _LATER_WORDS, re.I)
 
 
 # Only a braking is read there: the AV's reaction just before the contact, told after it.
 _BEFORE_IMPACT = compile_gated(r"\b(?:brak(?:ed|ing)|slow(?:ed|ing)|decelerat(?:ed|ing)|applied\s+(?:the\s+)?brakes)\b"
                                r"[^.;]{0,30}?\b(?:before|prior\s+to)\s+(?:the\s+)?(?:impact|contact|collision)\b", re.I)
 _SAME_TIME = compile_gated(r"\b(?:as|while|just\s+as)\b", re.I)
-_LATER = compile_gated(r"\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|"
-                       r"\bdamaging\b|\bresulting\b", re.I)
+_LATER = compile_gated(_LATER_WORDS, re.I)
 
 
 def before_contact(d: Doc, sent: int, pos: int) -> bool:
