@@ -91,7 +91,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
-          r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:travel\s+|through\s+)?lane\b|"
+          r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           # "changed lanes to the right and then back to the left": the return told without its verb
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+left\b|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
@@ -122,7 +122,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
           r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
           r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
-          r"(?<=\s)into\s+the\s+(?:adjacent\s+)?right\s+(?:travel\s+|through\s+)?lane\b|"
+          r"(?<=\s)into\s+the\s+(?:adjacent\s+)?right\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+right\b|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"

@@ -157,7 +157,9 @@ def _name_patterns(operator: str | None) -> tuple[list[re.Pattern[str]], re.Patt
     return _NAME_RES[operator]
 
 
-_FIRST_EGO_NOUN = compile_gated(r"\b(?:[Aa]n?|[Tt]he)\s+[A-Z][\w.-]*\s+(?:[\w.-]+\s+){0,2}?(shuttle|Prius|robotaxi|truck|R2|pod)\b")
+# (Words end at a full stop: "the Waymo AV. The truck" is two sentences, not an AV named a truck.)
+_FIRST_EGO_NOUN = compile_gated(r"\b(?:[Aa]n?|[Tt]he)\s+[A-Z][\w-]*(?:\.[\w-]+)*\s+(?:[\w-]+(?:\.[\w-]+)*\s+){0,2}?"
+                                r"(shuttle|Prius|robotaxi|truck|R2|pod)\b")
 _UPPER_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 _ALPHA_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
 _NEGATED_NP = compile_gated(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
@@ -563,6 +565,7 @@ _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operatin
 _AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|had\s+been|has\s+been)?\s*(?:\w+ly\s+)?"
                               r"(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
+_BARE = {"vehicle", "car", "automobile"}  # generic heads the narratives also use for the AV
 _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
                              r"following|traveling|that|which|in\s+the)", re.I)
 
@@ -590,6 +593,8 @@ def _compatible(e: Entity, m: Mention) -> bool:
         # "the Mercedes" names the party introduced as "a Mercedes car", not another make.
         named = set(e.heads) | {w for x in e.mentions for w in x.mods.split()}
         return m.head in named or any(m.head in h.split() for h in e.heads)
+    if m.head in _GENERIC and m.head not in _BARE:
+        return e.category in ("car", "van")  # "the passenger vehicle" is not the bus named before
     if m.head in _GENERIC or m.mods.startswith("other"):
         return e.category in ("car", "van", "truck", "bus")
     return e.category == m.category and m.category not in ("car",)
@@ -671,8 +676,11 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
         elif m.det != "a":
             for e in reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))):
                 if m.head in _GENERIC and m.sent not in summary_sents and \
-                        all(x.sent in summary_sents for x in e.mentions):
-                    continue  # a bare "the vehicle" in the telling does not reach back to the summary's party
+                        all(x.sent in summary_sents for x in e.mentions) and \
+                        (m.head not in e.heads or m.head in _BARE):
+                    # A bare "the vehicle" in the telling does not reach back to the summary's party; "the
+                    # passenger vehicle" after "a collision involving a passenger vehicle" does.
+                    continue
                 if _compatible(e, m):
                     target = e
                     break

@@ -13,11 +13,13 @@ _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bs
                        r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
-                       r"\b(?:all|two|four|three|\d)-way\s+stop\b|\bjunction\b|\bcross\s+traffic\b|"
+                       r"\b(?:all|two|four|three|\d)-way\s+stop\b|\bjunction\b|\bcross[\s-]+traffic\b|"
                        r"\bthe\s+light\s+turned\b|"
                        # waiting in a turn pocket: turn lanes end at a junction
                        r"\b(?:stopped|waiting|queued)\s+in\s+(?:a|the)\s+(?:dedicated\s+)?(?:left|right)[- ]turn\s+"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
+_CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
+                          r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
 _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
@@ -27,7 +29,7 @@ _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|insters
                          r"\b(?-i:(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln)\.?\s+"
                          r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
                          r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
-                         r"\bmerge\s+lane\b|\bon-?\s?ramp\b", re.I)
+                         r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
@@ -140,7 +142,9 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
             return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
-        if i in summary:
+        if i in summary and not _CONTROL_AT.search(cleaned):
+            # A summary's junction words are often where the report was filed from; a signal or stop sign the AV
+            # stood at ("was stopped at a red light on X when it was rear-ended") is the scene itself.
             continue
         if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
             return True
