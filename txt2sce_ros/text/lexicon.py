@@ -39,7 +39,7 @@ def _trie(words: tuple[str, ...]) -> str:
 _CO = _trie(COMPANIES)
 #: The companies as one regex alternation (for callers that look for an operator's name).
 COMPANY_ALTERNATION = _CO
-_AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test\s+vehicle|vehicle|car|(?:box\s+)?truck|shuttle|"
+_AV_NOUN = (r"(?:autonomous\s+vehicle|automated\s+vehicle|av|test(?:ing)?\s+vehicle|vehicle|car|(?:box\s+)?truck|shuttle|"
             r"prius|robotaxi|suv|van)")
 
 def ego_patterns(co: str) -> tuple[str, ...]:
@@ -47,7 +47,7 @@ def ego_patterns(co: str) -> tuple[str, ...]:
     longest first, applied to normalised text."""
     return (
         rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{co})(?:'s|-operated|-owned)?\s+"
-        rf"(?:(?:autonomous|av|test|driverless|self-driving|"
+        rf"(?:(?:autonomous|av|test|testing|driverless|self-driving|"
         rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
         rf"\b(?:the|a|an|our)\s+(?:{co})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
         rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
@@ -58,7 +58,7 @@ def ego_patterns(co: str) -> tuple[str, ...]:
         # "the Mercedes test vehicle", "a Valeo AV test vehicle": an operator not listed, named before "test vehicle"
         r"\b(?:the|a|an|our)\s+(?:(?-i:[A-Z])[\w-]*(?:\.\w+)?\s+){1,3}(?:(?:autonomous|av|automated)\s+)?test\s+(?:vehicle|car)\b",
         r"\b(?:the|our)\s+(?:ego\s+vehicle|robo-?taxi)\b",
-        r"\b(?:the|our)\s+(?:test\s+)?(?:av|sv|ego)\b",
+        r"\b(?:the|our)\s+(?:test\s+)?(?:av|adv|sv|ego)\b",  # (ADV: "autonomous driving vehicle")
         r"\b(?:av|sv)\b(?!\s+(?:mode|test|system|operator))",
         r"\b(?:the\s+)?subject\s+vehicle\b",
         r"\b(?:our(?:\s+test)?|the\s+test)\s+(?:vehicle|car)\b(?:\s*\((?:car|vehicle)\s*1\))?",

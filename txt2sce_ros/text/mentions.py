@@ -205,7 +205,8 @@ def _trie_pattern(words: list[str]) -> str:
 
 _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
-_NOT_HEAD_AFTER = compile_gated(r"^\s*(?:lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
+# ("the bus and taxi lane", "a bus/bike lane": a lane two kinds of traffic share is a lane too)
+_NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b|lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
                              r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
@@ -595,9 +596,17 @@ def _compatible(e: Entity, m: Mention) -> bool:
         return m.head in named or any(m.head in h.split() for h in e.heads)
     if m.head in _GENERIC and m.head not in _BARE:
         return e.category in ("car", "van")  # "the passenger vehicle" is not the bus named before
+    if _names_part_of(m.head, e):
+        return True  # "the truck" after "a pick-up truck": the last word of its name
     if m.head in _GENERIC or m.mods.startswith("other"):
         return e.category in ("car", "van", "truck", "bus")
     return e.category == m.category and m.category not in ("car",)
+
+
+def _names_part_of(head: str, e: Entity) -> bool:
+    """Is `head` one word of a longer name the entity was given ("truck" of "pick-up truck", "pickup" of "pickup
+    truck")? Such a noun names the same party, whose category stays the longer name's (a pickup is a car)."""
+    return any(head != h and head in h.replace("-", " ").split() for h in e.heads)
 
 
 def _between(sents: list[str], a: Mention, b: Mention) -> str:
@@ -704,7 +713,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             ents.append(target)
         else:
             target.heads.add(m.head)
-            if target.kind == "party" and m.kind == "party" and target.category == "car" and m.category != "car":
+            if target.kind == "party" and m.kind == "party" and target.category == "car" and m.category != "car" \
+                    and not _names_part_of(m.head, target):
                 target.category = m.category  # "the vehicle" then "the Toyota Sienna": the specific noun wins
         m.entity = target.idx
         target.mentions.append(m)

@@ -193,7 +193,7 @@ def find_contact(d: Doc) -> None:
     # touched earlier in the telling took part too, though the conflict is the last contact.
     for i, pos, who in detailed:
         if (i, pos) < (d.contact_sent, d.contact_pos) and who is not None and who != d.partner and \
-                d.ents[who].kind == "obstacle":
+                d.ents[who].kind == "obstacle" and not _named_in_later_clause(d, i, pos, who):
             d.struck.add(who)
     # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
     if d.partner is not None and d.ents[d.partner].kind == "obstacle":
@@ -206,6 +206,20 @@ def find_contact(d: Doc) -> None:
                 d.struck.add(ms[k].entity)
             else:
                 break
+
+
+_CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
+
+
+def _named_in_later_clause(d: Doc, sent: int, pos: int, who: int) -> bool:
+    """Is the object taken for the contact phrase at (sent, pos) named only in a clause after it ("Contact occurred
+    when EGO was stopped at a stop sign"): where the AV was, not what it touched?"""
+    s = d.sents[sent]
+    verb = CONTACT.match(s, pos)
+    end = verb.end() if verb else pos
+    after = [x for x in d.ments[sent] if x.entity == who and x.start >= end]
+    return bool(after) and not any(x.entity == who and x.end <= pos for x in d.ments[sent]) and \
+        bool(_CLAUSE_OPENER.search(s[end:after[0].start]))
 
 
 # Words that tell what came next; `_LATER` is the same list less "and" (which in a clause of the same moment joins
