@@ -49,7 +49,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
     ("j", r"\bu-?\s?turn|\bturn(?:ed|ing|s)?\s+around\b|\bmulti-?point\s+turn|\bthree-point\s+turn"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
-          r"\bback(?:ed|ing|s)\s+(?:up|out|into|away)\b|(?<=\bto\s)back\s+(?:up|out|into|away)\b|"
+          r"\b(?:(?<!remained\s)(?<!remains\s)(?<!was\s)(?<!were\s)(?<!got\s)(?<!is\s)(?<!are\s)backed|backing|backs)\s+"
+          r"(?:up|out|into|away)\b|(?<=\bto\s)back\s+(?:up|out|into|away)\b|"
           r"\brolled\s+back(?:wards?)?\b|"
           r"\b(?:mov|roll|drift|creep|crept|coast)(?:ed|ing|es|e|s)?\s+backwards?\b|"
           r"\bbacking\b"),
@@ -60,13 +61,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:space|spot|stall)|(?<!waiting\s)(?<!preparing\s)(?<!planning\s)\b(?:to|attempting\s+to)\s+park\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
           r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel[-\s]+)?parking\s+maneuver|"
+          r"\bpull[-\s]?over\s+(?:maneuver|manoeuvre)\b|"
           # to the roadside to let a passenger on or off: pulling over
           r"\b(?:pull(?:ed|ing|s)?|mov(?:ed|ing|es|e)|steer(?:ed|ing|s)?)\s+(?:over\s+)?to\s+the\s+(?:curb|(?:right\s+)?side\s+of\s+the\s+(?:road|"
           r"street))\b(?=[^.]{0,30}\b(?:drop|pick|let|load|unload|board|park)|[^.]{0,4}$)"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
-          r"(?:complete\s+|full\s+|sudden\s+|quick\s+|abrupt\s+|immediate\s+)?"
-          r"(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
+          r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
+          r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
           r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           # "was slowing to stop for a red light": slowing that ends at a standstill
@@ -87,7 +89,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
-          r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b"),
+          r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b|"
+          r"\b(?:depart(?:ed|ing|s)?|accelerat(?:ed|ing|es)|mov(?:ed|ing|es)\s+away|pull(?:ed|ing|s)\s+away)\s+from\s+(?:a|the)\s+"
+          r"(?:complete\s+|full\s+)?(?:standstill|stop)\b|"
+          # "As EGO advanced and then came to a stop": advancing is moving forward
+          r"\badvanc(?:ed|ing|es)\b(?!\s+(?:warning|notice))"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
           r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
@@ -227,8 +233,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+(?:pedal|forward))|"
           r"\b(?:pick(?:ed|ing|s)?\s+up|gain(?:ed|ing|s)?)\s+speed\b|\bsped\s+up\b|\bspeed(?:ing|s)\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
-    ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|to\s+(?:a\s+|an\s+)?(?:complete\s+|full\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
-          r"\bbrake\b|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
+    ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
+          r"\bbrake\b(?!\s+(?:and\s+[\w-]+\s+)?(?:lights?|lamps?)\b)|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
           r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
           r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
@@ -246,7 +252,8 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side"),
     "h": ("stop", "halt", "standstill", "yield", "rest", "behind"),
-    "i": ("began", "begin", "start", "forward", "proceed", "off", "away", "resum"),
+    "i": ("began", "begin", "begun", "start", "forward", "proceed", "off", "away", "resum", "depart", "accelerat",
+          "advanc"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
@@ -322,7 +329,7 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
                         r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
-                         r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:\w+\s+|\w+-)?(?:stopped|stationary|"
+                         r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
                          r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"

@@ -163,7 +163,15 @@ _FIRST_EGO_NOUN = compile_gated(r"\b(?:[Aa]n?|[Tt]he)\s+[A-Z][\w-]*(?:\.[\w-]+)*
 _UPPER_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ"
 _ALPHA_BYTES = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
 _NEGATED_NP = compile_gated(r"\b(?:any|no|none|neither|nor)\s+(?:the\s+|other\s+)?(?:[\w-]+\s+)?$", re.I)
-_DET_END = compile_gated(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)\s*$", re.I)
+# ("the subject Mercedes-Benz": a reporter's name for its own vehicle; "subject" goes with the determiner)
+_DET_END = compile_gated(r"\b(?:a|an|the|another|one|that|this|its|their|his|her)(?:\s+subject)?\s*$", re.I)
+# After an opening clause that no comma closes, the AV named right before a progressive verb is that verb's subject
+# ("When traffic ahead began to move EGO was appropriately following the car ahead"); not the object of a
+# preposition ("As a van approaching from the left of EGO was slowing").
+_PROGRESSIVE_AFTER = compile_gated(r"\s+(?:was|were)\s+(?:\w+ly\s+)?\w+ing\b", re.I)
+_OPEN_CLAUSE = compile_gated(r"^\W*(?:when|as|while|after|once|before|because|since|until)\b[^,;]*$", re.I)
+_PREPOSITION_END = compile_gated(r"\b(?:of|to|from|behind|by|with|at|in|on|for|past|around|near|into|onto|toward|"
+                                 r"towards|than|ahead|beside|alongside|and|between)\s*$", re.I)
 # ("Waymo AV"), (Vehicle 2), (car 1), (AV), (Level 4): definitions and labels, not story. Other parentheses
 # ("a fixed object (solar panel)") keep their words.
 _PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
@@ -552,7 +560,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         pre_wo_det = _DET_END.sub("", pre)
         subject = (bool(_SUBJ_BEFORE.search(pre_wo_det)) and not _BETWEEN_AND.search(pre_wo_det)) or \
             (start <= 60 and pre_wo_det.strip() == "") or \
-            (start <= 120 and bool(_TIME_INTRO.match(_DET_END.sub("", s[:max(0, start)]))))
+            (start <= 120 and bool(_TIME_INTRO.match(_DET_END.sub("", s[:max(0, start)])))) or \
+            (kind in ("ego", "egod") and bool(_PROGRESSIVE_AFTER.match(s, m.end())) and
+             bool(_OPEN_CLAUSE.match(s[:max(0, start)])) and not _PREPOSITION_END.search(pre_wo_det))
         out.append(Mention(sent=sent_idx, start=max(0, start), end=m.end(), kind=kind, head=hl, category=cat,
                            det=det, mods=mod_text, subject=subject, count=count))
     return out

@@ -152,6 +152,8 @@ def opens_under_way(acts: list[Act], codes: str = "defgjF") -> tuple[list[Act], 
     return acts[k:], True
 
 
+#: A start that names the standstill it began from ("departing from a standstill").
+_FROM_REST = compile_gated(r"\bfrom\s+(?:a|the)\s+(?:\w+\s+)?(?:standstill|stop)\b", re.I)
 _CONTROL = compile_gated(r"\b(?:red|stop\s+sign|signal|stop\s+(?:line|bar)|light|crosswalk|stop-controlled)\b", re.I)
 
 
@@ -237,9 +239,11 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
-        elif last.code == "i" and not last.under_way and not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
+        elif last.code == "i" and (not last.under_way or _FROM_REST.search(last.text)) and \
+                not any(a.code in "aAbcdefgjF" for a in pre[:-1]):
             stopped, prefix = True, [last]  # "moved off on a green light": no run told before it, it stood
-            # ("was moving forward", told in progress, is a run along its lane)
+            # ("was moving forward", told in progress, is a run along its lane; "while departing from a
+            # standstill" names where it began)
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
             if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
