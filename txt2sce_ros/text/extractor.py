@@ -198,6 +198,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if pos == "R6" and lane == "same" and side and not set(acts) & set("fg"):
             # Passing the AV from behind it in its own lane takes a move to the side it passed on.
             acts = (acts or "a") + ("f" if side == "left" else "g")
+        if pos in ("R5", "R6") and lane in ("left", "right") and ("f" if lane == "left" else "g") in acts:
+            # A lane change away from the AV toward the side it was placed on ("a truck stopped behind EGO entered
+            # the oncoming lane to go around it"): it began in the AV's lane; the change is how it reached the side.
+            lane = "same"
         if pos not in ("R5", "R6", "R7"):
             lane = None
         # A party standing still throughout that the AV, moving forward, ran into stood in its path: both its
