@@ -325,6 +325,10 @@ _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|s
 _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|ing|s)|requir(?:ed|ing|es)|"
                      r"compell(?:ed|ing))\s+(?:(?:EGO|EGOD|it|him|her|them|the\s+[\w-]+|an?\s+[\w-]+)\s+){1,2}"
                      r"to\s+(?:\w+\s+){0,2}$", re.I)
+# "passed EGO on the left to enter the left turn lane": a lane taken by way of a move the party made is no mere
+# intention (the pass is how it got there).
+_PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|went\s+around|drove\s+around|maneuvered\s+around|swerved\s+around)"
+                           r"\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
@@ -482,6 +486,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
         if _INTENT.search(before) and not caused and not own_clause and (not _INTENT_OK.search(before) or
                                                                          _INTENT_TO_BEGIN.search(before)) and \
+                not (code in "fgF" and _PURPOSE_DONE.search(s[max(0, b - 80):b])) and \
                 not _TAKEOVER_TO.search(s[max(0, b - 100):b]) and \
                 not (code in "dejY" and _INTO_JUNCTION_TO.search(s[max(0, b - 80):b])):
             continue
