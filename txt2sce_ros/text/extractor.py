@@ -34,6 +34,10 @@ from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_c
 MAX_NARRATIVE_CHARS = 100_000
 
 
+# The AV standing at the curb when the story opens (the first sentence that places it).
+_AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
+                            r"(?:parked|stopped|pulled\s+over)\s+(?:at|along|against|by)\s+the\s+(?:right\s+)?curb\b", re.I)
+
 def sentence_starts(t: str, sents: list[str]) -> list[int]:
     """Offset of each sentence in the normalised text (sentences are its consecutive, stripped pieces)."""
     out, pos = [], 0
@@ -198,6 +202,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if pos == "R6" and lane == "same" and side and not set(acts) & set("fg"):
             # Passing the AV from behind it in its own lane takes a move to the side it passed on.
             acts = (acts or "a") + ("f" if side == "left" else "g")
+        if pos == "R6" and lane == "same" and ego_start == "stopped" and start == "moving" and \
+                not set(acts) & set("fgklm") and _AV_AT_CURB.search(t):
+            # The AV parked at the curb ("was parallel parked along the curb when it began to pull away"): a
+            # vehicle coming up behind it in traffic is in the travel lane, on its left.
+            lane = "left"
         if pos in ("R5", "R6") and lane in ("left", "right") and ("f" if lane == "left" else "g") in acts:
             # A lane change away from the AV toward the side it was placed on ("a truck stopped behind EGO entered
             # the oncoming lane to go around it"): it began in the AV's lane; the change is how it reached the side.
