@@ -38,6 +38,14 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     pre = " ".join(fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
                    for m in e.mentions[:2])
     full = " ".join(d.sents[m.sent] for m in e.mentions)
+    turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
+    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None:
+        # Turned onto the AV's street from a crossing one ("an SUV then turned right from Post Street onto Steiner
+        # Street and began closely following EGO"): it came from the crossing road, whatever it did next. A left
+        # turn towards the AV comes from its right; one that ends up going the AV's way (following it, striking
+        # its rear) came from the other side. (A party given a heading is read by it, below.)
+        follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
+        return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
     passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
                         r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind.
@@ -329,6 +337,9 @@ def _onto_av_street(d: Doc, ctx: str) -> bool:
     """Does the party turn onto the AV's own street (so it came from a crossing road)?"""
     street = av_street(d)
     m = fre.search(rf"\bonto\s+(?:the\s+)?(?:\w+bound\s+)?{_STREET}", ctx)
+    if street and m is None:
+        # "completing a left turn from Clay onto Grant": the AV's street named without its suffix
+        m = fre.search(r"\bonto\s+(?:\w+bound\s+)?((?:[A-Z0-9][\w.'-]*\s*){1,2}?)(?=[,.;]|\s+(?:and|when|then|as)\b)", ctx)
     return bool(street and m and m.group(1).strip().lower() == street)
 
 
