@@ -1792,6 +1792,59 @@ PROBES: tuple[Probe, ...] = (
            "made a right turn and moved in front of", "turned right and got in front of",
            "turned right and swerved in front of", "turned right and came in front of"),
           _party, [("R5", "left", "ae")]),
+
+    # Session 13: from the first 106 of 213 real narratives new to the project (a public CSV of DMV reports; see
+    # tests/text/csvr/README.md), each a reading they showed wrong, written out in other wordings.
+    _scenes("the summary's party named again with its own noun ('the passenger vehicle'), never the AV", lambda sk: (
+            sk.collision.with_, [(p.category, p.position, p.lane) for p in sk.npcs]), (
+            ("A Waymo AV operating in San Francisco was in a collision involving a passenger vehicle at Bush Street "
+             "and Grant Avenue. The Waymo AV was stopped in traffic when the passenger vehicle approached from "
+             "behind. The passenger vehicle struck the rear of the Waymo AV.", ("npc1", [("car", "R6", "same")])),
+            ("A Waymo AV was in a collision involving a passenger car on Pine Street. The Waymo AV was stopped at a "
+             "red light. The passenger car behind the Waymo AV made contact with the rear of the Waymo AV.",
+             ("npc1", [("car", "R6", "same")])),
+            ("A Waymo AV was in a collision involving a heavy truck on Bayshore Boulevard. The Waymo AV came to a "
+             "stop to yield for approaching traffic. The Waymo AV was rear ended by the truck.",
+             ("npc1", [("truck", "R6", "same")])),
+            ("A Waymo AV was traveling north on 3rd Street. A city bus in the right adjacent lane began to overtake "
+             "the Waymo AV from the right. The passenger vehicle behind the Waymo AV made contact with the Waymo "
+             "AV's rear bumper.", ("npc2", [("bus", "R6", "right"), ("car", "R6", "same")])),
+    )),
+    Probe("a light or stop sign the AV stood at, told in the opening summary sentence (a junction)",
+          "A Waymo AV was stopped in autonomous mode {w} on southbound Rengstorff Avenue at Central Expressway "
+          "when it was rear-ended by a passenger vehicle. The passenger vehicle made contact with the Waymo AV's "
+          "rear bumper at approximately 1 MPH.",
+          ("at a red light", "in traffic at a red light", "at a stop sign", "at a four-way stop",
+           "for a red traffic signal", "at the traffic light"),
+          lambda sk: sk.road.layout, "junction4"),
+    Probe("a lane change further to the side a party was placed on: it began in the AV's lane",
+          "The Waymo AV was stopped in the leftmost lane on Potrero Avenue. A truck that had been stopped behind the "
+          "Waymo AV {w} to maneuver around the Waymo AV, and its passenger side made contact with the Waymo AV's "
+          "rear driver side corner.",
+          ("entered the oncoming lane", "moved into the left adjacent lane", "changed lanes to the left",
+           "swerved into the oncoming lane", "crossed the double yellow line"),
+          _position, [("R6", "same")]),
+    Probe("a vehicle coming up behind an AV parked at the curb (in the travel lane, on its left)",
+          "The Waymo AV was {w} on eastbound Harrison Street. A pickup truck traveling behind the Waymo AV made "
+          "contact with the rear of the Waymo AV.",
+          ("parked at the curb", "parallel parked along the curb", "stopped at the curb",
+           "parked along the right curb"),
+          _position, [("R6", "left")]),
+    Probe("a party that turned onto the AV's street from a crossing one (its turn and where it ended up)",
+          "A Cruise AV was traveling northbound on Grant Street between Clay and Washington Streets when another "
+          "vehicle, {w}, made contact with the Cruise AV.",
+          ("completing a left turn from Clay onto Grant Street behind the Cruise AV",
+           "completing a left turn from Clay onto Grant, following the Cruise AV",
+           "turning right from Clay Street onto Grant Street behind the Cruise AV",
+           "after turning left from Clay onto Grant Street ahead of the Cruise AV"),
+          _position, lambda w: [("R1" if ("left" in w) == ("behind" in w or "following" in w) else "R3", None)]),
+    Probe("a lane change into the lane on a named side ('the right adjacent lane')",
+          "A Cruise AV was stopped at a red light on Hyde Street when another vehicle behind the Cruise AV {w} and "
+          "made contact with the Cruise AV's rear bumper.",
+          ("attempted to change into the right adjacent lane", "moved into the right adjacent lane",
+           "changed into the left adjacent lane", "attempted to merge into the left adjacent lane"),
+          lambda sk: [("f" in p.actions, "g" in p.actions) for p in sk.npcs][:1],
+          lambda w: [("left" in w, "right" in w)]),
 )
 
 

@@ -288,8 +288,10 @@ def _read_exit_street(d: Doc) -> str | None:
 def _turn_street(d: Doc, preposition: str, reach: int) -> str | None:
     """The street named after `preposition` ("from" / "onto") in the AV's turn, when that turn is the
     interaction; the name's words without the suffix, lower-cased."""
-    m = fre.search(rf"\bEGO\b[^.]{{0,120}}?\bturn\w*\b[^.]{{0,{reach}}}?\b{preposition}\s+(?:the\s+)?(?:\w+bound\s+)?"
-                   rf"{_STREET}", d.text)
+    # (in the AV's own clause: "EGO was traveling on Grant Street when another vehicle, turning right from Clay
+    # Street onto Grant Street, ..." is the party's turn)
+    m = fre.search(rf"\bEGO\b(?:(?!\b(?:when|while|whereupon)\b)[^.]){{0,120}}?\bturn\w*\b[^.]{{0,{reach}}}?\b{preposition}\s+"
+                   rf"(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
     return m.group(1).strip().lower() if m and _turn_is_the_interaction(d, m.start()) else None
 
 
