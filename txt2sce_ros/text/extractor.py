@@ -207,11 +207,13 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # The AV parked at the curb ("was parallel parked along the curb when it began to pull away"): a
             # vehicle coming up behind it in traffic is in the travel lane, on its left.
             lane = "left"
-        if pos in ("R5", "R6") and lane in ("left", "right") and ("f" if lane == "left" else "g") in acts and \
+        lateral = [c for c in acts if c in "fg"]
+        if pos in ("R5", "R6") and lane in ("left", "right") and lateral[:1] == ["f" if lane == "left" else "g"] and \
                 not side:
             # A lane change away from the AV toward the side it was placed on ("a truck stopped behind EGO entered
             # the oncoming lane to go around it"): it began in the AV's lane; the change is how it reached the side.
-            # (One placed by the side it passed on stays there: sketch.md places a pass by its side.)
+            # (One placed by the side it passed on stays there: sketch.md places a pass by its side; so does one
+            # whose first sideways move is toward the AV.)
             lane = "same"
         if pos not in ("R5", "R6", "R7"):
             lane = None

@@ -39,11 +39,13 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                    for m in e.mentions[:2])
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
-    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None:
+    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and side_named(ctx) is None and \
+            not fre.search(r"\b(?:driveway|parking|lot|garage|alley)\b", ctx, re.I):
         # Turned onto the AV's street from a crossing one ("an SUV then turned right from Post Street onto Steiner
         # Street and began closely following EGO"): it came from the crossing road, whatever it did next. A left
         # turn towards the AV comes from its right; one that ends up going the AV's way (following it, striking
-        # its rear) came from the other side. (A party given a heading is read by it, below.)
+        # its rear) came from the other side. (A party given a heading or a side is read by it, below; one out of
+        # a driveway or lot is no crossing road's.)
         follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
         return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
     passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
@@ -258,8 +260,8 @@ def _read_av_street(d: Doc) -> str | None:
         return turned_from
     for i, s in enumerate(d.sents):
         for m in d.ments[i]:
-            if m.kind != "ego":
-                continue
+            if m.kind != "ego" or s[m.end:m.end + 2] == "'s":
+                continue  # (not "EGO's lane onto Mason Street", the party's way across the AV's lane)
             # Read in the AV's own clause: up to the next party named, a clause word or 160 characters ("EGO,
             # operating in driverless autonomous mode, was traveling at approximately 20 mph eastbound on Bush
             # Street"), not on into another's ("... as EGO began to enter, the SUV turned left onto Larkin Street").
