@@ -39,7 +39,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                    for m in e.mentions[:2])
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
-    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and side_named(ctx) is None and \
+    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and not _PLACE_SIDE.search(ctx) and \
             not fre.search(r"\b(?:driveway|parking|lot|garage|alley)\b", ctx, re.I):
         # Turned onto the AV's street from a crossing one ("an SUV then turned right from Post Street onto Steiner
         # Street and began closely following EGO"): it came from the crossing road, whatever it did next. A left
@@ -204,6 +204,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
+# A side the party's place is given by ("to the right of EGO", "from the left"), not a side of a body.
+_PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b"
+                            r"(?!\s+(?:side|rear|front)\b)|\bon\s+EGO's\s+(?:left|right)\b(?!\s+(?:side|rear|front)\b)", re.I)
+
+
 # The verbs that put one party right behind another: following it, or striking it in a chain.
 _CHAIN_VERBS = (r"\b(?:behind|following|trailing|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+with|"
                 r"rear[- ]ended|struck|impacted|contacted|hit)\s+(?:the|a|an)\s+")
@@ -260,8 +265,8 @@ def _read_av_street(d: Doc) -> str | None:
         return turned_from
     for i, s in enumerate(d.sents):
         for m in d.ments[i]:
-            if m.kind != "ego" or s[m.end:m.end + 2] == "'s":
-                continue  # (not "EGO's lane onto Mason Street", the party's way across the AV's lane)
+            if m.kind != "ego" or not m.subject:
+                continue  # (not "behind EGO, made a left turn across EGO's lane onto Mason Street": the party's way)
             # Read in the AV's own clause: up to the next party named, a clause word or 160 characters ("EGO,
             # operating in driverless autonomous mode, was traveling at approximately 20 mph eastbound on Bush
             # Street"), not on into another's ("... as EGO began to enter, the SUV turned left onto Larkin Street").
