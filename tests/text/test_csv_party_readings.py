@@ -83,3 +83,96 @@ def test_the_adv_is_the_av() -> None:
         "minor damage to the rear bumper."))
     suv = _partner(sk)
     assert (suv.position, suv.lane, suv.start, suv.actions) == ("R6", "same", "moving", "a")  # it was the AV stopped
+
+
+def _collision_party(report_id: str, text: str) -> tuple[str, str]:
+    p = _partner(_read(report_id, text))
+    return p.start, p.actions
+
+
+def test_a_party_queued_behind_the_standing_av_that_moves_off_starts_from_a_standstill() -> None:
+    # csvr-waymo-20220214-s134, source: _CSV.format(134)
+    assert _collision_party("csvr-waymo-20220214-s134", (
+        "On February 14, 2022 at 3:02 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on Kansas Street at 16th Street. The Waymo AV "
+        "was stopped at a red light facing north on Kansas Street at the 16th Street intersection in autonomous "
+        "mode. While the traffic light was still red, the vehicle immediately behind the Waymo AV began to accelerate "
+        "and made contact with the rear bumper of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS "
+        "was engaged in autonomous mode, and a test driver was present (in the driver’s seating position). The Waymo "
+        "AV sustained minor damage.")) == ("stopped", "i")
+    # csvr-argo-20211019-s102, source: _CSV.format(102)
+    assert _collision_party("csvr-argo-20211019-s102", (
+        "An Argo AI Autonomous Vehicle (“Argo AV”) was involved in a rear-end collision on Grant Ave. The Argo AV came "
+        "to a complete stop at the stop sign located at the intersection of Grant Ave. and El Camino Real. After the "
+        "Argo AV began to initiate a right-hand turn, the Argo AV came to a stop in response to oncoming traffic. A "
+        "vehicle trailing behind the Argo AV moved forward and contacted the Argo AV’s left rear bumper. The Argo AV "
+        "sustained minor damage to its left rear bumper.")) == ("stopped", "i")
+    # csvr-waymo-20211112-s108, source: _CSV.format(108)
+    assert _collision_party("csvr-waymo-20211112-s108", (
+        "On November 12, 2021 at 1:23 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, CA "
+        "was in a collision involving a passenger vehicle at Divisadero Street at Turk Street. The Waymo AV was "
+        "stopped at a red light on Divisadero Street at Turk Street. When the traffic light turned green, the "
+        "passenger vehicle behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, "
+        "the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s "
+        "seating position). The Waymo AV sustained minor damage, and the trailing passenger vehicle sustained minor "
+        "damage.")) == ("stopped", "i")
+
+
+def test_a_subjectless_opening_while_stopped_is_the_av_standing() -> None:
+    # csvr-waymo-20220219-s135, source: _CSV.format(135): the vehicle approached from behind, on its way
+    assert _collision_party("csvr-waymo-20220219-s135", (
+        "On February 19, 2022 at 7:45 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle at the northbound merge lane on the 100 block of "
+        "Bayshore Boulevard. While attempting a merge onto northbound Bayshore Boulevard from southbound Bayshore "
+        "Boulevard, the Waymo AV came to a stop to yield for approaching traffic on the right. While stopped, a "
+        "vehicle approached from behind and made contact with the rear bumper of the Waymo AV. The other vehicle left "
+        "the scene without exchanging information. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged "
+        "in autonomous mode, and a test driver was present (in the driver’s seating position). The Waymo AV sustained "
+        "minor damage.")) == ("moving", "a")
+
+
+def test_not_coming_to_a_complete_stop_is_a_slowing() -> None:
+    # csvr-cruise-20190502-s8, source: _CSV.format(8)
+    assert _collision_party("csvr-cruise-20190502-s8", (
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was stopped at a red light on "
+        "eastbound 24th Street at the intersection with Potrero Avenue when another vehicle approaching from the rear "
+        "did not come to a complete stop and made contact with the Cruise AV’s rear bumper. The driver of the other "
+        "vehicle drove away without exchanging information. The Cruise AV tester sitting in the driver’s seat "
+        "requested medical treatment and emergency services arrived on the scene. SFPD incident report number was not "
+        "available at the time of filing of this report.")) == ("moving", "ac")
+
+
+def test_a_follower_that_then_changes_lane_travelled_first() -> None:
+    # csvr-cruise-20191017-s39, source: _CSV.format(39)
+    assert _collision_party("csvr-cruise-20191017-s39", (
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was stopped at a red light on "
+        "southbound Hyde Street at the intersection with Sutter Street when another vehicle behind the Cruise AV "
+        "attempted to change into the right adjacent lane and made contact with the right rear corner of the Cruise "
+        "AV, damaging the Cruise AV’s right rear radar and assembly. There were no injuries and police were not "
+        "called.")) == ("moving", "ag")
+
+
+def test_backing_is_one_move_wherever_and_whyever_it_goes() -> None:
+    # csvr-cruise-20230608-s248, source: _CSV.format(248): "reversing further into EGO's lane" is no lane change
+    assert _collision_party("csvr-cruise-20230608-s248", (
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in driverless autonomous mode, was traveling southbound "
+        "on Revere Avenue between Industrial Street and Selby Street. The Cruise AV came to a stop behind a GMC Yukon "
+        "that was stopped diagonally in the Cruise AV’s lane of travel. After the Cruise AV came to a complete stop, "
+        "the GMC Yukon began reversing further into the Cruise AV’s lane and made contact with the Cruise AV, "
+        "damaging the front bumper fascia of the Cruise AV. The parties exchanged information and there were no "
+        "reported injuries.")) == ("stopped", "k")
+    # csvr-waymo-20240605-s317, source: _CSV.format(317): "began to reverse to parallel park" ends at the contact
+    assert _collision_party("csvr-waymo-20240605-s317", (
+        "On June 5, 2024 at 1:12 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger car on 29th Avenue near Lawton Street. The Waymo AV was "
+        "parked at the curb on the right side of 29th Avenue when a passenger car in front of the Waymo AV began to "
+        "reverse to parallel park. The passenger car’s rear driver side corner made contact with the front driver "
+        "side corner of the parked Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in "
+        "autonomous mode. The Waymo AV sustained damage.")) == ("stopped", "k")
+    # csvr-weride-20230608-s249, source: _CSV.format(249): "proceeded to reverse" is no run along the lane
+    assert _collision_party("csvr-weride-20230608-s249", (
+        "At 2:06pm a WeRide driverless vehicle (car 1) was stopped behind a big rig truck (vehicle 2). As our vehicle "
+        "(car 1) was stopped behind the big rig truck, the big rig truck proceeded to reverse backwards and eventually "
+        "collided into the WeRide vehicle (car 1). Both parties pulled over both involved vehicles and cooperated to "
+        "exchange information. The damage sustained to the WeRide vehicle was moderate and the big rig truck did not "
+        "have any damage.")) == ("stopped", "k")

@@ -65,6 +65,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # to the roadside to let a passenger on or off: pulling over
           r"\b(?:pull(?:ed|ing|s)?|mov(?:ed|ing|es|e)|steer(?:ed|ing|s)?)\s+(?:over\s+)?to\s+the\s+(?:curb|(?:right\s+)?side\s+of\s+the\s+(?:road|"
           r"street))\b(?=[^.]{0,30}\b(?:drop|pick|let|load|unload|board|park)|[^.]{0,4}$)"),
+    # Not to a complete stop is a slowing ("did not come to a complete stop and made contact", "failed to completely
+    # stop"): the negation denies the standstill, not the braking (a plain "failed to stop" denies both).
+    ("c", r"\b(?:did\s+not|didn't|failed\s+to|fail(?:s|ing)\s+to)\s+(?:(?:come|came|coming)\s+to\s+(?:a\s+)?"
+          r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
           r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
@@ -86,7 +90,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping|accelerating)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+forward\b|"
-          r"\bproceeded\s+forward\b|\bproceed(?:ed)?\s+from\s+"
+          r"\bproceed(?:ed|ing|s)?\s+forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b|"
@@ -238,7 +242,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
           r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
-    ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?|heading|headed|approach(?:ed|ing|es)|"
+    # ("proceeded to reverse": the verb after it tells the move, not a run along the lane)
+    ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
           r"drift(?:ed|ing|s)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
@@ -258,7 +263,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
     "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
-    "c": ("slow", "decelerat", "brak", "reduc", "speed"), "A": ("straight",), "Y": ("turn",),
+    "c": ("slow", "decelerat", "brak", "reduc", "speed", "stop"), "A": ("straight",), "Y": ("turn",),
     "Q": ("front", "path", "off"), "D": ("driveway", "lot", "garage"),
 }
 _NEEDS_SETS = {code: frozenset(words) for code, words in _NEEDS.items()}
@@ -401,6 +406,10 @@ def turn_from_headings(s: str) -> str | None:
     return {90: "e", 270: "d", 180: "j"}.get(diff)
 
 
+# A subjectless opening clause of standing still ("While stopped,", "While yielding to pedestrians,"): the narratives
+# use it of the AV they tell about, whatever the main clause's subject (a dangling modifier, not the party's state).
+_OPENING_WAIT = compile_gated(r"\s*(?:while|when|as)\s+(?:still\s+)?(?:stopped|stationary|waiting|yielding|idling|"
+                              r"at\s+(?:a\s+)?(?:stop|standstill))\b[^,;]{0,80},", re.I)
 _DEVIATION = compile_gated(r"(?:drift|veer|swung|swing|wander)", re.I)
 _ASIDE = compile_gated(r",\s*(?:as|while|when|after|before|because)\b[^,]*,\s*$", re.I)
 
@@ -427,6 +436,8 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
             return fallback
     if best is None and fre.match(r"\s*(?:during|following)\b", sentence, re.I):
         return fallback
+    if best is None and fallback == -1 and _OPENING_WAIT.match(sentence):
+        return fallback  # "While stopped, a vehicle approached from behind": the AV the story is about stood
     if best is None:
         for m in ments:
             if m.start > pos and m.subject:
@@ -608,12 +619,16 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     for k, a in enumerate(out):
         nxt = out[k + 1] if k + 1 < len(out) else None
         if a.code == "l" and dedup and dedup[-1].code == "k" and dedup[-1].who == a.who and \
-                a.pos - (dedup[-1].pos + len(dedup[-1].text)) <= 2:
-            continue  # "reversing into a parking space": where the backing was headed; the string ends at contact
+                fre.fullmatch(r"\s*(?:to\s+|in\s+order\s+to\s+)?", s[dedup[-1].pos + len(dedup[-1].text):a.pos]):
+            # "reversing into a parking space", "began to reverse to parallel park": where (or why) the backing
+            # was headed; the string ends at the contact
+            continue
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
-                turn.code in ("d", "e", "j", "m", "O", "P") and turn.sent == a.sent and 0 <= a.pos - turn.pos <= 70:
-            continue  # "turned right into EGO's lane", "pulled out of its space into the left lane": where it ended
+                turn.code in ("d", "e", "j", "k", "m", "O", "P") and turn.sent == a.sent and 0 <= a.pos - turn.pos <= 70:
+            # "turned right into EGO's lane", "pulled out of its space into the left lane", "began reversing
+            # further into EGO's lane": where it ended
+            continue
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
                 turn.code in ("f", "g", "F") and turn.sent == a.sent and 0 <= a.pos - turn.pos - len(turn.text) <= 3:
             if turn.code == "F":  # "merged | into the left lane": one move, its side told by the lane

@@ -16,14 +16,14 @@ from ..errors import InputError
 from ..sketch import Collision, EgoInfo, Obstacle, Party, Sketch
 from . import fastre as fre
 from .fastre import compile_gated
-from .actions import find_acts
+from .actions import Act, find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
 from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
-                        prepend_modifier_acts, sequence, standing_party)
+                        prepend_modifier_acts, queued_behind, sequence, standing_party)
 from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
 
@@ -82,6 +82,16 @@ class Evidence:
 
 
 _GEOMETRY_TOLD = compile_gated(r"\brear[- ]?end(?:ed|ing|s)?\b|\bhead[- ]?on\b|\bfrom\s+behind\b", re.I)
+
+
+def _told_finite(d: Doc, acts: list[Act]) -> bool:
+    """Is the party's first lane change told by a verb of its own clause ("attempted to change lanes"), not by a
+    participle describing it ("struck by a minivan attempting to maneuver around it")?"""
+    first = next((a for a in acts if a.code in "fgF"), None)
+    return first is not None and not _PARTICIPLE_BEFORE.search(d.sents[first.sent][max(0, first.pos - 40):first.pos])
+
+
+_PARTICIPLE_BEFORE = compile_gated(r"\b(?:attempting|trying|beginning|starting)\s+to\s+(?:\w+\s+)?$", re.I)
 
 
 def extract(text: str, report_id: str) -> Sketch:
@@ -180,12 +190,16 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
         if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
             acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way
-        if start == "moving" and acts[:1] in ("d", "e", "f", "g") and pos == "R5" and not under_way:
-            acts = "a" + acts  # it travelled along the AV's road before turning off it
+        if start == "moving" and not under_way and (acts[:1] in ("d", "e", "f", "g") and pos == "R5" or
+                                                     acts[:1] in ("f", "g") and pos == "R6" and _told_finite(d, pacts)):
+            # it travelled along the AV's road (ahead, or behind it: "the vehicle behind EGO then attempted to change
+            # lanes") before turning off it or changing lane
+            acts = "a" + acts
         if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \
                 not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):
             acts = "m"  # a pedestrian on the move in a collision report is crossing the AV's path (sketch.md, `m`)
         start, acts = standing_party(d, e, pacts, start, acts, ego_actions)
+        start, acts = queued_behind(d, e, pacts, (pos, lane), start, acts)
         if pos in ("R1", "R2", "R3") and e.category in ("car", "van", "truck", "bus", "motorcycle") and "m" in acts:
             # A motor vehicle on another approach of the junction that goes across it ("crossed the intersection
             # against the red light") travels straight along its own road; `m` is for walkers and riders crossing

@@ -207,7 +207,7 @@ _STANDING = r"(?:stopped|waiting|stationary|idle|idling|halted|queued|at\s+(?:a\
 
 
 # A light that turned green was red before it: an AV that stood when the interaction began stood at that red.
-_TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
+TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
                               r"went|cycled)\s+(?:to\s+)?green\b", re.I)
 
 
@@ -219,7 +219,7 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         return "none"  # (a junction the text says has no control has no signal either)
     if control != "signal":
         return "unknown"
-    if ego_start == "stopped" and _TURNED_GREEN.search(t):
+    if ego_start == "stopped" and TURNED_GREEN.search(t):
         return "red"  # sketch.md: "an AV stopped at a red light that moves off on green has red"
     if fre.search(rf"\bEGO(?:D)?\b[^.]{{0,60}}\b(?:{_STANDING}|stop)\b[^.]{{0,30}}\bred\b|\bred\s+light\b[^.]{{0,40}}"
                  rf"\bEGO\b[^.]{{0,20}}\b{_STANDING}\b|\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):

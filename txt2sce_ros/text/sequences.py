@@ -9,6 +9,7 @@ from .actions import Act, turn_from_headings, who_for
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
+from .scene import TURNED_GREEN
 from .story import TURN_WORDS, Doc, before_contact, context, ego_contact_part
 
 _FORWARD = set("abdefgjm")
@@ -119,6 +120,28 @@ def standing_party(d: Doc, e: Entity, told: list[Act], start: str, actions: str,
     if not told and ego_actions.endswith("k") and d.partner == e.idx and not struck_by(d, e):
         return "stopped", ""
     return start, actions
+
+
+def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | None], start: str,
+                  actions: str) -> tuple[str, str]:
+    """A party in the queue behind the standing AV that moved off into it ("the vehicle immediately behind EGO
+    began to accelerate", "a vehicle trailing behind EGO moved forward", "when the light turned green, the
+    passenger vehicle behind EGO made contact"): it stood behind the AV and started with the queue, so its string
+    is a start from a standstill (sketch.md: a party that was stopped and then moved off forward starts with `i`).
+    One told travelling or approaching was on its way (`a`)."""
+    if place != ("R6", "same") or d.ego_start != "stopped" or start != "moving" or \
+            any(a.code in "aAcdefgjkmF" for a in told):
+        return start, actions
+    if told and told[0].code == "i" and actions in ("", "a", "ab"):
+        return "stopped", "i"  # its first move told is the start itself
+    if told or actions not in ("", "a") or d.partner != e.idx or d.contact_sent is None:
+        return start, actions
+    s = d.sents[d.contact_sent]
+    green = TURNED_GREEN.search(s, 0, d.contact_pos)
+    # the party named in that clause as the one already behind the AV ("the passenger vehicle behind EGO")
+    behind = any(m.entity == e.idx and m.det == "the" and fre.match(r"\s+(?:\w+ly\s+)?behind\s+EGO\b", s[m.end:])
+                 for m in d.ments[d.contact_sent])
+    return ("stopped", "i") if green and behind else (start, actions)
 
 
 def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
