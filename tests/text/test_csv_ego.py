@@ -84,6 +84,96 @@ _CSV: dict[str, tuple[str, str]] = {
         "other vehicle left the scene without exchanging information. At the time of the impact, the Waymo AV’s "
         "Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s seating "
         "position). The Waymo AV sustained minor damage."),
+    'csvr-argo-20211019-s102': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 102, column 'Accident Detail Description'), transcribed",
+        "An Argo AI Autonomous Vehicle (“Argo AV”) was involved in a rear-end collision on Grant Ave. The Argo AV"
+        " came to a complete stop at the stop sign located at the intersection of Grant Ave. and El Camino Real. "
+        "After the Argo AV began to initiate a right-hand turn, the Argo AV came to a stop in response to "
+        "oncoming traffic. A vehicle trailing behind the Argo AV moved forward and contacted the Argo AV’s left "
+        "rear bumper. The Argo AV sustained minor damage to its left rear bumper."),
+    'csvr-cruise-20220409-s148': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 148, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (\"Cruise AV\"), operating in driverless autonomous mode, was stopped at a red"
+        " light on northbound Van Ness Avenue at the intersection with Sacramento Street. The Cruise AV entered "
+        "the intersection on a green light and continued straight through the intersection before braking and "
+        "coming to a complete stop near the end of the intersection. At the same time, a Toyota Sedan on "
+        "westbound Sacramento Street began was making an unprotected right turn on a red light onto northbound "
+        "Van Ness Avenue behind the Cruise AV. Shortly thereafter, the Toyota Sedan rear-ended the Cruise AV and "
+        "made contact with the Cruise AV's rear bumper, damaging the rear right bumper. The driver of the other "
+        "vehicle left the scene without exchanging information. There were no injuries and a police report was "
+        "later filed."),
+    'csvr-cruise-20230422-s236': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 236, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (\"Cruise AV\"), operating in driverless autonomous mode, was at a complete "
+        "stop in response to a red light on 10th Street at the intersection with Division Street. The Cruise AV "
+        "began to make a right turn onto Division Street after the light turned green before yielding to a "
+        "pedestrian in the crosswalk. Shortly thereafter, a silver Infiniti Sedan traveling behind the Cruise AV "
+        "made contact with the Cruise AV’s rear bumper, causing damage to the Cruise AV’s rear fascia. The driver"
+        " of the Infiniti Sedan left the scene without exchanging information. There were no reported injuries."),
+    'csvr-zoox-20210511-s81': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 81, column 'Accident Detail Description'), transcribed",
+        "A Zoox vehicle in autonomous mode began to slow down during an unprotected left turn to yield for cross "
+        "traffic entering the lane from the right. A passenger vehicle from behind did not slow and made contact "
+        "with the rear sensors of the Zoox vehicle. There were no injuries and the police were not called."),
+    'csvr-cruise-20190524-s14': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 14, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was changing lanes into the "
+        "left turn lane on eastbound Geary Boulevard between 8th and 9th Avenues when the Cruise AV slowed down. "
+        "The driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another vehicle "
+        "changing into the same lane made contact with the rear bumper of the Cruise AV, damaging the Cruise AV’s"
+        " bumper. There were no injuries and police were not called."),
+    'csvr-waymo-20210709-s89': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 89, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, California was in a collision "
+        "involving a passenger vehicle at Bush Street and Grant Avenue. The Waymo AV was stopped in traffic while"
+        " in autonomous mode when the passenger vehicle approached from behind while changing lanes. The "
+        "passenger vehicle struck the rear of the stopped Waymo AV traveling at 5.5 miles per hour and left the "
+        "scene. The left rear bumper of the Waymo AV sustained minor damage."),
+    'csvr-waymo-20190529-s15': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 15, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) in autonomous mode was stopped in traffic while in the leftmost "
+        "lane on southbound San Antonio Road headed toward Charleston Road in Palo Alto when it was rear-ended by"
+        " a passenger vehicle maneuvering into the Waymo AV’s lane at approximately less than 1 MPH. The Waymo AV"
+        " sustained minor scratches to its rear sensor, and the passenger vehicle left the scene. There were no "
+        "injuries reported at the scene."),
+    'csvr-waymo-20220103-s122': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 122, column 'Accident Detail Description'), transcribed",
+        "On January 3, 2021 at 9:00 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a heavy truck at the northbound merge lane on the 100 block of "
+        "Bayshore Boulevard. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous "
+        "mode, and a test driver was present (in the driver’s seating position). While attempting a merge onto "
+        "northbound Bayshore Boulevard from southbound Bayshore Boulevard, the Waymo AV came to a stop to yield "
+        "for approaching traffic on the right. The Waymo AV was rear ended by the truck, causing minor damage to "
+        "the right rear bumper of the Waymo AV. The truck sustained damage to the left front bumper."),
+    'csvr-waymo-20230605-s246': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 246, column 'Accident Detail Description'), transcribed",
+        "On June 5, 2023 at 12:53 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a van in a parking lot at 3911 3rd Street. The Waymo AV came to "
+        "a stop while yielding to a pickup truck which was reversing into a perpendicular parking space in front "
+        "of the Waymo AV. While the Waymo AV was stopped, a van which was in a parking space immediately to the "
+        "right of the Waymo AV began reversing out of the parking space. The rear of the van made contact with "
+        "the right side of the Waymo AV. The Waymo AV sustained damage. At the time of the impact, the Waymo AV’s"
+        " Level 4 ADS was engaged in autonomous mode."),
+    'csvr-waymo-20190226-s3': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 3, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode at the intersection of Miramonte "
+        "Avenue and Covington Road in Los Altos when it was involved in a collision. The Waymo AV was traveling "
+        "northbound on Miramonte Avenue, when it reached a four-way stop sign intersection. The Waymo AV stopped "
+        "to yield to another vehicle at the intersection, at which time a passenger vehicle rear-ended the Waymo "
+        "AV at approximately 39 MPH. At the time of the collision the Waymo AV had been stopped for approximately"
+        " 1.5 seconds. The Waymo AV sustained major damage to its rear bumper, rear hatch, and rear quarter "
+        "panels, and the passenger vehicle sustained major damage to its front bumper, hood, and front quarter "
+        "panels. First responders attended to the scene, but neither party reported injuries."),
 }
 
 
@@ -136,3 +226,52 @@ def test_approaching_stopped_traffic_is_no_stopped_state() -> None:
     # "was approaching stopped traffic": the AV was moving ("was ... stopped" is not its state), and the queue it
     # met stopped it (the annotators' `ah`).
     assert _ego("csvr-waymo-20220211-s132") == ("moving", "ah")
+
+
+def test_a_stop_after_moving_off_from_where_it_waited_is_an_event() -> None:
+    # Stopped at the stop sign, began a right turn, stopped again for oncoming traffic: `ieh` from a standstill.
+    assert _ego("csvr-argo-20211019-s102") == ("stopped", "ieh")
+
+
+def test_a_stop_told_after_before_is_the_next_thing_done() -> None:
+    # "continued straight through the intersection before braking and coming to a complete stop"
+    assert _ego("csvr-cruise-20220409-s148") == ("stopped", "ih")
+    # "began to make a right turn ... before yielding to a pedestrian in the crosswalk"
+    assert _ego("csvr-cruise-20230422-s236") == ("stopped", "ieh")
+
+
+def test_a_manoeuvre_under_way_comes_before_the_slowing_within_it() -> None:
+    # "began to slow down during an unprotected left turn": the turn was under way (`dc`).
+    assert _ego("csvr-zoox-20210511-s81") == ("moving", "dc")
+    # "was changing lanes into the left turn lane ... when the Cruise AV slowed down" (`fc`).
+    assert _ego("csvr-cruise-20190524-s14") == ("moving", "fc")
+
+
+def test_a_participle_after_the_stopped_av_is_the_striker_s() -> None:
+    # "struck the rear of the stopped Waymo AV traveling at 5.5 miles per hour": the AV stood throughout.
+    assert _ego("csvr-waymo-20210709-s89") == ("stopped", "")
+
+
+def test_the_direction_a_standing_av_faced_is_no_move() -> None:
+    # "was stopped in traffic ... on southbound San Antonio Road headed toward Charleston Road"
+    assert _ego("csvr-waymo-20190529-s15") == ("stopped", "")
+
+
+def test_a_stop_told_as_an_event_away_from_a_light_or_sign_is_made_on_the_way() -> None:
+    # The official gold's reading ("came to a stop in the parking lot while yielding ... While the Waymo AV was
+    # stopped", `ah`): a stop made for traffic, not at a light or a sign, is an event of a moving AV.
+    assert _ego("csvr-waymo-20220103-s122") == ("moving", "ah")
+    # "came to a stop while yielding to a pickup truck ... While the Waymo AV was stopped, a van ...": the stop is
+    # not swallowed by the state beside it, and the state told after it is its result.
+    assert _ego("csvr-waymo-20230605-s246") == ("moving", "ah")
+    # At a stop sign it is where the AV waited (official gold: "came to a stop at a stop sign", `stopped`).
+    at_sign = _CSV["csvr-waymo-20220103-s122"][1].replace("came to a stop to yield",
+                                                           "came to a stop at a stop sign to yield")
+    assert _ego("csvr-waymo-20220103-s122", at_sign)[0] == "stopped"
+
+
+def test_a_summary_state_is_the_av_s_at_the_contact_when_the_telling_goes_back() -> None:
+    # "was stopped ... when it was involved in a collision. The Waymo AV was traveling northbound ... when it
+    # reached a four-way stop sign intersection. The Waymo AV stopped to yield ...": it did not move off (`ih`);
+    # it stopped on its way, or stood where it waited.
+    assert _ego("csvr-waymo-20190226-s3") in (("moving", "ah"), ("stopped", ""))

@@ -274,6 +274,11 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)
                      r"prepar(?:e|ed|ing)\s+for|(?:get|getting)\s+ready\s+(?:for|to)|"
                      r"intending\s+to|in\s+order\s+to|should|would|could|might|must|ought\s+to|"
                      r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+# "continued straight through the intersection before braking and coming to a complete stop", "began to make a right
+# turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
+# (a turn or a lane change after "before" may never have begun: "stopped before turning left").
+_BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
+_STANDING = compile_gated(r"\b(?:stopped|stationary|parked|standing|idle|motionless)\s*$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
 # "slowing to begin to execute a right turn": "begin to" inside an infinitive of purpose is still an intention.
@@ -495,7 +500,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         # "failed to yield and turned left": a past tense after the conjunction opens a clause of its own, out of
         # the reach of the intention or negation before it ("preparing to stop and turn" stays an intention).
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
-        if _INTENT.search(before) and not caused and not own_clause and (not _INTENT_OK.search(before) or
+        if _INTENT.search(before) and not caused and not own_clause and not (code in "hc" and _BEFORE_STOP.search(before)) \
+                and (not _INTENT_OK.search(before) or
                                                                          _INTENT_TO_BEGIN.search(before)) and \
                 not (code in "fgF" and _PURPOSE_DONE.search(s[max(0, b - 80):b])) and \
                 not _TAKEOVER_TO.search(s[max(0, b - 100):b]) and \
@@ -538,6 +544,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 not fre.search(r"\b(?:that|which|who)\b", s[rel.end:b]):
             # "attempted to go around EGO, attempting to merge with traffic": a participle set off by a comma after
             # the object tells more of the clause's subject (a free adjunct), not of the object before the comma.
+            rel = None
+        if rel is not None and not rel.subject and code in "abcfgF" and (
+                _STANDING.search(rel.mods) or _STANDING.search(s[max(0, rel.start - 24):rel.start])):
+            # "struck the rear of the stopped EGO traveling at 5.5 miles per hour": what stood still did not
+            # travel; the participle tells of the clause's subject, the striker.
             rel = None
         if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
@@ -582,6 +593,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "P" and fre.search(r"\b(?:driveway|parking\s+(?:lot|garage|structure)|garage|alley)\b",
                                       s[max(0, b - 90):b], re.I):
             code = "m"  # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road
+        if code == "h" and s[b:e].lower() == "stopped" and fre.match(r"\s+(?:traffic|vehicles|cars|queue)\b", s[e:]) \
+                and any(x.code == "S" and x.who == who for x in out):
+            continue  # "EGO was stopped ... behind stopped traffic": the queue's state, the AV's told already
         if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
             code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
         elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
@@ -646,7 +660,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
             continue
         if dedup and a.who == dedup[-1].who and a.sent == dedup[-1].sent and {a.code, dedup[-1].code} == {"S", "h"} \
-                and abs(a.pos - dedup[-1].pos) < 25:
+                and a.pos <= dedup[-1].pos + len(dedup[-1].text) + 1:
+            # (one span inside the other, or next to it; "came to a stop while yielding" is a stop, then a state)
             if dedup[-1].code == "h":
                 dedup[-1] = a
             continue

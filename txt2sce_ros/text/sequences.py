@@ -14,6 +14,8 @@ from .story import TURN_WORDS, Doc, before_contact, context, ego_contact_part
 
 _FORWARD = set("abdefgjm")
 #: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
+#: Words that give a standing party's direction, not a move ("headed toward Charleston Road").
+_DIRECTION_ONLY = compile_gated(r"(?:headed|heading|facing)\b", re.I)
 _MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated)\b", re.I)
 
 
@@ -202,6 +204,20 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     acts = _ended_in_retold_move(d, [_driveway_turn(d, a) for a in acts])
     # "was proceeding through the intersection after stopping": the stop came first, though told last.
     acts.sort(key=lambda a: (a.sent, not (a.code == "S" and _AFTER.search(d.sents[a.sent][:a.pos])), a.pos))
+    acts = _during_first(d, acts)
+    # "was stopped in traffic ... on southbound San Antonio Road headed toward Charleston Road": after a stop, the
+    # direction it faced is no move.
+    acts = [a for k, a in enumerate(acts) if not (a.code == "a" and _DIRECTION_ONLY.match(a.text) and k > 0 and
+                                                  acts[k - 1].code in "hS")]
+    # "EGO came to a stop to yield to cross-traffic. As EGO was stopped, the passenger car ...": the state told
+    # after a stop is that stop's result, not a fact of its own.
+    acts = [a for k, a in enumerate(acts) if not (a.code == "S" and k > 0 and acts[k - 1].code == "h" and
+                                                  acts[k - 1].sent >= a.sent - 1)]
+    # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
+    # is the AV's at the contact when the telling goes back to it travelling.
+    told = [a for a in acts if a.sent not in d.summary]
+    if told and told[0].code == "a" and told[0].under_way:
+        acts = [a for a in acts if not (a.sent in d.summary and a.code == "S")]
     if first_party_pos is None:
         return sequence(acts, stopped=False, ego=True, side=None)
     fs, fp = first_party_pos
@@ -228,10 +244,12 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
         return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
                          side=None)
-    waited = [k for k in stops if _waited(d, pre[k])]
-    if waited and stops[-1] > waited[-1] and any(a.code in ("a", "i", "b", "A") for a in pre[waited[-1] + 1:stops[-1]]):
+    waited = [k for k in stops if _waited(d, pre[k]) and k < stops[-1]]
+    if waited and any(a.code in "aibAdefgjF" for a in pre[waited[-1] + 1:stops[-1]]):
         # "stopped at red light ... As the shuttle was crossing the intersection and slowing to a stop, the bus
-        # made contact": it started where it waited, moved off, and its later stop is an event of the story.
+        # made contact", "came to a complete stop at the stop sign. After EGO began to initiate a right-hand turn,
+        # EGO came to a stop in response to oncoming traffic": it started where it waited, moved off (ahead or
+        # into a turn), and its later stop, whatever it was made for, is an event of the story.
         rest = [a for a in pre[waited[-1] + 1:] if a.code not in ("a", "A", "i", "S")]
         return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + rest + post, stopped=True, ego=True,
                         side=None)
@@ -260,6 +278,10 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             # "EGO came to a stop in the parking lot while yielding to ... an oncoming pickup truck", which then
             # struck it: the AV stopped for the very party it met, so the interaction began while it was on its way.
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
+        elif last.code == "h" and not _waited(d, last):
+            # "EGO came to a stop to yield for approaching traffic": a stop told as an event, not at a light or a
+            # sign, nor as a state, was made by an AV on its way (the gold sketches' `ah`, `h`).
+            prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code in ("h", "S"):
             stopped = True
         elif last.code == "i" and (not last.under_way or _FROM_REST.search(last.text)) and \
@@ -273,11 +295,13 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
                 # "was traveling north ... causing the AV to steer to the right": a run along its lane, then the
                 # lane change; one told in progress ("was changing lanes when") opens the string.
                 prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
-            turning = [a for a in pre[:-1] if a.code in ("d", "e") and _turning(d, a)]
+            turning = [a for a in pre[:-1] if (a.code in ("d", "e") and _turning(d, a)) or
+                       (a.code in "fgF" and a.under_way)]
             if last.code == "c" and turning and all(a.code in ("c", "h", "S") or a is turning[-1]
                                                     for a in pre[pre.index(turning[-1]):]):
                 # "was traveling west and turning right onto X. While executing the turn, the AV braked": it was
-                # turning when the interaction began, and slowed in the turn.
+                # turning when the interaction began, and slowed in the turn ("was changing lanes into the left
+                # turn lane ... when EGO slowed down": so with a lane change under way).
                 prefix = [turning[-1], last]
         elif last.code == "T":
             turn = turn_from_headings(d.sents[last.sent])
@@ -382,10 +406,26 @@ def backed_into_object(d: Doc, obstacles: list[Entity], start: str, actions: str
 
 
 def _turning(d: Doc, a: Act) -> bool:
-    """A turn told as under way: "turning right", "making a right turn", "executing a left turn"."""
+    """A turn told as under way: "turning right", "making a right turn", "executing a left turn", "during an
+    unprotected left turn"."""
     return bool(fre.match(r"turning\b", a.text, re.I) or fre.search(
-        r"\b(?:making|executing|completing|performing)\s+(?:a|an|the|its)\s+(?:\w+\s+)?$",
+        r"\b(?:making|executing|completing|performing|during)\s+(?:a|an|the|its)\s+(?:\w+\s+)?$",
         d.sents[a.sent][max(0, a.pos - 40):a.pos], re.I))
+
+
+_DURING = compile_gated(r"\bduring\s+(?:a|an|the|its)\s+(?:\w+\s+)?$", re.I)
+
+
+def _during_first(d: Doc, acts: list[Act]) -> list[Act]:
+    """"began to slow down during an unprotected left turn": a manoeuvre named after "during" was under way before
+    the one told first in its sentence, so it comes first in the string (`dc`)."""
+    out = list(acts)
+    for k in range(1, len(out)):
+        a, b = out[k - 1], out[k]
+        if a.sent == b.sent and b.code in "defgjF" and a.code in "bch" and \
+                _DURING.search(d.sents[b.sent][max(0, b.pos - 40):b.pos]):
+            out[k - 1], out[k] = b, a
+    return out
 
 
 _MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", compile_gated(r"\boncoming\b|\bapproaching\b|"
