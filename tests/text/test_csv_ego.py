@@ -174,6 +174,26 @@ _CSV: dict[str, tuple[str, str]] = {
         " 1.5 seconds. The Waymo AV sustained major damage to its rear bumper, rear hatch, and rear quarter "
         "panels, and the passenger vehicle sustained major damage to its front bumper, hood, and front quarter "
         "panels. First responders attended to the scene, but neither party reported injuries."),
+    'csvr-waymo-20240330-s307': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 307, column 'Accident Detail Description'), transcribed",
+        "On March 30, 2024 at 1:33 AM PT, a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving an SUV on Jerrold Avenue at Barneveld Avenue. The Waymo AV was "
+        "stopped at a stop sign on Jerrold Avenue and yielding to a pickup truck that was in the intersection "
+        "making a left turn from Barneveld Avenue onto Jerrold Avenue when the front right corner of the SUV, "
+        "which was traveling behind the Waymo AV, made contact with the rear left corner of the Waymo AV. At the "
+        "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+        "damage."),
+    'csvr-waymo-20241227-s358': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 358, column 'Accident Detail Description'), transcribed",
+        "On December 27, 2024 at 10:16 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger car on Larkin Street at Olive Street. The Waymo AV "
+        "was traveling northbound on Larkin Street when a passenger car traveling directly in front of the Waymo "
+        "AV stopped in lane, and began to reverse to parallel park at the curb. While the passenger car was "
+        "reversing, the rear driver side of the passenger car made contact with the front passenger side of the "
+        "stationary Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous "
+        "mode, and a test driver was present (in the driver’s seating position). Both vehicles sustained damage."),
 }
 
 
@@ -275,3 +295,17 @@ def test_a_summary_state_is_the_av_s_at_the_contact_when_the_telling_goes_back()
     # reached a four-way stop sign intersection. The Waymo AV stopped to yield ...": it did not move off (`ih`);
     # it stopped on its way, or stood where it waited.
     assert _ego("csvr-waymo-20190226-s3") in (("moving", "ah"), ("stopped", ""))
+
+
+def test_a_relative_clause_with_a_place_and_making_a_turn_is_its_noun_s() -> None:
+    # "was stopped at a stop sign ... and yielding to a pickup truck that was in the intersection making a left
+    # turn": the turn is the pickup's; the AV stood throughout ("and yielding" is its state, not a stop).
+    assert _ego("csvr-waymo-20240330-s307") == ("stopped", "")
+
+
+def test_the_contact_naming_the_av_standing_ends_its_run_stopped() -> None:
+    # "was traveling northbound ... made contact with the front passenger side of the stationary Waymo AV": `ah`.
+    assert _ego("csvr-waymo-20241227-s358") == ("moving", "ah")
+    # Without "stationary", nothing says it stopped.
+    text = _CSV["csvr-waymo-20241227-s358"][1].replace("of the stationary Waymo AV", "of the Waymo AV")
+    assert _ego("csvr-waymo-20241227-s358", text) == ("moving", "a")

@@ -365,7 +365,12 @@ _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|d
 _ATTEMPT = r"(?:\w+ly\s+)?(?:(?:attempting|trying|beginning|starting|about|preparing|waiting)\s+to\s+)?"
 _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+){1,4}?|(?:[\w-]+\s+){1,2}?)?"
                        r"(?:that|which|who)\s+)?"
-                       r"(?:(?:had\s+been|has\s+been|had|has|was|were|is|then|also)\s+)*" + _ATTEMPT, re.I)
+                       r"(?:(?:had\s+been|has\s+been|had|has|was|were|is|then|also)\s+)*"
+                       # "a pickup truck that was in the intersection making a left turn": where it was, then the
+                       # verb whose object names the manoeuvre
+                       r"(?:(?<=was\s)(?:in|at|on)\s+(?:the|a|an)\s+[\w-]+\s+)?" + _ATTEMPT +
+                       r"(?:(?:making|executing|performing|completing|initiating)\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?)?",
+                       re.I)
 # A short phrase of means or place between a party's noun and its participle ("on foot", "on a bicycle", "in a
 # wheelchair").
 _PP_BEFORE_PARTICIPLE = compile_gated(r"\s+(?:on|in|with)\s+(?:(?:a|an|the|its|his|her|their)\s+)?[\w-]+\s+", re.I)
@@ -615,8 +620,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
             if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
                 code = "c"
-            elif fre.search(r"(?:\b(?:was|were|while)|,)\s*$", before, re.I):
-                code = "S"  # "was yielding", "while yielding", ", yielding": where the AV stood waiting (no event)
+            elif fre.search(r"(?:\b(?:was|were|while|and)|,)\s*$", before, re.I):
+                code = "S"  # "was yielding", "while yielding", ", yielding", "was stopped ... and yielding": where
+                # the AV stood waiting (no event)
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))

@@ -23,7 +23,7 @@ from .relations import av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
-                        prepend_modifier_acts, queued_behind, sequence, standing_party)
+                        prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact)
 from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, find_contact, heading,
                     summary_sentences)
 
@@ -147,6 +147,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
     elif ego_start == "moving" and ego_actions[0] in "bch":
         ego_actions = "a" + ego_actions  # speeding up, slowing or stopping is done by a party already on its way
+    ego_actions = stood_at_contact(d, ego_start, ego_actions)
     ego_heading = heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(
         r"\bturn(?:ed|ing)\b|\b(?:make|making|complete|completing|execute|executing)\s+(?:a|an|its|the)\s+"

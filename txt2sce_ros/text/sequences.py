@@ -162,6 +162,19 @@ def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
     return actions + "i"
 
 
+_STANDING_AV = compile_gated(r"\b(?:the|a)\s+(?:stationary|stopped|motionless)\s+EGO\b", re.I)
+
+
+def stood_at_contact(d: Doc, start: str, actions: str) -> str:
+    """"a passenger car traveling directly in front of EGO stopped in lane, and began to reverse ... made contact
+    with the front passenger side of the stationary EGO": an AV told on its way whose contact names it standing had
+    stopped before it (`ah`), though no stop of it was told (the official gold: "made contact with the rear driver
+    side of the stopped Waymo AV", `ah`)."""
+    if start != "moving" or not actions or actions[-1] in "hk" or d.contact_sent is None:
+        return actions
+    return actions + "h" if _STANDING_AV.search(d.sents[d.contact_sent]) else actions
+
+
 def opens_under_way(acts: list[Act], codes: str = "defgjF") -> tuple[list[Act], bool]:
     """A party whose first manoeuvre is told in progress ("a Tundra traveling south was making a right turn", "the AV
     was changing lanes to the left when") was doing it when the interaction began: its string opens with that letter
