@@ -1845,6 +1845,15 @@ PROBES: tuple[Probe, ...] = (
            "changed into the left adjacent lane", "attempted to merge into the left adjacent lane"),
           lambda sk: [("f" in p.actions, "g" in p.actions) for p in sk.npcs][:1],
           lambda w: [("left" in w, "right" in w)]),
+    Probe("the part of the AV's rear a party met with nothing else told (a corner: that side; a bumper: behind)",
+          "A Cruise AV was traveling southbound on Divisadero Street between Pine and Bush Streets when another "
+          "vehicle made contact with {w}, damaging it. There were no injuries.",
+          ("the left rear corner of the Cruise AV", "the Cruise AV's left rear corner", "the right rear corner of "
+           "the Cruise AV", "the Cruise AV's rear right corner", "the driver side rear corner of the Cruise AV",
+           "the rear bumper of the Cruise AV", "the left rear bumper of the Cruise AV",
+           "the Cruise AV's right rear bumper"),
+          _position, lambda w: [("R6", "same" if "bumper" in w else
+                                 "left" if ("left" in w or "driver" in w) else "right")]),
 )
 
 

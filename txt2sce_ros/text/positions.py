@@ -177,7 +177,12 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
     if fore == "rear":
-        return "R6", "same", True
+        # A corner of the rear ("the left rear corner", "the right tail lamp") is met by a party coming up on that
+        # side, a bumper ("the left rear bumper") by one behind in the lane (the official gold reads them so).
+        corner = _REAR_CORNER.search(d.sents[d.contact_sent]) if d.contact_sent is not None else None
+        word = (corner.group(1) or corner.group(2)).lower() if corner else ""
+        side = {"driver": "left", "passenger": "right"}.get(word, word) or None
+        return "R6", side or "same", True
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
@@ -204,6 +209,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
+_REAR_CORNER = compile_gated(r"\bEGO's\s+(?:rear\s+)?(left|right|driver|passenger)(?:'s)?(?:[- ]side)?[- ](?:rear\s+)?"
+                             r"(?:corner|quarter|tail\s*(?:light|lamp))|\b(?:the\s+)?(?:rear\s+)?(left|right|driver|"
+                             r"passenger)(?:'s)?(?:[- ]side)?[- ]rear\s+(?:corner|quarter)\w*\s+of\s+EGO\b", re.I)
 # A side the party's place is given by ("to the right of EGO", "from the left"), not a side of a body.
 _PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b"
                             r"(?!\s+(?:side|rear|front)\b)|\bon\s+EGO's\s+(?:left|right)\b(?!\s+(?:side|rear|front)\b)", re.I)
