@@ -20,6 +20,8 @@ _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bs
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
                           r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
+_AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
+                          r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
 _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
@@ -142,9 +144,11 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
             return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
-        if i in summary and not _CONTROL_AT.search(cleaned):
+        if i in summary and not _CONTROL_AT.search(cleaned) and not (
+                _TURN_ONTO.search(cleaned) and _AV_TURNING.search(cleaned)):
             # A summary's junction words are often where the report was filed from; a signal or stop sign the AV
-            # stood at ("was stopped at a red light on X when it was rear-ended") is the scene itself.
+            # stood at ("was stopped at a red light on X when it was rear-ended"), or a turn it was making ("was
+            # stopped turning right from Park Drive onto Miramonte Avenue when it was rear-ended"), is the scene.
             continue
         if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
             return True
