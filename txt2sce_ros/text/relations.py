@@ -536,7 +536,9 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         used.append(contact)
     if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
             not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and
-                    _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues):
+                    _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues) and \
+            not (pos == "R6" and contact is not None and fore == "rear" and not cside and not flank):
+        # (one that ran into the middle of the AV's rear, no side of it named, was in line behind it)
         # A cyclist or scooterist rides at the edge of the road, beside a car rather than centred in its lane:
         # "same" read from nothing but "behind EGO" or from no lane cue at all is the side it touched, else the
         # curb side (right-hand traffic). "Directly behind", "in EGO's lane", "in front of EGO" (in its path) keep
