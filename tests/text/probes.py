@@ -1854,6 +1854,21 @@ PROBES: tuple[Probe, ...] = (
            "the Cruise AV's right rear bumper"),
           _position, lambda w: [("R6", "same" if "bumper" in w else
                                  "left" if ("left" in w or "driver" in w) else "right")]),
+    Probe("a rider running into the middle of the AV's rear (in line behind it, not at the lane's edge)",
+          "The Zoox vehicle was stopped at a stop sign on Union St. when it was rear-ended by {w}. Its front tire "
+          "made contact with the rear bumper of the Zoox vehicle.",
+          ("an electric scooter", "a scooter rider", "a cyclist", "a bicyclist following closely behind",
+           "an e-scooter rider"),
+          _position, [("R6", "same")]),
+    _scenes("a party behind a party behind the AV, told by what it did to that party", lambda sk: [
+            (p.position, p.lane) for p in sk.npcs], (
+            ("The Waymo AV was stopped at a red light with an SUV stopped directly behind it. A passenger car "
+             "approached the stopped SUV from behind and made contact with the rear of the SUV. The SUV then made "
+             "contact with the rear of the Waymo AV.", [("R6", "same"), ("R6", "same")]),
+            ("The Waymo AV was stopped at a red light with an SUV stopped directly behind it. A pickup truck made "
+             "contact with the rear bumper of the SUV, which then struck the rear of the Waymo AV.",
+             [("R6", "same"), ("R6", "same")]),
+    )),
 )
 
 

@@ -218,8 +218,9 @@ _PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+
 
 
 # The verbs that put one party right behind another: following it, or striking it in a chain.
-_CHAIN_VERBS = (r"\b(?:behind|following|trailing|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+with|"
-                r"rear[- ]ended|struck|impacted|contacted|hit)\s+(?:the|a|an)\s+")
+_CHAIN_VERBS = (r"\b(?:behind|following|trailing|approached|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+"
+                r"with(?:\s+the\s+(?:rear|back)(?:\s+bumper)?\s+of)?|rear[- ]ended|struck|impacted|contacted|hit)\s+"
+                r"(?:the|a|an)\s+")
 _CHAIN = compile_gated(_CHAIN_VERBS + r"(?:[\w-]+\s+)?$", re.I)
 _CHAIN_NOUN = compile_gated(_CHAIN_VERBS + r"([\w-]+)(?:\s+([\w-]+))?", re.I)
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
