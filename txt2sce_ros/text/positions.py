@@ -137,7 +137,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                          # (a side of a body, "struck the left side of EGO", "its right side", is no lane)
                          r"on\s+the\s+(?:left|right)|(?:to|from|on)\s+EGO's\s+(?:left|right)|"
                          r"(?:from|along)\s+the\s+(?:left|right)\s+side|"
-                         r"bike\s+lane|sidewalk|parallel(?!\s+park)|alongside|"
+                         r"bike\s+lane|sidewalk|parallel|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
     if lane_ctx and fre.search(r"\b(?:into|onto)\s+(?:the\s+)?$", scan[max(0, lane_ctx.start() - 12):lane_ctx.start()],
                                re.I):
