@@ -68,7 +68,7 @@ _LANE_CUES = compile_gated(
     r"(?<!left\s)(?<!right\s)\b(?:at|along|by|near)\s+the\s+(curb)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
 _PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
-_BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|side)[- ])?{_PART}|\b(?:rear|front)[- ]{_SIDE}\b", re.I)
+_BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|back|side)[- ])?{_PART}|\b(?:rear|back|front)[- ]{_SIDE}\b", re.I)
 # A lane the party moved into is where it went, not where it was.
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enters|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
 _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind|"
