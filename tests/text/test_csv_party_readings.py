@@ -176,3 +176,38 @@ def test_backing_is_one_move_wherever_and_whyever_it_goes() -> None:
         "collided into the WeRide vehicle (car 1). Both parties pulled over both involved vehicles and cooperated to "
         "exchange information. The damage sustained to the WeRide vehicle was moderate and the big rig truck did not "
         "have any damage.")) == ("stopped", "k")
+
+
+def test_a_repeated_noun_refers_to_the_party_it_named_and_a_lead_vehicle_stood() -> None:
+    # csvr-waymo-20240131-s297, source: _CSV.format(297): "the passenger vehicle" is the summary's passenger
+    # vehicle, not "its lead vehicle" named in between; the lead vehicle the AV stopped behind stood there
+    sk = _read("csvr-waymo-20240131-s297", (
+        "On January 31, 2024 at 5:15 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on Potrero Avenue near 22nd Street. The Waymo AV "
+        "was traveling southbound on Potrero Avenue in the leftmost thru lane, adjacent to a dedicated left turn lane "
+        "on its left. As the Waymo AV approached the intersection with 22nd Street, it came to a stop behind its lead "
+        "vehicle. The passenger vehicle behind the Waymo AV then attempted to change lanes into the dedicated left "
+        "turn lane, and made contact with the rear driver side corner of the Waymo AV. At the time of the impact, the "
+        "Waymo AV’s Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage."))
+    assert len(sk.npcs) == 2
+    hit = _partner(sk)
+    lead = next(p for p in sk.npcs if p is not hit)
+    assert (hit.position, hit.actions) == ("R6", "af")
+    assert (lead.position, lead.lane, lead.start, lead.actions) == ("R5", "same", "stopped", "")
+
+
+def test_a_party_the_av_yielded_to_is_not_the_summary_s_party_of_another_noun() -> None:
+    # csvr-waymo-20240330-s307, source: _CSV.format(307): the pickup truck turning in the intersection is a second
+    # party, and its left turn (told in a relative clause after where it was) is its own, not the AV's
+    sk = _read("csvr-waymo-20240330-s307", (
+        'On March 30, 2024 at 1:33 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving an SUV on Jerrold Avenue at Barneveld Avenue. The Waymo AV was '
+        'stopped at a stop sign on Jerrold Avenue and yielding to a pickup truck that was in the intersection making '
+        'a left turn from Barneveld Avenue onto Jerrold Avenue when the front right corner of the SUV, which was '
+        'traveling behind the Waymo AV, made contact with the rear left corner of the Waymo AV. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage."))
+    assert len(sk.npcs) == 2
+    hit = _partner(sk)
+    other = next(p for p in sk.npcs if p is not hit)
+    assert (hit.position, hit.actions) == ("R6", "a") and other.actions == "d"
+    assert (sk.ego.start, sk.ego.actions) == ("stopped", "")

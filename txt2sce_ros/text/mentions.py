@@ -693,7 +693,12 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
         if target is not None:
             pass
         elif m.det != "a":
-            for e in reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))):
+            recent = list(reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))))
+            if m.kind == "party" and m.head not in _BARE:
+                # "the passenger vehicle" repeats the noun of "a passenger vehicle": the party named so is the one
+                # meant, before any other party a looser noun fits ("its lead vehicle" named in between)
+                recent.sort(key=lambda e: m.head not in e.heads)
+            for e in recent:
                 if m.head in _GENERIC and m.sent not in summary_sents and \
                         all(x.sent in summary_sents for x in e.mentions) and \
                         (m.head not in e.heads or m.head in _BARE):
@@ -707,8 +712,11 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             # Opening sentences summarise ("was in a collision involving an SUV"); the same indefinite noun later
             # is the same party, told in detail.
             for e in live:
+                # (by its noun, or by its category when one of the two names no more than a vehicle: "a pickup
+                # truck" the AV yielded to is not the summary's SUV)
                 if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and (
-                        m.head in e.heads or (e.kind == m.kind and e.category == m.category)):
+                        m.head in e.heads or (e.kind == m.kind and e.category == m.category and (
+                            m.head in _GENERIC or all(h in _GENERIC for h in e.heads)))):
                     target = e
                     break
         if target is None and m.det != "a" and m.kind == "party" and m.head in _GENERIC and \

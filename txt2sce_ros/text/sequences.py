@@ -119,6 +119,8 @@ def standing_party(d: Doc, e: Entity, told: list[Act], start: str, actions: str,
     told, stood still throughout (`stopped`, empty)."""
     if start == "stopped" and not actions and struck_by(d, e):
         return start, "i"
+    if not told and start == "moving" and _av_stood_behind(d, e):
+        return "stopped", ""  # "EGO came to a stop behind its lead vehicle": the vehicle it stopped behind stood
     if not told and ego_actions.endswith("k") and d.partner == e.idx and not struck_by(d, e):
         return "stopped", ""
     return start, actions
@@ -144,6 +146,20 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
     behind = any(m.entity == e.idx and m.det == "the" and fre.match(r"\s+(?:\w+ly\s+)?behind\s+EGO\b", s[m.end:])
                  for m in d.ments[d.contact_sent])
     return ("stopped", "i") if green and behind else (start, actions)
+
+
+_STOP_BEHIND = compile_gated(r"\b(?:stop|stopped|halted|standstill|waiting|waited|queued)\s+(?:directly\s+|"
+                             r"immediately\s+|right\s+)?behind\s+(?:a|an|the|its|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def _av_stood_behind(d: Doc, e: Entity) -> bool:
+    """Is the party named as what the AV stopped or waited behind ("came to a stop behind its lead vehicle")?"""
+    for m in e.mentions:
+        s = d.sents[m.sent]
+        if m.sent not in d.summary and _STOP_BEHIND.search(s[max(0, m.start - 60):m.start]) and \
+                who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, s) == -1:
+            return True
+    return False
 
 
 def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
