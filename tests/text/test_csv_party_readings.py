@@ -211,3 +211,25 @@ def test_a_party_the_av_yielded_to_is_not_the_summary_s_party_of_another_noun() 
     other = next(p for p in sk.npcs if p is not hit)
     assert (hit.position, hit.actions) == ("R6", "a") and other.actions == "d"
     assert (sk.ego.start, sk.ego.actions) == ("stopped", "")
+
+
+def test_a_relative_clause_after_a_place_told_against_the_av_is_the_party_s() -> None:
+    # csvr-waymo-20220424-s154, source: _CSV.format(154): "the vehicle directly in front of the Waymo AV, which
+    # stopped" stopped on its way (the AV did not); "westbound Lincoln Way" is a street, not a Lincoln
+    sk = _read("csvr-waymo-20220424-s154", (
+        "On April 24, 2022 at 4:36 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving an SUV on Lincoln Way at 17th Avenue. The Waymo AV was in "
+        "autonomous mode and traveling on westbound Lincoln Way, when it slowed for the vehicle directly in front of "
+        "the Waymo AV, which stopped shortly after passing 17th Avenue. Shortly after the Waymo AV came to a stop, the "
+        "SUV behind the Waymo AV was rear-ended by a pickup truck, and the SUV then made contact with the rear of the "
+        "Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test "
+        "driver was present (in the driver’s seating position). Both vehicles sustained minor damage."))
+    ahead = [p for p in sk.npcs if p.position == "R5"]
+    assert len(sk.npcs) == 3 and [(p.lane, p.start, p.actions) for p in ahead] == [("same", "moving", "ah")]
+
+
+def test_a_model_named_by_a_common_word_is_a_car_only_when_capitalised() -> None:
+    sk = _read("matrix", "The AV was traveling north behind a heavy truck with a truck-mounted light matrix when a "
+                         "Toyota Matrix struck its rear bumper.")
+    assert [p.category for p in sk.npcs if p.id == sk.collision.with_] == ["car"]
+    assert len(sk.npcs) == 2  # the truck and the Toyota, not the light matrix

@@ -420,6 +420,9 @@ def turn_from_headings(s: str) -> str | None:
 # use it of the AV they tell about, whatever the main clause's subject (a dangling modifier, not the party's state).
 _OPENING_WAIT = compile_gated(r"\s*(?:while|when|as)\s+(?:still\s+)?(?:stopped|stationary|waiting|yielding|idling|"
                               r"at\s+(?:a\s+)?(?:stop|standstill))\b[^,;]{0,80},", re.I)
+# A place told against the AV inside a party's noun phrase: "the vehicle directly in front of EGO".
+_PLACE_OF_EGO = compile_gated(r"\s+(?:directly\s+|immediately\s+|right\s+|just\s+)?(?:in\s+front\s+of|behind|ahead\s+of|"
+                              r"next\s+to|beside|alongside)\s+", re.I)
 _DEVIATION = compile_gated(r"(?:drift|veer|swung|swing|wander)", re.I)
 _ASIDE = compile_gated(r",\s*(?:as|while|when|after|before|because)\b[^,]*,\s*$", re.I)
 
@@ -540,6 +543,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # "a vehicle traveling in the lane to EGO's right, which was attempting to merge left": the clause
             # tells of the noun phrase's head (the vehicle), not of the possessor inside its place.
             rel = left[-2]
+        if rel is not None and rel.kind in ("ego", "egod") and not rel.subject and len(left) >= 2 and \
+                left[-2].kind == "party" and left[-2].entity >= 0 and fre.search(r",\s*(?:that|which|who)\b", s[rel.end:b]) \
+                and _PLACE_OF_EGO.fullmatch(s[left[-2].end:rel.start]):
+            # "the vehicle directly in front of EGO, which stopped": the clause tells of the noun phrase's head,
+            # not of the AV named in its place
+            rel = left[-2]
         if rel is not None and not rel.subject and not fre.search(r"\b(?:that|which|who)\b|ing\b", s[rel.end:b]) and \
                 not (s[rel.end:b].strip() == "" and fre.match(r"\w+ing\b", s[b:e], re.I)):
             # "from the left of EGO was slowing": EGO here is no subject; but "seeing the oncoming vehicle crossing
@@ -632,6 +641,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         out.append(Act(sent=sent_idx, pos=b, code=code, who=who, text=s[b:e],
                        under_way=_in_progress(s, b, e, rel),
                        on_its_way=code == "h" and (finite or bool(_SUDDEN.search(before)) or
+                                                   # "the vehicle in front of EGO, which stopped": a relative
+                                                   # clause's own verb, an event of the party
+                                                   (rel is not None and rel.kind == "party" and
+                                                    bool(fre.search(r"(?:^|[\s,])(?:which|that|who)\s+(?:then\s+)?$",
+                                                                    before))) or
                                                    s[b:e].lower().startswith("halt"))))
     # A state "was stopped" and the "stopped" inside it are one fact; "accelerated while still in reverse" is
     # the backing up, not a speed-up forward.

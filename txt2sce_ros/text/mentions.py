@@ -183,6 +183,8 @@ _ABBREV = compile_gated(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|M
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
                      r"\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
 _SENT_SPLIT = compile_gated(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
+# ("on westbound Lincoln Way": a heading between the preposition and the street's name)
+_HEADING_WORD_END = compile_gated(r"\b(?:north|south|east|west|northeast|northwest|southeast|southwest)bound\s+$", re.I)
 _PLACE_PREP = compile_gated(r"\b(?:on|onto|along|at|from|of|near|down|up|to|toward|towards)\s+$")
 _STREET_SUFFIX = compile_gated(r"^\s*(?:[A-Z][\w.]*\s+){0,2}(?:Street|St\b|Avenue|Ave\b|Road|Rd\b|Boulevard|Blvd|Drive|"
                             r"Dr\b|Way|Lane|Ln\b|Parkway|Pkwy|Highway|Hwy|Place|Pl\b|Court|Ct\b|Terrace|Circle|"
@@ -501,10 +503,12 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                     continue
             # Street names ("Van Ness Avenue", "Post Street"): a capitalised head followed by a street word.
             if head[0].isupper() and m.start() > 0 and _STREET_SUFFIX.match(after) and (
-                    hl not in MAKES or _PLACE_PREP.search(s[max(0, m.start() - 12):m.start()])):
+                    hl not in MAKES or _PLACE_PREP.search(_HEADING_WORD_END.sub("", s[max(0, m.start() - 30):m.start()]))):
                 continue  # a make is a street only after a preposition of place ("east on Lincoln Way")
             if head[0].isupper() and hl in ("van", "post", "mission", "gate", "church") and m.start() > 0:
                 continue
+            if head[0].islower() and hl in _WORD_MODELS:
+                continue  # "a truck-mounted light matrix", "in accord with": the word, not the car model
             if hl in ("pickup", "pick-up") and _RIDER_PICKUP.search(s[max(0, m.start() - 30):m.end() + 30]):
                 continue  # "stopped for a passenger pickup": a robotaxi's errand, not a pickup truck
         if PARTY_HEADS.get(hl) == "pedestrian" and _IN_VEHICLE.match(after):
@@ -568,6 +572,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
     return out
 
 
+#: Models named by a common word: a car only when capitalised ("a Honda Accord", not "a light matrix").
+_WORD_MODELS = frozenset({"matrix", "accord", "civic", "genesis", "express", "quest", "caravan", "mini", "ram",
+                          "voyager", "carnival", "mustang", "pacifica", "sentra", "juke"})
 _IN_VEHICLE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:sitting\s+|seated\s+)?(?:in|inside)\s+(?:a|an|the)\s+"
                             r"(?:[\w-]+\s+){0,2}?(?:car|vehicle|suv|sedan|truck|van|minivan|pickup|taxi|cab|bus)\b", re.I)
 _OWN_PART = compile_gated(r"\b(?:front|rear|back|left|right|driver|passenger|spare|its|their|his|her)\b", re.I)
