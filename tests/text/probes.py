@@ -1869,6 +1869,13 @@ PROBES: tuple[Probe, ...] = (
              "contact with the rear bumper of the SUV, which then struck the rear of the Waymo AV.",
              [("R6", "same"), ("R6", "same")]),
     )),
+    Probe("a party behind the AV moving into its lane: the side it came from (the AV's open side, or the side it hit)",
+          "A Waymo AV was stopped in traffic {w} when it was rear-ended by a passenger vehicle maneuvering into the "
+          "Waymo AV's lane. The Waymo AV sustained minor damage.",
+          ("while in the leftmost lane on San Antonio Road", "in the leftmost lane on San Antonio Road",
+           "in the far left lane of San Antonio Road", "while in the rightmost lane on San Antonio Road",
+           "in the right-most lane of San Antonio Road"),
+          _position, lambda w: [("R6", "right" if "left" in w else "left")]),
 )
 
 

@@ -240,7 +240,8 @@ def av_lane_rank(d: Doc) -> float | None:
             if fre.search(r"\b(?:of|behind|past|beside|between|than|with|by|to|from|passed|struck|hit|contacted)\s+$",
                           s[max(0, m.start() - 12):m.start()], re.I):
                 continue  # "a vehicle ahead of EGO in the left lane": the lane is the other party's
-            clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", s[m.end():m.end() + 120])[0]
+            # ("EGO was stopped in traffic while in the leftmost lane": the AV's own state, in its clause)
+            clause = fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b(?!\s+(?:in|on)\s+the\b)", s[m.end():m.end() + 120])[0]
             lm = _ABS_LANE.search(clause)
             # A lane said in a relative clause of another party is that party's ("EGO's right rear made contact
             # with a motorcycle that was traveling in the right lane"); "EGO was traveling behind a pickup truck in
