@@ -229,7 +229,24 @@ def test_a_relative_clause_after_a_place_told_against_the_av_is_the_party_s() ->
 
 
 def test_a_model_named_by_a_common_word_is_a_car_only_when_capitalised() -> None:
-    sk = _read("matrix", "The AV was traveling north behind a heavy truck with a truck-mounted light matrix when a "
+    sk = _read("matrix", "The AV slowed behind a heavy truck with a truck-mounted light matrix when a "
                          "Toyota Matrix struck its rear bumper.")
     assert [p.category for p in sk.npcs if p.id == sk.collision.with_] == ["car"]
     assert len(sk.npcs) == 2  # the truck and the Toyota, not the light matrix
+
+
+def test_a_vehicle_the_av_only_travelled_behind_is_named_in_passing() -> None:
+    # csvr-waymo-20240513-s311, source: _CSV.format(311): the box truck did nothing and the AV did nothing for it
+    sk = _read("csvr-waymo-20240513-s311", (
+        'On May 13, 2024 at 12:58 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, CA was in a '
+        'collision involving a passenger car on eastbound Interstate 10 between Exit 2 and Exit 3A. The Waymo AV was '
+        'traveling with a test driver present behind a box truck in the number 3 lane of eastbound Interstate 10 near '
+        'the Bundy Drive overpass when a passenger car traveling at a high rate of speed approached the Waymo AV from '
+        'behind. The passenger car partially entered the number 2 lane as the front right corner of the passenger car '
+        'made contact with the rear left corner of the Waymo AV. The passenger car then made contact with the center '
+        'median and came to a stop. The Waymo AV was transitioned into manual mode, and the test driver stopped the '
+        "Waymo AV to the right-hand shoulder. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        "autonomous mode, and a test driver was present (in the driver’s seating position). Both vehicles sustained "
+        "damage."))
+    assert [p.category for p in sk.npcs] == ["car"] and sk.collision.with_ == "npc1"
+    # ... but one it slowed or stopped behind takes part (csvr-waymo-20240131-s297 above)

@@ -15,7 +15,7 @@ from typing import TypeVar
 from .actions import Act, heading_of, who_for
 from . import fastre as fre
 from .fastre import compile_gated
-from .lexicon import CONTACT, NEGATION
+from .lexicon import CONTACT, NEGATION, PARKED_WORDS
 from .mentions import Entity, Mention
 from .scene import PRIOR_TURN
 
@@ -283,6 +283,20 @@ def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
     return False
 
 
+_TRAVELLED_BEHIND = compile_gated(r"\b(?:travel(?:l)?(?:ed|ing)|driving|drove|proceed(?:ed|ing)|moving|cruising)\b"
+                                  r"[^,;.]{0,60}?\bbehind\s+(?:a|an|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def _only_travelled_behind(d: Doc, e: Entity) -> bool:
+    """Is the party named only as what the AV travelled behind ("EGO was traveling ... behind a box truck in the
+    number 3 lane"), doing nothing and named no more? (A vehicle the AV stopped or slowed for takes part.)"""
+    told = [m for m in e.mentions if m.sent not in d.summary]
+    return bool(told) and all(
+        _TRAVELLED_BEHIND.search(d.sents[m.sent][max(0, m.start - 100):m.start]) and
+        who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, d.sents[m.sent]) == -1
+        for m in told)
+
+
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
     parties, obstacles = [], []
     for e in d.ents:
@@ -303,6 +317,10 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             # A vehicle the AV went around, that did nothing itself, stood there: parked, unless the text says it
             # was stopped (in traffic, in the lane) and never parked: that is a party standing still (sketch.md).
             e.parked = True
+        if e.kind == "party" and not is_partner and e.idx not in d.struck and not e.parked and \
+                not PARKED_WORDS.search(" ".join(m.mods for m in e.mentions)) and \
+                not any(a.who == e.idx for a in d.acts) and _only_travelled_behind(d, e):
+            continue  # "EGO was traveling ... behind a box truck": where the AV was, named in passing (sketch.md)
         if not is_partner and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
