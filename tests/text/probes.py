@@ -1396,6 +1396,30 @@ PROBES: tuple[Probe, ...] = (
            "was slowing for traffic ahead", "reduced speed", "lowered its speed", "began decelerating",
            "slowed for a pedestrian", "braked lightly"),
           _ego, ("moving", "ac")),
+    # Session 13 (from the AV strings of new real narratives: a stop is an event of a moving AV unless made at a
+    # light or a sign; a stop after moving off from where it waited keeps the start):
+    Probe("the travelling AV's stop for traffic, told in more ways",
+          "A Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) was traveling northbound on Folsom Street in San Francisco. "
+          "The Waymo AV {w}. A passenger vehicle traveling behind the Waymo AV made contact with the rear bumper of "
+          "the Waymo AV.",
+          ("slowed to a stop for a pedestrian", "braked to a stop for a pedestrian crossing", "stopped for a "
+           "pedestrian in the crosswalk", "came to a stop behind a stopped vehicle", "came to a complete stop to yield "
+           "to a cyclist", "stopped to let a pedestrian cross", "came to a stop due to traffic ahead", "brought itself "
+           "to a stop", "began to slow down and came to a stop", "came to a gradual stop", "slowed to a controlled stop",
+           "halted for a pedestrian", "had to stop for a pedestrian"),
+          _ego, ("moving", "ah")),
+    Probe("the AV moving off from a stop sign and stopping again",
+          "A Zoox vehicle in autonomous mode was stopped at a stop sign on northbound 4th Street at Harrison Street. "
+          "{W} A passenger car traveling behind the Zoox vehicle made contact with its rear bumper.",
+          ("the Zoox vehicle began to creep forward and came to a stop again.", "the Zoox vehicle proceeded into the "
+           "intersection and then stopped for a pedestrian.", "the Zoox vehicle moved forward a few feet and stopped "
+           "to yield to cross traffic.", "after creeping forward, the Zoox vehicle stopped again for a cyclist.",
+           "the Zoox vehicle inched forward to gain visibility and stopped.", "when it was its turn, the Zoox vehicle "
+           "accelerated and then braked to a stop for a jaywalker.", "the Zoox vehicle proceeded forward before "
+           "stopping for a pedestrian.", "the Zoox vehicle started moving and had to stop for a pedestrian.",
+           "the Zoox vehicle advanced and then came to a stop as it yielded to cross traffic.", "the Zoox vehicle "
+           "departed from the stop and came to a stop again for a pedestrian."),
+          _ego, ("stopped", "ih")),
     Probe("the AV pulling over",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} and a sedan traveling behind it "
           "struck its rear bumper.",

@@ -74,7 +74,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
           r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
-          r"\bbrought\s+to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
+          r"\bbrought\s+(?:itself\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
+          r"\bhad\s+to\s+(?:come\s+to\s+a\s+(?:\w+\s+)?)?stop\b|"
           # "was slowing to stop for a red light": slowing that ends at a standstill
           r"\b(?:slow|brak|decelerat)(?:ed|ing|es|e|s)?\s+(?:down\s+)?to\s+stop\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
@@ -340,7 +341,9 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
 _PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|went\s+around|drove\s+around|maneuvered\s+around|swerved\s+around)"
                            r"\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
-                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about)\s+to\s+"
+                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about|"
+                        # "had to stop for a pedestrian", "was forced to brake": it did
+                        r"had|(?:was|were)\s+forced)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
                          r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"

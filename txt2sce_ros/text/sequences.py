@@ -280,6 +280,8 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         # EGO came to a stop in response to oncoming traffic": it started where it waited, moved off (ahead or
         # into a turn), and its later stop, whatever it was made for, is an event of the story.
         rest = [a for a in pre[waited[-1] + 1:] if a.code not in ("a", "A", "i", "S")]
+        if rest and rest[0].code == "b":
+            rest = rest[1:]  # "accelerated" away from where it waited is its moving off
         return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + rest + post, stopped=True, ego=True,
                         side=None)
     if stops and pre[-1].code in "defgjF" and stops[-1] < len(pre) - 1:
