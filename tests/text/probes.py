@@ -1900,6 +1900,13 @@ PROBES: tuple[Probe, ...] = (
            "in the far left lane of San Antonio Road", "while in the rightmost lane on San Antonio Road",
            "in the right-most lane of San Antonio Road"),
           _position, lambda w: [("R6", "right" if "left" in w else "left")]),
+    Probe("the AV's stop at a sign or light told as an event, then a vehicle behind runs into it (ah)",
+          "The Waymo AV was traveling eastbound on Jersey Street and {w}. While yielding to pedestrians, a pickup "
+          "truck traveling directly behind the Waymo AV made contact with the rear of the Waymo AV.",
+          ("stopped at a stop sign at the intersection of Church Street", "came to a stop at a stop sign",
+           "came to a complete stop at the red light at Church Street", "stopped for a red light at Church Street",
+           "came to a stop at the four-way stop at Church Street"),
+          _ego, ("moving", "ah")),
 )
 
 

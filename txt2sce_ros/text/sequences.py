@@ -297,10 +297,13 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         return sequence([went] + moves + post, stopped=True, ego=True, side=None)
     if pre:
         last = pre[-1]
-        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and not _waited(d, last):
+        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
+                not _waited(d, last) or (ego_contact_part(d)[0] == "rear" and last.sent < fs)):
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
-            # state ("was stopped") is where the AV waited when it began.
+            # state ("was stopped") is where the AV waited when it began; but a vehicle behind that runs into the
+            # AV's rear ("was traveling ... and stopped at a stop sign. While yielding, a pickup truck traveling
+            # behind made contact") met it as it stopped: the stop is told, `ah` (sketch.md's own example).
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code == "h" and last.under_way and not last.text.lower().startswith("yield"):
             # "was slowing to stop for a red light when ...": a stop still under way is an event of an AV on its way
