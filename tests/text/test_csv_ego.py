@@ -194,6 +194,15 @@ _CSV: dict[str, tuple[str, str]] = {
         "reversing, the rear driver side of the passenger car made contact with the front passenger side of the "
         "stationary Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous "
         "mode, and a test driver was present (in the driver’s seating position). Both vehicles sustained damage."),
+    'csvr-cruise-20230615-s252': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv'"
+        " (serial 252, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (\"Cruise AV\"), operating in driverless autonomous mode, was traveling "
+        "eastbound on Sacramento Street between Lyon Street and Baker Street. The Cruise AV approached a "
+        "motorized articulating boom lift (“ABL”), which was stopped in the Cruise AV’s lane of travel. As the "
+        "Cruise AV began to maneuver around and to the left of the ABL, the Cruise AV made contact with the arm "
+        "of the ABL, which was elevated above the roadway. This caused damage to the Cruise AV’s roof Lidar "
+        "assembly. There were no reported injuries."),
 }
 
 
@@ -309,3 +318,13 @@ def test_the_contact_naming_the_av_standing_ends_its_run_stopped() -> None:
     # Without "stationary", nothing says it stopped.
     text = _CSV["csvr-waymo-20241227-s358"][1].replace("of the stationary Waymo AV", "of the Waymo AV")
     assert _ego("csvr-waymo-20241227-s358", text) == ("moving", "a")
+
+
+def test_a_relative_clause_after_the_av_s_object_is_not_the_av_s() -> None:
+    # "The Cruise AV approached a motorized articulating boom lift ("ABL"), which was stopped in the Cruise AV's
+    # lane of travel": the lift stood, not the AV (`af`, not `ahf`).
+    assert _ego("csvr-cruise-20230615-s252") == ("moving", "af")
+    # Right after the AV's own name the clause is the AV's.
+    text = ("The Cruise AV, which was stopped at a red light on Sacramento Street, was struck from behind by a "
+            "sedan.")
+    assert _ego("t", text) == ("stopped", "")

@@ -279,6 +279,7 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)
 # turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
 # (a turn or a lane change after "before" may never have begun: "stopped before turning left").
 _BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
+_WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|is)\s+(?:\w+ly\s+)?)?$", re.I)
 _STANDING = compile_gated(r"\b(?:stopped|stationary|parked|standing|idle|motionless)\s*$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
@@ -600,6 +601,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                     not s[group[0].start:group[0].end].lower().startswith("both") and \
                     not any(m.subject and m.kind != "group" and group[0].end <= m.start < b for m in ments):
                 continue  # "Several vehicles passed EGO": an unnumbered group's move is no party's (sketch.md)
+        if who == -1 and (which := _WHICH_WAS.search(before)) and left and \
+                fre.search(r"\b(?:a|an|the)\s", s[left[-1].end:b - len(before) + which.start()], re.I):
+            continue  # "EGO approached a motorized articulating boom lift ("ABL"), which was stopped in EGO's lane":
+            # a relative clause tells of the noun before it, one the AV's clause took as its object, not of the AV
         if who is None:
             continue
         subj = [m for m in ments if m.subject and m.end <= b]
