@@ -1907,6 +1907,12 @@ PROBES: tuple[Probe, ...] = (
            "came to a complete stop at the red light at Church Street", "stopped for a red light at Church Street",
            "came to a stop at the four-way stop at Church Street"),
           _ego, ("moving", "ah")),
+    Probe("the AV 'about to' move off when struck from behind (an intention: it stood)",
+          "The Waymo AV was stopped at a red light on Mission Street at 16th Street. The light turned green and the "
+          "Waymo AV {w} when a passenger vehicle behind the Waymo AV made contact with its rear bumper.",
+          ("was about to proceed", "was about to move forward", "was about to begin moving",
+           "was just about to proceed through the intersection", "was about to accelerate"),
+          _ego, ("stopped", "")),
 )
 
 

@@ -342,7 +342,7 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
 _PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|went\s+around|drove\s+around|maneuvered\s+around|swerved\s+around)"
                            r"\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
-                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|about|"
+                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|"
                         # "had to stop for a pedestrian", "was forced to brake": it did
                         r"had|(?:was|were)\s+forced)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
