@@ -250,3 +250,30 @@ def test_a_vehicle_the_av_only_travelled_behind_is_named_in_passing() -> None:
         "damage."))
     assert [p.category for p in sk.npcs] == ["car"] and sk.collision.with_ == "npc1"
     # ... but one it slowed or stopped behind takes part (csvr-waymo-20240131-s297 above)
+
+
+def test_a_number_given_first_beside_another_party_of_its_sentence_names_a_party_of_its_own() -> None:
+    # csvr-zoox-20220830-s186, source: _CSV.format(186): "Vehicle Two" is not "a vehicle ahead" (one named in an
+    # earlier sentence may be the party numbered: test_action_reading's reverse lights)
+    sk = _read("csvr-zoox-20220830-s186", (
+        "A Zoox vehicle in autonomy was proceeding straight on Kearney Street in San Francisco, CA, in stop-and-go "
+        "traffic. The Zoox vehicle came to a stop for a vehicle ahead when Vehicle Two made light contact with the Zoox "
+        "vehicle's rear bumper from behind. There were no injuries and the police were not called."))
+    assert sorted(p.position for p in sk.npcs) == ["R5", "R6"] and _partner(sk).position == "R6"
+    # ... and a sentence that opens with the number still opens a sentence (the AV's stop is not the party's)
+    sk = _read("label", "The SV was stopped at a stop sign at the intersection. V2, approaching from the left on "
+                        "the cross street, failed to stop and struck the front left corner of the SV.")
+    assert (sk.ego.start, sk.ego.actions) == ("stopped", "") and len(sk.npcs) == 1
+
+
+def test_before_then_a_sequence_adverb_tells_the_next_step_done() -> None:
+    # csvr-waymo-20221229-s207, source: _CSV.format(207)
+    assert _collision_party("csvr-waymo-20221229-s207", (
+        "On December 29, 2022 at 3:15 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on 3rd Street and Mariposa Street. The Waymo AV "
+        "was stopped facing north on 3rd Street for a red light in the right lane of the three-lane street while in "
+        "autonomous mode. A passenger vehicle approached from behind and stopped behind the Waymo AV before "
+        "eventually proceeding forward and making contact with the rear of the Waymo AV while the AV was still "
+        "stopped at the red light. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous "
+        "mode, and a test driver was present (in the driver’s seating position). The Waymo sustained damage.")) == \
+        ("moving", "ahi")

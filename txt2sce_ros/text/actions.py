@@ -274,7 +274,9 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"prepar(?:e|ed|ing)\s+for|(?:get|getting)\s+ready\s+(?:for|to)|"
                      r"intending\s+to|in\s+order\s+to|should|would|could|might|must|ought\s+to|"
-                     r"in\s+preparation\s+for|before|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+                     r"in\s+preparation\s+for|before(?!\s+(?:eventually|then|finally)\s)|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+# ("stopped behind EGO before eventually proceeding forward": an adverb of sequence after "before" tells the next
+# step, done, not a plan)
 # "continued straight through the intersection before braking and coming to a complete stop", "began to make a right
 # turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
 # (a turn or a lane change after "before" may never have begun: "stopped before turning left").

@@ -322,6 +322,16 @@ def _squeeze(t: str) -> str:
     return " ".join(t.split())
 
 
+_LABEL_WORDS = compile_gated(r"\b(vehicle|car)\s+(two|three|four)\b", re.I)
+
+
+def _label_digits(t: str) -> str:
+    """"Vehicle Two" as "Vehicle 2": a report's number for a party, spelled as the rules read it."""
+    if not _LABEL_WORDS.search(t):
+        return t
+    return _LABEL_WORDS.sub(lambda m: f"{m.group(1)} {dict(two=2, three=3, four=4)[m.group(2).lower()]}", t)
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -356,6 +366,7 @@ def normalise(text: str) -> str:
         # "A Ford Explorer (Vehicle 2)": the make and the model name the party; the model alone is no party noun.
         head = f"{m.group(1)} {m.group(2)}" if (m.group(1) or "").lower() in MAKES else m.group(2)
         t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(3)}\b(?!\))", f"the {head}", t, flags=re.I)
+    t = _label_digits(t)
     # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.
     one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
     if one and company_re.search(t[max(0, one.start() - 60):one.start()]):
@@ -648,7 +659,12 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             # "Cyclist 1 and Cyclist 2 approaching ... Cyclist 3 ... veered left": a numbered party is the one with
             # that number; once the report numbers its parties, a new number is a new party.
             same = [e for e in ents if labels.get(e.idx) == lab.group(1) and e.merged_into is None]
-            if same or labels:
+            # "EGO came to a stop for a vehicle ahead when Vehicle 2 made contact from behind": a number the report
+            # gives a party for the first time, right after another party named in the same sentence without one,
+            # names a party of its own (one named in an earlier sentence may be the one it numbers)
+            beside = not same and not labels and m.det == "" and any(
+                e.kind == "party" and e.merged_into is None and e.mentions[-1].sent == m.sent for e in ents)
+            if same or labels or beside:
                 target_l = same[0] if same else Entity(idx=len(ents), kind=m.kind, category=m.category,
                                                        heads={m.head}, count=m.count)
                 if not same:
