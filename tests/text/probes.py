@@ -1913,6 +1913,12 @@ PROBES: tuple[Probe, ...] = (
           ("was about to proceed", "was about to move forward", "was about to begin moving",
            "was just about to proceed through the intersection", "was about to accelerate"),
           _ego, ("stopped", "")),
+    Probe("a party touching 'its' rear bumper in the AV's sentence (the AV's part: behind it)",
+          "The Cruise AV was stopped in the left turn lane, waiting to turn left, when {w}.",
+          ("another vehicle made contact with its rear bumper", "a sedan struck its rear",
+           "an SUV rear-ended its rear bumper", "a pickup truck collided with its rear end",
+           "a van hit its rear bumper"),
+          _position, [("R6", "same")]),
 )
 
 

@@ -485,6 +485,9 @@ _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struc
 # "in front of EGO, impacting its front passenger side sensors": a participle of contact after the AV's name
 _ITS_PART = compile_gated(r"\bEGO\b[^.;]{0,40},\s+(?:impacting|striking|hitting|contacting|damaging|clipping|scraping)\s+"
                           r"its\s+((?:[\w-]+\s+){1,5})", re.I)
+_CONTACT_ITS = compile_gated(r"\b(?:made\s+contact\s+with|contacted|struck|hit|impacted|rear-ended|collided\s+with|"
+                             r"sideswiped)\s+its\s+((?:[\w-]+\s+){0,3}?(?:bumper|rear|front|side|corner|door|fender|"
+                             r"panel|end|sensor|hatch|trunk|tail\w*)\b)", re.I)
 _PART_END = re.compile(r"\b(?:collided|made|struck|hit|contacted|impacted|came|was|were|had|sideswiped|scraped|"
                        r"clipped|rubbed|touched|bumped|with|against|into)\b", re.I)
 _PART_WORD = compile_gated(r"\b(?:front|rear|back|tail|hood|driver|passenger|left|right)\b", re.I)
@@ -508,6 +511,9 @@ def _ego_parts(s: str) -> list[str]:
     # "EGO's front end collided with the driver side of the pickup": the AV's part ends where the verb begins
     parts += [_PART_END.split(m.group(1), 1)[0] for m in _EGOS_PART.finditer(s)]
     parts += [m.group(1) for m in _ITS_PART.finditer(s)]
+    # "... when another vehicle made contact with its rear bumper": a party that touched "its" part touched the
+    # AV's (a vehicle does not strike its own bumper); not where the AV itself is the doer just before.
+    parts += [m.group(1) for m in _CONTACT_ITS.finditer(s) if "EGO" not in s[max(0, m.start() - 40):m.start()]]
     return parts
 
 
