@@ -1383,6 +1383,14 @@ PROBES: tuple[Probe, ...] = (
            "parked at the curb", "holding its position", "stopped and waiting", "sitting stationary", "fully "
            "stopped", "standing still", "at a complete stop", "at rest", "motionless", "not moving"),
           _ego, ("stopped", "")),
+    Probe("the AV standing in a turn lane with the turn it means to make (session 13)",
+          "A Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) was stopped in the left turn lane on northbound Folsom "
+          "Street at 16th Street {w}. A passenger vehicle traveling behind the Waymo AV made contact with the rear "
+          "bumper of the Waymo AV.",
+          ("waiting to make a left turn", "for an unprotected left turn onto 16th Street", "and was about to turn "
+           "left", "planning a left turn onto 16th Street", "in anticipation of a left turn onto 16th Street",
+           "waiting to proceed with a left turn", "preparing to turn left onto 16th Street", "for a left turn"),
+          _ego, ("stopped", "")),
     Probe("the AV moving along its lane",
           "A Zoox vehicle was {w} on Koval Lane when a sedan traveling behind it struck its rear bumper.",
           ("driving northbound", "proceeding northbound", "operating northbound", "heading north", "in motion",

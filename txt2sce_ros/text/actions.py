@@ -274,12 +274,17 @@ _ALL_NEEDS = tuple(sorted(set().union(*_NEEDS_SETS.values())))
 _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)\b)|preparing\s+to|waiting\s+to|planning\s+to|"
                      r"prepar(?:e|ed|ing)\s+for|(?:get|getting)\s+ready\s+(?:for|to)|"
                      r"intending\s+to|in\s+order\s+to|should|would|could|might|must|ought\s+to|"
-                     r"in\s+preparation\s+for|before(?!\s+(?:eventually|then|finally)\s)|prior\s+to)\s+(?:\w+\s+){0,2}$", re.I)
+                     r"in\s+preparation\s+for|before(?!\s+(?:eventually|then|finally)\s)|prior\s+to|"
+                     # "planning a left turn", "in anticipation of a left turn", "was about to turn left", "waiting to
+                     # proceed with a left turn": all ahead
+                     r"planning|in\s+anticipation\s+of|about\s+to|(?:waiting|preparing)\s+to\s+\w+\s+with)"
+                     r"\s+(?:\w+\s+){0,2}$", re.I)
 # ("stopped behind EGO before eventually proceeding forward": an adverb of sequence after "before" tells the next
 # step, done, not a plan)
 # "continued straight through the intersection before braking and coming to a complete stop", "began to make a right
 # turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
 # (a turn or a lane change after "before" may never have begun: "stopped before turning left").
+_FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
 _WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|is)\s+(?:\w+ly\s+)?)?$", re.I)
 _STANDING = compile_gated(r"\b(?:stopped|stationary|parked|standing|idle|motionless)\s*$", re.I)
@@ -523,6 +528,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue
         if code in "defgjDFTY" and _ATTEMPT_WAITING.search(before) and _WHILE_WAITING.match(s[e:]):
             continue
+        if code in "defgjFT" and _FOR_MOVE.search(before):
+            continue  # "stopped in the left turn lane for an unprotected left turn": the turn it stood there for
         if code == "c" and _AT_CONTACT.match(s[e:]):
             continue  # "braked just before the front of EGO made contact": a reaction at the contact, no manoeuvre
         if _NEGATED.search(before) and not own_clause:
