@@ -277,3 +277,8 @@ def test_before_then_a_sequence_adverb_tells_the_next_step_done() -> None:
         "stopped at the red light. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous "
         "mode, and a test driver was present (in the driver’s seating position). The Waymo sustained damage.")) == \
         ("moving", "ahi")
+
+
+def test_a_number_in_apposition_names_the_party_before_it() -> None:
+    sk = _read("apposition", "The AV was stopped at a red light when a white SUV, Vehicle 2, struck its rear bumper.")
+    assert len(sk.npcs) == 1 and sk.collision.with_ == "npc1"

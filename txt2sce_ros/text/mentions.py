@@ -631,6 +631,9 @@ def _compatible(e: Entity, m: Mention) -> bool:
     return e.category == m.category and m.category not in ("car",)
 
 
+_CLAUSE_WORD = compile_gated(r"\b(?:when|while|as|and|but|then|before|after|until|because)\b", re.I)
+
+
 def _names_part_of(head: str, e: Entity) -> bool:
     """Is `head` one word of a longer name the entity was given ("truck" of "pick-up truck", "pickup" of "pickup
     truck")? Such a noun names the same party, whose category stays the longer name's (a pickup is a car)."""
@@ -662,8 +665,11 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             # "EGO came to a stop for a vehicle ahead when Vehicle 2 made contact from behind": a number the report
             # gives a party for the first time, right after another party named in the same sentence without one,
             # names a party of its own (one named in an earlier sentence may be the one it numbers)
-            beside = not same and not labels and m.det == "" and any(
-                e.kind == "party" and e.merged_into is None and e.mentions[-1].sent == m.sent for e in ents)
+            # (but not an apposition, "a white SUV, Vehicle 2, ...": another clause lies between the two)
+            near = [x for e in ents if e.kind == "party" and e.merged_into is None for x in e.mentions
+                    if x.sent == m.sent and x.end <= m.start]
+            beside = not same and not labels and m.det == "" and bool(near) and bool(_CLAUSE_WORD.search(
+                sents[m.sent][max(x.end for x in near):m.start]))
             if same or labels or beside:
                 target_l = same[0] if same else Entity(idx=len(ents), kind=m.kind, category=m.category,
                                                        heads={m.head}, count=m.count)
