@@ -183,7 +183,6 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         word = (corner.group(1) or corner.group(2)).lower() if corner else ""
         side = {"driver": "left", "passenger": "right"}.get(word, word) or None
         return "R6", side or "same", True
-    turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
         # a party that then follows the AV turned into its direction, so the sides swap.
