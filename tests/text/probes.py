@@ -1927,6 +1927,13 @@ PROBES: tuple[Probe, ...] = (
            "an SUV rear-ended its rear bumper", "a pickup truck collided with its rear end",
            "a van hit its rear bumper"),
           _position, [("R6", "same")]),
+    Probe("the AV in a turn lane when struck (turn lanes end at a junction)",
+          "The Waymo AV was {w} on Market Street when a passenger vehicle approached from behind and made contact "
+          "with the rear bumper of the Waymo AV.",
+          ("approaching stopped traffic in the left turn lane", "traveling in the left turn lane",
+           "stopped in the dedicated right turn lane", "proceeding in the left-turn lane",
+           "driving in the rightmost left turn lane"),
+          lambda sk: sk.road.layout, "junction4"),
 )
 
 

@@ -16,7 +16,8 @@ _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bs
                        r"\b(?:all|two|four|three|\d)-way\s+stop\b|\bjunction\b|\bcross[\s-]+traffic\b|"
                        r"\bthe\s+light\s+turned\b|"
                        # waiting in a turn pocket: turn lanes end at a junction
-                       r"\b(?:stopped|waiting|queued)\s+in\s+(?:a|the)\s+(?:dedicated\s+)?(?:left|right)[- ]turn\s+"
+                       r"\b(?:stopped|waiting|queued|traffic|traveling|travelling|proceeding|driving)\s+in\s+(?:a|the)\s+"
+                       r"(?:(?:dedicated|leftmost|rightmost|left-most|right-most)\s+)?(?:left|right)[- ]turn\s+"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
                           r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
