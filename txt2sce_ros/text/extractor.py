@@ -53,9 +53,11 @@ def came_into_lane_from(d: Doc) -> str | None:
                 break
     return side
 
+
 # The AV standing at the curb when the story opens (the first sentence that places it).
 _AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
                             r"(?:parked|stopped|pulled\s+over)\s+(?:at|along|against|by)\s+the\s+(?:right\s+)?curb\b", re.I)
+
 
 def sentence_starts(t: str, sents: list[str]) -> list[int]:
     """Offset of each sentence in the normalised text (sentences are its consecutive, stripped pieces)."""

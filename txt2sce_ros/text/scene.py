@@ -213,7 +213,7 @@ _STANDING = r"(?:stopped|waiting|stationary|idle|idling|halted|queued|at\s+(?:a\
 
 # A light that turned green was red before it: an AV that stood when the interaction began stood at that red.
 TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
-                              r"went|cycled)\s+(?:to\s+)?green\b", re.I)
+                             r"went|cycled)\s+(?:to\s+)?green\b", re.I)
 
 
 def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving") -> str:
