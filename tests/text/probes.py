@@ -1934,6 +1934,17 @@ PROBES: tuple[Probe, ...] = (
            "stopped in the dedicated right turn lane", "proceeding in the left-turn lane",
            "driving in the rightmost left turn lane"),
           lambda sk: sk.road.layout, "junction4"),
+    _scenes("the AV's stop at a light or sign told as an event in the contact's own sentence, or before a party said "
+            "to be behind it (ah)", _ego, (
+            ("The Waymo AV was traveling north on Mission Street and came to a stop at a red light when a vehicle "
+             "behind made contact with the rear bumper of the Waymo AV.", ("moving", "ah")),
+            ("The Waymo AV was traveling north on Mission Street and stopped at a stop sign, and a passenger car "
+             "traveling behind the Waymo AV made contact with the rear of the Waymo AV.", ("moving", "ah")),
+            ("The Waymo AV was traveling eastbound and slowed to a stop for a stop sign when it was struck from "
+             "behind by an SUV.", ("moving", "ah")),
+            ("The Waymo AV approached the intersection and came to a stop at the red light. Moments later, a sedan "
+             "behind the Waymo AV struck its rear bumper.", ("moving", "ah")),
+    )),
 )
 
 

@@ -223,6 +223,18 @@ def _waited(d: Doc, stop: Act) -> bool:
     return stop.code == "S" or bool(fre.search(r"yield", stop.text, re.I)) or _at_control(d, stop, 100)
 
 
+_FROM_BEHIND = compile_gated(r"\brear[- ]?end(?:ed|ing)?\b|\bfrom\s+behind\b|\bbehind\s+EGO\b|\bfrom\s+the\s+rear\b", re.I)
+
+
+def _struck_from_behind(d: Doc) -> bool:
+    """Was the AV struck at its rear: the part the contact names, else the contact told by its geometry or by a
+    party behind the AV ("a sedan behind EGO struck its rear bumper")?"""
+    if d.contact_sent is None:
+        return False
+    fore = ego_contact_part(d)[0]
+    return fore == "rear" or (fore is None and bool(_FROM_BEHIND.search(d.sents[d.contact_sent])))
+
+
 def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
     """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
     or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
@@ -298,7 +310,7 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     if pre:
         last = pre[-1]
         if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
-                not _waited(d, last) or (ego_contact_part(d)[0] == "rear" and last.sent < fs)):
+                not _waited(d, last) or (_struck_from_behind(d) and (last.sent, last.pos) < (fs, clause_start))):
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
             # state ("was stopped") is where the AV waited when it began; but a vehicle behind that runs into the
