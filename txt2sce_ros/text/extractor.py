@@ -24,8 +24,8 @@ from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
                         prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact)
-from .story import (BOILERPLATE, context, Doc, add_doors, attach_towed, before_contact, counted, ego_contact_part,
-                    find_contact, heading, summary_sentences)
+from .story import (BOILERPLATE, body_side, context, Doc, add_doors, attach_towed, before_contact, counted,
+                    ego_contact_part, find_contact, heading, summary_sentences)
 
 
 #: The longest narrative read (characters). Real section-5 narratives run to ~3,500 characters; the extractor's
@@ -37,7 +37,7 @@ MAX_NARRATIVE_CHARS = 100_000
 _INTO_EGO_LANE = compile_gated(r"\binto\s+EGO's\s+(?:travel\s+)?lane\b", re.I)
 
 
-def came_into_lane_from(d: Doc) -> str | None:
+def _came_into_lane_from(d: Doc) -> str | None:
     """The side a party moving into the AV's lane from behind came from: the open side of a leftmost or rightmost
     AV lane, else the side of the AV the contact (or the damage told after it) names."""
     if d.av_lane is not None and d.av_lane <= 0:
@@ -49,7 +49,7 @@ def came_into_lane_from(d: Doc) -> str | None:
         for s in d.sents[d.contact_sent + 1:d.contact_sent + 3]:
             if fre.search(r"\bdamag", s, re.I) and (m := fre.search(r"\b(driver|passenger|left|right)(?:'s)?[- ](?:side[- ])?"
                                                                   r"(?:rear|back)\b[^.]{0,40}?\bof\s+EGO\b", s, re.I)):
-                side = {"driver": "left", "passenger": "right"}.get(m.group(1).lower(), m.group(1).lower())
+                side = body_side(m.group(1))
                 break
     return side
 
@@ -213,7 +213,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # Behind the AV and moving into its lane ("rear-ended by a passenger vehicle maneuvering into EGO's
             # lane"): it came from the next lane, the side the AV's own lane leaves open, else the side of the AV
             # it touched (the damage told, if the contact names no side).
-            lane = came_into_lane_from(d) or lane
+            lane = _came_into_lane_from(d) or lane
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
         if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
             acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way

@@ -9,7 +9,7 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CARDINALS
 from .mentions import Entity
-from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, heading, side_named
+from .story import ONCOMING, TURN_WORDS, Doc, body_side, context, ego_contact_part, heading, side_named
 
 
 def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool,
@@ -180,8 +180,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # A corner of the rear ("the left rear corner", "the right tail lamp") is met by a party coming up on that
         # side, a bumper ("the left rear bumper") by one behind in the lane (the official gold reads them so).
         corner = _REAR_CORNER.search(d.sents[d.contact_sent]) if d.contact_sent is not None else None
-        word = (corner.group(1) or corner.group(2)).lower() if corner else ""
-        side = {"driver": "left", "passenger": "right"}.get(word, word) or None
+        side = body_side(corner.group(1) or corner.group(2)) if corner else None
         return "R6", side or "same", True
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;

@@ -10,12 +10,12 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
 from .scene import TURNED_GREEN
-from .story import TURN_WORDS, Doc, before_contact, context, ego_contact_part
+from .story import TURN_WORDS, Doc, before_contact, context, ego_contact_part, named_behind_by_av
 
 _FORWARD = set("abdefgjm")
-#: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
 #: Words that give a standing party's direction, not a move ("headed toward Charleston Road").
 _DIRECTION_ONLY = compile_gated(r"(?:headed|heading|facing)\b", re.I)
+#: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
 _MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated)\b", re.I)
 
 
@@ -154,12 +154,7 @@ _STOP_BEHIND = compile_gated(r"\b(?:stop|stopped|halted|standstill|waiting|waite
 
 def _av_stood_behind(d: Doc, e: Entity) -> bool:
     """Is the party named as what the AV stopped or waited behind ("came to a stop behind its lead vehicle")?"""
-    for m in e.mentions:
-        s = d.sents[m.sent]
-        if m.sent not in d.summary and _STOP_BEHIND.search(s[max(0, m.start - 60):m.start]) and \
-                who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, s) == -1:
-            return True
-    return False
+    return any(m.sent not in d.summary and named_behind_by_av(d, m, _STOP_BEHIND, 60) for m in e.mentions)
 
 
 def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:

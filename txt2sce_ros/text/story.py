@@ -287,14 +287,26 @@ _TRAVELLED_BEHIND = compile_gated(r"\b(?:travel(?:l)?(?:ed|ing)|driving|drove|pr
                                   r"[^,;.]{0,60}?\bbehind\s+(?:a|an|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
 
 
+def named_behind_by_av(d: Doc, m: Mention, before: re.Pattern[str], reach: int) -> bool:
+    """Is mention `m` the object of something the AV did behind it ("EGO was traveling ... behind a box truck",
+    "EGO came to a stop behind its lead vehicle"): `before` matches the `reach` characters before the mention,
+    and the AV is the doer there?"""
+    s = d.sents[m.sent]
+    return bool(before.search(s[max(0, m.start - reach):m.start])) and \
+        who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, s) == -1
+
+
+def body_side(word: str) -> str:
+    """A side of a vehicle's body as the AV's left or right ("driver" is the left in right-hand traffic)."""
+    word = word.lower()
+    return {"driver": "left", "passenger": "right"}.get(word, word)
+
+
 def _only_travelled_behind(d: Doc, e: Entity) -> bool:
     """Is the party named only as what the AV travelled behind ("EGO was traveling ... behind a box truck in the
     number 3 lane"), doing nothing and named no more? (A vehicle the AV stopped or slowed for takes part.)"""
     told = [m for m in e.mentions if m.sent not in d.summary]
-    return bool(told) and all(
-        _TRAVELLED_BEHIND.search(d.sents[m.sent][max(0, m.start - 100):m.start]) and
-        who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, d.sents[m.sent]) == -1
-        for m in told)
+    return bool(told) and all(named_behind_by_av(d, m, _TRAVELLED_BEHIND, 100) for m in told)
 
 
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
