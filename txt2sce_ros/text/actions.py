@@ -519,9 +519,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         # "failed to yield and turned left": a past tense after the conjunction opens a clause of its own, out of
         # the reach of the intention or negation before it ("preparing to stop and turn" stays an intention).
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
-        if _INTENT.search(before) and not caused and not own_clause and not (code in "hc" and _BEFORE_STOP.search(before)) \
-                and (not _INTENT_OK.search(before) or
-                                                                         _INTENT_TO_BEGIN.search(before)) and \
+        if _INTENT.search(before) and not caused and not own_clause and \
+                not (code in "hc" and _BEFORE_STOP.search(before)) and \
+                (not _INTENT_OK.search(before) or _INTENT_TO_BEGIN.search(before)) and \
                 not (code in "fgF" and _PURPOSE_DONE.search(s[max(0, b - 80):b])) and \
                 not _TAKEOVER_TO.search(s[max(0, b - 100):b]) and \
                 not (code in "dejY" and _INTO_JUNCTION_TO.search(s[max(0, b - 80):b])):
@@ -690,8 +690,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 turn.code in ("d", "e") and fre.fullmatch(r"[^,.;]{0,60}\band\s+(?:\w+ly\s+)?",
                                                          s[turn.pos + len(turn.text):a.pos]) and \
                 not _DEVIATION.match(a.text):
-            # "turned right and cut (or pulled) in front of EGO", "... and entered the right lane": where the turn ends; but
-            # "turned left and drifted into EGO's lane" strays from it: a move of its own.
+            # "turned right and cut (or pulled) in front of EGO", "... and entered the right lane": where the turn
+            # ends; but "turned left and drifted into EGO's lane" strays from it: a move of its own.
             continue
         if a.code in ("a", "b") and nxt is not None and nxt.code == "k" and nxt.who == a.who and fre.fullmatch(
                 r"\s*(?:\w+ly\s+)?(?:while|when)?\s*(?:still\s+)?in\s+", s[a.pos + len(a.text):nxt.pos], re.I):
