@@ -33,6 +33,8 @@ _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|insters
                          r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
                          r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
                          r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+# A slip lane, merge lane or ramp is the AV's place even in a summary: the report is not filed from one.
+_CONNECTOR = compile_gated(r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
@@ -145,7 +147,7 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
             return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
-        if i in summary and not _CONTROL_AT.search(cleaned) and not (
+        if i in summary and not _CONTROL_AT.search(cleaned) and not _CONNECTOR.search(cleaned) and not (
                 _TURN_ONTO.search(cleaned) and _AV_TURNING.search(cleaned)):
             # A summary's junction words are often where the report was filed from; a signal or stop sign the AV
             # stood at ("was stopped at a red light on X when it was rear-ended"), or a turn it was making ("was
