@@ -55,3 +55,20 @@ def test_agreement_with_real_form_labels() -> None:
     one = form_agreement([row], {g.report_id: wrong})["collision_type"]
     assert (one.agree, one.total) == (0, 1) and one.disagreements[0][2] == g.report_id
     json.dumps([a.__dict__ for a in ag.values()])  # plain data, printable
+
+
+def test_sgo_pickup_is_a_car_and_a_stop_before_contact_is_stopped() -> None:
+    # sketch.md files pickups under `car`; SGO's "Crash With: Pickup Truck" must not read as a truck. And SGO's
+    # "SV Pre-Crash Movement: Stopped" is the movement just before the contact: an AV that travelled, then came to a
+    # stop ("ah") and was struck, agrees with it; one still moving ("a") does not.
+    g = _gold()["dmvca-weride-20210629-r190"]
+    row = {"id": g.report_id, "sgo": {"Crash With": "Pickup Truck", "SV Pre-Crash Movement": "Stopped",
+                                      "CP Pre-Crash Movement": "Proceeding Straight"}}
+    ag = form_agreement([row], {g.report_id: g})
+    assert ag["party_category"].total == 1
+    assert ag["party_category"].agree == (g.party(g.collision.with_).category == "car")  # type: ignore[union-attr]
+    for start, actions, agrees in (("moving", "ah", True), ("stopped", "", True), ("moving", "al", True),
+                                   ("moving", "a", False), ("moving", "ha", False)):
+        moved = replace(g, ego=replace(g.ego, start=start, actions=actions))  # type: ignore[arg-type]
+        one = form_agreement([row], {g.report_id: moved})["av_movement"]
+        assert (one.agree, one.total) == (int(agrees), 1), (start, actions)

@@ -38,7 +38,7 @@ _STATIC = ("stopped", "parked")
 #: SGO "Crash With" / OL 316 vehicle 2 -> party category ("object" for fixed objects and animals).
 _CRASH_WITH = (("pedestrian", "pedestrian"), ("cyclist", "bicycle"), ("bicycl", "bicycle"), ("scooter", "scooter"),
                ("motorcycl", "motorcycle"), ("moped", "motorcycle"), ("bus", "bus"), ("heavy truck", "truck"),
-               ("truck", "truck"), ("van", "van"), ("fixed object", "object"), ("animal", "object"),
+               ("pickup", "car"), ("truck", "truck"), ("van", "van"), ("fixed object", "object"), ("animal", "object"),
                ("object", "object"), ("suv", "car"), ("pickup", "car"), ("car", "car"), ("vehicle", "car"))
 
 
@@ -145,7 +145,9 @@ def _movement_ok(moves: list[str], start: str, actions: str) -> tuple[bool, str]
     for mv in moves:
         mv = re.sub(r"\s+", " ", mv.strip())
         if mv in _STATIC:
-            return (start == "stopped" or actions in ("", "k")), mv
+            # The movement just before the contact: a party that came to a stop ("ah") or pulled over ("al")
+            # before it was struck was stopped or parked then.
+            return (start == "stopped" or actions in ("", "k") or actions.endswith(("h", "l"))), mv
         codes = MOVEMENT.get(mv)
         if codes:
             return any(c in actions for c in codes), mv
