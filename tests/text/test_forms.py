@@ -72,3 +72,17 @@ def test_sgo_pickup_is_a_car_and_a_stop_before_contact_is_stopped() -> None:
         moved = replace(g, ego=replace(g.ego, start=start, actions=actions))  # type: ignore[arg-type]
         one = form_agreement([row], {g.report_id: moved})["av_movement"]
         assert (one.agree, one.total) == (int(agrees), 1), (start, actions)
+
+
+def test_sgo_contact_at_the_av_s_rear_wants_the_party_behind() -> None:
+    g = _gold()["dmvca-weride-20210629-r190"]  # its collision party is at R5 (ahead, right)
+    party = g.party(g.collision.with_)
+    assert party is not None and party.position == "R5"
+    rear = {"id": g.report_id, "sgo": {"SV Contact Area": ["Rear", "Rear Left"]}}
+    front = {"id": g.report_id, "sgo": {"SV Contact Area": ["Front Right"]}}
+    mixed = {"id": g.report_id, "sgo": {"SV Contact Area": ["Front Right", "Rear"]}}
+    behind = replace(g, npcs=[replace(party, position="R6")])  # type: ignore[arg-type]
+    for row, sketch, agrees in ((rear, g, False), (rear, behind, True), (front, g, True), (front, behind, False)):
+        one = form_agreement([row], {g.report_id: sketch})["party_front_rear"]
+        assert (one.agree, one.total) == (int(agrees), 1)
+    assert form_agreement([mixed], {g.report_id: g})["party_front_rear"].total == 0  # no single end: not compared

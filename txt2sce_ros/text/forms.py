@@ -154,10 +154,27 @@ def _movement_ok(moves: list[str], start: str, actions: str) -> tuple[bool, str]
     return None
 
 
+_REAR_AREAS = frozenset({"rear", "rear left", "rear right"})
+_FRONT_AREAS = frozenset({"front", "front left", "front right"})
+
+
+def _av_struck_end(row: dict) -> str | None:
+    """'rear' or 'front' when the SGO form's AV ("SV") contact areas all lie at that end of the AV, else None."""
+    areas = {a.strip().lower() for a in row.get("sgo", {}).get("SV Contact Area", []) or []}
+    if areas and areas <= _REAR_AREAS:
+        return "rear"
+    if areas and areas <= _FRONT_AREAS:
+        return "front"
+    return None
+
+
 def form_agreement(rows: Iterable[dict], predicted: dict[str, Sketch]) -> dict[str, Agreement]:
-    """Agreement of predicted sketches with the filed labels: collision type, the other party's category, and the
-    movement preceding the collision (AV and other party) shown in the action strings."""
-    out = {k: Agreement() for k in ("collision_type", "party_category", "av_movement", "party_movement")}
+    """Agreement of predicted sketches with the filed labels: collision type, the other party's category, the
+    movement preceding the collision (AV and other party) shown in the action strings, and, where an SGO form puts
+    every contact on the AV at its rear (or its front), whether the party the AV touched is placed behind it (R6)
+    (or not behind it)."""
+    out = {k: Agreement() for k in ("collision_type", "party_category", "av_movement", "party_movement",
+                                    "party_front_rear")}
     for row in rows:
         rid = row.get("id", "")
         p = predicted.get(rid)
@@ -178,6 +195,11 @@ def form_agreement(rows: Iterable[dict], predicted: dict[str, Sketch]) -> dict[s
         form_cat = _party_category_from_form(row)
         if form_cat:
             out["party_category"].add(form_cat == pred_cat, form_cat, pred_cat, rid)
+        end = _av_struck_end(row)
+        pos = getattr(partner, "position", None)
+        if end and pos:
+            behind = pos == "R6"
+            out["party_front_rear"].add(behind == (end == "rear"), f"AV {end}", pos, rid)
         av_moves, other_moves = _movements(row)
         r = _movement_ok(av_moves, p.ego.start, p.ego.actions)
         if r is not None:
