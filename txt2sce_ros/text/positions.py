@@ -48,10 +48,16 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # a driveway or lot is no crossing road's.)
         follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
         return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
-    passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
+    passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|past|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
                         r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
-    # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind.
-    if passing and not fre.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I):
+    h = heading(d, e.idx)
+    rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
+    # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind. Oncoming is
+    # said ("an oncoming car"), or told by a heading opposite the AV's ("a pickup truck traveling southbound ... passed
+    # the stationary Waymo AV", the AV northbound).
+    passed_oncoming = bool(passing) and (rel == 180 or bool(
+        fre.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I)))
+    if passing and not passed_oncoming:
         # The side it passed on: said with the pass, else the side of the AV it touched, else a side named just
         # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides).
         return "R6", (passing.group(1) or "").lower() or cside or side_named(ctx[passing.end():passing.end() + 30]) or \
@@ -90,8 +96,6 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # Before headings: the heading it is given may be the one it turned to ("onto westbound California").
     if cross and (side := side_named(ctx)):
         return ("R1" if side == "left" else "R3"), None, True  # "a vehicle on Leavenworth, to the right of EGO"
-    h = heading(d, e.idx)
-    rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     if fre.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
         oncoming = None
         side_m = fre.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
@@ -102,7 +106,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if oncoming or rel == 180:
         if junction:
             return "R2", None, True
-        return "R7", "same" if fre.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) else "left", True
+        # In the AV's own lane: said ("the wrong way"), or passing the AV on its right (the oncoming lane is on its
+        # left: "a passenger car traveling southbound in the parking lot proceeded to pass the Waymo AV on the right").
+        wrong_way = fre.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) or \
+            (passed_oncoming and (passing.group(1) or "").lower() == "right")
+        return "R7", "same" if wrong_way else "left", True
     if rel == 0 and not fre.search(r"\bbehind\b", ctx, re.I):
         return "R5", side_named(ctx) or "same", True
     if junction and rel in (90, 270):

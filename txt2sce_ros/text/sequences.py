@@ -529,7 +529,10 @@ def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle
         return "head_on" if party.lane == "same" and fre.search(r"\bfront\b", touched, re.I) and not \
             fre.search(r"\bside\b", touched, re.I) else "side_swipe"
     if party.position in ("R1", "R3", "R4", "R2"):
-        if fre.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror", s, re.I):
+        # (a party passing the AV as they touch, "passing the Waymo AV on the left, and the cyclist made contact",
+        # met it along its side)
+        if fre.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror|\bpass(?:ed|ing)\s+(?:the\s+)?EGO\b", s,
+                      re.I):
             return "side_swipe"
         return "broadside"
     return "other"
