@@ -49,7 +49,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
         return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
     passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|past|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?(?:\w+\s+)?"
-                        r"(?:EGO|it)\b(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
+                        r"(?:EGO|it)\b(?!'s)(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)  # (not "past EGO's stop line")
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind. Oncoming is
