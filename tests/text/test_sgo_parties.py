@@ -49,6 +49,25 @@ _SGO: dict[str, tuple[str, str]] = {
         'damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because '
         'a vulnerable road user was involved. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30413-10764-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30413-10764, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A May autonomous shuttle (ego) was stopped at a traffic light in autonomous mode. A vehicle '
+        'approaching from behind coasted into the ego vehicle. Our system responded with a software Health '
+        'Drop, which immediately took the ego out of autonomous mode (for safety). Minor damage was reported '
+        'to our rear sensor and bumper.'),
+    'nhtsa-sgo-ads-30270-7935-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7935,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 10:36 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a van on [XXX] at [XXX]. The Waymo AV was stopped'
+        ' for a passenger pickup with the front of the Waymo AV in a parking area and its rear in the travel '
+        'lane on [XXX] near the intersection with [XXX]. A van traveling west on [XXX] passed the Waymo AV on'
+        ' the left side. The right side of the van came in contact with the rear left side of the Waymo AV. '
+        "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order '
+        '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
 }
 
 
@@ -73,3 +92,12 @@ def test_an_oncoming_party_passing_on_the_av_s_right_is_in_its_lane() -> None:
     # northwest: the oncoming lane is on the AV's left, so one on its right is in its own lane (R7, same).
     p = _party("nhtsa-sgo-ads-30270-10725-v1")
     assert (p.position, p.lane) == ("R7", "same")
+
+
+def test_coming_in_contact_and_coasting_into_the_av_are_contacts() -> None:
+    # "The right side of the van came in contact with the rear left side of the Waymo AV" ("in", not "into").
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-7935-v1"][1], "nhtsa-sgo-ads-30270-7935-v1")
+    assert (sk.collision.with_, sk.collision.type) == ("npc1", "side_swipe")
+    # "A vehicle approaching from behind coasted into the ego vehicle."
+    sk = extract(_SGO["nhtsa-sgo-ads-30413-10764-v1"][1], "nhtsa-sgo-ads-30413-10764-v1")
+    assert (sk.collision.with_, sk.collision.type) == ("npc1", "rear_end")

@@ -163,13 +163,13 @@ PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|u
 CONTACT = compile_gated(
     r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes?\s+contact|"
     r"(?:resulting\s+in|causing)\s+(?:a\s+)?(?:contact|collision)|contact\s+between|"
-    r"came\s+into\s+contact|(?:projected|thrown|threw|flung|propelled|launched|kicked\s+up)\s+(?:[\w-]+\s+){0,4}?(?:onto|into|at|against)\s+EGO\b|come\s+into\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
+    r"came\s+in(?:to)?\s+contact|(?:projected|thrown|threw|flung|propelled|launched|kicked\s+up)\s+(?:[\w-]+\s+){0,4}?(?:onto|into|at|against)\s+EGO\b|come\s+in(?:to)?\s+contact|contacted|contacting|struck|strikes|striking|hit|hits|hitting|"
     r"collided|colliding|collides|collision\s+with|impacted|impacting|bumped|bumping|clipped|clipping|"
     r"rear[- ]ended|side[- ]?swiped|sideswiped|scraped|scraping|brushed|touched|ran\s+over|running\s+over|"
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|scratched|nicked|"
     r"dinged|dented|"
     # (into the path, the street or traffic is where one went, not what one struck: "walked into the path of EGO")
-    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked)\s+into(?!\s+(?:the\s+|its\s+|"
+    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked|coasted)\s+into(?!\s+(?:the\s+|its\s+|"
     r"EGO's\s+)?(?:path|street|road|roadway|crosswalk|intersection|traffic|lane|travel\s+lane)\b)|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
     # a move that ends in a part of the AV: "reversed at a low speed from an adjacent driveway into the right rear
