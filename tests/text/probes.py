@@ -1615,9 +1615,17 @@ PROBES: tuple[Probe, ...] = (
           "front of the Zoox vehicle, making contact with its left front sensor.",
           ("proceeding southbound in the right lane on Sixth Street, yielding to", "proceeding southbound in the right "
            "lane on Sixth Street while yielding to", "traveling south on Sixth Street, yielding to",
-           "slowing on Sixth Street, yielding to", "moving slowly along Sixth Street, yielding to",
-           "driving south on Sixth Street and slowed when yielding to"),
+           "moving slowly along Sixth Street, yielding to", "driving south on Sixth Street and slowed when yielding to",
+           "traveling south on Sixth Street and slowing for", "proceeding south on Sixth Street and was slowing for"),
           _ego, ("moving", "ac")),
+    # The official gold's r376 ("was slowing and moving at approximately 2 mph ..., yielding to an oncoming vehicle",
+    # `c`): a slowing told under way, with no run told before it, opens the AV's string.
+    Probe("the AV's slowing told under way (what it was doing when the interaction began)",
+          "A Zoox vehicle was {w} a pedestrian. A truck in the left adjacent lane abruptly turned right and cut in "
+          "front of the Zoox vehicle, making contact with its left front sensor.",
+          ("slowing on Sixth Street, yielding to", "decelerating on Sixth Street, yielding to",
+           "slowing down on Sixth Street for", "braking for"),
+          _ego, ("moving", "c")),
     Probe("the AV yielding as what it was doing (standing, a turn not begun)",
           "The Waymo AV {w} a pedestrian in the crosswalk. A SUV approaching from behind the Waymo AV passed on the "
           "left side, making contact with the Waymo AV's rear left sensor housing.",
@@ -1678,7 +1686,9 @@ PROBES: tuple[Probe, ...] = (
            'after stopping at the stop sign',
            'after it had stopped'),
           _ego, ('stopped', 'i')),
-    Probe('the AV slowing to stop (a stop under way: moving, ah)',
+    # Session 14: the annotators read a stop told under way as the string's opener (study2 s213 "was slowing to a stop
+    # ... when", study3 30291-7677 "was coming to a stop as", `h`; the official gold's r376 slowing, `c`).
+    Probe('the AV slowing to stop (a stop under way: moving, h)',
           'A Pony.ai vehicle in autonomous mode was {w} for a red light on southbound Main Street. A '
           'motorcycle traveling behind the AV in the same lane was unable to stop and struck the rear bumper '
           'of the AV.',
@@ -1689,7 +1699,7 @@ PROBES: tuple[Probe, ...] = (
            'coming to a stop',
            'stopping',
            'slowing down to stop'),
-          _ego, ('moving', 'ah')),
+          _ego, ('moving', 'h')),
     Probe('the AV stopped behind a car waiting at the light, then following it (stopped, i)',
           'A Cruise AV was traveling northbound on Larkin Street. The Cruise AV {w} for the red light. When '
           'the light turned green, the Nissan proceeded through the intersection and the Cruise AV began to '

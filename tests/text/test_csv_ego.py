@@ -203,6 +203,29 @@ _CSV: dict[str, tuple[str, str]] = {
         "Cruise AV began to maneuver around and to the left of the ABL, the Cruise AV made contact with the arm "
         "of the ABL, which was elevated above the roadway. This caused damage to the Cruise AV’s roof Lidar "
         "assembly. There were no reported injuries."),
+    'csvr-zoox-20230211-s213': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 213, column 'Accident Detail Description'), transcribed",
+        "A Zoox vehicle in autonomous mode was slowing to a stop with brake lights illuminated behind traffic on "
+        "northbound 5th Street near Jesse Street when a vehicle behind made contact at approximately 10mph. There"
+        " were no injuries and police were not called."),
+    'csvr-waymo-20230506-s241': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 241, column 'Accident Detail Description'), transcribed",
+        "On May 6, 2023 at 8:48 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on Post Street at Webster Street. While "
+        "traveling west on Post Street, the Waymo AV was executing a pullover maneuver in autonomous mode and "
+        "made contact with the left rear bumper of a parked vehicle. At the time of the impact, the Waymo AV’s "
+        "Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage."),
+    'csvr-cruise-20230609-s250': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 250, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in driverless autonomous mode, was traveling "
+        "northbound on Harrison St. between 18th Street and 19th Street. As the Cruise AV was coming to a stop "
+        "for a stop sign at the intersection with 18th Street, a van approaching from the rear failed to stop "
+        "behind the Cruise AV and made contact with the Cruise AV's rear bumper, damaging the rear bumper of the "
+        "Cruise AV. Police and Emergency Medical Services were called and the Cruise AV was towed from the scene."
+        " The driver of the van was transported by Emergency Medical Services for further evaluation."),
 }
 
 
@@ -328,3 +351,15 @@ def test_a_relative_clause_after_the_av_s_object_is_not_the_av_s() -> None:
     text = ("The Cruise AV, which was stopped at a red light on Sacramento Street, was struck from behind by a "
             "sedan.")
     assert _ego("t", text) == ("stopped", "")
+
+
+def test_a_slowing_stop_or_pull_over_told_under_way_opens_the_string() -> None:
+    # "was slowing to a stop ... when a vehicle behind made contact": what the AV was doing when the interaction
+    # began, as a party's manoeuvre told under way is (sketch.md); no run before it (the annotators' `h`).
+    assert _ego("csvr-zoox-20230211-s213") == ("moving", "h")
+    # "While traveling west on Post Street, the Waymo AV was executing a pullover maneuver": the participle of the
+    # same sentence only describes it (`l`).
+    assert _ego("csvr-waymo-20230506-s241") == ("moving", "l")
+    # A run told first in a sentence of its own is kept: "was traveling eastbound ... As the Cruise AV was coming
+    # to a stop" (`ah`).
+    assert _ego("csvr-cruise-20230609-s250") == ("moving", "ah")

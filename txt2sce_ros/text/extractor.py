@@ -164,10 +164,6 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     ego_actions = moved_off_into_object(d, obstacles, ego_actions)
     ego_start, ego_actions = backed_into_object(d, obstacles, ego_start, ego_actions)
     d.ego_start = ego_start
-    if ego_start == "moving" and not ego_actions:
-        ego_actions = "a"  # moving with no manoeuvre told: it kept to its lane
-    elif ego_start == "moving" and ego_actions[0] in "bch":
-        ego_actions = "a" + ego_actions  # speeding up, slowing or stopping is done by a party already on its way
     ego_actions = stood_at_contact(d, ego_start, ego_actions)
     ego_heading = heading(d, -1)
     ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(

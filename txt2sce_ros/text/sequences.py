@@ -191,8 +191,8 @@ def opens_under_way(acts: list[Act], codes: str = "defgjF") -> tuple[list[Act], 
     was changing lanes to the left when") was doing it when the interaction began: its string opens with that letter
     (sketch.md), and a "traveling" told before it only describes the party. Returns the acts from that manoeuvre
     on, and whether the string opens under way. `codes`: the moves that may open a string; the extractor lets a
-    party's slowing do so too ("an SUV approaching from the left was slowing": `c...`), while the AV's slowing
-    keeps its run (`ac`), as the gold sketches read it."""
+    party's slowing do so too ("an SUV approaching from the left was slowing": `c...`), and `ego_sequence` the
+    AV's slowing, stop or pull-over ("was slowing to a stop ... when": `h`)."""
     k = next((k for k, a in enumerate(acts) if a.code not in "aA"), None)
     if k is None or not acts[k].under_way or acts[k].code not in codes:
         return acts, False
@@ -233,7 +233,18 @@ def _struck_from_behind(d: Doc) -> bool:
 def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first: bool = False) -> tuple[str, str]:
     """The AV's start state and actions: what it did before the interaction shrinks to its state then (stopped,
     or moving with the manoeuvre under way), then everything up to the contact. When another party opens the
-    interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green)."""
+    interaction, an AV that had stopped and then moved off starts "stopped" with "i" (moved off on green).
+    A moving AV's string opens with its run (`a`) unless its first manoeuvre was told already under way."""
+    start, actions, under_way = _ego_string(d, first_party_pos, party_first)
+    if start == "moving" and not actions:
+        return start, "a"  # moving with no manoeuvre told: it kept to its lane
+    if start == "moving" and actions[0] in "bch" and not under_way:
+        return start, "a" + actions  # speeding up, slowing or stopping is done by a party already on its way
+    return start, actions
+
+
+def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bool) -> tuple[str, str, bool]:
+    """`ego_sequence`'s reading, and whether the string opens with a manoeuvre told under way."""
     # A summary sentence still tells the AV's state ("was stopped ... when a vehicle reversed into it").
     acts = [a for a in d.acts if a.who == -1 and (a.sent not in d.summary or a.code == "S")
             and before_contact(d, a.sent, a.pos) and not _done_before(d, a)]
@@ -254,8 +265,18 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     told = [a for a in acts if a.sent not in d.summary]
     if told and told[0].code == "a" and told[0].under_way:
         acts = [a for a in acts if not (a.sent in d.summary and a.code == "S")]
+    # "A Zoox vehicle in autonomous mode was slowing to a stop ... when a vehicle behind made contact", "While
+    # traveling west on Post Street, the Waymo AV was executing a pullover maneuver and made contact": a slowing, a
+    # stop or a pull-over told already under way, as a party's is, was what the AV was doing when the interaction
+    # began; its string opens with it (sketch.md; the official gold's `c`, `l`). A run told first, in a sentence or
+    # a finite clause of its own, is kept ("was traveling eastbound. As the Cruise AV was coming to a stop": `ah`;
+    # "was traveling northbound and was slowing to turn": `ac`).
+    if not _finite_run_first(d, acts):
+        acts, opened = opens_under_way(acts, "chl")
+    else:
+        opened = False
     if first_party_pos is None:
-        return sequence(acts, stopped=False, ego=True, side=None)
+        return (*sequence(acts, stopped=False, ego=True, side=None), opened)
     fs, fp = first_party_pos
     clause_start = fp
     s = d.sents[fs]
@@ -278,8 +299,8 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     stops = [k for k, a in enumerate(pre) if a.code in ("h", "S")]
     if party_first and stops and any(a.code in ("a", "i", "b", "A") for a in pre[stops[-1] + 1:]):
         moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
-        return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
-                         side=None)
+        return (*sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + moves + post, stopped=True, ego=True,
+                          side=None), opened)
     waited = [k for k in stops if _waited(d, pre[k]) and k < stops[-1]]
     if waited and any(a.code in "aibAdefgjF" for a in pre[waited[-1] + 1:stops[-1]]):
         # "stopped at red light ... As the shuttle was crossing the intersection and slowing to a stop, the bus
@@ -289,8 +310,8 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         rest = [a for a in pre[waited[-1] + 1:] if a.code not in ("a", "A", "i", "S")]
         if rest and rest[0].code == "b":
             rest = rest[1:]  # "accelerated" away from where it waited is its moving off
-        return sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + rest + post, stopped=True, ego=True,
-                        side=None)
+        return (*sequence([Act(pre[-1].sent, pre[-1].pos, "i", -1, "")] + rest + post, stopped=True, ego=True,
+                          side=None), opened)
     if stops and pre[-1].code in "defgjF" and stops[-1] < len(pre) - 1:
         # Stopped, then moved off into a turn or lane change before the party comes in ("slowed and stopped behind
         # the arrow board, then began a lane change to the left"): a stop told as an event after a run keeps the
@@ -299,9 +320,9 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
         moves = [a for a in pre[stops[-1] + 1:] if a.code in "defgjklF"]
         went = Act(stop.sent, stop.pos, "i", -1, "")
         if any(a.code in ("a", "A") for a in pre[:stops[-1]]) and not _waited(d, stop):
-            return sequence([Act(stop.sent, stop.pos, "a", -1, ""), stop, went] + moves + post, stopped=False,
-                            ego=True, side=None)
-        return sequence([went] + moves + post, stopped=True, ego=True, side=None)
+            return (*sequence([Act(stop.sent, stop.pos, "a", -1, ""), stop, went] + moves + post, stopped=False,
+                              ego=True, side=None), opened)
+        return (*sequence([went] + moves + post, stopped=True, ego=True, side=None), opened)
     if pre:
         last = pre[-1]
         if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
@@ -313,8 +334,9 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             # behind made contact") met it as it stopped: the stop is told, `ah` (sketch.md's own example).
             prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code == "h" and last.under_way and not last.text.lower().startswith("yield"):
-            # "was slowing to stop for a red light when ...": a stop still under way is an event of an AV on its way
-            prefix = [Act(last.sent, last.pos, "a", -1, ""), last]
+            # "was traveling ... and was slowing to stop for a red light when ...": a stop still under way is an
+            # event of an AV on its way (one that opens the telling opens the string)
+            prefix = [last] if opened else [Act(last.sent, last.pos, "a", -1, ""), last]
         elif last.code == "h" and not _waited(d, last) and _stopped_for_partner(d, last):
             # "EGO came to a stop in the parking lot while yielding to ... an oncoming pickup truck", which then
             # struck it: the AV stopped for the very party it met, so the interaction began while it was on its way.
@@ -356,8 +378,20 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
             prefix = [run, pre[k], last]
         else:
             prefix = [Act(last.sent, last.pos, "a", -1, "")]
-    return sequence(prefix + post, stopped=stopped, ego=True, side=None)
+    return (*sequence(prefix + post, stopped=stopped, ego=True, side=None), opened)
 
+
+
+_FINITE_BEFORE = compile_gated(r"\b(?:was|were|had\s+been)\s+(?:\w+ly\s+)?$", re.I)
+
+
+def _finite_run_first(d: Doc, acts: list[Act]) -> bool:
+    """Is the AV's run, told before its first manoeuvre in the same sentence, a finite verb of its own clause
+    ("was traveling northbound and was slowing"), not a participle that only describes it ("While traveling west
+    ..., the AV was executing a pullover")?"""
+    k = next((k for k, a in enumerate(acts) if a.code not in "aA"), None)
+    return k is not None and any(a.sent == acts[k].sent and _FINITE_BEFORE.search(d.sents[a.sent][:a.pos])
+                                 for a in acts[:k])
 
 # "After completing a right turn onto Taraval, ...", "After EGO made a right turn from Pleasant Street, ...", "had made
 # a right turn from Oakdell Rd.": a turn told as done before the clause that tells the story.
