@@ -9,7 +9,7 @@ import re
 import pytest
 
 from txt2sce_ros.paths import shared_dir
-from txt2sce_ros.text.fastre import Gated, end_gate, factors_of, folded, gate, twin, word_scanner, wordcase
+from txt2sce_ros.text.fastre import Gated, LazyPattern, build_all, end_gate, factors_of, folded, gate, twin, word_scanner, wordcase
 from txt2sce_ros.text.mentions import normalise, sentences
 
 _MODULES = ("lexicon", "mentions", "actions", "story", "sequences", "scene")
@@ -30,6 +30,8 @@ def _gated_patterns() -> list[tuple[str, Gated]]:
             for k, item in enumerate(items):
                 if isinstance(item, tuple) and len(item) == 2:
                     item = item[1]
+                if isinstance(item, LazyPattern):
+                    item = item.built()
                 if isinstance(item, Gated):
                     out.append((f"{name}.{key}[{k}]", item))
     return out
@@ -271,3 +273,24 @@ def test_word_scanner_matches_as_the_original() -> None:
             assert [m.span() for m in g.finditer(t)] == want and g.sub("#", t) == rx.sub("#", t), (pat, t)
             assert [m.span() for m in g.finditer(t, 3)] == [m.span() for m in rx.finditer(t, 3)], (pat, t)
     assert words >= 5
+
+
+def test_patterns_are_built_on_first_use_and_then_cost_nothing_extra() -> None:
+    import subprocess
+    import sys
+
+    # A cold import builds none of the extractor's patterns (that was most of a cold `txt2sce extract`) ...
+    code = ("import txt2sce_ros.text.extractor; from txt2sce_ros.text import fastre; "
+            "live = list(fastre._LAZY); print(len(live), sum(p._built is not None for p in live))")
+    made, built = map(int, subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                                          check=True).stdout.split())
+    assert made >= 200 and built == 0
+    # ... every one of them compiles (a malformed pattern must not wait for the narrative that reaches it) ...
+    assert build_all() >= 200
+    # ... and once built, a lazy pattern's methods are the built pattern's own.
+    lp = LazyPattern(r"\bstruck\s+the\s+(rear|side)\b", re.I)
+    assert lp.groups == 1 and "search" in vars(lp)
+    assert lp.search.__self__ is lp.built()  # type: ignore[attr-defined]
+    m = lp.search("A car struck the rear bumper")
+    assert m is not None and m.group(1) == "rear"
+    assert lp.sub("X", "it struck the side") == "it X"

@@ -25,6 +25,7 @@ rules that write their pattern inline (cached, as `re` caches).
 from __future__ import annotations
 
 import re
+import weakref
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -931,8 +932,73 @@ def gate(rx: re.Pattern[str]) -> re.Pattern[str]:
 
 
 def compile_gated(pattern: str, flags: int = 0) -> re.Pattern[str]:
-    """`re.compile` + `gate`."""
-    return gate(re.compile(pattern, flags))
+    """`re.compile` + `gate`, done on first use (`LazyPattern`): the extractor's modules define a few hundred
+    patterns at import, and building them all cost most of a cold `txt2sce extract`."""
+    return LazyPattern(pattern, flags)  # type: ignore[return-value]
+
+
+_METHODS = ("search", "match", "fullmatch", "finditer", "findall", "sub", "split")
+#: Every live lazy pattern, so a test can build them all (a malformed pattern must not wait for the narrative that
+#: reaches it) and `build_all` can warm a process that forks workers. Weak: patterns made per operator name and
+#: dropped from their cache must not live on here.
+_LAZY: "weakref.WeakSet[LazyPattern]" = weakref.WeakSet()
+
+
+class LazyPattern:
+    """A pattern that is compiled and gated (`gate`) the first time it is used. The first call of any method
+    builds it and puts the built pattern's own bound methods on the instance, where they shadow the class's: every
+    later call costs what a call of the built pattern costs. `pattern` and `flags` are there from the start."""
+
+    def __init__(self, pattern: str, flags: int = 0) -> None:
+        self.pattern = pattern
+        self.flags = flags
+        self._built: re.Pattern[str] | None = None
+        _LAZY.add(self)
+
+    def built(self) -> re.Pattern[str]:
+        """The compiled, gated pattern (a `Gated` or a plain `re.Pattern`), built now if it was not yet."""
+        b = self._built
+        if b is None:
+            b = self._built = gate(re.compile(self.pattern, self.flags))
+            for name in _METHODS:
+                setattr(self, name, getattr(b, name))
+        return b
+
+    @property
+    def groups(self) -> int:
+        return self.built().groups
+
+    def search(self, *a: Any) -> re.Match[str] | None:
+        return self.built().search(*a)
+
+    def match(self, *a: Any) -> re.Match[str] | None:
+        return self.built().match(*a)
+
+    def fullmatch(self, *a: Any) -> re.Match[str] | None:
+        return self.built().fullmatch(*a)
+
+    def finditer(self, *a: Any) -> Iterator[re.Match[str]]:
+        return self.built().finditer(*a)
+
+    def findall(self, *a: Any) -> list[Any]:
+        return self.built().findall(*a)
+
+    def sub(self, *a: Any) -> str:
+        return self.built().sub(*a)
+
+    def split(self, *a: Any) -> list[str]:
+        return self.built().split(*a)
+
+    def __repr__(self) -> str:
+        return f"LazyPattern({self.pattern!r}, {self.flags!r}, built={self._built is not None})"
+
+
+def build_all() -> int:
+    """Build every lazy pattern made so far (before forking workers, or in a test); how many there are."""
+    live = list(_LAZY)
+    for lp in live:
+        lp.built()
+    return len(live)
 
 
 # `re`'s module functions over gated, folded patterns, for the extractor's rules that name their pattern inline.
@@ -952,7 +1018,7 @@ def _cached(pattern: str, flags: int) -> re.Pattern[str]:
     if rx is None:
         if len(_CACHE) >= _CACHE_MAX:
             _CACHE.clear()
-        rx = _CACHE[key] = compile_gated(pattern, flags)
+        rx = _CACHE[key] = gate(re.compile(pattern, flags))  # used at once: no lazy wrapper
     return rx
 
 

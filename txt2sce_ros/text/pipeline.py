@@ -82,7 +82,11 @@ def run_batch(inputs: Iterable[ReportInput | ErrorRecord], *, workers: int = 1,
             import multiprocessing as mp
             from concurrent.futures import ProcessPoolExecutor
 
-            # fork: the workers start with the extractor already imported and its patterns compiled.
+            # fork: the workers start with the extractor already imported and its patterns compiled (built here
+            # first: they are compiled on first use, and each worker would otherwise build its own).
+            from .fastre import build_all
+
+            build_all()
             ctx = mp.get_context("fork") if "fork" in mp.get_all_start_methods() else None
             with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
                 yield from pool.map(partial(_one, **kw), items, chunksize=_CHUNK)
