@@ -17,6 +17,19 @@ _SGO: dict[str, tuple[str, str]] = {
         " stop as the traffic signal changed from yellow to red. Shortly after the light turned red, a passenger "
         "vehicle rear-ended the Nuro Prius. No injuries were reported at the scene and law enforcement were not "
         "involved. Both vehicles sustained minimal damage."),
+    'nhtsa-sgo-ads-30270-10598-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10598, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 7:34 AM CST a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Austin, Texas "
+        "was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stopped facing east in "
+        "the right turn lane on [XXX] for a red traffic light at the intersection with [XXX]. The Waymo AV began "
+        "to slowly proceed forward and came to a stop to gain visibility of oncoming traffic traveling southbound"
+        " on [XXX] in preparation for a right turn on red. A passenger car, which was initially stopped directly "
+        "behind the Waymo AV, proceeded forward and the front of the passenger car made contact with the rear of "
+        "the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous"
+        " mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
+        "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
+        "may become available."),
 }
 
 
@@ -29,3 +42,9 @@ def test_a_stop_told_under_way_opens_the_string() -> None:
     # "The Nuro Prius was coming to a stop as the traffic signal changed": the stop was under way when the
     # interaction began (`h`, not `ah`).
     assert _ego("nhtsa-sgo-ads-30291-7677-v1") == ("moving", "h")
+
+
+def test_a_participle_after_traffic_is_the_traffic_s_move() -> None:
+    # "came to a stop to gain visibility of oncoming traffic traveling southbound": the travelling is the traffic's,
+    # not the AV's; the AV moved off from the red and stopped again (`ih`).
+    assert _ego("nhtsa-sgo-ads-30270-10598-v1") == ("stopped", "ih")

@@ -537,6 +537,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
                                             r"(?:that\s+(?:were|was|had)\s+(?:been\s+)?)?$", before, re.I):
             continue  # "a line of vehicles stopped at a red light": a group's state, not the subject's
+        if fre.search(r"\btraffic\s+$", before) and fre.match(r"\w+ing\b", s[b:e]):
+            continue  # "to gain visibility of oncoming traffic traveling southbound": traffic's move, no party's
         if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
                 fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
             continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
