@@ -30,6 +30,17 @@ _SGO: dict[str, tuple[str, str]] = {
         " mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
         "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
         "may become available."),
+    'nhtsa-sgo-ads-30270-9486-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9486,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On December [XXX], 2024 at 12:28 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco,"
+        " California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling"
+        " on northbound [XXX] and slowed down to a stop for a queue of traffic. A passenger car approached the "
+        "Waymo AV from behind,and the front of the passenger car made contact with the rear of the Waymo AV. At "
+        "the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
+        "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional"
+        " information as it may become available."),
 }
 
 
@@ -48,3 +59,9 @@ def test_a_participle_after_traffic_is_the_traffic_s_move() -> None:
     # "came to a stop to gain visibility of oncoming traffic traveling southbound": the travelling is the traffic's,
     # not the AV's; the AV moved off from the red and stopped again (`ih`).
     assert _ego("nhtsa-sgo-ads-30270-10598-v1") == ("stopped", "ih")
+
+
+def test_slowed_down_to_a_stop_is_a_stop() -> None:
+    # "was traveling on northbound [XXX] and slowed down to a stop for a queue of traffic": a run, then the stop
+    # (`ah`), as "slowed to a stop" is.
+    assert _ego("nhtsa-sgo-ads-30270-9486-v1") == ("moving", "ah")

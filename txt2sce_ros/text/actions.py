@@ -19,6 +19,8 @@ from .lexicon import CARDINALS
 from .mentions import Mention
 
 _DIR = r"(?:north|south|east|west|northeast|northwest|southeast|southwest)"
+#: After "turn": the name of a lane, a light or a lamp ("left turn lane", "right turn signal"), not a turn made.
+_NOT_A_TURN = r"(?!\s+(?:lane|signal|indicator|pocket|arrow|light|only|bay))"
 
 #: (code, regex). "X" codes are resolved by context: "S" = the party's state became stopped.
 PHRASES: tuple[tuple[str, str], ...] = (
@@ -70,7 +72,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("c", r"\b(?:did\s+not|didn't|failed\s+to|fail(?:s|ing)\s+to)\s+(?:(?:come|came|coming)\s+to\s+(?:a\s+)?"
           r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
-          r"slow(?:ed|ing|s)?\s+to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
+          r"slow(?:ed|ing|s)?\s+(?:down\s+)?to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
           r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
           r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
@@ -201,11 +203,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"shift|steer)\w*\s+(?:over\s+|back\s+|out\s+)?(?:directly\s+|right\s+|just\s+|immediately\s+|suddenly\s+)?"
           r"(?:in\s+front\s+of\s+EGO\b|into\s+(?:EGO's|our)\s+path\b)|\bcut(?:s|ting)?\s+EGO\s+off\b"),
     ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
-          r"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn(?!\s+(?:lane|signal|indicator|"
-          r"pocket|arrow|light|only|bay))\b|\bunprotected\s+left\b(?!\s+turn\s+lane)"),
+          rf"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn{_NOT_A_TURN}\b|"
+          r"\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+right\b(?!\s+lane)|"
-          r"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn(?!\s+(?:lane|signal|indicator|"
-          r"pocket|arrow|light|only|bay))\b|\bwide\s+right\b"),
+          rf"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn{_NOT_A_TURN}\b|\bwide\s+right\b"),
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
     # Into a driveway, a lot or a garage off the road is a turn whose side the sentence or the contact tells
     # (sequences.ego_sequence resolves it for the AV; a party's is left to its other words).
