@@ -41,6 +41,18 @@ _SGO: dict[str, tuple[str, str]] = {
         "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
         "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional"
         " information as it may become available."),
+    'nhtsa-sgo-ads-30270-8130-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8130,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On June [XXX], 2024 at 1:33 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California "
+        "was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling southwest "
+        "on [XXX] in the dedicated left turn lane. The Waymo activated its turn signal and began a lane change "
+        "into the right thru lane where there was a gap in a slow-moving traffic stack. The passenger car that "
+        "was behind the gap in the traffic stack accelerated as the Waymo AV began merging and the front driver "
+        "side corner of the passenger car made contact with the rear passenger side corner of the Waymo AV. At "
+        "the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
+        "Waymo may supplement or correct its reporting with additional information as it may become available."),
 }
 
 
@@ -65,3 +77,11 @@ def test_slowed_down_to_a_stop_is_a_stop() -> None:
     # "was traveling on northbound [XXX] and slowed down to a stop for a queue of traffic": a run, then the stop
     # (`ah`), as "slowed to a stop" is.
     assert _ego("nhtsa-sgo-ads-30270-9486-v1") == ("moving", "ah")
+
+
+def test_a_lane_change_told_again_without_its_side_is_the_one_told() -> None:
+    # "began a lane change into the right thru lane where there was a gap in a slow-moving traffic stack. The
+    # passenger car ... accelerated as the Waymo AV began merging": "slow-moving" is the traffic stack's adjective
+    # (no run of the AV's after the lane change), and "began merging" is the lane change to the right told again
+    # (`ag`, not `af`).
+    assert _ego("nhtsa-sgo-ads-30270-8130-v1") == ("moving", "ag")

@@ -549,6 +549,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                                       before, re.I):
             continue  # "During the lane change, ...": the move told before, named again
         inside = [m for m in ments if m.kind == "party" and m.start <= b < m.end and m.entity >= 0]
+        if code == "a" and before.endswith("-") and not inside:
+            continue  # "a gap in a slow-moving traffic stack", "the self-driving system": an adjective, no party's move
         # "the approaching vehicle", "a jaywalking pedestrian": a participle in the noun phrase is its own move;
         # "a scooterist traveling north", "a cyclist that had been traveling behind": so is a relative clause.
         left = [m for m in ments if m.end <= b]

@@ -37,7 +37,12 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "F"
         if c == "F" and codes and codes[-1] == "m" and not ego:
             continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
-        if c == "F":
+        told = next((x for x in reversed(codes) if x != "a"), "")
+        if c == "F" and ego and told in ("f", "g"):
+            # "began a lane change into the right thru lane ... as the Waymo AV began merging": the AV's lane change
+            # told again without its side is the one just told
+            c = told
+        elif c == "F":
             c = "f" if (ego or side != "left") else "g"
             if fre.search(r"around", a.text, re.I) and not ego:
                 c = "f"
