@@ -60,7 +60,8 @@ _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|b
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
-                     r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b", re.I)
+                     r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b|"
+                     r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b", re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
@@ -218,6 +219,13 @@ TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|ha
                              r"went|cycled)\s+(?:to\s+)?green\b", re.I)
 
 
+# A red light named as such (not "a red sedan"): "a red light", "the red traffic signal", "a right-on-red", "turned red".
+_RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b|"
+                           r"\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b", re.I)
+_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic\s+)?(?:light|signal)\b", re.I)
+_COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
+
+
 def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving") -> str:
     """The AV's light when its actions begin."""
     if not layout.startswith("junction") and layout != "roundabout":
@@ -233,6 +241,11 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         return "red"
     if fre.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
         return "green"
+    if ego_start == "stopped" and (_RED_LIGHT.search(t) or (_AT_A_LIGHT.search(t) and not _COLOUR.search(t))):
+        # An AV standing when the interaction began, in a story that names a red light (or stands it at a light
+        # of no told colour: "was stopped at a traffic light"), stood at that red (sketch.md: it is the AV's
+        # signal when its actions begin, even if it then moved off on green).
+        return "red"
     for colour in ("green", "yellow", "red"):
         if fre.search(rf"\b{colour}\b", t, re.I):
             return colour

@@ -1,0 +1,74 @@
+"""Issue 13, the AV's signal (`signal_state`) and its approach's control, read from real narratives the rules were
+not written from: California DMV reports (tests/text/csvr/study2.jsonl) and NHTSA SGO reports
+(tests/text/sgo/study3.jsonl), each row's `source` beside its text. Each test fails if its rule is removed.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.text.extractor import extract
+
+# id -> (source, narrative)
+_TEXTS: dict[str, tuple[str, str]] = {
+    'csvr-cruise-20211211-s119': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 119, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (\"Cruise AV\"), operating in supervised autonomous mode, was at a complete "
+        "stop in response to a red light on northbound Larkin Street at the intersection with Turk Street. The "
+        "Cruise AV entered the intersection on a green light and continued straight when a cyclist traveling "
+        "eastbound on Turk Street entered the crosswalk. The Cruise AV braked to the cyclist and, shortly "
+        "thereafter, another vehicle traveling behind the Cruise AV made contact with the Cruise AV's rear "
+        "bumper, damaging the rear left bumper. The driver of the other vehicle left the scene without exchanging"
+        " information. There were no injuries and police were not called."),
+    'csvr-zoox-20220205-s130': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 130, column 'Accident Detail Description'), transcribed",
+        "A Zoox vehicle in autonomous mode was stopped at a traffic light on Brannan Street at 7th Street when a "
+        "passenger vehicle hit the Zoox vehicle from behind. The passenger vehicle left the scene without "
+        "exchanging information. There were no injuries and the police were not called."),
+    'nhtsa-sgo-ads-30413-10764-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30413-10764, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "A May autonomous shuttle (ego) was stopped at a traffic light in autonomous mode. A vehicle approaching "
+        "from behind coasted into the ego vehicle. Our system responded with a software Health Drop, which "
+        "immediately took the ego out of autonomous mode (for safety). Minor damage was reported to our rear "
+        "sensor and bumper."),
+    'csvr-waymo-20191014-s37': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 37, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on westbound Cuesta Drive at S. "
+        "San Antonio Road in Los Altos when it was rear-ended. The Waymo AV was preparing to make a right-on-red "
+        "from Cuesta Drive onto northbound S. San Antonio Road and was yielding to cross-traffic when a passenger"
+        " vehicle made contact with the Waymo AV's rear bumper at approximately 3 MPH. The Waymo AV sustained "
+        "minor damage to its rear bumper, and the passenger vehicle sustained no damage to its front bumper. No "
+        "injuries were reported."),
+    'csvr-waymo-20191016-s38': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 38, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on northbound Distel Drive at El "
+        "Camino Real in Los Altos when it was rear-ended. The Waymo AV was preparing to make a right-on-red from "
+        "Distel Drive onto eastbound El Camino Real and was yielding to cross-traffic when a passenger vehicle "
+        "made contact with the Waymo AV’s rear bumper at approximately 1 MPH. The Waymo AV sustained minor damage"
+        " to its rear bumper, and the passenger vehicle sustained minor damage to its front bumper. No injuries "
+        "were reported."),
+}
+
+
+def _signal(report_id: str) -> tuple[str, str]:
+    sk = extract(_TEXTS[report_id][1], report_id)
+    return sk.road.control, sk.signal_state
+
+
+def test_a_standing_av_in_a_story_of_a_red_light_stood_at_red() -> None:
+    # "was at a complete stop in response to a red light ... The Cruise AV entered the intersection on a green
+    # light": the AV's signal when its actions began was the red it stood at (sketch.md), though green is named.
+    assert _signal("csvr-cruise-20211211-s119") == ("signal", "red")
+    # "was stopped at a traffic light" with no colour told: a light the AV stands at is red (the annotators' reading
+    # in both study sets).
+    assert _signal("csvr-zoox-20220205-s130") == ("signal", "red")
+    assert _signal("nhtsa-sgo-ads-30413-10764-v1") == ("signal", "red")
+
+
+def test_a_right_on_red_is_a_signal_and_a_red() -> None:
+    # "was preparing to make a right-on-red ... and was yielding to cross-traffic": a signalised approach, at red.
+    assert _signal("csvr-waymo-20191014-s37") == ("signal", "red")
+    assert _signal("csvr-waymo-20191016-s38") == ("signal", "red")
