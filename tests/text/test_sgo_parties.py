@@ -68,6 +68,27 @@ _SGO: dict[str, tuple[str, str]] = {
         'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order '
         '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
         'available.'),
+    'csvr-pony.ai-20220517-s159': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 159, column 'Accident Detail Description'), transcribed",
+        'On May 17, 2022, a passenger vehicle reversed out of a parking spot into a Pony.ai autonomous '
+        'testing vehicle’s rear bumper. At the time of the collision, the Pony.ai vehicle was operating in '
+        'autonomous mode with a safety operator in the driver’s seat and was moving at a low speed. The '
+        'Pony.ai vehicle did not sustain any damage. There were no injuries or property damage, the police '
+        'were not called to the scene, and a Pony.ai employee drove the Pony.ai vehicle back to Pony.ai’s '
+        'Irvine facility.'),
+    'nhtsa-sgo-ads-30270-9540-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9540,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December[XXX], 2024 at 8:21 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV'
+        ' had pulled up to the curb facing northbound on [XXX] for a requested passenger pickup. While '
+        'awaiting the passenger, the Waymo AV was partially obstructing access to a residential garage and a '
+        'passenger car began reversing out of the garage and the rear driver side of the passenger car made '
+        "contact with the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AV's "
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
 }
 
 
@@ -101,3 +122,12 @@ def test_coming_in_contact_and_coasting_into_the_av_are_contacts() -> None:
     # "A vehicle approaching from behind coasted into the ego vehicle."
     sk = extract(_SGO["nhtsa-sgo-ads-30413-10764-v1"][1], "nhtsa-sgo-ads-30413-10764-v1")
     assert (sk.collision.with_, sk.collision.type) == ("npc1", "rear_end")
+
+
+def test_a_party_out_of_a_driveway_garage_or_parking_space_comes_from_the_curb_side() -> None:
+    # "a passenger vehicle reversed out of a parking spot into a Pony.ai autonomous testing vehicle's rear bumper":
+    # no side named; parking spots line the curb, on the AV's right.
+    p = _party("csvr-pony.ai-20220517-s159")
+    assert (p.position, p.lane, p.start, p.actions) == ("R6", "right", "stopped", "k")
+    # "a passenger car began reversing out of the garage" (the AV at the curb beside it): on its right too.
+    assert _party("nhtsa-sgo-ads-30270-9540-v1").lane == "right"

@@ -425,6 +425,10 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
 _TAIL_END = compile_gated(r"\brear\s+(?:quarter|bumper|corner|end|fender|wheel|tire|light)|\btail(?:light|gate)?\b|"
                           r"\bback\s+(?:bumper|corner)", re.I)
 _REAR_DOOR = compile_gated(r"\brear\s+(?:\w+\s+){0,2}door", re.I)
+# Leaving a place off the roadway that lines the curb: "reversed out of a parking spot", "exiting a driveway".
+_OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
+                                 r"(?:a|an|the|its|their)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|carport|parking\s+"
+                                 r"(?:lot|space|spot|stall|garage|structure))\b", re.I)
 _LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent)\b", re.I)
 
 
@@ -525,6 +529,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # passing or splitting lanes was beside the AV on the side it touched.
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
+    if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(context(d, e)) and \
+            not fre.search(r"\b(?:left|right)\b", context(d, e), re.I):
+        # Out of a driveway, garage or parking space, no side named ("a passenger vehicle reversed out of a parking
+        # spot into EGO's rear bumper"): those places line the curb, on the AV's right (right-hand traffic).
+        lane, rule = "right", rule + "; out of a curbside place"
     if pos == "R5" and lane in ("left", "right") and not along and contact is not None and \
             fore == "rear" and cside in ("", lane) and not backing and \
             not any(a.who == e.idx and a.code == "i" for a in d.acts) and \
