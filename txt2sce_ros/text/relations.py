@@ -530,9 +530,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
     if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(context(d, e)) and \
-            not fre.search(r"\b(?:left|right)\b", context(d, e), re.I):
+            not fre.search(r"\b(?:left|right)\b", context(d, e), re.I) and \
+            not any(c.kind == "along" and c.value == "ahead" for c in cues):
         # Out of a driveway, garage or parking space, no side named ("a passenger vehicle reversed out of a parking
-        # spot into EGO's rear bumper"): those places line the curb, on the AV's right (right-hand traffic).
+        # spot into EGO's rear bumper"): those places line the curb, on the AV's right (right-hand traffic). One
+        # said to be in front of the AV ("reversing out of an angled parking space in front of EGO") is in its path.
         lane, rule = "right", rule + "; out of a curbside place"
     if pos == "R5" and lane in ("left", "right") and not along and contact is not None and \
             fore == "rear" and cside in ("", lane) and not backing and \
