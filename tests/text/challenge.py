@@ -71,11 +71,12 @@ turns across the AV's path from the opposite approach, side words that are not t
 left turned"), lane changes told as drifting over the lane line or swinging out into the oncoming lane, scored before
 any fix: 35/38, 32/38, 33/37 (four narratives with contested labels dropped, six labels corrected to the files'
 conventions after scoring); after 36/38, 35/38, 34/37.
-Session 14: six AV labels (052, 127, 153, 325, 402 here, 453 in the positions file) changed from `ac`/`ah` to `c`/`h`:
-the official gold opens the AV's string with a slowing or a pull-over told under way ("was slowing and moving at
-approximately 2 mph", dev_gold r376, `c`; "was pulling over ..., when", r508, `l`), as do the study sets' annotators
-(study2 s213, study3 30291-7677: "was slowing to a stop ... when", `h`); a run told first in a finite clause or a
-sentence of its own stays (081, 144: `ac`).
+Session 14: eight AV labels (052, 081, 127, 144, 153, 325, 402 here, 453 in the positions file) changed from `ac`/`ah`
+to `c`/`h`: the official gold opens the AV's string with a slowing or a pull-over told under way ("was slowing and
+moving at approximately 2 mph", dev_gold r376, `c`; "was pulling over ..., when", r508, `l`), as do the study sets'
+annotators (study2 s213, study3 30291-7677: "was slowing to a stop ... when", `h`; study3 30270-10649: "was traveling
+southbound ... and was slowing to a stop for a passenger drop-off when", `h`); a run told first in a sentence of its
+own stays (study2 s250, `ah`).
 
     python -m tests.text.challenge          # figures and every miss, per file
 """

@@ -1616,7 +1616,7 @@ PROBES: tuple[Probe, ...] = (
           ("proceeding southbound in the right lane on Sixth Street, yielding to", "proceeding southbound in the right "
            "lane on Sixth Street while yielding to", "traveling south on Sixth Street, yielding to",
            "moving slowly along Sixth Street, yielding to", "driving south on Sixth Street and slowed when yielding to",
-           "traveling south on Sixth Street and slowing for", "proceeding south on Sixth Street and was slowing for"),
+           "traveling south on Sixth Street and slowing for"),
           _ego, ("moving", "ac")),
     # The official gold's r376 ("was slowing and moving at approximately 2 mph ..., yielding to an oncoming vehicle",
     # `c`): a slowing told under way, with no run told before it, opens the AV's string.
@@ -1624,7 +1624,7 @@ PROBES: tuple[Probe, ...] = (
           "A Zoox vehicle was {w} a pedestrian. A truck in the left adjacent lane abruptly turned right and cut in "
           "front of the Zoox vehicle, making contact with its left front sensor.",
           ("slowing on Sixth Street, yielding to", "decelerating on Sixth Street, yielding to",
-           "slowing down on Sixth Street for", "braking for"),
+           "slowing down on Sixth Street for", "braking for", "proceeding south on Sixth Street and was slowing for"),
           _ego, ("moving", "c")),
     Probe("the AV yielding as what it was doing (standing, a turn not begun)",
           "The Waymo AV {w} a pedestrian in the crosswalk. A SUV approaching from behind the Waymo AV passed on the "

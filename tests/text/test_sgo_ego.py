@@ -53,6 +53,18 @@ _SGO: dict[str, tuple[str, str]] = {
         "the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles "
         "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
         "Waymo may supplement or correct its reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-10649-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10649, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 8:48 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling "
+        "southbound on a narrow portion of [XXX] and was slowing to a stop for a passenger drop-off when a "
+        "passenger car traveling southbound on [XXX] began passing the Waymo AV. As the passenger car passed the "
+        "Waymo AV, the passenger side of the passenger car made contact with the rear driver side of the Waymo "
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV "
+        "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
+        "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional"
+        " information as it may become available."),
 }
 
 
@@ -65,6 +77,9 @@ def test_a_stop_told_under_way_opens_the_string() -> None:
     # "The Nuro Prius was coming to a stop as the traffic signal changed": the stop was under way when the
     # interaction began (`h`, not `ah`).
     assert _ego("nhtsa-sgo-ads-30291-7677-v1") == ("moving", "h")
+    # So after a run told in the same sentence: "was traveling southbound on a narrow portion of [XXX] and was
+    # slowing to a stop for a passenger drop-off when a passenger car ... began passing" (`h`).
+    assert _ego("nhtsa-sgo-ads-30270-10649-v1") == ("moving", "h")
 
 
 def test_a_participle_after_traffic_is_the_traffic_s_move() -> None:

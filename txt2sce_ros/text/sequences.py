@@ -273,13 +273,11 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # "A Zoox vehicle in autonomous mode was slowing to a stop ... when a vehicle behind made contact", "While
     # traveling west on Post Street, the Waymo AV was executing a pullover maneuver and made contact": a slowing, a
     # stop or a pull-over told already under way, as a party's is, was what the AV was doing when the interaction
-    # began; its string opens with it (sketch.md; the official gold's `c`, `l`). A run told first, in a sentence or
-    # a finite clause of its own, is kept ("was traveling eastbound. As the Cruise AV was coming to a stop": `ah`;
-    # "was traveling northbound and was slowing to turn": `ac`).
-    if not _finite_run_first(d, acts):
-        acts, opened = opens_under_way(acts, "chl")
-    else:
-        opened = False
+    # began; its string opens with it (sketch.md; the official gold's `c`, `l`), as it does after a run told in the
+    # same sentence ("was traveling southbound ... and was slowing to a stop for a passenger drop-off when": `h`).
+    # A run told first in a sentence of its own is kept ("was traveling eastbound. As the Cruise AV was coming to
+    # a stop": `ah`).
+    acts, opened = opens_under_way(acts, "chl")
     if first_party_pos is None:
         return (*sequence(acts, stopped=False, ego=True, side=None), opened)
     fs, fp = first_party_pos
@@ -386,17 +384,6 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     return (*sequence(prefix + post, stopped=stopped, ego=True, side=None), opened)
 
 
-
-_FINITE_BEFORE = compile_gated(r"\b(?:was|were|had\s+been)\s+(?:\w+ly\s+)?$", re.I)
-
-
-def _finite_run_first(d: Doc, acts: list[Act]) -> bool:
-    """Is the AV's run, told before its first manoeuvre in the same sentence, a finite verb of its own clause
-    ("was traveling northbound and was slowing"), not a participle that only describes it ("While traveling west
-    ..., the AV was executing a pullover")?"""
-    k = next((k for k, a in enumerate(acts) if a.code not in "aA"), None)
-    return k is not None and any(a.sent == acts[k].sent and _FINITE_BEFORE.search(d.sents[a.sent][:a.pos])
-                                 for a in acts[:k])
 
 # "After completing a right turn onto Taraval, ...", "After EGO made a right turn from Pleasant Street, ...", "had made
 # a right turn from Oakdell Rd.": a turn told as done before the clause that tells the story.
