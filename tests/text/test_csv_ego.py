@@ -226,6 +226,19 @@ _CSV: dict[str, tuple[str, str]] = {
         "behind the Cruise AV and made contact with the Cruise AV's rear bumper, damaging the rear bumper of the "
         "Cruise AV. Police and Emergency Medical Services were called and the Cruise AV was towed from the scene."
         " The driver of the van was transported by Emergency Medical Services for further evaluation."),
+    'dmvca-zoox-20220823-r376': (
+        "github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 376, column "
+        "\"Accident Detail Description\")",
+        "A Zoox vehicle in autonomy had made a right turn from Oakdell Rd. onto Santa Cruz Ave. in Menlo Park, CA"
+        " and was preparing to make an immediate, unprotected left turn onto Sharon Road. The Zoox vehicle was "
+        "slowing and moving at approximately 2 mph with its brake lamps and left turn indicator illuminated, "
+        "yielding to an oncoming vehicle with the right of way. A following vehicle - traveling at approximately "
+        "24 mph - then struck the Zoox vehicle's right rear bumper, and that vehicle's driver airbag appeared to "
+        "have deployed on impact. The Zoox operator disengaged autonomy, proceeded with the left turn, and pulled"
+        " over. The following vehicle continued its path of travel, veered out of the lane, and collided with a "
+        "tree on the left side of the road. The Menlo Park Police Department was called to the scene. Two Zoox "
+        "operators sustained minor injuries and it is unknown if the driver of the other vehicle sustained "
+        "injuries."),
 }
 
 
@@ -363,3 +376,10 @@ def test_a_slowing_stop_or_pull_over_told_under_way_opens_the_string() -> None:
     # A run told first in a sentence of its own is kept: "was traveling eastbound ... As the Cruise AV was coming
     # to a stop" (`ah`).
     assert _ego("csvr-cruise-20230609-s250") == ("moving", "ah")
+
+
+def test_a_slowing_told_under_way_with_its_description_opens_the_string() -> None:
+    # The official gold's r376: "was preparing to make an immediate, unprotected left turn" (planned), then "The
+    # Zoox vehicle was slowing and moving at approximately 2 mph ..., yielding to an oncoming vehicle": the slowing
+    # opens the string; "moving at 2 mph" only describes it (`c`).
+    assert _ego("dmvca-zoox-20220823-r376") == ("moving", "c")

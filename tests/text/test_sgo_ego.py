@@ -65,6 +65,19 @@ _SGO: dict[str, tuple[str, str]] = {
         "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
         "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional"
         " information as it may become available."),
+    'nhtsa-sgo-ads-30270-10668-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10668, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 10:41 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving a pickup truck on [XXX] at [XXX]. The Waymo AV was stopped "
+        "facing north at a red light on [XXX] with the left turn signal activated, preparing to make an "
+        "unprotected left turn onto [XXX]. A pickup truck traveling eastbound on [XXX] made a right turn onto "
+        "[XXX] and made contact with a passenger car parked facing south at the curb near the intersection with "
+        "[XXX]. As the pickup truck maneuvered away from the passenger car and continued to proceed southbound on"
+        " [XXX], the driver side of the pickup truck then made contact with the rear driver side of the Waymo AV."
+        " At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The pickup truck "
+        "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
+        "Waymo may supplement or correct its reporting with additional information as it may become available."),
 }
 
 
@@ -100,3 +113,10 @@ def test_a_lane_change_told_again_without_its_side_is_the_one_told() -> None:
     # (no run of the AV's after the lane change), and "began merging" is the lane change to the right told again
     # (`ag`, not `af`).
     assert _ego("nhtsa-sgo-ads-30270-8130-v1") == ("moving", "ag")
+
+
+def test_a_turn_named_by_a_longer_noun_phrase_after_an_intention_is_a_plan() -> None:
+    # "was stopped facing north at a red light ... preparing to make an unprotected left turn onto [XXX]": the turn
+    # is planned, not made; the AV stood throughout (the article and modifiers of "an unprotected left turn" do not
+    # put it out of the intention's reach).
+    assert _ego("nhtsa-sgo-ads-30270-10668-v1") == ("stopped", "")

@@ -285,6 +285,8 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)
 # "continued straight through the intersection before braking and coming to a complete stop", "began to make a right
 # turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
 # (a turn or a lane change after "before" may never have begun: "stopped before turning left").
+_TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!to\b)[\w-]+,?\s+){1,3}$", re.I)
+_TURN_NOUN = compile_gated(r"(?:(?:un)?protected\s+)?(?:turn\b(?!\s+from)|left\b|right\b|u-?\s?turn\b)", re.I)
 _FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
 _WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|is)\s+(?:\w+ly\s+)?)?$", re.I)
@@ -520,7 +522,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         # "failed to yield and turned left": a past tense after the conjunction opens a clause of its own, out of
         # the reach of the intention or negation before it ("preparing to stop and turn" stays an intention).
         own_clause = bool(_NEW_CLAUSE.search(before)) and bool(_PAST.match(s[b:e]))
-        if _INTENT.search(before) and not caused and not own_clause and \
+        # "preparing to make an unprotected left turn": the turn's noun phrase (article and modifiers) does not
+        # count toward the intention's reach
+        aim = _TURN_NOUN_PHRASE.sub("", before) if code in "dejT" and _TURN_NOUN.match(s[b:e]) else before
+        if _INTENT.search(aim) and not caused and not own_clause and \
                 not (code in "hc" and _BEFORE_STOP.search(before)) and \
                 (not _INTENT_OK.search(before) or _INTENT_TO_BEGIN.search(before)) and \
                 not (code in "fgF" and _PURPOSE_DONE.search(s[max(0, b - 80):b])) and \

@@ -328,7 +328,11 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
         return (*sequence([went] + moves + post, stopped=True, ego=True, side=None), opened)
     if pre:
         last = pre[-1]
-        if last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
+        if opened and all(a.code in "aA" for a in pre[1:]):
+            # the manoeuvre told under way, and what only describes it ("was slowing and moving at approximately 2
+            # mph"): the string opens with the manoeuvre
+            prefix = [pre[0]]
+        elif last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
                 not _waited(d, last) or (_struck_from_behind(d) and (last.sent, last.pos) < (fs, clause_start))):
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is
             # part of the interaction (the AV was moving when it began); a stop at a light or a sign, a yield, or a
