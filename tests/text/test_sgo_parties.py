@@ -89,6 +89,20 @@ _SGO: dict[str, tuple[str, str]] = {
         'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
         'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
         'reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30310-3698-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30310-3698,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Prior to the crash, on August [XXX], 2022 autonomous shuttle (MNCAV2, V005) for the Med City Mover '
+        'was travelling southbound on [XXX]. in autonomous ADS mode. The vehicle was functioning normally '
+        'prior to the event in autonomous mode. At 16:23 CT, the shuttle entered the intersection of [XXX] '
+        'and [XXX]. The shuttle experienced an unknown e-stop. The vehicle behind the shuttle was following '
+        'closely and attempting to pass the shuttle at this time and hit the rear left corner of the shuttle.'
+        ' No injuries reported to the two passengers on-board the shuttle or the operator or other vehicles '
+        'two passengers. Seatbelts were used by the shuttle passengers at the time of the incident. 911 was '
+        'called and the Minnesota Department of Public Safety was dispatched to file a report. Details of the'
+        ' event can be provided in video format, a police report and an operator summary. The GPX coordinates'
+        ' above are approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at '
+        '15:59 CT on [XXX] (no passengers).'),
 }
 
 
@@ -131,3 +145,12 @@ def test_a_party_out_of_a_driveway_garage_or_parking_space_comes_from_the_curb_s
     assert (p.position, p.lane, p.start, p.actions) == ("R6", "right", "stopped", "k")
     # "a passenger car began reversing out of the garage" (the AV at the curb beside it): on its right too.
     assert _party("nhtsa-sgo-ads-30270-9540-v1").lane == "right"
+
+
+def test_an_av_named_only_as_an_autonomous_shuttle_is_the_av_not_a_bus() -> None:
+    # "autonomous shuttle (MNCAV2, V005) for the Med City Mover was travelling southbound ... The vehicle behind the
+    # shuttle ... hit the rear left corner of the shuttle": no operator's name for the AV (its driver, named, is no
+    # name of the AV); the vehicle called autonomous is the AV, and the party is the vehicle behind it.
+    sk = extract(_SGO["nhtsa-sgo-ads-30310-3698-v1"][1], "nhtsa-sgo-ads-30310-3698-v1")
+    assert [(p.category, p.position) for p in sk.npcs] == [("car", "R6")]
+    assert sk.collision.with_ == "npc1"

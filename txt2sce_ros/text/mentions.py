@@ -404,12 +404,14 @@ def normalise(text: str) -> str:
     first_ego = _FIRST_EGO_NOUN.search(quoted)
     if first_ego and company_re.search(first_ego.group(0)):
         t = fre.sub(rf"\bthe\s+{first_ego.group(1)}\b", "EGO", t, flags=re.I)
-    if "EGO" not in t:
+    if not fre.search(r"\bEGO\b", t):  # ("EGOD", the AV's driver, is not the AV)
         # No name for the AV at all ("a Navya ARMA shuttle operated by Beep ... the shuttle"): the first vehicle
         # the narrative introduces is the AV, and so is that noun with "the" afterwards.
         # (the subject the narrative opens with first: "The Udelv van was stopped ...")
         first = fre.match(r"(?:the|a|an|our)\s+(?:[\w.-]+\s+){0,3}?(vehicle|car|truck|shuttle|bus|van|suv|pod|robot)\b"
                           r"(?=\s+(?:was|is|had|has|were)\b)", t, re.I) or \
+            fre.search(r"\b(?:autonomous|automated|driverless|self-driving)\s+(vehicle|car|truck|shuttle|bus|van|pod)\b",
+                       t, re.I) or \
             fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
         if fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*1\b", t, re.I) and \
                 fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*2\b", t, re.I):
