@@ -55,7 +55,11 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"road|curb|driveway|oncoming|opposite\s+direction|opposing|traffic|"
                       # a queue of cars, a parking space, a passenger let on or off: a place on a street
                       r"queue|line\s+of\s+(?:cars|vehicles)|parking\s+(?:space|spot|stall)|drop(?:ping|ped)?[- ]off|"
-                      r"pick(?:ing|ed)?[- ]?up\s+(?:a\s+)?passengers?|passenger\s+(?:pick-?up|drop-?off))", re.I)
+                      r"pick(?:ing|ed)?[- ]?up\s+(?:a\s+)?passengers?|passenger\s+(?:pick-?up|drop-?off)|"
+                      # the block between two cross streets ("between [XXX] and [XXX]", "between Noe and Sanchez
+                      # Streets"), a level crossing of rails: a place on a road, away from its junctions
+                      r"(?-i:between\s+(?:\[XXX\]|[A-Z0-9][\w.]*)(?:\s+[A-Z][\w.]*){0,3}\s+and\s+(?:\[XXX\]|[A-Z0-9]))|"
+                      r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
 _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"

@@ -1,5 +1,5 @@
-"""Issue 13, the AV's signal (`signal_state`) and its approach's control, read from real narratives the rules were
-not written from: California DMV reports (tests/text/csvr/study2.jsonl) and NHTSA SGO reports
+"""Issue 13, the road (`road.layout`, `road.control`) and the AV's signal (`signal_state`), read from real narratives
+the rules were not written from: California DMV reports (tests/text/csvr/study2.jsonl) and NHTSA SGO reports
 (tests/text/sgo/study3.jsonl), each row's `source` beside its text. Each test fails if its rule is removed.
 """
 
@@ -50,12 +50,32 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "made contact with the Waymo AV’s rear bumper at approximately 1 MPH. The Waymo AV sustained minor damage"
         " to its rear bumper, and the passenger vehicle sustained minor damage to its front bumper. No injuries "
         "were reported."),
+    'nhtsa-sgo-ads-30792-6114-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30792-6114,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "At 1:45pm, a WeRide vehicle (Car 1) was parked at a [XXX] parking meter - between [XXX] and [XXX] when "
+        "another vehicle (Car 2) began reversing in front of the vehicle in question. The reversing vehicle (Car "
+        "2) ultimately collided with the front left corner of the WeRide vehicle (Car 1), causing minor damage to"
+        " the front bumper. The reversing vehicle (Car 2) did not have any damage. Both drivers were able to "
+        "confer with one another seconds after the incident took place. The reversing vehicle's driver did not "
+        "possess any form of insurance or registration. WeRide vehicle (Car 1) ADS was not engaged."),
+    'nhtsa-sgo-ads-30413-6032-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-6032,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "The May vehicle came to a gentle stop at the railroad crossing (about -0.8 m/s2 deceleration) as "
+        "designed, but the agent behind did not come to a stop and made contact with the AV. The May shuttle "
+        "behaved as expected and slowed down to a stop in a safe manner. The collision was unavoidable from the "
+        "shuttle side."),
 }
 
 
 def _signal(report_id: str) -> tuple[str, str]:
     sk = extract(_TEXTS[report_id][1], report_id)
     return sk.road.control, sk.signal_state
+
+
+def _layout(report_id: str) -> str:
+    return extract(_TEXTS[report_id][1], report_id).road.layout
 
 
 def test_a_standing_av_in_a_story_of_a_red_light_stood_at_red() -> None:
@@ -72,3 +92,11 @@ def test_a_right_on_red_is_a_signal_and_a_red() -> None:
     # "was preparing to make a right-on-red ... and was yielding to cross-traffic": a signalised approach, at red.
     assert _signal("csvr-waymo-20191014-s37") == ("signal", "red")
     assert _signal("csvr-waymo-20191016-s38") == ("signal", "red")
+
+
+def test_a_block_between_two_cross_streets_and_a_rail_crossing_are_a_road() -> None:
+    # "was parked at a [XXX] parking meter - between [XXX] and [XXX]": mid-block on a street (no junction named),
+    # where no other road word survives the redaction; not an unknown place (which would refuse the sketch).
+    assert _layout("nhtsa-sgo-ads-30792-6114-v1") == "straight"
+    # "came to a gentle stop at the railroad crossing": a level crossing of rails is on a road, no junction of roads.
+    assert _layout("nhtsa-sgo-ads-30413-6032-v1") == "straight"
