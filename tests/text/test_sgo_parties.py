@@ -103,6 +103,21 @@ _SGO: dict[str, tuple[str, str]] = {
         ' event can be provided in video format, a police report and an operator summary. The GPX coordinates'
         ' above are approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at '
         '15:59 CT on [XXX] (no passengers).'),
+    'nhtsa-sgo-ads-30270-8061-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8061,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2024 at 8:43 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in [XXX], '
+        'California was in a collision involving a passenger car on [XXX]. The Waymo AV was traveling east on'
+        ' [XXX]. As the AV approached the all-way stop sign at [XXX], it detected a vehicle traveling west on'
+        ' [XXX] and crossing into the opposing lane (the lane in which the AV was traveling). The passenger '
+        'car entered the intersection in the opposing lane without slowing. The Waymo AV slowed down and '
+        'maneuvered towards the right side of the eastbound lane as the front of the passenger car, still '
+        'moving in the wrong direction in the eastbound lane, made contact with the front driver side corner '
+        "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        'mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing '
+        'General Order 2021-01 because a vehicle involved was towed away and because of airbag deployment. '
+        'Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
 }
 
 
@@ -154,3 +169,11 @@ def test_an_av_named_only_as_an_autonomous_shuttle_is_the_av_not_a_bus() -> None
     sk = extract(_SGO["nhtsa-sgo-ads-30310-3698-v1"][1], "nhtsa-sgo-ads-30310-3698-v1")
     assert [(p.category, p.position) for p in sk.npcs] == [("car", "R6")]
     assert sk.collision.with_ == "npc1"
+
+
+def test_a_participle_joined_by_and_to_a_party_s_participle_is_the_party_s() -> None:
+    # "it detected a vehicle traveling west on [XXX] and crossing into the opposing lane": the crossing is the
+    # vehicle's (a run, then a move to its left), not the AV's, the clause's subject.
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-8061-v1"][1], "nhtsa-sgo-ads-30270-8061-v1")
+    assert (sk.npcs[0].position, sk.npcs[0].actions) == ("R2", "af")
+    assert "f" not in sk.ego.actions

@@ -387,6 +387,8 @@ _RELATIVE = compile_gated(r"\s*,?\s*(?:(?:(?:on|in|at|near|from)\s+(?:[\w.]+\s+)
                        re.I)
 # A short phrase of means or place between a party's noun and its participle ("on foot", "on a bicycle", "in a
 # wheelchair").
+# Between two participles of one noun: the first one's words, then "and" ("traveling west on [XXX] and crossing").
+_AND_PARTICIPLE = compile_gated(r"[^.;,]{0,60}?\s+and\s+(?:then\s+)?", re.I)
 _PP_BEFORE_PARTICIPLE = compile_gated(r"\s+(?:on|in|with)\s+(?:(?:a|an|the|its|his|her|their)\s+)?[\w-]+\s+", re.I)
 # After a possessor inside a party's phrase of place ("to EGO's right, which was ..."): the place noun, then the
 # relative pronoun.
@@ -590,6 +592,12 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if rel is None and left and left[-1].kind == "party" and fre.match(r"\w+ing\b", s[b:e]) and \
                 _PP_BEFORE_PARTICIPLE.fullmatch(s[left[-1].end:b]):
             rel = left[-1]  # "a person on foot crossing the street": the participle tells of the noun, not the subject
+        if rel is None and out and out[-1].who >= 0 and fre.match(r"\w+ing\b", s[b:e]) and \
+                fre.match(r"\w+ing\b", out[-1].text) and not any(out[-1].pos < m.start < b for m in ments) and \
+                _AND_PARTICIPLE.fullmatch(s[out[-1].pos + len(out[-1].text):b]):
+            # "it detected a vehicle traveling west on [XXX] and crossing into the opposing lane": a participle
+            # joined by "and" to the party's own participle tells more of that party.
+            rel = next((m for m in left if m.entity == out[-1].who), None)
         # "The sedan stopped and ...": the finite verb of a subject the story already named; "a vehicle stopped
         # in the right lane": a past participle telling where a noun stood.
         finite = code == "h" and bool(left) and left[-1].subject and left[-1].det == "the" and \
