@@ -78,6 +78,20 @@ _SGO: dict[str, tuple[str, str]] = {
         " At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The pickup truck "
         "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
         "Waymo may supplement or correct its reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30310-3698-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30310-3698,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "Prior to the crash, on August [XXX], 2022 autonomous shuttle (MNCAV2, V005) for the Med City Mover was "
+        "travelling southbound on [XXX]. in autonomous ADS mode. The vehicle was functioning normally prior to "
+        "the event in autonomous mode. At 16:23 CT, the shuttle entered the intersection of [XXX] and [XXX]. The "
+        "shuttle experienced an unknown e-stop. The vehicle behind the shuttle was following closely and "
+        "attempting to pass the shuttle at this time and hit the rear left corner of the shuttle. No injuries "
+        "reported to the two passengers on-board the shuttle or the operator or other vehicles two passengers. "
+        "Seatbelts were used by the shuttle passengers at the time of the incident. 911 was called and the "
+        "Minnesota Department of Public Safety was dispatched to file a report. Details of the event can be "
+        "provided in video format, a police report and an operator summary. The GPX coordinates above are "
+        "approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at 15:59 CT on "
+        "[XXX] (no passengers)."),
 }
 
 
@@ -120,3 +134,9 @@ def test_a_turn_named_by_a_longer_noun_phrase_after_an_intention_is_a_plan() -> 
     # is planned, not made; the AV stood throughout (the article and modifiers of "an unprotected left turn" do not
     # put it out of the intention's reach).
     assert _ego("nhtsa-sgo-ads-30270-10668-v1") == ("stopped", "")
+
+
+def test_an_e_stop_is_a_stop() -> None:
+    # "the shuttle entered the intersection ... The shuttle experienced an unknown e-stop. The vehicle behind the
+    # shuttle ... hit the rear left corner of the shuttle": a run, then the (emergency) stop (`ah`).
+    assert _ego("nhtsa-sgo-ads-30310-3698-v1") == ("moving", "ah")

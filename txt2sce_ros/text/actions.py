@@ -81,6 +81,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "was slowing to stop for a red light": slowing that ends at a standstill
           r"\b(?:slow|brak|decelerat)(?:ed|ing|es|e|s)?\s+(?:down\s+)?to\s+stop\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
+          # "experienced an unknown e-stop", "performed an emergency stop": the shuttles' word for a hard stop
+          r"\b(?:made|execut(?:ed|es|ing)|perform(?:ed|s|ing)|experienc(?:ed|es|ing))\s+(?:a|an)\s+(?:\w+\s+)?"
+          r"(?:e-stop|emergency\s+stop)\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?stop\b|"
           # Pulling (up or in) behind a vehicle that stands ("pulled behind the double-parked vehicle") ends behind
           # it: a stop. Behind a moving one it is following (the `a` phrase below).
