@@ -66,6 +66,13 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "designed, but the agent behind did not come to a stop and made contact with the AV. The May shuttle "
         "behaved as expected and slowed down to a stop in a safe manner. The collision was unavoidable from the "
         "shuttle side."),
+    'nhtsa-sgo-ads-30530-7892-v1': (
+        "github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30530-7892, version"
+        " 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On May [XXX], 2024, at 3:09 AM CDT, an Aurora truck struck a small animal on [XXX] near Corsicana, TX. "
+        "Aurora disengaged autonomy before impact. Aurora vehicle operators were not injured. The Aurora truck "
+        "sustained minor damage to its front bumper, and the truck continued to its final destination in Palmer, "
+        "TX."),
 }
 
 
@@ -100,3 +107,9 @@ def test_a_block_between_two_cross_streets_and_a_rail_crossing_are_a_road() -> N
     assert _layout("nhtsa-sgo-ads-30792-6114-v1") == "straight"
     # "came to a gentle stop at the railroad crossing": a level crossing of rails is on a road, no junction of roads.
     assert _layout("nhtsa-sgo-ads-30413-6032-v1") == "straight"
+
+
+def test_no_place_told_is_no_signal_told() -> None:
+    # The official gold's 30530-7892: "an Aurora truck struck a small animal on [XXX] near Corsicana, TX": the layout
+    # is unknown, so whether the AV was at a junction (and had a light) is unknown too, not `none`.
+    assert _signal("nhtsa-sgo-ads-30530-7892-v1") == ("unknown", "unknown")

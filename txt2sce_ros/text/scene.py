@@ -232,6 +232,8 @@ _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 
 def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving") -> str:
     """The AV's light when its actions begin."""
+    if layout == "unknown":
+        return "unknown"  # no telling whether it was at a junction at all (sketch.md: `none` is away from junctions)
     if not layout.startswith("junction") and layout != "roundabout":
         return "none"
     if control in ("stop_sign", "none"):
