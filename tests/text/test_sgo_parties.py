@@ -118,6 +118,16 @@ _SGO: dict[str, tuple[str, str]] = {
         'General Order 2021-01 because a vehicle involved was towed away and because of airbag deployment. '
         'Waymo may supplement or correct its reporting with additional information as it may become '
         'available.'),
+    'nhtsa-sgo-ads-30792-6114-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30792-6114,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At 1:45pm, a WeRide vehicle (Car 1) was parked at a [XXX] parking meter - between [XXX] and [XXX] '
+        'when another vehicle (Car 2) began reversing in front of the vehicle in question. The reversing '
+        'vehicle (Car 2) ultimately collided with the front left corner of the WeRide vehicle (Car 1), '
+        'causing minor damage to the front bumper. The reversing vehicle (Car 2) did not have any damage. '
+        'Both drivers were able to confer with one another seconds after the incident took place. The '
+        "reversing vehicle's driver did not possess any form of insurance or registration. WeRide vehicle "
+        '(Car 1) ADS was not engaged.'),
 }
 
 
@@ -177,3 +187,11 @@ def test_a_participle_joined_by_and_to_a_party_s_participle_is_the_party_s() -> 
     sk = extract(_SGO["nhtsa-sgo-ads-30270-8061-v1"][1], "nhtsa-sgo-ads-30270-8061-v1")
     assert (sk.npcs[0].position, sk.npcs[0].actions) == ("R2", "af")
     assert "f" not in sk.ego.actions
+
+
+def test_a_party_backing_into_a_front_corner_of_the_av_came_straight_back_in_its_lane() -> None:
+    # "another vehicle (Car 2) began reversing in front of the vehicle in question. The reversing vehicle (Car 2)
+    # ultimately collided with the front left corner of the WeRide vehicle": the corner its rear met tells no lane.
+    sk = extract(_SGO["nhtsa-sgo-ads-30792-6114-v1"][1], "nhtsa-sgo-ads-30792-6114-v1")
+    p = sk.npcs[0]
+    assert (p.position, p.lane, p.actions, sk.collision.type) == ("R5", "same", "k", "rear_end")

@@ -524,9 +524,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.
         lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
-    elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None:
+    elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None and \
+            not (backing and pos == "R5" and fore == "front"):
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
-        # passing or splitting lanes was beside the AV on the side it touched.
+        # passing or splitting lanes was beside the AV on the side it touched. (One ahead backing into a front
+        # corner of the AV came straight back in its lane: "began reversing in front of the vehicle ... collided
+        # with the front left corner".)
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
     if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(context(d, e)) and \
