@@ -92,6 +92,18 @@ _SGO: dict[str, tuple[str, str]] = {
         "provided in video format, a police report and an operator summary. The GPX coordinates above are "
         "approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at 15:59 CT on "
         "[XXX] (no passengers)."),
+    'nhtsa-sgo-ads-30270-10666-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10666, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 1:15 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was parked at "
+        "the curb facing west following a passenger drop-off on [XXX]. While the Waymo AV remained stationary, a "
+        "passenger car traveling westbound on [XXX] initially stopped behind the Waymo AV, then proceeded to pass"
+        " to Waymo AV on the left, and the passenger side of the passenger car made contact with the rear driver "
+        "side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        "mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
+        "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
+        "may become available."),
 }
 
 
@@ -140,3 +152,9 @@ def test_an_e_stop_is_a_stop() -> None:
     # "the shuttle entered the intersection ... The shuttle experienced an unknown e-stop. The vehicle behind the
     # shuttle ... hit the rear left corner of the shuttle": a run, then the (emergency) stop (`ah`).
     assert _ego("nhtsa-sgo-ads-30310-3698-v1") == ("moving", "ah")
+
+
+def test_following_an_event_is_after_it() -> None:
+    # "was parked at the curb facing west following a passenger drop-off ... While the Waymo AV remained
+    # stationary": "following" tells when, not a vehicle followed; the parked AV stood throughout.
+    assert _ego("nhtsa-sgo-ads-30270-10666-v1") == ("stopped", "")

@@ -288,6 +288,10 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)
 # "continued straight through the intersection before braking and coming to a complete stop", "began to make a right
 # turn ... before yielding to a pedestrian": a stop or a slowing told after "before" is the next thing the party did
 # (a turn or a lane change after "before" may never have begun: "stopped before turning left").
+# An event after "following" makes it a preposition of time ("following a passenger drop-off", "following the
+# collision"), not a party followed.
+_EVENT_AFTER = compile_gated(r"\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(?:drop|pick|collision|impact|contact|incident|crash|"
+                             r"stop\b|turn\b|disengage)", re.I)
 _TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!to\b)[\w-]+,?\s+){1,3}$", re.I)
 _TURN_NOUN = compile_gated(r"(?:(?:un)?protected\s+)?(?:turn\b(?!\s+from)|left\b|right\b|u-?\s?turn\b)", re.I)
 _FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
@@ -548,6 +552,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
                                             r"(?:that\s+(?:were|was|had)\s+(?:been\s+)?)?$", before, re.I):
             continue  # "a line of vehicles stopped at a red light": a group's state, not the subject's
+        if code == "a" and s[b:e].lower() == "following" and _EVENT_AFTER.match(s[e:]):
+            continue  # "parked at the curb following a passenger drop-off": "after", no following of anyone
         if fre.search(r"\btraffic\s+$", before) and fre.match(r"\w+ing\b", s[b:e]):
             continue  # "to gain visibility of oncoming traffic traveling southbound": traffic's move, no party's
         if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
