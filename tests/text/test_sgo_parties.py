@@ -128,6 +128,54 @@ _SGO: dict[str, tuple[str, str]] = {
         'Both drivers were able to confer with one another seconds after the incident took place. The '
         "reversing vehicle's driver did not possess any form of insurance or registration. WeRide vehicle "
         '(Car 1) ADS was not engaged.'),
+    'nhtsa-sgo-ads-30270-9507-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9507,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 4:07 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a pick-up truck on [XXX] near [XXX]. The Waymo AV'
+        ' was traveling southbound in the center lane of [XXX] and slowed down to a stop for a queue of '
+        'traffic. A pick-up truck traveling in the right most lane and next to the Waymo AV began to change '
+        'lanes into the center lane, and the driver side of the pickup truck made contact with the front '
+        'passenger front side of the stationary Waymo AV. After this initial contact, the pick-up truck '
+        'maneuvered to the front of the Waymo AV, came to a stop directly in front of the Waymo AV, and after'
+        ' a few minutes, the pickup truck reversed, and the rear of the pickup truck made contact with the '
+        'front of the stationary Waymo AV. The Waymo AV remained stopped in lane due to the initial contact '
+        'the driver of the pickup truck was in and out of their vehicle until leaving the scene. After '
+        'approximately 4 minutes, the pick-up truck returned, traveling southbound in the right lane of '
+        '[XXX], and the driver side of the pickup truck made contact with the passenger side of the still '
+        "stationary Waymo AV. At the time of each point of impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
+        'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or'
+        ' correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9414-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9414,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 11:07 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV '
+        'was parked at the curb in the northwest direction of [XXX]. A pickup truck began to parallel park '
+        'behind the Waymo AV, and the front bumper of the pickup truck made contact with the rear bumper of '
+        'the Waymo AV. After this initial contact, the pickup truck reversed, then maneuvered away from the '
+        'curb towards the lane of travel, and the front passenger side of the pick up truck made contact with'
+        " the rear driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-1420-7995-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 1420-7995, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The subject vehicle (autonomous vehicle - AV) was stopped at a red traffic light, in a queue of '
+        'vehicles, heading west on [XXX], with autonomous driving (AD) mode engaged. Once the light turned '
+        'green, the queue of vehicles started to move forward, the AV started to move forward with the queue,'
+        ' and prior to crossing the intersection, the AV was struck from behind by an SUV. After impact the '
+        'safety driver of the AV applied the brakes to disengage AD mode and then proceeded to find a safe '
+        'spot to assess the incident by turning right onto [XXX]. The driver of the SUV followed the AV to a '
+        'safe location to assess the incident and exchange contact information. There were no reported '
+        'injuries, airbag deployments, or tow-aways between either party involved. The AV sustained minor '
+        'damage to the rear of the vehicle including the rear bumper cover, rear bumper carrier, and a rear '
+        'facing camera. The SUV damage was reported as scratches and dents to the front bumper cover. Both '
+        'vehicles were able to safely drive away from the scene. VWGoA does not plan to investigate the '
+        "incident any further as the facts and circumstances do not indicate any issue with the vehicle's "
+        'performance.'),
 }
 
 
@@ -195,3 +243,29 @@ def test_a_party_backing_into_a_front_corner_of_the_av_came_straight_back_in_its
     sk = extract(_SGO["nhtsa-sgo-ads-30792-6114-v1"][1], "nhtsa-sgo-ads-30792-6114-v1")
     p = sk.npcs[0]
     assert (p.position, p.lane, p.actions, sk.collision.type) == ("R5", "same", "k", "rear_end")
+
+
+def test_the_av_described_again_in_parentheses_is_no_party() -> None:
+    # "The subject vehicle (autonomous vehicle - AV) was stopped at a red traffic light ... struck from behind by an
+    # SUV": the parenthesis says what the AV is; the one other party is the SUV.
+    sk = extract(_SGO["nhtsa-sgo-ads-1420-7995-v1"][1], "nhtsa-sgo-ads-1420-7995-v1")
+    assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("car", "R6", "same")]
+
+
+def test_a_pick_up_truck_and_the_pickup_truck_are_one_party() -> None:
+    # "A pick-up truck traveling in the right most lane ... the driver side of the pickup truck made contact": one
+    # truck, spelled two ways.
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-9507-v1"][1], "nhtsa-sgo-ads-30270-9507-v1")
+    assert len(sk.npcs) == 1
+
+
+def test_what_follows_after_the_initial_contact_is_after_the_conflict() -> None:
+    # "After this initial contact, the pick-up truck maneuvered to the front of the Waymo AV ... reversed, and the
+    # rear of the pickup truck made contact with the front": the conflict is the first contact; the string ends there.
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-9507-v1"][1], "nhtsa-sgo-ads-30270-9507-v1")
+    assert (sk.npcs[0].position, sk.npcs[0].lane, sk.npcs[0].actions, sk.collision.type) == \
+        ("R5", "right", "af", "side_swipe")
+    # "... made contact with the rear bumper of the Waymo AV. After this initial contact, the pickup truck reversed":
+    # the reversing is no part of it.
+    p = _party("nhtsa-sgo-ads-30270-9414-v1")
+    assert (p.position, p.lane, p.actions) == ("R6", "same", "l")

@@ -61,6 +61,8 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + (
          m.group(4) if m.group(3).lower() == "junction" else ""))
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
+    # "a pick-up truck ... the pickup truck": one noun, spelled one way (the name a party is followed by)
+    (("pick-up",), False, compile_gated(r"\b(pick)-(up)(?=\s+trucks?\b)", re.I), lambda m: m.group(1) + m.group(2)),
     # "turned to the right", "in back of", "nearing the intersection", "came up from the rear", "immediately
     # behind": the words the rules read
     (("to the left", "to the right", "in back of", "nearing", " up from", "immediately behind"), False,
@@ -175,7 +177,9 @@ _PREPOSITION_END = compile_gated(r"\b(?:of|to|from|behind|by|with|at|in|on|for|p
 # ("Waymo AV"), (Vehicle 2), (car 1), (AV), (Level 4): definitions and labels, not story. Other parentheses
 # ("a fixed object (solar panel)") keep their words.
 _PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
-                        r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*)\)", re.I)
+                        r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*|"
+                        # "The subject vehicle (autonomous vehicle - AV)": what the AV is, said again
+                        r"\s*(?:autonomous|automated|self-driving|driverless)\s+vehicle\b[^()]{0,20})\)", re.I)
 #: A quoted name defined in parentheses: "(the 'TRI Vehicle")", "("the shuttle")".
 _ALIAS_DEF = compile_gated(r"\(\s*(?:the\s+)?[\"']\s*([A-Za-z][\w.-]*(?:\s+[\w.-]+){0,3}?)\s*[\"']\s*\)")
 # Abbreviations that never end a sentence, and street abbreviations that do only before a capitalised word.

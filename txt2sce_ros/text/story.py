@@ -169,6 +169,11 @@ def find_contact(d: Doc) -> None:
             candidates.append((i, m.start(), partner))
     if not candidates:
         return
+    # "After this initial contact, the pick-up truck maneuvered to the front of EGO ... and made contact with the
+    # front of EGO": what the story tells from there on came after the conflict, whose contact is the first.
+    aftermath = next((i for i, s in enumerate(d.sents) if _AFTER_FIRST_CONTACT.match(s)), None)
+    if aftermath is not None and any(c[0] < aftermath for c in candidates):
+        candidates = [c for c in candidates if c[0] < aftermath]
     detailed = [c for c in candidates if c[0] not in d.summary]
     chosen = detailed[-1] if detailed else candidates[-1]
     if chosen[2] is None:
@@ -208,6 +213,8 @@ def find_contact(d: Doc) -> None:
                 break
 
 
+_AFTER_FIRST_CONTACT = compile_gated(r"\s*(?:after|following)\s+(?:the|this|that)\s+(?:initial|first)\s+"
+                                     r"(?:contact|impact|collision)\b", re.I)
 _CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
 
 
