@@ -176,6 +176,21 @@ _SGO: dict[str, tuple[str, str]] = {
         'vehicles were able to safely drive away from the scene. VWGoA does not plan to investigate the '
         "incident any further as the facts and circumstances do not indicate any issue with the vehicle's "
         'performance.'),
+    'csvr-waymo-20240319-s304': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 304, column 'Accident Detail Description'), transcribed",
+        'On March 19, 2024 at 7:18 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on Division Street at 9th Street. The Waymo '
+        'AV was traveling west on Division Street after having stopped at the stop sign at Vermont Street and'
+        ' was approaching the intersection with 9th Street when a passenger car approached from behind the '
+        'Waymo AV, ran the stop sign at Vermont Street, and made contact with the rear of the Waymo AV. The '
+        'front of the passenger car made continuous contact with the rear of the Waymo AV while both vehicles'
+        ' were still in motion for a short period of time before the passenger car slowed down and separated '
+        'from the AV. The Waymo AV proceeded through the intersection with 9th Street and came to a stop on '
+        'Division Street west of the intersection with 9th Street. The passenger car then accelerated and the'
+        ' front right corner of the passenger car made contact with the rear left corner of the stationary '
+        "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both"
+        ' vehicles sustained damage.'),
 }
 
 
@@ -269,3 +284,11 @@ def test_what_follows_after_the_initial_contact_is_after_the_conflict() -> None:
     # the reversing is no part of it.
     p = _party("nhtsa-sgo-ads-30270-9414-v1")
     assert (p.position, p.lane, p.actions) == ("R6", "same", "l")
+
+
+def test_a_second_contact_after_the_party_moved_on_again_is_after_the_conflict() -> None:
+    # "... made contact with the rear of the Waymo AV ... before the passenger car slowed down and separated from the
+    # AV. ... The passenger car then accelerated and ... made contact with the rear left corner": the conflict is the
+    # first contact, the party's string ends there.
+    p = _party("csvr-waymo-20240319-s304")
+    assert (p.position, p.lane, p.actions) == ("R6", "same", "a")

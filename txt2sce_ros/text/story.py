@@ -191,6 +191,14 @@ def find_contact(d: Doc) -> None:
         # "... and struck the AV again": the story's conflict ends at the first contact (sketch.md: strings end at
         # the contact), not at the repeat.
         chosen = next(c for c in (detailed or candidates) if c[2] == chosen[2] or c[2] is None)
+    elif chosen[2] is not None and (first := next((c for c in detailed if c[2] == chosen[2]), chosen)) != chosen and \
+            any(a.who == chosen[2] and first[0] < a.sent and (a.sent, a.pos) < chosen[:2] and
+                a.code in "abdefgjkmFT" and _THEN_BEFORE.search(d.sents[a.sent][max(0, a.pos - 12):a.pos])
+                for a in d.acts):
+        # The same party touched the AV, then moved again and touched it once more ("made contact with the front
+        # driver side of EGO. The heavy truck then reversed ... it made contact with the driver side"): the
+        # conflict is the first contact; the move told next ("then") begins what came after.
+        chosen = first
     d.contact_sent, d.contact_pos, d.partner = chosen
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
@@ -213,6 +221,7 @@ def find_contact(d: Doc) -> None:
                 break
 
 
+_THEN_BEFORE = compile_gated(r"\bthen\s+$", re.I)
 _AFTER_FIRST_CONTACT = compile_gated(r"\s*(?:after|following)\s+(?:the|this|that)\s+(?:initial|first)\s+"
                                      r"(?:contact|impact|collision)\b", re.I)
 _CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
