@@ -73,6 +73,44 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "Aurora disengaged autonomy before impact. Aurora vehicle operators were not injured. The Aurora truck "
         "sustained minor damage to its front bumper, and the truck continued to its final destination in Palmer, "
         "TX."),
+    'nhtsa-sgo-ads-30270-3057-v2': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-3057,"
+        " version 2, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "The content of this report is unchanged from the initial report submitted on May [XXX], 2022 [Report ID "
+        "# 30270-3057-1]. On May [XXX], 2022 at 2:30 AM PST a Waymo Autonomous Vehicle (\"Waymo AV\") operating in "
+        "Phoenix, Arizona was in a collision involving a passenger vehicle on [XXX] at the [XXX] onramp. While "
+        "the Waymo AV was stopped at a red light on southbound [XXX] in the rightmost through lane, a passenger "
+        "vehicle approached the Waymo AV from behind and the right front of the passenger vehicle made contact "
+        "with the left rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in"
+        " autonomous mode and a test driver was present (in the driver's seating position). Both vehicles "
+        "sustained major damage. The driver of the other vehicle was transported from the scene to a hospital for"
+        " medical treatment. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
+        "because a vehicle involved was towed away, the crash resulted in airbag deployment, and the driver of "
+        "the other vehicle was transported from the scene to a hospital for medical treatment. Waymo may "
+        "supplement or correct its reporting with additional information as it may become available. This report "
+        "was submitted from the Pacific time zone on the required date."),
+    'nhtsa-sgo-ads-30270-9545-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9545,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On December [XXX], 2024 at 6:27 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San "
+        "Francisco, California was in a collision involving a passenger car on [XXX] at Interstate [XXX] onramp. "
+        "The Waymo AV was traveling eastbound on [XXX] when it came to a stop within the intersection with "
+        "Interstate [XXX] onramp due to a queue of traffic on the other side of the intersection. The rear of the"
+        " Waymo AV partially occupied the lane connecting westbound [XXX] to the Interstate [XXX] onramp. A "
+        "passenger car was travelling westbound on [XXX], and began making a left turn onto the Interstate [XXX] "
+        "onramp when the driver side of the passenger car made contact with the rear driver side of the Waymo AV."
+        " At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV "
+        "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
+        "Waymo may supplement or correct its reporting with additional information as it may become available."),
+    'csvr-waymo-20190616-s18': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 18, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on the off-ramp from westbound "
+        "Alma Street to southbound Oregon Expressway in Palo Alto when it was rear-ended. The Waymo AV was "
+        "yielding to cross-traffic when a passenger vehicle made contact with the Waymo AV’s rear bumper at "
+        "approximately 5 MPH. The Waymo AV sustained minor damage to the rear bumper, and the passenger vehicle "
+        "left the scene without stopping or exchanging information. The Waymo AV driver complained of neck, back,"
+        " and nose pain and was treated at the scene by emergency responders."),
 }
 
 
@@ -113,3 +151,14 @@ def test_no_place_told_is_no_signal_told() -> None:
     # The official gold's 30530-7892: "an Aurora truck struck a small animal on [XXX] near Corsicana, TX": the layout
     # is unknown, so whether the AV was at a junction (and had a light) is unknown too, not `none`.
     assert _signal("nhtsa-sgo-ads-30530-7892-v1") == ("unknown", "unknown")
+
+
+def test_a_ramp_the_junction_meets_is_a_leg_of_a_crossing() -> None:
+    # "on [XXX] at the [XXX] onramp. While the Waymo AV was stopped at a red light on southbound [XXX] in the
+    # rightmost through lane": the AV is at a crossing one of whose legs is the ramp (junction4), not on a ramp that
+    # merges (junction3).
+    assert _layout("nhtsa-sgo-ads-30270-3057-v2") == "junction4"
+    assert _layout("nhtsa-sgo-ads-30270-9545-v1") == "junction4"
+    # On the ramp itself it is a T: "was stopped in autonomous mode on the off-ramp from westbound Alma Street to
+    # southbound Oregon Expressway".
+    assert _layout("csvr-waymo-20190616-s18") == "junction3"

@@ -33,6 +33,11 @@ _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|insters
                          r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
                          r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
                          r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+# A ramp named as what the junction meets or where a party heads ("at the [XXX] onramp", "the intersection with
+# Interstate [XXX] onramp", "a left turn onto the Interstate [XXX] onramp"): one leg of a crossing the AV is at, not
+# the ramp the AV is on (a slip lane or ramp the AV is on makes a T: _T_JUNCTION).
+_RAMP_AS_LEG = compile_gated(r"\b(?:intersection\s+with|at|onto|to|towards?)\s+(?:the\s+|an?\s+)?(?:[\w\[\]-]+\s+){0,2}"
+                             r"(?:on|off)-?\s?ramp\b", re.I)
 # A slip lane, merge lane or ramp is the AV's place even in a summary: the report is not filed from one.
 _CONNECTOR = compile_gated(r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
@@ -172,7 +177,7 @@ def road(t: str, *, junction: bool) -> RoadInfo:
                                               r"parking\s+(?:lot|garage|structure)", t, re.I):
         layout = "parking"
     elif junction:
-        layout = "junction3" if _T_JUNCTION.search(t) else "junction4"
+        layout = "junction3" if _T_JUNCTION.search(_RAMP_AS_LEG.sub(" ", t)) else "junction4"
     elif _CURVE.search(t):
         layout = "curve"
     elif _ROADWAY.search(t):
