@@ -191,6 +191,16 @@ _SGO: dict[str, tuple[str, str]] = {
         ' front right corner of the passenger car made contact with the rear left corner of the stationary '
         "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both"
         ' vehicles sustained damage.'),
+    'nhtsa-sgo-ads-30610-3719-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-3719,'
+        ' version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle in autonomy was proceeding at approximately 2mph towards an exit of a private hotel '
+        'driveway in Las Vegas, Nevada when it was struck on its right front fender by two individuals '
+        'involved in an altercation who had darted out from the side of the roadway. The right front fender '
+        'of the Zoox vehicle was dented. The two individuals fled the scene and Zoox is not aware of any '
+        'reported injuries. We question whether this interaction meets the reporting requirements '
+        'nevertheless, we are submitting this report out of an abundance of caution. This 10-Day update '
+        'provides complete information for this incident.'),
 }
 
 
@@ -292,3 +302,11 @@ def test_a_second_contact_after_the_party_moved_on_again_is_after_the_conflict()
     # first contact, the party's string ends there.
     p = _party("csvr-waymo-20240319-s304")
     assert (p.position, p.lane, p.actions) == ("R6", "same", "a")
+
+
+def test_numbered_individuals_are_people_on_foot() -> None:
+    # "it was struck on its right front fender by two individuals involved in an altercation who had darted out from
+    # the side of the roadway": people on foot (not a group of traffic), the AV touched by one of them.
+    sk = extract(_SGO["nhtsa-sgo-ads-30610-3719-v2"][1], "nhtsa-sgo-ads-30610-3719-v2")
+    assert sk.npcs and sk.npcs[0].category == "pedestrian"
+    assert (sk.collision.with_, sk.collision.type) == ("npc1", "pedestrian")

@@ -110,7 +110,7 @@ PARTY_HEADS: dict[str, str] = {
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
-               "motorists", "riders", "road users", "others", "scooters")
+               "motorists", "riders", "road users", "others", "scooters", "individuals", "persons")
 
 #: Makes and models: "a 2014 Audi", "the Toyota Sienna". Models that are vans are vans.
 VAN_MODELS = ("sienna", "odyssey", "pacifica", "voyager", "caravan", "sedona", "quest", "promaster",

@@ -480,7 +480,8 @@ _PARTY_DRIVER = compile_gated(r"^\s*(?:driver|operator)\b(?!'s)(?!\s*-?\s*(?:sid
 _NUMBERS = {"two": 2, "2": 2, "three": 3, "3": 3, "four": 4, "4": 4}
 _COUNTED_GROUPS = {"vehicles": "car", "cars": "car", "trucks": "truck", "pedestrians": "pedestrian",
                    "people": "pedestrian", "cyclists": "bicycle", "bicyclists": "bicycle", "scooters": "scooter",
-                   "motorists": "car", "bikes": "bicycle", "bicycles": "bicycle", "motorcycles": "motorcycle"}
+                   "motorists": "car", "bikes": "bicycle", "bicycles": "bicycle", "motorcycles": "motorcycle",
+                   "individuals": "pedestrian", "persons": "pedestrian"}
 _RIDING_ON = compile_gated(r"\s+(?:who\s+were\s+)?riding\s+(?:on\s+)?(scooters|bikes|bicycles|motorcycles)\b", re.I)
 
 
