@@ -111,6 +111,29 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "approximately 5 MPH. The Waymo AV sustained minor damage to the rear bumper, and the passenger vehicle "
         "left the scene without stopping or exchanging information. The Waymo AV driver complained of neck, back,"
         " and nose pain and was treated at the scene by emergency responders."),
+    'dmvca-cruise-20230814-r511': (
+        "github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 511, column "
+        "\"Accident Detail Description\")",
+        "A Cruise autonomous vehicle (“AV”), operating in driverless autonomous mode, was traveling southbound on"
+        " Albion Street between 16th Street and Camp Street. At the same time, a Ford pickup truck was traveling "
+        "northbound on Albion Street partially in the AV’s lane of travel. The AV stopped due to limited space to"
+        " proceed forward due to the encroaching Ford pickup truck, and, shortly thereafter, the Ford pickup "
+        "truck made contact with the AV, damaging the AV’s rear driver side bumper fascia, rear driver side "
+        "quarter panel and rear driver side wheel molding. The driver of the Ford pickup truck left the scene "
+        "without exchanging information. There were no reported injuries."),
+    'nhtsa-sgo-ads-30270-8141-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8141,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On June [XXX], 2024 at 6:05 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California "
+        "was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling east on "
+        "[XXX] at a location where the width of the roadway is narrow, and there were lines of parked vehicles on"
+        " both sides of the roadway. A pickup truck traveling west on [XXX] approached the Waymo AV and the Waymo"
+        " AV shifted to the right side of the road and came to a stop to allow the pickup truck to pass. As the "
+        "pickup truck passed the Waymo AV, the rear driver side fender of the pickup truck made contact with the "
+        "rear driver side corner of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was "
+        "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
+        "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
 }
 
 
@@ -162,3 +185,16 @@ def test_a_ramp_the_junction_meets_is_a_leg_of_a_crossing() -> None:
     # On the ramp itself it is a T: "was stopped in autonomous mode on the off-ramp from westbound Alma Street to
     # southbound Oregon Expressway".
     assert _layout("csvr-waymo-20190616-s18") == "junction3"
+
+
+def test_opposite_headings_on_the_first_road_make_it_two_way() -> None:
+    # "was traveling southbound on Albion Street ... a Ford pickup truck was traveling northbound on Albion Street":
+    # the AV's road carries both directions (the official gold's r511: one_way false), though no "oncoming" is said.
+    sk = extract(_TEXTS["dmvca-cruise-20230814-r511"][1], "r511")
+    assert sk.road.one_way is False
+    # The redacted NHTSA street is one name: "traveling east on [XXX] ... a vehicle traveling west on [XXX]".
+    assert extract(_TEXTS["nhtsa-sgo-ads-30270-8141-v1"][1], "8141").road.one_way is False
+    # Headings on two different streets say nothing of either.
+    crossing = ("A Waymo AV was traveling northbound on Mission Street when a sedan traveling southbound on Valencia "
+                "Street ran a red light and struck it.")
+    assert extract(crossing, "x").road.one_way is None

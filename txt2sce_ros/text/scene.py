@@ -7,7 +7,7 @@ import re
 from ..sketch import Environment, RoadInfo
 from . import fastre as fre
 from .fastre import compile_gated
-from .lexicon import NUMBER_WORDS
+from .lexicon import CARDINALS, NUMBER_WORDS
 
 _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
                        r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
@@ -170,6 +170,25 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     return False
 
 
+_DIR = r"(north|south|east|west|northeast|northwest|southeast|southwest)"
+_STREET = (r"((?-i:(?:[A-Z0-9][\w.']*\s+){0,3}?(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln|"
+           r"Expressway|Parkway|Highway|Real)\b)|\[XXX\])")
+# "southbound on Albion Street", "on northbound [XXX]": a heading told on a named (or redacted) street.
+_HEADING_ON = (compile_gated(rf"\b{_DIR}(?:bound|ward)?\s+on\s+{_STREET}", re.I),
+               compile_gated(rf"\bon\s+{_DIR}(?:bound)?\s+{_STREET}", re.I))
+
+
+def _opposite_on_first_road(t: str) -> bool:
+    """Does the text put someone on the first road it names with a heading (the AV's, as the story opens) heading
+    the opposite way ("was traveling southbound on Albion Street ... a Ford pickup truck was traveling northbound on
+    Albion Street")? Then that road carries both directions (sketch.md: `one_way` false)."""
+    told = sorted((m.start(), CARDINALS[m.group(1).lower()], m.group(2)) for rx in _HEADING_ON for m in rx.finditer(t))
+    if not told:
+        return False
+    _, first, street = told[0]
+    return any(road == street and abs(heading - first) == 180 for _, heading, road in told[1:])
+
+
 def road(t: str, *, junction: bool) -> RoadInfo:
     if _ROUNDABOUT.search(t):
         layout = "roundabout"
@@ -198,7 +217,7 @@ def road(t: str, *, junction: bool) -> RoadInfo:
     one_way: bool | None = None
     if _ONE_WAY.search(t):
         one_way = True
-    elif _TWO_WAY.search(t):
+    elif _TWO_WAY.search(t) or _opposite_on_first_road(t):
         one_way = False
     return RoadInfo(layout=layout, control=control, one_way=one_way, lanes=lane_count(t))  # type: ignore[arg-type]
 
@@ -280,7 +299,7 @@ def scene_spans(t: str, road_info: RoadInfo, env: Environment, signal: str) -> d
     first("road.layout", _LAYOUT_WORDS.get(road_info.layout))
     first("road.control", {"signal": _SIGNAL, "stop_sign": _STOP_SIGN}.get(road_info.control))
     if road_info.one_way is not None:
-        first("road.one_way", _ONE_WAY if road_info.one_way else _TWO_WAY)
+        first("road.one_way", _ONE_WAY if road_info.one_way else _TWO_WAY if _TWO_WAY.search(t) else _HEADING_ON[0])
     if road_info.lanes:
         first("road.lanes", _LANE_ORD if _LANE_ORD.search(t) else _LANES_N if _LANES_N.search(t) else _LANE_SIDE)
     first("environment.weather", dict(_WEATHER).get(env.weather))
