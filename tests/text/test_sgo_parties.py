@@ -201,6 +201,19 @@ _SGO: dict[str, tuple[str, str]] = {
         'reported injuries. We question whether this interaction meets the reporting requirements '
         'nevertheless, we are submitting this report out of an abundance of caution. This 10-Day update '
         'provides complete information for this incident.'),
+    'nhtsa-sgo-ads-30270-9371-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9371,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 2:33 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los '
+        'Angeles, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was'
+        ' traveling eastbound on [XXX] and came to a stop for a red traffic light in the dedicated left turn '
+        'lane, preparing to make a left turn onto northbound [XXX]. A passenger car approached the stationary'
+        ' Waymo AV from behind in the adjacent straight lane, and crossed into the lane that the Waymo AV was'
+        ' occupying. The front driver side of the passenger car made contact with the rear passenger side of '
+        "the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 '
+        'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }
 
 
@@ -310,3 +323,11 @@ def test_numbered_individuals_are_people_on_foot() -> None:
     sk = extract(_SGO["nhtsa-sgo-ads-30610-3719-v2"][1], "nhtsa-sgo-ads-30610-3719-v2")
     assert sk.npcs and sk.npcs[0].category == "pedestrian"
     assert (sk.collision.with_, sk.collision.type) == ("npc1", "pedestrian")
+
+
+def test_a_party_in_the_adjacent_lane_is_on_the_side_of_the_av_it_touched() -> None:
+    # "A passenger car approached the stationary Waymo AV from behind in the adjacent straight lane, and crossed into
+    # the lane that the Waymo AV was occupying. The front driver side of the passenger car made contact with the rear
+    # passenger side": the adjacent lane, its side told by the contact (right), not the AV's own lane.
+    p = _party("nhtsa-sgo-ads-30270-9371-v1")
+    assert (p.position, p.lane, p.actions) == ("R6", "right", "af")

@@ -425,6 +425,8 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
 _TAIL_END = compile_gated(r"\brear\s+(?:quarter|bumper|corner|end|fender|wheel|tire|light)|\btail(?:light|gate)?\b|"
                           r"\bback\s+(?:bumper|corner)", re.I)
 _REAR_DOOR = compile_gated(r"\brear\s+(?:\w+\s+){0,2}door", re.I)
+# "in the adjacent lane", "from the adjacent straight lane": beside the AV, on a side the words do not name.
+_ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+the\s+adjacent\s+(?!left\b|right\b)(?:[\w-]+\s+)?lane\b", re.I)
 # Leaving a place off the roadway that lines the curb: "reversed out of a parking spot", "exiting a driveway".
 _OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
                                  r"(?:a|an|the|its|their)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|carport|parking\s+"
@@ -524,10 +526,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.
         lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
-    elif cside and lane == "same" and (pos == "R5" or passing or flank) and contact is not None and \
+    elif cside and lane == "same" and (pos == "R5" or passing or flank or _ADJACENT_LANE.search(context(d, e))) and \
+            contact is not None and \
             not (backing and pos == "R5" and fore == "front"):
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
-        # passing or splitting lanes was beside the AV on the side it touched. (One ahead backing into a front
+        # passing, splitting lanes or said to be in the adjacent lane (no side named: "approached EGO from behind
+        # in the adjacent straight lane") was beside the AV on the side it touched. (One ahead backing into a front
         # corner of the AV came straight back in its lane: "began reversing in front of the vehicle ... collided
         # with the front left corner".)
         lane, rule = cside, rule + "; contact side"
