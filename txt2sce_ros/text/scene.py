@@ -65,12 +65,14 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       # Streets"), a level crossing of rails: a place on a road, away from its junctions
                       r"(?-i:between\s+(?:\[XXX\]|[A-Z0-9][\w.]*)(?:\s+[A-Z][\w.]*){0,3}\s+and\s+(?:\[XXX\]|[A-Z0-9]))|"
                       r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
+# "was preparing to make a right-on-red": a turn made on red is made at a signal.
+_TURN_ON_RED = r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b"
 _SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
                      r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b|"
-                     r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b", re.I)
+                     + _TURN_ON_RED, re.I)
 _STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
@@ -170,7 +172,7 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     return False
 
 
-_DIR = r"(north|south|east|west|northeast|northwest|southeast|southwest)"
+_DIR = "(" + "|".join(sorted(CARDINALS, key=len, reverse=True)) + ")"  # a compass heading (its word captured)
 _STREET = (r"((?-i:(?:[A-Z0-9][\w.']*\s+){0,3}?(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln|"
            r"Expressway|Parkway|Highway|Real)\b)|\[XXX\])")
 # "southbound on Albion Street", "on northbound [XXX]": a heading told on a named (or redacted) street.
@@ -248,8 +250,8 @@ TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|ha
 
 
 # A red light named as such (not "a red sedan"): "a red light", "the red traffic signal", "a right-on-red", "turned red".
-_RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b|"
-                           r"\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b", re.I)
+_RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|" + _TURN_ON_RED +
+                           r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b", re.I)
 _AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic\s+)?(?:light|signal)\b", re.I)
 _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 

@@ -388,7 +388,6 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     return (*sequence(prefix + post, stopped=stopped, ego=True, side=None), opened)
 
 
-
 # "After completing a right turn onto Taraval, ...", "After EGO made a right turn from Pleasant Street, ...", "had made
 # a right turn from Oakdell Rd.": a turn told as done before the clause that tells the story.
 # "Having completed ...", "Shortly after turning left ...": an "after" that opens the sentence or a clause, or a
