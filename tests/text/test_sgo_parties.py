@@ -214,6 +214,13 @@ _SGO: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 '
         'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'dmvca-apple-20240126-r555': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 555, column '
+        '"Accident Detail Description")',
+        'On January 26th, a test vehicle operating with the automated driving system engaged was traveling '
+        'Eastbound on Interstate 580 in Castro Valley when a nearby semi-trailer truck merging from '
+        'Interstate 238 generated a draft that projected road debris onto the test vehicle. No injuries were '
+        'reported and law enforcement was not called to the scene. The test vehicle sustained minor damage.'),
 }
 
 
@@ -331,3 +338,11 @@ def test_a_party_in_the_adjacent_lane_is_on_the_side_of_the_av_it_touched() -> N
     # passenger side": the adjacent lane, its side told by the contact (right), not the AV's own lane.
     p = _party("nhtsa-sgo-ads-30270-9371-v1")
     assert (p.position, p.lane, p.actions) == ("R6", "right", "af")
+
+
+def test_debris_a_party_threw_at_the_av_came_from_where_that_party_was() -> None:
+    # (dev.jsonl, official gold) "a nearby semi-trailer truck merging from Interstate 238 generated a draft that
+    # projected road debris onto the test vehicle": the truck merged in from the right; the debris came from there.
+    sk = extract(_SGO["dmvca-apple-20240126-r555"][1], "dmvca-apple-20240126-r555")
+    assert (sk.npcs[0].position, sk.npcs[0].lane) == ("R5", "right")
+    assert (sk.obstacles[0].category, sk.obstacles[0].position, sk.obstacles[0].lane) == ("debris", "R5", "right")

@@ -25,7 +25,7 @@ from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
                         prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact)
 from .story import (BOILERPLATE, body_side, context, Doc, add_doors, attach_towed, before_contact, counted,
-                    ego_contact_part, find_contact, heading, summary_sentences)
+                    ego_contact_part, find_contact, heading, summary_sentences, thrower)
 
 
 #: The longest narrative read (characters). Real section-5 narratives run to ~3,500 characters; the extractor's
@@ -176,6 +176,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     missing: list[str] = []
     idmap: dict[int, str] = {}
     behind: set[int] = set()
+    placed_at: dict[int, tuple[str, str | None]] = {}  # entity -> (position, lane) of its party
     for k, e in enumerate(parties, 1):
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
         placed = place(d, e, (pos, lane), ego_actions, ego_turning)
@@ -188,6 +189,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         ev.spans(f"{slot}.position", [c.span for c in placed.cues] or None, fallback=e)
         if pos == "R6":
             behind.add(e.idx)
+        placed_at.setdefault(e.idx, (pos, lane))
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]
         if not any(a.code in "defgjkmFT" for a in pacts):
             # The telling gives no manoeuvre of the party but the summary does ("A Nissan made a left turn into
@@ -276,6 +278,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     obs: list[Obstacle] = []
     for k, e in enumerate(obstacles, 1):
         pos, lane = obstacle_position(d, e, ego_actions, ego_turning)
+        thrown_from = placed_at.get(thrower(d, e) if e.category == "debris" else None)
+        if thrown_from and thrown_from[0] in ("R5", "R6", "R7") and thrown_from[1]:
+            # Debris a party threw at the AV ("a nearby semi-trailer truck merging from Interstate 238 generated a
+            # draft that projected road debris onto the test vehicle") came from where that party was.
+            pos, lane = thrown_from
         cat = "door" if e.idx in d.doors else ("parked_vehicle" if e.kind == "party" else e.category)
         ev.mention(f"obstacles[{k - 1}].category", e)
         obs.append(Obstacle(id=f"obs{k}", category=cat, position=pos, lane=lane))  # type: ignore[arg-type]

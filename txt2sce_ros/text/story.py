@@ -154,9 +154,7 @@ def find_contact(d: Doc) -> None:
                 # Debris a party threw up ("ran over road debris, which was projected onto EGO") is what touched
                 # the AV, not the party that threw it.
                 for x in others:
-                    if x.kind == "obstacle" and (_THROWN_AFTER.match(s[x.end:x.end + 50]) or
-                                                 _THROWN_BEFORE.search(s[max(0, x.start - 40):x.start]) or
-                                                 _THROWN_MOD.match(x.mods)):
+                    if x.kind == "obstacle" and _thrown(s, x):
                         partner = x.entity
                         break
                 # A door that opened in the same sentence is what touched the AV.
@@ -401,6 +399,24 @@ def add_doors(d: Doc) -> None:
             d.ments[i].sort(key=lambda x: x.start)
             d.doors[idx] = owner
             break
+
+
+def _thrown(s: str, x: Mention) -> bool:
+    """Is the object named by mention `x` of sentence `s` told as thrown ("road debris, which was projected onto
+    EGO", "kicked up a rock", "projected road debris")?"""
+    return bool(_THROWN_AFTER.match(s[x.end:x.end + 50]) or _THROWN_BEFORE.search(s[max(0, x.start - 40):x.start]) or
+                _THROWN_MOD.match(x.mods))
+
+
+def thrower(d: Doc, e: Entity) -> int | None:
+    """The party that threw object `e` at the AV: the last party named before the object in a sentence that tells
+    it thrown ("a nearby semi-trailer truck ... generated a draft that projected road debris onto EGO")."""
+    for m in e.mentions:
+        if _thrown(d.sents[m.sent], m):
+            before = [x.entity for x in d.ments[m.sent] if x.kind == "party" and x.entity >= 0 and x.end <= m.start]
+            if before:
+                return before[-1]
+    return None
 
 
 def attach_towed(d: Doc) -> None:
