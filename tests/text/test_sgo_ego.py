@@ -104,6 +104,20 @@ _SGO: dict[str, tuple[str, str]] = {
         "mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
         "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
         "may become available."),
+    'nhtsa-sgo-ads-30270-7734-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7734,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On May [XXX], 2024 at 9:34 PM MT Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix, Arizona was"
+        " in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling east on [XXX] "
+        "and came to a stop at a red light at the intersection with [XXX] to prepare for a right turn. The Waymo "
+        "AV yielded to cross traffic traveling south on [XXX] and then initiated a right turn when a passenger "
+        "car traveling north on [XXX] initiated a U-turn across the intended path of the Waymo AV. The Waymo AV "
+        "slowed to yield to the U-turning passenger car and had begun to accelerate again to complete the right "
+        "turn when the front of another passenger car which was following behind the Waymo AV made contact with "
+        "the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        "autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of "
+        "Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or "
+        "correct its reporting with additional information as it may become available."),
 }
 
 
@@ -158,3 +172,10 @@ def test_following_an_event_is_after_it() -> None:
     # "was parked at the curb facing west following a passenger drop-off ... While the Waymo AV remained
     # stationary": "following" tells when, not a vehicle followed; the parked AV stood throughout.
     assert _ego("nhtsa-sgo-ads-30270-10666-v1") == ("stopped", "")
+
+
+def test_accelerating_after_a_slowing_is_a_speed_up() -> None:
+    # Stopped at a red light, then "initiated a right turn ... The Waymo AV slowed to yield to the U-turning
+    # passenger car and had begun to accelerate again to complete the right turn when" it was struck: moving off,
+    # the turn, the slowing, then the speed-up (`iecb`), not a second start.
+    assert _ego("nhtsa-sgo-ads-30270-7734-v1") == ("stopped", "iecb")

@@ -50,8 +50,11 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             continue  # a turn whose side nothing told (ego_sequence resolves the AV's "D" before this)
         if c == "i" and "accelerat" in a.text.lower() and codes and codes[-1] == "k":
             continue  # "transitioned into reverse and began to accelerate": the backing, faster; no start forward
-        if c == "i" and "accelerat" in a.text.lower() and start == "moving" and (not codes or codes[-1] != "h"):
-            c = "b"  # "began to accelerate" while on its way speeds up; only from a standstill is it a start
+        if c == "i" and "accelerat" in a.text.lower() and (
+                start == "moving" and (not codes or codes[-1] != "h") or codes[-1:] == ["c"]):
+            # "began to accelerate" while on its way speeds up, as after a slowing ("slowed to yield to the U-turning
+            # passenger car and had begun to accelerate again"); only from a standstill is it a start
+            c = "b"
         if c == "O":
             # Out of a parking spot at the curb: it stood, moved off, and moved into the traffic lane (left from
             # a right-hand curb, right from a left-hand one).
