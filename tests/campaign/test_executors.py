@@ -38,3 +38,17 @@ def test_serial_pool_and_ray_give_the_same_results(seed_files: list[Path], ray_t
 def test_unknown_executor_is_an_input_error(seed_files: list[Path]) -> None:
     with pytest.raises(InputError, match="unknown executor 'threads'"):
         list(run_tasks(execute, jobs(make_tasks(seed_files[:1])), executor="threads"))
+
+
+def _collector_settings(_: int) -> tuple[int, bool]:
+    import gc
+
+    return gc.get_threshold()[0], gc.get_freeze_count() > 0
+
+
+def test_pool_workers_run_the_collector_less_often_over_a_frozen_inheritance() -> None:
+    from txt2sce_ros.campaign.executors import WORKER_GC_GEN0
+
+    got = set(run_tasks(_collector_settings, range(4), executor="pool", workers=2))
+    assert got == {(WORKER_GC_GEN0, True)}
+    assert WORKER_GC_GEN0 > 700                 # above CPython's default, or the setting buys nothing
