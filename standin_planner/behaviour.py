@@ -90,10 +90,41 @@ class EgoOnPath:
     half_width: float
 
 
+#: Window (m) of the object projections, and how many standing objects' measurements a line remembers.
+MEASURE_WINDOW = 150.0
+MEASURE_CACHE = 256
+
+
 def measure(obj: EntityState, line: RefLine, near_s: float) -> PathObject:
+    # A standing object (static obstacle, waiting car) is measured the same every step: remembered per line by
+    # everything the measurement reads and the segments the projection searches. Only for a speed of +0.0 and a
+    # position off both axes, where the sign of a zero cannot reach the result (a zero heading or centre offset
+    # then adds nothing to x and y, and the heading enters only through wrap_angle of a difference).
+    if obj.speed == 0.0 and obj.x != 0.0 and obj.y != 0.0 and math.copysign(1.0, obj.speed) > 0.0 \
+            and obj.length > 0.0 and obj.width > 0.0:
+        memo = line.cache.get(_MEASURED)
+        if memo is None:
+            memo = line.cache[_MEASURED] = {}
+        key = (obj.x, obj.y, obj.heading, obj.center_x, obj.length, obj.width,
+               line.window(near_s, MEASURE_WINDOW))
+        hit = memo.get(key)
+        if hit is None:
+            if len(memo) >= MEASURE_CACHE:
+                memo.clear()
+            po = _measure(obj, line, near_s)
+            memo[key] = (po.s_min, po.s_max, po.offset, po.half_lat, po.v_along, po.rel_heading)
+            return po
+        return PathObject(obj, *hit)
+    return _measure(obj, line, near_s)
+
+
+_MEASURED = "behaviour.measure"
+
+
+def _measure(obj: EntityState, line: RefLine, near_s: float) -> PathObject:
     cx = obj.x + obj.center_x * math.cos(obj.heading)
     cy = obj.y + obj.center_x * math.sin(obj.heading)
-    pp = line.project(cx, cy, near_s=near_s, window=150.0)
+    pp = line.project(cx, cy, near_s=near_s, window=MEASURE_WINDOW)
     rel = wrap_angle(obj.heading - pp.heading)
     c, s = abs(math.cos(rel)), abs(math.sin(rel))
     half_long = 0.5 * (c * obj.length + s * obj.width)

@@ -26,6 +26,9 @@ MIN_CHUNKS = 16
 #: Slack (m) on the chunk distance bounds: far above rounding errors, so pruning never drops the nearest segment.
 CHUNK_SLACK = 1e-6
 
+#: Slack (m) on the radius of the circle round a range of chunks (`far_from_straight`'s first test).
+GROUP_SLACK = 1e-6
+
 #: Turns at a vertex sharper than this (rad) are not bounded by `far_from` (a lane join's kink).
 MAX_BOUNDED_TURN = 1.2
 
@@ -144,6 +147,10 @@ class RefLine:
         self._dx_list: list[float] = self._dx.tolist()
         self._dy_list: list[float] = self._dy.tolist()
         self._L2_list: list[float] = self._L2.tolist()
+        self._groups: dict[tuple[int, int], tuple[float, float, float, float] | None] = {}  # `_chunk_group`
+        self._widths: dict[float, float] = {}                               # `width_at` by s
+        self._rooms: dict[tuple[float, float], tuple[float, float]] = {}    # `neighbour_room` by (s0, s1)
+        self._turns: dict[tuple[float, int, int, float], bool] = {}        # `turns_across` by its question
         #: Derived per-vertex arrays keyed by their parameters (e.g. curve speed limits), filled by their users.
         self.cache: dict = {}
 
@@ -171,7 +178,16 @@ class RefLine:
         """Whether the line runs across `heading` anywhere in [s0, s1] (|sin(difference)| at least `min_sin`): a
         turn across the course of a party travelling on beside it or towards it."""
         i0, i1 = self._index(s0), self._index(s1)
-        return bool(np.any(np.abs(np.sin(self._seg_heading[i0:i1 + 1] - heading)) >= min_sin))
+        # A party on a straight course asks the same every step, from the same segments: remembered (by the
+        # exact heading; the answer is a comparison of |sin|, the same for either sign of a zero).
+        key = (heading, i0, i1, min_sin)
+        hit = self._turns.get(key)
+        if hit is None:
+            if len(self._turns) >= PROJECTION_CACHE:
+                self._turns.clear()
+            hit = self._turns[key] = bool(np.any(np.abs(np.sin(self._seg_heading[i0:i1 + 1] - heading))
+                                                 >= min_sin))
+        return hit
 
     def curvature_at(self, s: float) -> float:
         return float(np.interp(s, self.s, self.curvature))
@@ -182,15 +198,31 @@ class RefLine:
         return np.stack([self.s[mask], np.abs(self.curvature[mask])], axis=1)
 
     def width_at(self, s: float) -> float:
-        return float(np.interp(s, self.s, self.lane_width))
+        # A static obstacle's pass is planned at the same arc lengths every step: remembered (by the exact s; a
+        # zero of either sign interpolates to the first vertex's width).
+        hit = self._widths.get(s)
+        if hit is None:
+            if len(self._widths) >= PROJECTION_CACHE:
+                self._widths.clear()
+            hit = self._widths[s] = float(np.interp(s, self.s, self.lane_width))
+        return hit
 
     def neighbour_room(self, s0: float, s1: float) -> tuple[float, float]:
         """Narrowest same-direction neighbour lane width (left, right) over [s0, s1] (0 where there is none)."""
+        key = (s0, s1)                                  # remembered as `width_at` (asked alike every step)
+        hit = self._rooms.get(key)
+        if hit is not None:
+            return hit
+        if len(self._rooms) >= PROJECTION_CACHE:
+            self._rooms.clear()
         # The vertices with s0 <= s <= s1 (s is sorted): an index range, the same elements a mask would pick.
         lo, hi = bisect.bisect_left(self.s_list, s0), bisect.bisect_right(self.s_list, s1)
         if lo >= hi or s0 != s0 or s1 != s1:                           # (a NaN bound selects nothing)
-            return float(np.interp(s0, self.s, self.room_left)), float(np.interp(s0, self.s, self.room_right))
-        return float(self.room_left[lo:hi].min()), float(self.room_right[lo:hi].min())
+            hit = float(np.interp(s0, self.s, self.room_left)), float(np.interp(s0, self.s, self.room_right))
+        else:
+            hit = float(self.room_left[lo:hi].min()), float(self.room_right[lo:hi].min())
+        self._rooms[key] = hit
+        return hit
 
     def junction_at(self, s: float) -> bool:
         return bool(self.in_junction[min(self._index(s) + 1, len(self.s) - 1)])
@@ -215,19 +247,21 @@ class RefLine:
         after = idx[idx > inside[0]]
         return float(self.s[after[0]]) if len(after) else self.length
 
+    def window(self, near_s: float, window: float) -> tuple[int, int]:
+        """The segments (first, end) `project` searches for (near_s, window): those within `window` m of near_s."""
+        # One step asks with the same (near_s, window) several times: for the ego twice, for every object.
+        if self._window[0] == (near_s, window):
+            return self._window[1]
+        lo = max(0, self._index(near_s - window))
+        hi = min(len(self._seg), self._index(near_s + window) + 1)
+        self._window = ((near_s, window), (lo, hi))
+        return lo, hi
+
     def project(self, x: float, y: float, *, near_s: float | None = None, window: float = 60.0) -> PathPoint:
         """Nearest point of the line to (x, y): arc length, signed left offset, heading. With `near_s`, only the
         stretch within `window` metres of it is searched, so a route that passes the same place twice (loops,
         U-turns) projects onto the right pass."""
-        lo, hi = 0, len(self._seg)
-        if near_s is not None:
-            # One step asks with the same (near_s, window) several times: for the ego twice, for every object.
-            if self._window[0] == (near_s, window):
-                lo, hi = self._window[1]
-            else:
-                lo = max(0, self._index(near_s - window))
-                hi = min(len(self._seg), self._index(near_s + window) + 1)
-                self._window = ((near_s, window), (lo, hi))
+        lo, hi = (0, len(self._seg)) if near_s is None else self.window(near_s, window)
         # (0.0 == -0.0 as a key, but the sign of a zero can reach the answer: such points are not cached.)
         key = (x, y, lo, hi) if x != 0.0 and y != 0.0 else None
         hit = self._projections.get(key)
@@ -387,14 +421,21 @@ class RefLine:
             return True
         vx, vy = bx - ax, by - ay
         v2 = vx * vx + vy * vy
-        for k in range(k_lo, k_hi):
-            if inv_cos[k] == math.inf:
-                return False
-            cx, cy = cxs[k], cys[k]
-            t = 0.0 if v2 == 0.0 else min(max(((cx - ax) * vx + (cy - ay) * vy) / v2, 0.0), 1.0)
-            if not math.hypot(cx - (ax + t * vx), cy - (ay + t * vy)) - crs[k] > \
-                    reach * inv_cos[k] * (1.0 + 1e-9) + slack:
-                return False
+        group = self._chunk_group(k_lo, k_hi)
+        if group is None:
+            return False                   # a turn too sharp to bound: the loop below would stop there
+        gx, gy, gr, worst = group
+        t = 0.0 if v2 == 0.0 else min(max(((gx - ax) * vx + (gy - ay) * vy) / v2, 0.0), 1.0)
+        # One circle holding every live chunk's circle: a piece clear of it by the largest bound is clear of each
+        # (its distance to a chunk's circle is at least its distance to this one; `_chunk_group` adds slack for
+        # the rounding), so the chunk loop would find them all clear.
+        if not math.hypot(gx - (ax + t * vx), gy - (ay + t * vy)) - gr > reach * worst * (1.0 + 1e-9) + slack:
+            for k in range(k_lo, k_hi):
+                cx, cy = cxs[k], cys[k]
+                t = 0.0 if v2 == 0.0 else min(max(((cx - ax) * vx + (cy - ay) * vy) / v2, 0.0), 1.0)
+                if not math.hypot(cx - (ax + t * vx), cy - (ay + t * vy)) - crs[k] > \
+                        reach * inv_cos[k] * (1.0 + 1e-9) + slack:
+                    return False
         for end, seg, sign, is_live in ((0, 0, -1.0, k_lo == 0), (len(self.xy) - 1, self._last_seg, 1.0,
                                                                      k_hi == len(cs0))):
             if not is_live:
@@ -409,6 +450,26 @@ class RefLine:
             if max(a_lo, c_lo) <= min(a_hi, c_hi):
                 return False
         return True
+
+    def _chunk_group(self, k_lo: int, k_hi: int) -> tuple[float, float, float, float] | None:
+        """(x, y, radius, largest 1/cos) of one circle holding the circles of chunks k_lo..k_hi - 1 (None when a
+        turn among them is too sharp to bound), remembered by range. The radius has GROUP_SLACK m added, far
+        above the rounding of the distances compared with it."""
+        key = (k_lo, k_hi)
+        if key in self._groups:
+            return self._groups[key]
+        if len(self._groups) >= PROJECTION_CACHE:
+            self._groups.clear()
+        inv_cos = self._chunk_inv_cos[k_lo:k_hi]
+        if np.isinf(inv_cos).any():
+            found = None
+        else:
+            cx, cy, r = self._chunk_x[k_lo:k_hi], self._chunk_y[k_lo:k_hi], self._chunk_r[k_lo:k_hi]
+            gx, gy = 0.5 * (float(cx.min()) + float(cx.max())), 0.5 * (float(cy.min()) + float(cy.max()))
+            gr = float((np.hypot(cx - gx, cy - gy) + r).max()) + GROUP_SLACK
+            found = (gx, gy, gr, float(inv_cos.max()))
+        self._groups[key] = found
+        return found
 
     def _candidate_segments(self, xs: np.ndarray, ys: np.ndarray) -> np.ndarray | None:
         """Per point (row), increasing segment indices covering every chunk that may hold its nearest segment

@@ -279,3 +279,183 @@ def test_far_from_straight_never_rules_out_a_course_the_projection_would_find_ne
         said_far += far
         near += hit
     assert said_far > 50 and near > 50
+
+
+def _chunk_loop_far_from_straight(line: RefLine, ax: float, ay: float, bx: float, by: float, reach: float,
+                                  s0: float, s1: float) -> bool:
+    """`far_from_straight` as written before its one-circle first test: every live chunk tested in turn."""
+    import bisect
+
+    from standin_planner.refline import CHUNK_SLACK, _affine_interval
+
+    cs0, cs1, cxs, cys, crs, inv_cos = line._chunk_lists
+    slack = 2.0 * CHUNK_SLACK
+    k_lo = bisect.bisect_right(cs1, s0 - CHUNK_SLACK)
+    k_hi = bisect.bisect_left(cs0, s1 + CHUNK_SLACK)
+    if k_lo >= k_hi:
+        return True
+    vx, vy = bx - ax, by - ay
+    v2 = vx * vx + vy * vy
+    for k in range(k_lo, k_hi):
+        if inv_cos[k] == math.inf:
+            return False
+        cx, cy = cxs[k], cys[k]
+        t = 0.0 if v2 == 0.0 else min(max(((cx - ax) * vx + (cy - ay) * vy) / v2, 0.0), 1.0)
+        if not math.hypot(cx - (ax + t * vx), cy - (ay + t * vy)) - crs[k] > reach * inv_cos[k] * (1.0 + 1e-9) + slack:
+            return False
+    for end, seg, sign, is_live in ((0, 0, -1.0, k_lo == 0), (len(line.xy) - 1, line._last_seg, 1.0,
+                                                             k_hi == len(cs0))):
+        if not is_live:
+            continue
+        h = float(line._seg_heading[seg])
+        c, s = math.cos(h), math.sin(h)
+        ex, ey = float(line.xy[end, 0]), float(line.xy[end, 1])
+        along = [sign * ((px - ex) * c + (py - ey) * s) for px, py in ((ax, ay), (bx, by))]
+        across = [(py - ey) * c - (px - ex) * s for px, py in ((ax, ay), (bx, by))]
+        a_lo, a_hi = _affine_interval(along[0], along[1], -slack, math.inf)
+        c_lo, c_hi = _affine_interval(across[0], across[1], -(reach + slack), reach + slack)
+        if max(a_lo, c_lo) <= min(a_hi, c_hi):
+            return False
+    return True
+
+
+def test_far_from_straight_first_circle_answers_as_the_chunk_loop():
+    """`far_from_straight` first tests the piece against one circle holding all live chunks' circles: its answer
+    must be the chunk loop's for every piece (clear of the path, grazing it at every distance, crossing it), on
+    lanes, the self-approaching loop, a line far from the origin and the kinked line; and the circle must settle
+    most clear pieces by itself."""
+    rng = np.random.default_rng(11)
+    offset = RefLine(np.stack([np.linspace(0.0, 300.0, 601) + 35000.0, 8.0 * np.sin(np.linspace(0.0, 6.0, 601))
+                               - 12000.0], axis=1))
+    cases = list(_points_around_kinked_lines(rng))
+    cases += [(offset, *offset.position(float(rng.uniform(-25.0, 325.0)), float(rng.normal(0.0, 30.0)))[:2])
+              for _ in range(200)]
+    clear = settled = 0
+    for line, x, y in cases:
+        for _ in range(5):
+            h = float(rng.uniform(-math.pi, math.pi))
+            run = float(rng.choice([0.0, 2.0, 20.0, 70.0]))
+            reach = float(rng.uniform(1.0, 12.0))
+            s0 = float(rng.uniform(-10.0, line.length))
+            args = (x, y, x + run * math.cos(h), y + run * math.sin(h), reach, s0, s0 + 81.0)
+            want = _chunk_loop_far_from_straight(line, *args)
+            assert line.far_from_straight(*args) == want, args
+            if want:
+                clear += 1
+                group = line._chunk_group(*_live_range(line, s0, s0 + 81.0))
+                gx, gy, gr, worst = group
+                settled += _piece_distance(*args[:4], gx, gy) - gr > reach * worst * (1.0 + 1e-9) + 2e-6
+    assert clear > 300 and settled > 0.5 * clear
+
+
+def _live_range(line: RefLine, s0: float, s1: float) -> tuple[int, int]:
+    import bisect
+
+    from standin_planner.refline import CHUNK_SLACK
+
+    return (bisect.bisect_right(line._chunk_lists[1], s0 - CHUNK_SLACK),
+            bisect.bisect_left(line._chunk_lists[0], s1 + CHUNK_SLACK))
+
+
+def _piece_distance(ax: float, ay: float, bx: float, by: float, px: float, py: float) -> float:
+    vx, vy = bx - ax, by - ay
+    v2 = vx * vx + vy * vy
+    t = 0.0 if v2 == 0.0 else min(max(((px - ax) * vx + (py - ay) * vy) / v2, 0.0), 1.0)
+    return math.hypot(px - (ax + t * vx), py - (ay + t * vy))
+
+
+def test_chunk_group_circle_holds_every_chunk_circle():
+    for line in _lines(BUNDLED_MAPS / "roundabout.xodr")[:6] + _long_lines():
+        n = len(line._chunk_r)
+        for k_lo in range(n):
+            for k_hi in range(k_lo + 1, min(n, k_lo + 12) + 1):
+                group = line._chunk_group(k_lo, k_hi)
+                if group is None:
+                    assert np.isinf(line._chunk_inv_cos[k_lo:k_hi]).any()
+                    continue
+                gx, gy, gr, worst = group
+                for k in range(k_lo, k_hi):
+                    d = math.hypot(line._chunk_x[k] - gx, line._chunk_y[k] - gy) + line._chunk_r[k]
+                    assert d + 1e-7 <= gr
+                    assert line._chunk_inv_cos[k] <= worst
+
+
+def test_turns_across_memo_answers_as_the_plain_formula():
+    """`turns_across` remembers its answers by (heading, segments, threshold): asked again, or asked something
+    else (another heading, stretch or threshold), it answers as the formula does."""
+    line = _lines(BUNDLED_MAPS / "roundabout.xodr")[0]
+    rng = np.random.default_rng(2)
+
+    def plain(h: float, s0: float, s1: float, m: float) -> bool:
+        i0, i1 = line._index(s0), line._index(s1)
+        return bool(np.any(np.abs(np.sin(line._seg_heading[i0:i1 + 1] - h)) >= m))
+
+    answers = set()
+    for _ in range(3000):
+        h = float(rng.choice([0.0, -0.0, 1.0, float(rng.uniform(-math.pi, math.pi))]))
+        s0 = float(rng.uniform(-5.0, line.length))
+        s1 = s0 + float(rng.choice([1.0, 10.0, 80.0]))
+        m = float(rng.choice([0.2, 0.42, 0.9]))
+        got = line.turns_across(h, s0, s1, m)
+        assert got == plain(h, s0, s1, m), (h, s0, s1, m)
+        answers.add(got)
+    assert answers == {True, False}
+    assert 0 < len(line._turns) <= 256
+
+
+def test_standing_object_measure_memo_equals_the_plain_measurement():
+    """`measure` remembers a standing object's measurement per line: the answer for a later frame (another t,
+    another state object) must be the plain one bit for bit, for the same object and for others at the same
+    place with another heading, size or centre; a moving object, or one at speed -0.0, is measured afresh."""
+    import dataclasses
+
+    from standin_planner.behaviour import _MEASURED, _measure, measure
+    from txt2sce_ros.contract import EntityState
+
+    line = _lines(BUNDLED_MAPS / "roundabout.xodr")[0]
+    fresh = _lines(BUNDLED_MAPS / "roundabout.xodr")[0]          # the same line with nothing remembered
+    rng = np.random.default_rng(6)
+    base = []
+    for k in range(40):
+        x, y, h = line.position(float(rng.uniform(0.0, line.length)), float(rng.normal(0.0, 3.0)))
+        base.append(EntityState(name=f"o{k}", category="obstacle", t=0.0, x=x, y=y, heading=h + 0.3, speed=0.0,
+                                length=4.0, width=1.8, center_x=1.2, is_static=True))
+    for t in range(6):
+        for o in base:
+            for variant in (o, dataclasses.replace(o, heading=o.heading + 0.5), dataclasses.replace(o, width=2.5),
+                            dataclasses.replace(o, center_x=0.0), dataclasses.replace(o, speed=-0.0),
+                            dataclasses.replace(o, speed=1.5)):
+                v = dataclasses.replace(variant, t=0.05 * t)
+                near = float(rng.choice([0.0, 40.0, line.length]))
+                got = measure(v, line, near)
+                want = _measure(v, fresh, near)
+                assert got == want and got.state is v
+                assert repr([got.v_along, got.offset, got.rel_heading]) == repr([want.v_along, want.offset,
+                                                                                 want.rel_heading])
+    memo = line.cache[_MEASURED]
+    assert 0 < len(memo) <= 256
+    assert all(key[0] != 0.0 for key in memo)
+
+
+def test_width_and_neighbour_room_memos_answer_as_the_plain_lookups():
+    """`width_at` and `neighbour_room` remember their answers by the exact arc lengths asked (a static obstacle's
+    pass asks the same every step): asked again or asked anew, beyond the ends and with a NaN bound, they answer
+    as the plain interpolation and mask do."""
+    rng = np.random.default_rng(8)
+    lines = _lines(BUNDLED_MAPS / "roundabout.xodr")[:3]
+    ramp = np.linspace(3.0, 4.0, 200)
+    lines.append(RefLine(np.stack([np.linspace(0.0, 100.0, 200), np.zeros(200)], axis=1), lane_width=ramp,
+                         room_left=np.where(np.arange(200) < 120, 3.5, 0.0), room_right=ramp - 1.0))
+    for line in lines:
+        asked = [float(v) for v in rng.uniform(-20.0, line.length + 20.0, 60)] + [0.0, -0.0, float("nan")]
+        for _ in range(3):
+            for s in asked + [float(v) for v in rng.uniform(0.0, line.length, 20)]:
+                want_w = float(np.interp(s, line.s, line.lane_width))
+                assert repr(line.width_at(s)) == repr(want_w)
+                for s1 in (s + 10.0, s + 0.01, s - 1.0):
+                    mask = (line.s >= s) & (line.s <= s1)
+                    want = ((float(line.room_left[mask].min()), float(line.room_right[mask].min())) if mask.any()
+                            else (float(np.interp(s, line.s, line.room_left)),
+                                  float(np.interp(s, line.s, line.room_right))))
+                    assert repr(line.neighbour_room(s, s1)) == repr(want), (s, s1)
+        assert 0 < len(line._widths) <= 256 and 0 < len(line._rooms) <= 256
