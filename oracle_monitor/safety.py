@@ -25,7 +25,7 @@ from typing import Callable, NamedTuple
 
 from txt2sce_ros.contract import EntityState, Frame
 
-from .geometry import Box, box_at, footprint, interpolate, overlaps, penetration
+from .geometry import FAR_SLACK, Box, box_at, footprint, interpolate, overlaps, penetration
 from .params import SafetyParams
 from .records import Category, Rule, Violation
 from .signals import Sample
@@ -59,7 +59,14 @@ class ContactOracle:
             ego_speed = max(ego_speed, abs(self._prev.ego.speed))
         new: list[Contact] = []
         touching: set[str] = set()
+        ex, ey, reach = ego_box.cx, ego_box.cy, ego_box.radius + FAR_SLACK
         for obj in frame.objects:
+            # Far from the ego's box: its box (within |center_x| of its reference point) cannot overlap, and need
+            # not be built (the circle test `overlaps` starts with would say so too).
+            r = reach + math.hypot(0.5 * obj.length, 0.5 * obj.width) + abs(obj.center_x)
+            dx, dy = obj.x - ex, obj.y - ey
+            if dx * dx + dy * dy > r * r:
+                continue
             box = footprint(obj)
             if not overlaps(ego_box, box):
                 continue

@@ -287,3 +287,38 @@ def test_crossing_with_its_pre_test_answers_as_the_plain_test() -> None:
         d2 = (qx[:, None] - xs[None, :]) ** 2 + (np.zeros(2)[:, None] - ys[None, :]) ** 2
         assert apart == (gap > 0.001)
         assert not (apart and (d2 <= 1.5 * 1.5).any())
+
+
+def test_contact_oracle_pre_test_finds_every_overlap_the_box_test_finds() -> None:
+    """`ContactOracle.observe` skips an object whose reference point is far from the ego's box (its box cannot
+    reach it) before building its box: the contacts must be those of testing every box, on objects placed at
+    random around the ego (many touching, overlapping, or just clear; large and zero centre offsets), and the
+    skip must be what decides most of the far ones."""
+    from oracle_monitor.params import OracleParams
+    from oracle_monitor.safety import ContactOracle
+    from txt2sce_ros.contract import Frame
+
+    rng = random.Random(12)
+    params = OracleParams.from_config().safety
+    found = skipped = 0
+    for k in range(400):
+        ego = EntityState(name="ego", category="car", t=0.0, x=500.0 + rng.uniform(-5, 5), y=-300.0,
+                          heading=rng.uniform(-math.pi, math.pi), speed=5.0, length=4.6, width=1.9, center_x=1.4)
+        objs = []
+        for i in range(6):
+            d = rng.choice([rng.uniform(0.0, 6.0), rng.uniform(4.0, 9.0), rng.uniform(9.0, 40.0)])
+            a = rng.uniform(-math.pi, math.pi)
+            objs.append(EntityState(name=f"o{i}", category="car", t=0.0, x=ego.x + d * math.cos(a),
+                                    y=ego.y + d * math.sin(a), heading=rng.uniform(-math.pi, math.pi), speed=0.0,
+                                    length=rng.choice([0.5, 4.5, 12.0]), width=rng.choice([0.5, 1.9, 2.6]),
+                                    center_x=rng.choice([0.0, 1.3, 5.0, -2.0])))
+        oracle = ContactOracle(params)
+        got = {c.entity.name for c in oracle.observe(Frame(t=0.0, ego=ego, objects=tuple(objs), lights=()))}
+        ego_box = footprint(ego)
+        want = {o.name for o in objs if overlaps(ego_box, footprint(o))}
+        assert got == want, k
+        found += len(want)
+        for o in objs:
+            r = ego_box.radius + 1e-3 + math.hypot(0.5 * o.length, 0.5 * o.width) + abs(o.center_x)
+            skipped += (o.x - ego_box.cx) ** 2 + (o.y - ego_box.cy) ** 2 > r * r
+    assert found > 300 and skipped > 800
