@@ -35,6 +35,10 @@ PREDICT_DT = 0.25
 #: The straight stand-in path when there is no route: this long (m).
 STRAIGHT_LENGTH = 200.0
 
+#: Paths planned lately, by network and the exact bits of the ego's and the goal's poses (`EgoPath.plan`).
+_PLANNED: dict[tuple, tuple[np.ndarray, bool]] = {}
+_PLANNED_SIZE = 64
+
 
 class EgoPath:
     """A polyline (x, y, heading per sample, arc length `s`) the ego is expected to drive along."""
@@ -58,9 +62,26 @@ class EgoPath:
     @classmethod
     def plan(cls, network: Any | None, ego: EntityState, goal: Goal | None) -> "EgoPath":
         """The lane route from the ego's pose to the goal on `network`; the straight line ahead when there is no
-        network, no goal, or the road model finds no route (a goal off the road, a start on no lane)."""
+        network, no goal, or the road model finds no route (a goal off the road, a start on no lane).
+
+        The samples depend on nothing else, so they are remembered (read-only) by network and the exact bits of
+        the pose and the goal's pose: a campaign worker runs the nodes of a scenario tree one after another, most
+        of them with the ego standing at the same start with the same goal on the same (cached) network. Each
+        call still gets its own path (its located point and corridor are its own)."""
         if network is None or goal is None:
             return cls.straight(ego)
+        key = (network, *(float(v).hex() for v in (ego.x, ego.y, ego.heading, goal.x, goal.y, goal.heading)))
+        known = _PLANNED.get(key)
+        if known is None:
+            path = cls._plan(network, ego, goal)
+            path.xyh.flags.writeable = False
+            if len(_PLANNED) >= _PLANNED_SIZE:
+                _PLANNED.pop(next(iter(_PLANNED)))
+            _PLANNED[key] = known = (path.xyh, path.routed)
+        return cls(known[0], routed=known[1])
+
+    @classmethod
+    def _plan(cls, network: Any, ego: EntityState, goal: Goal) -> "EgoPath":
         try:
             from txt2sce_ros.road import LanePath
 

@@ -322,3 +322,38 @@ def test_contact_oracle_pre_test_finds_every_overlap_the_box_test_finds() -> Non
             r = ego_box.radius + 1e-3 + math.hypot(0.5 * o.length, 0.5 * o.width) + abs(o.center_x)
             skipped += (o.x - ego_box.cx) ** 2 + (o.y - ego_box.cy) ** 2 > r * r
     assert found > 300 and skipped > 800
+
+
+def test_planned_path_is_remembered_by_network_and_exact_poses() -> None:
+    """`EgoPath.plan` remembers its samples (read-only) by network and the bits of the ego's and goal's poses:
+    asked again it answers with the samples planning afresh gives, as a path of its own; another pose, another
+    goal or -0.0 for 0.0 is planned anew."""
+    from oracle_monitor import egopath
+    from txt2sce_ros.contract import Goal
+    from txt2sce_ros.road import load_network
+
+    from .oracle_runs import esmini_map
+
+    net = load_network(esmini_map("fabriksgatan.xodr"))
+    ref = next(net.lane_ref(r.id, -1, 0.0) for r in net.roads.values() if r.junction in ("-1", "")
+               and -1 in r.sections[0].lanes)
+    pts = net.lane_centerline(ref.road_id, ref.lane_id, 0.5, section=ref.section)
+    h = math.atan2(pts[3, 1] - pts[2, 1], pts[3, 0] - pts[2, 0])
+    ego = _entity("ego", float(pts[2, 0]), float(pts[2, 1]), h)
+    goal = Goal(float(pts[-3, 0]), float(pts[-3, 1]), h)
+    egopath._PLANNED.clear()
+    first = egopath.EgoPath.plan(net, ego, goal)
+    again = egopath.EgoPath.plan(net, ego, goal)
+    fresh = egopath.EgoPath._plan(net, ego, goal)
+    assert first.routed and again is not first and again.xyh.tobytes() == fresh.xyh.tobytes()
+    assert again.s.tobytes() == fresh.s.tobytes() and len(egopath._PLANNED) == 1
+    assert not again.xyh.flags.writeable
+    moved = _entity("ego", float(pts[6, 0]), float(pts[6, 1]), h)
+    assert egopath.EgoPath.plan(net, moved, goal).xyh.tobytes() == egopath.EgoPath._plan(net, moved, goal).xyh.tobytes()
+    near = Goal(float(pts[-9, 0]), float(pts[-9, 1]), h)
+    assert egopath.EgoPath.plan(net, ego, near).xyh.tobytes() == egopath.EgoPath._plan(net, ego, near).xyh.tobytes()
+    assert len(egopath._PLANNED) == 3
+    zero = _entity("ego", float(pts[2, 0]), float(pts[2, 1]), 0.0)
+    egopath.EgoPath.plan(net, zero, goal)
+    egopath.EgoPath.plan(net, _entity("ego", float(pts[2, 0]), float(pts[2, 1]), -0.0), goal)
+    assert len(egopath._PLANNED) == 5
