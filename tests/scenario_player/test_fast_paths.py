@@ -223,3 +223,57 @@ def test_reference_check_refuses_the_first_unknown_reference(esmini) -> None:
             refused += 1
         assert got == want, f.name
     assert refused >= 15
+
+
+def _same(a, b) -> bool:
+    """Equal to the bit (repr tells -0.0 from 0.0 and shows NaN), field by field."""
+    return repr(a) == repr(b)
+
+
+def test_bicycle_command_comparisons_answer_as_the_builtins():
+    import itertools
+
+    from scenario_player.world.kinematics import G, BicycleResult, bicycle_command
+
+    def plain(v, v_cmd, w_cmd, dt, *, wheelbase, max_steer, max_accel, max_decel, max_speed, friction,
+              is_vehicle=True):
+        a = (v_cmd - v) / dt
+        a = min(max(a, -max_decel if max_decel > 0 else -math.inf), max_accel if max_accel > 0 else math.inf)
+        w = w_cmd
+        if is_vehicle and abs(v) > 1e-3:
+            w_max = abs(v) * math.tan(max_steer) / max(wheelbase, 1e-3)
+            w = min(max(w, -w_max), w_max)
+        elif is_vehicle:
+            w = 0.0
+        slipping = False
+        if is_vehicle:
+            mu_g = max(friction, 0.0) * G
+            lat = abs(v * w)
+            if lat > mu_g:
+                w = math.copysign(mu_g / max(abs(v), 1e-6), w)
+                lat = mu_g
+            if a > 0.0:
+                steer = abs(w_cmd) * max(abs(v), abs(v_cmd), 1.0)
+                if math.hypot(a, max(lat, steer)) > mu_g:
+                    a = 0.0
+                    slipping = True
+            elif a < 0.0:
+                room = math.sqrt(max(mu_g * mu_g - lat * lat, 0.0))
+                a = max(a, -room)
+        v_new = v + a * dt
+        if v_cmd >= 0.0 and v_new < 0.0 <= v:
+            v_new = 0.0
+        v_new = min(max(v_new, -max_speed), max_speed) if max_speed > 0 else v_new
+        return BicycleResult(v_new, w, (v_new - v) / dt, slipping)
+
+    values = (-3.0, -0.0, 0.0, 0.5, 8.0, 40.0, math.nan)
+    n = 0
+    for v, v_cmd, w_cmd in itertools.product(values, values, (-0.9, -0.0, 0.0, 0.2, 3.0, math.nan)):
+        for kw in (dict(wheelbase=2.8, max_steer=0.6, max_accel=3.0, max_decel=8.0, max_speed=30.0, friction=1.0),
+                   dict(wheelbase=0.0, max_steer=0.6, max_accel=0.0, max_decel=0.0, max_speed=0.0, friction=-0.2),
+                   dict(wheelbase=2.8, max_steer=0.6, max_accel=3.0, max_decel=8.0, max_speed=30.0, friction=0.1,
+                        is_vehicle=False)):
+            got = bicycle_command(v, v_cmd, w_cmd, 0.05, **kw)
+            assert _same(got, plain(v, v_cmd, w_cmd, 0.05, **kw)), (v, v_cmd, w_cmd, kw)
+            n += 1
+    assert n == 7 * 7 * 6 * 3

@@ -459,3 +459,109 @@ def test_width_and_neighbour_room_memos_answer_as_the_plain_lookups():
                                   float(np.interp(s, line.s, line.room_right))))
                     assert repr(line.neighbour_room(s, s1)) == repr(want), (s, s1)
         assert 0 < len(line._widths) <= 256 and 0 < len(line._rooms) <= 256
+
+
+# --- min/max written as comparisons ----------------------------------------------------------------------------
+
+_SPECIAL = (-math.inf, -7.5, -1.0, -0.05, -0.0, 0.0, 1e-3, 0.04, 0.7, 1.0, 2.5, 30.0, math.inf, math.nan)
+
+
+def _same(a, b) -> bool:
+    """Equal to the bit (repr tells -0.0 from 0.0 and shows NaN), element by element for tuples."""
+    return repr(a) == repr(b)
+
+
+def test_comparisons_answer_as_the_builtin_min_and_max():
+    """The hot functions write min(max(x, lo), hi) as `b if b > a else a` / `b if b < a else a`: the values the
+    builtins give, NaN and signed zeros included (the originals, kept here, against the rewritten functions)."""
+    from standin_planner import idm
+    from standin_planner.params import LongitudinalParams
+
+    lp = LongitudinalParams()
+
+    def free_road(v, v0, p):
+        if v0 <= 0.0:
+            return -p.comfort_decel if v > 0.0 else 0.0
+        return p.max_accel * (1.0 - (max(v, 0.0) / v0) ** p.accel_exponent)
+
+    def plain_stop(v, distance, p, *, plan_decel, cruise, lag=0.0, braking=False, hold=True):
+        if distance <= 0.05:
+            if v <= 0.0:
+                return min(0.0, cruise)
+            return -p.max_decel if v > 1.0 else -max(p.comfort_decel, v * v / 0.1)
+        need = v * v / (2.0 * max(distance - min(lag, 0.5 * distance), 0.05))
+        onset = p.stop_onset_ratio * plan_decel
+        if need >= onset or (braking and v > 0.0 and (need >= 0.3 * onset or distance < idm.CREEP_ZONE)):
+            return -need
+        if hold and v < 0.1 and distance < idm.HOLD_ZONE:
+            return min(cruise, 0.0)
+        v_cap = math.sqrt(2.0 * onset * max(distance - lag - idm.CREEP_ZONE / 3.0, 0.0))
+        if v >= v_cap:
+            return min(cruise, 0.0)
+        return cruise
+
+    checked = 0
+    for v in _SPECIAL:
+        for other in _SPECIAL:
+            if other > 0.0:
+                assert _same(idm.free_road_accel(v, other, lp), free_road(v, other, lp))
+            assert _same(idm.braking_decel(lp, other), min(lp.planned_stop_decel,
+                                                             lp.friction_safety * other * lp.gravity))
+            for lag in (0.0, -0.0, 0.3, 4.0, math.inf, math.nan):
+                for plan_decel, braking in ((1e-15, True), (2.0, False), (2.0, True)):
+                    kw = dict(plan_decel=plan_decel, cruise=0.5, lag=lag, braking=braking)
+                    assert _same(idm.stop_accel(v, other, lp, **kw), plain_stop(v, other, lp, **kw)), (v, other, kw)
+                    checked += 1
+    assert checked > 3000
+
+
+def test_planner_limits_answer_as_the_builtins():
+    """`Planner._limit`, `_build_up` and `_braking_model` (min/max as comparisons) against their plain forms."""
+    from standin_planner.planner import Planner
+
+    planner = Planner(None, None)  # type: ignore[arg-type]
+    c, lp = planner.params.comfort, planner.params.longitudinal
+
+    def plain_limit(accel, a_des, v, dt, urgent, max_decel):
+        if v < 0.05 and accel < 0.0:
+            accel = 0.0
+        jerk = c.emergency_jerk if urgent else c.max_jerk
+        a = min(max(a_des, accel - jerk * dt), accel + c.max_jerk * dt)
+        a = min(max(a, -max_decel), lp.max_accel)
+        if a < 0.0 and not urgent:
+            a = max(a, -math.sqrt(2.0 * c.max_jerk * max(v, 0.0)) - c.max_jerk * dt)
+        if v + a * dt < 0.0:
+            a = -v / dt
+        return a
+
+    n = 0
+    for accel in (-4.0, -0.0, 0.0, 0.3, 2.0):
+        for a_des in _SPECIAL:
+            for v in (-0.0, 0.0, 0.01, 0.3, 6.0, 25.0):
+                for urgent in (False, True):
+                    for max_decel in (0.0, 3.0, 9.0):
+                        planner._accel = accel
+                        got = planner._limit(a_des, v, 0.05, urgent=urgent, max_decel=max_decel)
+                        assert _same(got, plain_limit(accel, a_des, v, 0.05, urgent, max_decel))
+                        assert _same(planner._accel, got)
+                        n += 1
+            for decel in _SPECIAL:
+                planner._accel = accel
+                assert _same(planner._build_up(a_des, decel, 2.0), 0.5 * a_des * max(0.0, decel + accel) / 2.0)
+    for friction in (-0.5, -0.0, 0.0, 0.2, 1.0, 3.0, math.inf, math.nan):
+        planner.road_friction = friction
+        b = planner._braking_model(5.0)
+        assert _same(b.idm_decel, min(lp.comfort_decel, lp.friction_safety * friction * lp.gravity))
+        assert _same(b.max_decel, min(lp.max_decel, friction * lp.gravity))
+    assert n > 1000
+
+
+def test_index_clamps_as_min_max_did():
+    for line in _lines(BUNDLED_MAPS / "curve.xodr")[:2]:
+        for s in (-math.inf, -5.0, -0.0, 0.0, 0.25, line.length / 2, line.length, line.length + 3.0, math.inf,
+                  math.nan) + tuple(float(v) for v in line.s[:5]):
+            want = min(max(int(np.searchsorted(line.s, s, side="right")) - 1, 0), len(line._seg) - 1)
+            assert line._index(s) == want
+            lo, hi = line.window(s, 20.0) if s == s else (None, None)
+            if lo is not None:
+                assert (lo, hi) == (max(0, line._index(s - 20.0)), min(len(line._seg), line._index(s + 20.0) + 1))
