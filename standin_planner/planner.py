@@ -90,7 +90,13 @@ class Planner:
 
     def step(self, frame: Frame) -> ControlCommand:
         ego = frame.ego
-        dt = DEFAULT_DT if self._last_t is None else max(frame.t - self._last_t, 1e-3)
+        # (min/max in the step are written as the builtins' comparisons: max(a, b) is `b if b > a else a`,
+        # min(a, b) `b if b < a else a`, min(xs, key=k) the first x with the smallest k(x); see `_limit`)
+        if self._last_t is None:
+            dt = DEFAULT_DT
+        else:
+            dt = frame.t - self._last_t
+            dt = 1e-3 if 1e-3 > dt else dt
         self._last_t = frame.t
         objects = self.perception.objects(frame)      # every frame, so latency buffers stay filled
         if self.goal is None or not self._ensure_route(ego):
@@ -99,11 +105,15 @@ class Planner:
         assert self.route is not None
         pp = self.route.line.project(ego.x, ego.y, near_s=self._s)
         self._s = pp.s
+        v = ego.speed
         me = EgoOnPath(s=pp.s, s_front=pp.s + ego.center_x + 0.5 * ego.length, offset=pp.offset,
-                       speed=max(ego.speed, 0.0), half_width=0.5 * ego.width)
+                       speed=0.0 if 0.0 > v else v, half_width=0.5 * ego.width)
         braking = self._braking_model(me.speed)
         constraints, target_offset = self._constraints(frame, objects, me, braking)
-        binding = min(constraints, key=lambda c: c.accel)
+        binding = constraints[0]
+        for c in constraints:
+            if c.accel < binding.accel:
+                binding = c
         accel = self._limit(binding.accel, me.speed, dt, urgent=binding.urgent, max_decel=braking.max_decel)
         self._offset = _approach(self._offset, target_offset, OFFSET_RATE * dt)
         speed, yaw = self._lateral(ego, me, accel, dt, starting=binding.accel > 0.0)
