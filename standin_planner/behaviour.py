@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import enum
 import math
+import operator
 from dataclasses import dataclass
 
 import numpy as np
@@ -230,6 +231,9 @@ PASS_SLOPE = 4.0
 PASS_CRAWL = 1.0
 
 
+_S_MIN = operator.attrgetter("s_min")        # the sort key of `obstacle_rules` (a C call, not a lambda)
+
+
 def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: LongitudinalParams,
                    bp: BehaviourParams, sp: StopPlan) -> tuple[list[Constraint], float]:
     """Static (or standing, not-following) objects in the lane: pass them when there is room, else stop before
@@ -239,7 +243,8 @@ def obstacle_rules(objs: list[PathObject], ego: EgoOnPath, line: RefLine, lp: Lo
     the ego's rear has passed it."""
     out: list[Constraint] = []
     offset = 0.0
-    ahead = sorted((po for po in objs if po.s_max > ego.s - 1.0), key=lambda po: po.s_min)
+    behind = ego.s - 1.0
+    ahead = sorted([po for po in objs if po.s_max > behind], key=_S_MIN)
     for po in ahead:
         moving_lead = (not is_static(po.state) and abs(po.rel_heading) <= bp.lead_heading_tolerance
                        and po.v_along >= 0.3)
