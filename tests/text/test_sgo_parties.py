@@ -221,6 +221,16 @@ _SGO: dict[str, tuple[str, str]] = {
         'Eastbound on Interstate 580 in Castro Valley when a nearby semi-trailer truck merging from '
         'Interstate 238 generated a draft that projected road debris onto the test vehicle. No injuries were '
         'reported and law enforcement was not called to the scene. The test vehicle sustained minor damage.'),
+    'csvr-waymo-20240330-s307': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 307, column 'Accident Detail Description'), transcribed",
+        'On March 30, 2024 at 1:33 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco,'
+        ' California was in a collision involving an SUV on Jerrold Avenue at Barneveld Avenue. The Waymo AV '
+        'was stopped at a stop sign on Jerrold Avenue and yielding to a pickup truck that was in the '
+        'intersection making a left turn from Barneveld Avenue onto Jerrold Avenue when the front right '
+        'corner of the SUV, which was traveling behind the Waymo AV, made contact with the rear left corner '
+        "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        'mode. Both vehicles sustained damage.'),
 }
 
 
@@ -346,3 +356,12 @@ def test_debris_a_party_threw_at_the_av_came_from_where_that_party_was() -> None
     sk = extract(_SGO["dmvca-apple-20240126-r555"][1], "dmvca-apple-20240126-r555")
     assert (sk.npcs[0].position, sk.npcs[0].lane) == ("R5", "right")
     assert (sk.obstacles[0].category, sk.obstacles[0].position, sk.obstacles[0].lane) == ("debris", "R5", "right")
+
+
+def test_the_av_s_street_is_read_in_its_own_clause_not_a_turning_party_s() -> None:
+    # "The Waymo AV was stopped at a stop sign on Jerrold Avenue and yielding to a pickup truck that was in the
+    # intersection making a left turn from Barneveld Avenue onto Jerrold Avenue": the AV is on Jerrold (the stop sign
+    # is where it stopped, not another party's clause), and the turn from Barneveld is the truck's; so the truck
+    # turned left onto the AV's street, coming from its right (R3).
+    sk = extract(_SGO["csvr-waymo-20240330-s307"][1], "csvr-waymo-20240330-s307")
+    assert sorted((p.position, p.actions) for p in sk.npcs) == [("R3", "d"), ("R6", "a")]

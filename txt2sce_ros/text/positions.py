@@ -285,8 +285,9 @@ def _read_av_street(d: Doc) -> str | None:
             # Read in the AV's own clause: up to the next party named, a clause word or 160 characters ("EGO,
             # operating in driverless autonomous mode, was traveling at approximately 20 mph eastbound on Bush
             # Street"), not on into another's ("... as EGO began to enter, the SUV turned left onto Larkin Street").
-            end = min([x.start for x in d.ments[i] if x.start > m.end and x.kind in ("party", "obstacle")] +
-                      [m.end + 160])
+            # (a sign is where the AV stopped, "at a stop sign on Jerrold Avenue", no other's clause)
+            end = min([x.start for x in d.ments[i] if x.start > m.end and (x.kind == "party" or x.kind == "obstacle"
+                                                                           and "sign" not in x.head)] + [m.end + 160])
             clause = _AV_CLAUSE_END.split(s[m.end:end], 1)[0]
             if (on := _ON_STREET.search(clause)):
                 return on.group(1).strip().lower()
@@ -314,7 +315,16 @@ def _turn_street(d: Doc, preposition: str, reach: int) -> str | None:
     # Street onto Grant Street, ..." is the party's turn)
     m = fre.search(rf"\bEGO\b(?:(?!\b(?:when|while|whereupon)\b)[^.]){{0,120}}?\bturn\w*\b[^.]{{0,{reach}}}?\b{preposition}\s+"
                    rf"(?:the\s+)?(?:\w+bound\s+)?{_STREET}", d.text)
-    return m.group(1).strip().lower() if m and _turn_is_the_interaction(d, m.start()) else None
+    return m.group(1).strip().lower() if m and _turn_is_the_interaction(d, m.start()) and \
+        not _party_between(d, m.start(), m.start() + m.group(0).find("turn")) else None
+
+
+def _party_between(d: Doc, start: int, end: int) -> bool:
+    """Is a party named between two offsets of the normalised text ("EGO was stopped ... yielding to a pickup truck
+    that was in the intersection making a left turn from Barneveld Avenue": the turn is the truck's)?"""
+    sent = max(0, bisect.bisect_right(d.starts, start) - 1) if d.starts else 0
+    base = d.starts[sent] if d.starts else 0
+    return any(x.kind == "party" and start < base + x.start < end for x in d.ments[sent])
 
 
 def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
