@@ -231,6 +231,19 @@ _SGO: dict[str, tuple[str, str]] = {
         'corner of the SUV, which was traveling behind the Waymo AV, made contact with the rear left corner '
         "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
         'mode. Both vehicles sustained damage.'),
+    'nhtsa-sgo-ads-30270-10561-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10561, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April[XXX], 2025 at 10:41 PM ET a Waymo Autonomous Vehicle ("Waymo AV") operating in Atlanta, '
+        'Georgia was in a collision involving a traffic control gate arm on [XXX] near [XXX]. The Waymo AV '
+        'was traveling southbound on [XXX] and came to a stop behind a passenger car that had stopped for a '
+        'closed traffic control gate arm. While the Waymo AV remained stopped, the gate arm rose to allow the'
+        ' passenger car to pass through. After the passenger car had passed through the gate, the Waymo AV '
+        'began to proceed through the open gate when the gate arm lowered and made contact with the front of '
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        'The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General'
+        ' Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
 }
 
 
@@ -365,3 +378,11 @@ def test_the_av_s_street_is_read_in_its_own_clause_not_a_turning_party_s() -> No
     # turned left onto the AV's street, coming from its right (R3).
     sk = extract(_SGO["csvr-waymo-20240330-s307"][1], "csvr-waymo-20240330-s307")
     assert sorted((p.position, p.actions) for p in sk.npcs) == [("R3", "d"), ("R6", "a")]
+
+
+def test_a_party_the_av_stopped_behind_is_ahead_in_its_lane() -> None:
+    # "The Waymo AV ... came to a stop behind a passenger car that had stopped for a closed traffic control gate arm.
+    # ... the gate arm rose to allow the passenger car to pass through": ahead of the AV in its lane (its later
+    # mention is no test of the first's words), and passing through the gate is no pass of the AV.
+    p = _party("nhtsa-sgo-ads-30270-10561-v1")
+    assert (p.position, p.lane, p.start, p.actions) == ("R5", "same", "stopped", "i")

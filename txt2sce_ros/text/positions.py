@@ -35,8 +35,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if queue and any((w or "").lower() in heads for w in queue.groups()):
         return "R6", "same", True
     fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
-    pre = " ".join(fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
-                   for m in e.mentions[:2])
+    # The words right before each of the first two mentions, in their own clause; a test anchored at the name ("...
+    # behind a ") is made on each, not on the two joined.
+    pres = [fre.split(r"[,;]|\bwhen\b|\bas\b|\bwhile\b", d.sents[m.sent][max(0, m.start - 50):m.start])[-1]
+            for m in e.mentions[:2]]
+    pre = " ".join(pres)
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
     if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and not _PLACE_SIDE.search(ctx) and \
@@ -67,7 +70,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                  r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\bfrom\s+behind\b|\bfrom\s+the\s+rear\b|"
                  r"\bto\s+EGO's\s+rear\b|^\s*\S*\s*behind\b|\b(?:following|trailing|behind)\s+(?:vehicle|car)|"
                  r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
-                 ctx, re.I) or fre.search(r"\b(?:following|trailing)\s*$", pre, re.I):
+                 ctx, re.I) or any(fre.search(r"\b(?:following|trailing)\s*$", p, re.I) for p in pres):
         side = None
         if fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", ctx, re.I):
             side = side_named(fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", ctx, re.I).group(0))
@@ -172,9 +175,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         if junction and ego_turning and fre.search(r"driveway|parking", ctx, re.I):
             return "R4", None, True
         return "R5", side, True
-    if fre.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO|\bEGO\b[^.|]{0,40}\bbehind\s+(?:a|an|the)\s+"
-                 r"(?:\w+\s+){0,3}$", ctx + " " + pre, re.I) or fre.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$",
-                                                                            pre, re.I):
+    if fre.search(r"\b(?:in\s+front\s+of|ahead\s+of)\s+(?:the\s+)?EGO", ctx + " " + pre, re.I) or \
+            any(fre.search(r"\bbehind\s+(?:a|an|the)\s+(?:\w+\s+){0,3}$", p, re.I) for p in pres):
+        # ahead of the AV: said so, or the AV behind it ("came to a stop behind a passenger car")
         return "R5", "same", True
     if junction and ego_turning and e.category in ("pedestrian", "bicycle", "scooter") and \
             fre.search(r"\bcrosswalk\b", ctx, re.I):

@@ -145,7 +145,8 @@ _QUEUE = r"(?:queue|line|row|stopped|queued|waiting|slow\w*|backed-up)\b"
 _PASSED_OTHER = compile_gated(r"(?:[\w-]+\s+){0,2}?(?:pass(?:ed|ing|es)?|past|around)\s+(?:(?:through|into|across|over|"
                               r"beyond)\s+(?:the\s+|a\s+)?(?:intersection|crosswalk|junction|light|signal|stop|crossing|"
                               r"gate|roundabout)|(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+"
-                              rf"EGO|{_QUEUE}))", re.I)
+                              # ("the gate arm rose to allow the passenger car to pass through.": through a place)
+                              rf"EGO|{_QUEUE})|through\s*(?:[.,;]|$))", re.I)
 _PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pass|passing|overtake|overtaking|bypass|"
                             r"bypassing|get\w*\s+ahead\s+of|cut\w*)\s+(?:around|past|by|through)?\s*(?:the|a)\s+"
                             rf"(?:long\s+)?{_QUEUE}"
