@@ -244,6 +244,17 @@ _SGO: dict[str, tuple[str, str]] = {
         'The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General'
         ' Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
         'become available.'),
+    'nhtsa-sgo-ads-30270-8150-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8150,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 11:39 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], '
+        'California was in a collision involving an SUV near [XXX]. The Waymo AV was stopped curbside for a '
+        'pickup facing north on the east side of [XXX] when an SUV that had been stopped partially in-lane '
+        'behind the Waymo AV passed the Waymo AV on the left . The passenger side rear door of the SUV made '
+        'contact with the rear driver side corner of the Waymo AV. At the time of the impact, the Waymo AVs '
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
 }
 
 
@@ -386,3 +397,9 @@ def test_a_party_the_av_stopped_behind_is_ahead_in_its_lane() -> None:
     # mention is no test of the first's words), and passing through the gate is no pass of the AV.
     p = _party("nhtsa-sgo-ads-30270-10561-v1")
     assert (p.position, p.lane, p.start, p.actions) == ("R5", "same", "stopped", "i")
+
+
+def test_stopped_for_a_pickup_facing_north_is_an_errand_not_a_truck() -> None:
+    # "The Waymo AV was stopped curbside for a pickup facing north": a passenger pickup; the one party is the SUV.
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-8150-v1"][1], "nhtsa-sgo-ads-30270-8150-v1")
+    assert len(sk.npcs) == 1
