@@ -29,7 +29,7 @@ import numpy as np
 
 from txt2sce_ros.contract import EntityState, Frame
 
-from .geometry import Box, BoxGroup, box_at, far_apart, footprint, overlaps
+from .geometry import FAR_SLACK, Box, BoxGroup, box_at, far_apart, footprint, overlaps
 from .records import Category, Unavoidable
 
 
@@ -87,12 +87,14 @@ class Counterfactual:
     _foreseen: dict[tuple[str, float], int | None] = field(default_factory=dict, repr=False)
     _boxes: dict[int, list[Box]] = field(default_factory=dict, repr=False)     # per frame, kept as recorded
     _ahead_circles: dict[int, tuple[float, float, float]] = field(default_factory=dict, repr=False)
+    _reach: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = field(default=None, repr=False)
 
     def observe(self, frame: Frame) -> None:
-        if self._ahead_groups or self._foreseen or self._ahead_circles:
+        if self._ahead_groups or self._foreseen or self._ahead_circles or self._reach is not None:
             self._ahead_groups.clear()        # the path driven grew: what was asked before no longer holds
             self._foreseen.clear()
             self._ahead_circles.clear()
+            self._reach = None
         e = frame.ego
         if self.first is None:
             self.first = e
@@ -213,10 +215,9 @@ class Counterfactual:
         # Every footprint the braking ego takes lies in this circle: a frame whose parties are all clear of it has
         # no contact, and its ego box need not be built.
         cx, cy, r = self._stretch_circle(min(along), max(along))
-        for k, dist in zip(range(start, end), along):
+        for k in self._frames_near(cx, cy, r, start, end):
+            dist = along[k - start]
             parties = self.parties[k]
-            if not parties:
-                continue
             boxes = self._footprints(k)
             if all(far_apart(cx, cy, r, b.cx, b.cy, b.radius) for b in boxes):
                 continue
@@ -225,6 +226,39 @@ class Counterfactual:
                 if overlaps(ego, box):
                     return o.name, self.times[k]
         return None
+
+    def _party_reach(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Every recorded party, frame after frame: reference point x, y, the reach round it that holds its
+        footprint (`center_x` offset plus half diagonal plus `FAR_SLACK`), and where each frame's parties begin
+        (one more entry than frames)."""
+        if self._reach is None:
+            flat = [o for ps in self.parties for o in ps]
+            xs = np.array([o.x for o in flat], dtype=float)
+            ys = np.array([o.y for o in flat], dtype=float)
+            reach = (np.abs(np.array([o.center_x for o in flat], dtype=float))
+                     + np.hypot(0.5 * np.array([o.length for o in flat], dtype=float),
+                                0.5 * np.array([o.width for o in flat], dtype=float)) + FAR_SLACK)
+            starts = np.zeros(len(self.parties) + 1, dtype=np.int64)
+            np.cumsum([len(ps) for ps in self.parties], out=starts[1:])
+            self._reach = xs, ys, reach, starts
+        return self._reach
+
+    def _frames_near(self, cx: float, cy: float, r: float, start: int, end: int) -> list[int]:
+        """The frames in [start, end), in order, with a party whose reach is not clear of the circle (cx, cy, r) by
+        `FAR_SLACK`. A frame left out has every party's footprint `far_apart` from the circle (a footprint's
+        centre is within `center_x` of its reference point, the rounding far under the slack), so `meets` would
+        pass over it; a frame kept gets `meets`' own tests."""
+        xs, ys, reach, starts = self._party_reach()
+        lo, hi = int(starts[start]), int(starts[end])
+        if lo == hi:
+            return []
+        dx, dy = xs[lo:hi] - cx, ys[lo:hi] - cy
+        rr = reach[lo:hi] + (r + FAR_SLACK)
+        near = np.flatnonzero(dx * dx + dy * dy <= rr * rr) + lo
+        if not len(near):
+            return []
+        frames = np.searchsorted(starts, near, side="right") - 1
+        return np.unique(frames).tolist()
 
     def _footprints(self, k: int) -> list[Box]:
         """The footprints of frame k's parties (asked again for every braking profile and start)."""

@@ -205,6 +205,36 @@ def test_stretch_circle_holds_the_ego_box_at_every_distance_in_its_stretch() -> 
                 assert all(math.hypot(px - x, py - y) <= r for px, py in box.corners())
 
 
+def test_frames_near_keeps_every_frame_with_a_footprint_near_the_circle() -> None:
+    """`Counterfactual._frames_near` (the vectorised pre-test of `meets`) leaves out only frames whose every
+    footprint is `far_apart` from the circle, and keeps them in order; circles placed to graze the footprints."""
+    from oracle_monitor.geometry import far_apart
+
+    rng = random.Random(29)
+    kept_and_far = left_out = 0
+    for _ in range(15):
+        cf = _recorded_run(rng)
+        for _ in range(30):
+            k0 = rng.randrange(len(cf.times))
+            o = rng.choice(cf.parties[k0])
+            fp = footprint(o)
+            r = rng.uniform(0.5, 40.0)
+            # a centre at about the grazing distance from a footprint, give or take a millimetre
+            ang, d = rng.uniform(-math.pi, math.pi), fp.radius + r + rng.uniform(-2e-3, 2e-3)
+            cx, cy = fp.cx + d * math.cos(ang), fp.cy + d * math.sin(ang)
+            start = rng.randrange(len(cf.times))
+            end = rng.randrange(start, len(cf.times) + 1)
+            got = cf._frames_near(cx, cy, r, start, end)
+            assert got == sorted(set(got)) and all(start <= k < end for k in got)
+            for k in range(start, end):
+                near = not all(far_apart(cx, cy, r, b.cx, b.cy, b.radius) for b in map(footprint, cf.parties[k]))
+                if near:
+                    assert k in got
+                kept_and_far += k in got and not near
+                left_out += k not in got
+    assert left_out > 1000 and kept_and_far > 0     # it does leave frames out, and only conservatively
+
+
 def test_meets_and_foreseeable_answer_as_the_plain_box_tests() -> None:
     from oracle_monitor.unavoidable import emergency_stop, smooth_stop
 
