@@ -71,7 +71,32 @@ def overlaps(a: Box, b: Box) -> bool:
     r = a.radius + b.radius
     if dx * dx + dy * dy >= r * r:        # far apart: skip the four projections
         return False
-    return penetration(a, b) > 0.0
+    return penetrates(a, b.cx, b.cy, b.c, b.s, b.half_length, b.half_width)
+
+
+def penetrates(a: Box, bcx: float, bcy: float, bc: float, bs: float, bhl: float, bhw: float) -> bool:
+    """`penetration(a, b) > 0.0` for b = Box(bcx, bcy, bc, bs, bhl, bhw), with the same float operations per axis,
+    written out, and leaving at the first axis whose overlap is <= 0: the smallest overlap is > 0 exactly when
+    no axis's overlap is <= 0 (a NaN overlap never lowers `penetration`'s depth, nor stops this loop)."""
+    acx, acy, ac, as_, ahl, ahw = a
+    dx, dy = bcx - acx, bcy - acy
+    ax, ay = ac, as_
+    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
+            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
+        return False
+    ax, ay = -as_, ac
+    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
+            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
+        return False
+    ax, ay = bc, bs
+    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
+            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
+        return False
+    ax, ay = -bs, bc
+    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
+            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
+        return False
+    return True
 
 
 #: Slack (m) of `far_apart`: far above the rounding of coordinates of a few km, far below any footprint.
@@ -135,7 +160,7 @@ class BoxGroup:
         dx, dy = b.cx - self.xs, b.cy - self.ys
         r = self.radius + rb
         for i in np.flatnonzero(dx * dx + dy * dy < r * r).tolist():
-            if penetration(self.box(i), b) > 0.0:
+            if penetrates(self.box(i), *b):
                 return True
         return False
 
@@ -146,10 +171,12 @@ class BoxGroup:
         dx = cxs[:, None] - self.xs[None, :]
         dy = cys[:, None] - self.ys[None, :]
         near = dx * dx + dy * dy < r * r
+        _, _, c, s, hl, hw = b
+        box = self.box
         for t in np.flatnonzero(near.any(axis=1)).tolist():
-            moved = b._replace(cx=float(cxs[t]), cy=float(cys[t]))
+            x, y = float(cxs[t]), float(cys[t])        # b moved there
             for i in np.flatnonzero(near[t]).tolist():
-                if penetration(self.box(i), moved) > 0.0:
+                if penetrates(box(i), x, y, c, s, hl, hw):
                     return t
         return None
 

@@ -81,6 +81,29 @@ def test_box_group_answers_as_any_overlaps() -> None:
             assert g.overlapped_by(b) == any(overlaps(a, b) for a in group)
 
 
+def test_penetrates_answers_as_penetration_above_zero() -> None:
+    """`penetrates` (written out, leaving early) against `penetration(a, b) > 0.0`: boxes at random, axis-aligned
+    boxes touching edge to edge, boxes with the same centre, and NaN coordinates."""
+    from oracle_monitor.geometry import penetrates, penetration
+
+    rng = random.Random(31)
+    boxes = []
+    for _ in range(3000):
+        h = rng.choice([0.0, 0.5 * math.pi, rng.uniform(-math.pi, math.pi)])
+        boxes.append(Box(rng.choice([0.0, 1e3, -2e3]) + rng.uniform(-6, 6), rng.uniform(-6, 6), math.cos(h),
+                         math.sin(h), rng.uniform(0.2, 5.0), rng.uniform(0.2, 2.0)))
+    a = Box(0.0, 0.0, 1.0, 0.0, 2.0, 1.0)
+    boxes += [Box(4.0, 0.0, 1.0, 0.0, 2.0, 1.0), Box(0.0, 2.0, 1.0, 0.0, 2.0, 1.0), Box(0.0, 0.0, 1.0, 0.0, 2.0, 1.0),
+              Box(math.nan, 0.0, 1.0, 0.0, 2.0, 1.0), Box(0.0, 0.0, math.nan, 0.0, 2.0, 1.0)]
+    hits = 0
+    for i, b in enumerate(boxes):
+        other = boxes[i - 1] if i % 3 else a
+        want = penetration(other, b) > 0.0
+        assert penetrates(other, *b) == want
+        hits += want
+    assert 100 < hits < len(boxes) - 300
+
+
 def test_far_apart_never_skips_an_overlap() -> None:
     rng = random.Random(3)
     for _ in range(20000):
