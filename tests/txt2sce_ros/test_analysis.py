@@ -205,3 +205,19 @@ def test_prior_ranks_many_runs_above_two_that_happen_to_share_an_element() -> No
     assert shrunk[0].element == "category:bicycle" and shrunk[0].lift == pytest.approx(2.0)
     assert shrunk[0].score == pytest.approx((12 + 1) / (6 + 1))
     assert {r.element: r.lift for r in shrunk}["weather:fog"] == pytest.approx(3.0)
+
+
+def test_elements_of_files_on_a_pool_answers_as_file_by_file(gold_seeds: dict[str, tuple[Path, dict]],
+                                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    """The report reads many files' elements on forked workers: each file's elements as `elements_of_file` gives
+    them in this process, by path, repeated paths once."""
+    import txt2sce_ros.analysis.features as features
+
+    paths = [str(p) for p, _ in gold_seeds.values()] * 3
+    want = {p: elements_of_file(p) for p in paths}
+    monkeypatch.setattr(features, "PARALLEL_FILES", 2)
+    elements_of_file.cache_clear()       # the workers must read the files, not inherit answers
+    got = features.elements_of_files(paths, workers=2)
+    assert got == want and list(got) == list(dict.fromkeys(paths))
+    assert elements_of_file.cache_info().currsize == 0      # read on the pool, not here
+    assert features.elements_of_files(paths, workers=1) == want

@@ -12,7 +12,7 @@ from typing import Any, Mapping, Sequence
 
 from .behaviours import Attribution, BehaviourRow, attribution, behaviour_table
 from .derivation import TriggerCandidate, aggregate, trigger_candidates
-from .features import elements_of_file
+from .features import elements_of_files
 from .legend import explain, legend_rows
 from .lift import LiftRow, lift_table
 from . import plots
@@ -48,8 +48,8 @@ class Analysis:
 def analyse(res: CampaignResults, *, min_support: int = 3) -> Analysis:
     rows, verdicts = behaviour_table((r["verdict"], tuple(r["categories"])) for r in res.runs)
     judged = [r for r in res.runs if r["verdict"] in ("pass", "fail") and r.get("file")]
-    lift = lift_table(((elements_of_file(r["file"]), frozenset(r["categories"])) for r in judged),
-                      min_support=min_support)
+    elements = elements_of_files([r["file"] for r in judged])
+    lift = lift_table(((elements[r["file"]], frozenset(r["categories"])) for r in judged), min_support=min_support)
     triggers: list[TriggerCandidate] = []
     for tree, nodes in sorted(res.trees.items()):
         results = {r["scenario_id"]: (r["verdict"], tuple(r["categories"])) for r in res.runs if r.get("tree") == tree}
