@@ -50,6 +50,29 @@ def test_same_sketch_same_seed_same_bytes(gold) -> None:
         assert a.xosc == b.xosc and a.manifest == b.manifest
 
 
+def test_write_seeds_plans_each_sketch_once_as_the_two_pass_form_did(gold, tmp_path, monkeypatch) -> None:
+    """`write_seeds` builds each seed once, its map reference a function of the matched map: the same bytes and
+    manifest as building it with the map's absolute path, then again with the written `maps/<file>` reference."""
+    import txt2sce_ros.seed.generate as generate
+
+    rids = ("dmvca-waymo-20240411-r574", "dmvca-cruise-20190807-r58", "dmvca-ponyai-20211028-r235")
+    calls = []
+    plain = generate.generate_seed
+
+    def counted(*args, **kwargs):
+        calls.append(args[0].report_id)
+        return plain(*args, **kwargs)
+
+    monkeypatch.setattr(generate, "generate_seed", counted)
+    manifest = write_seeds([gold[r] for r in rids], tmp_path, seed=2)
+    assert calls == list(rids)
+    for rid, entry in zip(rids, manifest["built"]):
+        first = plain(gold[rid], seed=2)
+        want = plain(gold[rid], seed=2, map_ref=f"maps/{first.map_path.name}")
+        assert (tmp_path / entry["file"]).read_bytes() == want.xosc
+        assert {k: v for k, v in entry.items() if k != "file"} == want.manifest
+
+
 def test_seed_changes_the_site_pick(gold) -> None:
     # a straight-road sketch has several equally good sites: some seed must pick another one
     s = gold["dmvca-apple-20231013-r537"]

@@ -17,7 +17,7 @@ import shutil
 import zlib
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Iterable
+from typing import Callable, Iterable
 
 import numpy as np
 
@@ -101,9 +101,11 @@ def signal_plan(sketch: Sketch, site: JunctionSite, D: SeedDefaults, ego_first_a
 
 
 def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = None,
-                  map_ref: str | None = None, defaults: SeedDefaults | None = None) -> SeedResult:
+                  map_ref: str | Callable[[Path], str] | None = None,
+                  defaults: SeedDefaults | None = None) -> SeedResult:
     """Build one seed. `map_ref` is the LogicFile path written into the scenario (default: the map's absolute
-    path; `write_seeds` writes `maps/<file>` beside the seed)."""
+    path), or a function of the matched map's path that gives it (`write_seeds` writes `maps/<file>` beside the
+    seed, and learns the map only from the match)."""
     if sketch.missing:
         raise InputError(f"sketch lacks {', '.join(sketch.missing)}: no seed is built from missing facts",
                          source=sketch.report_id, element="missing")
@@ -114,7 +116,7 @@ def generate_seed(sketch: Sketch, *, seed: int = 0, maps: str | Path | None = No
     rng = rng_for(sketch.report_id, seed)
     match, planner, actors = _plan(sketch, match_site(constraints, rng, maps=maps, source=sketch.report_id), D)
     map_path = Path(match.site.map_path)
-    ref = map_ref if map_ref is not None else str(map_path.resolve())
+    ref = str(map_path.resolve()) if map_ref is None else map_ref(map_path) if callable(map_ref) else map_ref
     ego_first = planner.ego.events[0].planned_time if planner.ego.events else 0.0
     signals = ()
     if isinstance(match.site, JunctionSite):
@@ -214,6 +216,11 @@ def safe_file_name(report_id: str) -> str:
     return "".join(c if c.isalnum() or c in "-_." else "_" for c in report_id)
 
 
+def _local_map_ref(map_path: Path) -> str:
+    """The LogicFile reference of a seed `write_seeds` writes: the map's copy in `maps/` beside it."""
+    return f"{MAPS_SUBDIR}/{map_path.name}"
+
+
 def write_seeds(items: Iterable[Sketch | ErrorRecord], out_dir: str | Path, *, seed: int = 0,
                 maps: str | Path | None = None) -> dict:
     """Write `<report_id>.xosc` per buildable sketch into `out_dir`, the maps they use into `out_dir/maps/`, and
@@ -234,15 +241,14 @@ def write_seeds(items: Iterable[Sketch | ErrorRecord], out_dir: str | Path, *, s
                                      f"written from report {files[name]!r})"})
             continue
         try:
-            res = generate_seed(item, seed=seed, maps=maps, map_ref=None)
+            # the relative reference to the map's copy beside the seed, so the output directory is self-contained
+            res = generate_seed(item, seed=seed, maps=maps, map_ref=_local_map_ref)
         except Txt2SceError as exc:
             refused.append({"report_id": item.report_id, "error": str(exc)})
             continue
         local_map = out / MAPS_SUBDIR / res.map_path.name
         if not local_map.exists() or local_map.read_bytes() != res.map_path.read_bytes():
             shutil.copyfile(res.map_path, local_map)
-        # rewrite with the relative reference so the output directory is self-contained
-        res = generate_seed(item, seed=seed, maps=maps, map_ref=f"{MAPS_SUBDIR}/{res.map_path.name}")
         files[name] = item.report_id
         (out / name).write_bytes(res.xosc)
         entry = dict(res.manifest)
