@@ -157,11 +157,29 @@ class Counterfactual:
             e = self.first
             assert e is not None
             xs, ys, hs = [], [], []
+            dists, ego, n = self.dists, self.ego, len(self.ego)
+            cos, sin, atan2, center_x = math.cos, math.sin, math.atan2, e.center_x
+            lo = 0
             for step in AHEAD_STEPS:
+                # `_ego_pose(dist)` written out; the distances increase, so each bisection starts where the last
+                # ended (the same index: every recorded distance before it is <= the last distance asked)
+                dist = dists[k] + step
+                lo = bisect.bisect_right(dists, dist, lo)
+                i = lo - 1 if lo > 0 else 0
+                x0, y0, h0, _, d0 = ego[i]
+                j = i + 1
+                while j < n and dists[j] - d0 < 1e-6:
+                    j += 1
+                if j < n:
+                    x1, y1, _, _, d1 = ego[j]
+                    u = (dist - d0) / (d1 - d0)
+                    x, y, h = x0 + u * (x1 - x0), y0 + u * (y1 - y0), atan2(y1 - y0, x1 - x0)
+                else:
+                    over = dist - d0
+                    x, y, h = x0 + over * cos(h0), y0 + over * sin(h0), h0
                 # `box_at`'s centre, so each box is the one `_ego_box` gives
-                x, y, h = self._ego_pose(self.dists[k] + step)
-                xs.append(x + e.center_x * math.cos(h))
-                ys.append(y + e.center_x * math.sin(h))
+                xs.append(x + center_x * cos(h))
+                ys.append(y + center_x * sin(h))
                 hs.append(h)
             group = BoxGroup(xs, ys, hs, 0.5 * e.length, 0.5 * e.width)
             self._ahead_groups[k] = group

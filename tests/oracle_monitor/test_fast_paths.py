@@ -258,6 +258,22 @@ def test_frames_near_keeps_every_frame_with_a_footprint_near_the_circle() -> Non
     assert left_out > 1000 and kept_and_far > 0     # it does leave frames out, and only conservatively
 
 
+def test_ahead_boxes_are_the_ego_boxes_bit_for_bit() -> None:
+    """`Counterfactual._ahead(k)` (`_ego_pose` written out, one bisection carried along) holds exactly the boxes
+    `_ego_box` gives at each of `AHEAD_STEPS` from frame k: on paths that creep, stand and end within the steps."""
+    from oracle_monitor.unavoidable import AHEAD_STEPS
+
+    rng = random.Random(37)
+    for _ in range(10):
+        cf = _recorded_run(rng)
+        for k in sorted({0, len(cf.times) - 1, *rng.sample(range(len(cf.times)), 40)}):
+            group = cf._ahead(k)
+            for i, step in enumerate(AHEAD_STEPS):
+                want = cf._ego_box(cf.dists[k] + step)
+                got = group.box(i)
+                assert (got.cx, got.cy, got.c, got.s) == (want.cx, want.cy, want.c, want.s), (k, step)
+
+
 def test_meets_and_foreseeable_answer_as_the_plain_box_tests() -> None:
     from oracle_monitor.unavoidable import emergency_stop, smooth_stop
 
