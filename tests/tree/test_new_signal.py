@@ -20,6 +20,8 @@ from txt2sce_ros.tree.seeds import dev_gold_path
 from txt2sce_ros.tree.xml import parse_bytes
 from txt2sce_ros.xosc.validate import validate_xosc
 
+from tests.txt2sce_ros.test_analysis import _plain_elements_of_file
+
 # r497: the AV drives toward a signalised junction whose lights the report never mentions (no plan in the seed).
 # r537: lights on the map, but the AV's route never reaches a stop line. r150: a straight road, no lights at all.
 # r448: the report names a signal (the seed has its own plan: the `signal` block, not a new one).
@@ -69,6 +71,7 @@ def test_a_seed_without_a_plan_gets_one_per_state(seeds):
         plan = plan_of(parse_bytes(text, str(node)))
         # the analysis labels the node by the state the AV's light shows in the plan's first phase
         assert f"signal:{v.features[1]}" in elements_of_file(str(node))
+        assert elements_of_file(str(node)) == _plain_elements_of_file(str(node))     # parsed once, as per step
         assert plan is not None and plan.triggered == (v.features[1] == "yellow")   # yellow: dilemma-zone trigger
 
 

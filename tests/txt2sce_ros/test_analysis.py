@@ -221,3 +221,45 @@ def test_elements_of_files_on_a_pool_answers_as_file_by_file(gold_seeds: dict[st
     assert got == want and list(got) == list(dict.fromkeys(paths))
     assert elements_of_file.cache_info().currsize == 0      # read on the pool, not here
     assert features.elements_of_files(paths, workers=1) == want
+
+
+def _plain_elements_of_file(path: str) -> frozenset[str]:
+    """`elements_of_file` as written before it parsed each file once: the map's name, the signals and the elements
+    each from their own parse."""
+    from txt2sce_ros.road import load_network
+    from txt2sce_ros.scenario_source import logic_file
+    from txt2sce_ros.seed.context import build_context
+    from txt2sce_ros.xosc.schema import parse_document
+
+    data = Path(path).read_bytes()
+    net, facing = None, ()
+    try:
+        xodr = logic_file(Path(path), data)
+        if xodr is not None and xodr.is_file():
+            net = load_network(str(xodr))
+            if b"TrafficSignalController" in data or b"TrafficSignalStateAction" in data:
+                facing = build_context(parse_document(data, source=path), source=path, seed_path=Path(path)).ego_signals
+    except Exception:
+        pass
+    return scenario_elements(data, net, facing)
+
+
+def test_elements_of_file_parsed_once_answers_as_parsed_per_step(gold_seeds: dict[str, tuple[Path, dict]],
+                                                                 tmp_path: Path) -> None:
+    from txt2sce_ros.errors import InputError
+
+    # (the gold seeds name no light: `tests/tree/test_new_signal.py` compares nodes with a signal plan)
+    for path, _ in gold_seeds.values():
+        elements_of_file.cache_clear()
+        assert elements_of_file(str(path)) == _plain_elements_of_file(str(path))
+    # a map that is not there, and a file that is not XML: as before
+    moved = tmp_path / "elsewhere.xosc"
+    moved.write_bytes(next(iter(gold_seeds.values()))[0].read_bytes())
+    assert elements_of_file(str(moved)) == _plain_elements_of_file(str(moved))
+    broken = tmp_path / "broken.xosc"
+    broken.write_bytes(b"<OpenSCENARIO><FileHeader")
+    with pytest.raises(InputError) as want:
+        _plain_elements_of_file(str(broken))
+    with pytest.raises(InputError) as got:
+        elements_of_file(str(broken))
+    assert str(got.value) == str(want.value)

@@ -152,10 +152,12 @@ def start_gap(ego: tuple[float, float, float], ego_extent: tuple[float, float], 
     return max(ahead, behind)
 
 
-def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = ()) -> frozenset[str]:
+def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = (), *,
+                      root: etree._Element | None = None) -> frozenset[str]:
     """Elements of one scenario; `net` (its RoadNetwork) lets positions be derived from the Init teleports,
-    `facing` names the signals facing the ego (see `signal_label`)."""
-    root = parse_document(xml)
+    `facing` names the signals facing the ego (see `signal_label`); `root`: `xml` already parsed (read only)."""
+    if root is None:
+        root = parse_document(xml)
     out: set[str] = set()
     npcs: dict[str, dict[str, str]] = {}
     extents: dict[str, tuple[float, float]] = {}
@@ -221,18 +223,32 @@ def elements_of_file(path: str) -> frozenset[str]:
     from ..scenario_source import logic_file
 
     data = Path(path).read_bytes()
+    try:
+        # parsed once for the map's name, the signals and the elements (none of them changes the tree)
+        root = parse_document(data, source=path)
+    except Exception:   # not well-formed: the steps below say so as they always did
+        root = None
     net, facing = None, ()
     try:
-        xodr = logic_file(Path(path), data)
+        xodr = logic_file(Path(path), data) if root is None else _logic_file_of(root, Path(path))
         if xodr is not None and xodr.is_file():
             net = load_network(str(xodr))
             if b"TrafficSignalController" in data or b"TrafficSignalStateAction" in data:
                 from ..seed.context import build_context
 
-                facing = build_context(parse_document(data, source=path), source=path, seed_path=Path(path)).ego_signals
+                facing = build_context(root if root is not None else parse_document(data, source=path),
+                                       source=path, seed_path=Path(path)).ego_signals
     except Exception:   # the elements that need no map are still worth having
         pass
-    return scenario_elements(data, net, facing)
+    return scenario_elements(data, net, facing, root=root)
+
+
+def _logic_file_of(root: etree._Element, xosc_path: Path) -> Path | None:
+    """`scenario_source.logic_file` of a parsed scenario."""
+    node = root.find("RoadNetwork/LogicFile")
+    if node is None or not node.get("filepath"):
+        return None
+    return (xosc_path.parent / node.get("filepath")).resolve()
 
 
 #: Below this many files `elements_of_files` reads them in this process (a pool's start-up would cost more).
