@@ -221,6 +221,11 @@ def test_elements_of_files_on_a_pool_answers_as_file_by_file(gold_seeds: dict[st
     assert got == want and list(got) == list(dict.fromkeys(paths))
     assert elements_of_file.cache_info().currsize == 0      # read on the pool, not here
     assert features.elements_of_files(paths, workers=1) == want
+    with features.ElementsReading(paths, workers=2) as reading:     # begun now, answered later
+        assert reading._pool is not None
+        assert reading.result() == want and reading.result() == want and reading._pool is None
+    with features.ElementsReading(paths, workers=1) as reading:
+        assert reading._pool is None and reading.result() == want
 
 
 def _plain_elements_of_file(path: str) -> frozenset[str]:

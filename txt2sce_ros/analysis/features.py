@@ -269,3 +269,45 @@ def elements_of_files(paths: list[str], workers: int | None = None) -> dict[str,
     with ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("fork")) as pool:
         chunk = max(1, len(unique) // (workers * 8))
         return dict(zip(unique, pool.map(elements_of_file, unique, chunksize=chunk)))
+
+
+class ElementsReading:
+    """`elements_of_files(paths)` begun now on forked workers, answered by `result()`: a report starts it before
+    the work it does alone (trees, failure plots), so that work runs beside the reading instead of before it.
+    Few files: read in `result()`, in this process. A context manager: leaving it stops the workers."""
+
+    def __init__(self, paths: list[str], workers: int | None = None) -> None:
+        self._unique = list(dict.fromkeys(paths))
+        workers = (os.cpu_count() or 1) if workers is None else workers
+        self._pool = None
+        self._answers = None
+        self._done: dict[str, frozenset[str]] | None = None
+        if workers >= 2 and len(self._unique) >= PARALLEL_FILES:
+            import multiprocessing as mp
+            from concurrent.futures import ProcessPoolExecutor
+
+            self._pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("fork"))
+            chunk = max(1, len(self._unique) // (workers * 8))
+            self._answers = self._pool.map(elements_of_file, self._unique, chunksize=chunk)
+
+    def result(self) -> dict[str, frozenset[str]]:
+        if self._done is None:
+            if self._answers is None:
+                self._done = {p: elements_of_file(p) for p in self._unique}
+            else:
+                try:
+                    self._done = dict(zip(self._unique, self._answers))
+                finally:
+                    self.close()
+        return self._done
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+
+    def __enter__(self) -> "ElementsReading":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()

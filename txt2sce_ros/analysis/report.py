@@ -8,7 +8,7 @@ import json
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 from .behaviours import Attribution, BehaviourRow, attribution, behaviour_table
 from .derivation import TriggerCandidate, aggregate, trigger_candidates
@@ -33,6 +33,8 @@ class CampaignResults:
     baseline: dict[str, Any] | None = None           # the baseline planner of a differential campaign
     differential: dict[str, list[dict[str, Any]]] | None = None   # campaign.reporting.differential
     baseline_runs: list[dict[str, Any]] = field(default_factory=list)   # the baseline's runs, same scenarios
+    # the judged runs' scenario elements, by file, when begun before the report (`features.ElementsReading`)
+    elements: Callable[[], dict[str, frozenset[str]]] | None = None
 
 
 @dataclass
@@ -48,7 +50,7 @@ class Analysis:
 def analyse(res: CampaignResults, *, min_support: int = 3) -> Analysis:
     rows, verdicts = behaviour_table((r["verdict"], tuple(r["categories"])) for r in res.runs)
     judged = [r for r in res.runs if r["verdict"] in ("pass", "fail") and r.get("file")]
-    elements = elements_of_files([r["file"] for r in judged])
+    elements = res.elements() if res.elements is not None else elements_of_files([r["file"] for r in judged])
     lift = lift_table(((elements[r["file"]], frozenset(r["categories"])) for r in judged), min_support=min_support)
     triggers: list[TriggerCandidate] = []
     for tree, nodes in sorted(res.trees.items()):

@@ -217,12 +217,23 @@ def report_from_store(store: ResultStore, inputs: Sequence[str | Path], out_dir:
                       baseline_tasks: Sequence[RunTask] = ()) -> Path:
     """Write the campaign report from the stored runs; `partial` (a sentence) marks a report of an unfinished
     campaign; `baseline_tasks` (a differential campaign) adds the differential triage."""
+    from ..analysis.features import ElementsReading
+
     runs = _runs(store, tasks)
+    # the lift table's scenario elements (the report's biggest part) are read on the cores while this process
+    # gathers the trees and draws the failure plots
+    with ElementsReading([r["file"] for r in runs if r["verdict"] in ("pass", "fail") and r.get("file")]) as reading:
+        return _report(store, inputs, out_dir, tasks, runs, reading, partial=partial, baseline_tasks=baseline_tasks)
+
+
+def _report(store: ResultStore, inputs: Sequence[str | Path], out_dir: Path, tasks: Sequence[RunTask],
+            runs: list[dict[str, Any]], reading: Any, *, partial: str | None,
+            baseline_tasks: Sequence[RunTask]) -> Path:
     trees = {d.name: _tree_nodes(d) for d in _tree_dirs(inputs)}
     faults = tuple(store.meta("faults", []) or ())
     res = CampaignResults(runs=runs, trees=trees, partial=partial,
                           tested=tested_rows(store.meta("settings", {}) or {}, faults, tasks, sorted(trees),
-                                             store.meta("planner", None)))
+                                             store.meta("planner", None)), elements=reading.result)
     if trees:
         from ..tree.diversity import diversity
 
