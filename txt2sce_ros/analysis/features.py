@@ -259,16 +259,8 @@ def elements_of_files(paths: list[str], workers: int | None = None) -> dict[str,
     """`elements_of_file` of each of `paths`, by path: read on `workers` forked processes (default: the cores) when
     there are many (a campaign's report reads thousands of scenarios, ~0.75 ms each, while the other core idles).
     Each file's elements are the same whichever process reads them."""
-    unique = list(dict.fromkeys(paths))
-    workers = (os.cpu_count() or 1) if workers is None else workers
-    if workers < 2 or len(unique) < PARALLEL_FILES:
-        return {p: elements_of_file(p) for p in unique}
-    import multiprocessing as mp
-    from concurrent.futures import ProcessPoolExecutor
-
-    with ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("fork")) as pool:
-        chunk = max(1, len(unique) // (workers * 8))
-        return dict(zip(unique, pool.map(elements_of_file, unique, chunksize=chunk)))
+    with ElementsReading(paths, workers) as reading:
+        return reading.result()
 
 
 class ElementsReading:
