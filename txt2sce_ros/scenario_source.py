@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Any, Callable, Iterator
 
 from .contract import ScenarioEnvelope
 from .errors import InputError
@@ -18,7 +18,11 @@ from .xosc.schema import parse_document
 
 def logic_file(xosc_path: Path, xosc_text: bytes) -> Path | None:
     """The map a scenario names, resolved like esmini does: relative to the scenario's directory."""
-    root = parse_document(xosc_text, source=str(xosc_path))
+    return logic_file_of(parse_document(xosc_text, source=str(xosc_path)), xosc_path)
+
+
+def logic_file_of(root: Any, xosc_path: Path) -> Path | None:
+    """`logic_file` of a scenario already parsed (`root`: its document element)."""
     node = root.find("RoadNetwork/LogicFile")
     if node is None or not node.get("filepath"):
         return None

@@ -220,7 +220,7 @@ def scenario_elements(xml: bytes, net: Any = None, facing: tuple[str, ...] = (),
 def elements_of_file(path: str) -> frozenset[str]:
     """Elements of a scenario file, positions derived on the map it names (when that map loads)."""
     from ..road import load_network
-    from ..scenario_source import logic_file
+    from ..scenario_source import logic_file, logic_file_of
 
     data = Path(path).read_bytes()
     try:
@@ -230,7 +230,7 @@ def elements_of_file(path: str) -> frozenset[str]:
         root = None
     net, facing = None, ()
     try:
-        xodr = logic_file(Path(path), data) if root is None else _logic_file_of(root, Path(path))
+        xodr = logic_file(Path(path), data) if root is None else logic_file_of(root, Path(path))
         if xodr is not None and xodr.is_file():
             net = load_network(str(xodr))
             if b"TrafficSignalController" in data or b"TrafficSignalStateAction" in data:
@@ -241,14 +241,6 @@ def elements_of_file(path: str) -> frozenset[str]:
     except Exception:   # the elements that need no map are still worth having
         pass
     return scenario_elements(data, net, facing, root=root)
-
-
-def _logic_file_of(root: etree._Element, xosc_path: Path) -> Path | None:
-    """`scenario_source.logic_file` of a parsed scenario."""
-    node = root.find("RoadNetwork/LogicFile")
-    if node is None or not node.get("filepath"):
-        return None
-    return (xosc_path.parent / node.get("filepath")).resolve()
 
 
 #: Below this many files `elements_of_files` reads them in this process (a pool's start-up would cost more).
