@@ -75,27 +75,15 @@ def overlaps(a: Box, b: Box) -> bool:
 
 
 def penetrates(a: Box, bcx: float, bcy: float, bc: float, bs: float, bhl: float, bhw: float) -> bool:
-    """`penetration(a, b) > 0.0` for b = Box(bcx, bcy, bc, bs, bhl, bhw), with the same float operations per axis,
-    written out, and leaving at the first axis whose overlap is <= 0: the smallest overlap is > 0 exactly when
+    """`penetration(a, b) > 0.0` for b = Box(bcx, bcy, bc, bs, bhl, bhw), with the same float operations per axis
+    (`_projected_radius` inlined), leaving at the first axis whose overlap is <= 0: the smallest overlap is > 0 exactly when
     no axis's overlap is <= 0 (a NaN overlap never lowers `penetration`'s depth, nor stops this loop)."""
     acx, acy, ac, as_, ahl, ahw = a
     dx, dy = bcx - acx, bcy - acy
-    ax, ay = ac, as_
-    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
-            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
-        return False
-    ax, ay = -as_, ac
-    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
-            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
-        return False
-    ax, ay = bc, bs
-    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
-            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
-        return False
-    ax, ay = -bs, bc
-    if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
-            + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
-        return False
+    for ax, ay in ((ac, as_), (-as_, ac), (bc, bs), (-bs, bc)):   # the four box axes, in `penetration`'s order
+        if (ahl * abs(ac * ax + as_ * ay) + ahw * abs(-as_ * ax + ac * ay)) \
+                + (bhl * abs(bc * ax + bs * ay) + bhw * abs(-bs * ax + bc * ay)) - abs(dx * ax + dy * ay) <= 0.0:
+            return False
     return True
 
 
