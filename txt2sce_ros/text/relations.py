@@ -458,7 +458,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     if any(c.kind == "direction" and c.value == "opposite" for c in cues):
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     rule = "first reading"
-    backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(context(d, e)))
+    ctx = context(d, e)  # the words of its place, read by several rules below
+    backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(ctx))
     along = _nearest_first([c for c in cues if c.kind == "along"], d, e)
     passing = [c for c in cues if c.kind == "passing"]
     contact = next((c for c in cues if c.kind == "contact"), None)
@@ -478,15 +479,15 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     elif pos == "R5" and d.ego_start == "stopped" and not backing and \
             any(c.kind == "lane" and c.value in ("left", "right") for c in cues) and \
             fre.search(r"\bapproach(?:ed|ing|es)?\b(?!\s+(?:the\s+)?(?:intersection|crosswalk|junction))",
-                       context(d, e), re.I):
+                       ctx, re.I):
         # Coming up in a lane beside an AV that stood still: it came from behind.
         pos, rule = "R6", "approaching a standing AV"
     elif pos == "R5" and d.ego_start == "stopped" and not ego_actions and not backing and contact is not None and \
             (flank or fore == "rear" or not fore) and \
             any(c.kind == "lane" and c.value in ("left", "right") and c.value == (cside or c.value) for c in cues) and \
-            not any(a.who == e.idx and a.code not in "abc" for a in d.acts) and not _LEVEL.search(context(d, e)) and \
+            not any(a.who == e.idx and a.code not in "abc" for a in d.acts) and not _LEVEL.search(ctx) and \
             not fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued|standing)\b",
-                           " ".join(m.mods for m in e.mentions) + " " + context(d, e)[:60], re.I):
+                           " ".join(m.mods for m in e.mentions) + " " + ctx[:60], re.I):
         # On the move in a lane beside an AV that stood still throughout, without a turn, a lane change or a start
         # from a stop of its own, and touching the AV's side: it was passing it, so it came from behind
         # (sketch.md: a party passing a stopped AV is R6 on the side it passed).
@@ -527,7 +528,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
             cside in ("", "left" if moves[-1] == "f" else "right"):
         # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.
         lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
-    elif cside and lane == "same" and (pos == "R5" or passing or flank or _ADJACENT_LANE.search(context(d, e))) and \
+    elif cside and lane == "same" and (pos == "R5" or passing or flank or _ADJACENT_LANE.search(ctx)) and \
             contact is not None and \
             not (backing and pos == "R5" and fore == "front"):
         # A party behind that strikes a rear corner was most often right behind (a rear-end off-centre); only one
@@ -537,8 +538,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # with the front left corner".)
         lane, rule = cside, rule + "; contact side"
         used.append(contact)
-    if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(context(d, e)) and \
-            not fre.search(r"\b(?:left|right)\b", context(d, e), re.I) and \
+    if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(ctx) and \
+            not fre.search(r"\b(?:left|right)\b", ctx, re.I) and \
             not any(c.kind == "along" and c.value == "ahead" for c in cues):
         # Out of a driveway, garage or parking space, no side named ("a passenger vehicle reversed out of a parking
         # spot into EGO's rear bumper"): those places line the curb, on the AV's right (right-hand traffic). One
@@ -548,7 +549,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
             fore == "rear" and cside in ("", lane) and not backing and \
             not any(a.who == e.idx and a.code == "i" for a in d.acts) and \
             (_TAIL_END.search(d.sents[d.contact_sent]) or not _REAR_DOOR.search(d.sents[d.contact_sent])) and \
-            not _LEVEL.search(context(d, e)):
+            not _LEVEL.search(ctx):
         # In the next lane and touching the AV's rear on that side (its quarter, bumper or corner; a rear door
         # alone is the middle of the side): it was level with the AV's tail or further back when the interaction
         # began, not ahead of it. One that stood beside it and moved off meets the rear half from level.
