@@ -98,10 +98,11 @@ def test_non_ascii_text_always_runs_the_regex() -> None:
 def test_possessive_part_of_ego_matches_the_backtracking_original(texts: list[str]) -> None:
     from txt2sce_ros.text.story import _PART_OF_EGO
 
-    original = re.compile(r"((?:[\w'-]+\s+){1,6})(?:of|on|to)\s+EGO\b")
+    original = re.compile(r"((?:[\w'-]+\s+){1,6})(?:of|on|to)\s+(?:the\s+(?:stationary|stopped|parked)\s+)?EGO\b")
     found = 0
     for s in texts + ["the rear  driver-side\tof EGO", "x of of EGO", "- -  on EGO's", "a b c d e f g h to EGO",
-                      "the rear driver's side of EGO", "' ' of EGO"]:
+                      "the rear driver's side of EGO", "' ' of EGO",
+                      "the rear of the stationary EGO"]:
         want = [(m.span(), m.group(1)) for m in original.finditer(s)]
         assert [(m.span(), m.group(1)) for m in _PART_OF_EGO.finditer(s)] == want, s
         found += len(want)

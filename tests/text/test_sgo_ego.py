@@ -118,6 +118,46 @@ _SGO: dict[str, tuple[str, str]] = {
         "autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of "
         "Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or "
         "correct its reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-9371-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-9371, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On November [XXX], 2024 at 2:33 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Los Angeles, "
+        "California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling "
+        "eastbound on [XXX] and came to a stop for a red traffic light in the dedicated left turn lane, "
+        "preparing to make a left turn onto northbound [XXX]. A passenger car approached the stationary Waymo AV "
+        "from behind in the adjacent straight lane, and crossed into the lane that the Waymo AV was occupying. "
+        "The front driver side of the passenger car made contact with the rear passenger side of the stationary "
+        "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+        "vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order "
+        "2021-01. Waymo may supplement or correct its reporting with additional information as it may become "
+        "available."),
+    'nhtsa-sgo-ads-30270-10673-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10673, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On May [XXX], 2025 at 9:59 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Los Angeles, "
+        "California was in a collision involving a box truck and trailer on [XXX] at [XXX]. The Waymo AV was "
+        "traveling southeastbound on [XXX] in the leftmost lane when it stopped at the intersection of [XXX] to "
+        "yield to a box truck hauling a trailer within the intersection. The heavy truck was facing southwest, "
+        "apparently attempting a multi-point turn. The truck stopped and the Waymo AV began to pass the truck on "
+        "the left. The truck began reversing as the Waymo AV was passing and the Waymo AV came to a stop to "
+        "yield to the truck. While the Waymo AV remained stopped, the truck continued to reverse, and the rear "
+        "passenger side of the trailer made contact with the front passenger side of the Waymo AV. At the time "
+        "of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
+        "damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a "
+        "vehicle involved was towed away. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
+    'nhtsa-sgo-ads-30270-10757-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10757, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 11:53 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was traveling south on "
+        "[XXX], and came to a stop behind a box truck that was stopped in-lane. The Waymo AV began to proceed "
+        "around the left of the stopped box truck and came to a stop, yielding to an SUV traveling northbound on "
+        "[XXX]. As the SUV passed by the stationary Waymo AV, the front driver side of the SUV made contact with "
+        "the front driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
+        "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
 }
 
 
@@ -179,3 +219,35 @@ def test_accelerating_after_a_slowing_is_a_speed_up() -> None:
     # passenger car and had begun to accelerate again to complete the right turn when" it was struck: moving off,
     # the turn, the slowing, then the speed-up (`iecb`), not a second start.
     assert _ego("nhtsa-sgo-ads-30270-7734-v1") == ("stopped", "iecb")
+
+
+def test_a_turn_lane_named_before_onto_is_no_turn() -> None:
+    # "came to a stop for a red traffic light in the dedicated left turn lane, preparing to make a left turn onto
+    # northbound [XXX]": "turn" of "left turn lane" is the lane's name, not a turn onto the road named after it (the
+    # turn itself is a plan); rear-ended there after the stop told as an event of its run (`ah`, not `dh`).
+    assert "d" not in _ego("nhtsa-sgo-ads-30270-9371-v1")[1]
+
+
+def test_the_part_of_the_stationary_av_is_the_avs_part() -> None:
+    # "made contact with the rear passenger side of the stationary Waymo AV": the part of "the stationary EGO" is
+    # the AV's part as much as that of "EGO" (33 of the studyable narratives write "of the stationary Waymo AV", 6
+    # "of the stopped", 2 "of the parked"); here it tells the AV was struck from behind, so its stop is told (`ah`).
+    from txt2sce_ros.text import story
+
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-9371-v1"][1], "nhtsa-sgo-ads-30270-9371-v1")
+    assert (sk.ego.start, sk.ego.actions) == ("moving", "ah")
+    assert story._ego_parts("A car made contact with the rear of the stationary EGO.")[0].split()[-1] == "rear"
+
+
+def test_began_to_pass_is_a_start_after_a_stop() -> None:
+    # "stopped at the intersection ... to yield to a box truck ... The truck stopped and the Waymo AV began to pass
+    # the truck on the left. ... the Waymo AV came to a stop to yield to the truck": moving off past it after the
+    # stop, then the second stop (`ahih`).
+    assert _ego("nhtsa-sgo-ads-30270-10673-v1") == ("moving", "ahih")
+
+
+def test_began_to_proceed_around_is_the_going_around() -> None:
+    # "came to a stop behind a box truck that was stopped in-lane. The Waymo AV began to proceed around the left of
+    # the stopped box truck and came to a stop": the move around it to the left after the stop (`ahifh`), not only a
+    # start.
+    assert _ego("nhtsa-sgo-ads-30270-10757-v1") == ("moving", "ahifh")

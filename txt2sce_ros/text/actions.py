@@ -90,14 +90,16 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bpull(?:ed|ing|s)?\s+(?:up\s+|in\s+)?behind\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:double[- ]parked|"
           r"parked|stopped|stalled|stationary|disabled|idling)\b"),
     # "began to move into EGO's lane" begins the move it names, not a start from a standstill.
+    # ("began to pass the truck on the left": a move begun past what it had stopped for; "began to proceed around the
+    # truck" is the going around, read as that move, F)
     ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
-          r"edge|accelerate|follow|pull\s+(?:forward|out|away))"
-          r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|"
+          r"edge|accelerate|follow|pass|nudge|inch|pull\s+(?:forward|out|away))"
+          r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping|accelerating)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+forward\b|"
           r"\bproceed(?:ed|ing|s)?\s+forward\b|\bproceed(?:ed)?\s+from\s+"
-          r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed|\bproceeded\s+again|"
+          r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed(?!\s+(?:\w+ly\s+)?around\b)|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b|"
           r"\b(?:depart(?:ed|ing|s)?|accelerat(?:ed|ing|es)|mov(?:ed|ing|es)\s+away|pull(?:ed|ing|s)\s+away)\s+from\s+(?:a|the)\s+"
@@ -210,7 +212,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+right\b(?!\s+lane)|"
           rf"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn{_NOT_A_TURN}\b|\bwide\s+right\b"),
-    ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b(?=[^.]{{0,40}}\bonto\b)"),
+    # (the name of a lane is no turn: "stopped ... in the dedicated left turn lane, preparing to make a left turn
+    # onto northbound X" turns nowhere)
+    ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b{_NOT_A_TURN}(?=[^.]{{0,40}}\bonto\b)"),
     # Into a driveway, a lot or a garage off the road is a turn whose side the sentence or the contact tells
     # (sequences.ego_sequence resolves it for the AV; a party's is left to its other words).
     ("D", r"\b(?:enter(?:ed|ing|s)?|(?:pull|turn)(?:ed|ing|s)?\s+into|(?:drive|drives|driving|drove)\s+into)\s+(?:a|an|the)\s+"
