@@ -403,3 +403,10 @@ def test_stopped_for_a_pickup_facing_north_is_an_errand_not_a_truck() -> None:
     # "The Waymo AV was stopped curbside for a pickup facing north": a passenger pickup; the one party is the SUV.
     sk = extract(_SGO["nhtsa-sgo-ads-30270-8150-v1"][1], "nhtsa-sgo-ads-30270-8150-v1")
     assert len(sk.npcs) == 1
+
+
+def test_a_party_stopped_behind_the_av_that_passes_it_began_in_its_lane() -> None:
+    # "an SUV that had been stopped partially in-lane behind the Waymo AV passed the Waymo AV on the left": it stood
+    # in the AV's queue, in its lane, and moved out to the left to pass (R6, same; start, lane change left).
+    p = _party("nhtsa-sgo-ads-30270-8150-v1")
+    assert (p.position, p.lane, p.start, p.actions) == ("R6", "same", "stopped", "if")

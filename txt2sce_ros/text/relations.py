@@ -173,6 +173,7 @@ class Placement:
     rule: str  # which cue decided it ("first reading" when none did)
     cues: tuple[Cue, ...]  # the cues that decided (all gathered ones when the first reading stood)
     seen: tuple[Cue, ...] = ()  # every cue gathered
+    passed_side: str = ""  # left/right: the side a party placed behind in the AV's lane moved out to, passing it
 
     @property
     def cue_placed(self) -> bool:
@@ -364,6 +365,20 @@ def _ego_body_side(s: str) -> re.Match[str] | None:
     return None
 
 
+# "stopped behind EGO", "had been stopped directly behind EGO", "initially stopped behind EGO": standing in the
+# AV's queue, in its lane ("parked behind" stands at the curb; "from behind" says only where it came from).
+_STOPPED_BEFORE = compile_gated(r"\b(?:stopped|waiting|queued|idling)\b[^.,;]{0,30}$", re.I)
+_BEHIND_AV = compile_gated(r"^behind\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|it)\b", re.I)
+
+
+def _queued_behind(d: Doc, along: list[Cue]) -> Cue | None:
+    """The party's own nearest `along` cue, when it says the party stood behind the AV in its queue."""
+    if along and along[0].value == "behind" and _BEHIND_AV.search(d.text[along[0].span[0]:along[0].span[1]]) and \
+            _STOPPED_BEFORE.search(d.text[max(0, along[0].span[0] - 40):along[0].span[0]]):
+        return along[0]
+    return None
+
+
 def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
     """Cues said after the party's name (its own phrase) before those said before it, nearest first."""
     starts = sorted(d.offset(m.sent) + m.end for m in e.mentions)
@@ -500,7 +515,17 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     if beside:
         lanes = beside + [c for c in lanes if c not in beside]
     pass_side = next((c.value for c in passing if c.value), "")
-    if lanes and pass_side and all(c.value == "same" for c in lanes):
+    passed_side = ""
+    if pos == "R6" and passing and (queued := _queued_behind(d, along)) and \
+            not any(c.value in ("left", "right") for c in lanes) and \
+            pass_side and not (e.category in _EDGE_RIDERS and pass_side == "right"):
+        # Stopped behind the AV, then passing it ("a passenger car that had been stopped behind the Waymo AV passed
+        # the Waymo AV on the left"): it stood in the AV's queue, in its lane, and moved out to the side it passed
+        # on: R6/same and a lane change (the gold reads it so). (A cyclist passing on the right rides at the curb
+        # edge: beside, no change.)
+        lane, rule, passed_side = "same", rule + "; behind it, then passed", pass_side
+        used.append(queued)
+    elif lanes and pass_side and all(c.value == "same" for c in lanes):
         # "traveling behind EGO, then passed it on the right": it came up in the AV's lane and passed on that side
         lane, rule = pass_side, rule + "; passing side"
         used.append(next(c for c in passing if c.value))
@@ -558,7 +583,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
             not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and
                     _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues) and \
-            not (pos == "R6" and contact is not None and fore == "rear" and not cside and not flank):
+            not (pos == "R6" and contact is not None and fore == "rear" and not cside and not flank) and \
+            not passed_side:
         # (one that ran into the middle of the AV's rear, no side of it named, was in line behind it)
         # A cyclist or scooterist rides at the edge of the road, beside a car rather than centred in its lane:
         # "same" read from nothing but "behind EGO" or from no lane cue at all is the side it touched, else the
@@ -568,4 +594,4 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         rule += "; rider at the lane edge"
         if cside and contact is not None:
             used.append(contact)
-    return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues), tuple(cues))
+    return Placement(pos, lane, rule, tuple(dict.fromkeys(used)) or tuple(cues), tuple(cues), passed_side)
