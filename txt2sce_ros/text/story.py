@@ -520,7 +520,9 @@ _DESTINATION_HEADING = compile_gated(r"\b(?:onto|into|toward|towards)\s+(?:the\s
 # possessive: a word ([\w'-], so "driver's" is one) is always followed by whitespace and whitespace by a word or
 # "of", so giving back characters can never lead to a match - possessive matching finds the same matches without
 # the backtracking that made this pattern cost more than any other in the extractor.
-_PART_OF_EGO = compile_gated(r"((?:[\w'-]++\s++){1,6})(?:of|on|to)\s+(?:the\s+(?:stationary|stopped|parked)\s+)?EGO\b")
+# "the rear of the stationary EGO", "the front driver side corner of the parked EGO": the AV named with its state.
+_PART_OF_EGO = compile_gated(r"((?:[\w'-]++\s++){1,6})(?:of|on|to)\s+(?:the\s+(?:still\s+)?(?:stationary|stopped|parked|"
+                             r"idle|idling|standing|waiting|unoccupied|empty)\s+)?EGO\b")
 _PART_OWNER = compile_gated(r"^(?:[\w-]+\s+){0,2}?(?:front|rear|back|side|corner|bumper|door|fender|mirror|end|trailer|"
                             r"wheel|tire|hood|bed|load|cargo)\s+of\s+(?:the|a|an|its)\s+$", re.I)
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended|"

@@ -1,0 +1,60 @@
+"""Issue 13, the other parties: readings of the AV's touched part and of a party's manoeuvre that says where it was,
+held on real narratives of the studyable sets (dev_gold_study, study2, study3; each entry's source beside its text).
+One test per reading; each asserts what the set's gold gives and fails without the rule.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.sketch import Sketch
+from txt2sce_ros.text.extractor import extract
+
+# id -> (source, narrative)
+_REAL: dict[str, tuple[str, str]] = {
+    'dmvca-waymo-20230507-r466': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 466, column '
+        '"Accident Detail Description")',
+        'On May 7, 2023 at 3:27 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a cyclist on Bay Street near Mason Street. The Waymo AV was '
+        'traveling westbound in the left lane on Bay Street and had just passed Mason Street when it detected'
+        ' an oncoming pickup truck traveling eastbound in the Waymo AV’s lane. The Waymo AV stopped and the '
+        'pickup truck re-entered the correct lane for eastbound traffic and passed the Waymo AV. The pickup '
+        'truck was immediately followed by a large group of cyclists traveling eastbound in multiple lanes of'
+        ' the roadway, including the right lanes and on the wrong side of the double-yellow centerline. The '
+        'Waymo AV remained stopped as the oncoming cyclists rode around both sides of the Waymo AV. One '
+        'cyclist then made contact with the front of the stationary Waymo AV, and then immediately left the '
+        'scene. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. The '
+        'Waymo AV sustained damage.'),
+    'csvr-waymo-20240605-s317': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 317, column 'Accident Detail Description'), transcribed",
+        'On June 5, 2024 at 1:12 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on 29th Avenue near Lawton Street. The Waymo'
+        ' AV was parked at the curb on the right side of 29th Avenue when a passenger car in front of the '
+        'Waymo AV began to reverse to parallel park. The passenger car’s rear driver side corner made contact'
+        ' with the front driver side corner of the parked Waymo AV. At the time of the impact, the Waymo AV’s'
+        ' Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage.'),
+    'nhtsa-sgo-ads-30270-10742-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10742, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 3:29 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, CA was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was '
+        'traveling northbound on [XXX] in the rightmost lane and slowed to a stop for an SUV that was '
+        'parallel parking in front of the Waymo AV. While the Waymo AV was stopped, a pickup truck traveling '
+        'directly behind the Waymo AV approached the Waymo AV from behind, and the front of the pickup truck '
+        "made contact with the rear of the stationary Waymo AV. At the time of the impact, the Waymo AV's "
+        'Level 4 ADS was engaged in autonomous mode. The pickup truck sustained damage. Waymo is reporting '
+        'this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct '
+        'its reporting with additional information as it may become available.'),
+}
+
+
+def _read(report_id: str) -> Sketch:
+    return extract(_REAL[report_id][1], report_id)
+
+
+def test_the_av_s_part_is_read_when_the_av_is_named_with_its_state() -> None:
+    # "One cyclist then made contact with the front of the stationary Waymo AV": the part of the AV touched is told
+    # ("the front of the stationary EGO"), so the party's place is told and the report is complete (gold: no
+    # `missing`).
+    assert _read("dmvca-waymo-20230507-r466").missing == ()
+
