@@ -58,3 +58,12 @@ def test_the_av_s_part_is_read_when_the_av_is_named_with_its_state() -> None:
     # `missing`).
     assert _read("dmvca-waymo-20230507-r466").missing == ()
 
+
+def test_a_party_parallel_parking_is_in_the_av_s_lane_not_beside_it() -> None:
+    # "a passenger car in front of the Waymo AV began to reverse to parallel park": parking is its manoeuvre, not a
+    # place parallel to the AV; it is ahead, in the AV's lane (gold R5, same, k).
+    p = _read("csvr-waymo-20240605-s317").npcs[0]
+    assert (p.position, p.lane, p.actions) == ("R5", "same", "k")
+    # "slowed to a stop for an SUV that was parallel parking in front of the Waymo AV" (gold R5, same, l).
+    suv = next(p for p in _read("nhtsa-sgo-ads-30270-10742-v1").npcs if p.actions == "l")
+    assert (suv.position, suv.lane) == ("R5", "same")

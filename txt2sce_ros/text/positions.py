@@ -149,7 +149,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                          # (a side of a body, "struck the left side of EGO", "its right side", is no lane)
                          r"on\s+the\s+(?:left|right)|(?:to|from|on)\s+EGO's\s+(?:left|right)|"
                          r"(?:from|along)\s+the\s+(?:left|right)\s+side|"
-                         r"bike\s+lane|sidewalk|parallel|alongside|"
+                         # (parallel parking is a manoeuvre in front of or behind the AV, no place beside it)
+                         r"bike\s+lane|sidewalk|parallel(?![- ]park)|alongside|"
                          r"adjacent|beside|next\s+to|(?:left|right)\s+curb|driveway)", scan, re.I)
     if lane_ctx and fre.search(r"\b(?:into|onto)\s+(?:the\s+)?$", scan[max(0, lane_ctx.start() - 12):lane_ctx.start()],
                                re.I):
