@@ -134,6 +134,31 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
         "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
         "information as it may become available."),
+    'nhtsa-sgo-ads-30270-9333-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-9333, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On December [XXX], 2024 at 10:19 PM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San "
+        "Francisco, California was in a collision involving a mini coach bus on [XXX] at [XXX]. The Waymo AV was "
+        "stopped facing south in the rightmost lane of [XXX] after a passenger dropoff when a mini coach bus "
+        "initiated a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]. As the bus "
+        "passed the stopped Waymo AV, the passenger side of the bus made contact with the rear driver side of "
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        "Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General "
+        "Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its reporting "
+        "with additional information as it may become available."),
+    'csvr-waymo-20240603-s315': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 315, column 'Accident Detail Description'), transcribed",
+        "On June 3, 2024 at 4:54 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Marina Del Rey, "
+        "California was in a collision involving a passenger car on Admiralty Way at Bali Way. The Waymo AV was "
+        "making a left turn from the rightmost dedicated left turn lane on Admiralty Way into lane two of three "
+        "lanes in the eastbound direction of Bali Way. A passenger car was also making a left turn from the "
+        "leftmost dedicated left turn lane (leftmost lane). The passenger car had made the turn onto Bali Way "
+        "and was partially in the number 1 lane (leftmost) and partially in the number 2 lane (middle) when the "
+        "front passenger side of the passenger car made contact with the rear driver side of the Waymo AV, which "
+        "was traveling in the number 2 lane (middle). At the time of the impact, the Waymo AV’s Level 4 ADS was "
+        "engaged in autonomous mode, and a test driver was present (in the driver’s seating position). Both "
+        "vehicles sustained damage."),
 }
 
 
@@ -198,3 +223,12 @@ def test_opposite_headings_on_the_first_road_make_it_two_way() -> None:
     crossing = ("A Waymo AV was traveling northbound on Mission Street when a sedan traveling southbound on Valencia "
                 "Street ran a red light and struck it.")
     assert extract(crossing, "x").road.one_way is None
+
+
+def test_a_turn_from_one_road_into_a_lane_of_another_is_at_a_junction() -> None:
+    # "a mini coach bus initiated a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]",
+    # "was making a left turn from the rightmost dedicated left turn lane on Admiralty Way into lane two of three
+    # lanes in the eastbound direction of Bali Way": a turn from one road into another told by its heading is made
+    # where they meet (2 of 2 studyable reports with this construction; both gold junction4).
+    assert _layout("nhtsa-sgo-ads-30270-9333-v1") == "junction4"
+    assert _layout("csvr-waymo-20240603-s315") == "junction4"
