@@ -255,6 +255,19 @@ _SGO: dict[str, tuple[str, str]] = {
         'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
         'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
         'reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9552-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9552,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 8:34 PM CT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, '
+        'Texas was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'southbound in the left hand turn lane on [XXX] and stopped in a queue of traffic at a red light. A '
+        'passenger car traveling directly in front of the Waymo AV started to reverse backwards towards the '
+        'Waymo AV. The Waymo AV began to reverse to avoid the passenger car, then slowed to a stop. The '
+        'passenger car continued to reverse and the rear of the passenger car made contact with the front of '
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        'The Waymo AV sustained damage Waymo is reporting this crash under Request No. 1 of Standing General '
+        'Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
 }
 
 
@@ -410,3 +423,10 @@ def test_a_party_stopped_behind_the_av_that_passes_it_began_in_its_lane() -> Non
     # in the AV's queue, in its lane, and moved out to the left to pass (R6, same; start, lane change left).
     p = _party("nhtsa-sgo-ads-30270-8150-v1")
     assert (p.position, p.lane, p.start, p.actions) == ("R6", "same", "stopped", "if")
+
+
+def test_a_party_that_backs_up_began_standing() -> None:
+    # "A passenger car traveling directly in front of the Waymo AV started to reverse backwards towards the Waymo
+    # AV": it backs only from a standstill; "traveling" describes where it was (gold: stopped, k).
+    p = _party("nhtsa-sgo-ads-30270-9552-v1")
+    assert (p.position, p.lane, p.start, p.actions) == ("R5", "same", "stopped", "k")

@@ -108,6 +108,11 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         out.append(c)
     s = "".join(out)
     s = fre.sub(r"h+", "h", s)
+    if not ego and s.startswith("ak"):
+        # "A passenger car traveling directly in front of the Waymo AV started to reverse": a vehicle backs up only
+        # from a standstill, so the run told by the participle is no manoeuvre of the interaction; it began
+        # standing and backed (sketch.md: one that backs away from a standstill is just `k`).
+        start, s = "stopped", s[1:]
     return start, s
 
 
