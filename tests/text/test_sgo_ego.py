@@ -158,6 +158,18 @@ _SGO: dict[str, tuple[str, str]] = {
         "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
         "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
         "information as it may become available."),
+    'nhtsa-sgo-ads-30270-9540-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-9540, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On December[XXX], 2024 at 8:21 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San "
+        "Francisco, California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV "
+        "had pulled up to the curb facing northbound on [XXX] for a requested passenger pickup. While awaiting "
+        "the passenger, the Waymo AV was partially obstructing access to a residential garage and a passenger "
+        "car began reversing out of the garage and the rear driver side of the passenger car made contact with "
+        "the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
+        "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
 }
 
 
@@ -251,3 +263,10 @@ def test_began_to_proceed_around_is_the_going_around() -> None:
     # the stopped box truck and came to a stop": the move around it to the left after the stop (`ahifh`), not only a
     # start.
     assert _ego("nhtsa-sgo-ads-30270-10757-v1") == ("moving", "ahifh")
+
+
+def test_a_pull_over_told_in_the_pluperfect_is_where_the_av_stood() -> None:
+    # "The Waymo AV had pulled up to the curb facing northbound on [XXX] for a requested passenger pickup. While
+    # awaiting the passenger, ... a passenger car began reversing out of the garage": the pull-over was done before
+    # the story (as "had come to a stop" is); the AV stood throughout (`stopped`, empty), not `l`.
+    assert _ego("nhtsa-sgo-ads-30270-9540-v1") == ("stopped", "")

@@ -658,8 +658,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "h" and s[b:e].lower() == "stopped" and fre.match(r"\s+(?:traffic|vehicles|cars|queue)\b", s[e:]) \
                 and any(x.code == "S" and x.who == who for x in out):
             continue  # "EGO was stopped ... behind stopped traffic": the queue's state, the AV's told already
-        if code == "h" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
-            code = "S"  # "had come to a stop": where it stood when the story begins, not an event of it
+        if code in "hl" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
+            # "had come to a stop", "had pulled up to the curb ... for a requested passenger pickup": where it stood
+            # when the story begins, not an event of it
+            code = "S"
         elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
             code = "S"  # a party's stop "at the stop sign", "for the red light": where it waited
         if code == "S" and fre.match(r"(?:waiting|queued|idling|sitting|standing)\b", s[b:e], re.I):
