@@ -45,6 +45,18 @@ _REAL: dict[str, tuple[str, str]] = {
         'Level 4 ADS was engaged in autonomous mode. The pickup truck sustained damage. Waymo is reporting '
         'this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct '
         'its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9350-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9350,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 8:03 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a SUV on [XXX] near [XXX]. The Waymo AV was '
+        'parked at the curb in the northbound direction of [XXX] when an SUV began to parallel park behind '
+        'the Waymo AV. While parking, the SUV moved forward from the curb into the roadway, maneuvering to '
+        'the left of the Waymo AV, and the passenger side of the SUV made contact with the rear driver side '
+        "of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The SUV sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }
 
 
@@ -67,3 +79,11 @@ def test_a_party_parallel_parking_is_in_the_av_s_lane_not_beside_it() -> None:
     # "slowed to a stop for an SUV that was parallel parking in front of the Waymo AV" (gold R5, same, l).
     suv = next(p for p in _read("nhtsa-sgo-ads-30270-10742-v1").npcs if p.actions == "l")
     assert (suv.position, suv.lane) == ("R5", "same")
+
+
+def test_a_side_the_party_maneuvers_to_is_where_it_went() -> None:
+    # "an SUV began to parallel park behind the Waymo AV. While parking, the SUV moved forward from the curb into the
+    # roadway, maneuvering to the left of the Waymo AV": the left is where it went, not where it was; it began behind
+    # the AV in its lane (gold R6, same).
+    p = _read("nhtsa-sgo-ads-30270-9350-v1").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")

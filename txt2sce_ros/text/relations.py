@@ -126,7 +126,7 @@ _EGO_CLAUSE = compile_gated(r"\bEGO(?:,\s*which|\s+(?:was|had|then|also))\b[^.;,
 _NUMBERS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5}
 _OF_PARTY = re.compile(r"\s+of\s+(?:(?:the|a|an)\s+)?", re.I)
 _MOVED_TO = compile_gated(r"\b(?:cut|cutting|cuts|pulled|pulling|merged|merging|moved|moving|swerved|swerving|"
-                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|"
+                         r"turned|turning|stepped|stepping|darted|ran|walked|rode|veered|maneuver\w*|manoeuvr\w*|"
                          r"(?:changing|change|changed)\s+lanes?|lane[- ]change[sd]?)\s+"
                          # "cut back to the left directly in front of EGO": where it went, a few words on
                          r"(?:(?:back|right|left|directly|suddenly|abruptly|in|into|over|to|the|lane|center|middle|"
