@@ -159,6 +159,28 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "was traveling in the number 2 lane (middle). At the time of the impact, the Waymo AV’s Level 4 ADS was "
         "engaged in autonomous mode, and a test driver was present (in the driver’s seating position). Both "
         "vehicles sustained damage."),
+    'csvr-waymo-20230122-s209': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 209, column 'Accident Detail Description'), transcribed",
+        "On January 22, 2023 at 5:08 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on Bayshore Boulevard at Jerrold Avenue. "
+        "The Waymo AV was traveling north on Bayshore Boulevard when, upon entering the intersection at Jerrold "
+        "Avenue, a passenger vehicle which had previously been stopped at a red light, proceeded through the red "
+        "light. The passenger vehicle approached from the left and made contact with the left rear bumper of the "
+        "Waymo AV. The other vehicle immediately left the scene of the collision. At the time of the impact, the "
+        "Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s "
+        "seating position). Both vehicles sustained damage."),
+    'csvr-cruise-20230721-s263': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 263, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (\"Cruise AV\"), operating in driverless autonomous mode, was traveling "
+        "eastbound on McAllister Street between Van Ness Avenue and Polk Street. As the Cruise AV was slowing "
+        "for a red light at the intersection with Polk Street, an Infiniti Q60 traveling westbound on McAllister "
+        "Street failed to stop for the red light, entered the intersection, and made contact with a black sedan "
+        "traveling southbound on Polk Street that entered the intersection on a green light. The Infiniti Q60 "
+        "spun after contact and continued into the Cruise AV, damaging the front bumper fascia of the Cruise AV. "
+        "The driver of the Infiniti Q60 was transported by police. There were no reported injuries and both the "
+        "Infiniti Q60 and the black sedan were towed from the scene."),
 }
 
 
@@ -232,3 +254,16 @@ def test_a_turn_from_one_road_into_a_lane_of_another_is_at_a_junction() -> None:
     # where they meet (2 of 2 studyable reports with this construction; both gold junction4).
     assert _layout("nhtsa-sgo-ads-30270-9333-v1") == "junction4"
     assert _layout("csvr-waymo-20240603-s315") == "junction4"
+
+
+def test_a_red_another_party_ran_is_not_the_avs() -> None:
+    # "upon entering the intersection at Jerrold Avenue, a passenger vehicle which had previously been stopped at a
+    # red light, proceeded through the red light": the red is the other car's; the AV had green.
+    assert _signal("csvr-waymo-20230122-s209") == ("signal", "green")
+
+
+def test_the_av_slowing_for_a_red_light_has_red() -> None:
+    # "As the Cruise AV was slowing for a red light at the intersection with Polk Street, an Infiniti Q60 ... failed
+    # to stop for the red light": the AV's own light was red (2 of 2 studyable reports with the AV "slowing for a red
+    # light", gold red in both), whatever red the other party ran.
+    assert _signal("csvr-cruise-20230721-s263") == ("signal", "red")

@@ -273,11 +273,17 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         return "unknown"
     if ego_start == "stopped" and TURNED_GREEN.search(t):
         return "red"  # sketch.md: "an AV stopped at a red light that moves off on green has red"
-    if fre.search(rf"\bEGO(?:D)?\b[^.]{{0,60}}\b(?:{_STANDING}|stop)\b[^.]{{0,30}}\bred\b|\bred\s+light\b[^.]{{0,40}}"
-                 rf"\bEGO\b[^.]{{0,20}}\b{_STANDING}\b|\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
+    # The AV standing, stopping or slowing for a red light ("As the Cruise AV was slowing for a red light at the
+    # intersection with Polk Street, an Infiniti Q60 ... failed to stop for the red light"): its own light.
+    if fre.search(rf"\bEGO(?:D)?\b[^.]{{0,60}}\b(?:{_STANDING}|stop|slow(?:ed|ing)|brak(?:ed|ing)|decelerat(?:ed|ing))\b"
+                 rf"[^.]{{0,30}}\bred\b|\bred\s+light\b[^.]{{0,40}}\bEGO\b[^.]{{0,20}}\b{_STANDING}\b", t, re.I):
         return "red"
+    # A red another party ran is its light, not the AV's ("a passenger vehicle which had previously been stopped at a
+    # red light, proceeded through the red light"): read before a standing at a red that names no one.
     if fre.search(r"\b(?:violat\w+|ran|running|against|through)\s+(?:a|the|its|their)\s+red\b", t, re.I):
         return "green"
+    if fre.search(rf"\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+red", t, re.I):
+        return "red"
     if ego_start == "stopped" and (_RED_LIGHT.search(t) or (_AT_A_LIGHT.search(t) and not _COLOUR.search(t))):
         # An AV standing when the interaction began, in a story that names a red light (or stands it at a light
         # of no told colour: "was stopped at a traffic light"), stood at that red (sketch.md: it is the AV's
