@@ -57,6 +57,19 @@ _REAL: dict[str, tuple[str, str]] = {
         'autonomous mode. The SUV sustained damage. Waymo is reporting this crash under Request No. 2 of '
         'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'csvr-waymo-20240513-s311': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 311, column 'Accident Detail Description'), transcribed",
+        'On May 13, 2024 at 12:58 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, CA '
+        'was in a collision involving a passenger car on eastbound Interstate 10 between Exit 2 and Exit 3A. '
+        'The Waymo AV was traveling with a test driver present behind a box truck in the number 3 lane of '
+        'eastbound Interstate 10 near the Bundy Drive overpass when a passenger car traveling at a high rate '
+        'of speed approached the Waymo AV from behind. The passenger car partially entered the number 2 lane '
+        'as the front right corner of the passenger car made contact with the rear left corner of the Waymo '
+        'AV. The passenger car then made contact with the center median and came to a stop. The Waymo AV was '
+        'transitioned into manual mode, and the test driver stopped the Waymo AV to the right-hand shoulder. '
+        "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test "
+        'driver was present (in the driver’s seating position). Both vehicles sustained damage.'),
 }
 
 
@@ -86,4 +99,12 @@ def test_a_side_the_party_maneuvers_to_is_where_it_went() -> None:
     # roadway, maneuvering to the left of the Waymo AV": the left is where it went, not where it was; it began behind
     # the AV in its lane (gold R6, same).
     p = _read("nhtsa-sgo-ads-30270-9350-v1").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")
+
+
+def test_what_a_party_did_after_the_contact_does_not_place_it() -> None:
+    # "a passenger car traveling at a high rate of speed approached the Waymo AV from behind ... the front right
+    # corner of the passenger car made contact with the rear left corner of the Waymo AV. The passenger car then made
+    # contact with the center median": the median is where it went afterwards; it was behind the AV (gold R6, same).
+    p = _read("csvr-waymo-20240513-s311").npcs[0]
     assert (p.position, p.lane) == ("R6", "same")

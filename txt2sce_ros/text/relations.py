@@ -208,6 +208,9 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
     for m in e.mentions:
         if m.sent in d.summary and any(x.sent not in d.summary for x in e.mentions):
             continue
+        if d.contact_sent is not None and m.sent > d.contact_sent and \
+                any(x.sent <= d.contact_sent and x.sent not in d.summary for x in e.mentions):
+            continue  # told after the contact: where it went then, not where the interaction began
         s = d.sents[m.sent]
         end = _clause_end(d, e, m)
         # The words just before the name belong to it only within its clause ("As EGO proceeded in the far right
