@@ -170,6 +170,21 @@ _SGO: dict[str, tuple[str, str]] = {
         "engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request "
         "No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
         "information as it may become available."),
+    'nhtsa-sgo-ads-30270-10639-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10639, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 7:41 AM MST a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Tempe, Arizona "
+        "was in a collision involving a passenger car on [XXX] at an off-ramp onto [XXX]. The Waymo AV was "
+        "stopped in a queue of traffic facing north on an off-ramp of [XXX] at the T-intersection with [XXX] in "
+        "the leftmost right turn lane waiting for eastbound traffic to clear before proceeding to merge right "
+        "onto [XXX]. The Waymo AV began to proceed forward once the vehicle ahead made its turn, then came to a "
+        "stop as it moved forward onto [XXX]. A passenger car traveling directly behind the Waymo AV approached "
+        "the Waymo AV from behind, and the front of the passenger car made contact with the rear of the Waymo "
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test "
+        "driver was present in the driver's seating position. Both vehicles sustained damage. Waymo is reporting "
+        "this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed "
+        "away. Waymo may supplement or correct its reporting with additional information as it may become "
+        "available."),
 }
 
 
@@ -270,3 +285,10 @@ def test_a_pull_over_told_in_the_pluperfect_is_where_the_av_stood() -> None:
     # awaiting the passenger, ... a passenger car began reversing out of the garage": the pull-over was done before
     # the story (as "had come to a stop" is); the AV stood throughout (`stopped`, empty), not `l`.
     assert _ego("nhtsa-sgo-ads-30270-9540-v1") == ("stopped", "")
+
+
+def test_proceeding_to_after_before_is_still_a_plan() -> None:
+    # "waiting for eastbound traffic to clear before proceeding to merge right onto [XXX]": the merge is what the AV
+    # waited to do ("proceeding to" after "before" is no manoeuvre made, as "to begin to" is not); it moved forward
+    # and stopped, with no lane change to the right (gold `ih`).
+    assert "g" not in _ego("nhtsa-sgo-ads-30270-10639-v1")[1]

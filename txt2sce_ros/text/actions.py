@@ -304,8 +304,10 @@ _WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|is)\
 _STANDING = compile_gated(r"\b(?:stopped|stationary|parked|standing|idle|motionless)\s*$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)
-# "slowing to begin to execute a right turn": "begin to" inside an infinitive of purpose is still an intention.
-_INTENT_TO_BEGIN = compile_gated(r"\bto\s+(?:begin|start)\s+to\s+(?:\w+\s+){0,2}$", re.I)
+# "slowing to begin to execute a right turn", "waiting for eastbound traffic to clear before proceeding to merge
+# right": "begin to", "proceeding to" inside an infinitive of purpose or after "before" is still an intention.
+_INTENT_TO_BEGIN = compile_gated(r"\b(?:to|before|prior\s+to)\s+(?:begin(?:ning)?|start(?:ing)?|proceed(?:ing)?)\s+to\s+"
+                                 r"(?:\w+\s+){0,2}$", re.I)
 # "was making a right turn", "were in the process of changing lanes", "while turning": the manoeuvre in progress.
 _PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are)\s+(?:(?:already|still|actively|currently|just|slowly)\s+)?"
                           r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
