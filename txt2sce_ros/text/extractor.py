@@ -237,7 +237,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
-        side = placed.passed_side or next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")
+        side = next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")
         if pos == "R6" and lane == "same" and side and not set(acts) & set("fg"):
             # Passing the AV from behind it in its own lane takes a move to the side it passed on.
             acts = (acts or "a") + ("f" if side == "left" else "g")

@@ -23,9 +23,11 @@ heading) and combined in a fixed order, highest first, so a rule can be read and
    `passing` (behind); else the contact on the AV's rear half (behind) or front half (ahead) for a party not backing
    up; else a party moving in the lane beside an AV that stood throughout and touching its side passed it (behind);
    else the first reading.
-3. The lane: an explicit `lane` cue (one said relative to the AV before a lane's name on the road); else the side
-   the `passing` cue names; else the side of the AV the party touched, for a party ahead or passing (one behind
-   that strikes a rear corner was most often right behind); else the first reading.
+3. The lane: a party said to stand behind the AV ("stopped behind EGO") that then passes it on a side is in the AV's
+   lane (it moves out to pass); else an explicit `lane` cue (one said relative to the AV before a lane's name on
+   the road); else the side the `passing` cue names; else the side of the AV the party touched, for a party ahead or
+   passing (one behind that strikes a rear corner was most often right behind); else the first reading. Only what
+   the text tells of the party up to the contact places it.
 4. A cyclist or scooterist read in the AV's lane from no explicit same-lane phrase rides at the road's edge: on the
    side of the AV it touched, else the curb side (right).
 
@@ -173,7 +175,7 @@ class Placement:
     rule: str  # which cue decided it ("first reading" when none did)
     cues: tuple[Cue, ...]  # the cues that decided (all gathered ones when the first reading stood)
     seen: tuple[Cue, ...] = ()  # every cue gathered
-    passed_side: str = ""  # left/right: the side a party placed behind in the AV's lane moved out to, passing it
+    passed_side: str = ""  # left/right: the side a party standing behind in the AV's lane moved out to, passing it
 
     @property
     def cue_placed(self) -> bool:
