@@ -70,6 +70,22 @@ _REAL: dict[str, tuple[str, str]] = {
         'transitioned into manual mode, and the test driver stopped the Waymo AV to the right-hand shoulder. '
         "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test "
         'driver was present (in the driver’s seating position). Both vehicles sustained damage.'),
+    'nhtsa-sgo-ads-30270-10599-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10599, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:41 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Venice, '
+        'California was in a collision involving a van on [XXX] near [XXX]. The Waymo AV was parked in-lane '
+        'for a passenger drop-off facing southwest on [XXX] with hazard lights activated. A van that was '
+        'stopped directly behind the Waymo AV began to maneuver around the stationary Waymo by crossing the '
+        'yellow center line, entering the opposing lane of travel. As the van proceeded to the left of the '
+        'stationary Waymo AV, the Waymo AV passenger opened the driver side rear door and the passenger side '
+        'of the van made contact with the open driver side rear door of the Waymo AV. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The passengers who were seated in"
+        ' the rear of the Waymo AV and the front passenger seat were not belted at the time of the collision,'
+        ' as they were likely preparing to exit the Waymo AV. Both vehicles sustained damage. Waymo is '
+        'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle '
+        'involved was towed away. Waymo may supplement or correct its reporting with additional information '
+        'as it may become available.'),
 }
 
 
@@ -108,3 +124,12 @@ def test_what_a_party_did_after_the_contact_does_not_place_it() -> None:
     # contact with the center median": the median is where it went afterwards; it was behind the AV (gold R6, same).
     p = _read("csvr-waymo-20240513-s311").npcs[0]
     assert (p.position, p.lane) == ("R6", "same")
+
+
+def test_a_party_named_after_an_open_door_as_the_doer_of_the_contact_touched_the_av() -> None:
+    # "the Waymo AV passenger opened the driver side rear door and the passenger side of the van made contact with
+    # the open driver side rear door of the Waymo AV": the van touched the AV (gold: collision with the van, R6, same,
+    # stopped behind it, then around it: "if").
+    sk = _read("nhtsa-sgo-ads-30270-10599-v1")
+    van = next(p for p in sk.npcs if p.id == sk.collision.with_)
+    assert (van.category, van.position, van.lane, van.start, van.actions) == ("van", "R6", "same", "stopped", "if")

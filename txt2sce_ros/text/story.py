@@ -162,6 +162,13 @@ def find_contact(d: Doc) -> None:
                     if any(x.entity == door and fre.search(r"\bavoid\w*\s+(?:\w+\s+){0,2}$",
                                                            s[max(0, x.start - 30):x.start]) for x in ments):
                         continue  # "swerved to avoid the open door and made contact": the door was missed
+                    if partner is not None and partner != door and any(
+                            x.entity == partner and y.entity == door and y.end <= x.start < m.start()
+                            for x in others for y in ments):
+                        # "with the door open, the passenger car started to proceed straight and made contact", "the
+                        # Waymo AV passenger opened the driver side rear door and the passenger side of the van made
+                        # contact": a party named after the door as the doer of the contact touched the AV itself
+                        continue
                     if d.ents[door].first.sent == i or (owner == partner and fre.search(r"\bdoor", s[:m.start()])):
                         partner = door  # "opened a door into the AV" / "the edge of the cab's door made contact"
             candidates.append((i, m.start(), partner))
