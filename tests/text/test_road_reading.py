@@ -181,6 +181,36 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "spun after contact and continued into the Cruise AV, damaging the front bumper fascia of the Cruise AV. "
         "The driver of the Infiniti Q60 was transported by police. There were no reported injuries and both the "
         "Infiniti Q60 and the black sedan were towed from the scene."),
+    'csvr-cruise-20200129-s50': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 50, column 'Accident Detail Description'), transcribed",
+        "A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was traveling northwest bound "
+        "on Columbus Street approaching the intersection with Jones Street when the Cruise AV slowed down. The "
+        "driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another vehicle, "
+        "changing into the Cruise AV’s lane from the left adjacent lane, made contact with the rear bumper of "
+        "the Cruise AV. There were no injuries reported at the scene by either party and police were not called. "
+        "Both of the Cruise AV test operators later mentioned neck and shoulder pain."),
+    'dmvca-cruise-20230927-r531': (
+        "github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 531, column "
+        "\"Accident Detail Description\")",
+        "A Cruise autonomous vehicle (“AV”), operating in driverless autonomous mode, was traveling northbound "
+        "on 2nd Street between Stillman Street and Bryant Street. As the AV was approaching the intersection "
+        "with Stillman Street, a blue Model 3 Tesla exited out of a parking garage into the AV’s lane of travel. "
+        "The AV braked and, shortly thereafter, the AV made contact with the Model 3 Tesla, damaging the AV’s "
+        "front bumper fascia and front passenger side wheel opening molding. The driver of the Model 3 Tesla "
+        "left the scene without exchanging information. There were no reported injuries. The driver of the Model "
+        "3 Tesla later reported damages."),
+    'nhtsa-sgo-ads-30270-10630-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10630, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 9:10 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling "
+        "northbound on [XXX] and came to a stop, allowing for a passenger car to exit a parking lot on the east "
+        "side of the roadway. As the passenger car turned left onto [XXX] and attempted to pass the Waymo AV, "
+        "the driver side of the passenger car made contact with the rear driver side of the stationary Waymo AV. "
+        "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The passenger car "
+        "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
+        "Waymo may supplement or correct its reporting with additional information as it may become available."),
 }
 
 
@@ -267,3 +297,21 @@ def test_the_av_slowing_for_a_red_light_has_red() -> None:
     # to stop for the red light": the AV's own light was red (2 of 2 studyable reports with the AV "slowing for a red
     # light", gold red in both), whatever red the other party ran.
     assert _signal("csvr-cruise-20230721-s263") == ("signal", "red")
+
+
+def test_an_intersection_the_av_is_approaching_is_a_junction() -> None:
+    # "was traveling northwest bound on Columbus Street approaching the intersection with Jones Street when the
+    # Cruise AV slowed down ... another vehicle, changing into the Cruise AV's lane from the left adjacent lane, made
+    # contact": sketch.md puts R1-R4 "at a junction the AV is in or approaching" (10 of the 11 studyable reports
+    # saying "approaching/toward(s) the intersection" are gold junction4).
+    assert _layout("csvr-cruise-20200129-s50") == "junction4"
+
+
+def test_a_driveway_exit_is_where_they_met_not_the_junction_ahead() -> None:
+    # The 11th (dev, official gold straight): "As the AV was approaching the intersection with Stillman Street, a blue
+    # Model 3 Tesla exited out of a parking garage into the AV's lane of travel"; and "allowing for a passenger car
+    # to exit a parking lot ... As the passenger car turned left onto [XXX]": the turn out of the lot is no junction's
+    # (10 of the 11 studyable reports with someone leaving a driveway, lot or garage are gold straight; the 11th
+    # stood at a red light at the intersection).
+    assert _layout("dmvca-cruise-20230927-r531") == "straight"
+    assert _layout("nhtsa-sgo-ads-30270-10630-v1") == "straight"

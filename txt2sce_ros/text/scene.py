@@ -23,8 +23,13 @@ _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\
                           r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
 _AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
                           r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
-_NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|approaching|toward|towards|from)\s+the\s+intersection\b|"
+_NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
+# Someone coming out of a driveway, a lot or a garage (not out of a parking space: a parking manoeuvre).
+_OUT_OF_A_LOT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}"
+                              r"(?:parking\s+(?:lot|garage|structure)|driveway|garage|alley)\b", re.I)
+# The AV (or a party) on its way to an intersection: at a junction unless someone came out of a driveway or lot there.
+_APPROACHING = compile_gated(r"\b(?:approaching|toward|towards)\s+the\s+intersection\b", re.I)
 _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
                          r"\b(?:three|3)[- ]?(?:way|legged|leg)\s+(?:intersection|stop|junction)\b|"
                          # "where Koval Lane ends at Flamingo Road", "the end of X where it meets Y": a road ending
@@ -155,11 +160,22 @@ _DISPLAYED = compile_gated(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|g
 def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = frozenset()) -> bool:
     """Did the interaction happen at a junction? Turns finished before the interaction began ("after turning right
     onto X", a turn told in a sentence before the other party appears), turns out of a driveway or lot, and
-    intersections the AV was only near do not count."""
+    intersections the AV was only near do not count. One it was approaching does (sketch.md: R1-R4 are at a junction
+    the AV is in or approaching), unless someone came out of a driveway, lot or garage: the interaction is then at
+    that exit (sketch.md: a driveway is `straight`), and a turn onto the road from there is no junction's."""
+    exit_at = next((i for i, s in enumerate(sents) if i not in summary and _OUT_OF_A_LOT.search(s)), None)
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
         cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", _NOT_CONTROL.sub(
             " ", s)))))
+        if exit_at is not None:
+            # "As the AV was approaching the intersection with Stillman Street, a blue Model 3 Tesla exited out of a
+            # parking garage into the AV's lane of travel"; "allowing for a passenger car to exit a parking lot ...
+            # As the passenger car turned left onto [XXX]": the junction ahead and the turn out of the lot are not
+            # where they met
+            cleaned = _APPROACHING.sub(" ", cleaned)
+            if i >= exit_at:
+                cleaned = _TURN_ONTO.sub(" ", cleaned)
         if fre.search(r"\bintersection\b", cleaned, re.I) and i in summary and \
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
