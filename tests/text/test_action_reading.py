@@ -488,3 +488,11 @@ def test_a_start_however_told(start: str) -> None:
     text = (f"A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle "
             f"{start} and a sedan traveling behind it struck its rear bumper.")
     assert _ego(text) == ("stopped", "i")
+
+
+def test_travel_as_a_noun_is_no_run_along_the_lane() -> None:
+    # "stopped in its lane of travel": "travel" names the lane, it tells no movement (a run `a` after a standstill
+    # would be read as moving off). 21 of the 379 studyable reports say "lane/direction/path of travel".
+    text = ("The Waymo AV was stopped in its lane of travel on Main Street when a cyclist made contact with its front "
+            "bumper.")
+    assert _ego(text) == ("stopped", "")

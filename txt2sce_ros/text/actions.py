@@ -252,7 +252,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     # ("proceeded to reverse": the verb after it tells the move, not a run along the lane)
-    ("a", r"\b(?:travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
+    # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
+    ("a", r"\b(?:(?<!of\s)travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
           r"drift(?:ed|ing|s)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
