@@ -211,6 +211,16 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The passenger car "
         "sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. "
         "Waymo may supplement or correct its reporting with additional information as it may become available."),
+    'csvr-waymo-20211018-s101': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 101, column 'Accident Detail Description'), transcribed",
+        "On October 18, 2021 at 12:57 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "CA was in a collision involving an SUV at Cesar Chavez and Evans Avenue. As the Waymo AV approached a "
+        "right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped traffic. An SUV following "
+        "behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo "
+        "AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present in the driver’s seating "
+        "position. The Waymo AV sustained minor damage to its rear bumper and trunk, and the SUV sustained minor "
+        "damage to its front bumper and hood."),
 }
 
 
@@ -315,3 +325,10 @@ def test_a_driveway_exit_is_where_they_met_not_the_junction_ahead() -> None:
     # stood at a red light at the intersection).
     assert _layout("dmvca-cruise-20230927-r531") == "straight"
     assert _layout("nhtsa-sgo-ads-30270-10630-v1") == "straight"
+
+
+def test_a_turn_the_av_approached_is_at_the_junction_it_approached() -> None:
+    # "As the Waymo AV approached a right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped traffic.
+    # An SUV following behind the Waymo AV made contact with the rear": the turn ahead is the junction it was
+    # approaching (sketch.md), though told before the SUV comes in (1 of 1 studyable report; gold junction4).
+    assert _layout("csvr-waymo-20211018-s101") == "junction4"

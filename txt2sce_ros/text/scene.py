@@ -151,7 +151,9 @@ def environment(t: str) -> Environment:
 _LOT_EXIT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of|from)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}"
                        r"(?:parking\s+(?:lot|garage|structure|space|spot)|driveway|garage|alley|lot)\b[^.]*?"
                        r"(?:\bonto\b|$)", re.I)
-_ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to)\b", re.I)
+# (a turn ahead that the AV "approached": the junction it was approaching, sketch.md's R1-R4)
+_ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|preparing\s+to|waiting\s+to|about\s+to|"
+                              r"approach(?:ed|ing)\s+(?:a|an|the|its)\s+(?:\w+\s+)?(?:left|right)[- ]turn)\b", re.I)
 
 
 _DISPLAYED = compile_gated(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
