@@ -268,6 +268,18 @@ _SGO: dict[str, tuple[str, str]] = {
         'The Waymo AV sustained damage Waymo is reporting this crash under Request No. 1 of Standing General '
         'Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its '
         'reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-5896-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5896,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2023 at 6:13 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Chandler, '
+        'Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'northbound on [XXX] and just passed [XXX] when an oncoming passenger car crossed into the Waymo AVs '
+        'lane, toward the Waymo AV. The Waymo AV then stopped as the passenger vehicle continued to approach.'
+        ' The passenger vehicle then made contact with the front of the Waymo AV, and then made contact with '
+        'the side of the Waymo AV as it left the scene. At the time of the impact, the Waymo AVs Level 4 ADS '
+        'was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under '
+        'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may'
+        ' supplement or correct its reporting with additional information as it may become available.'),
 }
 
 
@@ -430,3 +442,11 @@ def test_a_party_that_backs_up_began_standing() -> None:
     # AV": it backs only from a standstill; "traveling" describes where it was (gold: stopped, k).
     p = _party("nhtsa-sgo-ads-30270-9552-v1")
     assert (p.position, p.lane, p.start, p.actions) == ("R5", "same", "stopped", "k")
+
+
+def test_an_oncoming_party_crossing_into_the_av_s_lane_travelled_first() -> None:
+    # "an oncoming passenger car crossed into the Waymo AVs lane, toward the Waymo AV": the possessive written
+    # without its apostrophe is the AV's lane; the party came along its own lane, then moved over into the AV's
+    # (gold R7, left, "af").
+    p = _party("nhtsa-sgo-ads-30270-5896-v1")
+    assert (p.position, p.lane, p.start, p.actions) == ("R7", "left", "moving", "af")

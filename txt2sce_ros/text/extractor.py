@@ -216,9 +216,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
             acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way
         if start == "moving" and not under_way and (acts[:1] in ("d", "e", "f", "g") and pos == "R5" or
-                                                     acts[:1] in ("f", "g") and pos == "R6" and _told_finite(d, pacts)):
-            # it travelled along the AV's road (ahead, or behind it: "the vehicle behind EGO then attempted to change
-            # lanes") before turning off it or changing lane
+                                                     acts[:1] in ("f", "g") and pos == "R6" and _told_finite(d, pacts) or
+                                                     acts[:1] in ("f", "g") and pos == "R7"):
+            # it travelled along the AV's road (ahead, behind it: "the vehicle behind EGO then attempted to change
+            # lanes", or towards it: "an oncoming passenger car crossed into the Waymo AV's lane") before turning off
+            # it or changing lane
             acts = "a" + acts
         if start == "moving" and acts in ("", "a") and e.category == "pedestrian" and \
                 not fre.search(r"\b(?:along|sidewalk)\b", context(d, e)):

@@ -396,6 +396,9 @@ def normalise(text: str) -> str:
         return m.group(0) if co and av_company and _company_key(co.group(0)) != av_company else " EGO"
     for rx in ego_res:
         t = rx.sub(ego_or_other, t)
+    # "crossed into the Waymo AVs lane", "the Cruise AVs front bumper": a possessive written without its apostrophe
+    # (the names' plural "AVs" is read as the AV) before a noun the AV has.
+    t = _EGO_BARE_POSSESSIVE.sub("EGO's", t)
     if first_person:
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us"); "we" is the
         # AV where it drives ("we were stopped", "we proceeded"), not the company reporting ("we are reporting").
@@ -650,6 +653,10 @@ def _names_part_of(head: str, e: Entity) -> bool:
 def _between(sents: list[str], a: Mention, b: Mention) -> str:
     """Text between two mentions of one sentence (`b.start` already includes its modifiers)."""
     return sents[a.sent][a.end:b.start] if a.sent < len(sents) else ""
+
+
+_EGO_BARE_POSSESSIVE = compile_gated(r"\bEGO(?=\s+(?:lane|path|front|rear|bumper|hood|door|mirror|sensor|roof|trunk|"
+                                     r"fender|tire|wheel|side|direction)\b)")
 
 
 def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) -> list[Entity]:
