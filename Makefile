@@ -14,7 +14,7 @@ STAMP := $(VENV)/.installed
 CR_VENV := .venv-commonroad
 CR_STAMP := $(CR_VENV)/.installed
 
-.PHONY: setup demo test test-fast maps clean sut-commonroad
+.PHONY: setup accel demo test test-fast maps clean sut-commonroad
 
 $(STAMP): requirements.txt requirements-dev.txt setup.py
 	$(PY) -m venv $(VENV)
@@ -23,7 +23,13 @@ $(STAMP): requirements.txt requirements-dev.txt setup.py
 	$(BIN)/pip install -q -e .
 	touch $(STAMP)
 
-setup: $(STAMP)
+# The compiled build of the player's, planner's and oracle's hot modules (Cython; the same results, ~20 % less CPU;
+# txt2sce_ros/accel.py). Incremental: only modules whose source changed are compiled again (~1.5 min for all on 2
+# cores). Optional: where it cannot be built, everything runs from the plain source.
+accel: $(STAMP)
+	@$(BIN)/txt2sce accel build || echo "warning: no compiled build; the plain Python source runs (slower, same results)" >&2
+
+setup: $(STAMP) accel
 
 # The planner's own environment (its protobuf pin clashes with ours); the adapter imports the checkout through
 # PYTHONPATH (sut_adapters/commonroad/venv.py), so only the planner stack and the ROS wheels are installed here.
@@ -35,10 +41,10 @@ $(CR_STAMP): requirements-commonroad.txt
 
 sut-commonroad: $(CR_STAMP)
 
-demo: $(STAMP)
+demo: $(STAMP) accel
 	$(BIN)/txt2sce demo --out demo_out
 
-test: $(STAMP) $(CR_STAMP)
+test: $(STAMP) $(CR_STAMP) accel
 	$(BIN)/python -m pytest -q tests
 
 clean:

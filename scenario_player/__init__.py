@@ -9,6 +9,7 @@
 See docs/closed_loop_api.md; the ROS 2 node is `scenario_player.node`.
 """
 
+import txt2sce_ros  # noqa: F401  (first: it installs the compiled build's import hook, txt2sce_ros.accel)
 from .simulation import Simulation, SimulationConfig
 from .syntax.scenario import Scenario, load_scenario
 

@@ -2,6 +2,7 @@
 swapping in a real ADS is visibly a swap. Core (no rclpy): `Planner(network, goal, params, faults=...)`,
 `planner.step(frame) -> ControlCommand`; the ROS 2 node is `standin_planner.node`."""
 
+import txt2sce_ros  # noqa: F401  (first: it installs the compiled build's import hook, txt2sce_ros.accel)
 from txt2sce_ros.lazy import lazy_exports
 
 # Lazy: `txt2sce play` needs only the fault names; the planner (road model, numpy) loads when it is used.

@@ -5,3 +5,7 @@ Nothing imported at package level touches rclpy: the cores run on a plain Python
 """
 
 __version__ = "0.1.0"
+
+from .accel import enable as _enable_compiled
+
+_enable_compiled()      # the compiled build of the hot modules, where one matches their source (accel.py)

@@ -87,6 +87,35 @@ def _profile(files: list[str], time_limit: float | None) -> dict[str, list[tuple
     return out
 
 
+_PLAIN_RUNS = """
+import sys, time
+from txt2sce_ros.closed_loop import run_closed_loop
+run_closed_loop(sys.argv[1])            # imports and first-use caches out of the figure, as in the pool's workers
+t0 = time.process_time()
+for f in sys.argv[1:]:
+    run_closed_loop(f)
+print((time.process_time() - t0) / (len(sys.argv) - 1))
+"""
+
+
+def _plain_cpu_per_run(files: list[str]) -> float | None:
+    """CPU seconds a run of `files` costs from the plain source (compiled build switched off), in a fresh process;
+    None when there is nothing to compare (no compiled build here, or it is switched off already)."""
+    import subprocess
+    import sys
+
+    from txt2sce_ros import accel
+
+    if not files or accel.switched_off() or "built" not in accel.status().values():
+        return None
+    env = {**os.environ, accel.ENV_SWITCH: "0"}
+    done = subprocess.run([sys.executable, "-c", _PLAIN_RUNS, *files], capture_output=True, text=True, env=env)
+    if done.returncode != 0:
+        print(f"  (plain-source baseline failed: {done.stderr.strip().splitlines()[-1:]})")
+        return None
+    return float(done.stdout.strip().splitlines()[-1])
+
+
 def run(args: argparse.Namespace) -> int:
     from txt2sce_ros.campaign.pipeline import CampaignConfig, seed_stage
     from txt2sce_ros.campaign.reporting import report_from_store
@@ -103,8 +132,10 @@ def run(args: argparse.Namespace) -> int:
     sketches = shared_dir() / "data" / "reports" / "dev_gold.jsonl"
     tmp = Path(tempfile.mkdtemp(prefix="txt2sce_bench_campaign_"))
     workers = os.cpu_count() or 2
+    from txt2sce_ros import accel
+
     print(f"bench campaign: {sketches.name} -> >= {target} scenarios, {workers} cores, "
-          f"load average {os.getloadavg()[0]:.1f} at start; work dir {tmp}")
+          f"load average {os.getloadavg()[0]:.1f} at start; work dir {tmp}; {accel.describe()}")
     try:
         cfg = CampaignConfig(out=tmp, seed=args.seed, progress=True)
         t_start = time.perf_counter()
@@ -144,6 +175,7 @@ def run(args: argparse.Namespace) -> int:
             t0, c0 = time.perf_counter(), _cpu()
             run_all(sample, store, executor="serial", progress=False)
             t_serial, cpu_serial = time.perf_counter() - t0, _cpu() - c0
+        plain = _plain_cpu_per_run([t.scenario_path for t in sample])
         pool_rate = summary.ran / runs_s if runs_s > 0 else 0.0
         serial_rate = len(sample) / t_serial
         # Wall rates taken minutes apart on a shared machine are not comparable; CPU seconds per run are.
@@ -151,6 +183,10 @@ def run(args: argparse.Namespace) -> int:
               f"{_rate(len(sample), t_serial)} wall, {cpu_serial / len(sample):.3f} CPU s/run "
               f"(pool above: {pool_rate:.2f} scenarios/s wall, {cpu_runs / max(1, summary.ran):.3f} CPU s/run "
               f"incl. worker start-up and result shipping)")
+        if plain is not None:
+            print(f"baseline: the same {len(sample)} runs from the plain Python source (TXT2SCE_ACCEL=0, one "
+                  f"process): {plain:.3f} CPU s/run vs {cpu_serial / len(sample):.3f} as set up here "
+                  f"(x{plain / max(cpu_serial / len(sample), 1e-9):.2f})")
 
         # ROS-graph mode on a small sample, beside the in-process path on the same sample.
         ros_sample = sample[:ros_n]
