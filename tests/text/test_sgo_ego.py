@@ -185,6 +185,12 @@ _SGO: dict[str, tuple[str, str]] = {
         "this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed "
         "away. Waymo may supplement or correct its reporting with additional information as it may become "
         "available."),
+    'nhtsa-sgo-ads-30413-7880-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30413-7880, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "While in traffic and stopped at 0mph in autonomy, a motorized scooter riding between the 2 lanes of "
+        "traffic clipped the May Mobility vehicle's mirror with their own mirror. The scooter proceeded along "
+        "its way, seemingly unaware of the mirror clip."),
 }
 
 
@@ -292,3 +298,12 @@ def test_proceeding_to_after_before_is_still_a_plan() -> None:
     # waited to do ("proceeding to" after "before" is no manoeuvre made, as "to begin to" is not); it moved forward
     # and stopped, with no lane change to the right (gold `ih`).
     assert "g" not in _ego("nhtsa-sgo-ads-30270-10639-v1")[1]
+
+
+def test_an_opening_clause_of_standing_still_tells_of_the_av_when_the_narrative_opens_with_it() -> None:
+    # "While in traffic and stopped at 0mph in autonomy, a motorized scooter riding between the 2 lanes of traffic
+    # clipped the May Mobility vehicle's mirror": the subjectless clause tells of the AV the report is about (as
+    # "While stopped, ..." later in a narrative does), not of the scooter named after it.
+    assert _ego("nhtsa-sgo-ads-30413-7880-v1") == ("stopped", "")
+    sk = extract(_SGO["nhtsa-sgo-ads-30413-7880-v1"][1], "nhtsa-sgo-ads-30413-7880-v1")
+    assert (sk.npcs[0].start, sk.npcs[0].actions) == ("moving", "a")

@@ -373,7 +373,7 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
                          r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"
                          r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
-                         r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:stopped|waiting|"
+                         r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:in\s+traffic\s+and\s+)?(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
                          r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
@@ -448,7 +448,7 @@ def turn_from_headings(s: str) -> str | None:
 
 # A subjectless opening clause of standing still ("While stopped,", "While yielding to pedestrians,"): the narratives
 # use it of the AV they tell about, whatever the main clause's subject (a dangling modifier, not the party's state).
-_OPENING_WAIT = compile_gated(r"\s*(?:while|when|as)\s+(?:still\s+)?(?:stopped|stationary|waiting|yielding|idling|"
+_OPENING_WAIT = compile_gated(r"\s*(?:while|when|as)\s+(?:still\s+)?(?:in\s+traffic\s+and\s+)?(?:stopped|stationary|waiting|yielding|idling|"
                               r"at\s+(?:a\s+)?(?:stop|standstill))\b[^,;]{0,80},", re.I)
 # A place told against the AV inside a party's noun phrase: "the vehicle directly in front of EGO".
 _PLACE_OF_EGO = compile_gated(r"\s+(?:directly\s+|immediately\s+|right\s+|just\s+)?(?:in\s+front\s+of|behind|ahead\s+of|"
@@ -479,8 +479,11 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
             return fallback
     if best is None and fre.match(r"\s*(?:during|following)\b", sentence, re.I):
         return fallback
-    if best is None and fallback == -1 and _OPENING_WAIT.match(sentence):
-        return fallback  # "While stopped, a vehicle approached from behind": the AV the story is about stood
+    if best is None and fallback in (-1, None) and _OPENING_WAIT.match(sentence):
+        # "While stopped, a vehicle approached from behind": the AV the story is about stood (also where the
+        # narrative opens so: "While in traffic and stopped at 0mph in autonomy, a motorized scooter ... clipped
+        # the May Mobility vehicle's mirror")
+        return -1
     if best is None:
         for m in ments:
             if m.start > pos and m.subject:
