@@ -86,6 +86,17 @@ _REAL: dict[str, tuple[str, str]] = {
         'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle '
         'involved was towed away. Waymo may supplement or correct its reporting with additional information '
         'as it may become available.'),
+    'dmvca-waymo-20241016-r620': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 620, column '
+        '"Accident Detail Description")',
+        'On October 16, 2024 at 5:27 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a van in an underground parking lot at 1160 '
+        'Mission Street. Two Waymo AVs were stopped at neighboring junctures of a tight T-instersection of '
+        'the lot. The first Waymo AV was preparing to make a right turn, while yielding to the other Waymo '
+        'AV. While the Waymo AVs remained stopped, a van that had been traveling behind the first Waymo AV '
+        'entered the oncoming lane to maneuver around the left side of the Waymo AV. The passenger side of '
+        'the van then made contact with the rear driver side of the stopped Waymo AV. At the time of the '
+        'impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.'),
 }
 
 
@@ -133,3 +144,11 @@ def test_a_party_named_after_an_open_door_as_the_doer_of_the_contact_touched_the
     sk = _read("nhtsa-sgo-ads-30270-10599-v1")
     van = next(p for p in sk.npcs if p.id == sk.collision.with_)
     assert (van.category, van.position, van.lane, van.start, van.actions) == ("van", "R6", "same", "stopped", "if")
+
+
+def test_another_av_of_the_fleet_is_a_party() -> None:
+    # "The first Waymo AV was preparing to make a right turn, while yielding to the other Waymo AV": the other AV is
+    # a party the AV yielded to, a car (official gold: the van, and the other AV as a car).
+    sk = _read("dmvca-waymo-20241016-r620")
+    assert sorted(p.category for p in sk.npcs) == ["car", "van"]
+    assert next(p for p in sk.npcs if p.id == sk.collision.with_).category == "van"

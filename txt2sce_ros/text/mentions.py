@@ -399,6 +399,8 @@ def normalise(text: str) -> str:
     # "crossed into the Waymo AVs lane", "the Cruise AVs front bumper": a possessive written without its apostrophe
     # (the names' plural "AVs" is read as the AV) before a noun the AV has.
     t = _EGO_BARE_POSSESSIVE.sub("EGO's", t)
+    # "yielding to the other Waymo AV", "a second Waymo AV approached": another AV of the fleet is a party, a car.
+    t = _OTHER_EGO.sub(r"\1 car", t)
     if first_person:
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us"); "we" is the
         # AV where it drives ("we were stopped", "we proceeded"), not the company reporting ("we are reporting").
@@ -657,6 +659,9 @@ def _between(sents: list[str], a: Mention, b: Mention) -> str:
 
 _EGO_BARE_POSSESSIVE = compile_gated(r"\bEGO(?=\s+(?:lane|path|front|rear|bumper|hood|door|mirror|sensor|roof|trunk|"
                                      r"fender|tire|wheel|side|direction)\b)")
+
+
+_OTHER_EGO = compile_gated(r"\b((?:a|an|the)\s+(?:second|other|third)|another)\s+EGO\b(?!'s)", re.I)
 
 
 def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) -> list[Entity]:
