@@ -191,6 +191,24 @@ _SGO: dict[str, tuple[str, str]] = {
         "While in traffic and stopped at 0mph in autonomy, a motorized scooter riding between the 2 lanes of "
         "traffic clipped the May Mobility vehicle's mirror with their own mirror. The scooter proceeded along "
         "its way, seemingly unaware of the mirror clip."),
+    'nhtsa-sgo-ads-30270-10756-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10756, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 1:45 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in San Francisco, "
+        "California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was traveling "
+        "eastbound on [XXX] when it approached a vehicle stopped in-lane. Another vehicle was stopped in-lane on "
+        "the westbound side of [XXX], causing east bound vehicles to cross into the eastbound lane to proceed. "
+        "As the Waymo AV passed to the left of the eastbound stationary vehicle, an SUV traveling westbound "
+        "passed the stationary westbound vehicle and approached the Waymo AV and the Waymo AV came to a stop to "
+        "yield to the oncoming SUV. While the Waymo AV remained stopped, the SUV proceeded forward and the front "
+        "of the SUV made contact with the front of the Waymo AV. The Waymo AV then reversed and the SUV "
+        "proceeded forward to make contact with the front of the Waymo AV a second time. After the Waymo AV "
+        "finished reversing and stopped to the right side of the street, the SUV proceeded forward directly "
+        "towards the Waymo AV's eastbound lane, and the front of the SUV made contact with the front of the "
+        "Waymo AV a third time. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        "mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
+        "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
+        "may become available."),
 }
 
 
@@ -307,3 +325,11 @@ def test_an_opening_clause_of_standing_still_tells_of_the_av_when_the_narrative_
     assert _ego("nhtsa-sgo-ads-30413-7880-v1") == ("stopped", "")
     sk = extract(_SGO["nhtsa-sgo-ads-30413-7880-v1"][1], "nhtsa-sgo-ads-30413-7880-v1")
     assert (sk.npcs[0].start, sk.npcs[0].actions) == ("moving", "a")
+
+
+def test_a_contact_a_third_time_is_a_repeat_after_the_conflict() -> None:
+    # "... the front of the SUV made contact with the front of the Waymo AV. The Waymo AV then reversed and the SUV
+    # proceeded forward to make contact with the front of the Waymo AV a second time. ... the front of the SUV made
+    # contact with the front of the Waymo AV a third time": the conflict ends at the first contact (sketch.md), so
+    # the AV's reversing after it is no part of its string.
+    assert "k" not in _ego("nhtsa-sgo-ads-30270-10756-v1")[1]

@@ -192,7 +192,7 @@ def find_contact(d: Doc) -> None:
                   if m.kind == "party" and m.entity >= 0 and j not in d.summary and not d.ents[m.entity].parked]
         if recent:
             chosen = (chosen[0], chosen[1], recent[-1])
-    if fre.search(r"\b(?:again|a\s+second\s+time|once\s+more)\b", d.sents[chosen[0]][chosen[1]:], re.I):
+    if fre.search(r"\b(?:again|a\s+(?:second|third|fourth)\s+time|once\s+more)\b", d.sents[chosen[0]][chosen[1]:], re.I):
         # "... and struck the AV again": the story's conflict ends at the first contact (sketch.md: strings end at
         # the contact), not at the repeat.
         chosen = next(c for c in (detailed or candidates) if c[2] == chosen[2] or c[2] is None)
