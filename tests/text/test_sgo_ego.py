@@ -209,6 +209,17 @@ _SGO: dict[str, tuple[str, str]] = {
         "mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing "
         "General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it "
         "may become available."),
+    'nhtsa-sgo-ads-30270-10674-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10674, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On May [XXX], 2025 at 11:36 AM MT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix, Arizona "
+        "was in a collision involving a wheel and tire on [XXX] near [XXX]. The Waymo AV was traveling "
+        "northbound on [XXX] in the middle lane when the left front wheel from an SUV traveling in the right "
+        "most lane of [XXX] separated from the SUV and rolled into the Waymo AV's lane of travel. The front "
+        "driver side of the Waymo AV made contact with the wheel and tire. At the time of the impact, the Waymo "
+        "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
+        "crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. "
+        "Waymo may supplement or correct its reporting with additional information as it may become available."),
 }
 
 
@@ -333,3 +344,10 @@ def test_a_contact_a_third_time_is_a_repeat_after_the_conflict() -> None:
     # contact with the front of the Waymo AV a third time": the conflict ends at the first contact (sketch.md), so
     # the AV's reversing after it is no part of its string.
     assert "k" not in _ego("nhtsa-sgo-ads-30270-10756-v1")[1]
+
+
+def test_a_move_into_the_avs_own_lane_is_not_the_avs() -> None:
+    # "The Waymo AV was traveling northbound ... in the middle lane when the left front wheel from an SUV traveling in
+    # the right most lane ... separated from the SUV and rolled into the Waymo AV's lane of travel": the AV does not
+    # move into its own lane; it kept to it (`a`, not `af`).
+    assert _ego("nhtsa-sgo-ads-30270-10674-v1") == ("moving", "a")

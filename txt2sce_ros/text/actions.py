@@ -354,6 +354,8 @@ _AT_CONTACT = compile_gated(r"\s+(?:\w+\s+)?(?:just|immediately|moments?|right|a
 _IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
                           r"at\s+(?:a|the)\s+(?:red\s+)?(?:light|signal|stop\s+sign)|"
                           r"behind\b)", re.I)
+# A manoeuvre whose words name the AV as its goal ("into EGO's lane", "the lane occupied by EGO").
+_NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\blane\s+(?:occupied\s+by|of)\s+EGO\b")
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
@@ -653,6 +655,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # a relative clause tells of the noun before it, one the AV's clause took as its object, not of the AV
         if who is None:
             continue
+        if who == -1 and _NAMES_EGO.search(s[b:e]):
+            continue  # "the left front wheel from an SUV ... rolled into EGO's lane of travel": the AV does not move
+            # into its own lane; the doer is something the story does not name as a party here
         subj = [m for m in ments if m.subject and m.end <= b]
         if subj and subj[-1].kind == "group" and s[subj[-1].start:subj[-1].end].lower().startswith("both") and \
                 code in "abcdefghikF" and who >= 0:
