@@ -220,6 +220,21 @@ _SGO: dict[str, tuple[str, str]] = {
         "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
         "crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. "
         "Waymo may supplement or correct its reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-10640-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10640, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 12:47 PM MST a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix, "
+        "Arizona was in a collision involving an SUV in the West Parking Lot off of [XXX] at the [XXX]. The "
+        "Waymo AV was parked facing south in a parking stall in the West Parking Lot off of [XXX}. The Waymo AV "
+        "proceeded to reverse to exit the parking stall, and came to a stop to yield to an SUV that was stopped "
+        "in-lane facing east to the left of the Waymo AV, at an intersection within the parking lot. As the "
+        "Waymo AV was preparing to maneuver around the SUV, a second Waymo AV approached both vehicles from the "
+        "south in the north-south travel lane of the parking lot and came to a stop in front of the SUV. The SUV "
+        "reversed and the rear passenger side of the SUV made contact with the driver side of the Waymo AV. At "
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
+        "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with "
+        "additional information as it may become available."),
 }
 
 
@@ -351,3 +366,10 @@ def test_a_move_into_the_avs_own_lane_is_not_the_avs() -> None:
     # the right most lane ... separated from the SUV and rolled into the Waymo AV's lane of travel": the AV does not
     # move into its own lane; it kept to it (`a`, not `af`).
     assert _ego("nhtsa-sgo-ads-30270-10674-v1") == ("moving", "a")
+
+
+def test_reversing_to_exit_a_space_is_the_backing_out() -> None:
+    # "The Waymo AV was parked facing south in a parking stall ... The Waymo AV proceeded to reverse to exit the
+    # parking stall, and came to a stop to yield to an SUV": out of the stall in reverse is the backing itself, then
+    # the stop (`kh`), not a pull-out forward into a lane (`if`).
+    assert _ego("nhtsa-sgo-ads-30270-10640-v1") == ("stopped", "kh")

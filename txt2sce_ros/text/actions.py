@@ -713,10 +713,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
     dedup: list[Act] = []
     for k, a in enumerate(out):
         nxt = out[k + 1] if k + 1 < len(out) else None
-        if a.code == "l" and dedup and dedup[-1].code == "k" and dedup[-1].who == a.who and \
+        if a.code in "lO" and dedup and dedup[-1].code == "k" and dedup[-1].who == a.who and \
                 fre.fullmatch(r"\s*(?:to\s+|in\s+order\s+to\s+)?", s[dedup[-1].pos + len(dedup[-1].text):a.pos]):
             # "reversing into a parking space", "began to reverse to parallel park": where (or why) the backing
-            # was headed; the string ends at the contact
+            # was headed; the string ends at the contact. "proceeded to reverse to exit the parking stall": out of
+            # the space in reverse is the backing itself (as "left the space in reverse" is, PHRASES "O")
             continue
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
