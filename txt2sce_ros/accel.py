@@ -26,9 +26,11 @@ import sys
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
-#: The modules compiled: where a run spends its CPU (the per-step code of player, planner and oracle).
+#: The modules compiled: where a run spends its CPU (the per-step code of player, planner and oracle), what a
+#: recorded run adds (message building, serialisation, MCAP writing; and reading it back to judge), and the
+#: extractor's per-sentence reading.
 MODULES: tuple[str, ...] = (
-    "txt2sce_ros.closed_loop",
+    "txt2sce_ros.closed_loop", "txt2sce_ros.ros_io",
     "scenario_player.simulation",
     "scenario_player.world.collision", "scenario_player.world.entity", "scenario_player.world.kinematics",
     "scenario_player.world.lanes", "scenario_player.world.measure", "scenario_player.world.motion",
@@ -39,6 +41,11 @@ MODULES: tuple[str, ...] = (
     "standin_planner.pure_pursuit", "standin_planner.idm", "standin_planner.perception",
     "oracle_monitor.oracle", "oracle_monitor.safety", "oracle_monitor.smartness", "oracle_monitor.smoothness",
     "oracle_monitor.unavoidable", "oracle_monitor.geometry", "oracle_monitor.egopath", "oracle_monitor.signals",
+    "oracle_monitor.runwriter", "oracle_monitor.recorder", "oracle_monitor.cdr", "oracle_monitor.steprecords",
+    "oracle_monitor.messages", "oracle_monitor.bagread", "oracle_monitor.judge",
+    "txt2sce_ros.text.fastre", "txt2sce_ros.text.mentions", "txt2sce_ros.text.extractor", "txt2sce_ros.text.actions",
+    "txt2sce_ros.text.story", "txt2sce_ros.text.spans", "txt2sce_ros.text.relations", "txt2sce_ros.text.scene",
+    "txt2sce_ros.text.sequences", "txt2sce_ros.text.positions", "txt2sce_ros.text.lexicon",
 )
 
 #: Cython's settings. Annotations are not types to it here (the source's hints are for readers and mypy, and a
@@ -51,6 +58,8 @@ BUILD_TAG = "accel-1"
 
 ENV_SWITCH = "TXT2SCE_ACCEL"            # "0" / "off": always the plain source
 ENV_DIR = "TXT2SCE_ACCEL_DIR"
+#: Where the compiler's output is kept when a build leaves something out or fails.
+_KEPT_LOG = Path(os.environ.get("TMPDIR") or "/tmp") / "txt2sce_accel_build.log"
 
 
 def cache_dir() -> Path:
@@ -145,12 +154,15 @@ def describe() -> str:
 
 
 def _package_dirs(modules: Sequence[str]) -> dict[str, Path]:
-    """The top-level packages of `modules` and their directories (found without importing them)."""
+    """The top-level packages of `modules` and their directories (found as `import` finds them, including an
+    editable install's finder, without running them)."""
+    import importlib.util
+
     out = {}
     for top in sorted({m.split(".")[0] for m in modules}):
-        spec = importlib.machinery.PathFinder.find_spec(top)
+        spec = importlib.util.find_spec(top)
         if spec is None or not spec.submodule_search_locations:
-            raise ImportError(f"package {top} not found on sys.path")
+            raise RuntimeError(f"package {top} cannot be found by import here")
         out[top] = Path(list(spec.submodule_search_locations)[0])
     return out
 
@@ -173,7 +185,8 @@ def status(modules: Sequence[str] = MODULES, root: Path | None = None) -> dict[s
 
 def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: int = 2,
           log: Path | None = None, note: Callable[[str], None] = lambda _: None) -> dict[str, str]:
-    """Compile every module of `modules` whose source has no build yet; returns module -> 'built' / 'up to date'.
+    """Compile every module of `modules` whose source has no build yet; returns module -> 'built' / 'up to date' /
+    'not compilable ...' (a construct Cython does not take: that module runs from source; the others are built).
 
     Raises RuntimeError (one line, the log's path in it) when Cython or the compiler is missing or fails: nothing is
     half-installed then (a build is moved into the cache only once it is complete)."""
@@ -209,7 +222,19 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
             exts.append(Extension(name, [str(copy)], extra_compile_args=list(CFLAGS)))
         note(f"compiling {len(exts)} modules with Cython ({jobs} jobs); log: {log}")
         with _output_to(log):
-            exts = cythonize(exts, compiler_directives=DIRECTIVES, quiet=True, force=True, nthreads=jobs)
+            # A module Cython cannot compile (a construct it does not support) is left out and runs from source.
+            exts = cythonize(exts, compiler_directives=DIRECTIVES, quiet=True, force=True, nthreads=jobs,
+                             exclude_failures=True)
+        left_out = sorted(set(data) - {e.name for e in exts})
+        for name in left_out:
+            result[name] = f"not compilable (runs from source; Cython's reasons: {_KEPT_LOG})"
+            del data[name]
+        if left_out:
+            shutil.copyfile(log, _KEPT_LOG)
+            note(f"Cython could not compile {', '.join(left_out)}: they run from source ({_KEPT_LOG})")
+        if not exts:
+            return result
+        with _output_to(log):
             dist = Distribution({"ext_modules": exts, "script_name": "txt2sce-accel",
                                  "script_args": ["build_ext", "--build-lib", str(work / "lib"),
                                                  "--build-temp", str(work / "tmp"), "-j", str(jobs)]})
@@ -224,11 +249,10 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
             os.replace(part, dest)
             result[name] = "built"
     except (Exception, SystemExit) as exc:      # distutils reports a failed compile as SystemExit
-        kept = Path(tempfile.gettempdir()) / "txt2sce_accel_build.log"
-        if log.exists() and log != kept:
-            shutil.copyfile(log, kept)
+        if log.exists() and log != _KEPT_LOG:
+            shutil.copyfile(log, _KEPT_LOG)
         raise RuntimeError(f"the compiled build failed ({type(exc).__name__}: {exc}); the plain source is used; "
-                           f"compiler output: {kept}") from None
+                           f"compiler output: {_KEPT_LOG}") from None
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return result
