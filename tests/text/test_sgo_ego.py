@@ -235,6 +235,22 @@ _SGO: dict[str, tuple[str, str]] = {
         "sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 "
         "because a vehicle involved was towed away. Waymo may supplement or correct its reporting with "
         "additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-7724-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-7724, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2024 at 8:35 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, "
+        "California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling "
+        "southbound on [XXX] when it approached a stopped pickup truck with a vehicle-mounted arrow board with "
+        "an arrow pointing to the right illuminated. The pickup truck was stopped in the leftmost lane, which is "
+        "the only general-purpose travel lane. The Waymo AV began changing lanes into the right lane, which is a "
+        "dedicated bus lane, to pass the stopped pickup truck. The pickup truck then began proceeding straight "
+        "while the Waymo AV was behind the pickup truck, and the Waymo AV started to return to the left lane "
+        "behind the pickup truck. The pickup truck came to a stop, and the Waymo AV also came to a stop. The "
+        "pickup truck then began reversing, and the rear of the pickup truck made contact with the front driver "
+        "side bumper of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in "
+        "autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of "
+        "Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
 }
 
 
@@ -373,3 +389,10 @@ def test_reversing_to_exit_a_space_is_the_backing_out() -> None:
     # parking stall, and came to a stop to yield to an SUV": out of the stall in reverse is the backing itself, then
     # the stop (`kh`), not a pull-out forward into a lane (`if`).
     assert _ego("nhtsa-sgo-ads-30270-10640-v1") == ("stopped", "kh")
+
+
+def test_returning_to_the_left_lane_is_a_lane_change_to_the_left() -> None:
+    # "The Waymo AV began changing lanes into the right lane, which is a dedicated bus lane ... and the Waymo AV
+    # started to return to the left lane behind the pickup truck. The pickup truck came to a stop, and the Waymo AV
+    # also came to a stop": out to the right, back to the left, then the stop (`agfh`).
+    assert _ego("nhtsa-sgo-ads-30270-7724-v1") == ("moving", "agfh")

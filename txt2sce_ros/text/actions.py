@@ -112,6 +112,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           # "changed lanes to the right and then back to the left": the return told without its verb
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+left\b|"
+          # "started to return to the left lane behind the pickup truck": back into the lane it had left
+          r"\breturn(?:ed|ing|s)?\s+(?:back\s+)?(?:to|into)\s+the\s+left(?:most)?\s+lane\b|"
           # "merged into the lane to its left", "moved one lane to the left": the side said of the lane
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
@@ -142,6 +144,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
           r"(?<=\s)into\s+the\s+(?:adjacent\s+)?right\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+right\b|"
+          r"\breturn(?:ed|ing|s)?\s+(?:back\s+)?(?:to|into)\s+the\s+right(?:most)?\s+lane\b|"
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
