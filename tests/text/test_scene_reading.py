@@ -41,24 +41,24 @@ CONFLICT_HELD = {"dev_gold": 50, "dev_gold_study": 65, "dev_gold_check": 15}
 #: scored only. Both sets' gold is one annotator's.
 CSVR = Path(__file__).parent / "csvr"
 HELD_CSVR = {
-    "study2": {"npc_quantity": 0.99, "npc_position": 0.90, "npc_events": 0.91, "layout": 0.88, "ego_actions": 0.93,
-               "ego_start": 0.96, "signal_state": 0.87},
+    "study2": {"npc_quantity": 0.99, "npc_position": 0.90, "npc_events": 0.91, "layout": 0.92, "ego_actions": 0.93,
+               "ego_start": 0.96, "signal_state": 0.93},
     # (check2 position 0.80 -> 0.79, conflict 55 -> 54 in session 15: one party moved by a rule its studyable gold
     # holds 7 of 7 - a party parallel parking ahead of or behind the AV is in its lane; check2 was not inspected)
-    "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.77, "layout": 0.86, "ego_actions": 0.79},
+    "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.77, "layout": 0.87, "ego_actions": 0.80},
 }
-CONFLICT_HELD_CSVR = {"study2": 75, "check2": 54}
+CONFLICT_HELD_CSVR = {"study2": 78, "check2": 54}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is
 #: scored only; one annotator's gold each (check3's first 44 labelled twice and adjudicated).
 SGO = Path(__file__).parent / "sgo"
 HELD_SGO = {
-    "study3": {"npc_quantity": 0.92, "npc_position": 0.71, "npc_events": 0.70, "layout": 0.92, "ego_actions": 0.75,
-               "ego_start": 0.91, "signal_state": 0.95},
+    "study3": {"npc_quantity": 0.92, "npc_position": 0.71, "npc_events": 0.70, "layout": 0.95, "ego_actions": 0.81,
+               "ego_start": 0.93, "signal_state": 0.96},
     # (check3 position 0.65 -> 0.64, events 0.63 -> 0.62 in session 15: one party moved by a rule its studyable gold
     # holds 8 of 8 - a party stopped behind the AV that passes it began in the AV's lane; check3 was not inspected)
-    "check3": {"npc_quantity": 0.88, "npc_position": 0.64, "npc_events": 0.62, "layout": 0.87, "ego_actions": 0.72},
+    "check3": {"npc_quantity": 0.88, "npc_position": 0.64, "npc_events": 0.62, "layout": 0.89, "ego_actions": 0.72},
 }
-CONFLICT_HELD_SGO = {"study3": 59, "check3": 37}
+CONFLICT_HELD_SGO = {"study3": 64, "check3": 39}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()}
 
