@@ -251,6 +251,19 @@ _SGO: dict[str, tuple[str, str]] = {
         "autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of "
         "Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
         "information as it may become available."),
+    'nhtsa-sgo-ads-30270-8121-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-8121, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On June [XXX], 2024 at 10:52 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California "
+        "was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling northeast on "
+        "[XXX] in the center lane of three lanes when it activated its left turn signal. Simultaneously, a "
+        "passenger car that was traveling behind the Waymo AV at a high rate of speed began to change lanes from "
+        "the rightmost lane to the leftmost lane. As the Waymo AV entered the leftmost lane, the passenger car "
+        "passed the Waymo AV in the leftmost lane of southwestbound [XXX]. The passenger side of the passenger "
+        "car then made contact with the driver side of the Waymo AV. At the time of the impact, the Waymo AVs "
+        "Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage and the passenger car left "
+        "the scene. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo "
+        "may supplement or correct its reporting with additional information as it may become available."),
 }
 
 
@@ -396,3 +409,10 @@ def test_returning_to_the_left_lane_is_a_lane_change_to_the_left() -> None:
     # started to return to the left lane behind the pickup truck. The pickup truck came to a stop, and the Waymo AV
     # also came to a stop": out to the right, back to the left, then the stop (`agfh`).
     assert _ego("nhtsa-sgo-ads-30270-7724-v1") == ("moving", "agfh")
+
+
+def test_entering_the_leftmost_lane_is_a_lane_change_to_the_left() -> None:
+    # "The Waymo AV was traveling northeast on [XXX] in the center lane of three lanes when it activated its left turn
+    # signal. ... As the Waymo AV entered the leftmost lane, the passenger car passed the Waymo AV": its run, then
+    # the move left (`af`).
+    assert _ego("nhtsa-sgo-ads-30270-8121-v1") == ("moving", "af")

@@ -124,7 +124,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|"
           r"manoeuvred|swerved|swerves|drove|drives|swung|swings|swinging|pulled|pulling|went|going)\s+"
           r"(?:out\s+|over\s+|wide\s+)?(?:into\s+)?the\s+(?:oncoming|"
-          r"opposing|opposite)\s+(?:\w+\s+)?lane|\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:\s+adjacent)?\s+"
+          # ("entered the leftmost lane": a lane reached only by a move to the left; the rightmost lane is also
+          # entered from the curb, a move left, so it is not read so; "re-enter" is the return, read below)
+          r"opposing|opposite)\s+(?:\w+\s+)?lane|(?<!-)\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:most)?(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
           r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|"
