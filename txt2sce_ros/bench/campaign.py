@@ -116,6 +116,28 @@ def _plain_cpu_per_run(files: list[str]) -> float | None:
     return float(done.stdout.strip().splitlines()[-1])
 
 
+def _plain_profile(files: list[str]) -> dict[str, list[tuple[str, float, int]]]:
+    """`_profile` of the plain source: here when nothing is compiled, else in a process with the build switched
+    off."""
+    import subprocess
+    import sys
+
+    from txt2sce_ros import accel
+
+    if accel.switched_off() or "built" not in accel.status().values():
+        return _profile(files, None)
+    # (the first file once before: imports and first-use caches are not what a campaign's runs spend)
+    code = ("import json, sys; from txt2sce_ros.bench.campaign import _profile; "
+            "from txt2sce_ros.closed_loop import run_closed_loop; run_closed_loop(sys.argv[1]); "
+            "print(json.dumps(_profile(sys.argv[1:], None)))")
+    done = subprocess.run([sys.executable, "-c", code, *files], capture_output=True, text=True,
+                          env={**os.environ, accel.ENV_SWITCH: "0"})
+    if done.returncode != 0:
+        print(f"  (profile failed: {done.stderr.strip().splitlines()[-1:]})")
+        return {}
+    return {pkg: [tuple(r) for r in rows] for pkg, rows in json.loads(done.stdout.strip().splitlines()[-1]).items()}
+
+
 def run(args: argparse.Namespace) -> int:
     from txt2sce_ros.campaign.pipeline import CampaignConfig, seed_stage
     from txt2sce_ros.campaign.reporting import report_from_store
@@ -211,10 +233,12 @@ def run(args: argparse.Namespace) -> int:
               f"in-process serial on the same: {serial_rate:.2f} scenarios/s; "
               f"same verdict and categories in {agree}/{len(ros_sample)}")
 
-        # Where a run's time goes.
+        # Where a run's time goes. cProfile sees no function of a compiled module: the profile runs the plain
+        # source (in a process of its own when this one runs compiled code).
         prof_files = [t.scenario_path for t in sample[:prof_n]]
-        print(f"\nprofile: cProfile own time over {len(prof_files)} in-process runs, top functions per package")
-        for pkg, rows in _profile(prof_files, None).items():
+        print(f"\nprofile: cProfile own time over {len(prof_files)} in-process runs from the plain source, top "
+              f"functions per package")
+        for pkg, rows in _plain_profile(prof_files).items():
             print(f"  {pkg}")
             for name, tottime, ncalls in rows:
                 print(f"    {tottime:6.2f} s  {ncalls:>8} calls  {name}")
