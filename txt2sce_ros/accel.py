@@ -248,6 +248,7 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
             shutil.copyfile(built, part)
             os.replace(part, dest)
             result[name] = "built"
+            _prune(dest.parent.parent)
     except (Exception, SystemExit) as exc:      # distutils reports a failed compile as SystemExit
         if log.exists() and log != _KEPT_LOG:
             shutil.copyfile(log, _KEPT_LOG)
@@ -256,6 +257,19 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return result
+
+
+#: Builds kept per module (one per version of its source; ~1 MB each): enough for a few checkouts side by side.
+KEEP_BUILDS = 4
+
+
+def _prune(module_dir: Path) -> None:
+    """Remove all but the `KEEP_BUILDS` newest builds of one module (older versions of its source)."""
+    import shutil
+
+    builds = sorted((d for d in module_dir.iterdir() if d.is_dir()), key=lambda d: d.stat().st_mtime, reverse=True)
+    for old in builds[KEEP_BUILDS:]:
+        shutil.rmtree(old, ignore_errors=True)
 
 
 class _output_to:

@@ -93,6 +93,17 @@ def test_a_build_is_used_only_for_the_bytes_it_was_built_from(tmp_path: Path) ->
     mod.write_text("def f(x):\n    return 0.1 * x + 0.3\n")     # edited after the build: the source runs
     where, value = load()
     assert where == str(mod) and value == repr(0.1 * 3.0 + 0.3)
+    # building each new version keeps only the newest few builds of the module
+    sys.path.insert(0, str(tmp_path / "src"))
+    try:
+        for k in range(accel.KEEP_BUILDS + 1):
+            mod.write_text(f"def f(x):\n    return 0.1 * x + {k}\n")
+            assert accel.build(["accel_probe.calc"], cache, jobs=1) == {"accel_probe.calc": "built"}
+    finally:
+        sys.path.remove(str(tmp_path / "src"))
+    kept = list((cache / sys.implementation.cache_tag / "accel_probe.calc").iterdir())
+    assert len(kept) == accel.KEEP_BUILDS
+    assert accel.artifact("accel_probe.calc", mod.read_bytes(), cache).parent in kept
 
 
 def test_switched_off_loads_nothing_compiled() -> None:
