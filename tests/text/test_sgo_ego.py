@@ -264,6 +264,17 @@ _SGO: dict[str, tuple[str, str]] = {
         "Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage and the passenger car left "
         "the scene. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo "
         "may supplement or correct its reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-10685-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID "
+        "30270-10685, version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On April [XXX], 2025 at 10:25 AM PT a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Los Angeles, "
+        "California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was traveling "
+        "southeastbound on [XXX] and came to a stop in a queue of traffic for a red light at the intersection at "
+        "[XXX]. An SUV traveling southeastbound on [XXX] approached the Waymo AV from behind, and the front of "
+        "the SUV made contact with the rear of the stationary Waymo AV. At the time of the impact, the Waymo "
+        "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
+        "crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its "
+        "reporting with additional information as it may become available."),
 }
 
 
@@ -416,3 +427,11 @@ def test_entering_the_leftmost_lane_is_a_lane_change_to_the_left() -> None:
     # signal. ... As the Waymo AV entered the leftmost lane, the passenger car passed the Waymo AV": its run, then
     # the move left (`af`).
     assert _ego("nhtsa-sgo-ads-30270-8121-v1") == ("moving", "af")
+
+
+def test_a_stop_in_a_queue_is_where_the_av_stood() -> None:
+    # "The Waymo AV was traveling southeastbound on [XXX] and came to a stop in a queue of traffic for a red light
+    # ... An SUV traveling southeastbound on [XXX] approached the Waymo AV from behind, and the front of the SUV made
+    # contact with the rear of the stationary Waymo AV": the stop names the queue the AV then stood in (5 of 5
+    # studyable reports with the AV stopping "in a queue" are gold `stopped`), not a stop made as the SUV came.
+    assert _ego("nhtsa-sgo-ads-30270-10685-v1") == ("stopped", "")

@@ -361,6 +361,8 @@ _IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
                           r"behind\b)", re.I)
 # A manoeuvre whose words name the AV as its goal ("into EGO's lane", "the lane occupied by EGO").
 _NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\blane\s+(?:occupied\s+by|of)\s+EGO\b")
+# A stop told with the queue it ended in ("came to a stop in a queue of traffic", "stopped in a line of cars").
+_IN_QUEUE = compile_gated(r"\s+in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)
@@ -690,6 +692,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "h" and who == -1 and s[b:e].lower() == "stopped" and fre.search(r",\s*$", before) and \
                 _IN_PLACE.match(s[e:]):
             code = "S"  # "EGO was in the right lane, stopped in traffic behind a bus": where it stood
+        elif code == "h" and who == -1 and _IN_QUEUE.match(s, e):
+            # "was traveling southeastbound on [XXX] and came to a stop in a queue of traffic for a red light": the
+            # stop names where the AV then stood, in the queue, as "was stopped in traffic" does (5 of 5 studyable
+            # reports with the AV stopping "in a queue" are gold `stopped`; "for a queue" is a stop made, `ah`)
+            code = "S"
         if code in "hS" and who == -1 and fre.search(r"\bafter\s+(?:having\s+|(?:it|EGO)\s+had\s+)?$", before, re.I):
             code = "S"  # "was proceeding through the intersection after stopping": it had stood (sequences)
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
