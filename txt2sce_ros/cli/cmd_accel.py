@@ -35,9 +35,7 @@ def run(args: argparse.Namespace) -> int:
             return 1
         built = sum(1 for v in done.values() if v == "built")
         fresh = sum(1 for v in done.values() if v == "up to date")
-        left = {m: v for m, v in done.items() if v not in ("built", "up to date")}
-        for m, v in left.items():
-            print(f"[accel] {m}: {v}", file=sys.stderr)
+        left = {m: v for m, v in done.items() if v not in ("built", "up to date")}     # named by build's note
         print(f"[accel] {built} built, {fresh} up to date, {len(left)} left to the source, in {where}")
         return 0
     if args.accel_command == "status":

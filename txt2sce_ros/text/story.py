@@ -459,7 +459,7 @@ def context(d: Doc, e: Entity) -> str:
             continue
         s = d.sents[m.sent]
         nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x)]
-        end = min([m.end + 110, *nxt]) if nxt else m.end + 110
+        end = min(nxt + [m.end + 110]) if nxt else m.end + 110
         parts.append(f"{m.mods} {m.head} {s[m.end:end]}")
     return " | ".join(parts)
 
@@ -498,11 +498,11 @@ def _heading(d: Doc, who: int) -> int | None:
                 nxt = [x.start for x in d.ments[i] if x.start > m.end and x.kind == "party" and x.entity != who]
                 # (up to the next party named; 200 characters hold an aside: "EGO, in autonomous mode, had stopped
                 # at a stop sign on Cabrillo Street and, when the intersection was clear, began to proceed westbound")
-                window = s[m.end:min([m.end + 200, *nxt])]
+                window = s[m.end:min(nxt + [m.end + 200])]
                 approach = fre.search(r"\bfrom\s+((?:north|south|east|west)+)bound\b", window, re.I)
                 if who == -1:
                     # "after completing a right turn ... onto westbound Haight": the heading it turned to
-                    told = s[m.end:min([m.end + 200, *nxt])]
+                    told = s[m.end:min(nxt + [m.end + 200])]
                     done = PRIOR_TURN.search(told)
                     to = done and fre.match(r"\s*(?:the\s+)?((?:north|south|east|west)+bound)\b", told[done.end():],
                                             re.I)
