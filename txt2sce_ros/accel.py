@@ -122,7 +122,9 @@ class CompiledFinder:
             return None                                 # not built from these bytes: the plain source loads
         loader = importlib.machinery.ExtensionFileLoader(fullname, str(so))
         self.loaded[fullname] = str(so)
-        return importlib.machinery.ModuleSpec(fullname, loader, origin=str(so))
+        spec = importlib.machinery.ModuleSpec(fullname, loader, origin=str(so))
+        spec.has_location = True                        # so the module's __file__ names the build
+        return spec
 
 
 _finder: CompiledFinder | None = None

@@ -97,45 +97,54 @@ for f in sys.argv[1:]:
 print((time.process_time() - t0) / (len(sys.argv) - 1))
 """
 
+# (the first file once before: imports and first-use caches are not what a campaign's runs spend)
+_PLAIN_PROFILE = """
+import json, sys
+from txt2sce_ros.bench.campaign import _profile
+from txt2sce_ros.closed_loop import run_closed_loop
+run_closed_loop(sys.argv[1])
+print(json.dumps(_profile(sys.argv[1:], None)))
+"""
 
-def _plain_cpu_per_run(files: list[str]) -> float | None:
-    """CPU seconds a run of `files` costs from the plain source (compiled build switched off), in a fresh process;
-    None when there is nothing to compare (no compiled build here, or it is switched off already)."""
+
+def _compiled_here() -> bool:
+    from txt2sce_ros import accel
+
+    return not accel.switched_off() and "built" in accel.status().values()
+
+
+def _in_plain_process(code: str, files: list[str], what: str) -> str | None:
+    """The last line `code` prints, run over `files` in a process with the compiled build switched off (None, and a
+    note, when it fails)."""
     import subprocess
     import sys
 
     from txt2sce_ros import accel
 
-    if not files or accel.switched_off() or "built" not in accel.status().values():
+    done = subprocess.run([sys.executable, "-c", code, *files], capture_output=True, text=True,
+                          env={**os.environ, accel.ENV_SWITCH: "0"})
+    if done.returncode != 0 or not done.stdout.strip():
+        print(f"  ({what} failed: {done.stderr.strip().splitlines()[-1:]})")
         return None
-    env = {**os.environ, accel.ENV_SWITCH: "0"}
-    done = subprocess.run([sys.executable, "-c", _PLAIN_RUNS, *files], capture_output=True, text=True, env=env)
-    if done.returncode != 0:
-        print(f"  (plain-source baseline failed: {done.stderr.strip().splitlines()[-1:]})")
+    return done.stdout.strip().splitlines()[-1]
+
+
+def _plain_cpu_per_run(files: list[str]) -> float | None:
+    """CPU seconds a run of `files` costs from the plain source, in a fresh process; None when there is nothing to
+    compare (no compiled build here, or it is switched off already)."""
+    if not files or not _compiled_here():
         return None
-    return float(done.stdout.strip().splitlines()[-1])
+    out = _in_plain_process(_PLAIN_RUNS, files, "plain-source baseline")
+    return None if out is None else float(out)
 
 
 def _plain_profile(files: list[str]) -> dict[str, list[tuple[str, float, int]]]:
     """`_profile` of the plain source: here when nothing is compiled, else in a process with the build switched
-    off."""
-    import subprocess
-    import sys
-
-    from txt2sce_ros import accel
-
-    if accel.switched_off() or "built" not in accel.status().values():
+    off (cProfile sees no function of a compiled module)."""
+    if not _compiled_here():
         return _profile(files, None)
-    # (the first file once before: imports and first-use caches are not what a campaign's runs spend)
-    code = ("import json, sys; from txt2sce_ros.bench.campaign import _profile; "
-            "from txt2sce_ros.closed_loop import run_closed_loop; run_closed_loop(sys.argv[1]); "
-            "print(json.dumps(_profile(sys.argv[1:], None)))")
-    done = subprocess.run([sys.executable, "-c", code, *files], capture_output=True, text=True,
-                          env={**os.environ, accel.ENV_SWITCH: "0"})
-    if done.returncode != 0:
-        print(f"  (profile failed: {done.stderr.strip().splitlines()[-1:]})")
-        return {}
-    return {pkg: [tuple(r) for r in rows] for pkg, rows in json.loads(done.stdout.strip().splitlines()[-1]).items()}
+    out = _in_plain_process(_PLAIN_PROFILE, files, "profile")
+    return {} if out is None else {pkg: [tuple(r) for r in rows] for pkg, rows in json.loads(out).items()}
 
 
 def run(args: argparse.Namespace) -> int:
