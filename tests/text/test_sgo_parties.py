@@ -391,6 +391,14 @@ def test_numbered_individuals_are_people_on_foot() -> None:
     assert (sk.collision.with_, sk.collision.type) == ("npc1", "pedestrian")
 
 
+def test_a_numbered_group_told_only_in_the_opening_sentence_is_that_many_parties() -> None:
+    # The opening sentence tells the contact ("struck ... by two individuals"), so it reads as a summary; but no later
+    # sentence names the two one by one ("The two individuals fled the scene"): the count is the opening's (gold:
+    # two pedestrians, R5 right, `m` each).
+    sk = extract(_SGO["nhtsa-sgo-ads-30610-3719-v2"][1], "nhtsa-sgo-ads-30610-3719-v2")
+    assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("pedestrian", "R5", "right")] * 2
+
+
 def test_a_party_in_the_adjacent_lane_is_on_the_side_of_the_av_it_touched() -> None:
     # "A passenger car approached the stationary Waymo AV from behind in the adjacent straight lane, and crossed into
     # the lane that the Waymo AV was occupying. The front driver side of the passenger car made contact with the rear

@@ -375,9 +375,13 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             if is_partner or e.idx in d.struck or acted_for(d, e):
                 obstacles.append(e)
     # A numbered group ("two unoccupied vehicles parked") is that many parties, each read alike; in a summary
-    # ("a collision involving two SUVs") it only announces parties the telling names one by one.
+    # ("a collision involving two SUVs") it only announces parties the telling names one by one, unless the telling
+    # names none ("when it was struck on its right front fender by two individuals ... The two individuals fled the
+    # scene": the opening sentence is the only one to tell who took part).
+    told = [x for x in parties + obstacles if x.first.sent not in d.summary]
+
     def times(e: Entity) -> int:
-        return e.count if e.first.sent not in d.summary else 1
+        return e.count if e.first.sent not in d.summary or not told else 1
     return [e for e in parties for _ in range(times(e))], [e for e in obstacles for _ in range(times(e))]
 
 
