@@ -221,6 +221,37 @@ _TEXTS: dict[str, tuple[str, str]] = {
         "AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present in the driver’s seating "
         "position. The Waymo AV sustained minor damage to its rear bumper and trunk, and the SUV sustained minor "
         "damage to its front bumper and hood."),
+    'csvr-waymo-20221108-s197': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 197, column 'Accident Detail Description'), transcribed",
+        "On November 8, 2022 at 9:34 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San "
+        "Francisco, California was in a collision involving a passenger car on 2nd Street at Minna Street. "
+        "The Waymo AV was stopped in traffic on northbound 2nd Street in autonomous mode. A passenger car "
+        "that had been stopped behind the Waymo AV passed on the left side, crossing the double yellow line "
+        "and making contact with the Waymo AV’s rear left sensor housing. The passenger car immediately left "
+        "the scene. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and "
+        "a test driver was present (in the driver’s seating position). The Waymo AV sustained damage."),
+    'dmvca-waymo-20220605-r349': (
+        "github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 349, column"
+        " \"Accident Detail Description\")",
+        "On June 5, 2022 at 10:07 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a passenger vehicle on Bush Street and Gough Street. The "
+        "Waymo AV was stopped in autonomous mode behind stopped traffic facing east on Bush Street. The "
+        "passenger vehicle ahead of the Waymo AV transitioned into reverse and began to accelerate, making "
+        "contact with the front sensor of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS "
+        "was engaged in autonomous mode, and a test driver was present (in the driver’s seating position). "
+        "Both vehicles sustained minor damage."),
+    'csvr-waymo-20240801-s325': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 325, column 'Accident Detail Description'), transcribed",
+        "On August 1, 2024 at 10:05 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Los Angeles, "
+        "California was in a collision involving an SUV on W. Jefferson Boulevard near La Brea Avenue. The "
+        "Waymo AV was stopped in traffic in the leftmost lane of a two-lane section of westbound W. Jefferson "
+        "Boulevard, just before the road widened to include a dedicated left turn lane in lane three. While "
+        "the Waymo AV remained stopped, an SUV approached the Waymo AV from behind and partially entered the "
+        "oncoming lanes of W. Jefferson Boulevard to maneuver around the Waymo AV and proceed into the "
+        "dedicated left turn lane. As the SUV was passing the stopped Waymo AV, the passenger side of the SUV "
+        "made contact with the rear driver side corner of the Waymo AV. At the time of the impact, the Waymo "
+        "AV’s Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage and the SUV left the "
+        "scene."),
 }
 
 
@@ -332,3 +363,14 @@ def test_a_turn_the_av_approached_is_at_the_junction_it_approached() -> None:
     # An SUV following behind the Waymo AV made contact with the rear": the turn ahead is the junction it was
     # approaching (sketch.md), though told before the SUV comes in (1 of 1 studyable report; gold junction4).
     assert _layout("csvr-waymo-20211018-s101") == "junction4"
+
+
+def test_a_queue_at_the_cross_street_the_summary_names_is_at_the_junction() -> None:
+    # "was in a collision involving a passenger car on 2nd Street at Minna Street. The Waymo AV was stopped in traffic
+    # on northbound 2nd Street"; "on Bush Street and Gough Street. The Waymo AV was stopped ... behind stopped
+    # traffic": a queue stands at the junction the summary names (17 of 17 studyable reports with the AV in a queue
+    # and the collision placed at a cross street are gold junction4, 4 of them read straight before the rule).
+    assert _layout("csvr-waymo-20221108-s197") == "junction4"
+    assert _layout("dmvca-waymo-20220605-r349") == "junction4"
+    # "on W. Jefferson Boulevard near La Brea Avenue ... was stopped in traffic": near a cross street is no junction.
+    assert _layout("csvr-waymo-20240801-s325") == "straight"

@@ -192,7 +192,16 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
             return True
         if _TURN_ONTO.search(cleaned) and (i >= first_sent or _ONGOING_TURN.search(cleaned)):
             return True
-    return False
+    return exit_at is None and _queued_at_cross_street(sents, summary)
+
+
+def _queued_at_cross_street(sents: list[str], summary: frozenset[int]) -> bool:
+    """The AV stood in a queue ("was stopped in traffic", "behind stopped traffic", "in a queue of traffic") and the
+    summary places the collision at a cross street ("on 2nd Street at Minna Street", "at Bush Street and Grant
+    Avenue"): a queue stands at the junction ahead, so the interaction is there (the official and study gold read
+    junction4 in all 17 studyable reports told so)."""
+    return any(_AT_CROSS_STREET.search(sents[i]) for i in summary if i < len(sents)) and \
+        any(_QUEUED.search(s) for k, s in enumerate(sents) if k not in summary)
 
 
 _DIR = "(" + "|".join(sorted(CARDINALS, key=len, reverse=True)) + ")"  # a compass heading (its word captured)
@@ -201,6 +210,13 @@ _STREET = (r"((?-i:(?:[A-Z0-9][\w.']*\s+){0,3}?(?:Street|St|Avenue|Ave|Road|Rd|B
 # "southbound on Albion Street", "on northbound [XXX]": a heading told on a named (or redacted) street.
 _HEADING_ON = (compile_gated(rf"\b{_DIR}(?:bound|ward)?\s+on\s+{_STREET}", re.I),
                compile_gated(rf"\bon\s+{_DIR}(?:bound)?\s+{_STREET}", re.I))
+
+# The summary's place of the collision at a cross street ("on [XXX] at [XXX]", "at Bush Street and Grant Avenue");
+# "on X near Y" places it away from the junction.
+_AT_CROSS_STREET = compile_gated(rf"\b(?:on|at)\s+{_STREET}\.?\s+(?:at|and)\s+{_STREET}", re.I)  # "Bush St. and"
+# Standing in a queue of traffic (not a lone stop, not traffic the AV yielded to).
+_QUEUED = compile_gated(r"\bstopped\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
+                        r"\b(?:in|behind)\s+a\s+queue\s+of\s+(?:\w+\s+)?traffic\b", re.I)
 
 
 def _opposite_on_first_road(t: str) -> bool:
