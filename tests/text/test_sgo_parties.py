@@ -280,6 +280,22 @@ _SGO: dict[str, tuple[str, str]] = {
         'was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under '
         'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may'
         ' supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30590-3431-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30590-3431,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Subject vehicle was on a testing mission in Mountain View, CA. The vehicle was traveling North-bound '
+        "on [XXX] operated by the vehicle's Level 4 Automated Driving System and supervised by a safety "
+        "driver in the driver's designated seating position, and with a safety operator in the front "
+        'passenger seating position. Subject vehicle approached a red light to make a right turn East-bound '
+        'onto [XXX]. The safety operator suggested that the safety driver disengage the ADS and make the turn '
+        'in manual mode because the vehicle was hesitant in approaching the intersection. The safety driver '
+        'disengaged the ADS, and, approximately 250ms later, subject vehicle was lightly struck from behind '
+        'by a white Mazda3. Having seen debris on the roadway, the driver and operator believed they had run '
+        'over a rock and did not realize they were hit by the vehicle. After concluding the mission, the '
+        'driver and operator found damage to a sensor during an inspection. A subsequent review of video led '
+        'to discovery of the crash. No injuries were reported, and law enforcement was not called to the '
+        "scene. In addition to telematics and video, we also have photographs of the vehicle's damaged "
+        'sensor.'),
 }
 
 
@@ -458,3 +474,10 @@ def test_an_oncoming_party_crossing_into_the_av_s_lane_travelled_first() -> None
     # (gold R7, left, "af").
     p = _party("nhtsa-sgo-ads-30270-5896-v1")
     assert (p.position, p.lane, p.start, p.actions) == ("R7", "left", "moving", "af")
+
+
+def test_a_make_and_model_digit_written_as_one_word_is_a_car() -> None:
+    # "subject vehicle was lightly struck from behind by a white Mazda3": the party that struck it, behind in its
+    # lane (gold: a car, R6 same, `a`).
+    sk = extract(_SGO["nhtsa-sgo-ads-30590-3431-v1"][1], "nhtsa-sgo-ads-30590-3431-v1")
+    assert [(p.category, p.position, p.lane, p.actions) for p in sk.npcs] == [("car", "R6", "same", "a")]

@@ -120,7 +120,9 @@ MAKES = ("toyota", "honda", "nissan", "ford", "chevrolet", "chevy", "tesla", "le
          "cadillac", "buick", "gmc", "chrysler", "plymouth", "ram", "mini", "fiat", "porsche", "jaguar", "lincoln",
          "mitsubishi", "genesis", "land rover", "range rover", "prius", "corolla", "camry", "civic", "accord",
          "silverado", "elantra", "altima", "sentra", "juke", "grand cherokee", "cherokee", "rav4", "model 3",
-         "model y", "model s", "model x", "f-150", "tacoma", "tundra", "highlander", "matrix", "mustang")
+         "model y", "model s", "model x", "f-150", "tacoma", "tundra", "highlander", "matrix", "mustang",
+         # models named by the make and a digit written as one word ("struck from behind by a white Mazda3")
+         "mazda2", "mazda3", "mazda5", "mazda6")
 
 #: Static objects -> obstacle category.
 OBSTACLE_HEADS: dict[str, str] = {
