@@ -307,6 +307,10 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("began to accelerate -> started accelerating / began to move -> started moving",
             _subs((r"\bbegan to accelerate\b", "started accelerating"), (r"\bbegan to move\b", "started moving"),
                   (r"\bbegan to proceed\b", "started proceeding"))),
+    # Session 15 (issue 13): the AV's standstill told with other verbs of staying put (unattested in the studyable
+    # narratives, so a rule written from them alone missed them).
+    Rewrite("remained stopped -> stayed stopped", _sub(r"\bremained (stopped|stationary)\b", r"stayed \1")),
+    Rewrite("the AV was stopped -> the AV was sitting", _sub(r"\b(AV|vehicle) was stopped\b", r"\1 was sitting")),
 )
 
 

@@ -380,8 +380,8 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
                         r"had|(?:was|were)\s+forced)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
-                         r"\b(?:was|were|is|remained|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"
-                         r"parked|waiting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
+                         r"\b(?:was|were|is|remained|remains|stayed|stays|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"
+                         r"parked|waiting|sitting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
                          r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:in\s+traffic\s+and\s+)?(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state

@@ -215,7 +215,7 @@ _HEADING_ON = (compile_gated(rf"\b{_DIR}(?:bound|ward)?\s+on\s+{_STREET}", re.I)
 # "on X near Y" places it away from the junction.
 _AT_CROSS_STREET = compile_gated(rf"\b(?:on|at)\s+{_STREET}\.?\s+(?:at|and)\s+{_STREET}", re.I)  # "Bush St. and"
 # Standing in a queue of traffic (not a lone stop, not traffic the AV yielded to).
-_QUEUED = compile_gated(r"\bstopped\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
+_QUEUED = compile_gated(r"\b(?:stopped|sitting|waiting)\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
                         r"\b(?:in|behind)\s+a\s+queue\s+of\s+(?:\w+\s+)?traffic\b", re.I)
 
 
