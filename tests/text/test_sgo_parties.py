@@ -296,6 +296,20 @@ _SGO: dict[str, tuple[str, str]] = {
         'to discovery of the crash. No injuries were reported, and law enforcement was not called to the '
         "scene. In addition to telematics and video, we also have photographs of the vehicle's damaged "
         'sensor.'),
+    'nhtsa-sgo-ads-30270-10776-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10776, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 10:38 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a heavy truck on [XXX] near [XXX]. The Waymo AV '
+        'was traveling westbound on [XXX]. The heavy truck traveling eastbound on [XXX] began maneuvering '
+        'left into the path of the Waymo AV and the Waymo AV came to a stop. The truck continued and the '
+        'front driver side of the heavy truck made contact with the front driver side of the Waymo AV. The '
+        'heavy truck then reversed and proceeded eastbound. As the heavy truck passed the stationary Waymo '
+        'AV, it made contact with the driver side of the stationary Waymo AV. At the time of the impact, the '
+        "Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is "
+        'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle '
+        'involved was towed away. Waymo may supplement or correct its reporting with additional information '
+        'as it may become available.'),
 }
 
 
@@ -481,3 +495,11 @@ def test_a_make_and_model_digit_written_as_one_word_is_a_car() -> None:
     # lane (gold: a car, R6 same, `a`).
     sk = extract(_SGO["nhtsa-sgo-ads-30590-3431-v1"][1], "nhtsa-sgo-ads-30590-3431-v1")
     assert [(p.category, p.position, p.lane, p.actions) for p in sk.npcs] == [("car", "R6", "same", "a")]
+
+
+def test_any_verb_of_motion_with_a_side_into_a_place_is_a_lane_change() -> None:
+    # "The heavy truck traveling eastbound ... began maneuvering left into the path of the Waymo AV": oncoming, it
+    # moved left into the AV's lane before the contact (gold: R7 left, `af`), as "moved left into", "merging left
+    # into" and "veered left into" already read.
+    p = _party("nhtsa-sgo-ads-30270-10776-v1")
+    assert (p.position, p.lane, p.actions) == ("R7", "left", "af")

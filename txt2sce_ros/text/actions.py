@@ -128,7 +128,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # entered from the curb, a move left, so it is not read so; "re-enter" is the return, read below)
           r"opposing|opposite)\s+(?:\w+\s+)?lane|(?<!-)\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+left(?:most)?(?:\s+adjacent)?\s+"
           r"lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?left\b|"
-          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
+          # any verb of motion with the side and where it went ("began maneuvering left into the path of EGO",
+          # "veered left into EGO's travel lane"); a turn, a pull into a space or a backing is read by its own words
+          r"\b(?:(?!turn|pull|back|revers)[a-z]+(?:ed|ing)|cut|cutting)\s+left\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+left\b|"
           # Into a left-turn lane is a move to the left ("was entering the leftmost dedicated left turn lane").
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
@@ -154,7 +156,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:adjacent\s+)?right(?:most)?\s+lane\b|"
           r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+){0,2}lane|"  # ("re-entering the far right lane")
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
-          r"\b(?:moved|moving|drifted|drifting|merged|merging|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
+          r"\b(?:(?!turn|pull|back|revers)[a-z]+(?:ed|ing)|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
           r"right[- ]turn\s+(?:lane|pocket|bay)|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
