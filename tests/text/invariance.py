@@ -311,6 +311,7 @@ REWRITES: tuple[Rewrite, ...] = (
     # narratives, so a rule written from them alone missed them).
     Rewrite("remained stopped -> stayed stopped", _sub(r"\bremained (stopped|stationary)\b", r"stayed \1")),
     Rewrite("the AV was stopped -> the AV was sitting", _sub(r"\b(AV|vehicle) was stopped\b", r"\1 was sitting")),
+    Rewrite("', when a' -> ', at which time a'", _sub(r", when (a|an|the) ", r", at which time \1 ")),
 )
 
 

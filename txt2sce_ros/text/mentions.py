@@ -61,6 +61,9 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
      lambda m: m.group(1) if m.group(1) else "adjacent" if m.group(2) else ("intersection" + (
          m.group(4) if m.group(3).lower() == "junction" else ""))
      if m.group(3) else "stop" + {"ed": "ped", "ing": "ping", "s": "s"}.get((m.group(6) or "").lower(), "")),
+    # "came to a stop, at which time a passenger vehicle rear-ended it": the relative "at which time/point" is the
+    # "when" the rules read a clause's subject and its time by
+    (("at which",), False, compile_gated(r"\bat\s+which\s+(?:time|point)\b", re.I), lambda m: "when"),
     # "a pick-up truck ... the pickup truck": one noun, spelled one way (the name a party is followed by)
     (("pick-up",), False, compile_gated(r"\b(pick)-(up)(?=\s+trucks?\b)", re.I), lambda m: m.group(1) + m.group(2)),
     # "turned to the right", "in back of", "nearing the intersection", "came up from the rear", "immediately
