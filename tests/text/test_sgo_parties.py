@@ -310,6 +310,19 @@ _SGO: dict[str, tuple[str, str]] = {
         'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle '
         'involved was towed away. Waymo may supplement or correct its reporting with additional information '
         'as it may become available.'),
+    'nhtsa-sgo-ads-30270-9330-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9330,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 7:47 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los '
+        'Angeles, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was '
+        'stationary in the left turn lane of [XXX] preparing for an unprotected left turn onto southwestbound '
+        '[XXX] when a passenger car traveling southeast in the center lane of South [XXX] entered the '
+        'intersection and departed its lane into the path of left-turning traffic from northwestbound South '
+        '[XXX]. The front driver side of the passenger car then made contact with the front driver side of '
+        "the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
+        'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
 }
 
 
@@ -503,3 +516,11 @@ def test_any_verb_of_motion_with_a_side_into_a_place_is_a_lane_change() -> None:
     # into" and "veered left into" already read.
     p = _party("nhtsa-sgo-ads-30270-10776-v1")
     assert (p.position, p.lane, p.actions) == ("R7", "left", "af")
+
+
+def test_a_party_told_leaving_its_lane_changed_lane() -> None:
+    # "a passenger car traveling southeast in the center lane ... entered the intersection and departed its lane into
+    # the path of left-turning traffic": the opposite approach's car left its lane toward the turning AV (gold: R2,
+    # `af`), as "drifted out of its lane" already read.
+    p = _party("nhtsa-sgo-ads-30270-9330-v1")
+    assert (p.position, p.actions) == ("R2", "af")

@@ -189,6 +189,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # leaving its own lane toward the AV: "failed to stay in its lane", "drifted out of its lane"
           r"\bfail(?:ed|ing|s)?\s+to\s+(?:stay|remain|keep|maintain)\s+(?:in\s+)?(?:its|their|his|her)\s+lane\b|"
           r"\b(?:drift|veer|swerv|wander|stray|mov)(?:ed|ing|es|e|s)?\s+out\s+of\s+(?:its|their|his|her)\s+lane\b|"
+          # ... or told as leaving it ("departed its lane into the path of left-turning traffic", "left its lane")
+          r"\b(?:depart(?:ed|ing|s)?|left|leaving|leaves)\s+(?:from\s+)?(?:its|their|his|her)\s+(?:own\s+)?lane\b|"
           # "entered EGO's lane": the AV's own lane, entered from beside it
           r"\benter(?:ed|ing|s)?\s+(?:into\s+)?(?:EGO's|the\s+EGO's|our)\s+(?:travel\s+)?lane\b|"
           # "changed into the AV's lane", "moved over into the middle lane in front of the AV", "partially entered
