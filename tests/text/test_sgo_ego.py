@@ -275,6 +275,24 @@ _SGO: dict[str, tuple[str, str]] = {
         "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
         "crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its "
         "reporting with additional information as it may become available."),
+    'nhtsa-sgo-ads-30270-9409-v1': (
+        "github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9409,"
+        " version 1, column \"Narrative\"); original: NHTSA SGO-2021-01 ADS incident report data",
+        "On Saturday, November [XXX], 2024 at 1:27 AM MST, a Waymo Autonomous Vehicle (\"Waymo AV\") operating in "
+        "Scottsdale, Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was "
+        "traveling north on [XXX] when it encountered a queue of double-parked vehicles in the northbound lane. "
+        "The Waymo AV began passing the double-parked vehicles on the left, but as it did so the queue of "
+        "double-parked vehicles began to proceed. The Waymo AV began to merge back into the northbound lane, but "
+        "a vehicle in the queue then double-parked again before the Waymo AV could fully merge back into the "
+        "northbound lane. The Waymo AV then began reversing to make space for southbound traffic but came to a "
+        "stop before completing its reversing maneuver to yield to traffic approaching the Waymo AV from the "
+        "rear. A passenger car traveling south on [XXX] then crossed the double yellow line to pass the Waymo AV "
+        "in the northbound lane. As it did so, the rear passenger side of the passenger car made contact with the "
+        "rear driver side of the Waymo AV. The passenger was not belted at the time, likely because the AV had "
+        "just departed its pickup location. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        "autonomous mode. The passenger car sustained damage. Waymo is reporting this crash under Request No. 2 "
+        "of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional "
+        "information as it may become available."),
 }
 
 
@@ -435,3 +453,11 @@ def test_a_stop_in_a_queue_is_where_the_av_stood() -> None:
     # contact with the rear of the stationary Waymo AV": the stop names the queue the AV then stood in (5 of 5
     # studyable reports with the AV stopping "in a queue" are gold `stopped`), not a stop made as the SUV came.
     assert _ego("nhtsa-sgo-ads-30270-10685-v1") == ("stopped", "")
+
+
+def test_merging_back_into_a_lane_is_the_return() -> None:
+    # "The Waymo AV began passing the double-parked vehicles on the left ... The Waymo AV began to merge back into the
+    # northbound lane": the return to the lane it left, as "re-enter" is (`g` after passing on the left; gold
+    # `afgkh`). 2 of 2 studyable reports with "merg* back into" the AV's lane have gold's letter for it (9409 `g`;
+    # s189 "merging back into the left lane", `f`). The passing itself is not yet read as a move left.
+    assert "g" in _ego("nhtsa-sgo-ads-30270-9409-v1")[1]

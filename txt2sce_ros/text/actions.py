@@ -108,7 +108,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\badvanc(?:ed|ing|es)\b(?!\s+(?:warning|notice))"),
     ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
-          r"into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
+          r"(?:back\s+)?into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
           r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           # "changed lanes to the right and then back to the left": the return told without its verb
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+left\b|"
@@ -144,7 +144,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
     ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
-          r"right|into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
+          r"right|(?:back\s+)?into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
           r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
           r"(?<=\s)into\s+the\s+(?:adjacent\s+)?right\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
           r"\b(?:and|then)\s+(?:then\s+)?back\s+(?:over\s+)?(?:to|into)\s+the\s+right\b|"
@@ -155,6 +155,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
           r"(?:adjacent\s+)?right(?:most)?\s+lane\b|"
           r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+){0,2}lane|"  # ("re-entering the far right lane")
+          # "began to merge back into the northbound lane" after passing on the left: the return, as "re-enter" (a
+          # side named is read by the side: "merging back into the left lane of traffic")
+          r"\bmerg(?:ed|ing|es|e)\s+back\s+into\s+the\s+(?:(?!(?:left|right)(?:most)?\s)[\w-]+\s+){0,2}lane\b|"
           r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?the\s+right(?:\s+adjacent)?\s+lane\b|"
           r"\b(?:(?!turn|pull|back|revers)[a-z]+(?:ed|ing)|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
@@ -280,7 +283,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
           "advanc"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
-    "g": ("right", "enter"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
+    "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed", "stop"), "A": ("straight",), "Y": ("turn",),
     "Q": ("front", "path", "off"), "D": ("driveway", "lot", "garage"),
