@@ -312,6 +312,8 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("remained stopped -> stayed stopped", _sub(r"\bremained (stopped|stationary)\b", r"stayed \1")),
     Rewrite("the AV was stopped -> the AV was sitting", _sub(r"\b(AV|vehicle) was stopped\b", r"\1 was sitting")),
     Rewrite("', when a' -> ', at which time a'", _sub(r", when (a|an|the) ", r", at which time \1 ")),
+    Rewrite("The <operator> AV was (second sentence on) -> It was",
+            lambda t: re.sub(r"(?<=\. )The (?:Waymo|Cruise|Zoox) (?:AV|vehicle) (was|had)\b", r"It \1", t, count=1)),
 )
 
 

@@ -70,6 +70,9 @@ KNOWN: dict[str, set[str]] = {
     # "EGO, in autonomous mode, was stopped in the right lane of a three lane, one-way street": the AV's own lane is
     # read in its clause, which the aside's comma ends, so the lane is lost (the party then reads R6/same, as gold).
     "the Waymo AV -> the Waymo AV, in autonomous mode, (an aside after its name)": {"dmvca-waymo-20220206-r282"},
+    # "... an SUV ... entered the far right lane in front of EGO. It was decelerating when EGOD transitioned": after
+    # a sentence whose last subject is the SUV, the pronoun is the SUV's (the rewrite, not the reading, changes who).
+    "The <operator> AV was (second sentence on) -> It was": {"dmvca-waymo-20211204-r256"},
 }
 
 

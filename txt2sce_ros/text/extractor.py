@@ -70,6 +70,30 @@ def sentence_starts(t: str, sents: list[str]) -> list[int]:
     return out
 
 
+# A sentence opening with "It" and a verb of what a vehicle did or was ("It was stopped in traffic", "It then
+# turned"), not the impersonal "It was determined", "It is unknown", "It is a two-way stop".
+_IT_OPENS = compile_gated(r"It(?=\s+(?:was|is|had|has|then|came|stopped|began|proceeded|continued|slowed|braked|"
+                          r"turned|moved|made|remained|entered|pulled|reversed|started|yielded)\b)(?!\s+(?:was|is|"
+                          r"has\s+been|had\s+been)\s+(?:determined|unknown|unclear|not|reported|believed|noted|"
+                          r"likely|unlikely|possible|a|an|the|also|later|estimated|observed|confirmed|found|"
+                          r"important|clear|evident|raining|dark|night|daylight)\b)")
+
+
+def _it_named(t: str, sents: list[str], ments: list[list]) -> str:
+    """The text with a sentence-opening "It" that continues the AV named as the AV ("EGO was struck by a cyclist on
+    X. It was stopped in traffic ..."): the previous sentence's last subject, or with none its first mention, is
+    the AV. Every rule written for "EGO was ..." then reads the pronoun's sentence as it reads the name's."""
+    starts = sentence_starts(t, sents)
+    for i in range(len(sents) - 1, 0, -1):
+        if not _IT_OPENS.match(sents[i]) or not ments[i - 1]:
+            continue
+        subjects = [m for m in ments[i - 1] if m.subject]
+        topic = subjects[-1] if subjects else ments[i - 1][0]
+        if topic.kind == "ego" and t.startswith("It", starts[i]):
+            t = t[:starts[i]] + "EGO" + t[starts[i] + 2:]
+    return t
+
+
 class Evidence:
     """Slot path -> normalised-text spans the slot was read from; mapped to the narrative as given at the end."""
 
@@ -132,8 +156,12 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
                          f"(one accident narrative runs to a few thousand)", source=report_id)
     t = normalise(text)
     sents = sentences(t)
-    summary = summary_sentences(sents)
     ments = [find_mentions(i, s) for i, s in enumerate(sents)]
+    named = _it_named(t, sents, ments)
+    if named != t:
+        t, sents = named, sentences(named)
+        ments = [find_mentions(i, s) for i, s in enumerate(sents)]
+    summary = summary_sentences(sents)
     flat = [m for ms in ments for m in ms]
     ents = resolve(flat, summary, sents)
     mark_parked(ents, sents)
