@@ -323,6 +323,17 @@ _SGO: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
         'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or '
         'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-6131-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6131,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2023 at 9:02 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was parallel '
+        'parked along the right-hand curb on eastbound [XXX] when a passenger car reversed out of a driveway '
+        'across the street from the Waymo AV and made contact with the driver side rear bumper of the Waymo '
+        'AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both '
+        'vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General '
+        'Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
 }
 
 
@@ -524,3 +535,13 @@ def test_a_party_told_leaving_its_lane_changed_lane() -> None:
     # `af`), as "drifted out of its lane" already read.
     p = _party("nhtsa-sgo-ads-30270-9330-v1")
     assert (p.position, p.actions) == ("R2", "af")
+
+
+def test_a_party_backing_out_from_across_the_street_is_oncoming_and_meets_the_av_broadside() -> None:
+    # "The Waymo AV was parallel parked along the right-hand curb ... when a passenger car reversed out of a driveway
+    # across the street from the Waymo AV and made contact with the driver side rear bumper": the far side of the
+    # AV's road is the oncoming side (R7, left), and a party backing into the AV's side meets it broadside (gold).
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-6131-v1"][1], "nhtsa-sgo-ads-30270-6131-v1")
+    p = sk.npcs[0]
+    assert (p.position, p.lane, p.start, p.actions) == ("R7", "left", "stopped", "k")
+    assert (sk.collision.with_, sk.collision.type) == ("npc1", "broadside")

@@ -562,6 +562,8 @@ def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle
             return "side_swipe"
         return "broadside" if ("m" in party.actions or "k" in party.actions) else "side_swipe"
     if party.position == "R7":
+        if "k" in party.actions and party.lane != "same":
+            return "broadside"  # backed across the road into the AV's side, as a backing party beside it (R5) does
         touched = s[d.contact_pos:]
         return "head_on" if party.lane == "same" and fre.search(r"\bfront\b", touched, re.I) and not \
             fre.search(r"\bside\b", touched, re.I) else "side_swipe"

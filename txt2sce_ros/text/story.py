@@ -24,6 +24,8 @@ from .scene import PRIOR_TURN
 ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
                          r"\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
                          r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b|"
+                         # the far side of the AV's own road ("reversed out of a driveway across the street from EGO")
+                         r"\bacross\s+the\s+(?:street|road|roadway)\s+from\s+EGO\b|"
                          # "going the other way", "in the other direction", "traveling toward EGO" (a vehicle's run
                          # at it; "moving toward" or "heading toward" is also said of a sideways move or one on foot)
                          r"\b(?:the\s+)?other\s+(?:way|direction)\b|"
