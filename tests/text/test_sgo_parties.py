@@ -334,6 +334,26 @@ _SGO: dict[str, tuple[str, str]] = {
         'vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General '
         'Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
         'become available.'),
+    'nhtsa-sgo-ads-30270-8039-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8039,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2024, at 12:59 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in [XXX], '
+        'California was involved in an alleged collision with a non-motorist (cyclist) at a parking garage '
+        'exit on [XXX] between [XXX] and [XXX]. The Waymo AV was exiting a parking garage onto [XXX], between '
+        '[XXX] and [XXX]. As the Waymo AV approached the garage exit, it stopped for a cyclist who was '
+        'approaching from the left. The Waymo AV remained stationary as the cyclist passed in front of the '
+        'vehicle, slowed, and appeared to begin to dismount. The cyclist then reached out a hand and made '
+        'contact with the front passenger side of the stationary Waymo AV, backed the bicycle up slightly, '
+        "dropped the bicycle, then fell to the ground. At the time of the possible impact, the Waymo AV's "
+        'Level 4 ADS was engaged in autonomous mode, and a test driver was present. The cyclist received '
+        'medical attention at the scene and was reportedly transported to a hospital by local emergency '
+        'services. The Waymo AV did not sustain any damage. Even though this event may involve intentional '
+        'contact by the bicyclist with a stationary Waymo AV and the occurrence of actual impact between the '
+        'Waymo AV and the cycle is not clear, Waymo is reporting this event as a crash under Request No. 1 of '
+        'Standing General Order 2021-01 because a media report included an allegation of a crash and because '
+        'a vulnerable road user (cyclist) influenced the driving task of a vehicle involved and reportedly '
+        'was transported to a hospital for medical treatment as a result of the event. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
 }
 
 
@@ -545,3 +565,11 @@ def test_a_party_backing_out_from_across_the_street_is_oncoming_and_meets_the_av
     p = sk.npcs[0]
     assert (p.position, p.lane, p.start, p.actions) == ("R7", "left", "stopped", "k")
     assert (sk.collision.with_, sk.collision.type) == ("npc1", "broadside")
+
+
+def test_a_party_passing_in_front_of_the_av_crosses_its_path_ahead_of_it() -> None:
+    # "it stopped for a cyclist who was approaching from the left. The Waymo AV remained stationary as the cyclist
+    # passed in front of the vehicle, slowed, and appeared to begin to dismount": a crossing (`m`) ahead of the AV,
+    # not a pass from behind along its side (gold: R5 left, `mc`).
+    p = _party("nhtsa-sgo-ads-30270-8039-v1")
+    assert (p.position, p.lane, p.actions) == ("R5", "left", "mc")

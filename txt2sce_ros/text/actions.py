@@ -250,6 +250,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
           r"(?:of\s+traffic\s+|from\s+(?:the\s+)?(?:[\w-]+\s+){0,2}(?:curb|sidewalk|median)\s+(?:directly\s+|just\s+)?)?"
           r"in\s+front|\bcross(?:ed|ing)\s+(?:in\s+front|the\s+path|its\s+path|EGO's\s+path)|"
+          # a pass across the AV's front ("the cyclist passed in front of the vehicle", "was proceeding past the
+          # front of EGO"): across its path, not along its side
+          r"\b(?:pass(?:ed|ing|es)|(?:proceed(?:ed|ing)|mov(?:ed|ing)|went|going)\s+past)\s+(?:directly\s+|just\s+)?"
+          r"(?:in\s+front\s+of|the\s+front\s+of)\s+(?:EGO\b|the\s+vehicle\b)|"
           r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding|cut|cutting)\s+"
           r"(?:out\s+)?"
           r"(?:off\s+the\s+(?:curb|sidewalk|median|(?:traffic\s+)?island)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"

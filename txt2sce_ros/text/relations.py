@@ -320,10 +320,11 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
         for m in _PASSING.finditer(win):
-            if fre.match(r"\s+(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+of\s+EGO)",
-                         win[m.end():]) or _PASSED_OTHER.match(win, m.start()):
+            if fre.match(r"\s+(?:in\s+front\s+of\b|(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+"
+                         r"of\s+EGO))", win[m.end():]) or _PASSED_OTHER.match(win, m.start()):
                 # "changed lanes to pass the bus", "going past the parked cars", "passed through the intersection":
-                # passing something else, or through a place, is no pass of the AV
+                # passing something else, or through a place, is no pass of the AV; nor is one across its front
+                # ("the cyclist passed in front of the vehicle": a crossing, actions)
                 continue
             if m.group("between") and d.ego_start != "stopped":
                 continue
