@@ -239,6 +239,14 @@ _CSV: dict[str, tuple[str, str]] = {
         "tree on the left side of the road. The Menlo Park Police Department was called to the scene. Two Zoox "
         "operators sustained minor injuries and it is unknown if the driver of the other vehicle sustained "
         "injuries."),
+    'csvr-waymo-20190515-s11': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 11, column 'Accident Detail Description'), transcribed",
+        "A Waymo Autonomous Vehicle (“Waymo AV”) in autonomous mode was yielding to check for cross traffic while "
+        "in the slip lane to turn from southbound Shoreline Boulevard to westbound El Camino Real in Mountain "
+        "View when it was rear-ended by a passenger vehicle at approximately 5 MPH. The Waymo AV sustained minor "
+        "damage to its rear bumper, and the passenger vehicle had minor damage to its front bumper. The two Waymo "
+        "AV operators reported neck/back pain but declined medical attention at the scene."),
 }
 
 
@@ -383,3 +391,14 @@ def test_a_slowing_told_under_way_with_its_description_opens_the_string() -> Non
     # Zoox vehicle was slowing and moving at approximately 2 mph ..., yielding to an oncoming vehicle": the slowing
     # opens the string; "moving at 2 mph" only describes it (`c`).
     assert _ego("dmvca-zoox-20220823-r376") == ("moving", "c")
+
+
+def test_yielding_told_in_the_present_is_where_the_av_waited() -> None:
+    # "A Waymo Autonomous Vehicle ("Waymo AV") in autonomous mode was yielding to check for cross traffic while in the
+    # slip lane ... when it was rear-ended": the AV stood where it waited (9 of 11 studyable reports with the AV "was
+    # yielding" are gold `stopped` at the start). Told in the present, as some reporters write, it reads the same.
+    text = _CSV["csvr-waymo-20190515-s11"][1]
+    assert _ego("csvr-waymo-20190515-s11") == ("stopped", "")
+    present = text.replace("was yielding", "is yielding")
+    assert present != text
+    assert _ego("csvr-waymo-20190515-s11", present) == ("stopped", "")

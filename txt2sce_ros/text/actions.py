@@ -713,9 +713,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
             if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
                 code = "c"
-            elif fre.search(r"(?:\b(?:was|were|while|and)|,)\s*$", before, re.I):
+            elif fre.search(r"(?:\b(?:was|were|is|are|while|and)|,)\s*$", before, re.I):
                 code = "S"  # "was yielding", "while yielding", ", yielding", "was stopped ... and yielding": where
-                # the AV stood waiting (no event)
+                # the AV stood waiting (no event); told in the present ("is yielding") as in the past
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))
