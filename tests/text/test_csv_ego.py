@@ -247,6 +247,17 @@ _CSV: dict[str, tuple[str, str]] = {
         "View when it was rear-ended by a passenger vehicle at approximately 5 MPH. The Waymo AV sustained minor "
         "damage to its rear bumper, and the passenger vehicle had minor damage to its front bumper. The two Waymo "
         "AV operators reported neck/back pain but declined medical attention at the scene."),
+    'dmvca-waymo-20220511-r333': (
+        "github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 333, column "
+        "\"Accident Detail Description\")",
+        "On May 11, 2022 at 9:19 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, "
+        "California was in a collision involving a SUV on 24th Street and Capp Street. The Waymo AV was "
+        "attempting to make a right turn from 24th Street onto Capp Street while yielding to a pedestrian in the "
+        "adjacent crosswalk in autonomous mode. A SUV approaching from behind the Waymo AV passed on the left "
+        "side, making contact with the Waymo AV’s rear left sensor housing. The Waymo AV operator transitioned "
+        "the system from autonomous to manual mode just before the moment of impact. The SUV immediately left the "
+        "scene. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test driver was "
+        "operating the Waymo AV in manual mode. The Waymo AV sustained minor damage."),
 }
 
 
@@ -402,3 +413,16 @@ def test_yielding_told_in_the_present_is_where_the_av_waited() -> None:
     present = text.replace("was yielding", "is yielding")
     assert present != text
     assert _ego("csvr-waymo-20190515-s11", present) == ("stopped", "")
+
+
+def test_the_present_tense_reads_as_the_past() -> None:
+    # "When traffic ahead began to move the Zoox vehicle was appropriately following the car ahead ... when it was
+    # rear ended": told "begins ... is appropriately following", the AV named before the progressive is still its
+    # subject (`i`, moved off with the queue). "The Waymo AV was attempting to make a right turn ... while yielding
+    # to a pedestrian": told "is attempting", the attempt still waits (stopped, no turn made).
+    for rid, told in (("csvr-zoox-20230208-s212", ("stopped", "i")), ("dmvca-waymo-20220511-r333", ("stopped", ""))):
+        text = _CSV[rid][1]
+        present = text.replace("began", "begins").replace("was ", "is ")
+        assert present != text
+        assert _ego(rid) == told
+        assert _ego(rid, present) == told, rid

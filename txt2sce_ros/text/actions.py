@@ -352,7 +352,7 @@ _INTO_JUNCTION_TO = compile_gated(r"\b(?:proceed|mov|pull|enter|edg|creep|inch)(
                                   r"the\s+intersection\s+to\s+(?:\w+\s+){0,2}$", re.I)
 # "was attempting to make a right turn ... while yielding to a pedestrian" (or ", yielding to"): an attempt while
 # still waiting has not begun.
-_ATTEMPT_WAITING = compile_gated(r"\b(?:was|were)\s+(?:attempting|trying)\s+to\s+(?:\w+\s+){0,2}$", re.I)
+_ATTEMPT_WAITING = compile_gated(r"\b(?:was|were|is|are)\s+(?:attempting|trying)\s+to\s+(?:\w+\s+){0,2}$", re.I)
 # (a full stop before a lower-case word ends an abbreviation, "from 24th St. onto Capp St. while", not the sentence)
 _WHILE_WAITING = compile_gated(r"(?:[^.;]|\.(?=\s+[a-z]))*?(?:\bwhile\s+|,\s*)(?:yielding|waiting|stopped)\b")
 # "was proceeding south ..., yielding to a pedestrian", "slowed to 3 MPH when yielding": a yield told beside a run

@@ -173,7 +173,7 @@ _DET_END = compile_gated(r"\b(?:a|an|the|another|one|that|this|its|their|his|her
 # After an opening clause that no comma closes, the AV named right before a progressive verb is that verb's subject
 # ("When traffic ahead began to move EGO was appropriately following the car ahead"); not the object of a
 # preposition ("As a van approaching from the left of EGO was slowing").
-_PROGRESSIVE_AFTER = compile_gated(r"\s+(?:was|were)\s+(?:\w+ly\s+)?\w+ing\b", re.I)
+_PROGRESSIVE_AFTER = compile_gated(r"\s+(?:was|were|is|are)\s+(?:\w+ly\s+)?\w+ing\b", re.I)
 _OPEN_CLAUSE = compile_gated(r"^\W*(?:when|as|while|after|once|before|because|since|until)\b[^,;]*$", re.I)
 _PREPOSITION_END = compile_gated(r"\b(?:of|to|from|behind|by|with|at|in|on|for|past|around|near|into|onto|toward|"
                                  r"towards|than|ahead|beside|alongside|and|between)\s*$", re.I)
