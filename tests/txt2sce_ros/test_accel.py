@@ -67,7 +67,13 @@ def test_a_build_is_used_only_for_the_bytes_it_was_built_from(tmp_path: Path) ->
     sys.path.insert(0, str(tmp_path / "src"))
     try:
         assert accel.status(["accel_probe.calc"], cache) == {"accel_probe.calc": "not built"}
-        assert accel.build(["accel_probe.calc"], cache, jobs=1) == {"accel_probe.calc": "built"}
+        try:
+            first = accel.build(["accel_probe.calc"], cache, jobs=1)
+        except RuntimeError as exc:
+            if "built" in accel.status().values():
+                raise               # the project's own modules were compiled here: so must this one be
+            pytest.skip(f"no working C compiler for Cython here ({exc})")
+        assert first == {"accel_probe.calc": "built"}
         assert accel.build(["accel_probe.calc"], cache, jobs=1) == {"accel_probe.calc": "up to date"}
     finally:
         sys.path.remove(str(tmp_path / "src"))
