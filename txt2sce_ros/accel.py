@@ -202,16 +202,18 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
         raise RuntimeError(f"cannot build: {exc.name or exc} is not installed (pip install cython setuptools)") \
             from exc
     root = root or cache_dir()
-    todo = {name: src for name, src in sources(modules).items()
-            if not artifact(name, src.read_bytes(), root).is_file()}
-    result = {name: "up to date" for name in modules if name not in todo}
-    if not todo:
+    # Each source is read once: its build is keyed by the very bytes compiled, so a file edited during the build is
+    # not mislabelled.
+    data = {name: src.read_bytes() for name, src in sources(modules).items()}
+    dests = {name: artifact(name, body, root) for name, body in data.items()}
+    result = {name: "up to date" for name, dest in dests.items() if dest.is_file()}
+    for name in result:
+        del data[name]
+    if not data:
         return result
     work = Path(tempfile.mkdtemp(prefix="txt2sce_accel_"))
     log = log or work / "build.log"
     try:
-        # The key is taken from the bytes compiled (read once), so a file edited during the build is not mislabelled.
-        data = {name: src.read_bytes() for name, src in todo.items()}
         csrc = work / "src"
         exts = []
         for name, body in data.items():
@@ -242,9 +244,9 @@ def build(modules: Sequence[str] = MODULES, root: Path | None = None, *, jobs: i
                                                  "--build-temp", str(work / "tmp"), "-j", str(jobs)]})
             dist.parse_command_line()
             dist.run_commands()
-        for name, body in data.items():
-            built = (work / "lib").joinpath(*name.split(".")[:-1]) / artifact(name, body, root).name
-            dest = artifact(name, body, root)
+        for name in data:
+            dest = dests[name]
+            built = (work / "lib").joinpath(*name.split(".")[:-1]) / dest.name
             dest.parent.mkdir(parents=True, exist_ok=True)
             part = dest.with_name(dest.name + ".part")
             shutil.copyfile(built, part)
