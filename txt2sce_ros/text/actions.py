@@ -744,9 +744,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
-                turn.code in ("d", "e", "j", "k", "m", "O", "P") and turn.sent == a.sent and 0 <= a.pos - turn.pos <= 70:
+                turn.code in ("d", "e", "j", "k", "m", "O", "P", "T") and turn.sent == a.sent and \
+                0 <= a.pos - turn.pos <= 70:
             # "turned right into EGO's lane", "pulled out of its space into the left lane", "began reversing
-            # further into EGO's lane": where it ended
+            # further into EGO's lane", "a wide right turn from eastbound [XXX] into the left lane" (a turn whose
+            # side the headings tell, "T"): where it ended
             continue
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
                 turn.code in ("f", "g", "F") and turn.sent == a.sent and 0 <= a.pos - turn.pos - len(turn.text) <= 3:
