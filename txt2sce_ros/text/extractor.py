@@ -207,7 +207,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     placed_at: dict[int, tuple[str, str | None]] = {}  # entity -> (position, lane) of its party
     for k, e in enumerate(parties, 1):
         pos, lane, known = party_position(d, e, ego_heading, ego_turning, ego_actions, frozenset(behind))
-        placed = place(d, e, (pos, lane), ego_actions, ego_turning)
+        placed = place(d, e, (pos, lane), ego_actions, ego_turning, told=known)
         pos, lane = placed.position, placed.lane
         known = known or placed.cue_placed
         slot = f"npcs[{k - 1}]"

@@ -137,8 +137,6 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
     if not junction and from_side and e.category in ("pedestrian", "bicycle", "scooter"):
         return "R5", from_side.group(1).lower(), True  # mid-block, in from the curb on that side (sketch.md)
-    if junction and "d" in ego_actions and fre.search(r"\bapproaching\b", ctx, re.I):
-        return "R2", None, True  # the AV turning left, a party approaching: the opposite approach
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
         return "R6", cside or "same", True

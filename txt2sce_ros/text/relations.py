@@ -22,7 +22,10 @@ heading) and combined in a fixed order, highest first, so a rule can be read and
 2. Along the AV's road (R5/R6): an explicit `along` cue (nearest the party's name first) decides front/behind; else
    `passing` (behind); else the contact on the AV's rear half (behind) or front half (ahead) for a party not backing
    up; else a party moving in the lane beside an AV that stood throughout and touching its side passed it (behind);
-   else the first reading.
+   else the first reading. A vehicle going on ahead of which the text tells nothing but the side of the AV it
+   struck (no heading, side, lane or end of the AV; no turn or lane change of its own), met at a junction by an AV
+   turning left and not on the AV's rear, came from the opposite approach (R2: a left turn across the path of
+   oncoming traffic).
 3. The lane: a party said to stand behind the AV ("stopped behind EGO") that then passes it on a side is in the AV's
    lane (it moves out to pass); else an explicit `lane` cue (one said relative to the AV before a lane's name on
    the road); else the side the `passing` cue names; else the side of the AV the party touched, for a party ahead or
@@ -138,6 +141,7 @@ _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0
                              r"\bfront\s+(?:\w+\s+){0,2}?of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
 # Riders who keep to the edge of the road (bike lane, curb side); a motorcycle takes a lane like a car.
 _EDGE_RIDERS = ("bicycle", "scooter")
+_MOTOR = ("car", "van", "truck", "bus", "motorcycle")
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
@@ -180,7 +184,7 @@ class Placement:
     @property
     def cue_placed(self) -> bool:
         """A cue of the scene decided the place (along, passing, contact, ...) or named the lane: the place is told."""
-        return not self.rule.startswith("first reading") or "; lane" in self.rule
+        return not self.rule.startswith(("first reading", "left turn across")) or "; lane" in self.rule
 
     @property
     def conflicting(self) -> bool:
@@ -457,8 +461,9 @@ _LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjace
 
 
 def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
-          ego_turning: bool = False) -> Placement:
-    """Combine the party's cues with the first reading `first` = (position, lane) in the documented order."""
+          ego_turning: bool = False, told: bool = True) -> Placement:
+    """Combine the party's cues with the first reading `first` = (position, lane) in the documented order.
+    `told`: the first reading was read from the text (False: its fallback, ahead in the AV's lane, for want of any)."""
     pos, lane = first
     cues = gather(d, e)
     if d.junction and pos in ("R3", "R1", "R5") and (exit_leg := _on_exit_crosswalk(d, e, far_only=not ego_turning)):
@@ -514,6 +519,14 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # (sketch.md: a party passing a stopped AV is R6 on the side it passed).
         pos, rule = "R6", "passing a standing AV"
         used.append(contact)
+    if not told and rule == "first reading" and d.junction and "d" in ego_actions and e.category in _MOTOR and \
+            fore != "rear" and all(c.kind == "contact" for c in cues) and \
+            not any(a.who == e.idx and a.code in "defgjkFT" for a in d.acts):
+        # Nothing told of its place but the side of the AV it struck, no manoeuvre of its own but going on, and the
+        # AV turning left at the junction: a vehicle met there, not at the AV's rear, came from the opposite approach
+        # (a left turn across the path of oncoming traffic, struck on the AV's right or front).
+        return Placement("R2", None, "left turn across its path", tuple(c for c in cues if c.kind == "contact"),
+                         tuple(cues))
     # A lane said relative to the AV ("to the left of EGO", "the adjacent lane") outranks a lane's name on the road
     # ("the right lane of the freeway"), which says where the party is only against the AV's own lane.
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)

@@ -1,0 +1,46 @@
+"""Issue 13, where the other parties were (position and lane, relations.place's tiers), read from real narratives of
+the studyable sets (dev.jsonl with its official gold, tests/text/csvr/study2.jsonl, tests/text/sgo/study3.jsonl;
+each narrative quoted with its id and source). One test per reading; each asserts what sketch.md's rules and the
+studyable gold give, and fails when the reading is removed.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.sketch import Party
+from txt2sce_ros.text.extractor import extract
+
+# id -> (source, narrative)
+_TEXTS: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30291-7981-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30291-7981, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At approximately 5:10pm CDT, a passenger vehicle collided with a Nuro Prius operating in manual mode in '
+        'Houston, Texas. Prior to the collision, the Nuro Prius operating autonomously came to a stop at the '
+        'intersection of [XXX] and [XXX]. The Nuro operator disengaged autonomy, switched to manual, and proceeded '
+        'to make a left turn. A passenger vehicle collided with the Nuro Prius before the driver completed the '
+        'turn. No injuries were reported. Both vehicles sustained damage. Law enforcement was not involved.'),
+    'dmvca-waymo-20210712-r196': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 196, column '
+        '"Accident Detail Description")',
+        'On July 12, 2021 at 3:10 PM PDT, a Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) was in a collision '
+        'involving a van at Broadway and Gough Street in San Francisco. The Waymo AV, while in autonomous mode, '
+        'was waiting to make a left turn and yielding to oncoming traffic, when the test driver (in the driver\u2019s '
+        'seating position) transitioned to manual mode and proceeded with a left turn manually. During the left '
+        'turn, an approaching van struck the right side of the Waymo AV. At the time of the impact, the Waymo AV '
+        'was in manual mode.'),
+}
+
+
+def _party(report_id: str, k: int = 0) -> Party:
+    return extract(_TEXTS[report_id][1], report_id).npcs[k]
+
+
+def test_a_vehicle_met_by_an_av_turning_left_with_nothing_told_of_its_place_came_from_the_opposite_approach() -> None:
+    # "proceeded to make a left turn. A passenger vehicle collided with the Nuro Prius before the driver completed
+    # the turn": no heading, side, lane or end of the AV told; a left turn across the path of oncoming traffic.
+    p = _party("nhtsa-sgo-ads-30291-7981-v1")
+    assert (p.position, p.lane) == ("R2", None)
+    # "During the left turn, an approaching van struck the right side of the Waymo AV": the side it struck is where
+    # the oncoming lane crosses a left-turning AV, no lane beside it.
+    p = _party("dmvca-waymo-20210712-r196")
+    assert (p.position, p.lane) == ("R2", None)
