@@ -6,7 +6,9 @@ asserting what sketch.md's rules and the gold give; removing the reading fails i
 
 from __future__ import annotations
 
-from txt2sce_ros.sketch import Party
+import re
+
+from txt2sce_ros.sketch import Party, Sketch
 from txt2sce_ros.text.extractor import extract
 
 # id -> (source, narrative)
@@ -23,6 +25,53 @@ _TEXT: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
         'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or'
         ' correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10673-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10673, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 9:59 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving a box truck and trailer on [XXX] at [XXX]. The Waymo AV was '
+        'traveling southeastbound on [XXX] in the leftmost lane when it stopped at the intersection of [XXX] '
+        'to yield to a box truck hauling a trailer within the intersection. The heavy truck was facing '
+        'southwest, apparently attempting a multi-point turn. The truck stopped and the Waymo AV began to '
+        'pass the truck on the left. The truck began reversing as the Waymo AV was passing and the Waymo AV '
+        'came to a stop to yield to the truck. While the Waymo AV remained stopped, the truck continued to '
+        'reverse, and the rear passenger side of the trailer made contact with the front passenger side of '
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        'The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General'
+        ' Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'csvr-waymo-20190226-s3': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 3, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode at the intersection of '
+        'Miramonte Avenue and Covington Road in Los Altos when it was involved in a collision. The Waymo AV '
+        'was traveling northbound on Miramonte Avenue, when it reached a four-way stop sign intersection. The'
+        ' Waymo AV stopped to yield to another vehicle at the intersection, at which time a passenger vehicle'
+        ' rear-ended the Waymo AV at approximately 39 MPH. At the time of the collision the Waymo AV had been'
+        ' stopped for approximately 1.5 seconds. The Waymo AV sustained major damage to its rear bumper, rear'
+        ' hatch, and rear quarter panels, and the passenger vehicle sustained major damage to its front '
+        'bumper, hood, and front quarter panels. First responders attended to the scene, but neither party '
+        'reported injuries.'),
+    'csvr-waymo-20220214-s134': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 134, column 'Accident Detail Description'), transcribed",
+        'On February 14, 2022 at 3:02 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a passenger vehicle on Kansas Street at 16th '
+        'Street. The Waymo AV was stopped at a red light facing north on Kansas Street at the 16th Street '
+        'intersection in autonomous mode. While the traffic light was still red, the vehicle immediately '
+        'behind the Waymo AV began to accelerate and made contact with the rear bumper of the Waymo AV. At '
+        'the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver'
+        ' was present (in the driver’s seating position). The Waymo AV sustained minor damage.'),
+    'dmvca-waymo-20220605-r349': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 349, column '
+        '"Accident Detail Description")',
+        'On June 5, 2022 at 10:07 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Bush Street and Gough Street. The '
+        'Waymo AV was stopped in autonomous mode behind stopped traffic facing east on Bush Street. The '
+        'passenger vehicle ahead of the Waymo AV transitioned into reverse and began to accelerate, making '
+        'contact with the front sensor of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS'
+        ' was engaged in autonomous mode, and a test driver was present (in the driver’s seating position). '
+        'Both vehicles sustained minor damage.'),
 }
 
 
@@ -35,3 +84,42 @@ def test_the_lane_a_turn_from_a_heading_ends_in_is_no_lane_change() -> None:
     # where the turn ends, as for "turned right into EGO's lane" (the gold: `e`).
     p = _party('nhtsa-sgo-ads-30270-9333-v1')
     assert p.actions == "e"
+
+
+def _told(rid: str, pattern: str, repl: str) -> Sketch:
+    """The narrative with one phrasing changed to another a reporter uses for the same moves."""
+    assert re.search(pattern, _TEXT[rid][1])
+    return extract(re.sub(pattern, repl, _TEXT[rid][1]), rid)
+
+
+def test_a_run_told_in_the_simple_past_goes_back_to_the_av_on_its_way() -> None:
+    # "... was stopped ... when it was involved in a collision. The Waymo AV traveled northbound on Miramonte Avenue,
+    # when it reached a four-way stop sign intersection. The Waymo AV stopped to yield": the summary's state is the
+    # AV's at the contact; the telling, gone back to it travelling, opens with the run ("was traveling": `ah`, gold).
+    for verb in ("was traveling", "traveled"):
+        sk = _told('csvr-waymo-20190226-s3', r"\bwas traveling\b", verb)
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "ah"), verb
+
+
+def test_speeding_up_right_after_backing_up_is_the_backing() -> None:
+    # "The passenger vehicle ahead of the Waymo AV transitioned into reverse and accelerated, making contact":
+    # faster in reverse, as "began to accelerate" reads (the gold: stopped, `k`).
+    for verb in ("began to accelerate", "accelerated"):
+        sk = _told('dmvca-waymo-20220605-r349', r"\bbegan to accelerate\b", verb)
+        assert (sk.npcs[0].start, sk.npcs[0].actions) == ("stopped", "k"), verb
+
+
+def test_a_party_queued_behind_the_standing_av_that_speeds_up_moved_off() -> None:
+    # "While the traffic light was still red, the vehicle immediately behind the Waymo AV accelerated and made
+    # contact with the rear bumper": it stood behind the AV and started (the gold: stopped, `i`).
+    for verb in ("began to accelerate", "accelerated"):
+        sk = _told('csvr-waymo-20220214-s134', r"\bbegan to accelerate\b", verb)
+        assert (sk.npcs[0].start, sk.npcs[0].actions) == ("stopped", "i"), verb
+
+
+def test_the_av_passing_after_its_stop_moved_off() -> None:
+    # "The truck stopped and the Waymo AV passed the truck on the left. ... the Waymo AV came to a stop": after its
+    # stop the AV moved off to pass, then stopped again (the gold: `ahih`), as "began to pass" reads.
+    for verb in ("began to pass", "passed"):
+        sk = _told('nhtsa-sgo-ads-30270-10673-v1', r"\bbegan to pass\b", verb)
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "ahih"), verb

@@ -73,6 +73,11 @@ KNOWN: dict[str, set[str]] = {
     # "... an SUV ... entered the far right lane in front of EGO. It was decelerating when EGOD transitioned": after
     # a sentence whose last subject is the SUV, the pronoun is the SUV's (the rewrite, not the reading, changes who).
     "The <operator> AV was (second sentence on) -> It was": {"dmvca-waymo-20211204-r256"},
+    # "a pickup truck traveled southeast on El Camino Real": a party's heading told in the simple past is not read
+    # (the heading pattern takes "traveling", "heading", not "traveled"), so the pickup that crossed the median from
+    # the opposite direction is placed behind the AV (R6/same) instead of on the opposite approach (R2). A position
+    # reading, left to the session's position work.
+    "was traveling -> traveled (the simple past)": {"dmvca-waymo-20241014-r619"},
 }
 
 

@@ -16,7 +16,7 @@ _FORWARD = set("abdefgjm")
 #: Words that give a standing party's direction, not a move ("headed toward Charleston Road").
 _DIRECTION_ONLY = compile_gated(r"(?:headed|heading|facing)\b", re.I)
 #: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
-_MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated)\b", re.I)
+_MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated|passed)\b", re.I)
 
 
 def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> tuple[str, str]:
@@ -48,8 +48,9 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
                 c = "f"
         if c in ("T", "D"):
             continue  # a turn whose side nothing told (ego_sequence resolves the AV's "D" before this)
-        if c == "i" and "accelerat" in a.text.lower() and codes and codes[-1] == "k":
-            continue  # "transitioned into reverse and began to accelerate": the backing, faster; no start forward
+        if c in ("i", "b") and "accelerat" in a.text.lower() and codes and codes[-1] == "k":
+            continue  # "transitioned into reverse and began to accelerate" (or "and accelerated"): the backing,
+            # faster; no start forward, no speed-up of its own
         if c == "i" and "accelerat" in a.text.lower() and (
                 start == "moving" and (not codes or codes[-1] != "h") or codes[-1:] == ["c"]):
             # "began to accelerate" while on its way speeds up, as after a slowing ("slowed to yield to the U-turning
@@ -149,8 +150,9 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
     if place != ("R6", "same") or d.ego_start != "stopped" or start != "moving" or \
             any(a.code in "aAcdefgjkmF" for a in told):
         return start, actions
-    if told and told[0].code == "i" and actions in ("", "a", "ab"):
-        return "stopped", "i"  # its first move told is the start itself
+    if told and told[0].code in ("i", "b") and actions in ("", "a", "ab"):
+        # its first move told is the start itself ("began to accelerate", "accelerated": from where it stood)
+        return "stopped", "i"
     if told or actions not in ("", "a") or d.partner != e.idx or d.contact_sent is None:
         return start, actions
     s = d.sents[d.contact_sent]
@@ -231,6 +233,9 @@ def _waited(d: Doc, stop: Act) -> bool:
     return stop.code == "S" or bool(fre.search(r"yield", stop.text, re.I)) or _at_control(d, stop, 100)
 
 
+#: A run told in the simple past ("The Waymo AV traveled northbound on X, when it reached ..."): the telling gone back
+#: to the AV on its way, as "was traveling" is.
+_TRAVELLED = compile_gated(r"(?:travel(?:l)?ed|drove|headed)\b", re.I)
 _FROM_BEHIND = compile_gated(r"\brear[- ]?end(?:ed|ing)?\b|\bfrom\s+behind\b|\bbehind\s+EGO\b|\bfrom\s+the\s+rear\b", re.I)
 
 
@@ -276,7 +281,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
     # is the AV's at the contact when the telling goes back to it travelling.
     told = [a for a in acts if a.sent not in d.summary]
-    if told and told[0].code == "a" and told[0].under_way:
+    if told and told[0].code == "a" and (told[0].under_way or _TRAVELLED.match(told[0].text)):
         acts = [a for a in acts if not (a.sent in d.summary and a.code == "S")]
     # "A Zoox vehicle in autonomous mode was slowing to a stop ... when a vehicle behind made contact", "While
     # traveling west on Post Street, the Waymo AV was executing a pullover maneuver and made contact": a slowing, a
