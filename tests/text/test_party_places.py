@@ -28,6 +28,14 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'seating position) transitioned to manual mode and proceeded with a left turn manually. During the left '
         'turn, an approaching van struck the right side of the Waymo AV. At the time of the impact, the Waymo AV '
         'was in manual mode.'),
+    'csvr-cruise-20190524-s14': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 14, "
+        "column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle (\u201cCruise AV\u201d), operating in autonomous mode, was changing lanes into '
+        'the left turn lane on eastbound Geary Boulevard between 8th and 9th Avenues when the Cruise AV slowed '
+        'down. The driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another '
+        'vehicle changing into the same lane made contact with the rear bumper of the Cruise AV, damaging the '
+        'Cruise AV\u2019s bumper. There were no injuries and police were not called.'),
 }
 
 
@@ -44,3 +52,11 @@ def test_a_vehicle_met_by_an_av_turning_left_with_nothing_told_of_its_place_came
     # the oncoming lane crosses a left-turning AV, no lane beside it.
     p = _party("dmvca-waymo-20210712-r196")
     assert (p.position, p.lane) == ("R2", None)
+
+
+def test_a_party_behind_that_changes_lanes_with_the_av_stays_behind_it_in_its_lane() -> None:
+    # "was changing lanes into the left turn lane ... another vehicle changing into the same lane made contact with
+    # the rear bumper": both moved over from one lane, the party behind the AV in it (R6, same), not waiting in the
+    # lane the AV moved into (the AV's move puts a party on that side only when the party kept its lane).
+    p = _party("csvr-cruise-20190524-s14")
+    assert (p.position, p.lane) == ("R6", "same")

@@ -569,8 +569,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # was crossing or cutting across its path from the other side.
         lane, rule = came, rule + "; its flank met by the AV's front"
     elif pos == "R6" and lane == "same" and (moves := [c for c in ego_actions if c in "fg"]) and \
-            cside in ("", "left" if moves[-1] == "f" else "right"):
-        # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side.
+            cside in ("", "left" if moves[-1] == "f" else "right") and \
+            not any(a.who == e.idx and a.code in "fgF" for a in d.acts):
+        # The AV moved over (or pulled out) into the lane of a party behind it: the party is on that side. Not one
+        # changing lanes itself ("was changing lanes into the left turn lane ... another vehicle changing into the
+        # same lane made contact with the rear bumper"): both moved over from one lane, it behind the AV in it.
         lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
     elif cside and lane == "same" and (pos == "R5" or passing or flank or _ADJACENT_LANE.search(ctx)) and \
             contact is not None and \
