@@ -72,6 +72,18 @@ _TEXT: dict[str, tuple[str, str]] = {
         'contact with the front sensor of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS'
         ' was engaged in autonomous mode, and a test driver was present (in the driver’s seating position). '
         'Both vehicles sustained minor damage.'),
+    'nhtsa-sgo-ads-30270-10557-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10557, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 1:09 PM CT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, '
+        'Texas was in a collision involving a passenger car near [XXX] and [XXX]. The Waymo AV was preparing '
+        'to make a right turn and merge into [XXX] from a roadway that was located south of [XXX]. While the '
+        'Waymo AV remained stopped at a stop sign yielding to traffic, a passenger car traveling directly '
+        'behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo'
+        " AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting"
+        ' this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was '
+        'towed away. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
 }
 
 
@@ -123,3 +135,17 @@ def test_the_av_passing_after_its_stop_moved_off() -> None:
     for verb in ("began to pass", "passed"):
         sk = _told('nhtsa-sgo-ads-30270-10673-v1', r"\bbegan to pass\b", verb)
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ahih"), verb
+
+
+def test_the_av_s_state_told_after_the_party_in_a_clause_of_the_same_moment() -> None:
+    # "While the Waymo AV remained stopped at a stop sign yielding to traffic, a passenger car traveling directly
+    # behind the Waymo AV made contact with the rear", told the other way round ("A passenger car ... made contact
+    # with the rear of the Waymo AV while the Waymo AV remained stopped ..."): where the AV stood when the party came
+    # in (the gold: stopped, no action), not a stop after it.
+    text = _TEXT['nhtsa-sgo-ads-30270-10557-v1'][1]
+    moved = re.sub(r"While (the Waymo AV remained stopped at a stop sign yielding to traffic), (a passenger car [^.]*)\.",
+                   lambda m: f"{m.group(2)[0].upper()}{m.group(2)[1:]} while {m.group(1)}.", text)
+    assert moved != text
+    for told in (text, moved):
+        sk = extract(told, 'nhtsa-sgo-ads-30270-10557-v1')
+        assert (sk.ego.start, sk.ego.actions) == ("stopped", "")

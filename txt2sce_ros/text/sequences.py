@@ -236,6 +236,8 @@ def _waited(d: Doc, stop: Act) -> bool:
 #: A run told in the simple past ("The Waymo AV traveled northbound on X, when it reached ..."): the telling gone back
 #: to the AV on its way, as "was traveling" is.
 _TRAVELLED = compile_gated(r"(?:travel(?:l)?ed|drove|headed)\b", re.I)
+#: A clause of the same moment ("while EGO remained stopped", "as EGO was stopped", "just as").
+_SAME_MOMENT = compile_gated(r"\b(?:while|as)\b", re.I)
 _FROM_BEHIND = compile_gated(r"\brear[- ]?end(?:ed|ing)?\b|\bfrom\s+behind\b|\bbehind\s+EGO\b|\bfrom\s+the\s+rear\b", re.I)
 
 
@@ -309,6 +311,11 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
             not _FOR_IT.search(s[a.pos + len(a.text):fp]) and _at_control(d, a, 100) and
             not any(x.who == -1 and x.code not in "hS" for x in acts
                     if (fs, clause_start) <= (x.sent, x.pos) < (fs, a.pos)))]
+    # "A passenger car traveling behind EGO made contact with its rear while EGO remained stopped at a stop sign":
+    # the AV's state told in a clause of the same moment after the party's ("while", "as") is where it stood when
+    # the party came in, as the same clause told first is ("While EGO remained stopped ..., a passenger car ...").
+    pre += [a for a in acts if a.code == "S" and a not in pre and a.sent == fs and a.pos > fp and
+            _SAME_MOMENT.search(s, fp, a.pos)]
     post = [a for a in acts if a not in pre]
     stopped = False
     prefix: list[Act] = []
