@@ -96,6 +96,8 @@ class JudgeSession:
         self.frames_seen = 0
         self._pending: RunStatus | None = None             # a final status held for the run's last frames
         self._deferred: list[tuple[str, Any]] = []          # the next run's scenario / status / goal messages
+        self._deferred_goal: Goal | None = None             # the last goal deferred (its repeats are not)
+        self._goal_key = -1                                 # stamp of the current run's latest goal
         self._next: FrameAssembler | None = None            # ... and its frame messages, assembled apart
         self._next_frames: list[Any] = []
         self._gen = 0                                       # generation of the current run
@@ -108,6 +110,7 @@ class JudgeSession:
         self._prev_end_key = -1
         self.dropped = 0                                    # late messages of finished runs
         self._judged_envelope: ScenarioEnvelope | None = None  # the scenario of the run judged last
+        self._judged_id = ""                                # ... and its name (from a status if it had no envelope)
 
     # --- dispatch ------------------------------------------------------------------------------------------------
 
@@ -144,17 +147,29 @@ class JudgeSession:
             else:
                 self._start(envelope)
         elif topic == c.TOPIC_GOAL:
-            # A second goal while the run has one (and frames) is the next run's, ahead of its scenario.
+            # The player repeats the goal with every frame, stamped with the frame's time (for a stack that joins
+            # late). Within a run the stamps grow: a goal stamped later than the run's last one is a repeat and
+            # says nothing new. (Kept, the repeats were deferred as the next run's, below, and a scenario envelope
+            # arriving late behind them was deferred too and never adopted by its run.)
+            key = stamp_key(msg.header.stamp)
             run = self.run
+            if run is not None and run.goal is not None and key > self._goal_key:
+                self._goal_key = key
+                return
             if self._pending is not None or self._deferred or (
                     run is not None and run.goal is not None and run.oracle is not None):
-                self._deferred.append((topic, msg))
-            else:
+                # Another goal while the run has one (and frames), or behind the next run's waiting messages: the
+                # next run's, ahead of its scenario. Its repeats are not kept.
                 goal = pose_to_goal(msg)
-                run = self._ensure_run()
-                run.goal = goal
-                if run.oracle is not None:
-                    run.oracle.set_goal(goal)
+                if goal != self._deferred_goal:
+                    self._deferred.append((topic, msg))
+                    self._deferred_goal = goal
+                return
+            goal = pose_to_goal(msg)
+            run = self._ensure_run()
+            run.goal, self._goal_key = goal, key
+            if run.oracle is not None:
+                run.oracle.set_goal(goal)
 
     def _frame_message(self, topic: str, msg: Any) -> None:
         """Route a frame message to the current run, the next one, or nowhere (a late one of a finished run).
@@ -246,9 +261,11 @@ class JudgeSession:
                 return self._start(envelope) if self.run is None else None
         if run is None:
             last = self._judged_envelope
-            if envelope is not None and last is not None and envelope.id == last.id:
+            if envelope is not None and envelope.id == (last.id if last is not None else self._judged_id):
                 # The judged run's scenario delivered again (transient-local history reaching a late-matched
-                # reader): no new run. A replay of it starts with the player's 'started' status, which takes it.
+                # reader), or only now (the run was named by its 'started' status): no new run. A replay of it
+                # starts with the player's 'started' status, which takes it.
+                self._judged_envelope = envelope
                 return None
             if envelope is None and last is not None and sid == last.id:
                 envelope = last
@@ -293,6 +310,7 @@ class JudgeSession:
         """Judge the current run, then start the next with what was kept for it (messages, assembled frames)."""
         self.finish(status)
         deferred, self._deferred = self._deferred, []
+        self._deferred_goal = None
         frames, self._next_frames = self._next_frames, []
         nxt, self._next = self._next, None
         if nxt is not None:
@@ -312,7 +330,8 @@ class JudgeSession:
         if run.notes:
             verdict = replace(verdict, notes=tuple(run.notes) + verdict.notes)
         self.verdicts.append(verdict)
-        self._judged_envelope = run.envelope
+        self._judged_envelope, self._judged_id = run.envelope, run.scenario_id
+        self._goal_key = -1
         self.run = None
         self.assembler.reset()
         if self._used:                            # the next run takes the next generation of every topic
@@ -338,6 +357,7 @@ class JudgeSession:
     def _end_run_without_current(self) -> None:
         """Start what was kept for the next run when there is no current run to judge."""
         deferred, self._deferred = self._deferred, []
+        self._deferred_goal = None
         frames, self._next_frames = self._next_frames, []
         nxt, self._next = self._next, None
         if nxt is not None:

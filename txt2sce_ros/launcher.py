@@ -209,7 +209,10 @@ def run_graph(cfg: GraphConfig, *, timeout: float = 600.0, quiet: bool = False) 
                 break
             time.sleep(0.1)
     finally:
-        for name in reversed(list(procs)):
+        # The player stops last: what it published and a reader has not yet received (a sample the transport
+        # dropped under load is sent again when the reader asks) is lost once it exits, so the monitor drains
+        # first, while the player can still answer.
+        for name in sorted(reversed(list(procs)), key=lambda n: n == "player"):
             codes[name] = _stop(procs[name])
     return codes
 

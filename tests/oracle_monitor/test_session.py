@@ -191,3 +191,51 @@ def test_the_judged_runs_scenario_delivered_again_starts_no_run() -> None:
     replay = s.verdicts[-1]
     assert len(s.verdicts) == 2 and (replay.scenario_id, replay.verdict) == ("a", Verdict.PASS)
     assert not any("road network not loaded" in n for n in replay.notes)
+
+
+def _player_messages(sid: str, frames, goal: Goal, end: RunStatus, late_scenario_at: int) -> list[tuple[str, object]]:
+    """What the player node publishes for a run, the goal again with every frame, stamped with its time (before
+    its ego odometry, as `PlayerNode.publish_frame` does), with the generator's envelope delivered late: after frame
+    `late_scenario_at` (a reader matched to the generator after the run began gets it from transient-local
+    history then)."""
+    out = [(c.TOPIC_RUN_STATUS, _status(sid, "started"))]
+    for k, f in enumerate(frames):
+        if k == late_scenario_at:
+            out.append((c.TOPIC_SCENARIO, _env(sid)))
+        out.append((c.TOPIC_TRAFFIC_LIGHTS, ros_io.lights_to_diagnostics(f.lights, f.t)))
+        out.extend((c.TOPIC_OBJECTS_ODOM, ros_io.entity_to_odometry(o)) for o in f.objects)
+        out.append((c.TOPIC_OBJECTS_MARKERS, ros_io.frame_to_markers(f)))
+        out.append((c.TOPIC_GOAL, ros_io.goal_to_pose(goal, f.t)))
+        out.append((c.TOPIC_EGO_ODOM, ros_io.entity_to_odometry(f.ego)))
+    out.append((c.TOPIC_RUN_STATUS, ros_io.string_msg(end.to_json())))
+    return out
+
+
+def test_the_goal_with_every_frame_and_a_scenario_arriving_mid_run() -> None:
+    # Seen in the node graph under load: the goal repeated with every frame was deferred as the next run's, the
+    # envelope arriving mid-run behind those repeats was deferred too, and after the verdict it opened a phantom
+    # run ("nothing observed") while the real one had been judged without its road network.
+    a = straight_run(lambda t: 10.0, 4.0, objects=lambda t: [car("lead", t, 36.2)])        # contact at ~3.17 s
+    b = straight_run(lambda t: 10.0, 6.0, objects=lambda t: [car("far", t, 200.0, y=7.0)])  # reaches the goal
+    msgs = (_player_messages("a", a, Goal(60.0, 0.0, 0.0), RunStatus("a", "finished", 4.0, "time_limit"), 22)
+            + _player_messages("b", b, Goal(60.0, 0.0, 0.0), RunStatus("b", "finished", 6.0, "goal_reached"), 0))
+    for seed in [None, *range(12)]:
+        s = JudgeSession(PARAMS)
+        for topic, msg in (msgs if seed is None else _lagging_delivery(msgs, seed)):
+            s.on_message(topic, msg)
+        s.close()
+        got = [(v.scenario_id, v.verdict, v.frames) for v in s.verdicts]
+        assert got == [("a", Verdict.FAIL, len(a)), ("b", Verdict.PASS, len(b))], (seed, got)
+        assert s.verdicts[0].category_names() == ("Collisions",), seed
+        assert not any("no road network" in n for v in s.verdicts for n in v.notes), seed
+
+
+def test_a_run_named_by_its_status_then_its_late_scenario_starts_no_run() -> None:
+    # The envelope of a run judged under the name its 'started' status gave arrives only after the verdict.
+    s = JudgeSession(PARAMS)
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "started"))
+    _feed(s, straight_run(lambda t: 10.0, 6.0))
+    s.on_message(c.TOPIC_RUN_STATUS, _status("a", "finished", 6.0, "goal_reached"))
+    s.on_message(c.TOPIC_SCENARIO, _env("a"))
+    s.close()
+    assert [(v.scenario_id, v.verdict) for v in s.verdicts] == [("a", Verdict.PASS)]

@@ -56,6 +56,11 @@ def node_lifetime(node: N, on_exit: Callable[[], None] | None = None) -> Iterato
         yield node
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except Exception:
+        # A stop signal shuts the context down under a running spin, and rclpy may then fail making its wait set
+        # ("the given context is not valid") instead of raising ExternalShutdownException: a stop all the same.
+        if rclpy.ok():
+            raise
     finally:
         if on_exit is not None:
             on_exit()
