@@ -36,6 +36,22 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'down. The driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another '
         'vehicle changing into the same lane made contact with the rear bumper of the Cruise AV, damaging the '
         'Cruise AV\u2019s bumper. There were no injuries and police were not called.'),
+    'nhtsa-sgo-ads-30270-10673-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10673, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report '
+        'data',
+        'On May [XXX], 2025 at 9:59 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving a box truck and trailer on [XXX] at [XXX]. The Waymo AV was '
+        'traveling southeastbound on [XXX] in the leftmost lane when it stopped at the intersection of [XXX] '
+        'to yield to a box truck hauling a trailer within the intersection. The heavy truck was facing '
+        'southwest, apparently attempting a multi-point turn. The truck stopped and the Waymo AV began to '
+        'pass the truck on the left. The truck began reversing as the Waymo AV was passing and the Waymo AV '
+        'came to a stop to yield to the truck. While the Waymo AV remained stopped, the truck continued to '
+        'reverse, and the rear passenger side of the trailer made contact with the front passenger side of '
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        'The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 1 of Standing '
+        'General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct '
+        'its reporting with additional information as it may become available.'),
 }
 
 
@@ -60,3 +76,11 @@ def test_a_party_behind_that_changes_lanes_with_the_av_stays_behind_it_in_its_la
     # lane the AV moved into (the AV's move puts a party on that side only when the party kept its lane).
     p = _party("csvr-cruise-20190524-s14")
     assert (p.position, p.lane) == ("R6", "same")
+
+
+def test_a_pass_told_of_the_av_in_its_own_clause_is_not_the_party_s() -> None:
+    # "The truck began reversing as the Waymo AV was passing and the Waymo AV came to a stop to yield to the truck":
+    # the AV passed the truck; the truck, facing southwest in the intersection while the AV went southeast, is on
+    # the crossing road to the AV's left (R1), not behind it.
+    p = _party("nhtsa-sgo-ads-30270-10673-v1")
+    assert (p.position, p.lane) == ("R1", None)

@@ -52,8 +52,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
         return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
     # (a pass of the AV itself, not of a thing of its: "went past the AV's stop line")
+    # (a word between the verb and the AV describes it, "passed the stopped EGO"; a clause word starts another
+    # clause: "began reversing as EGO was passing and EGO came to a stop" is the AV's pass)
     passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|past|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?"
-                        r"(?:\w+\s+)?(?:EGO|it)\b(?!'s)(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
+                        r"(?:(?!(?:and|as|when|while|then|but|or|so)\s)\w+\s+)?(?:EGO|it)\b(?!'s)"
+                        r"(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind. Oncoming is
