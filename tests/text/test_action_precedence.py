@@ -84,6 +84,17 @@ _TEXT: dict[str, tuple[str, str]] = {
         ' this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was '
         'towed away. Waymo may supplement or correct its reporting with additional information as it may '
         'become available.'),
+    'csvr-waymo-20220517-s160': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 160, column 'Accident Detail Description'), transcribed",
+        'On May 17, 2022 at 1:26 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on Stanyan Street at McAllister Street. The '
+        'Waymo AV was proceeding south on Stanyan Street in autonomous mode, and preparing to make a left '
+        'turn onto McAllister Street. As the Waymo AV entered the intersection, it slowed to yield to '
+        'northbound traffic on Stanyan Street. A passenger car approached from behind and made contact with '
+        'the rear of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
+        'autonomous mode, and a test driver was present (in the driver’s seating position). Both vehicles '
+        'sustained minor damage.'),
 }
 
 
@@ -149,3 +160,15 @@ def test_the_av_s_state_told_after_the_party_in_a_clause_of_the_same_moment() ->
     for told in (text, moved):
         sk = extract(told, 'nhtsa-sgo-ads-30270-10557-v1')
         assert (sk.ego.start, sk.ego.actions) == ("stopped", "")
+
+
+def test_a_run_told_after_the_av_s_move_in_a_clause_of_the_same_moment_came_first() -> None:
+    # "As the Waymo AV entered the intersection, it slowed to yield to northbound traffic", told the other way round
+    # ("It slowed to yield to northbound traffic on Stanyan Street as the Waymo AV entered the intersection"): the
+    # run is the background the slowing happened against (the gold: `ac`), not a move after it.
+    text = _TEXT['csvr-waymo-20220517-s160'][1]
+    moved = re.sub(r"As (the Waymo AV entered the intersection), it (slowed [^.]*)\.", r"It \2 as \1.", text)
+    assert moved != text
+    for told in (text, moved):
+        sk = extract(told, 'csvr-waymo-20220517-s160')
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "ac")

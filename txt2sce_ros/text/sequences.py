@@ -270,7 +270,11 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
             and before_contact(d, a.sent, a.pos) and not _done_before(d, a)]
     acts = _ended_in_retold_move(d, [_driveway_turn(d, a) for a in acts])
     # "was proceeding through the intersection after stopping": the stop came first, though told last.
-    acts.sort(key=lambda a: (a.sent, not (a.code == "S" and _AFTER.search(d.sents[a.sent][:a.pos])), a.pos))
+    # "It slowed to yield to northbound traffic as EGO entered the intersection": a run told in a clause of the same
+    # moment after the main one is the background the main clause's move happened against, so it comes first.
+    told = list(acts)
+    acts.sort(key=lambda a: (a.sent, not (a.code == "S" and _AFTER.search(d.sents[a.sent][:a.pos])),
+                             not _background(d, a, told), a.pos))
     acts = _during_first(d, acts)
     # "was stopped in traffic ... on southbound San Antonio Road headed toward Charleston Road": after a stop, the
     # direction it faced is no move.
@@ -415,6 +419,24 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
 _DONE_BEFORE = compile_gated(r"(?:(?:^|[,;])\W*(?:(?:shortly|just|immediately|right|soon)\s+)?after|\bhad|\bhaving)\s+"
                              r"(?:just\s+)?(?:(?:EGO|EGOD|it)\s+(?:had\s+)?|having\s+)?(?:(?:completing|completed|making|made|turning|"
                              r"turned|finishing|finished|executing|executed)\b[^,.;]*)?$", re.I)
+
+
+#: A clause of the same moment that follows its main clause (" as EGO entered", ", while EGO was approaching").
+_TRAILING_SAME_MOMENT = compile_gated(r"(?:,\s*|\s)(?:just\s+)?(?:as|while)\s+(?:EGO|it)\b", re.I)
+
+
+def _background(d: Doc, a: Act, acts: list[Act]) -> bool:
+    """Is the AV's run `a` told in a clause of the same moment after a main clause that tells another move of the
+    AV in the same sentence ("It slowed to yield ... as EGO entered the intersection")?"""
+    if a.code not in "aA":
+        return False
+    s = d.sents[a.sent]
+    opener = None
+    for m in _TRAILING_SAME_MOMENT.finditer(s, 0, a.pos):
+        opener = m  # the last one before the run
+    if opener is None or ("," in s[opener.end():a.pos] or ";" in s[opener.end():a.pos]):
+        return False  # no such clause, or the run is past its end
+    return any(x.sent == a.sent and x.pos < opener.start() and x.code not in "aAS" for x in acts)
 
 
 def _done_before(d: Doc, a: Act) -> bool:
