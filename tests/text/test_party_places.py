@@ -52,6 +52,17 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 1 of Standing '
         'General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct '
         'its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9436-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9436, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 12:56 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Beverly '
+        'Hills, California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was stopped '
+        'on the right side of southwestbound [XXX] for a passenger pick-up when an SUV traveling in the '
+        'rightmost lane of southwestbound [XXX] passed the Waymo AV. As the SUV passed the stopped Waymo AV, '
+        'the passenger side of the SUV made contact with the driver side of the Waymo AV. At the time of the '
+        'impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. '
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
 }
 
 
@@ -84,3 +95,11 @@ def test_a_pass_told_of_the_av_in_its_own_clause_is_not_the_party_s() -> None:
     # the crossing road to the AV's left (R1), not behind it.
     p = _party("nhtsa-sgo-ads-30270-10673-v1")
     assert (p.position, p.lane) == ("R1", None)
+
+
+def test_a_lane_named_on_the_road_is_on_the_left_of_an_av_standing_at_the_right_edge() -> None:
+    # "The Waymo AV was stopped on the right side of southwestbound [XXX] for a passenger pick-up when an SUV
+    # traveling in the rightmost lane of southwestbound [XXX] passed the Waymo AV": at the curb the AV is in no
+    # travel lane, so the rightmost one is on its left (R6, left), not to its right.
+    p = _party("nhtsa-sgo-ads-30270-9436-v1")
+    assert (p.position, p.lane) == ("R6", "left")

@@ -19,7 +19,7 @@ from .fastre import compile_gated
 from .actions import Act, find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
-from .relations import av_lane_rank, place
+from .relations import AV_AT_CURB, av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
@@ -54,9 +54,6 @@ def _came_into_lane_from(d: Doc) -> str | None:
     return side
 
 
-# The AV standing at the curb when the story opens (the first sentence that places it).
-_AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
-                            r"(?:parked|stopped|pulled\s+over)\s+(?:at|along|against|by)\s+the\s+(?:right\s+)?curb\b", re.I)
 
 
 def sentence_starts(t: str, sents: list[str]) -> list[int]:
@@ -272,7 +269,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # Passing the AV from behind it in its own lane takes a move to the side it passed on.
             acts = (acts or "a") + ("f" if side == "left" else "g")
         if pos == "R6" and lane == "same" and ego_start == "stopped" and start == "moving" and \
-                not set(acts) & set("fgklm") and _AV_AT_CURB.search(t):
+                not set(acts) & set("fgklm") and AV_AT_CURB.search(t):
             # The AV parked at the curb ("was parallel parked along the curb when it began to pull away"): a
             # vehicle coming up behind it in traffic is in the travel lane, on its left.
             lane = "left"

@@ -265,7 +265,19 @@ def av_lane_rank(d: Doc) -> float | None:
             if lm and not fre.match(r"(?:into|onto)\b", lm.group(0), re.I) and \
                     not fre.search(r"\b(?:into|onto|toward)\s+the\s+\S+\s*$", clause[:lm.start() + 5], re.I):
                 return _lane_rank(lm)
+    if AV_AT_CURB.search(d.text):
+        # Standing at the right curb, in no travel lane: every lane named on the road is on its left.
+        return _CURB_RANK
     return None
+
+
+_CURB_RANK = 10.0  # beyond the rightmost lane (9): the curb, the parking lane
+# The AV standing at the right curb, or at the right edge of the road ("was parked along the curb", "was stopped on
+# the right side of southwestbound [XXX] for a passenger pick-up").
+AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
+                           r"(?:parked|stopped|pulled\s+over)\s+(?:(?:at|along|against|by)\s+the\s+(?:right\s+)?curb\b|"
+                           r"on\s+the\s+right\s+(?:side|edge|shoulder)\s+of\s+(?:the\s+)?(?:road|roadway|street|"
+                           r"(?:north|south|east|west)+bound\b))", re.I)
 
 
 def gather(d: Doc, e: Entity) -> list[Cue]:
