@@ -95,6 +95,16 @@ _TEXT: dict[str, tuple[str, str]] = {
         'the rear of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
         'autonomous mode, and a test driver was present (in the driver’s seating position). Both vehicles '
         'sustained minor damage.'),
+    'dmvca-waymo-20230711-r497': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 497, column '
+        '"Accident Detail Description")',
+        'On July 11, 2023 at 10:13 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Martin Avenue at Mullen Avenue. While'
+        ' completing a right turn from Martin Avenue onto Mullen Avenue in autonomous mode, the Waymo AV '
+        'slowed to a stop while entering a narrow roadway. As the Waymo AV started to slowly proceed forward,'
+        ' the test driver transitioned the vehicle to manual mode and proceeded forward, making contact with '
+        'a parked passenger vehicle. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged '
+        'and a test driver was operating the Waymo AV in manual mode. Both vehicles sustained damage.'),
 }
 
 
@@ -172,3 +182,17 @@ def test_a_run_told_after_the_av_s_move_in_a_clause_of_the_same_moment_came_firs
     for told in (text, moved):
         sk = extract(told, 'csvr-waymo-20220517-s160')
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ac")
+
+
+def test_a_turn_under_way_told_after_the_av_s_move_in_a_clause_of_the_same_moment_came_first() -> None:
+    # "While completing a right turn from Martin Avenue onto Mullen Avenue in autonomous mode, the Waymo AV slowed
+    # to a stop while entering a narrow roadway", told with the turn's clause last ("... slowed to a stop while
+    # entering a narrow roadway while completing a right turn ..."): it was turning, then stopped (`ehi`, as read
+    # in the order told).
+    text = _TEXT['dmvca-waymo-20230711-r497'][1]
+    moved = re.sub(r"While (completing a right turn [^,]*), the Waymo AV (slowed to a stop [^.]*)\.",
+                   r"The Waymo AV \2 while \1.", text)
+    assert moved != text
+    for told in (text, moved):
+        sk = extract(told, 'dmvca-waymo-20230711-r497')
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "ehi")

@@ -421,14 +421,16 @@ _DONE_BEFORE = compile_gated(r"(?:(?:^|[,;])\W*(?:(?:shortly|just|immediately|ri
                              r"turned|finishing|finished|executing|executed)\b[^,.;]*)?$", re.I)
 
 
-#: A clause of the same moment that follows its main clause (" as EGO entered", ", while EGO was approaching").
-_TRAILING_SAME_MOMENT = compile_gated(r"(?:,\s*|\s)(?:just\s+)?(?:as|while)\s+(?:EGO|it)\b", re.I)
+#: A clause of the same moment that follows its main clause (" as EGO entered", ", while EGO was approaching",
+#: " while completing a right turn").
+_TRAILING_SAME_MOMENT = compile_gated(r"(?:,\s*|\s)(?:just\s+)?(?:as|while)\s+(?:EGO\b|it\b|\w+ing\b)", re.I)
 
 
 def _background(d: Doc, a: Act, acts: list[Act]) -> bool:
-    """Is the AV's run `a` told in a clause of the same moment after a main clause that tells another move of the
-    AV in the same sentence ("It slowed to yield ... as EGO entered the intersection")?"""
-    if a.code not in "aA":
+    """Is the AV's run `a` (or a turn or lane change told under way) told in a clause of the same moment after a
+    main clause that tells another move of the AV in the same sentence ("It slowed to yield ... as EGO entered the
+    intersection", "slowed to a stop ... while completing a right turn")?"""
+    if a.code not in "aA" and not (a.under_way and a.code in "defg"):
         return False
     s = d.sents[a.sent]
     opener = None
