@@ -63,6 +63,46 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. '
         'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10726-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10726, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report '
+        'data',
+        'On April [XXX], 2025 at 9:07 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los '
+        'Angeles, California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was '
+        'traveling eastbound on [XXX] and stopped in the dedicated left turn lane, preparing to make an '
+        'unprotected left turn onto [XXX]. As the Waymo AV remained stopped, an SUV that was traveling '
+        'westbound on [XXX] in the middle shared turn lane, directly in front of the Waymo AV, maneuvered '
+        'from the middle lane to the second from the left lane and the driver side of the SUV made contact '
+        "with the rear driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+        'was engaged in autonomous mode. The SUV sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'dmvca-waymo-20230507-r466': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 466, '
+        'column "Accident Detail Description")',
+        'On May 7, 2023 at 3:27 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a cyclist on Bay Street near Mason Street. The Waymo AV was '
+        'traveling westbound in the left lane on Bay Street and had just passed Mason Street when it '
+        'detected an oncoming pickup truck traveling eastbound in the Waymo AV’s lane. The Waymo AV stopped '
+        'and the pickup truck re-entered the correct lane for eastbound traffic and passed the Waymo AV. The '
+        'pickup truck was immediately followed by a large group of cyclists traveling eastbound in multiple '
+        'lanes of the roadway, including the right lanes and on the wrong side of the double-yellow '
+        'centerline. The Waymo AV remained stopped as the oncoming cyclists rode around both sides of the '
+        'Waymo AV. One cyclist then made contact with the front of the stationary Waymo AV, and then '
+        'immediately left the scene. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
+        'autonomous mode. The Waymo AV sustained damage.'),
+    'dmvca-cruise-20230817-r515': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 515, '
+        'column "Accident Detail Description")',
+        'A Cruise autonomous vehicle ("AV"), operating in driverless autonomous mode, was at a complete stop '
+        'in response to a stop sign on eastbound 17th Street at the intersection with Vermont Street. As the '
+        'AV began to proceed straight, a gray Honda Odyssey traveling westbound on 17th Street on the '
+        'opposite side of the intersection from the AV entered the intersection and veered into the AV’s '
+        'lane of travel. The AV stopped in response as the Honda Odyssey continued traveling in the AV’s '
+        'lane of travel through the intersection and, shortly thereafter, the Honda Odyssey made contact '
+        'with the AV, damaging the front and rear driver side doors, front driver side radar assembly and '
+        'rear driver side tire of the AV. The parties exchanged information. There were no reported injuries '
+        'and the AV was towed from the scene.'),
 }
 
 
@@ -103,3 +143,17 @@ def test_a_lane_named_on_the_road_is_on_the_left_of_an_av_standing_at_the_right_
     # travel lane, so the rightmost one is on its left (R6, left), not to its right.
     p = _party("nhtsa-sgo-ads-30270-9436-v1")
     assert (p.position, p.lane) == ("R6", "left")
+
+
+def test_a_party_coming_the_other_way_in_the_av_s_lane_is_head_on_in_it_also_at_a_junction() -> None:
+    # "an SUV that was traveling westbound on [XXX] in the middle shared turn lane, directly in front of the Waymo
+    # AV" (the AV eastbound, stopped in the left turn lane at the junction): on the AV's own road, in its lane.
+    p = _party("nhtsa-sgo-ads-30270-10726-v1")
+    assert (p.position, p.lane) == ("R7", "same")
+    # "an oncoming pickup truck traveling eastbound in the Waymo AV's lane"
+    p = _party("dmvca-waymo-20230507-r466", 1)
+    assert (p.category, p.position, p.lane) == ("car", "R7", "same")
+    # "traveling westbound on 17th Street on the opposite side of the intersection from the AV entered the
+    # intersection and veered into the AV's lane of travel": it got there; it came from the opposite approach.
+    p = _party("dmvca-cruise-20230817-r515")
+    assert (p.position, p.lane) == ("R2", None)

@@ -111,6 +111,15 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         if (side := side_named(ctx)) and not fre.search(r"\bbehind\b|\bfrom\s+the\s+rear\b", ctx, re.I):
             return "R5", side, True  # "on its left ... traveling in the same direction": beside it, on that side
     if oncoming or rel == 180:
+        told = next((m for m in e.mentions if m.sent not in d.summary), e.first)
+        opening = _own_clause(d.sents[told.sent][told.end:told.end + 160])
+        if (own_lane := _IN_EGO_LANE.search(opening)) and not _INTO_A_LANE.search(opening[:own_lane.start()]):
+            # Coming the other way in the AV's own lane when first told ("an oncoming pickup truck traveling
+            # eastbound in EGO's lane", "traveling westbound ... in the middle shared turn lane, directly in front
+            # of EGO"): on the AV's own road, head-on, also at a junction (sketch.md: a party on the AV's approach
+            # road is R5-R7). Not one that got there later ("entered the intersection and veered into EGO's lane of
+            # travel ... continued traveling in EGO's lane"): it came from where it was first.
+            return "R7", "same", True
         if junction:
             return "R2", None, True
         # In the AV's own lane: said ("the wrong way"), or passing the AV on its right (the oncoming lane is on its
@@ -221,6 +230,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     return "R5", "same", False
 
 
+# In the AV's own lane or right before it, said of a party ("in EGO's lane", "directly in front of EGO"); not one
+# only partly in it (a straddle of the centre line), nor one moving into it ("crossed into EGO's lane").
+_IN_EGO_LANE = compile_gated(r"(?<!partially\s)(?<!partly\s)\b(?:in|within)\s+EGO's\s+(?:travel\s+)?lane\b|"
+                             r"\b(?:directly|immediately)\s+in\s+front\s+of\s+EGO\b", re.I)
+_INTO_A_LANE = compile_gated(r"\binto\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\b", re.I)
 _REAR_CORNER = compile_gated(r"\bEGO's\s+(?:rear\s+)?(left|right|driver|passenger)(?:'s)?(?:[- ]side)?[- ](?:rear\s+)?"
                              r"(?:corner|quarter|tail\s*(?:light|lamp))|\b(?:the\s+)?(?:rear\s+)?(left|right|driver|"
                              r"passenger)(?:'s)?(?:[- ]side)?[- ]rear\s+(?:corner|quarter)\w*\s+of\s+EGO\b", re.I)
