@@ -105,6 +105,30 @@ _TEXT: dict[str, tuple[str, str]] = {
         ' the test driver transitioned the vehicle to manual mode and proceeded forward, making contact with '
         'a parked passenger vehicle. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged '
         'and a test driver was operating the Waymo AV in manual mode. Both vehicles sustained damage.'),
+    'nhtsa-sgo-ads-30270-8150-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8150,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 11:39 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], '
+        'California was in a collision involving an SUV near [XXX]. The Waymo AV was stopped curbside for a '
+        'pickup facing north on the east side of [XXX] when an SUV that had been stopped partially in-lane '
+        'behind the Waymo AV passed the Waymo AV on the left . The passenger side rear door of the SUV made '
+        'contact with the rear driver side corner of the Waymo AV. At the time of the impact, the Waymo AVs '
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'csvr-waymo-20240918-s334': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 334, column 'Accident Detail Description'), transcribed",
+        'On September 18, 2024 at 8:44 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a van on Potrero Avenue at 16th Street. The Waymo'
+        ' AV was stopped in a queue of traffic in the leftmost of two through lanes on southbound Potrero '
+        'Avenue at the intersection with 16th Street when a van traveling behind the Waymo AV passed the '
+        'Waymo AV on the left to enter the dedicated left turn lane. The passenger side of the van made '
+        'contact with the rear left sensor of the Waymo AV. Without stopping, the van then crossed the double'
+        ' yellow line to the northbound side of Potrero Avenue, turned left onto eastbound 16th Street, and '
+        "left the scene. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        "mode, and a test driver was present (in the driver's seating position). The Waymo AV sustained "
+        'damage to the rear left sensor housing and assembly.'),
 }
 
 
@@ -196,3 +220,14 @@ def test_a_turn_under_way_told_after_the_av_s_move_in_a_clause_of_the_same_momen
     for told in (text, moved):
         sk = extract(told, 'dmvca-waymo-20230711-r497')
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ehi")
+
+
+def test_a_pass_told_as_going_past_reads_as_passed() -> None:
+    # "a van traveling behind the Waymo AV went past the Waymo AV on the left to enter the dedicated left turn lane",
+    # "an SUV that had been stopped partially in-lane behind the Waymo AV went past the Waymo AV on the left": the
+    # same passes as "passed" (the gold: `af`; stopped, `if`), the lane entered by way of it no mere intention.
+    for verb in ("passed", "went past"):
+        p = _told('csvr-waymo-20240918-s334', r"\bpassed\b", verb).npcs[0]
+        assert (p.start, p.actions) == ("moving", "af"), verb
+        p = _told('nhtsa-sgo-ads-30270-8150-v1', r"\bpassed\b", verb).npcs[0]
+        assert (p.start, p.actions) == ("stopped", "if"), verb

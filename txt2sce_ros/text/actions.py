@@ -271,6 +271,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
     ("a", r"\b(?:(?<!of\s)travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
+          # "went past EGO on the left": a pass told with a verb of going
+          r"(?:went|going|drove|driving|moved|moving|rode|riding)\s+past|"
           r"drift(?:ed|ing|s)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
@@ -383,8 +385,8 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
                      r"to\s+(?:\w+\s+){0,2}$", re.I)
 # "passed EGO on the left to enter the left turn lane": a lane taken by way of a move the party made is no mere
 # intention (the pass is how it got there).
-_PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|went\s+around|drove\s+around|maneuvered\s+around|swerved\s+around)"
-                           r"\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
+_PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|(?:went|drove|moved)\s+past|went\s+around|drove\s+around|"
+                              r"maneuvered\s+around|swerved\s+around)\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
 _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
                         r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|"
                         # "had to stop for a pedestrian", "was forced to brake": it did
