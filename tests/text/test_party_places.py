@@ -103,6 +103,22 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'with the AV, damaging the front and rear driver side doors, front driver side radar assembly and '
         'rear driver side tire of the AV. The parties exchanged information. There were no reported injuries '
         'and the AV was towed from the scene.'),
+    'nhtsa-sgo-ads-30270-9376-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9376, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 10:36 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was alleged to have contributed to a collision between an SUV and a concrete '
+        'median curb on [XXX] at [XXX]. The Waymo AV was traveling southbound on [XXX] in the right of two '
+        'travel lanes with its left turn signal activated, and traversed through the intersection with [XXX] '
+        'with an SUV following slightly behind and to the left of the Waymo AV in the adjacent travel lane. '
+        'As the Waymo AV exited the intersection with its left turn signal still activated, it slowed and '
+        'moved slightly to the left within its lane, preparing to change lanes due to a stopped truck ahead '
+        'within the right lane. As the SUV in the left lane was passing the Waymo AV, it maneuvered to the '
+        'left in its lane, and the driver side made contact with the center concrete median curb. At the '
+        "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV sustained a "
+        'flat tire, and the driver alleged an injury. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }
 
 
@@ -157,3 +173,13 @@ def test_a_party_coming_the_other_way_in_the_av_s_lane_is_head_on_in_it_also_at_
     # intersection and veered into the AV's lane of travel": it got there; it came from the opposite approach.
     p = _party("dmvca-cruise-20230817-r515")
     assert (p.position, p.lane) == ("R2", None)
+
+
+def test_the_av_s_lane_told_as_one_of_a_count_places_the_lanes_named_on_the_road() -> None:
+    # "The Waymo AV was traveling southbound on [XXX] in the right of two travel lanes ... due to a stopped truck
+    # ahead within the right lane": the AV is in the right lane, so the truck ahead in it is in the AV's lane (R5,
+    # same), and "the SUV in the left lane" passing it is on its left.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-9376-v1"][1], "nhtsa-sgo-ads-30270-9376-v1")
+    truck = next(p for p in sk.npcs if p.category == "truck")
+    assert (truck.position, truck.lane) == ("R5", "same")
+    assert all(p.lane == "left" for p in sk.npcs if p.category == "car")

@@ -118,10 +118,13 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
 # AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
 # "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
-_ABS_LANE = compile_gated(r"\b(?:in|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
+_ABS_LANE = compile_gated(r"\b(?:in|within|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
-                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b", re.I)
+                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b|"
+                          # "in the right of two travel lanes", "in the leftmost of two through lanes"
+                          r"\b(?:in|from|into|of)\s+the\s+(left|right)(?:-?most)?\s+of\s+(?:the\s+)?(?:two|three|four|[234])\s+"
+                          r"(?:[\w-]+\s+)?lanes\b", re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
 # The AV is the subject of the clause that ends in "behind it" ("EGO, which had stopped behind it", "EGO came to a
 # stop behind it"): the AV is behind. Not "EGO slowed for a motorcyclist behind it", where "it" is the AV.
@@ -229,8 +232,8 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
 
 
 def _lane_rank(m: re.Match[str]) -> float:
-    mod, side, from_side, number, numeral = (g.lower() if g else "" for g in m.groups())
-    number = number or numeral
+    mod, side, from_side, number, numeral, side_of = (g.lower() if g else "" for g in m.groups())
+    number, side = number or numeral, side or side_of
     if number:
         return float(_NUMBERS.get(number) or int(number)) - 1.0
     if side in ("middle", "center", "centre"):
