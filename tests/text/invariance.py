@@ -324,6 +324,7 @@ REWRITES: tuple[Rewrite, ...] = (
             _sub(r"\b(?:was|were) (traveling|travelling|driving|proceeding|heading)\b",
                  lambda m: _SIMPLE_PAST[m.group(1)])),
     Rewrite("passed -> went past", _sub(r"\bpassed\b", "went past")),
+    Rewrite("was stopped -> had stopped", _sub(r"\bwas stopped\b", "had stopped")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

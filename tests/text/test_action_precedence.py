@@ -129,6 +129,24 @@ _TEXT: dict[str, tuple[str, str]] = {
         "left the scene. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
         "mode, and a test driver was present (in the driver's seating position). The Waymo AV sustained "
         'damage to the rear left sensor housing and assembly.'),
+    'csvr-waymo-20200214-s53': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 53, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode turning right from eastbound '
+        'Park Drive onto southbound Miramonte Avenue in Mountain View when it was rear-ended. The Waymo AV '
+        'was yielding to approaching traffic when a passenger vehicle made contact with the Waymo AV’s rear '
+        'bumper at approximately 6 MPH. The Waymo AV sustained minor damage to its rear bumper, and the '
+        'passenger vehicle sustained minor damage to its front bumper. No injuries were reported at the '
+        'scene.'),
+    'csvr-cruise-20230615-s252': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 252, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'eastbound on Sacramento Street between Lyon Street and Baker Street. The Cruise AV approached a '
+        'motorized articulating boom lift (“ABL”), which was stopped in the Cruise AV’s lane of travel. As '
+        'the Cruise AV began to maneuver around and to the left of the ABL, the Cruise AV made contact with '
+        'the arm of the ABL, which was elevated above the roadway. This caused damage to the Cruise AV’s roof'
+        ' Lidar assembly. There were no reported injuries.'),
 }
 
 
@@ -231,3 +249,15 @@ def test_a_pass_told_as_going_past_reads_as_passed() -> None:
         assert (p.start, p.actions) == ("moving", "af"), verb
         p = _told('nhtsa-sgo-ads-30270-8150-v1', r"\bpassed\b", verb).npcs[0]
         assert (p.start, p.actions) == ("stopped", "if"), verb
+
+
+def test_a_state_told_with_had_reads_as_with_was() -> None:
+    # "approached a motorized articulating boom lift ("ABL"), which had stopped in the Cruise AV's lane of travel":
+    # the relative clause tells of the lift, not of the AV (the gold: `af`, as with "which was stopped");
+    # "had stopped in autonomous mode turning right from eastbound Park Drive onto southbound Miramonte Avenue":
+    # the AV was at the junction it turned at (the gold: junction4, control and signal unknown).
+    for aux in ("was", "had"):
+        sk = _told('csvr-cruise-20230615-s252', r"\bwas stopped\b", f"{aux} stopped")
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "af"), aux
+        sk = _told('csvr-waymo-20200214-s53', r"\bwas stopped\b", f"{aux} stopped")
+        assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "unknown", "unknown"), aux

@@ -319,7 +319,7 @@ _TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!to\b)[\w-]+
 _TURN_NOUN = compile_gated(r"(?:(?:un)?protected\s+)?(?:turn\b(?!\s+from)|left\b|right\b|u-?\s?turn\b)", re.I)
 _FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
-_WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|is)\s+(?:\w+ly\s+)?)?$", re.I)
+_WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|had|is)\s+(?:\w+ly\s+)?)?$", re.I)
 _STANDING = compile_gated(r"\b(?:stopped|stationary|parked|standing|idle|motionless)\s*$", re.I)
 # The side of a turn announced before it is begun ("waiting to turn left", "signaling to make a left turn").
 _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", re.I)

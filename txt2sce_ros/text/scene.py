@@ -21,7 +21,7 @@ _JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bs
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
                           r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
-_AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
+_AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is|had)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
                           r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
