@@ -119,6 +119,18 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'flat tire, and the driver alleged an injury. Waymo is reporting this crash under Request No. 2 of '
         'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9333-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9333, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 10:19 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a mini coach bus on [XXX] at [XXX]. The Waymo AV '
+        'was stopped facing south in the rightmost lane of [XXX] after a passenger dropoff when a mini coach '
+        'bus initiated a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]. As the '
+        'bus passed the stopped Waymo AV, the passenger side of the bus made contact with the rear driver '
+        "side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
+        'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
 }
 
 
@@ -183,3 +195,11 @@ def test_the_av_s_lane_told_as_one_of_a_count_places_the_lanes_named_on_the_road
     truck = next(p for p in sk.npcs if p.category == "truck")
     assert (truck.position, truck.lane) == ("R5", "same")
     assert all(p.lane == "left" for p in sk.npcs if p.category == "car")
+
+
+def test_a_party_heading_across_the_av_s_way_at_a_junction_came_from_the_crossing_road_whatever_it_passed() -> None:
+    # "The Waymo AV was stopped facing south ... when a mini coach bus initiated a wide right turn from eastbound
+    # [XXX] into the left lane of southbound [XXX]. As the bus passed the stopped Waymo AV, ...": eastbound, across
+    # the southbound AV's way, it came from the AV's right (R3); its pass came after.
+    p = _party("nhtsa-sgo-ads-30270-9333-v1")
+    assert (p.position, p.lane) == ("R3", None)

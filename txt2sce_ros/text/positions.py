@@ -64,7 +64,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # the stationary Waymo AV", the AV northbound).
     passed_oncoming = bool(passing) and (rel == 180 or bool(
         fre.search(r"\boncoming\b|\bopposite\s+direction\b", ctx + " " + pre, re.I)))
-    if passing and not passed_oncoming:
+    crossing_heading = junction and rel in (90, 270)
+    if passing and not passed_oncoming and not crossing_heading:
+        # (one heading across the AV's way at a junction came from the crossing road, whatever it passed then: "a
+        # wide right turn from eastbound [XXX] into the left lane of southbound [XXX]. As the bus passed the stopped
+        # EGO")
         # The side it passed on: said with the pass, else the side of the AV it touched, else a side named just
         # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides).
         return "R6", (passing.group(1) or "").lower() or cside or side_named(ctx[passing.end():passing.end() + 30]) or \
