@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import struct
 from types import SimpleNamespace as NS
-from typing import Any, Iterable
+from typing import Any, Iterable, Mapping
 
 from txt2sce_ros.contract import MAP_FRAME, ControlCommand, EntityState, Frame, Goal, TrafficLightState
 
@@ -197,6 +197,25 @@ def _encode_lights_body(lights: tuple[TrafficLightState, ...]) -> bytes:
             w.string(key)
             w.string(value)
     return bytes(w.b[start:])
+
+
+def encode_diagnostics(t: float, statuses: Iterable[tuple[str, int, str, Mapping[str, Any]]]) -> bytes:
+    """`serialize_message(ros_io.make_diagnostics(t, statuses))` with its padding zeroed: rclpy leaves padding
+    bytes uninitialised, so a recorded violation or verdict message had different bytes from run to run."""
+    statuses = list(statuses)
+    w = _W()
+    w.header(t, MAP_FRAME)
+    w.pack(_u32, 4, len(statuses))
+    for name, level, message, values in statuses:
+        w.b += bytes([level]) if isinstance(level, int) else bytes(level)
+        w.string(name)
+        w.string(message)
+        w.string("")                                        # hardware_id
+        w.pack(_u32, 4, len(values))
+        for key, value in values.items():
+            w.string(str(key))
+            w.string(str(value))
+    return bytes(w.b)
 
 
 _f32x2 = struct.Struct("<2f")

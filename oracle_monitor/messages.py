@@ -14,13 +14,15 @@ from typing import Any, Iterable
 
 from txt2sce_ros.ros_io import make_diagnostics
 
+from . import cdr
+
 from .records import EXCLUSIVE, RunVerdict, Violation
 
 OK, WARN, ERROR, STALE = 0, 1, 2, 3
 VERDICT_STATUS = "oracle/verdict"
 
 
-def violations_to_diagnostics(t: float, violations: Iterable[Violation]) -> Any:
+def _violation_statuses(violations: Iterable[Violation]) -> list[tuple[str, int, str, dict[str, str]]]:
     statuses = []
     for v in violations:
         level = OK if v.category is None else ERROR if v.category in EXCLUSIVE else WARN
@@ -28,13 +30,31 @@ def violations_to_diagnostics(t: float, violations: Iterable[Violation]) -> Any:
         statuses.append((f"oracle/{cat}/{v.rule.value}", level, v.detail, {
             "t": repr(v.t), "observed": repr(v.observed), "threshold": repr(v.threshold), "units": v.units,
             "entities": ",".join(v.entities)}))
-    return make_diagnostics(t, statuses)
+    return statuses
+
+
+def _verdict_statuses(verdict: RunVerdict) -> list[tuple[str, int, str, dict[str, str]]]:
+    level = {"pass": OK, "fail": ERROR, "error": STALE}[verdict.verdict.value]
+    return [(VERDICT_STATUS, level, verdict.summary(), {
+        "verdict": verdict.verdict.value, "scenario_id": verdict.scenario_id, "json": verdict.to_json()})]
+
+
+def violations_to_diagnostics(t: float, violations: Iterable[Violation]) -> Any:
+    return make_diagnostics(t, _violation_statuses(violations))
 
 
 def verdict_to_diagnostics(verdict: RunVerdict) -> Any:
-    level = {"pass": OK, "fail": ERROR, "error": STALE}[verdict.verdict.value]
-    return make_diagnostics(verdict.t_end, [(VERDICT_STATUS, level, verdict.summary(), {
-        "verdict": verdict.verdict.value, "scenario_id": verdict.scenario_id, "json": verdict.to_json()})])
+    return make_diagnostics(verdict.t_end, _verdict_statuses(verdict))
+
+
+def violations_cdr(t: float, violations: Iterable[Violation]) -> bytes:
+    """`violations_to_diagnostics` serialised (padding zeroed, no rclpy message made): what a recorder writes."""
+    return cdr.encode_diagnostics(t, _violation_statuses(violations))
+
+
+def verdict_cdr(verdict: RunVerdict) -> bytes:
+    """`verdict_to_diagnostics` serialised (padding zeroed, no rclpy message made)."""
+    return cdr.encode_diagnostics(verdict.t_end, _verdict_statuses(verdict))
 
 
 def verdicts_in(msg: Any) -> list[dict[str, Any]]:

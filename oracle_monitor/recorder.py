@@ -20,12 +20,14 @@ reader sees messages in the order the live monitor saw them, and replay reproduc
 
 from __future__ import annotations
 
+import functools
 import json
 import re
 import struct
 import time
 from array import array
 from collections import Counter
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +41,19 @@ from .steprecords import StepRun
 from .topics import TOPIC_TYPES
 
 _TYPESTORE = None
+
+
+def _cache_rosbags_version() -> None:
+    """rosbags' MCAP writer asks `importlib.metadata` for its own version for every bag it opens (~0.3 ms, a
+    twentieth of recording a run): the installed version does not change while the process runs."""
+    from rosbags.rosbag2 import storage_mcap
+
+    lookup = getattr(storage_mcap, "version", None)
+    if callable(lookup) and not hasattr(lookup, "cache_info"):
+        storage_mcap.version = functools.lru_cache(maxsize=None)(lookup)
+
+
+_cache_rosbags_version()
 
 
 def typestore() -> Any:
@@ -97,6 +112,55 @@ def _index_body(entries: list[Any]) -> bytes:
     return b"".join(parts)
 
 
+class ChunkBuffer:
+    """The pending chunk's bytes (what rosbags keeps in a fresh BytesIO per chunk), in one buffer kept from chunk
+    to chunk and from recorder to recorder (`_CHUNK_POOL`). A fresh buffer per chunk, and a fresh array per packed
+    run of steps, made the recording fault in every page it wrote: ~560 page faults and a fifth of a recorded
+    run's CPU time went to the kernel. `reserve` hands out the next bytes for `StepPacker.pack_run` to fill in
+    place. Writes and reads as BytesIO does for the calls the writer makes (write, tell, getbuffer, getvalue)."""
+
+    __slots__ = ("_buf", "_len")
+
+    def __init__(self, capacity: int = 3 << 20) -> None:
+        self._buf = np.empty(capacity, dtype=np.uint8)
+        self._len = 0
+
+    def tell(self) -> int:
+        return self._len
+
+    def reserve(self, n: int) -> np.ndarray:
+        """The next `n` bytes of the chunk (their content undefined until the caller fills them)."""
+        start, end = self._len, self._len + n
+        if end > len(self._buf):
+            grown = np.empty(max(end, 2 * len(self._buf)), dtype=np.uint8)
+            grown[:start] = self._buf[:start]
+            self._buf = grown
+        self._len = end
+        return self._buf[start:end]
+
+    def write(self, data: bytes | bytearray | memoryview | np.ndarray) -> int:
+        view = np.frombuffer(data, dtype=np.uint8)
+        self.reserve(len(view))[:] = view
+        return len(view)
+
+    def writelines(self, parts: Any) -> None:
+        for part in parts:
+            self.write(part)
+
+    def getbuffer(self) -> memoryview:
+        return memoryview(self._buf[:self._len])
+
+    def getvalue(self) -> bytes:
+        return self._buf[:self._len].tobytes()
+
+    def clear(self) -> None:
+        self._len = 0
+
+
+#: Chunk buffers of closed recorders, for the next ones (a process records one run after another).
+_CHUNK_POOL: list[ChunkBuffer] = []
+
+
 def _close_chunk(storage: Any) -> None:
     """`McapWriter.close_chunk()` of rosbags 0.11 for an uncompressed chunk, with each channel's message index
     packed in one struct call instead of two 8-byte writes per message (about a tenth of a recording's cost): the
@@ -116,7 +180,7 @@ def _close_chunk(storage: Any) -> None:
     chunk_start = out.tell()
     out.write(_CHUNK_HEAD.pack(0x06, 40 + size, start, end, size, 0, 0, size))
     out.write(data)
-    del data                                  # release the buffer export before the BytesIO is dropped
+    del data                                  # release the buffer export before the buffer is reused
     chunk_end = out.tell()
     offsets: list[tuple[int, int]] = []
     for cid, msgs in chunk.msgs.items():
@@ -130,7 +194,12 @@ def _close_chunk(storage: Any) -> None:
         rec.write(struct.pack("<HQ", cid, offset))
     rec.write(struct.pack("<QIQQ", out.tell() - chunk_end, 0, size, size))
     storage.chunks.append(rec)
-    storage.chunk = PendingChunk(2**63 - 1, 0, BytesIO(), defaultdict(list))
+    bio = chunk.bio
+    if isinstance(bio, ChunkBuffer):
+        bio.clear()
+    else:
+        bio = BytesIO()
+    storage.chunk = PendingChunk(2**63 - 1, 0, bio, defaultdict(list))
 
 
 _EMPTY_QOS: str | None = None
@@ -202,6 +271,11 @@ class BagRecorder:
             self._writer.open()
         except WriterError as exc:
             raise InputError(f"cannot record here: {exc}", source=str(self.path)) from exc
+        storage = self._writer.storage
+        self._chunk_buffer: ChunkBuffer | None = None
+        if storage is not None and not storage.compression and not storage.chunk.bio.tell():
+            self._chunk_buffer = _CHUNK_POOL.pop() if _CHUNK_POOL else ChunkBuffer()
+            storage.chunk = replace(storage.chunk, bio=self._chunk_buffer)
         self._connections: dict[str, Any] = {}
         self._cids: dict[str, int] = {}
         self._last_ns = 0
@@ -274,6 +348,7 @@ class BagRecorder:
         chunk = storage.chunk
         bio = chunk.bio
         pos = bio.tell()
+        reserve = getattr(bio, "reserve", None)      # a ChunkBuffer packs steps in place
         parts: list[Any] = []
         index = chunk.msgs
         pack = _MESSAGE_RECORD.pack
@@ -294,7 +369,13 @@ class BagRecorder:
                 if first is None:
                     first = times[0]
                 at = np.frombuffer(array("q", times), dtype=np.int64)
-                parts.append(packer.pack_run(at, step.frames, step.commands))
+                if reserve is None:
+                    parts.append(packer.pack_run(at, step.frames, step.commands))
+                else:
+                    # Packed in place, at the chunk's end: what came before it is written first.
+                    bio.writelines(parts)
+                    parts.clear()
+                    packer.pack_run(at, step.frames, step.commands, out=reserve(packer.size * len(times)))
                 for cid, flat in packer.index(at, pos):
                     index[cid].append(flat)
                 for cid in packer.topics_cids:
@@ -364,6 +445,10 @@ class BagRecorder:
             return
         self.closed = True
         _close_writer(self._writer)
+        if self._chunk_buffer is not None and len(_CHUNK_POOL) < 2:
+            self._chunk_buffer.clear()
+            _CHUNK_POOL.append(self._chunk_buffer)
+        self._chunk_buffer = None
 
     def __enter__(self) -> "BagRecorder":
         return self

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Iterable
+from typing import Any, Iterable
 
 from rclpy.serialization import serialize_message
 
@@ -22,7 +22,7 @@ from txt2sce_ros.contract import ControlCommand, Frame, Goal, RunStatus, Scenari
 from txt2sce_ros.road import RoadNetwork
 
 from . import cdr
-from .messages import verdict_to_diagnostics, violations_to_diagnostics
+from .messages import verdict_cdr, violations_cdr
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
 from .steprecords import StepPacker, StepRun, cast_key, step_packer
@@ -30,6 +30,25 @@ from .steprecords import StepPacker, StepRun, cast_key, step_packer
 
 #: Steps encoded together (see `RunWriter.frame`).
 BATCH_STEPS = 256
+
+
+def _same_cast(last: tuple[Frame, ControlCommand | None], frame: Frame, command: ControlCommand | None) -> bool:
+    """Whether `frame` has the cast of the step the last layout was made for, told cheaply: the player hands the
+    same name and category strings from step to step, so identity answers without building `cast_key`'s tuple
+    (False is only 'not known': the caller then compares the keys)."""
+    prev, prev_command = last
+    if (command is None) is not (prev_command is None):
+        return False
+    ego, pego = frame.ego, prev.ego
+    if ego.name is not pego.name or ego.category is not pego.category:
+        return False
+    objects, pobjects = frame.objects, prev.objects
+    if len(objects) != len(pobjects):
+        return False
+    for o, p in zip(objects, pobjects):
+        if o.name is not p.name or o.category is not p.category:
+            return False
+    return True
 
 
 class RunWriter:
@@ -41,18 +60,23 @@ class RunWriter:
         self._base = time_base_ns
         self._dt = dt_ns
         self._k = 0
-        self._steps: list[tuple[int, Frame, ControlCommand | None]] = []
+        # Steps waiting to be packed: (receive time, frame, command), or (receive time, None, [(topic, bytes)])
+        # for a message written between them.
+        self._steps: list[tuple[int, Frame | None, Any]] = []
         self._drained = time.monotonic()
         self._goal: Goal | None = None
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
-        self._last_layout: tuple | None = None     # (lights, cast, packer) of the last packed step
+        self._last_layout: tuple | None = None     # (lights, cast, packer, (frame, command)) of the last checked step
 
     def _w(self, topic: str, msg: object) -> None:
         self._raw_ordered(topic, serialize_message(msg))
 
     def _raw_ordered(self, topic: str, data: bytes) -> None:
         if self._steps:
-            self._drain()                         # keep the order of the stream
+            # Steps are waiting to be packed: the message joins them in order (a drain for every violation, as
+            # before, packed runs of a few steps and paid a batch's fixed cost each time).
+            self._steps.append((time.time_ns(), None, [(topic, data)]))
+            return
         self._raw(topic, data)
 
     def _raw(self, topic: str, data: bytes) -> None:
@@ -101,7 +125,13 @@ class RunWriter:
         run: StepRun | None = None
         channel = self.rec.channel
         for ns, frame, command in steps:
-            if self._shown_lights is not None and frame.lights != self._shown_lights:
+            if frame is None:                   # a message written between steps (`_raw_ordered`): its own entry
+                channel(command[0][0])
+                out.append((ns, command))
+                run = None
+                continue
+            shown = self._shown_lights
+            if shown is not None and frame.lights is not shown and frame.lights != shown:
                 # A light changed: this step also redraws the goal and lights, so it takes the per-message path.
                 items = self._encode(frame, command)
                 for topic, _ in items:
@@ -121,9 +151,12 @@ class RunWriter:
         rarely). Most steps have the previous step's layout: the same cast, and the very same lights tuple (the
         player keeps it while no light changes), which is checked without hashing the lights."""
         lights = frame.lights
-        cast = cast_key(frame, command)
         last = self._last_layout
+        if last is not None and (last[0] is lights or last[0] == lights) and _same_cast(last[3], frame, command):
+            return last[2]
+        cast = cast_key(frame, command)
         if last is not None and last[1] == cast and (last[0] is lights or last[0] == lights):
+            self._last_layout = (lights, cast, last[2], (frame, command))
             return last[2]
         # A new layout for this step (rare): the compiled ones are shared by the process (`step_packer`); the
         # channel lookups register a topic on its first use, in the order the messages are written.
@@ -132,7 +165,7 @@ class RunWriter:
                 channel(c.TOPIC_OBJECTS_ODOM) if frame.objects else None, channel(c.TOPIC_OBJECTS_MARKERS),
                 channel(c.TOPIC_EGO_ODOM), channel(c.TOPIC_COMMAND) if command is not None else None)
         packer = step_packer(frame, command, cids)
-        self._last_layout = (lights, cast, packer)
+        self._last_layout = (lights, cast, packer, (frame, command))
         return packer
 
     def _encode(self, frame: Frame, command: ControlCommand | None) -> list[tuple[str, bytes]]:
@@ -156,13 +189,13 @@ class RunWriter:
     def violations(self, t: float, violations: Iterable[Violation]) -> None:
         vs = list(violations)
         if vs:
-            self._w(c.TOPIC_VIOLATIONS, violations_to_diagnostics(t, vs))
+            self._raw_ordered(c.TOPIC_VIOLATIONS, violations_cdr(t, vs))
 
     def end(self, status: RunStatus | None, verdict: RunVerdict | None = None) -> None:
         if status is not None:
             self._w(c.TOPIC_RUN_STATUS, ros_io.string_msg(status.to_json()))
         if verdict is not None:
-            self._w(c.TOPIC_VIOLATIONS, verdict_to_diagnostics(verdict))
+            self._raw_ordered(c.TOPIC_VIOLATIONS, verdict_cdr(verdict))
 
     def close(self) -> None:
         if self._steps:

@@ -220,3 +220,26 @@ def test_odometry_decoder_reads_what_rosbags_reads(e: EntityState) -> None:
             ts.deserialize_cdr(data, "nav_msgs/msg/Odometry"))
     with pytest.raises(Exception):
         cdr.decode_odometry(cdr.encode_odometry(e)[:-8])
+
+
+def test_violations_and_verdicts_equal_rclpy_and_are_deterministic() -> None:
+    # What a recorder writes on /oracle/violations: rclpy's message content, in bytes that do not depend on the
+    # run (rclpy's own serialisation leaves its padding uninitialised).
+    from diagnostic_msgs.msg import DiagnosticArray
+    from rclpy.serialization import deserialize_message
+
+    from oracle_monitor.messages import verdict_cdr, verdict_to_diagnostics, violations_cdr, violations_to_diagnostics
+    from oracle_monitor.records import Category, Rule, RunVerdict, Violation
+    from txt2sce_ros.contract import Verdict
+
+    vs = [Violation(Rule.CONTACT, Category.COLLISIONS, 3.17, 0.74, 0.0, "m", ("Ego", "lead"), "rear-end"),
+          Violation(Rule.JERK_COLLISION, None, 3.2, -412.5, 300.0, "m/s³", (), "Ünïcode detail")]
+    verdict = RunVerdict(verdict=Verdict.FAIL, scenario_id="cut-in", t_end=6.05, frames=122)
+    for ours, msg in ((violations_cdr(3.2, vs), violations_to_diagnostics(3.2, vs)),
+                      (violations_cdr(0.0, vs[:1]), violations_to_diagnostics(0.0, vs[:1])),
+                      (verdict_cdr(verdict), verdict_to_diagnostics(verdict))):
+        assert deserialize_message(ours, DiagnosticArray) == msg
+        assert len(ours) == len(serialize_message(msg))
+        decoded = typestore().deserialize_cdr(ours, "diagnostic_msgs/msg/DiagnosticArray")
+        assert [s.name for s in decoded.status] == [s.name for s in msg.status]
+    assert violations_cdr(3.2, vs) == violations_cdr(3.2, list(vs))

@@ -390,6 +390,47 @@ def test_frames_with_list_lights_record_as_tuples_do(tmp_path: Path) -> None:
     assert record(tmp_path / "lists" / "bag", as_lists) == record(tmp_path / "tuples" / "bag", frames)
 
 
+def test_messages_between_steps_keep_their_place(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # A violation written while steps wait to be packed joins them in order (no drain of its own): the bag is
+    # byte for byte the one the per-message path writes, each message at its place in the stream.
+    import itertools
+
+    from oracle_monitor import runwriter
+    from oracle_monitor.records import Category, Rule, Violation
+
+    sim, steps = _closed_loop("pedestrian_collision")
+    drains = []
+
+    def per_message_drain(self) -> None:
+        queued, self._steps = self._steps, []
+        self.rec.write_steps([(ns, cmd if f is None else self._encode(f, cmd)) for ns, f, cmd in queued])
+
+    def counting_drain(self) -> None:
+        drains.append(len(self._steps))
+        packed_drain(self)
+
+    def record(path: Path, drain) -> bytes:
+        clock = itertools.count(1_700_000_000_000_000_000, 1000)
+        monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(clock))
+        monkeypatch.setattr(runwriter.RunWriter, "_drain", drain)
+        with RunWriter(path, flush_interval=1e9) as w:
+            w.begin(None, sim.goal, "x", network=sim.network, lights=steps[0][0].lights)
+            for k, (f, cmd) in enumerate(steps):
+                w.frame(f, cmd)
+                if k % 97 == 5:
+                    w.violations(f.t, [Violation(Rule.CONTACT, Category.COLLISIONS, f.t, 0.5, 0.0, "m", ("x",))])
+            w.end(RunStatus("x", "finished", steps[-1][0].t, "goal_reached"))
+        return (path / "bag.mcap").read_bytes()
+
+    packed_drain = runwriter.RunWriter._drain
+    ours = record(tmp_path / "packed" / "bag", counting_drain)
+    assert len(drains) <= -(-len(steps) // runwriter.BATCH_STEPS) + 1      # batches only, none per violation
+    theirs = record(tmp_path / "per_message" / "bag", per_message_drain)
+    assert ours == theirs
+    topics = [m.topic for m in read_bag(tmp_path / "packed" / "bag").messages()]
+    assert topics.count(c.TOPIC_VIOLATIONS) == len(range(5, len(steps), 97))
+
+
 def test_shared_step_layouts_record_the_same_bytes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     # Step layouts are compiled once per process and shared by every recorder (steprecords.step_packer); a run
     # recorded with layouts another recorder compiled must be byte for byte the run recorded with fresh ones.
