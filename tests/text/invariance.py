@@ -325,6 +325,7 @@ REWRITES: tuple[Rewrite, ...] = (
                  lambda m: _SIMPLE_PAST[m.group(1)])),
     Rewrite("passed -> went past", _sub(r"\bpassed\b", "went past")),
     Rewrite("was stopped -> had stopped", _sub(r"\bwas stopped\b", "had stopped")),
+    Rewrite("was stopped -> had come to a stop", _sub(r"\bwas stopped\b", "had come to a stop")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

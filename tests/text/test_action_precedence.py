@@ -147,6 +147,20 @@ _TEXT: dict[str, tuple[str, str]] = {
         'the Cruise AV began to maneuver around and to the left of the ABL, the Cruise AV made contact with '
         'the arm of the ABL, which was elevated above the roadway. This caused damage to the Cruise AV’s roof'
         ' Lidar assembly. There were no reported injuries.'),
+    'csvr-waymo-20210709-s89': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 89, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, California was in a collision '
+        'involving a passenger vehicle at Bush Street and Grant Avenue. The Waymo AV was stopped in traffic '
+        'while in autonomous mode when the passenger vehicle approached from behind while changing lanes. The'
+        ' passenger vehicle struck the rear of the stopped Waymo AV traveling at 5.5 miles per hour and left '
+        'the scene. The left rear bumper of the Waymo AV sustained minor damage.'),
+    'csvr-zoox-20220205-s130': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 130, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomous mode was stopped at a traffic light on Brannan Street at 7th Street '
+        'when a passenger vehicle hit the Zoox vehicle from behind. The passenger vehicle left the scene '
+        'without exchanging information. There were no injuries and the police were not called.'),
 }
 
 
@@ -261,3 +275,14 @@ def test_a_state_told_with_had_reads_as_with_was() -> None:
         assert (sk.ego.start, sk.ego.actions) == ("moving", "af"), aux
         sk = _told('csvr-waymo-20200214-s53', r"\bwas stopped\b", f"{aux} stopped")
         assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "unknown", "unknown"), aux
+
+
+def test_a_stop_reached_is_a_standing_for_the_road_readings() -> None:
+    # "had come to a stop in traffic" is a queue (the summary's cross street then the junction ahead, as for "was
+    # stopped in traffic": junction4); "had come to a stop at a traffic light" stood at its red, as "was stopped at a
+    # traffic light" did (the gold: signal, red).
+    for verb in ("was stopped", "had come to a stop"):
+        sk = _told('csvr-waymo-20210709-s89', r"\bwas stopped\b", verb)
+        assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "unknown", "unknown"), verb
+        sk = _told('csvr-zoox-20220205-s130', r"\bwas stopped\b", verb)
+        assert (sk.road.control, sk.signal_state) == ("signal", "red"), verb
