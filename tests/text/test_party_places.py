@@ -131,6 +131,13 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 '
         'of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement '
         'or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30413-6032-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30413-6032, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The May vehicle came to a gentle stop at the railroad crossing (about -0.8 m/s2 deceleration) as '
+        'designed, but the agent behind did not come to a stop and made contact with the AV. The May shuttle '
+        'behaved as expected and slowed down to a stop in a safe manner. The collision was unavoidable from '
+        'the shuttle side.'),
 }
 
 
@@ -203,3 +210,11 @@ def test_a_party_heading_across_the_av_s_way_at_a_junction_came_from_the_crossin
     # the southbound AV's way, it came from the AV's right (R3); its pass came after.
     p = _party("nhtsa-sgo-ads-30270-9333-v1")
     assert (p.position, p.lane) == ("R3", None)
+
+
+def test_an_agent_is_another_road_user() -> None:
+    # "but the agent behind did not come to a stop and made contact with the AV": the AV industry's word for
+    # another road user names the party that struck the AV from behind, so the report is complete.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30413-6032-v1"][1], "nhtsa-sgo-ads-30413-6032-v1")
+    assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("car", "R6", "same")]
+    assert (sk.collision.with_, sk.missing) == ("npc1", ())

@@ -107,6 +107,8 @@ PARTY_HEADS: dict[str, str] = {
     "ambulance": "truck", "street sweeper": "truck", "sweeper": "truck", "rv": "truck", "motorhome": "truck",
     "motor home": "truck", "camper": "truck", "forklift": "truck", "bulldozer": "truck", "excavator": "truck",
     "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter", "wheelchair": "pedestrian",
+    # the AV industry's word for another road user ("the agent behind did not come to a stop and made contact")
+    "agent": "car",
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
