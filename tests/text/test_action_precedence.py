@@ -161,6 +161,19 @@ _TEXT: dict[str, tuple[str, str]] = {
         'A Zoox vehicle in autonomous mode was stopped at a traffic light on Brannan Street at 7th Street '
         'when a passenger vehicle hit the Zoox vehicle from behind. The passenger vehicle left the scene '
         'without exchanging information. There were no injuries and the police were not called.'),
+    'csvr-waymo-20240603-s315': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 315, column 'Accident Detail Description'), transcribed",
+        'On June 3, 2024 at 4:54 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Marina Del Rey, '
+        'California was in a collision involving a passenger car on Admiralty Way at Bali Way. The Waymo AV '
+        'was making a left turn from the rightmost dedicated left turn lane on Admiralty Way into lane two of'
+        ' three lanes in the eastbound direction of Bali Way. A passenger car was also making a left turn '
+        'from the leftmost dedicated left turn lane (leftmost lane). The passenger car had made the turn onto'
+        ' Bali Way and was partially in the number 1 lane (leftmost) and partially in the number 2 lane '
+        '(middle) when the front passenger side of the passenger car made contact with the rear driver side '
+        'of the Waymo AV, which was traveling in the number 2 lane (middle). At the time of the impact, the '
+        'Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the '
+        'driver’s seating position). Both vehicles sustained damage.'),
 }
 
 
@@ -286,3 +299,12 @@ def test_a_stop_reached_is_a_standing_for_the_road_readings() -> None:
         assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "unknown", "unknown"), verb
         sk = _told('csvr-zoox-20220205-s130', r"\bwas stopped\b", verb)
         assert (sk.road.control, sk.signal_state) == ("signal", "red"), verb
+
+
+def test_a_turn_under_way_told_as_executed_is_at_a_junction() -> None:
+    # "The Waymo AV was executing a left turn from the rightmost dedicated left turn lane on Admiralty Way into lane
+    # two of three lanes in the eastbound direction of Bali Way": a turn under way from one road into another, as
+    # "was making a left turn" tells it (the gold: junction4).
+    for verb in ("was making", "was executing"):
+        sk = _told('csvr-waymo-20240603-s315', r"\bwas making\b", verb)
+        assert sk.road.layout == "junction4", verb
