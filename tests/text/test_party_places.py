@@ -218,3 +218,11 @@ def test_an_agent_is_another_road_user() -> None:
     sk = extract(_TEXTS["nhtsa-sgo-ads-30413-6032-v1"][1], "nhtsa-sgo-ads-30413-6032-v1")
     assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("car", "R6", "same")]
     assert (sk.collision.with_, sk.missing) == ("npc1", ())
+
+
+def test_a_summary_of_a_collision_between_two_parties_announces_the_telling_s() -> None:
+    # "The Waymo AV ... was alleged to have contributed to a collision between an SUV and a concrete median curb on
+    # [XXX]. ... with an SUV following slightly behind and to the left of the Waymo AV": the opening sentence
+    # announces the SUV the telling names; it is one party, not two.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-9376-v1"][1], "nhtsa-sgo-ads-30270-9376-v1")
+    assert sorted((p.category, p.position, p.lane) for p in sk.npcs) == [("car", "R6", "left"), ("truck", "R5", "same")]

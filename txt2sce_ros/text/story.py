@@ -36,6 +36,8 @@ T = TypeVar("T")
 
 _SUMMARY = compile_gated(r"\b(?:in|involved\s+in|involving)\s+(?:a|an)\s+(?:\w+\s+){0,2}(?:collision|incident|crash)"
                       r"\b|\breceived\s+notice\b|\bcollision\s+involving\b|"
+                      # "was alleged to have contributed to a collision between an SUV and a concrete median curb"
+                      r"\b(?:collision|crash|incident)\s+between\b|"
                       # "EGO and the passenger vehicle that made contact with it sustained moderate damage": the damage
                       # told after the event, its contact named again only to say whose damage
                       r"\b(?:that|which|who)\s+(?:had\s+)?(?:(?:made|came\s+into)\s+contact|contacted|impacted|collided|"
