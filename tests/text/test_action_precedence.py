@@ -294,7 +294,8 @@ def test_a_stop_reached_is_a_standing_for_the_road_readings() -> None:
     # "had come to a stop in traffic" is a queue (the summary's cross street then the junction ahead, as for "was
     # stopped in traffic": junction4); "had come to a stop at a traffic light" stood at its red, as "was stopped at a
     # traffic light" did (the gold: signal, red).
-    for verb in ("was stopped", "had come to a stop"):
+    # So is "was standing still".
+    for verb in ("was stopped", "had come to a stop", "was standing still"):
         sk = _told('csvr-waymo-20210709-s89', r"\bwas stopped\b", verb)
         assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "unknown", "unknown"), verb
         sk = _told('csvr-zoox-20220205-s130', r"\bwas stopped\b", verb)

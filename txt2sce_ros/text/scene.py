@@ -217,7 +217,8 @@ _HEADING_ON = (compile_gated(rf"\b{_DIR}(?:bound|ward)?\s+on\s+{_STREET}", re.I)
 # "on X near Y" places it away from the junction.
 _AT_CROSS_STREET = compile_gated(rf"\b(?:on|at)\s+{_STREET}\.?\s+(?:at|and)\s+{_STREET}", re.I)  # "Bush St. and"
 # Standing in a queue of traffic (not a lone stop, not traffic the AV yielded to).
-_QUEUED = compile_gated(r"\b(?:stopped|sitting|waiting|(?:came|come)\s+to\s+a\s+(?:\w+\s+)?stop)\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
+_QUEUED = compile_gated(r"\b(?:stopped|sitting|waiting|standing(?:\s+still)?|(?:came|come)\s+to\s+a\s+(?:\w+\s+)?stop)\s+in\s+"
+                        r"traffic\b|\bbehind\s+stopped\s+traffic\b|"
                         r"\b(?:in|behind)\s+a\s+queue\s+of\s+(?:\w+\s+)?traffic\b", re.I)
 
 
@@ -283,7 +284,7 @@ def lane_count(t: str) -> int | None:
 
 # Words for standing still (a red the AV stood at is its signal when its actions begin).
 # ("had come to a stop at a traffic light": a stop reached is a standing too)
-_STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|at\s+(?:a\s+)?(?:standstill|rest)|"
+_STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|standing(?:\s+still)?|at\s+(?:a\s+)?(?:standstill|rest)|"
              r"(?:came|come)\s+to\s+a\s+(?:\w+\s+)?(?:stop|halt|standstill))")
 
 
