@@ -32,13 +32,10 @@ def _verdict(tmp_path, name: str, faults: list[str]) -> dict:
 def test_planner_node_drives_a_benign_scenario_in_the_graph(tmp_path):
     benign = _verdict(tmp_path, "benign_junction_straight", [])
     assert benign["end_reason"] == "goal_reached", benign
-    # Known harness race (reported, not the planner's): the monitor node may close a run on the player's
-    # 'finished' status before the last frames arrive, then finds the ego short of the goal the player saw it
-    # reach and reports PlanFail 'goal_not_reached'. With end_reason goal_reached that finding contradicts the
-    # player's own ReachPosition check and is ignored; every other category must be absent.
-    found = {c["category"] for c in benign["categories"]
-             if not (c["category"] == "PlanFail" and c["rule"] == "goal_not_reached")}
-    assert not found, benign
+    # The monitor holds the player's 'finished' status until the run's last frames are in (and a frame the
+    # transport dropped is sent again within the writers' 50 ms heartbeat), so it sees the ego reach the goal the
+    # player saw it reach: no category at all, PlanFail 'goal_not_reached' included.
+    assert benign["verdict"] == "pass" and not benign["categories"], benign
 
 
 def test_fault_parameter_shows_in_the_oracle_verdict(tmp_path):
