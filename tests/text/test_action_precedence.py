@@ -174,6 +174,14 @@ _TEXT: dict[str, tuple[str, str]] = {
         'of the Waymo AV, which was traveling in the number 2 lane (middle). At the time of the impact, the '
         'Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the '
         'driver’s seating position). Both vehicles sustained damage.'),
+    'dmvca-zoox-20220428-r329': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 329, column '
+        '"Accident Detail Description")',
+        'A Zoox vehicle in autonomous mode came to a complete stop at the T-junction stop sign at Colin P. '
+        'Kelly Jr. St. and Brannan St. and yielded to oncoming traffic from the left. Due to traffic flow, '
+        'the driver then disengaged autonomous mode and reversed, making contact with a vehicle that had '
+        'approached from the rear and was attempting to pass the Zoox vehicle to make a right turn. There '
+        'were no injuries and the police were not called.'),
 }
 
 
@@ -198,7 +206,8 @@ def test_a_run_told_in_the_simple_past_goes_back_to_the_av_on_its_way() -> None:
     # "... was stopped ... when it was involved in a collision. The Waymo AV traveled northbound on Miramonte Avenue,
     # when it reached a four-way stop sign intersection. The Waymo AV stopped to yield": the summary's state is the
     # AV's at the contact; the telling, gone back to it travelling, opens with the run ("was traveling": `ah`, gold).
-    for verb in ("was traveling", "traveled"):
+    # ... or in the past perfect progressive ("had been traveling": a run under way, as "was traveling" is).
+    for verb in ("was traveling", "traveled", "had been traveling"):
         sk = _told('csvr-waymo-20190226-s3', r"\bwas traveling\b", verb)
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ah"), verb
 
@@ -309,3 +318,11 @@ def test_a_turn_under_way_told_as_executed_is_at_a_junction() -> None:
     for verb in ("was making", "was executing"):
         sk = _told('csvr-waymo-20240603-s315', r"\bwas making\b", verb)
         assert sk.road.layout == "junction4", verb
+
+
+def test_a_party_that_neared_the_av_was_on_its_way() -> None:
+    # "a passenger vehicle approached from the rear and was attempting to pass the Zoox vehicle", told with "neared":
+    # a run along its lane either way (the gold: moving, `a`).
+    for verb in ("approached", "neared"):
+        p = _told('dmvca-zoox-20220428-r329', r"\bapproached\b", verb).npcs[0]
+        assert (p.start, p.actions) == ("moving", "a"), verb

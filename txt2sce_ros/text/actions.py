@@ -270,7 +270,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # ("proceeded to reverse": the verb after it tells the move, not a run along the lane)
     # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
     ("a", r"\b(?:(?<!of\s)travel(?:l)?(?:ed|ing|s)?|driving|drove|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
-          r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|"
+          r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|near(?:ed|ing)|"
           # "went past EGO on the left": a pass told with a verb of going
           r"(?:went|going|drove|driving|moved|moving|rode|riding)\s+past|"
           r"drift(?:ed|ing|s)|entered\s+the\s+intersection|entering\s+the\s+intersection|"
@@ -328,8 +328,10 @@ _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", 
 _INTENT_TO_BEGIN = compile_gated(r"\b(?:to|before|prior\s+to)\s+(?:begin(?:ning)?|start(?:ing)?|proceed(?:ing)?)\s+to\s+"
                                  r"(?:\w+\s+){0,2}$", re.I)
 # "was making a right turn", "were in the process of changing lanes", "while turning": the manoeuvre in progress.
-_PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are)\s+(?:(?:already|still|actively|currently|just|slowly)\s+)?"
-                          r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
+# ("had been traveling": the progressive told in the past perfect)
+_PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are|had\s+been|has\s+been)\s+"
+                             r"(?:(?:already|still|actively|currently|just|slowly)\s+)?"
+                             r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
 # ("swung wide ... while making a right turn": "while" with the noun of the manoeuvre tells it under way too)
 _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|still|currently|just)\s+)?"
                                r"(?:(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
