@@ -138,6 +138,31 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'designed, but the agent behind did not come to a stop and made contact with the AV. The May shuttle '
         'behaved as expected and slowed down to a stop in a safe manner. The collision was unavoidable from '
         'the shuttle side.'),
+    'nhtsa-sgo-ads-30270-9631-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9631, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 2:55 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'north on [XXX] when it approached the intersection with [XXX]. As the Waymo AV approached the '
+        'intersection, it slowed to yield to a pedestrian who was traveling south on the sidewalk of [XXX] '
+        'and had just entered the intersection to cross [XXX]. As the Waymo AV continued to slow, a '
+        'passenger car traveling directly behind the Waymo AV approached the Waymo AV from behind. The front '
+        'of the passenger car made contact with the rear of the Waymo AV. At the time of the impact, the '
+        'Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. The passenger '
+        'in the Waymo AV reported a minor injury. Waymo is reporting this crash under Request No. 1 of '
+        'Standing General Order 2021-01 because a vulnerable road user influenced the driving task of a '
+        'vehicle involved and because vehicles involved were towed away. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'csvr-waymo-20211207-s118': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 118, column 'Accident Detail Description'), transcribed",
+        'On December 7, 2021 at 10:47 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, CA was in a collision involving an SUV at Oak Street at Stanyan Street. While in '
+        'autonomous mode, the Waymo AV came to a stop at a stop sign on Oak Street. While the ADV was '
+        'stopped, waiting for a pedestrian to cross and for traffic on Stanyan Street to clear, an SUV '
+        'approached the Waymo AV from behind and made contact with the rear of the Waymo AV. At the time of '
+        'the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was '
+        'present (in the driver’s seating position). The Waymo AV sustained minor damage to the rear bumper.'),
 }
 
 
@@ -226,3 +251,14 @@ def test_a_summary_of_a_collision_between_two_parties_announces_the_telling_s() 
     # announces the SUV the telling names; it is one party, not two.
     sk = extract(_TEXTS["nhtsa-sgo-ads-30270-9376-v1"][1], "nhtsa-sgo-ads-30270-9376-v1")
     assert sorted((p.category, p.position, p.lane) for p in sk.npcs) == [("car", "R6", "left"), ("truck", "R5", "same")]
+
+
+def test_a_walker_the_av_waits_for_at_a_junction_crosses_on_the_leg_ahead() -> None:
+    # "it slowed to yield to a pedestrian who was traveling south on the sidewalk of [XXX] and had just entered the
+    # intersection to cross [XXX]" (the AV northbound): a walker's heading is no opposite approach (R2).
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-9631-v1"][1], "nhtsa-sgo-ads-30270-9631-v1")
+    assert [(p.position, p.lane) for p in sk.npcs if p.category == "pedestrian"] == [("R4", None)]
+    # "came to a stop at a stop sign on Oak Street. While the ADV was stopped, waiting for a pedestrian to cross":
+    # not ahead in the AV's lane either.
+    sk = extract(_TEXTS["csvr-waymo-20211207-s118"][1], "csvr-waymo-20211207-s118")
+    assert [(p.position, p.lane) for p in sk.npcs if p.category == "pedestrian"] == [("R4", None)]

@@ -42,7 +42,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     pre = " ".join(pres)
     full = " ".join(d.sents[m.sent] for m in e.mentions)
     turns = [a.code for a in d.acts if a.who == e.idx and a.code in "de"]
-    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and not _PLACE_SIDE.search(ctx) and \
+    if turns and _onto_av_street(d, ctx) and heading(d, e.idx) is None and not PLACE_SIDE.search(ctx) and \
             not fre.search(r"\b(?:driveway|parking|lot|garage|alley)\b", ctx, re.I):
         # Turned onto the AV's street from a crossing one ("an SUV then turned right from Post Street onto Steiner
         # Street and began closely following EGO"): it came from the crossing road, whatever it did next. A left
@@ -243,7 +243,7 @@ _REAR_CORNER = compile_gated(r"\bEGO's\s+(?:rear\s+)?(left|right|driver|passenge
                              r"(?:corner|quarter|tail\s*(?:light|lamp))|\b(?:the\s+)?(?:rear\s+)?(left|right|driver|"
                              r"passenger)(?:'s)?(?:[- ]side)?[- ]rear\s+(?:corner|quarter)\w*\s+of\s+EGO\b", re.I)
 # A side the party's place is given by ("to the right of EGO", "from the left"), not a side of a body.
-_PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b"
+PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b"
                             r"(?!\s+(?:side|rear|front)\b)|\bon\s+EGO's\s+(?:left|right)\b(?!\s+(?:side|rear|front)\b)", re.I)
 
 

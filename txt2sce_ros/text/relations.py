@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import exit_street, side_from_flank
+from .positions import PLACE_SIDE, exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -483,6 +483,16 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     cues = gather(d, e)
     if d.junction and pos in ("R3", "R1", "R5") and (exit_leg := _on_exit_crosswalk(d, e, far_only=not ego_turning)):
         return Placement("R4", None, "crossing on the AV's exit leg", (exit_leg,), tuple(cues) + (exit_leg,))
+    if d.junction and e.category == "pedestrian" and pos in ("R1", "R2", "R3", "R5") and \
+            not any(c.kind in ("along", "passing") for c in cues) and \
+            fre.search(r"\bcross", ctx := context(d, e), re.I) and not PLACE_SIDE.search(ctx):
+        # A walker told crossing at the junction, neither behind nor passing the AV nor on a side of it, is on the
+        # crosswalk of the leg ahead (R4), whatever way it walks ("a pedestrian who was traveling south on the
+        # sidewalk ... had just entered the intersection to cross", the AV northbound, is no vehicle on the opposite
+        # approach; "waiting for a pedestrian to cross" at a stop sign: not ahead in the AV's lane). ("crossing the
+        # street outside of a crosswalk from the AV's left" stays where its side puts it, and one "standing on the
+        # median" that "stepped off and walked into" the AV where it stood.)
+        return Placement("R4", None, "a walker crossing at the junction", (), tuple(cues))
     passing_path = [c for c in cues if c.value == "opposite-lane"]
     overtakes = any(c.kind == "passing" or (c.kind == "along" and c.value == "behind") for c in cues)
     if passing_path and overtakes and not any(c.value == "opposite" for c in cues) and pos in ("R2", "R7", "R5", "R6"):
