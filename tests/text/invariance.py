@@ -327,6 +327,8 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("was stopped -> had stopped", _sub(r"\bwas stopped\b", "had stopped")),
     Rewrite("was stopped -> had come to a stop", _sub(r"\bwas stopped\b", "had come to a stop")),
     Rewrite("approached -> neared", _sub(r"\bapproached\b", "neared")),
+    Rewrite("slowed to a stop -> slowed gradually to a stop",
+            _sub(r"\b(slowed|braked|decelerated) to a stop\b", r"\1 gradually to a stop")),
     Rewrite("was traveling -> had been traveling", _sub(r"\bwas traveling\b", "had been traveling")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",

@@ -72,7 +72,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("c", r"\b(?:did\s+not|didn't|failed\s+to|fail(?:s|ing)\s+to)\s+(?:(?:come|came|coming)\s+to\s+(?:a\s+)?"
           r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b"),
     ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
-          r"slow(?:ed|ing|s)?\s+(?:down\s+)?to|brak(?:ed|ing)\s+to|decelerat(?:ed|ing|es)\s+to)\s+(?:a|an)\s+"
+          r"slow(?:ed|ing|s)?\s+(?:down\s+|\w+ly\s+)?to|brak(?:ed|ing)\s+(?:\w+ly\s+)?to|decelerat(?:ed|ing|es)\s+(?:\w+ly\s+)?to)\s+(?:a|an)\s+"
           r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
           r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
@@ -262,7 +262,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+(?:pedal|forward))|"
           r"\b(?:pick(?:ed|ing|s)?\s+up|gain(?:ed|ing|s)?)\s+speed\b|\bsped\s+up\b|\bspeed(?:ing|s)\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
-    ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
+    ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+|\w+ly\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b(?!\s+(?:and\s+[\w-]+\s+)?(?:lights?|lamps?)\b)|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
           r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
           r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
