@@ -163,6 +163,40 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'approached the Waymo AV from behind and made contact with the rear of the Waymo AV. At the time of '
         'the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was '
         'present (in the driver’s seating position). The Waymo AV sustained minor damage to the rear bumper.'),
+    'nhtsa-sgo-ads-30270-10630-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10630, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report '
+        'data',
+        'On April [XXX], 2025 at 9:10 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV '
+        'was traveling northbound on [XXX] and came to a stop, allowing for a passenger car to exit a '
+        'parking lot on the east side of the roadway. As the passenger car turned left onto [XXX] and '
+        'attempted to pass the Waymo AV, the driver side of the passenger car made contact with the rear '
+        "driver side of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. The passenger car sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9540-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9540, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December[XXX], 2024 at 8:21 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo '
+        'AV had pulled up to the curb facing northbound on [XXX] for a requested passenger pickup. While '
+        'awaiting the passenger, the Waymo AV was partially obstructing access to a residential garage and a '
+        'passenger car began reversing out of the garage and the rear driver side of the passenger car made '
+        "contact with the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AV's "
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'csvr-pony.ai-20220517-s159': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 159, column 'Accident Detail Description'), transcribed",
+        'On May 17, 2022, a passenger vehicle reversed out of a parking spot into a Pony.ai autonomous '
+        'testing vehicle’s rear bumper. At the time of the collision, the Pony.ai vehicle was operating in '
+        'autonomous mode with a safety operator in the driver’s seat and was moving at a low speed. The '
+        'Pony.ai vehicle did not sustain any damage. There were no injuries or property damage, the police '
+        'were not called to the scene, and a Pony.ai employee drove the Pony.ai vehicle back to Pony.ai’s '
+        'Irvine facility.'),
 }
 
 
@@ -262,3 +296,19 @@ def test_a_walker_the_av_waits_for_at_a_junction_crosses_on_the_leg_ahead() -> N
     # not ahead in the AV's lane either.
     sk = extract(_TEXTS["csvr-waymo-20211207-s118"][1], "csvr-waymo-20211207-s118")
     assert [(p.position, p.lane) for p in sk.npcs if p.category == "pedestrian"] == [("R4", None)]
+
+
+def test_a_party_out_of_a_roadside_place_was_beside_or_ahead_of_the_av_whatever_it_passed_then() -> None:
+    # "came to a stop, allowing for a passenger car to exit a parking lot on the east side of the roadway. As the
+    # passenger car turned left onto [XXX] and attempted to pass the Waymo AV, ...": beside the AV on the right (R5),
+    # its turn out of the lot not preceded by a run along the AV's road.
+    p = _party("nhtsa-sgo-ads-30270-10630-v1")
+    assert (p.position, p.lane, p.actions) == ("R5", "right", "d")
+    # "a passenger car began reversing out of the garage and the rear driver side of the passenger car made contact
+    # with the rear passenger side of the Waymo AV": beside it, though it met the AV's rear half.
+    p = _party("nhtsa-sgo-ads-30270-9540-v1")
+    assert (p.position, p.lane) == ("R5", "right")
+    # "a passenger vehicle reversed out of a parking spot into a Pony.ai autonomous testing vehicle's rear bumper":
+    # the rear end, no side of it: it came out behind the AV.
+    p = _party("csvr-pony.ai-20220517-s159")
+    assert (p.position, p.lane) == ("R6", "right")

@@ -19,7 +19,7 @@ from .fastre import compile_gated
 from .actions import Act, find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import obstacle_position, party_position
-from .relations import AV_AT_CURB, av_lane_rank, place
+from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
@@ -240,7 +240,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
         if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
             acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way
-        if start == "moving" and not under_way and (acts[:1] in ("d", "e", "f", "g") and pos == "R5" or
+        if start == "moving" and not under_way and (acts[:1] in ("d", "e", "f", "g") and pos == "R5" and
+                                                     OUT_OF_ROADSIDE not in placed.rule or
                                                      acts[:1] in ("f", "g") and pos == "R6" and _told_finite(d, pacts) or
                                                      acts[:1] in ("f", "g") and pos == "R7"):
             # it travelled along the AV's road (ahead, behind it: "the vehicle behind EGO then attempted to change

@@ -145,6 +145,9 @@ _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0
 # Riders who keep to the edge of the road (bike lane, curb side); a motorcycle takes a lane like a car.
 _EDGE_RIDERS = ("bicycle", "scooter")
 _MOTOR = ("car", "van", "truck", "bus", "motorcycle")
+#: The rule that places a party come out of a driveway, garage, lot or parking space beside or ahead of the AV: it
+#: did not travel along the AV's road before its turn (extractor reads its action string so).
+OUT_OF_ROADSIDE = "out of a roadside place, not behind"
 # A same-lane cue that says so outright, not one inferred from "traveling behind EGO".
 _EXPLICIT_SAME = compile_gated(r"\b(?:same\s+lane|EGO's\s+lane|its\s+lane|lane\s+(?:of|with)\s+EGO|directly|"
                                r"travel\s+lane|in\s+front\s+of\s+EGO|ahead\s+of\s+EGO)\b", re.I)
@@ -544,6 +547,15 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # (sketch.md: a party passing a stopped AV is R6 on the side it passed).
         pos, rule = "R6", "passing a standing AV"
         used.append(contact)
+    if pos == "R6" and not (along and along[0].value == "behind") and _OUT_OF_CURBSIDE.search(ctx) and \
+            not (fore == "rear" and not cside):
+        # Coming out of a driveway, garage, lot or parking space ("allowing for a passenger car to exit a parking
+        # lot ... As the passenger car turned left onto [XXX] and attempted to pass EGO", "began reversing out of
+        # the garage and ... made contact with the rear passenger side of EGO"): it was at the roadside beside or
+        # ahead of the AV when the interaction began, not behind it in traffic, whatever it passed or touched then.
+        # (One that struck the AV's rear end, no side of it, came out behind it: "reversed out of a parking spot
+        # into a Pony.ai autonomous testing vehicle's rear bumper".)
+        pos, rule = "R5", rule + "; " + OUT_OF_ROADSIDE
     if not told and rule == "first reading" and d.junction and "d" in ego_actions and e.category in _MOTOR and \
             fore != "rear" and all(c.kind == "contact" for c in cues) and \
             not any(a.who == e.idx and a.code in "defgjkFT" for a in d.acts):
