@@ -71,7 +71,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # stop"): the negation denies the standstill, not the braking (a plain "failed to stop" denies both).
     ("c", r"\b(?:did\s+not|didn't|failed\s+to|fail(?:s|ing)\s+to)\s+(?:(?:come|came|coming)\s+to\s+(?:a\s+)?"
           r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b"),
-    ("h", r"\b(?:came\s+to|come\s+to|comes\s+to|coming\s+to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
+    # (a manner adverb may stand between the verb and its end: "came slowly to a stop", "turned sharply left",
+    # "proceeded slowly forward")
+    ("h", r"\b(?:(?:came|come|comes|coming)\s+(?:\w+ly\s+)?to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+(?:down\s+|\w+ly\s+)?to|brak(?:ed|ing)\s+(?:\w+ly\s+)?to|decelerat(?:ed|ing|es)\s+(?:\w+ly\s+)?to)\s+(?:a|an)\s+"
           r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
           r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
@@ -97,8 +99,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
           r"driving|creeping|accelerating)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
-          r"accelerated|drove|drives|driving)\s+forward\b|"
-          r"\bproceed(?:ed|ing|s)?\s+forward\b|\bproceed(?:ed)?\s+from\s+"
+          r"accelerated|drove|drives|driving)\s+(?:\w+ly\s+)?forward\b|"
+          r"\bproceed(?:ed|ing|s)?\s+(?:\w+ly\s+)?forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed(?!\s+(?:\w+ly\s+)?around\b)|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
           r"\bresum(?:ed|ing|es)\s+(?:travel|driving|moving|motion)\b|"
@@ -220,10 +222,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"shift|steer)\w*\s+(?:over\s+|back\s+|out\s+)?(?:directly\s+|right\s+|just\s+|immediately\s+|suddenly\s+)?"
           r"(?:in\s+front\s+of\s+EGO\b|into\s+(?:EGO's|our)\s+path\b)|\bcut(?:s|ting)?\s+EGO\s+off\b"),
     ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
-          rf"\bturn(?:ed|ing|s)?\s+left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn{_NOT_A_TURN}\b|"
+          rf"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn{_NOT_A_TURN}\b|"
           r"\bunprotected\s+left\b(?!\s+turn\s+lane)"),
     ("e", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+right\b(?!\s+lane)|"
-          rf"\bturn(?:ed|ing|s)?\s+right\b|\bright[- ]hand\s+turn\b|\bright\s+turn{_NOT_A_TURN}\b|\bwide\s+right\b"),
+          rf"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?right\b|\bright[- ]hand\s+turn\b|\bright\s+turn{_NOT_A_TURN}\b|\bwide\s+right\b"),
     # (the name of a lane is no turn: "stopped ... in the dedicated left turn lane, preparing to make a left turn
     # onto northbound X" turns nowhere)
     ("T", rf"\bturn(?:ed|ing|s)?\s+from\s+{_DIR}bound|\bturn(?:ed|ing|s)?\b{_NOT_A_TURN}(?=[^.]{{0,40}}\bonto\b)"),

@@ -45,16 +45,16 @@ _RAMP_AS_LEG = compile_gated(r"\b(?:intersection\s+with|at|onto|to|towards?)\s+(
                              r"(?:on|off)-?\s?ramp\b", re.I)
 # A slip lane, merge lane or ramp is the AV's place even in a summary: the report is not filed from one.
 _CONNECTOR = compile_gated(r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
-_TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
+_TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
                         # "turned left in front of EGO to enter Elm Street": a turn into a named street is a junction
-                        r"\bturn(?:ed|ing|s)?\s+(?:left|right)\b[^.,;]{0,50}?\b(?:to\s+enter|into)\s+"
+                        r"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?(?:left|right)\b[^.,;]{0,50}?\b(?:to\s+enter|into)\s+"
                         r"(?:[\w.'-]+\s+){1,3}(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way)\b|"
                         # "a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]", "a left turn
                         # from the ... lane on Admiralty Way into lane two ... in the eastbound direction of Bali Way":
                         # a turn from one road into a lane of another told by its heading is made at a junction
-                        r"\b(?:turn(?:ed|ing|s)?\s+(?:left|right)|(?:left|right)[- ]turn)\s+from\s+[^,;.]{1,60}?\binto\s+"
+                        r"\b(?:turn(?:ed|ing|s)?\s+(?:\w+ly\s+)?(?:left|right)|(?:left|right)[- ]turn)\s+from\s+[^,;.]{1,60}?\binto\s+"
                         r"[^,;.]{0,60}?\b(?:north|south|east|west)+bound\b", re.I)
 # A turn finished before the interaction began: the AV is then on the street (and heading) it turned onto.
 PRIOR_TURN = compile_gated(r"\b(?:after|had|having)\s+(?:completing|making|turning|completed|made|turned)\b[^.]*?"
