@@ -1,7 +1,9 @@
 """Issue 13, what the parties do (start and action string), read from real narratives of the studyable sets
 (tests/text/sgo/study3.jsonl, tests/text/csvr/study2.jsonl, ../shared/data/reports/dev.jsonl with the dev gold;
 each entry's `source` beside its text). Session 16: readings that recur across the studyable reports, each test
-asserting what sketch.md's rules and the gold give; removing the reading fails its test.
+asserting what sketch.md's rules and the gold give; removing the reading fails its test. Most tell a real narrative
+two ways, as it is and in a phrasing or clause order another reporter uses for the same moves (found by rewriting
+every studyable narrative so): the reading must not change.
 """
 
 from __future__ import annotations
@@ -189,17 +191,17 @@ def _party(rid: str, k: int = 0) -> Party:
     return extract(_TEXT[rid][1], rid).npcs[k]
 
 
+def _told(rid: str, pattern: str, repl: str) -> Sketch:
+    """The narrative with one phrasing changed to another a reporter uses for the same moves."""
+    assert re.search(pattern, _TEXT[rid][1])
+    return extract(re.sub(pattern, repl, _TEXT[rid][1]), rid)
+
+
 def test_the_lane_a_turn_from_a_heading_ends_in_is_no_lane_change() -> None:
     # "initiated a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]": the lane named is
     # where the turn ends, as for "turned right into EGO's lane" (the gold: `e`).
     p = _party('nhtsa-sgo-ads-30270-9333-v1')
     assert p.actions == "e"
-
-
-def _told(rid: str, pattern: str, repl: str) -> Sketch:
-    """The narrative with one phrasing changed to another a reporter uses for the same moves."""
-    assert re.search(pattern, _TEXT[rid][1])
-    return extract(re.sub(pattern, repl, _TEXT[rid][1]), rid)
 
 
 def test_a_run_told_in_the_simple_past_goes_back_to_the_av_on_its_way() -> None:
