@@ -197,6 +197,18 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'Pony.ai vehicle did not sustain any damage. There were no injuries or property damage, the police '
         'were not called to the scene, and a Pony.ai employee drove the Pony.ai vehicle back to Pony.ai’s '
         'Irvine facility.'),
+    'nhtsa-sgo-ads-30270-9544-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9544, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 6:09 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was travelling '
+        'southbound on the single lane on [XXX], preparing to enter the dedicated left turn lane at the '
+        'intersection with [XXX], when an SUV was exiting a shopping center driveway making a right turn '
+        'onto southbound [XXX]. As the SUV turned, the front driver side of the SUV made contact with the '
+        'passenger side of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in '
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 '
+        'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }
 
 
@@ -312,3 +324,11 @@ def test_a_party_out_of_a_roadside_place_was_beside_or_ahead_of_the_av_whatever_
     # the rear end, no side of it: it came out behind the AV.
     p = _party("csvr-pony.ai-20220517-s159")
     assert (p.position, p.lane) == ("R6", "right")
+
+
+def test_another_party_s_turn_is_no_turn_of_the_av() -> None:
+    # "The Waymo AV was traveling northbound on [XXX] approaching the intersection with [XXX], when an SUV was
+    # exiting a shopping center driveway making a right turn onto southbound [XXX]": the turn is the SUV's; the AV
+    # goes straight, so the driveway beside it is no leg it exits onto (R4): the SUV is at its right (R5).
+    p = _party("nhtsa-sgo-ads-30270-9544-v1")
+    assert (p.position, p.lane) == ("R5", "right")

@@ -34,6 +34,13 @@ from .story import (BOILERPLATE, body_side, context, Doc, add_doors, attach_towe
 MAX_NARRATIVE_CHARS = 100_000
 
 
+# The AV's own turn told in its clause (which a clause word ends, but not "while yielding", its own participle; a
+# period inside it is an abbreviation's: "on Sixth St. with a green light").
+_AV_TURN_TOLD = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while(?!\s+\w+ing\b)|as|then|whereupon)\b)(?:[^.;]|\.(?=\s+[a-z0-9])))"
+                              r"{0,160}?"
+                              r"(?:\bturn(?:ed|ing)\b|"
+                              r"\b(?:make|making|complete|completing|execute|executing)\s+(?:a|an|its|the)\s+(?:\w+\s+)?"
+                              r"(?:left|right)\s+turn)", re.I)
 _INTO_EGO_LANE = compile_gated(r"\binto\s+EGO's\s+(?:travel\s+)?lane\b", re.I)
 
 
@@ -191,9 +198,10 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     d.ego_start = ego_start
     ego_actions = stood_at_contact(d, ego_start, ego_actions)
     ego_heading = heading(d, -1)
-    ego_turning = bool(set(ego_actions) & set("dej")) or bool(fre.search(
-        r"\bturn(?:ed|ing)\b|\b(?:make|making|complete|completing|execute|executing)\s+(?:a|an|its|the)\s+"
-        r"(?:\w+\s+)?(?:left|right)\s+turn", t)) and junction
+    # The AV's own turn, told in its own clause ("EGO ... was proceeding southbound in the turn lane ..., yielding to
+    # a pedestrian before completing a right turn"), not another's ("..., when an SUV was exiting a shopping center
+    # driveway making a right turn").
+    ego_turning = bool(set(ego_actions) & set("dej")) or bool(_AV_TURN_TOLD.search(t)) and junction
     npcs: list[Party] = []
     ev = Evidence(d)
     weak: list[str] = []
