@@ -52,6 +52,9 @@ def _subs(*pairs: tuple[str, str]) -> Callable[[str], str]:
     return apply
 
 
+_GERUND = {"move": "moving", "turn": "turning", "reverse": "reversing", "slow": "slowing", "proceed": "proceeding",
+           "merge": "merging", "accelerate": "accelerating", "pass": "passing", "change": "changing", "make": "making",
+           "enter": "entering", "cross": "crossing"}
 _SIMPLE_PAST = {"traveling": "traveled", "travelling": "travelled", "driving": "drove", "proceeding": "proceeded",
                 "heading": "headed"}
 _DONE = {"reverse": "reversed", "proceed": "proceeded", "move": "moved", "accelerate": "accelerated",
@@ -334,6 +337,9 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("slowed to a stop -> slowed gradually to a stop",
             _sub(r"\b(slowed|braked|decelerated) to a stop\b", r"\1 gradually to a stop")),
     Rewrite("was traveling -> had been traveling", _sub(r"\bwas traveling\b", "had been traveling")),
+    Rewrite("began to <move> -> began <moving>",
+            _sub(r"\b(began|started) to (move|turn|reverse|slow|proceed|merge|accelerate|pass|change|make|enter|cross)\b",
+                 lambda m: f"{m.group(1)} {_GERUND[m.group(2)]}")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

@@ -233,7 +233,7 @@ def test_a_party_queued_behind_the_standing_av_that_speeds_up_moved_off() -> Non
 def test_the_av_passing_after_its_stop_moved_off() -> None:
     # "The truck stopped and the Waymo AV passed the truck on the left. ... the Waymo AV came to a stop": after its
     # stop the AV moved off to pass, then stopped again (the gold: `ahih`), as "began to pass" reads.
-    for verb in ("began to pass", "passed"):
+    for verb in ("began to pass", "passed", "began passing"):
         sk = _told('nhtsa-sgo-ads-30270-10673-v1', r"\bbegan to pass\b", verb)
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ahih"), verb
 

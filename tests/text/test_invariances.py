@@ -78,6 +78,10 @@ KNOWN: dict[str, set[str]] = {
     # the opposite direction is placed behind the AV (R6/same) instead of on the opposite approach (R2). A position
     # reading, left to the session's position work.
     "was traveling -> traveled (the simple past)": {"dmvca-waymo-20241014-r619"},
+    # "a cyclist ... began turning right onto Cabrillo Street but immediately veered left": the cyclist is placed on
+    # the road the AV exits onto (R4) instead of the crossing road to its left (R1; the gold); its actions (`aef`) and
+    # the AV's are read the same. A position reading, left to the position work.
+    "began to <move> -> began <moving>": {"dmvca-waymo-20210801-r202"},
 }
 
 

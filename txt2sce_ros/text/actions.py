@@ -98,7 +98,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"edge|accelerate|follow|pass|nudge|inch|pull\s+(?:forward|out|away))"
           r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
-          r"driving|creeping|accelerating)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
+          # ("began passing", as "began to pass"; "began proceeding around the truck", as "began to proceed around": the
+          # move begun, read by its own words)
+          r"driving|creeping|accelerating|passing)(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
+          r"across|to\s+the)\b)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+(?:\w+ly\s+)?forward\b|"
           r"\bproceed(?:ed|ing|s)?\s+(?:\w+ly\s+)?forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed(?!\s+(?:\w+ly\s+)?around\b)|\bproceeded\s+again|"
