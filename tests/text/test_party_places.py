@@ -209,6 +209,19 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 '
         'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'dmvca-waymo-20241202-r634': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 634, '
+        'column "Accident Detail Description")',
+        'On December 2, 2024 at 10:54 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Los '
+        'Angeles, California was in a collision involving a plastic crate on East 3rd Street at South '
+        'Central Avenue. The Waymo AV was traveling westbound in the center lane on East 3rd Street, '
+        'crossing the intersection with South Central Avenue when the front passenger side of the Waymo AV '
+        'made contact with a plastic crate that was in the roadway within the Waymo AV’s lane of travel. The '
+        'contact with the Waymo AV caused the crate to move into the adjacent right lane, which was occupied '
+        'by a scooterist. The front tire of the scooter made contact with the crate and the scooter and '
+        'scooterist fell. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous '
+        'mode. Given the speed at which the scooter was traveling at the time of the contact, the scooter '
+        'may have sustained damage.'),
 }
 
 
@@ -332,3 +345,12 @@ def test_another_party_s_turn_is_no_turn_of_the_av() -> None:
     # goes straight, so the driveway beside it is no leg it exits onto (R4): the SUV is at its right (R5).
     p = _party("nhtsa-sgo-ads-30270-9544-v1")
     assert (p.position, p.lane) == ("R5", "right")
+
+
+def test_a_party_the_object_struck_by_the_av_then_struck_takes_part() -> None:
+    # "The contact with the Waymo AV caused the crate to move into the adjacent right lane, which was occupied by a
+    # scooterist. The front tire of the scooter made contact with the crate": the scooterist's contact is told in
+    # the sentence after the one that names it; a chain collision's party takes part (sketch.md).
+    sk = extract(_TEXTS["dmvca-waymo-20241202-r634"][1], "dmvca-waymo-20241202-r634")
+    assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("scooter", "R5", "right")]
+    assert [o.category for o in sk.obstacles] == ["debris"] and sk.collision.with_ == "obs1"

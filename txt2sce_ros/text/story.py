@@ -301,10 +301,15 @@ def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
     if e.kind != "party" or d.contact_sent is None or first.sent in d.summary or \
             not 0 < first.sent - d.contact_sent <= 2:
         return False
-    s = d.sents[first.sent]
-    for m in CONTACT.finditer(s):
-        if m.start() > first.end and who_for(m.start(), d.ments[first.sent], None) == e.idx:
-            return True
+    # In the sentence that names it, or in the next ones that name it again ("..., which was occupied by a
+    # scooterist. The front tire of the scooter made contact with the crate").
+    for x in e.mentions:
+        if x.sent < first.sent or x.sent - d.contact_sent > 2 or x.sent in d.summary:
+            continue
+        s = d.sents[x.sent]
+        for m in CONTACT.finditer(s):
+            if m.start() > x.end and who_for(m.start(), d.ments[x.sent], None) == e.idx:
+                return True
     return False
 
 
