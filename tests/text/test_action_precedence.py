@@ -184,6 +184,17 @@ _TEXT: dict[str, tuple[str, str]] = {
         'the driver then disengaged autonomous mode and reversed, making contact with a vehicle that had '
         'approached from the rear and was attempting to pass the Zoox vehicle to make a right turn. There '
         'were no injuries and the police were not called.'),
+    'csvr-waymo-20220128-s127': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 127, column 'Accident Detail Description'), transcribed",
+        'On January 28, 2022 at 6:30 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a passenger vehicle on Franklin Street at Golden '
+        'Gate Avenue. The Waymo AV was stopped at a red light on northbound Franklin Street at Golden Gate '
+        'Avenue. After the traffic light turned green and the Waymo AV had begun to accelerate, the passenger'
+        ' vehicle behind the Waymo AV struck the rear of the Waymo AV. At the time of the impact, the Waymo '
+        'AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s '
+        'seating position). The Waymo AV sustained minor damage, and the trailing passenger vehicle sustained'
+        ' minor damage.'),
 }
 
 
@@ -328,3 +339,16 @@ def test_a_party_that_neared_the_av_was_on_its_way() -> None:
     for verb in ("approached", "neared"):
         p = _told('dmvca-zoox-20220428-r329', r"\bapproached\b", verb).npcs[0]
         assert (p.start, p.actions) == ("moving", "a"), verb
+
+
+def test_a_light_told_as_a_stoplight_or_by_its_colour_after_it() -> None:
+    # "After the stoplight turned green and the Waymo AV had begun to accelerate, the passenger vehicle behind the
+    # Waymo AV struck the rear": the queue's party moved off on that green (the gold: stopped, `i`), and the AV's light
+    # was red, as with "traffic light"; "stopped at a light that was red" is a red light, as "at a red light" is.
+    for word in ("traffic light", "stoplight"):
+        sk = _told('csvr-waymo-20220128-s127', r"\btraffic light\b", word)
+        assert (sk.npcs[0].start, sk.npcs[0].actions, sk.road.control, sk.signal_state) == \
+            ("stopped", "i", "signal", "red"), word
+    for told in ("at a red light", "at a light that was red"):
+        sk = _told('csvr-zoox-20220205-s130', r"\bat a traffic light\b", told)
+        assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "signal", "red"), told

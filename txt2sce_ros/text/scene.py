@@ -9,7 +9,9 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CARDINALS, NUMBER_WORDS
 
-_JUNCTION = compile_gated(r"\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
+#: A light told by its colour after it ("a light that was red", "the signal was still green"): a traffic light.
+_LIGHT_WAS = r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?(?:red|green|yellow|amber)\b"
+_JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
                        r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
@@ -77,7 +79,7 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
 # "was preparing to make a right-on-red": a turn made on red is made at a signal.
 _TURN_ON_RED = r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b"
-_SIGNAL = compile_gated(r"\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
+_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
                      r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
@@ -289,14 +291,17 @@ _STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|standing(
 
 
 # A light that turned green was red before it: an AV that stood when the interaction began stood at that red.
-TURNED_GREEN = compile_gated(r"\b(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
+TURNED_GREEN = compile_gated(r"\b(?:stop\s?)?(?:light|signal|lights|signals)\s+(?:then\s+|had\s+|subsequently\s+)?(?:turned|changed|"
                              r"went|cycled)\s+(?:to\s+)?green\b", re.I)
 
 
 # A red light named as such (not "a red sedan"): "a red light", "the red traffic signal", "a right-on-red", "turned red".
+# ("a light that was red", "while the signal was still red": the colour told of the light after it)
 _RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|" + _TURN_ON_RED +
-                           r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b", re.I)
-_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic\s+)?(?:light|signal)\b", re.I)
+                           r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b|"
+                           r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?red\b", re.I)
+# ("a stoplight", "a stop light": a traffic light)
+_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic\s+|stop\s?)?(?:light|signal)\b", re.I)
 _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 
 
