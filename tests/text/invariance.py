@@ -331,6 +331,7 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("was stopped -> had come to a stop", _sub(r"\bwas stopped\b", "had come to a stop")),
     Rewrite("approached -> neared", _sub(r"\bapproached\b", "neared")),
     Rewrite("at a red light -> at a light that was red", _sub(r"\bat a red light\b", "at a light that was red")),
+    Rewrite("at the intersection of -> at the corner of", _sub(r"\bat the intersection of\b", "at the corner of")),
     Rewrite("came to a stop -> came slowly to a stop", _sub(r"\bcame to a stop\b", "came slowly to a stop")),
     Rewrite("turned left/right -> turned sharply left/right",
             _sub(r"\b(turned|turning|turns) (left|right)\b", r"\1 sharply \2")),

@@ -11,7 +11,10 @@ from .lexicon import CARDINALS, NUMBER_WORDS
 
 #: A light told by its colour after it ("a light that was red", "the signal was still green"): a traffic light.
 _LIGHT_WAS = r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?(?:red|green|yellow|amber)\b"
-_JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
+_JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
+                          # "at the corner of Bush Street and Grant Avenue" (not "the front corner of EGO": a street's
+                          # name, capitalised or redacted, follows)
+                          r"\b(?:at|on)\s+the\s+(?:\w+\s+)?corner\s+of\s+(?-i:[A-Z0-9\[])|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
                        r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
