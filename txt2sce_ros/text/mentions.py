@@ -461,6 +461,9 @@ def sentences(text: str) -> list[str]:
     return [p.replace("\x00", ".").strip() for p in parts if p and p.strip()]
 
 
+_KICK_SCOOTER = compile_gated(r"\b(?:electric|e|kick|stand-up|standing|rental|shared|dockless)\b", re.I)
+
+
 def _category(head: str, mods: str) -> tuple[str, str]:
     h = head.lower()
     if h in ("ego",):
@@ -474,6 +477,8 @@ def _category(head: str, mods: str) -> tuple[str, str]:
         words = mods.lower().split()  # once, not once per model name
         if any(v in words for v in VAN_MODELS):
             cat = "van"
+        elif h == "scooterist" and _KICK_SCOOTER.search(mods):
+            cat = "scooter"  # "an electric scooterist", "a kick scooterist": no motor scooter
         return "party", cat
     if h in VAN_MODELS:
         return "party", "van"
