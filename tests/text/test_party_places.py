@@ -222,6 +222,14 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'scooterist fell. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous '
         'mode. Given the speed at which the scooter was traveling at the time of the contact, the scooter '
         'may have sustained damage.'),
+    'csvr-zoox-20230208-s212': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 212, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomy was stopped with brake lights illuminated in traffic southbound on '
+        'Embarcadero Street towards Folsom Street. When traffic ahead began to move the Zoox vehicle was '
+        'appropriately following the car ahead at low speed when it was rear ended by Vehicle #2 at low '
+        'speed. The other party did not stop to exchange information and left the scene. There were no '
+        'injuries and police were not called.'),
 }
 
 
@@ -354,3 +362,10 @@ def test_a_party_the_object_struck_by_the_av_then_struck_takes_part() -> None:
     sk = extract(_TEXTS["dmvca-waymo-20241202-r634"][1], "dmvca-waymo-20241202-r634")
     assert [(p.category, p.position, p.lane) for p in sk.npcs] == [("scooter", "R5", "right")]
     assert [o.category for o in sk.obstacles] == ["debris"] and sk.collision.with_ == "obs1"
+
+
+def test_rear_ended_by_belongs_to_the_party_named_after_by() -> None:
+    # "the Zoox vehicle was appropriately following the car ahead at low speed when it was rear ended by Vehicle #2":
+    # the car ahead is ahead (R5); Vehicle #2 came from behind (R6).
+    sk = extract(_TEXTS["csvr-zoox-20230208-s212"][1], "csvr-zoox-20230208-s212")
+    assert sorted((p.position, p.lane) for p in sk.npcs) == [("R5", "same"), ("R6", "same")]

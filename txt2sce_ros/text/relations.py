@@ -329,6 +329,11 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                     not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
                 cues.append(Cue("lane", "same", (base + m.start(), base + m.end())))
         for m in _BEHIND.finditer(win):
+            if m.group(0).lower().endswith(" by") and fre.fullmatch(r"\s*(?:(?:a|an|the|another)\s*)?", win[m.end():],
+                                                                    re.I):
+                # "following the car ahead at low speed when it was rear ended by Vehicle #2": the one named after
+                # "by" came from behind, not the party whose words end there
+                continue
             if m.group(0).lower().endswith(" it") and (_EGO_CLAUSE.search(win[:m.start()]) or fre.search(
                     r"\bEGO\s+(?:then\s+|subsequently\s+|also\s+)?$", win[:m.start()])):
                 # "... the front bumper of EGO, which had come to a stop behind it": the AV is behind the party
