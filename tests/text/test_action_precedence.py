@@ -195,6 +195,16 @@ _TEXT: dict[str, tuple[str, str]] = {
         'AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s '
         'seating position). The Waymo AV sustained minor damage, and the trailing passenger vehicle sustained'
         ' minor damage.'),
+    'csvr-waymo-20211018-s101': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 101, column 'Accident Detail Description'), transcribed",
+        'On October 18, 2021 at 12:57 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, CA was in a collision involving an SUV at Cesar Chavez and Evans Avenue. As the Waymo AV '
+        'approached a right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped traffic. An '
+        'SUV following behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the '
+        'impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present in '
+        'the driver’s seating position. The Waymo AV sustained minor damage to its rear bumper and trunk, and'
+        ' the SUV sustained minor damage to its front bumper and hood.'),
 }
 
 
@@ -352,3 +362,15 @@ def test_a_light_told_as_a_stoplight_or_by_its_colour_after_it() -> None:
     for told in ("at a red light", "at a light that was red"):
         sk = _told('csvr-zoox-20220205-s130', r"\bat a traffic light\b", told)
         assert (sk.road.layout, sk.road.control, sk.signal_state) == ("junction4", "signal", "red"), told
+
+
+def test_a_turn_the_av_approached_is_ahead_not_made() -> None:
+    # "As the Waymo AV approached a right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped
+    # traffic", told with the clause last ("It braked behind stopped traffic as the Waymo AV approached a right
+    # turn ..."): the turn was ahead, not begun (the gold: `ah`), in either order.
+    text = _TEXT['csvr-waymo-20211018-s101'][1]
+    moved = re.sub(r"As (the Waymo AV approached a right turn [^,]*), it (braked [^.]*)\.", r"It \2 as \1.", text)
+    assert moved != text
+    for told in (text, moved):
+        sk = extract(told, 'csvr-waymo-20211018-s101')
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "ah")

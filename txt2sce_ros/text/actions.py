@@ -322,6 +322,7 @@ _EVENT_AFTER = compile_gated(r"\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(?:drop|pick|
                              r"stop\b|turn\b|disengage)", re.I)
 _TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!to\b)[\w-]+,?\s+){1,3}$", re.I)
 _TURN_NOUN = compile_gated(r"(?:(?:un)?protected\s+)?(?:turn\b(?!\s+from)|left\b|right\b|u-?\s?turn\b)", re.I)
+_APPROACHED = compile_gated(r"\bapproach(?:ed|ing|es)?\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _BEFORE_STOP = compile_gated(r"\bbefore\s+(?:\w+ing\s+and\s+)?$", re.I)
 _WHICH_WAS = compile_gated(r",\s*(?:which|that)\s+(?:(?:was|were|had\s+been|had|is)\s+(?:\w+ly\s+)?)?$", re.I)
@@ -582,6 +583,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue
         if code in "defgjDFTY" and _ATTEMPT_WAITING.search(before) and _WHILE_WAITING.match(s[e:]):
             continue
+        if code in "dejT" and _TURN_NOUN.match(s[b:e]) and _APPROACHED.search(before):
+            continue  # "as EGO approached a right turn from Cesar Chavez onto Evans Avenue": the turn ahead, not made
         if code in "defgjFT" and _FOR_MOVE.search(before):
             continue  # "stopped in the left turn lane for an unprotected left turn": the turn it stood there for
         if code == "c" and _AT_CONTACT.match(s[e:]):
