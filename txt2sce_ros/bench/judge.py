@@ -12,7 +12,10 @@ scenario player against the stand-in planner (in-process, lock-step, dt 0.05 s).
    are made in pairs instead (one without, one with, the order alternating from pair to pair so a drift favours
    neither side), and the figure is the median of the pairs' ratios (recording CPU / plain CPU), with their spread
    (lowest and highest pair) and the same for wall time beside it; the best-of ratio is printed too. A real cost
-   moves every pair; a neighbour's burst moves one.
+   moves every pair; a neighbour's burst moves one. Each run starts after a full collection: a generation-2
+   collection (~10 ms, set off by the allocations of whatever ran before) otherwise fell into one side of a pair
+   now and then, and the pairs spread from -16 % to +21 % around a median of ~12 %; with the collection before
+   every run they spread over ~4 points around the same median.
    The share of the view markers (the road on /sim/map/markers, goal and lights on /sim/scenario/markers) is below
    the noise of whole loops on a shared machine, so it is measured on the recorder alone: the same run's frames
    recorded with and without them, interleaved. The road message is built once per map (cached per network, as in
@@ -25,6 +28,7 @@ the neighbours. Recording's disk writes are buffered and flushed within the proc
 from __future__ import annotations
 
 import argparse
+import gc
 import shutil
 import tempfile
 import time
@@ -101,6 +105,7 @@ def _overhead(tmp: Path, pairs: int) -> dict[str, float]:
         for k in range(pairs):
             got = {}
             for recording in ((False, True) if k % 2 == 0 else (True, False)):
+                gc.collect()                      # neither side pays for the other's garbage
                 w0 = time.perf_counter()
                 if recording:
                     w = RunWriter(tmp / f"rec_{name}_{k}")
