@@ -46,6 +46,40 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'brake light. The electric scooterist left the scene without exchanging information. There were no '
         'injuries and police were not called.'
     ),
+    'nhtsa-sgo-ads-30270-9376-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9376,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On November [XXX], 2024 at 10:36 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was alleged to have contributed to a collision between an SUV and a concrete '
+        'median curb on [XXX] at [XXX]. The Waymo AV was traveling southbound on [XXX] in the right of two '
+        'travel lanes with its left turn signal activated, and traversed through the intersection with [XXX] '
+        'with an SUV following slightly behind and to the left of the Waymo AV in the adjacent travel lane. '
+        'As the Waymo AV exited the intersection with its left turn signal still activated, it slowed and '
+        'moved slightly to the left within its lane, preparing to change lanes due to a stopped truck ahead '
+        'within the right lane. As the SUV in the left lane was passing the Waymo AV, it maneuvered to the '
+        'left in its lane, and the driver side made contact with the center concrete median curb. At the time'
+        " of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV sustained a flat "
+        'tire, and the driver alleged an injury. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'
+    ),
+    'nhtsa-sgo-ads-30270-10668-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10668, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On April [XXX], 2025 at 10:41 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a pickup truck on [XXX] at [XXX]. The Waymo AV '
+        'was stopped facing north at a red light on [XXX] with the left turn signal activated, preparing to '
+        'make an unprotected left turn onto [XXX]. A pickup truck traveling eastbound on [XXX] made a right '
+        'turn onto [XXX] and made contact with a passenger car parked facing south at the curb near the '
+        'intersection with [XXX]. As the pickup truck maneuvered away from the passenger car and continued to'
+        ' proceed southbound on [XXX], the driver side of the pickup truck then made contact with the rear '
+        "driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The pickup truck sustained damage. Waymo is reporting this crash under Request No. '
+        '2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'
+    ),
 }
 
 
@@ -60,3 +94,12 @@ def test_a_scooterist_rides_a_motor_scooter_an_electric_scooterist_a_scooter() -
     assert [p.category for p in _sketch("csvr-cruise-20230504-s240").npcs] == ["motorcycle"]
     assert [p.category for p in _sketch("dmvca-cruise-20190107-r0").npcs] == ["motorcycle"]
     assert [p.category for p in _sketch("dmvca-cruise-20191107-r89").npcs] == ["scooter"]
+
+
+def test_what_another_party_ran_into_takes_part() -> None:
+    # "A pickup truck ... made contact with a passenger car parked facing south at the curb ... then made contact with
+    # the rear driver side of the Waymo AV": the parked car the truck struck first is an obstacle of the event (gold:
+    # parked_vehicle); "As the SUV in the left lane was passing the Waymo AV, it maneuvered to the left in its lane,
+    # and the driver side made contact with the center concrete median curb": the curb (gold: barrier).
+    assert [o.category for o in _sketch("nhtsa-sgo-ads-30270-10668-v1").obstacles] == ["parked_vehicle"]
+    assert [o.category for o in _sketch("nhtsa-sgo-ads-30270-9376-v1").obstacles] == ["barrier"]

@@ -339,6 +339,31 @@ def _only_travelled_behind(d: Doc, e: Entity) -> bool:
     return bool(told) and all(named_behind_by_av(d, m, _TRAVELLED_BEHIND, 100) for m in told)
 
 
+# "made contact with a passenger car parked ...", "made contact with the driver side of an SUV that was parked",
+# "made contact with the center concrete median curb": the words between a contact verb and the thing it met
+_CONTACT_OBJECT = compile_gated(r"^\s*(?:with\s+|into\s+|against\s+)?(?:the\s+|an?\s+)?(?:(?:front|rear|back|left|right|"
+                                r"driver|passenger|side|corner|bumper|door|mirror)\s+){0,4}(?:of\s+)?(?:the\s+|an?\s+)?$",
+                                re.I)
+
+
+def struck_by_party(d: Doc, e: Entity) -> bool:
+    """Did another party (not the AV) strike this object or parked vehicle in the telling ("A pickup truck ... made
+    contact with a passenger car parked facing south at the curb", "the driver side made contact with the center
+    concrete median curb")? What a party of the event ran into takes part in it (the studyable gold counts it)."""
+    for m in e.mentions:
+        if m.sent in d.summary:
+            continue
+        s = d.sents[m.sent]
+        for c in CONTACT.finditer(s, max(0, m.start - 60), m.start):
+            if not _CONTACT_OBJECT.match(s[c.end():m.start]) or NEGATION.search(s[max(0, c.start() - 20):c.start()]):
+                continue
+            who = who_for(c.start(), [x for x in d.ments[m.sent] if x.start < c.start()], None, s)
+            if who is not None and who >= 0 and who != e.idx and d.ents[who].kind == "party" and \
+                    not d.ents[who].parked:
+                return True
+    return False
+
+
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
     parties, obstacles = [], []
     for e in d.ents:
@@ -370,7 +395,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         if e.idx in d.doors:
             obstacles.append(e)
         elif e.kind == "party" and e.parked and not moved:
-            if is_partner or acted_for(d, e):
+            if is_partner or acted_for(d, e) or struck_by_party(d, e):
                 obstacles.append(e)
         elif e.kind == "party":
             if any(d.doors.get(k) == e.idx for k in d.doors) and not moved:
@@ -381,7 +406,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         elif e.kind == "obstacle":
             if "sign" in e.heads and not (is_partner or e.idx in d.struck):
                 continue  # a stop sign the AV obeyed is traffic control, not an object in the scene
-            if is_partner or e.idx in d.struck or acted_for(d, e):
+            if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e):
                 obstacles.append(e)
     # A numbered group ("two unoccupied vehicles parked") is that many parties, each read alike; in a summary
     # ("a collision involving two SUVs") it only announces parties the telling names one by one, unless the telling
