@@ -353,6 +353,31 @@ REWRITES: tuple[Rewrite, ...] = (
 )
 
 
+def _clause_after(t: str) -> str:
+    """"While the Waymo AV remained stopped, a car made contact." -> "A car made contact while the Waymo AV remained
+    stopped.": an opening clause of the same moment told after its main clause."""
+    return re.sub(r"(?:(?<=^)|(?<=\. ))(While|As) ([^,.]{5,90}?), ([a-z][^.]{10,300}?)\.",
+                  lambda m: f"{m.group(3)[0].upper()}{m.group(3)[1:]} {m.group(1).lower()} {m.group(2)}.", t)
+
+
+def _when_to_as(t: str) -> str:
+    """"The Waymo AV was stopped at X when a car struck it." -> "A car struck it as the Waymo AV was stopped at X."."""
+    return re.sub(r"(?:(?<=^)|(?<=\. ))The ((?:Waymo|Cruise|Zoox) (?:AV|vehicle)) was ([^.,]{5,150}?),? when "
+                  r"((?:a|an) [^.]{10,300}?)\.", lambda m: f"{m.group(3)[0].upper()}{m.group(3)[1:]} as the "
+                  f"{m.group(1)} was {m.group(2)}.", t)
+
+
+#: Session 16: clause-order rewrites, measured (printed by `main`) but not yet held by a test. Over all 379 studyable
+#: narratives (dev gold and study, study2, study3) the first read 28 of 144 differently at the session's start and
+#: 22 at its end (here, the dev narratives only: 10 of 52); the second 3 of 42. What still differs: a trailing
+#: clause whose subject is not named ("while stopped"), the AV's state or run told after the party's contact, the
+#: AV's merge attempt told after its stop, a clause that now follows "damaging ..." (read as after the contact).
+CLAUSE_ORDER: tuple[Rewrite, ...] = (
+    Rewrite("While/As <clause>, <main>. -> <Main> while/as <clause>.", _clause_after),
+    Rewrite("The AV was <...> when a <party> ... -> A <party> ... as the AV was <...>", _when_to_as),
+)
+
+
 @lru_cache(maxsize=1)
 def studyable() -> dict[str, str]:
     """id -> narrative of the dev gold and study sketches (dev.jsonl holds the texts)."""
@@ -395,6 +420,10 @@ def main() -> None:
         print(f"{rw.name:<46}{told:>10}{len(ids):>9}  {', '.join(ids[:3])}")
     print(f"{'all':<46}{total_told:>10}{total_changed:>9}  ({total_changed / max(1, total_told):.1%} of rewritten "
           f"narratives read differently)")
+    print("clause order (measured, not held):")
+    for rw in CLAUSE_ORDER:
+        told, ids = changed(rw)
+        print(f"{rw.name:<46}{told:>10}{len(ids):>9}  {', '.join(ids[:3])}")
 
 
 if __name__ == "__main__":
