@@ -80,6 +80,32 @@ _TEXTS: dict[str, tuple[str, str]] = {
         '2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'
     ),
+    'nhtsa-sgo-ads-30270-7936-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7936,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On May [XXX], 2024 at 8:25 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Arizona'
+        ' was in a collision involving a chain at the entrance of a parking lot at Arizona State University '
+        'on [XXX] near [XXX]. The Waymo AV was traveling north on [XXX] when it made a left turn into a '
+        'parking lot near [XXX]. As the Waymo AV was entering the parking lot, it made contact with a chain '
+        "hanging at the entrance of the parking lot. At the time of the impact, the Waymo AV's Level 4 ADS "
+        'was engaged in autonomous mode. The chain sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'
+    ),
+    'nhtsa-sgo-ads-30270-7729-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7729,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On April [XXX], 2024 at 11:07 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Santa Monica,'
+        ' California was in a collision involving a chain in a parking lot at [XXX]. The Waymo AV was '
+        'traveling northwest on [XXX] when it made a left turn into a parking lot at [XXX]. As the Waymo AV '
+        'was turning into the section of the parking lot directly to its left, the Waymo AV made contact with'
+        ' a hanging chain separating a section of the parking lot. At the time of the impact, the Waymo AVs '
+        'Level 4 ADS was engaged in autonomous mode. The Waymo AV and the chain sustained damage. Waymo is '
+        'reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'
+    ),
 }
 
 
@@ -103,3 +129,13 @@ def test_what_another_party_ran_into_takes_part() -> None:
     # and the driver side made contact with the center concrete median curb": the curb (gold: barrier).
     assert [o.category for o in _sketch("nhtsa-sgo-ads-30270-10668-v1").obstacles] == ["parked_vehicle"]
     assert [o.category for o in _sketch("nhtsa-sgo-ads-30270-9376-v1").obstacles] == ["barrier"]
+
+
+def test_a_chain_across_a_lot_is_a_barrier() -> None:
+    # "made contact with a hanging chain separating a section of the parking lot", "made contact with a chain hanging
+    # at the entrance of the parking lot": a chain closing a way is a barrier, as a gate is (gold of both); the AV
+    # struck an object, so the report is complete.
+    for rid in ("nhtsa-sgo-ads-30270-7729-v1", "nhtsa-sgo-ads-30270-7936-v1"):
+        sk = _sketch(rid)
+        assert [o.category for o in sk.obstacles] == ["barrier"]
+        assert (sk.collision.with_, sk.collision.type, sk.missing) == ("obs1", "hit_object", ())

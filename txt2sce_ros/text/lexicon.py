@@ -161,6 +161,9 @@ OBSTACLE_HEADS: dict[str, str] = {
     "wheel chock": "debris", "crossing arm": "barrier", "gate arm": "barrier", "overhang": "other", "awning": "other",
     "sandwich board": "pole", "newspaper stand": "other", "newsstand": "other", "garbage can": "other",
     "garbage bin": "other", "sawhorse": "barrier", "parking bumper": "barrier",
+    # a chain hung across an entrance or a lot's lane closes it as a gate does ("made contact with a hanging chain
+    # separating a section of the parking lot"); not "a chain reaction" (mentions.find_mentions)
+    "chain": "barrier",
 }
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
 PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)

@@ -229,6 +229,7 @@ _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
                               r"\bfor\s+(?:a|the|its|an\s+\w+)\s+pick-?up\s*(?:[.,;]|$|\b(?:and|when|while|at|on|in|facing)\b)|"
                               r"\bpick-?up\s+(?:location|zone|spot|point)\b", re.I)
+_CHAIN_OF = compile_gated(r"^\s*(?:reactions?|collisions?|crash(?:es)?|of\s+events)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
 _STOP_BACK = compile_gated(r"^(?:to|of|with|by|for|from|behind|into|onto|on|in|at|near|around|past|and|or|but|"
@@ -540,6 +541,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 continue
             if head[0].islower() and hl in _WORD_MODELS:
                 continue  # "a truck-mounted light matrix", "in accord with": the word, not the car model
+            if hl == "chain" and _CHAIN_OF.match(after):
+                continue  # "a chain reaction", "a chain of events": no object
             if hl in ("pickup", "pick-up") and _RIDER_PICKUP.search(s[max(0, m.start() - 30):m.end() + 30]):
                 continue  # "stopped for a passenger pickup": a robotaxi's errand, not a pickup truck
         if PARTY_HEADS.get(hl) == "pedestrian" and _IN_VEHICLE.match(after):
