@@ -205,6 +205,16 @@ _TEXT: dict[str, tuple[str, str]] = {
         'impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present in '
         'the driver’s seating position. The Waymo AV sustained minor damage to its rear bumper and trunk, and'
         ' the SUV sustained minor damage to its front bumper and hood.'),
+    'dmvca-waymo-20211008-r227': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 227, column '
+        '"Accident Detail Description")',
+        'On October 8, 2021 at 6:39 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a passenger vehicle at Mission Street at Avalon '
+        'Avenue. While traveling northwest on Mission Street in autonomous mode, the Waymo AV navigated '
+        'around a double-parked vehicle stopped in the right lane. After re-entering the right lane, the '
+        'Waymo AV came to a complete stop behind a second passenger vehicle, at which time the driver of the '
+        'Waymo AV transitioned into manual mode. The second passenger vehicle reversed into the Waymo AV, '
+        'making contact with its front bumper. Both vehicles sustained minor bumper damage.'),
 }
 
 
@@ -374,3 +384,15 @@ def test_a_turn_the_av_approached_is_ahead_not_made() -> None:
     for told in (text, moved):
         sk = extract(told, 'csvr-waymo-20211018-s101')
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ah")
+
+
+def test_a_run_told_by_a_trailing_participle_clause_came_first() -> None:
+    # "While traveling northwest on Mission Street in autonomous mode, the Waymo AV navigated around a double-parked
+    # vehicle", told with the clause last ("The Waymo AV navigated around a double-parked vehicle stopped in the right
+    # lane while traveling northwest ..."): the run, then the way round (the gold: `afgh`), in either order.
+    text = _TEXT['dmvca-waymo-20211008-r227'][1]
+    moved = re.sub(r"While (traveling [^,]*), the Waymo AV (navigated [^.]*)\.", r"The Waymo AV \2 while \1.", text)
+    assert moved != text
+    for told in (text, moved):
+        sk = extract(told, 'dmvca-waymo-20211008-r227')
+        assert (sk.ego.start, sk.ego.actions) == ("moving", "afgh")

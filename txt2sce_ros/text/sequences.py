@@ -434,8 +434,9 @@ def _background(d: Doc, a: Act, acts: list[Act]) -> bool:
         return False
     s = d.sents[a.sent]
     opener = None
-    for m in _TRAILING_SAME_MOMENT.finditer(s, 0, a.pos):
-        opener = m  # the last one before the run
+    for m in _TRAILING_SAME_MOMENT.finditer(s, 0, a.pos + len(a.text)):
+        if m.start() < a.pos:
+            opener = m  # the last one before the run (or opening it: "while traveling northwest")
     if opener is None or ("," in s[opener.end():a.pos] or ";" in s[opener.end():a.pos]):
         return False  # no such clause, or the run is past its end
     return any(x.sent == a.sent and x.pos < opener.start() and x.code not in "aAS" for x in acts)
