@@ -106,6 +106,25 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or '
         'correct its reporting with additional information as it may become available.'
     ),
+    'nhtsa-sgo-ads-30270-10695-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10695, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On May [XXX], 2025 at 8:50 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Paradise '
+        'Valley, Arizona was in a collision involving an animal and subsequently an SUV on [XXX] at [XXX]. '
+        'The Waymo AV was traveling southbound on [XXX] in the leftmost lane, proceeding through a green '
+        'light at the intersection with [XXX]. As the Waymo AV exited the intersection, a cat crossed [XXX] '
+        "from the east side of the street, and began to enter the Waymo AV's lane of travel. As the Waymo AV "
+        'braked, the front of the Waymo AV made contact with the cat, which subsequently ran away, and the '
+        'Waymo AV came to a stop. The front of an SUV traveling directly behind the Waymo AV then made '
+        'contact with the right rear of the stationary Waymo AV. A passenger car then braked to a stop behind'
+        ' the Waymo and to the left of the SUV. A second passenger car then made contact with the SUV and the'
+        " first passenger car. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. All involved vehicles sustained damage. Waymo is reporting this crash under Request'
+        ' No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away and because of '
+        'airbag deployment. Waymo may supplement or correct its reporting with additional information as it '
+        'may become available.'
+    ),
 }
 
 
@@ -139,3 +158,11 @@ def test_a_chain_across_a_lot_is_a_barrier() -> None:
         sk = _sketch(rid)
         assert [o.category for o in sk.obstacles] == ["barrier"]
         assert (sk.collision.with_, sk.collision.type, sk.missing) == ("obs1", "hit_object", ())
+
+
+def test_the_first_of_two_is_the_earlier_and_a_party_struck_in_the_chain_takes_part() -> None:
+    # (dev.jsonl, official gold) "A passenger car then braked to a stop behind the Waymo and to the left of the SUV. A
+    # second passenger car then made contact with the SUV and the first passenger car": "the first passenger car" is
+    # the one named first (not the second, named last), and a party the chain's car struck takes part (gold: three
+    # cars, the SUV, the first and the second passenger car).
+    assert [p.category for p in _sketch("nhtsa-sgo-ads-30270-10695-v1").npcs] == ["car"] * 3

@@ -753,6 +753,12 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             pass
         elif m.det != "a":
             recent = list(reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))))
+            if "first" in m.mods.split():
+                # "A passenger car then braked to a stop ... A second passenger car then made contact with the SUV
+                # and the first passenger car": "the first" is the one introduced last before "a second" (the
+                # latest named is that second, or another party named again in between)
+                recent = sorted((e for e in recent if not any("second" in x.mods.split() for x in e.mentions)),
+                                key=lambda e: (-e.mentions[0].sent, -e.mentions[0].start))
             if m.kind == "party" and m.head not in _BARE:
                 # "the passenger vehicle" repeats the noun of "a passenger vehicle": the party named so is the one
                 # meant, before any other party a looser noun fits ("its lead vehicle" named in between)

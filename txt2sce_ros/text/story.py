@@ -310,6 +310,8 @@ def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
         for m in CONTACT.finditer(s):
             if m.start() > x.end and who_for(m.start(), d.ments[x.sent], None) == e.idx:
                 return True
+        if _met_by_party(d, x):
+            return True  # "A second passenger car then made contact with the SUV and the first passenger car"
     return False
 
 
@@ -341,27 +343,32 @@ def _only_travelled_behind(d: Doc, e: Entity) -> bool:
 
 # "made contact with a passenger car parked ...", "made contact with the driver side of an SUV that was parked",
 # "made contact with the center concrete median curb": the words between a contact verb and the thing it met
-_CONTACT_OBJECT = compile_gated(r"^\s*(?:with\s+|into\s+|against\s+)?(?:the\s+|an?\s+)?(?:(?:front|rear|back|left|right|"
+# (the second of two things met, too: "made contact with the SUV and the first passenger car")
+_CONTACT_OBJECT = compile_gated(r"^\s*(?:with\s+|into\s+|against\s+)?(?:(?:the|an?)\s+(?:[\w-]+\s+){1,3}and\s+)?"
+                                r"(?:the\s+|an?\s+)?(?:(?:front|rear|back|left|right|"
                                 r"driver|passenger|side|corner|bumper|door|mirror)\s+){0,4}(?:of\s+)?(?:the\s+|an?\s+)?$",
                                 re.I)
+
+
+def _met_by_party(d: Doc, m: Mention) -> bool:
+    """Is mention `m` what another party (not the AV) made contact with: a contact verb of that party's clause, then
+    the thing met ("made contact with the driver side of an SUV that was parked")?"""
+    s = d.sents[m.sent]
+    for c in CONTACT.finditer(s, max(0, m.start - 60), m.start):
+        if not _CONTACT_OBJECT.match(s[c.end():m.start]) or NEGATION.search(s[max(0, c.start() - 20):c.start()]):
+            continue
+        who = who_for(c.start(), [x for x in d.ments[m.sent] if x.start < c.start()], None, s)
+        if who is not None and who >= 0 and who != m.entity and d.ents[who].kind == "party" and \
+                not d.ents[who].parked:
+            return True
+    return False
 
 
 def struck_by_party(d: Doc, e: Entity) -> bool:
     """Did another party (not the AV) strike this object or parked vehicle in the telling ("A pickup truck ... made
     contact with a passenger car parked facing south at the curb", "the driver side made contact with the center
     concrete median curb")? What a party of the event ran into takes part in it (the studyable gold counts it)."""
-    for m in e.mentions:
-        if m.sent in d.summary:
-            continue
-        s = d.sents[m.sent]
-        for c in CONTACT.finditer(s, max(0, m.start - 60), m.start):
-            if not _CONTACT_OBJECT.match(s[c.end():m.start]) or NEGATION.search(s[max(0, c.start() - 20):c.start()]):
-                continue
-            who = who_for(c.start(), [x for x in d.ments[m.sent] if x.start < c.start()], None, s)
-            if who is not None and who >= 0 and who != e.idx and d.ents[who].kind == "party" and \
-                    not d.ents[who].parked:
-                return True
-    return False
+    return any(m.sent not in d.summary and _met_by_party(d, m) for m in e.mentions)
 
 
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
