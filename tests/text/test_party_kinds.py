@@ -125,6 +125,20 @@ _TEXTS: dict[str, tuple[str, str]] = {
         'airbag deployment. Waymo may supplement or correct its reporting with additional information as it '
         'may become available.'
     ),
+    'nhtsa-sgo-ads-988-3684-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 988-3684, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data'
+        ,
+        'On August [XXX], 2022, Kodiak Robotics, Inc. ("Kodiak") filed an Incident Report (the "Report") '
+        'under the Standing General Order 2021-01 (the "Order"). PACCAR, Inc. (Paccar) manufactured the '
+        'Kodiak-operated motor vehicle involved in the incident summarized in the Incident Report. Because '
+        'Paccar is also a Reporting Entity under the Order, Paccar is submitting a duplicate of the redacted '
+        'public copy of the Report. Paccar has selected "Unknown" in the "ADS version" field solely to avoid '
+        "the second submission of nonpublic Kodiak CBI. Paccar is in possession of Kodiak's response to this "
+        "field and incorporates Kodiak's response into this submission by reference. Paccar's submission is "
+        'based on facts supplied to Paccar by Kodiak. Paccar has not investigated the alleged incident and '
+        'has no independent knowledge of the facts in the Report.'
+    ),
 }
 
 
@@ -166,3 +180,11 @@ def test_the_first_of_two_is_the_earlier_and_a_party_struck_in_the_chain_takes_p
     # the one named first (not the second, named last), and a party the chain's car struck takes part (gold: three
     # cars, the SUV, the first and the second passenger car).
     assert [p.category for p in _sketch("nhtsa-sgo-ads-30270-10695-v1").npcs] == ["car"] * 3
+
+
+def test_the_operator_s_motor_vehicle_is_the_av() -> None:
+    # "PACCAR, Inc. (Paccar) manufactured the Kodiak-operated motor vehicle involved in the incident summarized in the
+    # Incident Report": the AV, named as the SGO form names vehicles, no other party; the narrative tells no event, so
+    # the report is incomplete (gold: no party, missing npcs).
+    sk = _sketch("nhtsa-sgo-ads-988-3684-v1")
+    assert sk.npcs == () and "npcs" in sk.missing

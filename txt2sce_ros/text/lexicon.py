@@ -48,7 +48,8 @@ def ego_patterns(co: str) -> tuple[str, ...]:
     return (
         rf"\b(?:the|a|an|our|its)?\s*(?:registered\s+)?(?:{co})(?:'s|-operated|-owned)?\s+"
         rf"(?:(?:autonomous|av|test|testing|driverless|self-driving|"
-        rf"ads|driver-equipped|level\s+4)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
+        # ("the Kodiak-operated motor vehicle involved in the incident": the form's word for a vehicle)
+        rf"ads|driver-equipped|level\s+4|motor)\s+)*{_AV_NOUN}(?:s\b)?(?:\s*\((?:vehicle|car)?\s*1\))?",
         rf"\b(?:the|a|an|our)\s+(?:{co})\b(?!\s+(?:operator|driver|safety|test|is|has|may|received|believes|"
         rf"reporting|vehicle operators))(?:\s+(?:(?-i:[A-Z])[\w.]*|\d+)){{0,3}}(?:\s+{_AV_NOUN}\b)?",
         r"\b(?:the|a|an|our)\s+(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck|"
