@@ -1,0 +1,1414 @@
+"""Real collision narratives quoted by the extraction tests, one place for all of them: report id -> (source,
+narrative), the narrative as the studyable set gives it (tests/text/csvr/study2.jsonl, tests/text/sgo/study3.jsonl,
+../shared/data/reports/dev.jsonl) and its source beside it. Never from a check set or the holdout."""
+
+from __future__ import annotations
+
+QUOTED: dict[str, tuple[str, str]] = {
+    'csvr-argo-20211019-s102': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "102, column 'Accident Detail Description'), transcribed",
+        'An Argo AI Autonomous Vehicle (“Argo AV”) was involved in a rear-end collision on Grant Ave. The Argo '
+        'AV came to a complete stop at the stop sign located at the intersection of Grant Ave. and El Camino '
+        'Real. After the Argo AV began to initiate a right-hand turn, the Argo AV came to a stop in response to '
+        'oncoming traffic. A vehicle trailing behind the Argo AV moved forward and contacted the Argo AV’s left '
+        'rear bumper. The Argo AV sustained minor damage to its left rear bumper.'),
+    'csvr-cruise-20190524-s14': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "14, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was changing lanes into the '
+        'left turn lane on eastbound Geary Boulevard between 8th and 9th Avenues when the Cruise AV slowed down. '
+        'The driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another vehicle '
+        'changing into the same lane made contact with the rear bumper of the Cruise AV, damaging the Cruise '
+        'AV’s bumper. There were no injuries and police were not called.'),
+    'csvr-cruise-20200129-s50': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "50, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was traveling northwest bound '
+        'on Columbus Street approaching the intersection with Jones Street when the Cruise AV slowed down. The '
+        'driver of the Cruise AV disengaged from autonomous mode and, shortly thereafter, another vehicle, '
+        'changing into the Cruise AV’s lane from the left adjacent lane, made contact with the rear bumper of '
+        'the Cruise AV. There were no injuries reported at the scene by either party and police were not called. '
+        'Both of the Cruise AV test operators later mentioned neck and shoulder pain.'),
+    'csvr-cruise-20211211-s119': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "119, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in supervised autonomous mode, was at a complete '
+        'stop in response to a red light on northbound Larkin Street at the intersection with Turk Street. The '
+        'Cruise AV entered the intersection on a green light and continued straight when a cyclist traveling '
+        'eastbound on Turk Street entered the crosswalk. The Cruise AV braked to the cyclist and, shortly '
+        "thereafter, another vehicle traveling behind the Cruise AV made contact with the Cruise AV's rear "
+        'bumper, damaging the rear left bumper. The driver of the other vehicle left the scene without '
+        'exchanging information. There were no injuries and police were not called.'),
+    'csvr-cruise-20220409-s148': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "148, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was stopped at a '
+        'red light on northbound Van Ness Avenue at the intersection with Sacramento Street. The Cruise AV '
+        'entered the intersection on a green light and continued straight through the intersection before '
+        'braking and coming to a complete stop near the end of the intersection. At the same time, a Toyota '
+        'Sedan on westbound Sacramento Street began was making an unprotected right turn on a red light onto '
+        'northbound Van Ness Avenue behind the Cruise AV. Shortly thereafter, the Toyota Sedan rear-ended the '
+        "Cruise AV and made contact with the Cruise AV's rear bumper, damaging the rear right bumper. The driver "
+        'of the other vehicle left the scene without exchanging information. There were no injuries and a police '
+        'report was later filed.'),
+    'csvr-cruise-20230422-s236': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "236, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was at a complete '
+        'stop in response to a red light on 10th Street at the intersection with Division Street. The Cruise AV '
+        'began to make a right turn onto Division Street after the light turned green before yielding to a '
+        'pedestrian in the crosswalk. Shortly thereafter, a silver Infiniti Sedan traveling behind the Cruise AV '
+        'made contact with the Cruise AV’s rear bumper, causing damage to the Cruise AV’s rear fascia. The '
+        'driver of the Infiniti Sedan left the scene without exchanging information. There were no reported '
+        'injuries.'),
+    'csvr-cruise-20230504-s240': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "240, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'northbound on Franklin Street between Clay Street and Sacramento Street. As the Cruise AV passed '
+        'through the intersection with Sacramento Street, a scooterist approaching from the rear merged into the '
+        "Cruise AV's lane behind the Cruise AV. The Cruise AV began to brake, and the scooterist made contact "
+        'with the rear window and rear bumper of the Cruise AV. This caused damage to the rear window, rear '
+        'bumper and driver side rear headlight of the Cruise AV. The parties exchanged information. There were '
+        'no injuries reported at the scene and police were not called. The scooterist later reported injuries.'),
+    'csvr-cruise-20230609-s250': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "250, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in driverless autonomous mode, was traveling '
+        'northbound on Harrison St. between 18th Street and 19th Street. As the Cruise AV was coming to a stop '
+        'for a stop sign at the intersection with 18th Street, a van approaching from the rear failed to stop '
+        "behind the Cruise AV and made contact with the Cruise AV's rear bumper, damaging the rear bumper of the "
+        'Cruise AV. Police and Emergency Medical Services were called and the Cruise AV was towed from the '
+        'scene. The driver of the van was transported by Emergency Medical Services for further evaluation.'),
+    'csvr-cruise-20230615-s252': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "252, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'eastbound on Sacramento Street between Lyon Street and Baker Street. The Cruise AV approached a '
+        'motorized articulating boom lift (“ABL”), which was stopped in the Cruise AV’s lane of travel. As the '
+        'Cruise AV began to maneuver around and to the left of the ABL, the Cruise AV made contact with the arm '
+        'of the ABL, which was elevated above the roadway. This caused damage to the Cruise AV’s roof Lidar '
+        'assembly. There were no reported injuries.'),
+    'csvr-cruise-20230721-s263': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "263, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'eastbound on McAllister Street between Van Ness Avenue and Polk Street. As the Cruise AV was slowing '
+        'for a red light at the intersection with Polk Street, an Infiniti Q60 traveling westbound on McAllister '
+        'Street failed to stop for the red light, entered the intersection, and made contact with a black sedan '
+        'traveling southbound on Polk Street that entered the intersection on a green light. The Infiniti Q60 '
+        'spun after contact and continued into the Cruise AV, damaging the front bumper fascia of the Cruise AV. '
+        'The driver of the Infiniti Q60 was transported by police. There were no reported injuries and both the '
+        'Infiniti Q60 and the black sedan were towed from the scene.'),
+    'csvr-mercedes-benz-20220519-s161': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "161, column 'Accident Detail Description'), transcribed",
+        'While departing from a standstill in heavy traffic with L3 ADS engaged, the subject Mercedes-Benz '
+        'vehicle was struck in the rear bumper by a large semi-truck. No injuries were reported. The contact '
+        'from the truck resulted in two minor scratches and two indentations on the rear bumper of the subject '
+        'Mercedes-Benz. The driver of the truck did not pull over after the collision and departed the scene. '
+        'After a police report was initiated, the subject Mercedes-Benz drove away from the incident location. '
+        'Further inspection of the vehicle revealed no additional damage beyond the cosmetic dents and surface '
+        'scratches on the Mercedes-Benz.'),
+    'csvr-pony.ai-20220517-s159': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "159, column 'Accident Detail Description'), transcribed",
+        'On May 17, 2022, a passenger vehicle reversed out of a parking spot into a Pony.ai autonomous testing '
+        'vehicle’s rear bumper. At the time of the collision, the Pony.ai vehicle was operating in autonomous '
+        'mode with a safety operator in the driver’s seat and was moving at a low speed. The Pony.ai vehicle did '
+        'not sustain any damage. There were no injuries or property damage, the police were not called to the '
+        'scene, and a Pony.ai employee drove the Pony.ai vehicle back to Pony.ai’s Irvine facility.'),
+    'csvr-waymo-20190226-s3': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 3, "
+        "column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode at the intersection of Miramonte '
+        'Avenue and Covington Road in Los Altos when it was involved in a collision. The Waymo AV was traveling '
+        'northbound on Miramonte Avenue, when it reached a four-way stop sign intersection. The Waymo AV stopped '
+        'to yield to another vehicle at the intersection, at which time a passenger vehicle rear-ended the Waymo '
+        'AV at approximately 39 MPH. At the time of the collision the Waymo AV had been stopped for '
+        'approximately 1.5 seconds. The Waymo AV sustained major damage to its rear bumper, rear hatch, and rear '
+        'quarter panels, and the passenger vehicle sustained major damage to its front bumper, hood, and front '
+        'quarter panels. First responders attended to the scene, but neither party reported injuries.'),
+    'csvr-waymo-20190515-s11': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "11, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) in autonomous mode was yielding to check for cross traffic '
+        'while in the slip lane to turn from southbound Shoreline Boulevard to westbound El Camino Real in '
+        'Mountain View when it was rear-ended by a passenger vehicle at approximately 5 MPH. The Waymo AV '
+        'sustained minor damage to its rear bumper, and the passenger vehicle had minor damage to its front '
+        'bumper. The two Waymo AV operators reported neck/back pain but declined medical attention at the scene.'),
+    'csvr-waymo-20190529-s15': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "15, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) in autonomous mode was stopped in traffic while in the leftmost '
+        'lane on southbound San Antonio Road headed toward Charleston Road in Palo Alto when it was rear-ended '
+        'by a passenger vehicle maneuvering into the Waymo AV’s lane at approximately less than 1 MPH. The Waymo '
+        'AV sustained minor scratches to its rear sensor, and the passenger vehicle left the scene. There were '
+        'no injuries reported at the scene.'),
+    'csvr-waymo-20190616-s18': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "18, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on the off-ramp from westbound '
+        'Alma Street to southbound Oregon Expressway in Palo Alto when it was rear-ended. The Waymo AV was '
+        'yielding to cross-traffic when a passenger vehicle made contact with the Waymo AV’s rear bumper at '
+        'approximately 5 MPH. The Waymo AV sustained minor damage to the rear bumper, and the passenger vehicle '
+        'left the scene without stopping or exchanging information. The Waymo AV driver complained of neck, '
+        'back, and nose pain and was treated at the scene by emergency responders.'),
+    'csvr-waymo-20191014-s37': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "37, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on westbound Cuesta Drive at S. '
+        'San Antonio Road in Los Altos when it was rear-ended. The Waymo AV was preparing to make a right-on-red '
+        'from Cuesta Drive onto northbound S. San Antonio Road and was yielding to cross-traffic when a '
+        "passenger vehicle made contact with the Waymo AV's rear bumper at approximately 3 MPH. The Waymo AV "
+        'sustained minor damage to its rear bumper, and the passenger vehicle sustained no damage to its front '
+        'bumper. No injuries were reported.'),
+    'csvr-waymo-20191016-s38': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "38, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on northbound Distel Drive at El '
+        'Camino Real in Los Altos when it was rear-ended. The Waymo AV was preparing to make a right-on-red from '
+        'Distel Drive onto eastbound El Camino Real and was yielding to cross-traffic when a passenger vehicle '
+        'made contact with the Waymo AV’s rear bumper at approximately 1 MPH. The Waymo AV sustained minor '
+        'damage to its rear bumper, and the passenger vehicle sustained minor damage to its front bumper. No '
+        'injuries were reported.'),
+    'csvr-waymo-20200214-s53': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "53, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode turning right from eastbound '
+        'Park Drive onto southbound Miramonte Avenue in Mountain View when it was rear-ended. The Waymo AV was '
+        'yielding to approaching traffic when a passenger vehicle made contact with the Waymo AV’s rear bumper '
+        'at approximately 6 MPH. The Waymo AV sustained minor damage to its rear bumper, and the passenger '
+        'vehicle sustained minor damage to its front bumper. No injuries were reported at the scene.'),
+    'csvr-waymo-20210709-s89': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "89, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, California was in a collision '
+        'involving a passenger vehicle at Bush Street and Grant Avenue. The Waymo AV was stopped in traffic '
+        'while in autonomous mode when the passenger vehicle approached from behind while changing lanes. The '
+        'passenger vehicle struck the rear of the stopped Waymo AV traveling at 5.5 miles per hour and left the '
+        'scene. The left rear bumper of the Waymo AV sustained minor damage.'),
+    'csvr-waymo-20211018-s101': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "101, column 'Accident Detail Description'), transcribed",
+        'On October 18, 2021 at 12:57 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'CA was in a collision involving an SUV at Cesar Chavez and Evans Avenue. As the Waymo AV approached a '
+        'right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped traffic. An SUV following '
+        'behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo '
+        'AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present in the driver’s seating '
+        'position. The Waymo AV sustained minor damage to its rear bumper and trunk, and the SUV sustained minor '
+        'damage to its front bumper and hood.'),
+    'csvr-waymo-20211207-s118': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "118, column 'Accident Detail Description'), transcribed",
+        'On December 7, 2021 at 10:47 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'CA was in a collision involving an SUV at Oak Street at Stanyan Street. While in autonomous mode, the '
+        'Waymo AV came to a stop at a stop sign on Oak Street. While the ADV was stopped, waiting for a '
+        'pedestrian to cross and for traffic on Stanyan Street to clear, an SUV approached the Waymo AV from '
+        'behind and made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV’s Level '
+        '4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s seating position). '
+        'The Waymo AV sustained minor damage to the rear bumper.'),
+    'csvr-waymo-20220103-s122': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "122, column 'Accident Detail Description'), transcribed",
+        'On January 3, 2021 at 9:00 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a heavy truck at the northbound merge lane on the 100 block of '
+        'Bayshore Boulevard. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous '
+        'mode, and a test driver was present (in the driver’s seating position). While attempting a merge onto '
+        'northbound Bayshore Boulevard from southbound Bayshore Boulevard, the Waymo AV came to a stop to yield '
+        'for approaching traffic on the right. The Waymo AV was rear ended by the truck, causing minor damage to '
+        'the right rear bumper of the Waymo AV. The truck sustained damage to the left front bumper.'),
+    'csvr-waymo-20220128-s127': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "127, column 'Accident Detail Description'), transcribed",
+        'On January 28, 2022 at 6:30 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Franklin Street at Golden Gate Avenue. '
+        'The Waymo AV was stopped at a red light on northbound Franklin Street at Golden Gate Avenue. After the '
+        'traffic light turned green and the Waymo AV had begun to accelerate, the passenger vehicle behind the '
+        'Waymo AV struck the rear of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was '
+        'engaged in autonomous mode, and a test driver was present (in the driver’s seating position). The Waymo '
+        'AV sustained minor damage, and the trailing passenger vehicle sustained minor damage.'),
+    'csvr-waymo-20220211-s132': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "132, column 'Accident Detail Description'), transcribed",
+        'On February 11, 2022 at 5:36 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Market Street and Valencia Street. The '
+        'Waymo AV was approaching stopped traffic in the left turn lane on Market Street at Valencia Street when '
+        'a passenger vehicle approached from behind and made contact with the rear bumper of the Waymo AV. The '
+        'other vehicle left the scene without exchanging information. At the time of the impact, the Waymo AV’s '
+        'Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s seating '
+        'position). The Waymo AV sustained minor damage.'),
+    'csvr-waymo-20220214-s134': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "134, column 'Accident Detail Description'), transcribed",
+        'On February 14, 2022 at 3:02 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Kansas Street at 16th Street. The Waymo '
+        'AV was stopped at a red light facing north on Kansas Street at the 16th Street intersection in '
+        'autonomous mode. While the traffic light was still red, the vehicle immediately behind the Waymo AV '
+        'began to accelerate and made contact with the rear bumper of the Waymo AV. At the time of the impact, '
+        'the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the '
+        'driver’s seating position). The Waymo AV sustained minor damage.'),
+    'csvr-waymo-20220517-s160': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "160, column 'Accident Detail Description'), transcribed",
+        'On May 17, 2022 at 1:26 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on Stanyan Street at McAllister Street. The '
+        'Waymo AV was proceeding south on Stanyan Street in autonomous mode, and preparing to make a left turn '
+        'onto McAllister Street. As the Waymo AV entered the intersection, it slowed to yield to northbound '
+        'traffic on Stanyan Street. A passenger car approached from behind and made contact with the rear of the '
+        'Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a '
+        'test driver was present (in the driver’s seating position). Both vehicles sustained minor damage.'),
+    'csvr-waymo-20221108-s197': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "197, column 'Accident Detail Description'), transcribed",
+        'On November 8, 2022 at 9:34 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on 2nd Street at Minna Street. The Waymo AV was '
+        'stopped in traffic on northbound 2nd Street in autonomous mode. A passenger car that had been stopped '
+        'behind the Waymo AV passed on the left side, crossing the double yellow line and making contact with '
+        'the Waymo AV’s rear left sensor housing. The passenger car immediately left the scene. At the time of '
+        'the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present '
+        '(in the driver’s seating position). The Waymo AV sustained damage.'),
+    'csvr-waymo-20230122-s209': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "209, column 'Accident Detail Description'), transcribed",
+        'On January 22, 2023 at 5:08 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Bayshore Boulevard at Jerrold Avenue. '
+        'The Waymo AV was traveling north on Bayshore Boulevard when, upon entering the intersection at Jerrold '
+        'Avenue, a passenger vehicle which had previously been stopped at a red light, proceeded through the red '
+        'light. The passenger vehicle approached from the left and made contact with the left rear bumper of the '
+        'Waymo AV. The other vehicle immediately left the scene of the collision. At the time of the impact, the '
+        'Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s '
+        'seating position). Both vehicles sustained damage.'),
+    'csvr-waymo-20230320-s224': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "224, column 'Accident Detail Description'), transcribed",
+        'On March 20, 2023 at 10:43 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in Los Angeles, '
+        'California was in a collision involving an SUV on Venice Boulevard at La Cienega. The Waymo AV was '
+        'stopped in the center lane of a three-lane road behind a passenger vehicle for a red light facing '
+        'southwest on Venice Boulevard at La Cienega in autonomous mode. The light turned green while '
+        'cross-traffic remained backed up in the intersection. The Waymo AV nudged forward and slowed to a stop, '
+        'yielding for the blocking cross traffic. A passenger vehicle that had been stopped behind the Waymo AV '
+        'proceeded forward and made contact with the rear of the Waymo AV. At the time of the impact, the Waymo '
+        'AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s seating '
+        'position). The Waymo AV sustained damage.'),
+    'csvr-waymo-20230506-s241': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "241, column 'Accident Detail Description'), transcribed",
+        'On May 6, 2023 at 8:48 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Post Street at Webster Street. While '
+        'traveling west on Post Street, the Waymo AV was executing a pullover maneuver in autonomous mode and '
+        'made contact with the left rear bumper of a parked vehicle. At the time of the impact, the Waymo AV’s '
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.'),
+    'csvr-waymo-20230605-s246': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "246, column 'Accident Detail Description'), transcribed",
+        'On June 5, 2023 at 12:53 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a van in a parking lot at 3911 3rd Street. The Waymo AV came to '
+        'a stop while yielding to a pickup truck which was reversing into a perpendicular parking space in front '
+        'of the Waymo AV. While the Waymo AV was stopped, a van which was in a parking space immediately to the '
+        'right of the Waymo AV began reversing out of the parking space. The rear of the van made contact with '
+        'the right side of the Waymo AV. The Waymo AV sustained damage. At the time of the impact, the Waymo '
+        'AV’s Level 4 ADS was engaged in autonomous mode.'),
+    'csvr-waymo-20240319-s304': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "304, column 'Accident Detail Description'), transcribed",
+        'On March 19, 2024 at 7:18 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on Division Street at 9th Street. The Waymo AV '
+        'was traveling west on Division Street after having stopped at the stop sign at Vermont Street and was '
+        'approaching the intersection with 9th Street when a passenger car approached from behind the Waymo AV, '
+        'ran the stop sign at Vermont Street, and made contact with the rear of the Waymo AV. The front of the '
+        'passenger car made continuous contact with the rear of the Waymo AV while both vehicles were still in '
+        'motion for a short period of time before the passenger car slowed down and separated from the AV. The '
+        'Waymo AV proceeded through the intersection with 9th Street and came to a stop on Division Street west '
+        'of the intersection with 9th Street. The passenger car then accelerated and the front right corner of '
+        'the passenger car made contact with the rear left corner of the stationary Waymo AV. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage."),
+    'csvr-waymo-20240330-s307': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "307, column 'Accident Detail Description'), transcribed",
+        'On March 30, 2024 at 1:33 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving an SUV on Jerrold Avenue at Barneveld Avenue. The Waymo AV was '
+        'stopped at a stop sign on Jerrold Avenue and yielding to a pickup truck that was in the intersection '
+        'making a left turn from Barneveld Avenue onto Jerrold Avenue when the front right corner of the SUV, '
+        'which was traveling behind the Waymo AV, made contact with the rear left corner of the Waymo AV. At the '
+        "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+        'damage.'),
+    'csvr-waymo-20240513-s311': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "311, column 'Accident Detail Description'), transcribed",
+        'On May 13, 2024 at 12:58 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, CA was '
+        'in a collision involving a passenger car on eastbound Interstate 10 between Exit 2 and Exit 3A. The '
+        'Waymo AV was traveling with a test driver present behind a box truck in the number 3 lane of eastbound '
+        'Interstate 10 near the Bundy Drive overpass when a passenger car traveling at a high rate of speed '
+        'approached the Waymo AV from behind. The passenger car partially entered the number 2 lane as the front '
+        'right corner of the passenger car made contact with the rear left corner of the Waymo AV. The passenger '
+        'car then made contact with the center median and came to a stop. The Waymo AV was transitioned into '
+        'manual mode, and the test driver stopped the Waymo AV to the right-hand shoulder. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test driver was present (in "
+        'the driver’s seating position). Both vehicles sustained damage.'),
+    'csvr-waymo-20240603-s315': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "315, column 'Accident Detail Description'), transcribed",
+        'On June 3, 2024 at 4:54 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Marina Del Rey, '
+        'California was in a collision involving a passenger car on Admiralty Way at Bali Way. The Waymo AV was '
+        'making a left turn from the rightmost dedicated left turn lane on Admiralty Way into lane two of three '
+        'lanes in the eastbound direction of Bali Way. A passenger car was also making a left turn from the '
+        'leftmost dedicated left turn lane (leftmost lane). The passenger car had made the turn onto Bali Way '
+        'and was partially in the number 1 lane (leftmost) and partially in the number 2 lane (middle) when the '
+        'front passenger side of the passenger car made contact with the rear driver side of the Waymo AV, which '
+        'was traveling in the number 2 lane (middle). At the time of the impact, the Waymo AV’s Level 4 ADS was '
+        'engaged in autonomous mode, and a test driver was present (in the driver’s seating position). Both '
+        'vehicles sustained damage.'),
+    'csvr-waymo-20240605-s317': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "317, column 'Accident Detail Description'), transcribed",
+        'On June 5, 2024 at 1:12 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on 29th Avenue near Lawton Street. The Waymo AV '
+        'was parked at the curb on the right side of 29th Avenue when a passenger car in front of the Waymo AV '
+        'began to reverse to parallel park. The passenger car’s rear driver side corner made contact with the '
+        'front driver side corner of the parked Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS '
+        'was engaged in autonomous mode. The Waymo AV sustained damage.'),
+    'csvr-waymo-20240801-s325': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "325, column 'Accident Detail Description'), transcribed",
+        'On August 1, 2024 at 10:05 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Los Angeles, '
+        'California was in a collision involving an SUV on W. Jefferson Boulevard near La Brea Avenue. The Waymo '
+        'AV was stopped in traffic in the leftmost lane of a two-lane section of westbound W. Jefferson '
+        'Boulevard, just before the road widened to include a dedicated left turn lane in lane three. While the '
+        'Waymo AV remained stopped, an SUV approached the Waymo AV from behind and partially entered the '
+        'oncoming lanes of W. Jefferson Boulevard to maneuver around the Waymo AV and proceed into the dedicated '
+        'left turn lane. As the SUV was passing the stopped Waymo AV, the passenger side of the SUV made contact '
+        'with the rear driver side corner of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS '
+        'was engaged in autonomous mode. Both vehicles sustained damage and the SUV left the scene.'),
+    'csvr-waymo-20240918-s334': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "334, column 'Accident Detail Description'), transcribed",
+        'On September 18, 2024 at 8:44 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a van on Potrero Avenue at 16th Street. The Waymo AV was '
+        'stopped in a queue of traffic in the leftmost of two through lanes on southbound Potrero Avenue at the '
+        'intersection with 16th Street when a van traveling behind the Waymo AV passed the Waymo AV on the left '
+        'to enter the dedicated left turn lane. The passenger side of the van made contact with the rear left '
+        'sensor of the Waymo AV. Without stopping, the van then crossed the double yellow line to the northbound '
+        'side of Potrero Avenue, turned left onto eastbound 16th Street, and left the scene. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test driver was present (in "
+        "the driver's seating position). The Waymo AV sustained damage to the rear left sensor housing and "
+        'assembly.'),
+    'csvr-waymo-20241227-s358': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "358, column 'Accident Detail Description'), transcribed",
+        'On December 27, 2024 at 10:16 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger car on Larkin Street at Olive Street. The Waymo AV '
+        'was traveling northbound on Larkin Street when a passenger car traveling directly in front of the Waymo '
+        'AV stopped in lane, and began to reverse to parallel park at the curb. While the passenger car was '
+        'reversing, the rear driver side of the passenger car made contact with the front passenger side of the '
+        'stationary Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous '
+        'mode, and a test driver was present (in the driver’s seating position). Both vehicles sustained damage.'),
+    'csvr-zoox-20210511-s81': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "81, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomous mode began to slow down during an unprotected left turn to yield for cross '
+        'traffic entering the lane from the right. A passenger vehicle from behind did not slow and made contact '
+        'with the rear sensors of the Zoox vehicle. There were no injuries and the police were not called.'),
+    'csvr-zoox-20220205-s130': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "130, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomous mode was stopped at a traffic light on Brannan Street at 7th Street when a '
+        'passenger vehicle hit the Zoox vehicle from behind. The passenger vehicle left the scene without '
+        'exchanging information. There were no injuries and the police were not called.'),
+    'csvr-zoox-20230208-s212': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "212, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomy was stopped with brake lights illuminated in traffic southbound on '
+        'Embarcadero Street towards Folsom Street. When traffic ahead began to move the Zoox vehicle was '
+        'appropriately following the car ahead at low speed when it was rear ended by Vehicle #2 at low speed. '
+        'The other party did not stop to exchange information and left the scene. There were no injuries and '
+        'police were not called.'),
+    'csvr-zoox-20230211-s213': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "213, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomous mode was slowing to a stop with brake lights illuminated behind traffic on '
+        'northbound 5th Street near Jesse Street when a vehicle behind made contact at approximately 10mph. '
+        'There were no injuries and police were not called.'),
+    'csvr-zoox-20230517-s243': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "243, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle in autonomous mode was traveling north on Harrison St. The Zoox vehicle began coming to '
+        'a gradual stop for traffic ahead when it was rear ended by vehicle 2 at low speed. There was minor '
+        'damage and police were not called. The Zoox operator reported a "sore neck and back."'),
+    'csvr-zoox-20240115-s294': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "294, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle (Vehicle 1) in autonomy was traveling on southbound Stockton St near Union St in San '
+        'Francisco. The Zoox vehicle slowed to a gradual stop with brake and hazard lights activated during a '
+        'simulated pick up-drop off maneuver when it was rear-ended by a minivan (Vehicle 2). The rear bumper of '
+        'the Zoox vehicle sustained minor damage. There were no reported injuries, and police were not called. '
+        'Zoox vehicle camera footage shows that the driver of the minivan may not have been looking ahead at the '
+        'roadway prior to and at the time of contact.'),
+    'csvr-zoox-20240716-s322': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "322, column 'Accident Detail Description'), transcribed",
+        'A Zoox vehicle (Vehicle 1) in autonomous mode was stopped at a stop sign waiting for traffic to clear '
+        'to make a left turn from northeast bound King Street onto 7th Street in San Francisco. A passenger car '
+        '(Vehicle 2) was stopped directly behind the Zoox vehicle apparently in the process of turning right '
+        'onto 7th Street. As the Zoox vehicle advanced and then came to a stop as it yielded to cross traffic, '
+        'the passenger car tried to pass the Zoox vehicle on the right side and contacted the Zoox vehicle. The '
+        'front bumper on the passenger car and rear bumper on the Zoox vehicle sustained minor damage. There '
+        'were no reported injuries and the police were not called.'),
+    'dmvca-apple-20240126-r555': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 555, column '
+        '"Accident Detail Description")',
+        'On January 26th, a test vehicle operating with the automated driving system engaged was traveling '
+        'Eastbound on Interstate 580 in Castro Valley when a nearby semi-trailer truck merging from Interstate '
+        '238 generated a draft that projected road debris onto the test vehicle. No injuries were reported and '
+        'law enforcement was not called to the scene. The test vehicle sustained minor damage.'),
+    'dmvca-cruise-20190107-r0': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 0, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in conventional mode, was making a left turn from '
+        'northeast bound Folsom Street onto northwest bound 11th Street when a scooterist, attempting to pass '
+        'the Cruise AV on the left, made contact with the front left side of the Cruise AV, damaging the front '
+        'left fender, radar, and wheel well of the Cruise AV. The scooterist reported injuries and emergency '
+        'services and the police arrived at the scene, but the scooterist declined medical treatment. No police '
+        'report was available at the time of the filing of this report.'),
+    'dmvca-cruise-20191107-r89': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 89, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was traveling eastbound on '
+        '24th Street at the intersection with Mission Street when the Cruise AV yielded to an electric '
+        'scooterist traveling northbound on Mission Street and violating a red light. The driver of the Cruise '
+        'AV disengaged from autonomous mode and, shortly thereafter, the electric scooterist made contact with '
+        'the right rear corner of the Cruise AV, damaging the Cruise AV’s right rear fascia and brake light. The '
+        'electric scooterist left the scene without exchanging information. There were no injuries and police '
+        'were not called.'),
+    'dmvca-cruise-20230814-r511': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 511, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“AV”), operating in driverless autonomous mode, was traveling southbound '
+        'on Albion Street between 16th Street and Camp Street. At the same time, a Ford pickup truck was '
+        'traveling northbound on Albion Street partially in the AV’s lane of travel. The AV stopped due to '
+        'limited space to proceed forward due to the encroaching Ford pickup truck, and, shortly thereafter, the '
+        'Ford pickup truck made contact with the AV, damaging the AV’s rear driver side bumper fascia, rear '
+        'driver side quarter panel and rear driver side wheel molding. The driver of the Ford pickup truck left '
+        'the scene without exchanging information. There were no reported injuries.'),
+    'dmvca-cruise-20230817-r515': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 515, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle ("AV"), operating in driverless autonomous mode, was at a complete stop in '
+        'response to a stop sign on eastbound 17th Street at the intersection with Vermont Street. As the AV '
+        'began to proceed straight, a gray Honda Odyssey traveling westbound on 17th Street on the opposite side '
+        'of the intersection from the AV entered the intersection and veered into the AV’s lane of travel. The '
+        'AV stopped in response as the Honda Odyssey continued traveling in the AV’s lane of travel through the '
+        'intersection and, shortly thereafter, the Honda Odyssey made contact with the AV, damaging the front '
+        'and rear driver side doors, front driver side radar assembly and rear driver side tire of the AV. The '
+        'parties exchanged information. There were no reported injuries and the AV was towed from the scene.'),
+    'dmvca-cruise-20230927-r531': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 531, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“AV”), operating in driverless autonomous mode, was traveling northbound '
+        'on 2nd Street between Stillman Street and Bryant Street. As the AV was approaching the intersection '
+        'with Stillman Street, a blue Model 3 Tesla exited out of a parking garage into the AV’s lane of travel. '
+        'The AV braked and, shortly thereafter, the AV made contact with the Model 3 Tesla, damaging the AV’s '
+        'front bumper fascia and front passenger side wheel opening molding. The driver of the Model 3 Tesla '
+        'left the scene without exchanging information. There were no reported injuries. The driver of the Model '
+        '3 Tesla later reported damages.'),
+    'dmvca-waymo-20210712-r196': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 196, column '
+        '"Accident Detail Description")',
+        'On July 12, 2021 at 3:10 PM PDT, a Waymo Autonomous Vehicle (“Waymo AV”) was in a collision involving a '
+        'van at Broadway and Gough Street in San Francisco. The Waymo AV, while in autonomous mode, was waiting '
+        'to make a left turn and yielding to oncoming traffic, when the test driver (in the driver’s seating '
+        'position) transitioned to manual mode and proceeded with a left turn manually. During the left turn, an '
+        'approaching van struck the right side of the Waymo AV. At the time of the impact, the Waymo AV was in '
+        'manual mode.'),
+    'dmvca-waymo-20211008-r227': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 227, column '
+        '"Accident Detail Description")',
+        'On October 8, 2021 at 6:39 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle at Mission Street at Avalon Avenue. While '
+        'traveling northwest on Mission Street in autonomous mode, the Waymo AV navigated around a double-parked '
+        'vehicle stopped in the right lane. After re-entering the right lane, the Waymo AV came to a complete '
+        'stop behind a second passenger vehicle, at which time the driver of the Waymo AV transitioned into '
+        'manual mode. The second passenger vehicle reversed into the Waymo AV, making contact with its front '
+        'bumper. Both vehicles sustained minor bumper damage.'),
+    'dmvca-waymo-20220511-r333': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 333, column '
+        '"Accident Detail Description")',
+        'On May 11, 2022 at 9:19 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a SUV on 24th Street and Capp Street. The Waymo AV was '
+        'attempting to make a right turn from 24th Street onto Capp Street while yielding to a pedestrian in the '
+        'adjacent crosswalk in autonomous mode. A SUV approaching from behind the Waymo AV passed on the left '
+        'side, making contact with the Waymo AV’s rear left sensor housing. The Waymo AV operator transitioned '
+        'the system from autonomous to manual mode just before the moment of impact. The SUV immediately left '
+        'the scene. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test driver was '
+        'operating the Waymo AV in manual mode. The Waymo AV sustained minor damage.'),
+    'dmvca-waymo-20220605-r349': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 349, column '
+        '"Accident Detail Description")',
+        'On June 5, 2022 at 10:07 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Bush Street and Gough Street. The Waymo '
+        'AV was stopped in autonomous mode behind stopped traffic facing east on Bush Street. The passenger '
+        'vehicle ahead of the Waymo AV transitioned into reverse and began to accelerate, making contact with '
+        'the front sensor of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
+        'autonomous mode, and a test driver was present (in the driver’s seating position). Both vehicles '
+        'sustained minor damage.'),
+    'dmvca-waymo-20230507-r466': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 466, column '
+        '"Accident Detail Description")',
+        'On May 7, 2023 at 3:27 PM PDT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a cyclist on Bay Street near Mason Street. The Waymo AV was '
+        'traveling westbound in the left lane on Bay Street and had just passed Mason Street when it detected an '
+        'oncoming pickup truck traveling eastbound in the Waymo AV’s lane. The Waymo AV stopped and the pickup '
+        'truck re-entered the correct lane for eastbound traffic and passed the Waymo AV. The pickup truck was '
+        'immediately followed by a large group of cyclists traveling eastbound in multiple lanes of the roadway, '
+        'including the right lanes and on the wrong side of the double-yellow centerline. The Waymo AV remained '
+        'stopped as the oncoming cyclists rode around both sides of the Waymo AV. One cyclist then made contact '
+        'with the front of the stationary Waymo AV, and then immediately left the scene. At the time of the '
+        'impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage.'),
+    'dmvca-waymo-20230711-r497': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 497, column '
+        '"Accident Detail Description")',
+        'On July 11, 2023 at 10:13 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Martin Avenue at Mullen Avenue. While '
+        'completing a right turn from Martin Avenue onto Mullen Avenue in autonomous mode, the Waymo AV slowed '
+        'to a stop while entering a narrow roadway. As the Waymo AV started to slowly proceed forward, the test '
+        'driver transitioned the vehicle to manual mode and proceeded forward, making contact with a parked '
+        'passenger vehicle. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test '
+        'driver was operating the Waymo AV in manual mode. Both vehicles sustained damage.'),
+    'dmvca-waymo-20241016-r620': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 620, column '
+        '"Accident Detail Description")',
+        'On October 16, 2024 at 5:27 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a van in an underground parking lot at 1160 Mission Street. Two '
+        'Waymo AVs were stopped at neighboring junctures of a tight T-instersection of the lot. The first Waymo '
+        'AV was preparing to make a right turn, while yielding to the other Waymo AV. While the Waymo AVs '
+        'remained stopped, a van that had been traveling behind the first Waymo AV entered the oncoming lane to '
+        'maneuver around the left side of the Waymo AV. The passenger side of the van then made contact with the '
+        'rear driver side of the stopped Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was '
+        'engaged in autonomous mode. Both vehicles sustained damage.'),
+    'dmvca-waymo-20241202-r634': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 634, column '
+        '"Accident Detail Description")',
+        'On December 2, 2024 at 10:54 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Los Angeles, '
+        'California was in a collision involving a plastic crate on East 3rd Street at South Central Avenue. The '
+        'Waymo AV was traveling westbound in the center lane on East 3rd Street, crossing the intersection with '
+        'South Central Avenue when the front passenger side of the Waymo AV made contact with a plastic crate '
+        'that was in the roadway within the Waymo AV’s lane of travel. The contact with the Waymo AV caused the '
+        'crate to move into the adjacent right lane, which was occupied by a scooterist. The front tire of the '
+        'scooter made contact with the crate and the scooter and scooterist fell. At the time of the impact, the '
+        'Waymo AV’s Level 4 ADS was engaged in autonomous mode. Given the speed at which the scooter was '
+        'traveling at the time of the contact, the scooter may have sustained damage.'),
+    'dmvca-zoox-20220428-r329': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 329, column '
+        '"Accident Detail Description")',
+        'A Zoox vehicle in autonomous mode came to a complete stop at the T-junction stop sign at Colin P. Kelly '
+        'Jr. St. and Brannan St. and yielded to oncoming traffic from the left. Due to traffic flow, the driver '
+        'then disengaged autonomous mode and reversed, making contact with a vehicle that had approached from '
+        'the rear and was attempting to pass the Zoox vehicle to make a right turn. There were no injuries and '
+        'the police were not called.'),
+    'dmvca-zoox-20220823-r376': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 376, column '
+        '"Accident Detail Description")',
+        'A Zoox vehicle in autonomy had made a right turn from Oakdell Rd. onto Santa Cruz Ave. in Menlo Park, '
+        'CA and was preparing to make an immediate, unprotected left turn onto Sharon Road. The Zoox vehicle was '
+        'slowing and moving at approximately 2 mph with its brake lamps and left turn indicator illuminated, '
+        'yielding to an oncoming vehicle with the right of way. A following vehicle - traveling at approximately '
+        "24 mph - then struck the Zoox vehicle's right rear bumper, and that vehicle's driver airbag appeared to "
+        'have deployed on impact. The Zoox operator disengaged autonomy, proceeded with the left turn, and '
+        'pulled over. The following vehicle continued its path of travel, veered out of the lane, and collided '
+        'with a tree on the left side of the road. The Menlo Park Police Department was called to the scene. Two '
+        'Zoox operators sustained minor injuries and it is unknown if the driver of the other vehicle sustained '
+        'injuries.'),
+    'nhtsa-sgo-ads-1420-7995-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 1420-7995, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The subject vehicle (autonomous vehicle - AV) was stopped at a red traffic light, in a queue of '
+        'vehicles, heading west on [XXX], with autonomous driving (AD) mode engaged. Once the light turned '
+        'green, the queue of vehicles started to move forward, the AV started to move forward with the queue, '
+        'and prior to crossing the intersection, the AV was struck from behind by an SUV. After impact the '
+        'safety driver of the AV applied the brakes to disengage AD mode and then proceeded to find a safe spot '
+        'to assess the incident by turning right onto [XXX]. The driver of the SUV followed the AV to a safe '
+        'location to assess the incident and exchange contact information. There were no reported injuries, '
+        'airbag deployments, or tow-aways between either party involved. The AV sustained minor damage to the '
+        'rear of the vehicle including the rear bumper cover, rear bumper carrier, and a rear facing camera. The '
+        'SUV damage was reported as scratches and dents to the front bumper cover. Both vehicles were able to '
+        'safely drive away from the scene. VWGoA does not plan to investigate the incident any further as the '
+        "facts and circumstances do not indicate any issue with the vehicle's performance."),
+    'nhtsa-sgo-ads-30270-10557-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10557, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 1:09 PM CT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, Texas '
+        'was in a collision involving a passenger car near [XXX] and [XXX]. The Waymo AV was preparing to make a '
+        'right turn and merge into [XXX] from a roadway that was located south of [XXX]. While the Waymo AV '
+        'remained stopped at a stop sign yielding to traffic, a passenger car traveling directly behind the '
+        "Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 "
+        'ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under '
+        'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10561-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10561, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April[XXX], 2025 at 10:41 PM ET a Waymo Autonomous Vehicle ("Waymo AV") operating in Atlanta, '
+        'Georgia was in a collision involving a traffic control gate arm on [XXX] near [XXX]. The Waymo AV was '
+        'traveling southbound on [XXX] and came to a stop behind a passenger car that had stopped for a closed '
+        'traffic control gate arm. While the Waymo AV remained stopped, the gate arm rose to allow the passenger '
+        'car to pass through. After the passenger car had passed through the gate, the Waymo AV began to proceed '
+        'through the open gate when the gate arm lowered and made contact with the front of the Waymo AV. At the '
+        "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10598-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10598, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 7:34 AM CST a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, Texas '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stopped facing east in '
+        'the right turn lane on [XXX] for a red traffic light at the intersection with [XXX]. The Waymo AV began '
+        'to slowly proceed forward and came to a stop to gain visibility of oncoming traffic traveling '
+        'southbound on [XXX] in preparation for a right turn on red. A passenger car, which was initially '
+        'stopped directly behind the Waymo AV, proceeded forward and the front of the passenger car made contact '
+        "with the rear of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request '
+        'No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10599-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10599, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:41 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Venice, '
+        'California was in a collision involving a van on [XXX] near [XXX]. The Waymo AV was parked in-lane for '
+        'a passenger drop-off facing southwest on [XXX] with hazard lights activated. A van that was stopped '
+        'directly behind the Waymo AV began to maneuver around the stationary Waymo by crossing the yellow '
+        'center line, entering the opposing lane of travel. As the van proceeded to the left of the stationary '
+        'Waymo AV, the Waymo AV passenger opened the driver side rear door and the passenger side of the van '
+        'made contact with the open driver side rear door of the Waymo AV. At the time of the impact, the Waymo '
+        "AV's Level 4 ADS was engaged in autonomous mode. The passengers who were seated in the rear of the "
+        'Waymo AV and the front passenger seat were not belted at the time of the collision, as they were likely '
+        'preparing to exit the Waymo AV. Both vehicles sustained damage. Waymo is reporting this crash under '
+        'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10630-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10630, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 9:10 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'northbound on [XXX] and came to a stop, allowing for a passenger car to exit a parking lot on the east '
+        'side of the roadway. As the passenger car turned left onto [XXX] and attempted to pass the Waymo AV, '
+        'the driver side of the passenger car made contact with the rear driver side of the stationary Waymo AV. '
+        "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The passenger car "
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10639-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10639, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 7:41 AM MST a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Arizona '
+        'was in a collision involving a passenger car on [XXX] at an off-ramp onto [XXX]. The Waymo AV was '
+        'stopped in a queue of traffic facing north on an off-ramp of [XXX] at the T-intersection with [XXX] in '
+        'the leftmost right turn lane waiting for eastbound traffic to clear before proceeding to merge right '
+        'onto [XXX]. The Waymo AV began to proceed forward once the vehicle ahead made its turn, then came to a '
+        'stop as it moved forward onto [XXX]. A passenger car traveling directly behind the Waymo AV approached '
+        'the Waymo AV from behind, and the front of the passenger car made contact with the rear of the Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test "
+        "driver was present in the driver's seating position. Both vehicles sustained damage. Waymo is reporting "
+        'this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed '
+        'away. Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
+    'nhtsa-sgo-ads-30270-10640-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10640, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:47 PM MST a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, '
+        'Arizona was in a collision involving an SUV in the West Parking Lot off of [XXX] at the [XXX]. The '
+        'Waymo AV was parked facing south in a parking stall in the West Parking Lot off of [XXX}. The Waymo AV '
+        'proceeded to reverse to exit the parking stall, and came to a stop to yield to an SUV that was stopped '
+        'in-lane facing east to the left of the Waymo AV, at an intersection within the parking lot. As the '
+        'Waymo AV was preparing to maneuver around the SUV, a second Waymo AV approached both vehicles from the '
+        'south in the north-south travel lane of the parking lot and came to a stop in front of the SUV. The SUV '
+        'reversed and the rear passenger side of the SUV made contact with the driver side of the Waymo AV. At '
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10649-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10649, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 8:48 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+        'southbound on a narrow portion of [XXX] and was slowing to a stop for a passenger drop-off when a '
+        'passenger car traveling southbound on [XXX] began passing the Waymo AV. As the passenger car passed the '
+        'Waymo AV, the passenger side of the passenger car made contact with the rear driver side of the Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10666-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10666, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 1:15 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was parked at '
+        'the curb facing west following a passenger drop-off on [XXX]. While the Waymo AV remained stationary, a '
+        'passenger car traveling westbound on [XXX] initially stopped behind the Waymo AV, then proceeded to '
+        'pass to Waymo AV on the left, and the passenger side of the passenger car made contact with the rear '
+        "driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10668-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10668, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 10:41 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a pickup truck on [XXX] at [XXX]. The Waymo AV was stopped '
+        'facing north at a red light on [XXX] with the left turn signal activated, preparing to make an '
+        'unprotected left turn onto [XXX]. A pickup truck traveling eastbound on [XXX] made a right turn onto '
+        '[XXX] and made contact with a passenger car parked facing south at the curb near the intersection with '
+        '[XXX]. As the pickup truck maneuvered away from the passenger car and continued to proceed southbound '
+        'on [XXX], the driver side of the pickup truck then made contact with the rear driver side of the Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The pickup "
+        'truck sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order '
+        '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
+    'nhtsa-sgo-ads-30270-10673-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10673, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 9:59 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving a box truck and trailer on [XXX] at [XXX]. The Waymo AV was '
+        'traveling southeastbound on [XXX] in the leftmost lane when it stopped at the intersection of [XXX] to '
+        'yield to a box truck hauling a trailer within the intersection. The heavy truck was facing southwest, '
+        'apparently attempting a multi-point turn. The truck stopped and the Waymo AV began to pass the truck on '
+        'the left. The truck began reversing as the Waymo AV was passing and the Waymo AV came to a stop to '
+        'yield to the truck. While the Waymo AV remained stopped, the truck continued to reverse, and the rear '
+        'passenger side of the trailer made contact with the front passenger side of the Waymo AV. At the time '
+        "of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
+        'damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a '
+        'vehicle involved was towed away. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10674-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10674, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 11:36 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona '
+        'was in a collision involving a wheel and tire on [XXX] near [XXX]. The Waymo AV was traveling '
+        'northbound on [XXX] in the middle lane when the left front wheel from an SUV traveling in the right '
+        "most lane of [XXX] separated from the SUV and rolled into the Waymo AV's lane of travel. The front "
+        'driver side of the Waymo AV made contact with the wheel and tire. At the time of the impact, the Waymo '
+        "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
+        'crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10684-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10684, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 11:14 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Beverly Hills, '
+        'California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling '
+        'northbound on a narrow portion of [XXX] with vehicles parked at both curbs when it came to a stop '
+        'yielding to a pickup truck traveling southbound on [XXX]. As the pickup truck passed the stationary '
+        'Waymo AV, the rear driver side of the pickup truck made contact with the rear driver side of the Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10685-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10685, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 10:25 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was traveling '
+        'southeastbound on [XXX] and came to a stop in a queue of traffic for a red light at the intersection at '
+        '[XXX]. An SUV traveling southeastbound on [XXX] approached the Waymo AV from behind, and the front of '
+        'the SUV made contact with the rear of the stationary Waymo AV. At the time of the impact, the Waymo '
+        "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this "
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10695-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10695, version '
+        '1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 8:50 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Paradise Valley, '
+        'Arizona was in a collision involving an animal and subsequently an SUV on [XXX] at [XXX]. The Waymo AV '
+        'was traveling southbound on [XXX] in the leftmost lane, proceeding through a green light at the '
+        'intersection with [XXX]. As the Waymo AV exited the intersection, a cat crossed [XXX] from the east '
+        "side of the street, and began to enter the Waymo AV's lane of travel. As the Waymo AV braked, the front "
+        'of the Waymo AV made contact with the cat, which subsequently ran away, and the Waymo AV came to a '
+        'stop. The front of an SUV traveling directly behind the Waymo AV then made contact with the right rear '
+        'of the stationary Waymo AV. A passenger car then braked to a stop behind the Waymo and to the left of '
+        'the SUV. A second passenger car then made contact with the SUV and the first passenger car. At the time '
+        "of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. All involved vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away and because of airbag deployment. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10725-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10725, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 2:42 AM CT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, Texas '
+        'was in a collision involving a pickup truck in a parking lot off of [XXX] near [XXX]. The Waymo AV was '
+        'stopped facing northwest with hazard lights activated in a narrow parking lot off of [XXX] for a '
+        'passenger pick-up. A pickup truck traveling southeast in the parking lot began to maneuver past the '
+        'Waymo AV on the right. As the pickup truck passed by the stationary Waymo AV, the passenger side of the '
+        'pickup truck made contact with the rear passenger side of the Waymo AV. At the time of the impact, the '
+        "Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Both of the "
+        'passengers, who were seated in the rear of the Waymo AV, were not belted at the time of the collision, '
+        'having just entered the Waymo AV. Waymo is reporting this crash under Request No. 2 of Standing General '
+        'Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
+    'nhtsa-sgo-ads-30270-10726-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10726, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 9:07 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was traveling eastbound '
+        'on [XXX] and stopped in the dedicated left turn lane, preparing to make an unprotected left turn onto '
+        '[XXX]. As the Waymo AV remained stopped, an SUV that was traveling westbound on [XXX] in the middle '
+        'shared turn lane, directly in front of the Waymo AV, maneuvered from the middle lane to the second from '
+        'the left lane and the driver side of the SUV made contact with the rear driver side of the Waymo AV. At '
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV sustained "
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10742-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10742, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 3:29 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'CA was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling '
+        'northbound on [XXX] in the rightmost lane and slowed to a stop for an SUV that was parallel parking in '
+        'front of the Waymo AV. While the Waymo AV was stopped, a pickup truck traveling directly behind the '
+        'Waymo AV approached the Waymo AV from behind, and the front of the pickup truck made contact with the '
+        "rear of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The pickup truck sustained damage. Waymo is reporting this crash under Request No. 2 '
+        'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10756-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10756, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 1:45 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was traveling '
+        'eastbound on [XXX] when it approached a vehicle stopped in-lane. Another vehicle was stopped in-lane on '
+        'the westbound side of [XXX], causing east bound vehicles to cross into the eastbound lane to proceed. '
+        'As the Waymo AV passed to the left of the eastbound stationary vehicle, an SUV traveling westbound '
+        'passed the stationary westbound vehicle and approached the Waymo AV and the Waymo AV came to a stop to '
+        'yield to the oncoming SUV. While the Waymo AV remained stopped, the SUV proceeded forward and the front '
+        'of the SUV made contact with the front of the Waymo AV. The Waymo AV then reversed and the SUV '
+        'proceeded forward to make contact with the front of the Waymo AV a second time. After the Waymo AV '
+        'finished reversing and stopped to the right side of the street, the SUV proceeded forward directly '
+        "towards the Waymo AV's eastbound lane, and the front of the SUV made contact with the front of the "
+        "Waymo AV a third time. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
+        'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
+        'may become available.'),
+    'nhtsa-sgo-ads-30270-10757-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10757, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 11:53 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was traveling south on '
+        '[XXX], and came to a stop behind a box truck that was stopped in-lane. The Waymo AV began to proceed '
+        'around the left of the stopped box truck and came to a stop, yielding to an SUV traveling northbound on '
+        '[XXX]. As the SUV passed by the stationary Waymo AV, the front driver side of the SUV made contact with '
+        "the front driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request '
+        'No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10776-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10776, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2025 at 10:38 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a heavy truck on [XXX] near [XXX]. The Waymo AV was traveling '
+        'westbound on [XXX]. The heavy truck traveling eastbound on [XXX] began maneuvering left into the path '
+        'of the Waymo AV and the Waymo AV came to a stop. The truck continued and the front driver side of the '
+        'heavy truck made contact with the front driver side of the Waymo AV. The heavy truck then reversed and '
+        'proceeded eastbound. As the heavy truck passed the stationary Waymo AV, it made contact with the driver '
+        "side of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 1 of '
+        'Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-3057-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-3057, '
+        'version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The content of this report is unchanged from the initial report submitted on May [XXX], 2022 [Report ID '
+        '# 30270-3057-1]. On May [XXX], 2022 at 2:30 AM PST a Waymo Autonomous Vehicle ("Waymo AV") operating in '
+        'Phoenix, Arizona was in a collision involving a passenger vehicle on [XXX] at the [XXX] onramp. While '
+        'the Waymo AV was stopped at a red light on southbound [XXX] in the rightmost through lane, a passenger '
+        'vehicle approached the Waymo AV from behind and the right front of the passenger vehicle made contact '
+        "with the left rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged "
+        "in autonomous mode and a test driver was present (in the driver's seating position). Both vehicles "
+        'sustained major damage. The driver of the other vehicle was transported from the scene to a hospital '
+        'for medical treatment. Waymo is reporting this crash under Request No. 1 of Standing General Order '
+        '2021-01 because a vehicle involved was towed away, the crash resulted in airbag deployment, and the '
+        'driver of the other vehicle was transported from the scene to a hospital for medical treatment. Waymo '
+        'may supplement or correct its reporting with additional information as it may become available. This '
+        'report was submitted from the Pacific time zone on the required date.'),
+    'nhtsa-sgo-ads-30270-5896-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5896, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2023 at 6:13 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Chandler, Arizona '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling northbound '
+        'on [XXX] and just passed [XXX] when an oncoming passenger car crossed into the Waymo AVs lane, toward '
+        'the Waymo AV. The Waymo AV then stopped as the passenger vehicle continued to approach. The passenger '
+        'vehicle then made contact with the front of the Waymo AV, and then made contact with the side of the '
+        'Waymo AV as it left the scene. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in '
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of '
+        'Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-6131-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6131, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2023 at 9:02 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, Arizona '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was parallel parked along '
+        'the right-hand curb on eastbound [XXX] when a passenger car reversed out of a driveway across the '
+        'street from the Waymo AV and made contact with the driver side rear bumper of the Waymo AV. At the time '
+        'of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained '
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7724-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7724, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2024 at 8:35 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, '
+        'California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling '
+        'southbound on [XXX] when it approached a stopped pickup truck with a vehicle-mounted arrow board with '
+        'an arrow pointing to the right illuminated. The pickup truck was stopped in the leftmost lane, which is '
+        'the only general-purpose travel lane. The Waymo AV began changing lanes into the right lane, which is a '
+        'dedicated bus lane, to pass the stopped pickup truck. The pickup truck then began proceeding straight '
+        'while the Waymo AV was behind the pickup truck, and the Waymo AV started to return to the left lane '
+        'behind the pickup truck. The pickup truck came to a stop, and the Waymo AV also came to a stop. The '
+        'pickup truck then began reversing, and the rear of the pickup truck made contact with the front driver '
+        'side bumper of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in '
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7729-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7729, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2024 at 11:07 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Santa Monica, '
+        'California was in a collision involving a chain in a parking lot at [XXX]. The Waymo AV was traveling '
+        'northwest on [XXX] when it made a left turn into a parking lot at [XXX]. As the Waymo AV was turning '
+        'into the section of the parking lot directly to its left, the Waymo AV made contact with a hanging '
+        'chain separating a section of the parking lot. At the time of the impact, the Waymo AVs Level 4 ADS was '
+        'engaged in autonomous mode. The Waymo AV and the chain sustained damage. Waymo is reporting this crash '
+        'under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting '
+        'with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7734-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7734, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 9:34 PM MT Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling east on '
+        '[XXX] and came to a stop at a red light at the intersection with [XXX] to prepare for a right turn. The '
+        'Waymo AV yielded to cross traffic traveling south on [XXX] and then initiated a right turn when a '
+        'passenger car traveling north on [XXX] initiated a U-turn across the intended path of the Waymo AV. The '
+        'Waymo AV slowed to yield to the U-turning passenger car and had begun to accelerate again to complete '
+        'the right turn when the front of another passenger car which was following behind the Waymo AV made '
+        "contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request '
+        'No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7935-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7935, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 10:36 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a van on [XXX] at [XXX]. The Waymo AV was stopped for a '
+        'passenger pickup with the front of the Waymo AV in a parking area and its rear in the travel lane on '
+        '[XXX] near the intersection with [XXX]. A van traveling west on [XXX] passed the Waymo AV on the left '
+        'side. The right side of the van came in contact with the rear left side of the Waymo AV. At the time of '
+        "the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. "
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7936-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7936, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 8:25 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Arizona '
+        'was in a collision involving a chain at the entrance of a parking lot at Arizona State University on '
+        '[XXX] near [XXX]. The Waymo AV was traveling north on [XXX] when it made a left turn into a parking lot '
+        'near [XXX]. As the Waymo AV was entering the parking lot, it made contact with a chain hanging at the '
+        "entrance of the parking lot. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The chain sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8039-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8039, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2024, at 12:59 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in [XXX], '
+        'California was involved in an alleged collision with a non-motorist (cyclist) at a parking garage exit '
+        'on [XXX] between [XXX] and [XXX]. The Waymo AV was exiting a parking garage onto [XXX], between [XXX] '
+        'and [XXX]. As the Waymo AV approached the garage exit, it stopped for a cyclist who was approaching '
+        'from the left. The Waymo AV remained stationary as the cyclist passed in front of the vehicle, slowed, '
+        'and appeared to begin to dismount. The cyclist then reached out a hand and made contact with the front '
+        'passenger side of the stationary Waymo AV, backed the bicycle up slightly, dropped the bicycle, then '
+        "fell to the ground. At the time of the possible impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode, and a test driver was present. The cyclist received medical attention at the scene and '
+        'was reportedly transported to a hospital by local emergency services. The Waymo AV did not sustain any '
+        'damage. Even though this event may involve intentional contact by the bicyclist with a stationary Waymo '
+        'AV and the occurrence of actual impact between the Waymo AV and the cycle is not clear, Waymo is '
+        'reporting this event as a crash under Request No. 1 of Standing General Order 2021-01 because a media '
+        'report included an allegation of a crash and because a vulnerable road user (cyclist) influenced the '
+        'driving task of a vehicle involved and reportedly was transported to a hospital for medical treatment '
+        'as a result of the event. Waymo may supplement or correct its reporting with additional information as '
+        'it may become available.'),
+    'nhtsa-sgo-ads-30270-8061-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8061, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2024 at 8:43 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in [XXX], '
+        'California was in a collision involving a passenger car on [XXX]. The Waymo AV was traveling east on '
+        '[XXX]. As the AV approached the all-way stop sign at [XXX], it detected a vehicle traveling west on '
+        '[XXX] and crossing into the opposing lane (the lane in which the AV was traveling). The passenger car '
+        'entered the intersection in the opposing lane without slowing. The Waymo AV slowed down and maneuvered '
+        'towards the right side of the eastbound lane as the front of the passenger car, still moving in the '
+        'wrong direction in the eastbound lane, made contact with the front driver side corner of the Waymo AV. '
+        "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away and because of airbag deployment. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8121-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8121, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 10:52 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling northeast on '
+        '[XXX] in the center lane of three lanes when it activated its left turn signal. Simultaneously, a '
+        'passenger car that was traveling behind the Waymo AV at a high rate of speed began to change lanes from '
+        'the rightmost lane to the leftmost lane. As the Waymo AV entered the leftmost lane, the passenger car '
+        'passed the Waymo AV in the leftmost lane of southwestbound [XXX]. The passenger side of the passenger '
+        'car then made contact with the driver side of the Waymo AV. At the time of the impact, the Waymo AVs '
+        'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage and the passenger car left '
+        'the scene. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo '
+        'may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8130-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8130, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 1:33 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California '
+        'was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling southwest '
+        'on [XXX] in the dedicated left turn lane. The Waymo activated its turn signal and began a lane change '
+        'into the right thru lane where there was a gap in a slow-moving traffic stack. The passenger car that '
+        'was behind the gap in the traffic stack accelerated as the Waymo AV began merging and the front driver '
+        'side corner of the passenger car made contact with the rear passenger side corner of the Waymo AV. At '
+        'the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles '
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8141-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8141, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 6:05 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California '
+        'was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was traveling east on '
+        '[XXX] at a location where the width of the roadway is narrow, and there were lines of parked vehicles '
+        'on both sides of the roadway. A pickup truck traveling west on [XXX] approached the Waymo AV and the '
+        'Waymo AV shifted to the right side of the road and came to a stop to allow the pickup truck to pass. As '
+        'the pickup truck passed the Waymo AV, the rear driver side fender of the pickup truck made contact with '
+        'the rear driver side corner of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was '
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request '
+        'No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8150-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8150, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 11:39 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California '
+        'was in a collision involving an SUV near [XXX]. The Waymo AV was stopped curbside for a pickup facing '
+        'north on the east side of [XXX] when an SUV that had been stopped partially in-lane behind the Waymo AV '
+        'passed the Waymo AV on the left . The passenger side rear door of the SUV made contact with the rear '
+        'driver side corner of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in '
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9330-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9330, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 7:47 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stationary '
+        'in the left turn lane of [XXX] preparing for an unprotected left turn onto southwestbound [XXX] when a '
+        'passenger car traveling southeast in the center lane of South [XXX] entered the intersection and '
+        'departed its lane into the path of left-turning traffic from northwestbound South [XXX]. The front '
+        'driver side of the passenger car then made contact with the front driver side of the stationary Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9333-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9333, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 10:19 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a mini coach bus on [XXX] at [XXX]. The Waymo AV was '
+        'stopped facing south in the rightmost lane of [XXX] after a passenger dropoff when a mini coach bus '
+        'initiated a wide right turn from eastbound [XXX] into the left lane of southbound [XXX]. As the bus '
+        'passed the stopped Waymo AV, the passenger side of the bus made contact with the rear driver side of '
+        "the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+        'Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General '
+        'Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its reporting '
+        'with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9350-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9350, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 8:03 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a SUV on [XXX] near [XXX]. The Waymo AV was parked '
+        'at the curb in the northbound direction of [XXX] when an SUV began to parallel park behind the Waymo '
+        'AV. While parking, the SUV moved forward from the curb into the roadway, maneuvering to the left of the '
+        'Waymo AV, and the passenger side of the SUV made contact with the rear driver side of the stationary '
+        "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV "
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9371-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9371, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 2:33 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, '
+        'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'eastbound on [XXX] and came to a stop for a red traffic light in the dedicated left turn lane, '
+        'preparing to make a left turn onto northbound [XXX]. A passenger car approached the stationary Waymo AV '
+        'from behind in the adjacent straight lane, and crossed into the lane that the Waymo AV was occupying. '
+        'The front driver side of the passenger car made contact with the rear passenger side of the stationary '
+        "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+        'vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order '
+        '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
+    'nhtsa-sgo-ads-30270-9376-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9376, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 10:36 AM PT, a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was alleged to have contributed to a collision between an SUV and a concrete '
+        'median curb on [XXX] at [XXX]. The Waymo AV was traveling southbound on [XXX] in the right of two '
+        'travel lanes with its left turn signal activated, and traversed through the intersection with [XXX] '
+        'with an SUV following slightly behind and to the left of the Waymo AV in the adjacent travel lane. As '
+        'the Waymo AV exited the intersection with its left turn signal still activated, it slowed and moved '
+        'slightly to the left within its lane, preparing to change lanes due to a stopped truck ahead within the '
+        'right lane. As the SUV in the left lane was passing the Waymo AV, it maneuvered to the left in its '
+        'lane, and the driver side made contact with the center concrete median curb. At the time of the impact, '
+        "the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV sustained a flat tire, and the "
+        'driver alleged an injury. Waymo is reporting this crash under Request No. 2 of Standing General Order '
+        '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
+        'available.'),
+    'nhtsa-sgo-ads-30270-9409-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9409, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On Saturday, November [XXX], 2024 at 1:27 AM MST, a Waymo Autonomous Vehicle ("Waymo AV") operating in '
+        'Scottsdale, Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was '
+        'traveling north on [XXX] when it encountered a queue of double-parked vehicles in the northbound lane. '
+        'The Waymo AV began passing the double-parked vehicles on the left, but as it did so the queue of '
+        'double-parked vehicles began to proceed. The Waymo AV began to merge back into the northbound lane, but '
+        'a vehicle in the queue then double-parked again before the Waymo AV could fully merge back into the '
+        'northbound lane. The Waymo AV then began reversing to make space for southbound traffic but came to a '
+        'stop before completing its reversing maneuver to yield to traffic approaching the Waymo AV from the '
+        'rear. A passenger car traveling south on [XXX] then crossed the double yellow line to pass the Waymo AV '
+        'in the northbound lane. As it did so, the rear passenger side of the passenger car made contact with '
+        'the rear driver side of the Waymo AV. The passenger was not belted at the time, likely because the AV '
+        "had just departed its pickup location. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. The passenger car sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9414-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9414, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 11:07 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was '
+        'parked at the curb in the northwest direction of [XXX]. A pickup truck began to parallel park behind '
+        'the Waymo AV, and the front bumper of the pickup truck made contact with the rear bumper of the Waymo '
+        'AV. After this initial contact, the pickup truck reversed, then maneuvered away from the curb towards '
+        'the lane of travel, and the front passenger side of the pick up truck made contact with the rear driver '
+        "side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+        'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
+        'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
+        'may become available.'),
+    'nhtsa-sgo-ads-30270-9436-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9436, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 12:56 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Beverly '
+        'Hills, California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was stopped on '
+        'the right side of southwestbound [XXX] for a passenger pick-up when an SUV traveling in the rightmost '
+        'lane of southwestbound [XXX] passed the Waymo AV. As the SUV passed the stopped Waymo AV, the passenger '
+        'side of the SUV made contact with the driver side of the Waymo AV. At the time of the impact, the Waymo '
+        'AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9486-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9486, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 12:28 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV '
+        'was traveling on northbound [XXX] and slowed down to a stop for a queue of traffic. A passenger car '
+        'approached the Waymo AV from behind,and the front of the passenger car made contact with the rear of '
+        'the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both '
+        'vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order '
+        '2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9507-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9507, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 4:07 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a pick-up truck on [XXX] near [XXX]. The Waymo AV '
+        'was traveling southbound in the center lane of [XXX] and slowed down to a stop for a queue of traffic. '
+        'A pick-up truck traveling in the right most lane and next to the Waymo AV began to change lanes into '
+        'the center lane, and the driver side of the pickup truck made contact with the front passenger front '
+        'side of the stationary Waymo AV. After this initial contact, the pick-up truck maneuvered to the front '
+        'of the Waymo AV, came to a stop directly in front of the Waymo AV, and after a few minutes, the pickup '
+        'truck reversed, and the rear of the pickup truck made contact with the front of the stationary Waymo '
+        'AV. The Waymo AV remained stopped in lane due to the initial contact the driver of the pickup truck was '
+        'in and out of their vehicle until leaving the scene. After approximately 4 minutes, the pick-up truck '
+        'returned, traveling southbound in the right lane of [XXX], and the driver side of the pickup truck made '
+        'contact with the passenger side of the still stationary Waymo AV. At the time of each point of impact, '
+        "the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is "
+        'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved '
+        'was towed away. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
+    'nhtsa-sgo-ads-30270-9540-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9540, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December[XXX], 2024 at 8:21 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV '
+        'had pulled up to the curb facing northbound on [XXX] for a requested passenger pickup. While awaiting '
+        'the passenger, the Waymo AV was partially obstructing access to a residential garage and a passenger '
+        'car began reversing out of the garage and the rear driver side of the passenger car made contact with '
+        "the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request '
+        'No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9544-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9544, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 6:09 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was travelling southbound '
+        'on the single lane on [XXX], preparing to enter the dedicated left turn lane at the intersection with '
+        '[XXX], when an SUV was exiting a shopping center driveway making a right turn onto southbound [XXX]. As '
+        'the SUV turned, the front driver side of the SUV made contact with the passenger side of the Waymo AV. '
+        'At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles '
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9545-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9545, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 6:27 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] at Interstate [XXX] onramp. '
+        'The Waymo AV was traveling eastbound on [XXX] when it came to a stop within the intersection with '
+        'Interstate [XXX] onramp due to a queue of traffic on the other side of the intersection. The rear of '
+        'the Waymo AV partially occupied the lane connecting westbound [XXX] to the Interstate [XXX] onramp. A '
+        'passenger car was travelling westbound on [XXX], and began making a left turn onto the Interstate [XXX] '
+        'onramp when the driver side of the passenger car made contact with the rear driver side of the Waymo '
+        "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV "
+        'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9552-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9552, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 8:34 PM CT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, Texas '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling southbound '
+        'in the left hand turn lane on [XXX] and stopped in a queue of traffic at a red light. A passenger car '
+        'traveling directly in front of the Waymo AV started to reverse backwards towards the Waymo AV. The '
+        'Waymo AV began to reverse to avoid the passenger car, then slowed to a stop. The passenger car '
+        'continued to reverse and the rear of the passenger car made contact with the front of the Waymo AV. At '
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV "
+        'sustained damage Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9631-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9631, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 2:55 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'north on [XXX] when it approached the intersection with [XXX]. As the Waymo AV approached the '
+        'intersection, it slowed to yield to a pedestrian who was traveling south on the sidewalk of [XXX] and '
+        'had just entered the intersection to cross [XXX]. As the Waymo AV continued to slow, a passenger car '
+        'traveling directly behind the Waymo AV approached the Waymo AV from behind. The front of the passenger '
+        'car made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS '
+        'was engaged in autonomous mode. Both vehicles sustained damage. The passenger in the Waymo AV reported '
+        'a minor injury. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vulnerable road user influenced the driving task of a vehicle involved and because vehicles '
+        'involved were towed away. Waymo may supplement or correct its reporting with additional information as '
+        'it may become available.'),
+    'nhtsa-sgo-ads-30270-9654-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9654, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 3:32 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a cyclist on [XXX] at [XXX]. The Waymo AV was '
+        'traveling northbound on [XXX] in the rightmost lane, and came to a stop for a red light at the '
+        'intersection with [XXX]. While the Waymo AV remained stopped at the intersection, a cyclist traveling '
+        'southbound against traffic proceeded through the intersection, passing the Waymo AV on the left, and '
+        'the cyclist made contact with the driver side of the stationary Waymo AV. At the time of the impact, '
+        "the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is "
+        'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vulnerable road '
+        'user was involved. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
+    'nhtsa-sgo-ads-30291-7677-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30291-7677, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At approximately 12pm CST, May [XXX], 2024, a passenger vehicle rear-ended a Nuro Prius operating in '
+        'autonomous mode at the intersection of [XXX] and [XXX] in Houston, Texas. The Nuro Prius was coming to '
+        'a stop as the traffic signal changed from yellow to red. Shortly after the light turned red, a '
+        'passenger vehicle rear-ended the Nuro Prius. No injuries were reported at the scene and law enforcement '
+        'were not involved. Both vehicles sustained minimal damage.'),
+    'nhtsa-sgo-ads-30291-7981-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30291-7981, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At approximately 5:10pm CDT, a passenger vehicle collided with a Nuro Prius operating in manual mode in '
+        'Houston, Texas. Prior to the collision, the Nuro Prius operating autonomously came to a stop at the '
+        'intersection of [XXX] and [XXX]. The Nuro operator disengaged autonomy, switched to manual, and '
+        'proceeded to make a left turn. A passenger vehicle collided with the Nuro Prius before the driver '
+        'completed the turn. No injuries were reported. Both vehicles sustained damage. Law enforcement was not '
+        'involved.'),
+    'nhtsa-sgo-ads-30310-3698-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30310-3698, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Prior to the crash, on August [XXX], 2022 autonomous shuttle (MNCAV2, V005) for the Med City Mover was '
+        'travelling southbound on [XXX]. in autonomous ADS mode. The vehicle was functioning normally prior to '
+        'the event in autonomous mode. At 16:23 CT, the shuttle entered the intersection of [XXX] and [XXX]. The '
+        'shuttle experienced an unknown e-stop. The vehicle behind the shuttle was following closely and '
+        'attempting to pass the shuttle at this time and hit the rear left corner of the shuttle. No injuries '
+        'reported to the two passengers on-board the shuttle or the operator or other vehicles two passengers. '
+        'Seatbelts were used by the shuttle passengers at the time of the incident. 911 was called and the '
+        'Minnesota Department of Public Safety was dispatched to file a report. Details of the event can be '
+        'provided in video format, a police report and an operator summary. The GPX coordinates above are '
+        'approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at 15:59 CT on '
+        '[XXX] (no passengers).'),
+    'nhtsa-sgo-ads-30413-10764-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-10764, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A May autonomous shuttle (ego) was stopped at a traffic light in autonomous mode. A vehicle approaching '
+        'from behind coasted into the ego vehicle. Our system responded with a software Health Drop, which '
+        'immediately took the ego out of autonomous mode (for safety). Minor damage was reported to our rear '
+        'sensor and bumper.'),
+    'nhtsa-sgo-ads-30413-6032-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-6032, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The May vehicle came to a gentle stop at the railroad crossing (about -0.8 m/s2 deceleration) as '
+        'designed, but the agent behind did not come to a stop and made contact with the AV. The May shuttle '
+        'behaved as expected and slowed down to a stop in a safe manner. The collision was unavoidable from the '
+        'shuttle side.'),
+    'nhtsa-sgo-ads-30413-7880-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-7880, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'While in traffic and stopped at 0mph in autonomy, a motorized scooter riding between the 2 lanes of '
+        "traffic clipped the May Mobility vehicle's mirror with their own mirror. The scooter proceeded along "
+        'its way, seemingly unaware of the mirror clip.'),
+    'nhtsa-sgo-ads-30530-7892-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30530-7892, version 1, '
+        'column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024, at 3:09 AM CDT, an Aurora truck struck a small animal on [XXX] near Corsicana, TX. '
+        'Aurora disengaged autonomy before impact. Aurora vehicle operators were not injured. The Aurora truck '
+        'sustained minor damage to its front bumper, and the truck continued to its final destination in Palmer, '
+        'TX.'),
+    'nhtsa-sgo-ads-30590-3431-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30590-3431, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Subject vehicle was on a testing mission in Mountain View, CA. The vehicle was traveling North-bound on '
+        "[XXX] operated by the vehicle's Level 4 Automated Driving System and supervised by a safety driver in "
+        "the driver's designated seating position, and with a safety operator in the front passenger seating "
+        'position. Subject vehicle approached a red light to make a right turn East-bound onto [XXX]. The safety '
+        'operator suggested that the safety driver disengage the ADS and make the turn in manual mode because '
+        'the vehicle was hesitant in approaching the intersection. The safety driver disengaged the ADS, and, '
+        'approximately 250ms later, subject vehicle was lightly struck from behind by a white Mazda3. Having '
+        'seen debris on the roadway, the driver and operator believed they had run over a rock and did not '
+        'realize they were hit by the vehicle. After concluding the mission, the driver and operator found '
+        'damage to a sensor during an inspection. A subsequent review of video led to discovery of the crash. No '
+        'injuries were reported, and law enforcement was not called to the scene. In addition to telematics and '
+        "video, we also have photographs of the vehicle's damaged sensor."),
+    'nhtsa-sgo-ads-30610-3719-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-3719, '
+        'version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle in autonomy was proceeding at approximately 2mph towards an exit of a private hotel '
+        'driveway in Las Vegas, Nevada when it was struck on its right front fender by two individuals involved '
+        'in an altercation who had darted out from the side of the roadway. The right front fender of the Zoox '
+        'vehicle was dented. The two individuals fled the scene and Zoox is not aware of any reported injuries. '
+        'We question whether this interaction meets the reporting requirements nevertheless, we are submitting '
+        'this report out of an abundance of caution. This 10-Day update provides complete information for this '
+        'incident.'),
+    'nhtsa-sgo-ads-30792-6114-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30792-6114, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At 1:45pm, a WeRide vehicle (Car 1) was parked at a [XXX] parking meter - between [XXX] and [XXX] when '
+        'another vehicle (Car 2) began reversing in front of the vehicle in question. The reversing vehicle (Car '
+        '2) ultimately collided with the front left corner of the WeRide vehicle (Car 1), causing minor damage '
+        'to the front bumper. The reversing vehicle (Car 2) did not have any damage. Both drivers were able to '
+        "confer with one another seconds after the incident took place. The reversing vehicle's driver did not "
+        'possess any form of insurance or registration. WeRide vehicle (Car 1) ADS was not engaged.'),
+    'nhtsa-sgo-ads-988-3684-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 988-3684, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2022, Kodiak Robotics, Inc. ("Kodiak") filed an Incident Report (the "Report") under '
+        'the Standing General Order 2021-01 (the "Order"). PACCAR, Inc. (Paccar) manufactured the '
+        'Kodiak-operated motor vehicle involved in the incident summarized in the Incident Report. Because '
+        'Paccar is also a Reporting Entity under the Order, Paccar is submitting a duplicate of the redacted '
+        'public copy of the Report. Paccar has selected "Unknown" in the "ADS version" field solely to avoid the '
+        "second submission of nonpublic Kodiak CBI. Paccar is in possession of Kodiak's response to this field "
+        "and incorporates Kodiak's response into this submission by reference. Paccar's submission is based on "
+        'facts supplied to Paccar by Kodiak. Paccar has not investigated the alleged incident and has no '
+        'independent knowledge of the facts in the Report.'),
+}
