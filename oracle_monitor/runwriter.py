@@ -73,8 +73,8 @@ class RunWriter:
 
     def _raw_ordered(self, topic: str, data: bytes) -> None:
         if self._steps:
-            # Steps are waiting to be packed: the message joins them in order (a drain for every violation, as
-            # before, packed runs of a few steps and paid a batch's fixed cost each time).
+            # Steps are waiting to be packed: the message joins them in order. (Draining them first, as before,
+            # packed a short run of steps for every violation, each paying a batch's fixed cost.)
             self._steps.append((time.time_ns(), None, [(topic, data)]))
             return
         self._raw(topic, data)
