@@ -110,3 +110,23 @@ def test_a_campaign_time_limit_reaches_the_ros_player(tmp_path: Path) -> None:
     assert (over_ros.verdict, over_ros.categories, over_ros.end_reason) == (rec.verdict, rec.categories,
                                                                             rec.end_reason)
     assert over_ros.sim_time == pytest.approx(rec.sim_time)
+
+
+def test_a_run_no_planner_answers_is_an_error_that_keeps_the_nodes_last_words(tmp_path: Path,
+                                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    # `--planner none` and no stack on the domain: the player gives up at t = 0. A run broken on timing is an
+    # error, never a verdict on the stack, and it keeps the last lines of the player's and planner's logs (the
+    # logs themselves go with the run's temporary directory), so a graph fault seen once can be read afterwards.
+    import os
+
+    from txt2sce_ros.campaign.ros_runs import PlannerSpec
+    from txt2sce_ros.contract import Verdict
+    from txt2sce_ros.paths import REPO_ROOT
+    from txt2sce_ros.ros_env import pick_domain_id
+
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(pick_domain_id(f"{tmp_path}:{os.getpid()}")))
+    rec = run_over_ros(REPO_ROOT / "examples" / "scenarios" / "benign_junction_straight.xosc",
+                       planner=PlannerSpec("none"), attempts=1, run_timeout=60.0)
+    assert rec.verdict is Verdict.ERROR and "planner_not_responding" in rec.error, rec
+    words = rec.details["last_log_lines"]
+    assert "planner_not_responding" in words["player"] and words["planner"] == "no log", words

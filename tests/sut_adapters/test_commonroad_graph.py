@@ -22,7 +22,7 @@ def _run(name: str, tmp_path: Path, time_limit: float | None = None):
     traj = tmp_path / f"{name}.npz"
     rec = run_over_ros(SCENARIOS / f"{name}.xosc", planner=PlannerSpec("commonroad"), keep_trajectory=traj,
                        run_timeout=800.0, attempts=1, time_limit=time_limit)
-    assert rec.verdict.value != "error", rec.error
+    assert rec.verdict.value != "error", (rec.error, rec.details.get("last_log_lines"))
     with np.load(traj) as data:
         paths = {k: data[k] for k in data.files}
     return rec, paths
