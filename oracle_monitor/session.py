@@ -96,7 +96,6 @@ class JudgeSession:
         self.frames_seen = 0
         self._pending: RunStatus | None = None             # a final status held for the run's last frames
         self._deferred: list[tuple[str, Any]] = []          # the next run's scenario / status / goal messages
-        self._deferred_goal: Goal | None = None             # the last goal deferred (its repeats are not)
         self._goal_key = -1                                 # stamp of the current run's latest goal
         self._next: FrameAssembler | None = None            # ... and its frame messages, assembled apart
         self._next_frames: list[Any] = []
@@ -160,10 +159,9 @@ class JudgeSession:
                     run is not None and run.goal is not None and run.oracle is not None):
                 # Another goal while the run has one (and frames), or behind the next run's waiting messages: the
                 # next run's, ahead of its scenario. Its repeats are not kept.
-                goal = pose_to_goal(msg)
-                if goal != self._deferred_goal:
+                last = next((m for t, m in reversed(self._deferred) if t == c.TOPIC_GOAL), None)
+                if last is None or pose_to_goal(msg) != pose_to_goal(last):
                     self._deferred.append((topic, msg))
-                    self._deferred_goal = goal
                 return
             goal = pose_to_goal(msg)
             run = self._ensure_run()
@@ -310,7 +308,6 @@ class JudgeSession:
         """Judge the current run, then start the next with what was kept for it (messages, assembled frames)."""
         self.finish(status)
         deferred, self._deferred = self._deferred, []
-        self._deferred_goal = None
         frames, self._next_frames = self._next_frames, []
         nxt, self._next = self._next, None
         if nxt is not None:
@@ -357,7 +354,6 @@ class JudgeSession:
     def _end_run_without_current(self) -> None:
         """Start what was kept for the next run when there is no current run to judge."""
         deferred, self._deferred = self._deferred, []
-        self._deferred_goal = None
         frames, self._next_frames = self._next_frames, []
         nxt, self._next = self._next, None
         if nxt is not None:
