@@ -158,8 +158,6 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                               planner_settings=planner.settings,
                               planner_stats=str(stats_file) if planner.name != "standin" else "")
             codes = run_graph(cfg, timeout=run_timeout + 60.0, quiet=True)
-        # What the planner and the player said last, for a run that breaks on timing (the logs go with `work`).
-        last_words = {name: _log_tail(work / "log" / f"{name}.log", 5) for name in ("planner", "player")}
         if stats_file.is_file():
             runs = json.loads(stats_file.read_text(encoding="utf-8")).get("runs", {})
             if runs:
@@ -197,6 +195,10 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
             except Txt2SceError as exc:
                 why = f"bag not judgeable: {exc}"
                 return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
+        if any(v.end_reason in GRAPH_END_REASONS for v in verdicts):
+            # What the planner and the player said last, for a run that broke on timing (the logs go with `work`).
+            extra["last_log_lines"] = {name: _log_tail(work / "log" / f"{name}.log", 5)
+                                       for name in ("planner", "player")}
         if keep_bag is not None:
             shutil.copytree(bags[0].parent, Path(keep_bag), dirs_exist_ok=True)
         if keep_trajectory is not None and paths:
@@ -214,7 +216,6 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
     common = dict(end_reason=v.end_reason, sim_time=v.t_end, steps=max(0, v.frames - 1),
                   details={**v.to_dict(), **extra})
     if v.end_reason in GRAPH_END_REASONS:
-        common["details"]["last_log_lines"] = last_words
         return RunRecord(sid, Verdict.ERROR, error=v.error or v.end_reason, **common), f"run broke: {v.end_reason}"
     want = expected_frames(v.t_end)
     if Verdict(v.verdict) is not Verdict.ERROR and v.frames != want:
