@@ -9,6 +9,7 @@ every studyable narrative so): the reading must not change.
 from __future__ import annotations
 
 import re
+from typing import Callable
 
 from txt2sce_ros.sketch import Party, Sketch
 from txt2sce_ros.text.extractor import extract
@@ -26,6 +27,14 @@ def _told(rid: str, pattern: str, repl: str) -> Sketch:
     """The narrative with one phrasing changed to another a reporter uses for the same moves."""
     assert re.search(pattern, _TEXT[rid][1])
     return extract(re.sub(pattern, repl, _TEXT[rid][1]), rid)
+
+
+def _both_ways(rid: str, pattern: str, repl: str | Callable[[re.Match[str]], str]) -> tuple[Sketch, Sketch]:
+    """The narrative as told and with one clause moved (`pattern` -> `repl`): the two readings, which must agree."""
+    text = _TEXT[rid][1]
+    moved = re.sub(pattern, repl, text)
+    assert moved != text
+    return extract(text, rid), extract(moved, rid)
 
 
 def test_the_lane_a_turn_from_a_heading_ends_in_is_no_lane_change() -> None:
@@ -74,12 +83,10 @@ def test_the_av_s_state_told_after_the_party_in_a_clause_of_the_same_moment() ->
     # behind the Waymo AV made contact with the rear", told the other way round ("A passenger car ... made contact
     # with the rear of the Waymo AV while the Waymo AV remained stopped ..."): where the AV stood when the party came
     # in (the gold: stopped, no action), not a stop after it.
-    text = _TEXT['nhtsa-sgo-ads-30270-10557-v1'][1]
-    moved = re.sub(r"While (the Waymo AV remained stopped at a stop sign yielding to traffic), (a passenger car [^.]*)\.",
-                   lambda m: f"{m.group(2)[0].upper()}{m.group(2)[1:]} while {m.group(1)}.", text)
-    assert moved != text
-    for told in (text, moved):
-        sk = extract(told, 'nhtsa-sgo-ads-30270-10557-v1')
+    for sk in _both_ways('nhtsa-sgo-ads-30270-10557-v1',
+                         r"While (the Waymo AV remained stopped at a stop sign yielding to traffic), "
+                         r"(a passenger car [^.]*)\.",
+                         lambda m: f"{m.group(2)[0].upper()}{m.group(2)[1:]} while {m.group(1)}."):
         assert (sk.ego.start, sk.ego.actions) == ("stopped", "")
 
 
@@ -87,11 +94,8 @@ def test_a_run_told_after_the_av_s_move_in_a_clause_of_the_same_moment_came_firs
     # "As the Waymo AV entered the intersection, it slowed to yield to northbound traffic", told the other way round
     # ("It slowed to yield to northbound traffic on Stanyan Street as the Waymo AV entered the intersection"): the
     # run is the background the slowing happened against (the gold: `ac`), not a move after it.
-    text = _TEXT['csvr-waymo-20220517-s160'][1]
-    moved = re.sub(r"As (the Waymo AV entered the intersection), it (slowed [^.]*)\.", r"It \2 as \1.", text)
-    assert moved != text
-    for told in (text, moved):
-        sk = extract(told, 'csvr-waymo-20220517-s160')
+    for sk in _both_ways('csvr-waymo-20220517-s160',
+                         r"As (the Waymo AV entered the intersection), it (slowed [^.]*)\.", r"It \2 as \1."):
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ac")
 
 
@@ -100,12 +104,9 @@ def test_a_turn_under_way_told_after_the_av_s_move_in_a_clause_of_the_same_momen
     # to a stop while entering a narrow roadway", told with the turn's clause last ("... slowed to a stop while
     # entering a narrow roadway while completing a right turn ..."): it was turning, then stopped (`ehi`, as read
     # in the order told).
-    text = _TEXT['dmvca-waymo-20230711-r497'][1]
-    moved = re.sub(r"While (completing a right turn [^,]*), the Waymo AV (slowed to a stop [^.]*)\.",
-                   r"The Waymo AV \2 while \1.", text)
-    assert moved != text
-    for told in (text, moved):
-        sk = extract(told, 'dmvca-waymo-20230711-r497')
+    for sk in _both_ways('dmvca-waymo-20230711-r497',
+                         r"While (completing a right turn [^,]*), the Waymo AV (slowed to a stop [^.]*)\.",
+                         r"The Waymo AV \2 while \1."):
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ehi")
 
 
@@ -178,11 +179,8 @@ def test_a_turn_the_av_approached_is_ahead_not_made() -> None:
     # "As the Waymo AV approached a right turn from Cesar Chavez onto Evans Avenue, it braked behind stopped
     # traffic", told with the clause last ("It braked behind stopped traffic as the Waymo AV approached a right
     # turn ..."): the turn was ahead, not begun (the gold: `ah`), in either order.
-    text = _TEXT['csvr-waymo-20211018-s101'][1]
-    moved = re.sub(r"As (the Waymo AV approached a right turn [^,]*), it (braked [^.]*)\.", r"It \2 as \1.", text)
-    assert moved != text
-    for told in (text, moved):
-        sk = extract(told, 'csvr-waymo-20211018-s101')
+    for sk in _both_ways('csvr-waymo-20211018-s101',
+                         r"As (the Waymo AV approached a right turn [^,]*), it (braked [^.]*)\.", r"It \2 as \1."):
         assert (sk.ego.start, sk.ego.actions) == ("moving", "ah")
 
 
@@ -190,9 +188,6 @@ def test_a_run_told_by_a_trailing_participle_clause_came_first() -> None:
     # "While traveling northwest on Mission Street in autonomous mode, the Waymo AV navigated around a double-parked
     # vehicle", told with the clause last ("The Waymo AV navigated around a double-parked vehicle stopped in the right
     # lane while traveling northwest ..."): the run, then the way round (the gold: `afgh`), in either order.
-    text = _TEXT['dmvca-waymo-20211008-r227'][1]
-    moved = re.sub(r"While (traveling [^,]*), the Waymo AV (navigated [^.]*)\.", r"The Waymo AV \2 while \1.", text)
-    assert moved != text
-    for told in (text, moved):
-        sk = extract(told, 'dmvca-waymo-20211008-r227')
+    for sk in _both_ways('dmvca-waymo-20211008-r227',
+                         r"While (traveling [^,]*), the Waymo AV (navigated [^.]*)\.", r"The Waymo AV \2 while \1."):
         assert (sk.ego.start, sk.ego.actions) == ("moving", "afgh")
