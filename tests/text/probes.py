@@ -1277,6 +1277,20 @@ PROBES: tuple[Probe, ...] = (
            "parked vehicle", "a car door opened into its path and struck it", "it made contact with the open door "
            "of a parked car", "the driver of a parked sedan flung the door open and it hit the Zoox vehicle"),
           lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]), (["door"], [])),
+    # Session 17: the AV's own door, opened by its rider, is no obstacle; the party that met it is the partner.
+    Probe("the AV's own open door is no obstacle (a party met it)",
+          "The Waymo AV was stopped at the curb on Mission Street for a passenger drop-off when {w}.",
+          ("the Waymo AV passenger opened the rear passenger side door and a cyclist passing on the right made contact "
+           "with the open door", "a passenger of the Waymo AV opened the rear door and a cyclist passing on the right "
+           "made contact with the open rear door of the Waymo AV", "a cyclist passing on the right made contact with "
+           "the Waymo AV's open rear passenger door", "a cyclist passing on the right made contact with the open right "
+           "rear door of the Waymo AV", "the Waymo AV's rider opened the rear door and a cyclist passing on the right "
+           "struck the door", "a rider in the Waymo AV opened the right rear door into the path of a cyclist, who "
+           "struck the door", "an occupant of the Waymo AV opened the right rear door and a cyclist passing on the "
+           "right struck it", "the Waymo AV's passengers opened the rear door and a cyclist passing on the right "
+           "collided with the door"),
+          lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs], sk.collision.with_),
+          ([], ["bicycle"], "npc1")),
     Probe("the AV meeting the curb, told by its verb",
           "A Zoox vehicle was traveling northbound on Koval Lane when it {w} the curb.",
           ("mounted", "drove up onto", "jumped", "hopped", "rode up onto", "clipped", "scraped", "struck",

@@ -229,3 +229,12 @@ def test_a_party_passing_in_front_of_the_av_crosses_its_path_ahead_of_it() -> No
     # not a pass from behind along its side (gold: R5 left, `mc`).
     p = _party("nhtsa-sgo-ads-30270-8039-v1")
     assert (p.position, p.lane, p.actions) == ("R5", "left", "mc")
+
+
+def test_the_av_s_own_open_door_is_no_obstacle() -> None:
+    # "the Waymo AV passenger opened the driver side rear door and the passenger side of the van made contact with
+    # the open driver side rear door of the Waymo AV": a door the AV's rider opened is a part of the AV, not an
+    # object in its path (sketch.md: a door opened into the AV's path); the van that met it is the party.
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-10599-v1"][1], "nhtsa-sgo-ads-30270-10599-v1")
+    assert ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]) == ([], ["van"])
+    assert sk.collision.with_ == "npc1"

@@ -50,6 +50,15 @@ BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+suppleme
 
 _DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:[\w'-]+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
                    r"\b|\bdooring\b|\bdoors?\b[^.]{0,40}?\b(?:swung|flew|popped|came)\s+open\b", re.I)
+# The AV's own door is no obstacle (sketch.md: "a door opened into the AV's path"): "the Waymo AV passenger opened the
+# driver side rear door", "the open rear door of the Waymo AV", "EGO's open rear door".
+_AV_DOOR_BEFORE = compile_gated(r"(?:\bEGO(?:'s)?\s+(?:(?:rear|front|back)\s+)?(?:passengers?|riders?|occupants?|"
+                                r"customers?|EGOD)|\b(?:passengers?|riders?|occupants?|customers?)\s+(?:of|in|inside|"
+                                r"riding\s+in)\s+EGO)\s+(?:had\s+|then\s+|also\s+|suddenly\s+)?$")
+# ("EGO's open rear passenger door", "the rear door of EGO": the words between the owner and "door" name its place)
+_AV_DOOR_NAMED = compile_gated(r"\bEGO's\s+(?:(?:open|opened|front|rear|back|left|right|driver|passenger|side|"
+                               r"sliding|'s)\s+){0,4}$")
+_AV_DOOR_AFTER = compile_gated(r"s?\s+of\s+EGO\b")
 # "the (open) door of a parked car": the vehicle named right after the door owns it.
 _OF_OWNER = compile_gated(r"^\s*(?:\w+\s+){0,3}?of\s+(?:a|an|the|its|their)\s*$", re.I)
 
@@ -431,6 +440,9 @@ def add_doors(d: Doc) -> None:
     for i, s in enumerate(d.sents):
         for m in _DOOR.finditer(s):
             door_at = m.start() + m.group(0).lower().index("door")
+            if _AV_DOOR_BEFORE.search(s, max(0, m.start() - 40), m.start()) or \
+                    _AV_DOOR_NAMED.search(s, max(0, door_at - 60), door_at) or _AV_DOOR_AFTER.match(s, door_at + 4):
+                break  # the AV's own door (and "the door" after it in the sentence): no obstacle
             owners = [x for x in d.ments[i] if x.kind == "party" and x.start > door_at and x.entity >= 0 and
                       _OF_OWNER.match(s[door_at + 4:x.start])][:1] or \
                 [x for x in d.ments[i] if x.kind == "party" and x.start < m.start() and x.entity >= 0]
