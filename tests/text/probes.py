@@ -112,6 +112,115 @@ def _scenes(name: str, want: Callable[[Sketch], object], cases: tuple[tuple[str,
     return Probe(name, "{w}", tuple(table), want, table.__getitem__)
 
 
+# Session 17: each manoeuvre's vocabulary, the ways English tells it (verb forms, particles, "began to", "attempted",
+# "executed a ... maneuver", adverbs of manner, the present tense), held once and asked of a party and of the AV.
+_TURN_LEFT = (
+    "turned left", "made a left turn", "made a left", "executed a left turn", "executed a left-hand turn",
+    "initiated a left turn", "began a left turn", "commenced a left turn", "performed a left turn", "took a left",
+    "began to turn left", "started to turn left", "attempted to turn left", "attempted a left turn",
+    "began making a left turn", "started making a left turn", "began turning left", "started turning left",
+    "proceeded to turn left", "proceeded to make a left turn", "made an unprotected left turn",
+    "completed a left turn", "conducted a left turn", "negotiated a left turn", "turned to the left",
+    "cut a left turn", "made a left-hand turn", "made a sharp left turn", "turned left onto 16th Street",
+    "carried out a left turn", "initiated a left hand turn", "made a quick left turn", "turned left suddenly",
+    "suddenly turned left", "abruptly turned left", "made an abrupt left turn", "attempted to make a left turn",
+    "tried to turn left", "made a left turn maneuver", "performed a left-turn maneuver", "began its left turn",
+    "started its left turn", "initiated its left turn", "turns left", "makes a left turn",
+)
+_LANE_CHANGE_LEFT = (
+    "changed lanes to the left", "made a lane change to the left", "made a left lane change",
+    "performed a lane change to the left", "initiated a lane change to the left", "began a lane change to the left",
+    "began changing lanes to the left", "began to change lanes to the left",
+    "attempted to change lanes to the left", "attempted a lane change to the left",
+    "executed a lane change to the left", "merged left", "merged to the left", "merged into the left lane",
+    "moved into the left lane", "moved over into the left lane", "moved over to the left",
+    "shifted into the left lane", "switched into the left lane", "switched lanes to the left",
+    "cut into the left lane", "crossed into the left lane", "drifted into the left lane",
+    "veered into the left lane", "entered the left lane", "came into the left lane",
+    "changed lanes into the Waymo AV's lane", "moved into the Waymo AV's lane", "merged into the Waymo AV's lane",
+    "cut into the Waymo AV's lane", "entered the Waymo AV's lane", "encroached into the Waymo AV's lane",
+    "crossed into the Waymo AV's lane", "swerved into the Waymo AV's lane", "cut in front of the Waymo AV",
+    "changed lanes", "made a lane change", "performed a lane change", "attempted a lane change",
+    "initiated a lane change", "began a lane change", "merged", "tried to change lanes to the left",
+    "started to change lanes", "started changing lanes", "executed a left lane change",
+    "made a leftward lane change", "changed into the left lane", "changes lanes to the left",
+    "began merging into the left lane", "started merging left", "attempted to merge left",
+    "tried to merge into the left lane", "crossed over into the left lane", "moved laterally into the left lane",
+    "moved left into the Waymo AV's lane", "veered left", "swerved left", "drifted left", "veered to the left",
+    "drifted to the left", "changed lanes from the right lane to the left lane",
+    "moved from the right lane to the left lane", "merged from the right lane into the left lane",
+    "crossed the lane line", "crossed the lane divider", "crossed over the dashed lane line",
+    "began to encroach into the Waymo AV's lane", "encroached into the left lane",
+    "encroached on the Waymo AV's lane", "encroached upon the Waymo AV's lane", "intruded into the Waymo AV's lane",
+    "entered into the Waymo AV's lane of travel", "moved into the Waymo AV's lane of travel",
+    "moved into the Waymo AV's travel lane", "merged into the Waymo AV's travel lane",
+    "cut over into the Waymo AV's lane",
+)
+_U_TURN = (
+    "made a U-turn", "made a u-turn", "made a U turn", "made a uturn", "performed a U-turn", "executed a U-turn",
+    "U-turned", "u-turned", "began a U-turn", "initiated a U-turn", "attempted a U-turn",
+    "attempted to make a U-turn", "began to make a U-turn", "started a U-turn", "turned around",
+    "made a three-point turn", "made a 3-point turn", "performed a three point turn", "made a K-turn",
+    "made a multi-point turn", "began to U-turn", "attempted to U-turn", "made a U-turn maneuver",
+    "conducted a U-turn", "made an illegal U-turn", "pulled a U-turn", "did a U-turn", "made a U‑turn",
+    "began a three-point turn", "turned around in the roadway",
+)
+_BACKING = (
+    "backed up", "reversed", "began to back up", "began backing up", "started backing up", "started to reverse",
+    "began reversing", "began to reverse", "backed into the Waymo AV", "rolled backward", "rolled backwards",
+    "rolled back", "moved backward", "moved backwards", "moved in reverse", "traveled in reverse",
+    "drove in reverse", "drove backward", "went in reverse", "shifted into reverse and backed up",
+    "put the car in reverse", "reversed toward the Waymo AV", "backed toward the Waymo AV", "was backing up",
+    "was reversing", "attempted to back up", "attempted to reverse", "proceeded to reverse", "proceeded to back up",
+    "reversed into the Waymo AV", "backs up", "reverses", "began to roll backward", "began rolling backward",
+    "started rolling back", "began to move backward", "began moving in reverse", "reversed slowly",
+    "slowly backed up", "suddenly reversed", "drifted backward", "crept backward", "began to back",
+    "was traveling in reverse", "was moving in reverse", "was driving in reverse", "backed out",
+)
+_STOPPING = (
+    "stopped", "came to a stop", "came to a halt", "came to a complete stop", "came to a sudden stop",
+    "braked to a stop", "halted", "slowed to a stop", "came to a standstill", "stopped short", "stopped abruptly",
+    "abruptly stopped", "suddenly stopped", "stopped suddenly", "pulled to a stop", "screeched to a halt",
+    "slammed on its brakes and stopped", "braked hard and stopped", "came to an abrupt stop", "made a sudden stop",
+    "made an abrupt stop", "stopped quickly", "slowed and stopped", "decelerated to a stop", "slowed to a halt",
+    "came to a full stop", "came to a rapid stop", "came to an unexpected stop", "came to a stop in the lane",
+    "stopped in the lane", "braked to a complete stop", "stopped in front of the Waymo AV", "stopped unexpectedly",
+    "unexpectedly stopped", "hard braked to a stop", "came to a sudden halt", "ground to a halt",
+    "slammed to a stop", "comes to a stop", "came to rest", "decelerated rapidly to a stop",
+    "stopped short in front of the Waymo AV", "came to an emergency stop", "made an emergency stop",
+    "performed an emergency stop", "slowed down to a stop", "slowed down and stopped", "stopped for a pedestrian",
+    "yielded to a pedestrian and stopped", "stopped to yield to a pedestrian",
+)
+_SLOWING = (
+    "slowed", "slowed down", "decelerated", "braked", "braked suddenly", "suddenly braked", "braked hard",
+    "hard braked", "applied its brakes", "applied the brakes", "hit the brakes", "slammed on the brakes",
+    "slammed on its brakes", "reduced speed", "reduced its speed", "began to slow", "began slowing",
+    "started to slow", "began to brake", "began braking", "started braking", "slowed abruptly", "abruptly slowed",
+    "decelerated rapidly", "rapidly decelerated", "slowed rapidly", "slowed suddenly", "suddenly slowed",
+    "slowed quickly", "decreased speed", "decreased its speed", "lowered its speed", "braked abruptly",
+    "abruptly braked", "braked sharply", "slowed unexpectedly", "braked unexpectedly", "slowed significantly",
+    "stepped on the brakes", "tapped its brakes", "tapped the brakes", "engaged its brakes", "slows", "brakes",
+    "slowed its speed", "cut its speed", "dropped its speed", "slowed sharply", "hard-braked",
+    "performed a hard brake", "executed a hard braking maneuver", "made a hard brake",
+    "came to a near stop", "came to a rolling stop", "came to an almost complete stop", "slowed to a near stop",
+    "came nearly to a stop", "slowed almost to a stop", "slowed to a near standstill",
+)
+_MOVING_OFF = (
+    "began to move", "began moving", "started moving", "started to move", "moved forward", "began to move forward",
+    "accelerated from a stop", "pulled forward", "started from a stop", "took off", "began moving forward",
+    "crept forward", "inched forward", "rolled forward", "began to accelerate", "began to roll forward",
+    "started rolling", "began rolling forward", "began to creep forward", "proceeded forward", "moved off",
+    "pulled away", "set off", "resumed motion", "resumed moving", "began to proceed", "started to proceed",
+    "accelerated forward", "lurched forward", "surged forward", "moved ahead", "pulled ahead",
+    "began to pull forward", "edged forward", "nudged forward", "accelerated from a standstill",
+    "began to drive forward", "started driving forward", "began to go", "started to go", "proceeded from its stop",
+    "started forward", "moved up", "crept ahead", "inched ahead", "rolled ahead", "began to creep",
+    "began creeping forward", "started creeping forward", "began inching forward", "started to roll",
+    "drove forward", "accelerated", "proceeded", "began to travel forward", "moved forward slowly",
+    "slowly moved forward", "slowly began to move", "released its brakes and rolled forward",
+    "departed from the stop", "accelerated quickly from a stop", "launched forward", "moved forward unexpectedly",
+)
+
 PROBES: tuple[Probe, ...] = (
     _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
             sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
@@ -1970,6 +2079,63 @@ PROBES: tuple[Probe, ...] = (
             ("The Waymo AV approached the intersection and came to a stop at the red light. Moments later, a sedan "
              "behind the Waymo AV struck its rear bumper.", ("moving", "ah")),
     )),
+    # Session 17: the manoeuvre vocabularies above, of a party and of the AV.
+    Probe("a party's left turn, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street and entered the intersection with 16th Street on a "
+          "green light. A sedan traveling southbound on Mission Street {w} in front of the Waymo AV and made contact "
+          "with its front bumper.",
+          _TURN_LEFT, _npc_actions, [("moving", "ad")]),
+    Probe("a party's right turn, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan traveling northbound ahead of the Waymo AV "
+          "in the same lane {w}, and the Waymo AV made contact with its rear bumper.",
+          tuple(w.replace("left", "right") for w in _TURN_LEFT), _npc_actions, [("moving", "ae")]),
+    Probe("the AV's left turn, in the ways English tells it (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the middle lane. At the intersection with Flamingo "
+          "Road, the Zoox vehicle {w} and a sedan traveling behind it struck its rear bumper.",
+          _TURN_LEFT, _ego, ("moving", "ad")),
+    Probe("a party's lane change to the left, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling in the right "
+          "lane {w} and made contact with the front right bumper of the Waymo AV.",
+          _LANE_CHANGE_LEFT, _npc_actions, [("moving", "af")]),
+    Probe("a party's U-turn, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan traveling southbound on Mission Street {w} "
+          "in front of the Waymo AV and made contact with its front bumper.",
+          _U_TURN, _npc_actions, [("moving", "aj")]),
+    Probe("the AV's U-turn, in the ways English tells it (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the middle lane. At the intersection with Flamingo "
+          "Road, the Zoox vehicle {w} and a sedan traveling behind it struck its rear bumper.",
+          _U_TURN, _ego, ("moving", "aj")),
+    Probe("a party backing, in the ways English tells it (session 17)",
+          _AV_STOPPED + "A sedan ahead of the Waymo AV {w} and made contact with the front bumper of the Waymo AV.",
+          _BACKING, _npc_actions, [("stopped", "k")]),
+    Probe("the AV backing, in the ways English tells it (session 17)",
+          "A Zoox vehicle was stopped on Koval Lane. The Zoox vehicle {w} and struck a sedan that was stopped behind "
+          "it.",
+          tuple(w.replace("the Waymo AV", "the sedan") for w in _BACKING), _ego, ("stopped", "k")),
+    Probe("a party ahead stopping, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street behind a sedan. The sedan {w} and the Waymo AV "
+          "made contact with its rear bumper.",
+          _STOPPING, _npc_actions, [("moving", "ah")]),
+    Probe("the AV stopping, in the ways English tells it (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the middle lane. The Zoox vehicle {w} and a sedan "
+          "traveling behind it struck its rear bumper.",
+          tuple(w.replace("the Waymo AV", "a sedan") for w in _STOPPING), _ego, ("moving", "ah")),
+    Probe("a party ahead slowing, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street behind a sedan. The sedan {w} and the Waymo AV "
+          "made contact with its rear bumper.",
+          _SLOWING, _npc_actions, [("moving", "ac")]),
+    Probe("the AV slowing, in the ways English tells it (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the middle lane. The Zoox vehicle {w} and a sedan "
+          "traveling behind it struck its rear bumper.",
+          _SLOWING, _ego, ("moving", "ac")),
+    Probe("the AV moving off at the light, in the ways English tells it (session 17)",
+          "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
+          "and a sedan traveling behind it struck its rear bumper.",
+          _MOVING_OFF, _ego, ("stopped", "i")),
+    Probe("a party behind moving off into the standing AV, in the ways English tells it (session 17)",
+          _AV_STOPPED.replace("at 16th Street", "") + "A sedan that was stopped behind the Waymo AV {w} and made "
+          "contact with the rear bumper of the Waymo AV.",
+          _MOVING_OFF, _npc_actions, [("stopped", "i")]),
 )
 
 

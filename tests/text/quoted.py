@@ -926,6 +926,21 @@ QUOTED: dict[str, tuple[str, str]] = {
         'driver of the other vehicle was transported from the scene to a hospital for medical treatment. Waymo '
         'may supplement or correct its reporting with additional information as it may become available. This '
         'report was submitted from the Pacific time zone on the required date.'),
+    'nhtsa-sgo-ads-30270-3786-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-3786,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On September [XXX], 2022 at 1:13 PM PST a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, '
+        'Arizona was in a collision involving two passenger cars on [XXX] at [XXX]. The Waymo AV was stopped '
+        'in traffic at a red light facing West on [XXX]. The passenger car immediately behind the Waymo AV '
+        'slowed and came to a near stop when a second passenger car approaching from behind made contact with'
+        ' the rear of the first passenger car, causing that car to make contact with the rear of the Waymo '
+        'AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode, and a test '
+        'driver was present (in the drivers seating position). All three vehicles sustained damage. Waymo is '
+        'reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle '
+        'involved was towed away, because of airbag deployment, and because an occupant in one of the '
+        'passenger vehicles was transported for medical attention. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available. This report was submitted from the'
+        ' Pacific time zone on the required date.'),
     'nhtsa-sgo-ads-30270-5896-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5896, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -49,12 +49,21 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
-    ("j", r"\bu-?\s?turn|\bturn(?:ed|ing|s)?\s+around\b|\bmulti-?point\s+turn|\bthree-point\s+turn"),
+    # (any dash a report's text carries, "U‑turn" with a non-breaking hyphen; a three-point or K-turn turns the car
+    # around in as many moves: a U-turn)
+    ("j", r"\bu[-\u2010\u2011]?\s?turn|\bturn(?:ed|ing|s)?\s+around\b|\bmulti[-\u2010\u2011\s]?point\s+turn|"
+          r"\b(?:three|3)[-\u2010\u2011\s]?point\s+turn|\b[KY][-\u2010\u2011]turn\b"),
     ("k", r"\b(?:switched|shifted|put\s+\w+)\s+(?:in)?to\s+reverse\b|\brevers(?:ed|ing|es|e)\b(?!\s+(?:lights?|lamps?|camera|alarm|beep\w*|signal))|"
           r"\b(?:(?<!remained\s)(?<!remains\s)(?<!was\s)(?<!were\s)(?<!got\s)(?<!is\s)(?<!are\s)backed|backing|backs)\s+"
-          r"(?:up|out|into|away)\b|(?<=\bto\s)back\s+(?:up|out|into|away)\b|"
-          r"\brolled\s+back(?:wards?)?\b|"
-          r"\b(?:mov|roll|drift|creep|crept|coast)(?:ed|ing|es|e|s)?\s+backwards?\b|"
+          r"(?:up|out|into|away|toward|towards|onto|across|down|along|in)\b|"
+          r"(?<=\bto\s)back\s+(?:up|out|into|away|toward|towards|onto|across|down|along|in)\b|"
+          # "began to back", "started to back and": the infinitive with no particle is the backing itself
+          r"(?<=\bto\s)back\b(?=\s*(?:[,.;]|$|and\b|slowly\b|while\b|when\b))|"
+          r"\b(?:roll|drift|coast)(?:ed|ing|s)?\s+back(?:wards?)?\b(?!\s+(?:to|into)\s+(?:its|their|the)\s+(?:own\s+)?lane)|"
+          # any verb of going told backward or in reverse ("drove backward", "traveled in reverse", "began moving in
+          # reverse")
+          r"\b(?:mov|roll|drift|creep|crept|coast|driv|drove|went|go|travel|travell|proceed|inch|edg)(?:ed|ing|es|e|s)?\s+"
+          r"(?:\w+ly\s+)?(?:backwards?|in\s+reverse)\b|"
           r"\bbacking\b"),
     ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel[-\s]+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
           # "was parallel parking" is a manoeuvre under way; only "was parallel parked" tells where a car stood
@@ -70,13 +79,25 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # Not to a complete stop is a slowing ("did not come to a complete stop and made contact", "failed to completely
     # stop"): the negation denies the standstill, not the braking (a plain "failed to stop" denies both).
     ("c", r"\b(?:did\s+not|didn't|failed\s+to|fail(?:s|ing)\s+to)\s+(?:(?:come|came|coming)\s+to\s+(?:a\s+)?"
-          r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b"),
+          r"(?:complete|full)\s+(?:stop|halt|standstill)|(?:completely|fully)\s+stop)\b|"
+          # Short of a standstill is a slowing too: "came to a near stop", "slowed to a rolling stop", "came nearly
+          # to a stop", "came to an almost complete stop"
+          r"\b(?:c(?:a|o)m(?:e|es|ing)|slow(?:ed|ing|s)?(?:\s+down)?|brak(?:ed|ing|es)|decelerat(?:ed|ing|es))\s+"
+          r"(?:(?:nearly|almost|virtually)\s+)?to\s+(?:a|an)\s+(?:near|almost|nearly|rolling|partial|virtual)\s+"
+          r"(?:(?:complete|full)\s+)?(?:stop|halt|standstill)\b|"
+          r"\bc(?:a|o)m(?:e|es|ing)\s+(?:nearly|almost|virtually)\s+to\s+(?:a\s+)?(?:complete\s+|full\s+)?"
+          r"(?:stop|halt|standstill)\b"),
     # (a manner adverb may stand between the verb and its end: "came slowly to a stop", "turned sharply left",
     # "proceeded slowly forward")
     ("h", r"\b(?:(?:came|come|comes|coming)\s+(?:\w+ly\s+)?to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
-          r"slow(?:ed|ing|s)?\s+(?:down\s+|\w+ly\s+)?to|brak(?:ed|ing)\s+(?:\w+ly\s+)?to|decelerat(?:ed|ing|es)\s+(?:\w+ly\s+)?to)\s+(?:a|an)\s+"
-          r"(?:(?:complete|full|sudden|quick|abrupt|immediate|gradual|slow|controlled|brief|momentary|safe|hard|"
-          r"smooth|gentle)\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
+          r"slow(?:ed|ing|s)?\s+(?:down\s+|\w+ly\s+)?to|brak(?:ed|ing)\s+(?:\w+ly\s+)?to|decelerat(?:ed|ing|es)\s+(?:\w+ly\s+)?to|"
+          # "screeched to a halt", "ground to a halt", "skidded to a stop", "rolled to a stop": any verb of a vehicle
+          # ending its run, with the standstill it reached
+          r"(?:screech|skid|slamm|jerk|lurch|roll|eas|glid|coast|slid|drift|pull|grind)(?:ed|ing|s|e)?\s+(?:\w+ly\s+)?to|"
+          r"(?:ground|grinds|slid|slides)\s+(?:\w+ly\s+)?to)\s+(?:a|an)\s+"
+          # (one word for the manner of the stop: "a sudden stop", "an unexpected halt", "an emergency stop"; not a
+          # stop sign's kind, "a four-way stop", and not a stop short of a standstill, "a near stop", "a rolling stop")
+          r"(?:(?![\w-]*way\s|(?:near|almost|nearly|rolling|partial|virtual)\s)[\w-]+\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"
           r"\bstops\b|\byield(?:ed|ing|s)?\b|\bhalt(?:ed|ing|s)?\b|"
           r"\bbrought\s+(?:itself\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           r"\bhad\s+to\s+(?:come\s+to\s+a\s+(?:\w+\s+)?)?stop\b|"
@@ -101,8 +122,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # ("began passing", as "began to pass"; "began proceeding around the truck", as "began to proceed around": the
           # move begun, read by its own words)
           r"driving|creeping|accelerating|passing)(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
-          r"across|to\s+the)\b)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg)(?:ed|ing|es|e|s)?|crept|"
+          r"across|to\s+the)\b)|\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|lurch|surg|launch|jolt|jerk|eas|start)(?:ed|ing|es|e|s)?|crept|"
           r"accelerated|drove|drives|driving)\s+(?:\w+ly\s+)?forward\b|"
+          # "moved ahead", "crept ahead", "pulled up": forward told by another adverb ("pulled ahead of EGO" places it,
+          # "moved up behind" or "pulled up to the curb" ends somewhere: no start)
+          r"\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|eas)(?:ed|ing|es|e|s)?|crept)\s+(?:\w+ly\s+)?ahead\b(?!\s+of\b)|"
+          r"\b(?:mov|inch|creep|edg)(?:ed|ing|es|e|s)?\s+up\b(?!\s+(?:behind|beside|alongside|next|to|on)\b)|"
+          r"\bstart(?:ed|ing|s)?\s+(?:up\s+)?(?:again\s+)?from\s+(?:a|the|its)\s+(?:\w+\s+)?(?:stop|standstill)\b|"
+          r"\btook\s+off\b(?!\s+(?:from\s+the\s+scene|the\b|its\b|his\b|her\b|a\b))|"
           r"\bproceed(?:ed|ing|s)?\s+(?:\w+ly\s+)?forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed(?!\s+(?:\w+ly\s+)?around\b)|\bproceeded\s+again|"
           r"\b(?:moved|moves|moving|pulled|pulling|set|sets|setting)\s+off\b|\bpull(?:ed|ing|s)?\s+away\b|"
@@ -124,7 +151,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+left\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+left\b|"
           # "moved from the right lane into the left lane": the lane it went into names the side
-          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
+          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+(?:in)?to\s+the\s+"
           r"(?:adjacent\s+)?left(?:most)?\s+lane\b|"
           r"\b(?:entered|entering|enters|enter|crossed|crossing|crosses|cross|moved|moves|veered|veers|maneuvered|"
           r"manoeuvred|swerved|swerves|drove|drives|swung|swings|swinging|pulled|pulling|went|going)\s+"
@@ -157,7 +184,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:chang|mov|merg|shift|switch|pull|steer)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:adjacent\s+)?"
           r"lane\s+(?:immediately\s+)?to\s+(?:its|the|EGO's|our|their)\s+right\b|"
           r"\b(?:moved|shifted|merged|changed)\s+(?:over\s+)?(?:one|a)\s+lane\s+(?:over\s+)?to\s+the\s+right\b|"
-          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+into\s+the\s+"
+          r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|swung|cut|slid)\s+(?:over\s+)?from\s+the\s+(?:[\w-]+\s+){0,2}lane\s+(?:in)?to\s+the\s+"
           r"(?:adjacent\s+)?right(?:most)?\s+lane\b|"
           r"\bre-?enter(?:ed|ing)?\s+the\s+(?:\w+\s+){0,2}lane|"  # ("re-entering the far right lane")
           # "began to merge back into the northbound lane" after passing on the left: the return, as "re-enter" (a
@@ -269,8 +296,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+|\w+ly\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b(?!\s+(?:and\s+[\w-]+\s+)?(?:lights?|lamps?)\b)|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
-          r"\b(?:hit|slammed\s+on|stepped\s+on|jammed\s+on)\s+(?:the|its|their|his|her)\s+brakes?\b|"
-          r"\b(?:reduc|lower|decreas)(?:ed|ing|es|e)\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
+          # any hand on the brakes: "hit", "slammed on", "tapped", "pumped", "engaged", "activated" its brakes
+          r"\b(?:hit|hitting|slamm(?:ed|ing)\s+on|slams?\s+on|stepp(?:ed|ing)\s+on|steps?\s+on|jamm(?:ed|ing)\s+on|"
+          r"(?:tapp|pump|engag|activat|depress|press|touch|feather)(?:ed|ing|es|e|s)?(?:\s+on)?)\s+"
+          r"(?:the|its|their|his|her)\s+brakes?\b(?!\s+(?:lights?|lamps?|pedal\s+lights?))|"
+          r"\b(?:reduc|lower|decreas|cut|cutting|dropp|drop)(?:ed|ing|es|e|s)?\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),
     # ("proceeded to reverse": the verb after it tells the move, not a run along the lane)
     # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
@@ -291,7 +321,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side"),
     "h": ("stop", "halt", "standstill", "yield", "rest", "behind"),
     "i": ("began", "begin", "begun", "start", "forward", "proceed", "off", "away", "resum", "depart", "accelerat",
-          "advanc"),
+          "advanc", "ahead", "ed up", "es up", "ing up", "ve up"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
     "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),

@@ -1,0 +1,26 @@
+"""Issue 13, session 17: the manoeuvre vocabularies widened to the ways English tells each one (the wordings
+themselves are held by `tests/text/probes.py`, "in the ways English tells it"); here, each widening on a real
+studyable narrative (tests/text/quoted.py), where the wider reading must not take what the text does not say.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.text.extractor import extract
+
+from .quoted import QUOTED
+
+
+def _parties(report_id: str, text: str | None = None) -> list[tuple[str, str]]:
+    sk = extract(text if text is not None else QUOTED[report_id][1], report_id)
+    return [(p.start, p.actions) for p in sk.npcs]
+
+
+def test_a_stop_told_with_any_manner_word_but_a_near_stop_is_a_slowing() -> None:
+    # "The passenger car immediately behind the Waymo AV slowed and came to a near stop when a second passenger car
+    # ... made contact": a near stop is no standstill (gold `c`; the run told before it is read `a`, so `ac`). Any
+    # other one word for the manner of the stop ("an unexpected stop", "an emergency stop") is a stop.
+    rid = "nhtsa-sgo-ads-30270-3786-v1"
+    assert _parties(rid)[0] == ("moving", "ac")
+    for manner in ("an unexpected", "an emergency", "a rapid"):
+        text = QUOTED[rid][1].replace("slowed and came to a near stop", f"came to {manner} stop")
+        assert _parties(rid, text)[0] == ("moving", "ah"), manner
