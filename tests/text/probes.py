@@ -814,6 +814,25 @@ PROBES: tuple[Probe, ...] = (
            "vehicle", "attempted to overtake the Zoox vehicle on the left", "passed to the left of the Zoox vehicle",
            "passed the left side of the Zoox vehicle"),
           _party, [("R6", "left", "a")]),
+    # Session 17: the part of the AV touched, in the words owners, police and operators use for it (story.py
+    # REAR_PARTS / FRONT_PARTS, the "LF"/"RR" corners, a possessive inside the part's words).
+    Probe("the AV's rear told by a part of its body: the party was behind it",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan made contact with the Waymo AV's {w}.",
+          ("tailgate", "trunk", "liftgate", "rear hatch", "license plate", "taillight", "tail lamp", "back bumper",
+           "rear bumper cover", "boot", "RR bumper", "trailer hitch", "rear sensor", "rear end"),
+          _position, [("R6", "same")]),
+    Probe("a rear corner of the AV told by a part of its body: the party in the next lane was level with it or behind",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan in the left lane drifted right and made "
+          "contact with the Waymo AV's {w}.",
+          ("left taillight", "left tail lamp", "driver side rear wheel", "left rear tire", "LR quarter panel",
+           "left rear quarter panel", "driver's side rear corner", "left tail light"),
+          _position, [("R6", "left")]),
+    Probe("a front corner of the AV told by a part of its body: the party in the next lane was ahead of its tail",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan in the left lane drifted right and made "
+          "contact with the Waymo AV's {w}.",
+          ("left headlight", "driver side headlamp", "hood", "LF fender", "left front wheel", "front driver side",
+           "front left corner"),
+          _position, [("R5", "left")]),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

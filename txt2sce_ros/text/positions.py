@@ -239,9 +239,12 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
 _IN_EGO_LANE = compile_gated(r"(?<!partially\s)(?<!partly\s)\b(?:in|within)\s+EGO's\s+(?:travel\s+)?lane\b|"
                              r"\b(?:directly|immediately)\s+in\s+front\s+of\s+EGO\b", re.I)
 _INTO_A_LANE = compile_gated(r"\binto\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\b", re.I)
+# A part at a rear corner, on one side: the corner or quarter itself, a tail light, the rear wheel or tyre.
+_CORNER_PART = r"(?:corner|quarter|tail[- ]?(?:light|lamp)|(?:wheel|tire|tyre)(?!\s+well))"
 _REAR_CORNER = compile_gated(r"\bEGO's\s+(?:rear\s+)?(left|right|driver|passenger)(?:'s)?(?:[- ]side)?[- ](?:rear\s+)?"
-                             r"(?:corner|quarter|tail\s*(?:light|lamp))|\b(?:the\s+)?(?:rear\s+)?(left|right|driver|"
-                             r"passenger)(?:'s)?(?:[- ]side)?[- ]rear\s+(?:corner|quarter)\w*\s+of\s+EGO\b", re.I)
+                             rf"{_CORNER_PART}|\b(?:the\s+)?(?:rear\s+)?(left|right|driver|"
+                             rf"passenger)(?:'s)?(?:[- ]side)?[- ](?:rear[- ]{_CORNER_PART}|tail[- ]?(?:light|lamp))\w*\s+of\s+EGO\b",
+                             re.I)
 # A side the party's place is given by ("to the right of EGO", "from the left"), not a side of a body.
 PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(?:the|EGO's)\s+(?:left|right)\b"
                             r"(?!\s+(?:side|rear|front)\b)|\bon\s+EGO's\s+(?:left|right)\b(?!\s+(?:side|rear|front)\b)", re.I)

@@ -72,8 +72,11 @@ _LANE_CUES = compile_gated(
     # "a taxi parked at the curb ahead": the curb is on the right unless a side is named
     r"(?<!left\s)(?<!right\s)\b(?:at|along|by|near)\s+the\s+(curb)\b", re.I)
 # A side of the AV's body: "left rear corner", "rear passenger door", "driver's side", "front right fender".
-_PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|panel|head\s*lamp|head\s*light|tail\s*light)"
-_BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|back|side)[- ])?{_PART}|\b(?:rear|back|front)[- ]{_SIDE}\b", re.I)
+_PART = r"(?:side|rear|front|door|corner|quarter|fender|mirror|bumper|wheel|tire|panel|pillar|head\s*lamp|head\s*light|" \
+        r"tail\s*(?:light|lamp|gate))"
+# (police shorthand for a corner, "the RF fender", "its LR bumper": the capital letter is the side)
+_BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|back|side)[- ])?{_PART}|\b(?:rear|back|front)[- ]{_SIDE}\b|"
+                           r"\b(?-i:([LR])[FR])\b", re.I)
 # A lane the party moved into is where it went, not where it was.
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enters|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
 _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind|"
@@ -202,6 +205,8 @@ def _side(word: str | None) -> str | None:
     if not word:
         return None
     w = word.lower()
+    if w in ("l", "r"):  # the side letter of "LF", "RR"
+        return "left" if w == "l" else "right"
     if w.startswith(("left", "driver")):
         return "left"
     if w.startswith(("right", "passenger")):

@@ -592,17 +592,26 @@ _PART_OWNER = compile_gated(r"^(?:[\w-]+\s+){0,2}?(?:front|rear|back|side|corner
 _PASSIVE_CONTACT = compile_gated(r"\b(?:was|were|is|are)\s+(?:\w+ly\s+)?(?:struck|hit|contacted|clipped|bumped|rear-ended|"
                                  r"impacted|sideswiped|side-swiped)"
                                  r"\b([^.]{0,80}?)(?:\bby\b|$)")
+# The parts of a car's body that lie at one end of it, in the words owners, police and operators use: a rear
+# part ("the trunk", "its tailgate", "the taillight", "the license plate") is met from behind, a front one ("the
+# hood", "the grille", "the headlight") from ahead. (A hatchback is a car, not a part: "hatch" alone is.)
+REAR_PARTS = r"rear|back|tail\w*|trunk|boot|lift\s?gate|hatch|deck\s?lid|license\s+plate|(?:trailer\s+)?hitch"
+FRONT_PARTS = r"front|hood|bonnet|grill\w*|nose|head\s?(?:light|lamp)s?|windshield|windscreen"
+# Police shorthand for a corner: "LF" (left front), "RR" (right rear) ...
+_CORNER_ABBREV = {"LF": ("front", "left"), "RF": ("front", "right"), "LR": ("rear", "left"), "RR": ("rear", "right")}
 # "in front of EGO, impacting its front passenger side sensors": a participle of contact after the AV's name
 _ITS_PART = compile_gated(r"\bEGO\b[^.;]{0,40},\s+(?:impacting|striking|hitting|contacting|damaging|clipping|scraping)\s+"
                           r"its\s+((?:[\w-]+\s+){1,5})", re.I)
 _CONTACT_ITS = compile_gated(r"\b(?:made\s+contact\s+with|contacted|struck|hit|impacted|rear-ended|collided\s+with|"
-                             r"sideswiped)\s+its\s+((?:[\w-]+\s+){0,3}?(?:bumper|rear|front|side|corner|door|fender|"
-                             r"panel|end|sensor|hatch|trunk|tail\w*)\b)", re.I)
+                             r"sideswiped)\s+its\s+((?:[\w-]+\s+){0,3}?(?:bumper|side|corner|door|fender|"
+                             rf"panel|end|sensor|mirror|wheel|tire|{REAR_PARTS}|{FRONT_PARTS})\b)", re.I)
 _PART_END = re.compile(r"\b(?:collided|made|struck|hit|contacted|impacted|came|was|were|had|sideswiped|scraped|"
                        r"clipped|rubbed|touched|bumped|with|against|into)\b", re.I)
-_PART_WORD = compile_gated(r"\b(?:front|rear|back|tail|hood|driver|passenger|left|right)\b", re.I)
+_PART_WORD = compile_gated(rf"\b(?:{REAR_PARTS}|{FRONT_PARTS}|driver|passenger|left|right|(?-i:LF|RF|LR|RR))\b", re.I)
 # "EGO's left rear." names the part at the sentence end too
-_EGOS_PART = compile_gated(r"\bEGO's\s+((?:[\w-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
+# ("EGO's driver's side rear corner": a possessive inside the part's words)
+# (and never over the AV named again: "EGO's lane and made contact with EGO's rear quarter panel")
+_EGOS_PART = compile_gated(r"\bEGO's\s+((?:(?!EGO\b)[\w'-]+(?:\s+|(?=[.,;:!?)])|$)){1,6})")
 
 
 def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
@@ -636,9 +645,13 @@ def _ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
         # another sentence of the contact names ("EGO was struck on the passenger side fender by a bus").
         parts = next((p for k, s in enumerate(d.sents) if k != d.contact_sent and CONTACT.search(s)
                       and _PART_WORD.search(" ".join(p := _ego_parts(s)))), [])
-    text = " ".join(parts).lower()
-    rear = fre.search(r"\brear\b|\bback\b|\btail", text)
-    front = fre.search(r"\bfront\b|\bhood\b", text)
+    joined = " ".join(parts)
+    abbrev = fre.search(r"\b(LF|RF|LR|RR)\b", joined)
+    if abbrev and not fre.search(r"\b(?:front|rear|back|left|right|driver|passenger)\b", joined, re.I):
+        return _CORNER_ABBREV[abbrev.group(1)]  # "EGO's RR bumper": its right rear corner
+    text = joined.lower()
+    rear = fre.search(rf"\b(?:{REAR_PARTS})\b", text)
+    front = fre.search(rf"\b(?:{FRONT_PARTS})\b", text)
     # "the driver side front and rear passenger door": both halves touched, neither end decides.
     fore = None if (rear and front) else "rear" if rear else "front" if front else None
     side = "left" if fre.search(r"\bdriver|\bleft\b", text) else "right" if fre.search(r"\bpassenger|\bright\b",
