@@ -221,6 +221,32 @@ _MOVING_OFF = (
     "departed from the stop", "accelerated quickly from a stop", "launched forward", "moved forward unexpectedly",
 )
 
+_PULLING_OUT = (
+    "pulled out", "pulled out from the curb", "pulled away from the curb", "pulled out of its parking space",
+    "pulled out of a parking spot", "left its parking spot", "exited its parking space", "exited a parking spot",
+    "began to pull out", "began pulling out", "started to pull out", "attempted to pull out", "pulled into traffic",
+    "pulled out into traffic", "merged into traffic", "entered traffic", "entered the roadway",
+    "pulled into the roadway", "pulled out into the roadway", "pulled out into the lane",
+    "pulled into the travel lane", "moved into the travel lane", "departed from the curb", "left the curb",
+    "pulled out from its parked position", "pulled out of its parked position", "began to pull away from the curb",
+    "began to merge into traffic", "pulled off the curb", "moved away from the curb", "merged into the travel lane",
+    "pulled out into the travel lane", "entered the travel lane", "moved out from the curb",
+    "pulled out from the parking lane", "pulled out of the parking lane", "left the parking lane",
+    "exited the parking lane", "moved out of the parking lane", "began to enter the roadway",
+    "pulled from the curb", "pulled away from the curb into the Waymo AV's lane", "nosed out from the curb",
+    "eased out from the curb", "pulled out of a parallel parking spot", "pulled out of a curbside parking space",
+    "merged from the parking lane",
+)
+
+_PULLING_OVER = (
+    "pulled over", "pulled over to the curb", "pulled to the curb", "pulled up to the curb", "began to park",
+    "pulled into a parking spot", "pulled into a parking space", "began to parallel park", "was parallel parking",
+    "attempted to parallel park", "pulled over to the right", "pulled toward the curb",
+    "pulled over to the side of the road", "pulled onto the shoulder", "pulled over onto the shoulder",
+    "moved onto the shoulder", "pulled into the parking lane", "moved into the parking lane",
+    "pulled to the side of the road", "began to pull over", "started to pull over", "attempted to pull over",
+)
+
 PROBES: tuple[Probe, ...] = (
     _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
             sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
@@ -2151,6 +2177,14 @@ PROBES: tuple[Probe, ...] = (
           "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
           "and a sedan traveling behind it struck its rear bumper.",
           _MOVING_OFF, _ego, ("stopped", "i")),
+    Probe("a parked party pulling out into traffic, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan that was parked on the "
+          "right side of Mission Street {w} and made contact with the front right bumper of the Waymo AV.",
+          _PULLING_OUT, _npc_actions, [("stopped", "if")]),
+    Probe("a party ahead pulling over or parking, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street in the left lane. A sedan traveling in the right "
+          "lane ahead of the Waymo AV {w}. The Waymo AV made contact with the sedan's rear bumper.",
+          _PULLING_OVER, _npc_actions, [("moving", "al")]),
     Probe("a party behind moving off into the standing AV, in the ways English tells it (session 17)",
           _AV_STOPPED.replace("at 16th Street", "") + "A sedan that was stopped behind the Waymo AV {w} and made "
           "contact with the rear bumper of the Waymo AV.",

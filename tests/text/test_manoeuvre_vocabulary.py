@@ -24,3 +24,10 @@ def test_a_stop_told_with_any_manner_word_but_a_near_stop_is_a_slowing() -> None
     for manner in ("an unexpected", "an emergency", "a rapid"):
         text = QUOTED[rid][1].replace("slowed and came to a near stop", f"came to {manner} stop")
         assert _parties(rid, text)[0] == ("moving", "ah"), manner
+
+
+def test_moving_forward_from_the_curb_is_pulling_out() -> None:
+    # "an SUV began to parallel park behind the Waymo AV. While parking, the SUV moved forward from the curb into the
+    # roadway, maneuvering to the left of the Waymo AV": out from the curb by any verb of moving forward is a pull
+    # out into the travel lane (gold `lf`: the parking, then the move left out of the curb side).
+    assert _parties("nhtsa-sgo-ads-30270-9350-v1")[0] == ("moving", "lf")

@@ -26,11 +26,13 @@ _NOT_A_TURN = r"(?!\s+(?:lane|signal|indicator|pocket|arrow|light|only|bay))"
 PHRASES: tuple[tuple[str, str], ...] = (
     # Left in reverse, a space is backed out of (`k`), not pulled out of: "(?!...in reverse)" closes the pattern.
     ("O", r"(?:\b(?:left|leav(?:e|es|ing)|exit(?:ed|ing|s)?|depart(?:ed|ing|s)?\s+from)\s+(?:a|an|the|its)\s+"
-          r"(?:curbside\s+|parallel\s+)?(?:parking\s+(?:spot|space|stall|position)|parked\s+position|curb)\b|"
-          # out of its space by any verb of moving forward ("moved out of", "began to move forward out of")
-          r"\b(?:pull|mov|driv|drove|roll|edg|nos|inch|creep|crept|came|com)\w*\s+(?:forward\s+)?(?:out\s+)?(?:of|from)\s+"
-          r"(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
-          r"(?:parking\s+(?:spot|space|stall|position)|parked\s+position)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
+          r"(?:curbside\s+|parallel\s+)?(?:parking\s+(?:spot|space|stall|position|lane)|parked\s+position|curb)\b|"
+          # out of its space, the parking lane or off the curb by any verb of moving forward ("moved out of", "began
+          # to move forward out of", "nosed out from the curb", "moved away from the curb", "merged from the parking
+          # lane")
+          r"\b(?:pull|mov|driv|drove|roll|edg|nos|inch|creep|crept|came|com|eas|merg|steer)\w*\s+(?:forward\s+)?"
+          r"(?:out\s+|away\s+)?(?:of|from|off)\s+(?:a|an|the|its)\s+(?:curbside\s+|parallel\s+)?"
+          r"(?:parking\s+(?:spot|space|stall|position|lane)|parked\s+position|curb\b)|\bpull(?:ed|ing|s)?\s+(?:away\s+)?from\s+"
           r"the\s+curb|\bpull(?:ed|ing|s)?\s+out\s+(?:from\s+(?:the\s+)?curb|into\s+traffic)|"
           r"\bpull(?:ed|ing|s)?\s+(?:out|away)\s+from\s+(?:a|an|the|its)\s+(?:bus\s+stop|loading\s+zone|"
           r"stop\b(?!\s+(?:line|bar|sign|light)))|"
@@ -45,7 +47,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("P", r"\b(?:pull(?:ed|ing|s)?|sw(?:ung|ing|ings|inging))\s+out\b(?!\s+(?:of\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}"
           r"(?:driveway|garage|parking|lot|alley|space|spot|stall|gas)|into\s+the\s+intersection|"
           # "swung out into the oncoming lane", "pulled out into the left lane": the lane named tells the move
-          r"into\s+the\s+(?:oncoming|opposing|opposite|left|right)\b))"),
+          r"into\s+the\s+(?:oncoming|opposing|opposite|left|right)\b))|"
+          # Into traffic or onto the road from where it stood ("pulled into traffic", "entered the roadway", "began to
+          # enter the travel lane"): as "pulled out", its place before tells the move; from a curb, a sidewalk, a
+          # driveway or a lot named after it, the crossing or the exit is read by its own words (`m`).
+          r"\b(?:(?:pull|nos|eas|edg|inch)(?:ed|ing|es|e|s)?\s+(?:out\s+)?(?:into|onto)|enter(?:ed|ing|s)?(?:\s+into)?)\s+"
+          r"(?:traffic\b|the\s+(?:roadway|road|street|travel\s+lane|traffic\s+lane|driving\s+lane)\b)"
+          r"(?!\s+(?:from|out\s+of)\s+(?:the\s+|a\s+|an\s+)?(?:[\w-]+\s+){0,2}?(?:curb|sidewalk|median|driveway|"
+          r"parking\s+lot|lot|garage|alley))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
           r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
@@ -71,6 +80,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\binto\s+a\s+(?:parallel[-\s]+)?parking\s+"
           r"(?:space|spot|stall)|(?<!waiting\s)(?<!preparing\s)(?<!planning\s)\b(?:to|attempting\s+to)\s+park\b|"
           r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
+          # onto the shoulder or into the parking lane: out of traffic to the road's edge
+          r"\b(?:pull|mov|steer|eas)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:onto|into)\s+the\s+(?:right\s+|left\s+)?"
+          r"(?:shoulder|parking\s+lane)\b|"
           r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel[-\s]+)?parking\s+maneuver|"
           r"\bpull[-\s]?over\s+(?:maneuver|manoeuvre)\b|"
           # to the roadside to let a passenger on or off: pulling over
@@ -318,12 +330,13 @@ _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
 #: (the extractor's hot loop; the results are the same).
 _NEEDS: dict[str, tuple[str, ...]] = {
-    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side"),
+    "j": ("turn",), "k": ("revers", "back"), "l": ("pull", "park", "curb", "side", "shoulder"),
     "h": ("stop", "halt", "standstill", "yield", "rest", "behind"),
     "i": ("began", "begin", "begun", "start", "forward", "proceed", "off", "away", "resum", "depart", "accelerat",
           "advanc", "ahead", "ed up", "es up", "ing up", "ve up"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
-    "O": ("pull", "traffic", "lane", "park", "curb"), "P": ("pull", "swung", "swing"),
+    "O": ("pull", "traffic", "lane", "park", "curb"),
+    "P": ("pull", "swung", "swing", "enter", "nos", "eas", "edg", "inch"),
     "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed", "stop"), "A": ("straight",), "Y": ("turn",),
