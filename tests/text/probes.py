@@ -1431,6 +1431,40 @@ PROBES: tuple[Probe, ...] = (
            "parked vehicle", "a car door opened into its path and struck it", "it made contact with the open door "
            "of a parked car", "the driver of a parked sedan flung the door open and it hit the Zoox vehicle"),
           lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]), (["door"], [])),
+    # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
+    Probe("the other party named by a role name or a form's number",
+          "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "
+          "of the SV.",
+          ("the Crash Partner (CP)", "the CP", "a CP vehicle", "the CP vehicle", "the crash partner", "CP",
+           "the other vehicle (OV)", "the OV", "a third-party vehicle (TPV)", "the TPV", "a POV",
+           "a privately owned vehicle (POV)", "Unit 2", "Unit #2", "Veh. 2", "Veh #2", "V-2", "Party 2",
+           "the crash partner vehicle", "a Third-Party vehicle", "a non-ADS vehicle"),
+          lambda sk: ([p.category for p in sk.npcs], sk.collision.with_, list(sk.missing)), (["car"], "npc1", [])),
+    Probe("a party named again by a role name, or named by one and then by its kind, is one party",
+          "The SV was traveling northbound on [XXX] when {w}",
+          ("a pickup truck rear-ended the SV. The CP driver left the scene. The CP sustained damage.",
+           "the Crash Partner (CP), a cyclist, made contact with the SV's right side. The CP fled.",
+           "the CP, a bicyclist, made contact with the SV's right side.",
+           "a cyclist made contact with the SV's right side. The CP was not injured.",
+           "the CP made contact with the SV's rear. The CP, a sedan, left the scene.",
+           "the other vehicle (OV) made contact with the rear of the SV. The OV left the scene.",
+           "the OV made contact with the rear of the SV. The sedan then left the scene."),
+          lambda sk: (len(sk.npcs), sk.collision.with_), (1, "npc1")),
+    Probe("'another' or 'a second' vehicle after the opening sentence's party is a party of its own",
+          "The Cruise AV was stopped at a red light when a sedan rear-ended it. {W}",
+          ("Another sedan then rear-ended that sedan.", "A second sedan then rear-ended the first sedan.",
+           "Another vehicle then struck the sedan.", "A third sedan then struck the sedan.",
+           "Another car then struck the sedan from behind."),
+          lambda sk: len(sk.npcs), 2),
+    Probe("a note about the report before the story: the opening story sentence is its summary",
+          "{W} A Zoox vehicle was struck by a passenger car on [XXX] at [XXX]. The Zoox vehicle was stopped at a red "
+          "light when a passenger car traveling behind it made contact with its rear.",
+          ("This report is meant to correct monthly report 30270-7719-1 (submitted 05/15/2024).",
+           "The content of this report is unchanged from the original report.",
+           "The content of this report is unchanged from the initial report submitted on May [XXX], 2022 [Report ID "
+           "# 30270-3057-1].", "This is a duplicate of 30270-5962-1.", "This update supplements the previous "
+           "report with additional information."),
+          lambda sk: [p.category for p in sk.npcs], ["car"]),
     # Session 17: the AV's own door, opened by its rider, is no obstacle; the party that met it is the partner.
     Probe("the AV's own open door is no obstacle (a party met it)",
           "The Waymo AV was stopped at the curb on Mission Street for a passenger drop-off when {w}.",

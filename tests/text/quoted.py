@@ -963,6 +963,21 @@ QUOTED: dict[str, tuple[str, str]] = {
         'of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained '
         'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-7719-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7719, '
+        'version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'This report is mean to correct monthly report 30270-7719-1 (submitted 05/15/2024), which '
+        'erroneously marked the "Incident Date" and "Notice Received Date" as 05/06/2024 when the correct '
+        'date for both fields is 04/[XXX]/2024. On April [XXX], 2024 at 12:26 PM PT a Waymo Autonomous '
+        'Vehicle (Waymo AV) operating in San Francisco, California was in a collision involving a passenger '
+        'car on [XXX] at [XXX]. The Waymo AV was traveling southbound on [XXX] at the intersection with '
+        '[XXX]. As the Waymo AV approached the intersection, it slowed to a stop with its left turn signal '
+        'activated before the intersection, preparing to make an unprotected left turn onto eastbound [XXX]. '
+        'While the Waymo AV was yielding to traffic in the intersection, a passenger car traveling directly '
+        'behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, the '
+        'Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is '
+        'reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-7724-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7724, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
@@ -1134,6 +1149,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'Both vehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General '
         'Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or correct its reporting '
         'with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9347-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9347, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 3:29 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los '
+        'Angeles, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV '
+        'was traveling east on [XXX] and came to a stop for a red traffic light at the intersection with '
+        '[XXX]. While the Waymo AV remained stopped, a passenger car approached the Waymo AV from behind and '
+        'the front of the passenger car made contact with the rear of the Waymo AV. At the time of the '
+        "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. "
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9350-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9350, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

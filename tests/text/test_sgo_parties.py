@@ -5,7 +5,7 @@ reading; each asserts what sketch.md's rules and the study set's gold give.
 
 from __future__ import annotations
 
-from txt2sce_ros.sketch import Party
+from txt2sce_ros.sketch import Party, Sketch
 from txt2sce_ros.text.extractor import extract
 
 from .quoted import QUOTED
@@ -238,3 +238,35 @@ def test_the_av_s_own_open_door_is_no_obstacle() -> None:
     sk = extract(_SGO["nhtsa-sgo-ads-30270-10599-v1"][1], "nhtsa-sgo-ads-30270-10599-v1")
     assert ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]) == ([], ["van"])
     assert sk.collision.with_ == "npc1"
+
+
+def _told_as(report_id: str, *pairs: tuple[str, str]) -> tuple[Sketch, Sketch]:
+    """The sketch of a real narrative and of the same narrative with its words replaced as another reporter writes
+    them (each replacement must change the text)."""
+    text = other = _SGO[report_id][1]
+    for old, new in pairs:
+        assert old in other, old
+        other = other.replace(old, new)
+    return extract(text, report_id), extract(other, report_id)
+
+
+def test_the_sgo_form_s_role_names_name_the_other_party() -> None:
+    # "a passenger car approached the Waymo AV from behind and the front of the passenger car made contact with the
+    # rear of the Waymo AV", told with the form's role name ("the Crash Partner (CP) ... the CP"), another numbering
+    # ("Unit 2") or a third-party vehicle: one car, the one that struck the AV.
+    rid = "nhtsa-sgo-ads-30270-9347-v1"
+    for name, again in (("the Crash Partner (CP)", "the CP"), ("a third-party vehicle (TPV)", "the TPV"),
+                        ("the other vehicle (OV)", "the OV"), ("Unit 2", "Unit 2"), ("a CP vehicle", "the CP")):
+        told, other = _told_as(rid, ("a passenger car approached", f"{name} approached"),
+                               ("the front of the passenger car", f"the front of {again}"))
+        assert [(p.category, p.position, p.lane) for p in other.npcs] == [("car", "R6", "same")], name
+        assert other.collision == told.collision, name
+
+
+def test_a_contact_told_in_brief_after_a_note_about_the_report_is_the_summary() -> None:
+    # "This report is mean to correct monthly report 30270-7719-1 ... On April [XXX], 2024 ... a Waymo Autonomous
+    # Vehicle ... was in a collision involving a passenger car ... a passenger car traveling directly behind the
+    # Waymo AV made contact": told "was struck by a passenger car" in the opening story sentence, the car of the
+    # telling is the same car (the note about the report is no part of the story).
+    told, other = _told_as("nhtsa-sgo-ads-30270-7719-v2", ("was in a collision involving", "was struck by"))
+    assert [p.category for p in told.npcs] == [p.category for p in other.npcs] == ["car"]

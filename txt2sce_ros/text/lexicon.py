@@ -112,6 +112,10 @@ PARTY_HEADS: dict[str, str] = {
     "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter", "wheelchair": "pedestrian",
     # the AV industry's word for another road user ("the agent behind did not come to a stop and made contact")
     "agent": "car",
+    # the NHTSA SGO form's role names for the other party, which narratives copy: "the Crash Partner (CP)", "the
+    # other vehicle (OV)", "a third-party vehicle (TPV)", "a privately owned vehicle (POV)"; a vehicle unless the text
+    # says what it was ("the CP, a cyclist": `mentions.ROLE_HEADS`)
+    "crash partner": "car", "cp": "car", "ov": "car", "tpv": "car", "pov": "car",
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",

@@ -129,7 +129,9 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
                 "SE": "southeast", "SW": "southwest"}[m.group(1)] + "bound"),
 )
 #: Capitalised words that open such a phrase without naming an operator.
-_NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another", "other", "second", "first"}) | \
+_NOT_OPERATORS = frozenset({"level", "sae", "fully", "highly", "new", "another", "other", "second", "first",
+                            # the SGO form's role names: "a CP vehicle", "the Crash Partner vehicle"
+                            "cp", "crash", "ov", "tpv", "pov", "third-party", "third", "non-ads", "non-av"}) | \
     frozenset(MAKES) | frozenset(VAN_MODELS)
 
 
@@ -297,11 +299,17 @@ _AV_LABEL = compile_gated(r"\b(?:vehicle|car|unit)\s*#?\s*([1-9])\s*\(\s*(?:the\
                           re.I)
 
 
+# Other spellings of the forms' numbering: "Unit 2", "Unit #2", "Veh. 2", "Veh #2", "V-2", "V#2", "Party 2".
+_OTHER_LABEL = compile_gated(r"\b(?:[Uu]nit|[Vv]eh\.?|V-|V#|[Pp]arty)\s*#?\s*([1-9])\b(?!\s*(?:mph|feet|ft|%|[:.,]\d))")
+
+
 def _numbered_av(t: str) -> str:
     """The OL 316 numbering: "V2" spelled "Vehicle 2", and a label defined as the AV ("Vehicle 1 (our AV)")
     replaced by "the AV" wherever the text uses it."""
     if fre.search(r"\bV[1-9]\b", t):
         t = fre.sub(r"\bV([1-9])\b", r"Vehicle \1", t)
+    if _OTHER_LABEL.search(t):
+        t = _OTHER_LABEL.sub(lambda m: f"Vehicle {m.group(1)}", t)
     m = _AV_LABEL.search(t)
     if m:
         t = _rename_label(t[:m.start()] + "the AV" + t[m.end():], m.group(1), "the AV")
@@ -617,6 +625,8 @@ _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operatin
 _AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|had\s+been|has\s+been)?\s*(?:\w+ly\s+)?"
                               r"(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
+#: Role names for the other party ("the CP", "the OV"): they name whichever party the report is about, of any kind.
+ROLE_HEADS = frozenset({"crash partner", "cp", "ov", "tpv", "pov"})
 _BARE = {"vehicle", "car", "automobile"}  # generic heads the narratives also use for the AV
 _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
                              r"following|traveling|that|which|in\s+the)", re.I)
@@ -637,6 +647,8 @@ def _compatible(e: Entity, m: Mention) -> bool:
         return e.kind == m.kind and (m.head in e.heads or e.category == m.category)
     if m.head in e.heads:
         return True
+    if m.head in ROLE_HEADS or e.heads & ROLE_HEADS:
+        return True  # "a cyclist ... the CP", "the CP ... the sedan": a role name fits a party of any kind
     mod_words = set(m.mods.split())
     if any(h in mod_words or any(w in h.split() for w in mod_words) for h in e.heads if h in MAKES or
            h in VAN_MODELS):
@@ -652,6 +664,16 @@ def _compatible(e: Entity, m: Mention) -> bool:
     if m.head in _GENERIC or m.mods.startswith("other"):
         return e.category in ("car", "van", "truck", "bus")
     return e.category == m.category and m.category not in ("car",)
+
+
+_ANOTHER_BEFORE = compile_gated(r"\banother\s*$", re.I)
+
+
+def _another(s: str, m: Mention) -> bool:
+    """Is mention `m` of sentence `s` introduced as a party other than one named before ("another vehicle", "a
+    second passenger car", "a third car")?"""
+    return bool(_ANOTHER_BEFORE.search(s, max(0, m.start - 10), m.start)) or \
+        bool({"second", "third", "other"} & set(m.mods.split()))
 
 
 _CLAUSE_WORD = compile_gated(r"\b(?:when|while|as|and|but|then|before|after|until|because)\b", re.I)
@@ -733,8 +755,11 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
         if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
                 and prev.entity >= 0 and (fre.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)) or
                                           (prev.entity in labels and fre.fullmatch(
-                                              r"\s+#?[1-9]\s*,\s*(?:a|an)\s*", _between(sents, prev, m)))):
-            # ... and so does an appositive after a numbered party ("Vehicle 3, a pickup truck, was traveling").
+                                              r"\s+#?[1-9]\s*,\s*(?:a|an)\s*", _between(sents, prev, m))) or
+                                          (prev.head in ROLE_HEADS and fre.fullmatch(
+                                              r"\s*,?\s*(?:a|an)\s*", _between(sents, prev, m)))):
+            # ... and so does an appositive after a numbered party ("Vehicle 3, a pickup truck, was traveling") or a
+            # role name ("The Crash Partner (CP), a cyclist, ...").
             m.det = "the"
             target = ents[prev.entity]
             target.category = m.category if m.category != "car" else target.category
@@ -778,8 +803,10 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             # is the same party, told in detail.
             for e in live:
                 # (by its noun, or by its category when one of the two names no more than a vehicle: "a pickup
-                # truck" the AV yielded to is not the summary's SUV)
-                if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and (
+                # truck" the AV yielded to is not the summary's SUV; "another vehicle", "a second car" is not the
+                # one named before, whatever the summary named)
+                if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and \
+                        not _another(sents[m.sent], m) and (
                         m.head in e.heads or (e.kind == m.kind and e.category == m.category and (
                             m.head in _GENERIC or all(h in _GENERIC for h in e.heads)))):
                     target = e

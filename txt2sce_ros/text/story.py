@@ -109,6 +109,10 @@ class Doc:
         return self.memo[key]  # type: ignore[return-value]
 
 
+# A sentence about the report, not the event: "This report is meant to correct ...", "The content of this report is
+# unchanged from the initial report ...", "This is a duplicate of 30270-5962-1".
+_ABOUT_THE_REPORT = compile_gated(r"\b(?:this|the|original|initial|monthly|previous|prior)\s+(?:[\w-]+\s+){0,2}report\b|"
+                                  r"\bduplicate\s+of\b|\breport\s+id\b", re.I)
 _FORM_FIELD = compile_gated(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s")  # "Weather: ", "Lighting Conditions: "
 
 
@@ -117,8 +121,12 @@ def summary_sentences(sents: list[str]) -> set[int]:
     reporting this crash under ...", form headers ("Weather: Clear Passengers: 4 ...")."""
     out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or BOILERPLATE.search(s)
            or len(_FORM_FIELD.findall(s)) >= 3}
-    if sents and CONTACT.search(sents[0]) and any(CONTACT.search(s) for s in sents[1:]):
-        out.add(0)
+    # The opening sentence tells the contact in brief when a later one tells it again ("A Zoox vehicle was rear-ended
+    # by a passenger car ... The passenger car ..."); notes about the report itself may come first ("This report is
+    # meant to correct monthly report 30270-7719-1 ...", "The content of this report is unchanged ...").
+    first = next((i for i, s in enumerate(sents) if not (BOILERPLATE.search(s) or _ABOUT_THE_REPORT.search(s))), None)
+    if first is not None and CONTACT.search(sents[first]) and any(CONTACT.search(s) for s in sents[first + 1:]):
+        out.add(first)
     return out
 
 
