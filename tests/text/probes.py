@@ -2211,6 +2211,25 @@ PROBES: tuple[Probe, ...] = (
           "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
           "and a sedan traveling behind it struck its rear bumper.",
           _MOVING_OFF, _ego, ("stopped", "i")),
+    Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
+          "when a sedan traveling behind it struck its rear bumper.",
+          ("at the limit line", "at the limit line at Flamingo Road", "at the stop bar", "at the cross street",
+           "at a red left-turn arrow", "at the traffic control signal", "at the traffic-control signal",
+           "at a four way stop", "at a 4 way stop", "at an all way stop", "at a two way stop",
+           "at the limit line for a stop sign", "at the limit line for a red light", "at a red traffic-control signal",
+           "at a signal-controlled intersection", "at a stop-controlled intersection"),
+          lambda sk: (sk.road.layout, sk.road.control, sk.signal_state),
+          lambda w: ("junction4", "stop_sign", "none") if ("way" in w or "stop sign" in w or "stop-" in w) else
+          # (standing at a light of no told colour: the red it stood at, as "was stopped at a traffic light")
+          ("junction4", "signal", "red") if ("red" in w or "signal" in w) else ("junction4", "unknown", "unknown")),
+    Probe("a junction left behind, and a parking lot told by its parts (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane {w} when a sedan traveling behind it struck its rear "
+          "bumper.",
+          ("after clearing the intersection with Flamingo Road", "having cleared the intersection",
+           "after passing through the intersection", "in a parking deck", "in a car park", "in a parking aisle",
+           "in the drive aisle of a parking lot", "in a parking lot aisle", "within a parking structure"),
+          lambda sk: sk.road.layout, lambda w: "straight" if "intersection" in w else "parking"),
     Probe("a parked party pulling out into traffic, in the ways English tells it (session 17)",
           "The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan that was parked on the "
           "right side of Mission Street {w} and made contact with the front right bumper of the Waymo AV.",

@@ -9,27 +9,38 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .lexicon import CARDINALS, NUMBER_WORDS
 
+#: A stop sign junction told by its legs ("a four-way stop", "an all way stop", "a 2-way stop").
+_WAY_STOP = r"\b(?:all|two|four|three|\d)[-\s]way\s+stop\b"
+#: A traffic light by its names ("traffic signal", "traffic-control signal", "traffic control light").
+_TRAFFIC_LIGHT = r"\btraffic[\s-]+(?:control\s+)?(?:light|signal)s?\b"
 #: A light told by its colour after it ("a light that was red", "the signal was still green"): a traffic light.
 _LIGHT_WAS = r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?(?:red|green|yellow|amber)\b"
 _JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
                           # "at the corner of Bush Street and Grant Avenue" (not "the front corner of EGO": a street's
                           # name, capitalised or redacted, follows)
                           r"\b(?:at|on)\s+the\s+(?:\w+\s+)?corner\s+of\s+(?-i:[A-Z0-9\[])|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
-                       r"\btraffic\s+(?:light|signal)s?\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
+                       + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
-                       r"\b(?:red|green|yellow)\s+(?:light|arrow|signal)\b|\bstop\s+(?:bar|line)\b|"
-                       r"\b(?:all|two|four|three|\d)-way\s+stop\b|\bjunction\b|\bcross[\s-]+traffic\b|"
+                       # ("a red left-turn arrow": the arrow of a turn lane's light)
+                       r"\b(?:red|green|yellow)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal)\b|"
+                       # the line a vehicle stops at before a junction: "stop line", "stop bar", California's "limit line"
+                       r"\b(?:stop|limit)\s+(?:bar|line)\b|"
+                       + _WAY_STOP + r"|\bjunction\b|\bcross[\s-]+traffic\b|\bcross[\s-]?streets?\b|"
                        r"\bthe\s+light\s+turned\b|"
                        # waiting in a turn pocket: turn lanes end at a junction
                        r"\b(?:stopped|waiting|queued|traffic|traveling|travelling|proceeding|driving)\s+in\s+(?:a|the)\s+"
                        r"(?:(?:dedicated|leftmost|rightmost|left-most|right-most)\s+)?(?:left|right)[- ]turn\s+"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
-                          r"(?:all|two|four|three|\d)-way\s+stop|traffic\s+(?:light|signal))\b", re.I)
+                          r"(?:all|two|four|three|\d)[-\s]way\s+stop|traffic[\s-]+(?:control\s+)?(?:light|signal))\b", re.I)
 _AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is|had)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
                           r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from)\s+the\s+intersection\b|"
-                           r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection", re.I)
+                           r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection|"
+                           # a junction left behind: "after clearing the intersection", "having passed through the
+                           # intersection"
+                           r"\b(?:after|having|had)\s+(?:clear|pass|exit|travers|cross)(?:ed|ing)\s+(?:through\s+)?"
+                           r"the\s+intersection\b", re.I)
 # Someone coming out of a driveway, a lot or a garage (not out of a parking space: a parking manoeuvre).
 _OUT_OF_A_LOT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}"
                               r"(?:parking\s+(?:lot|garage|structure)|driveway|garage|alley)\b", re.I)
@@ -66,8 +77,9 @@ PRIOR_TURN = compile_gated(r"\b(?:after|had|having)\s+(?:completing|making|turni
                          r"\bonto\b|\bafter\s+turning\b", re.I)
 _ROUNDABOUT = compile_gated(r"\broundabout\b|\btraffic\s+circle\b|\brotary\b", re.I)
 _PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,3}(?:parking\s+(?:lot|"
-                      r"structure|garage|facility)|garage|parking\s+area|depot|lot)\b|\bparking\s+(?:structure|"
-                      r"garage)\b", re.I)
+                      r"structure|garage|facility|deck|ramp)|garage|parking\s+area|depot|lot|car\s+park)\b|\bparking\s+(?:structure|"
+                      # the lanes of a lot: "a parking aisle", "the drive aisle of a parking lot"
+                      r"garage|deck)\b|\b(?:drive|driving|parking)\s+aisles?\b", re.I)
 _CURVE = compile_gated(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
 _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
@@ -82,13 +94,13 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
 # "was preparing to make a right-on-red": a turn made on red is made at a signal.
 _TURN_ON_RED = r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b"
-_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:light|arrow|signal|ball)\b|\btraffic\s+(?:light|signal)s?"
-                     r"\b|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
+_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball)\b|"
+                     + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
                      r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b|"
                      + _TURN_ON_RED, re.I)
-_STOP_SIGN = compile_gated(r"\bstop\s+sign|\b(?:all|two|four|three|\d)-way\s+stop\b|\bstop-controlled\b", re.I)
+_STOP_SIGN = compile_gated(r"\bstop\s+sign|" + _WAY_STOP + r"|\bstop-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
                             r"\bno\s+traffic\s+(?:controls?|signals?|lights?)\b|"
@@ -304,7 +316,7 @@ _RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s
                            r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b|"
                            r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?red\b", re.I)
 # ("a stoplight", "a stop light": a traffic light)
-_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic\s+|stop\s?)?(?:light|signal)\b", re.I)
+_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic[\s-]+(?:control\s+)?|stop\s?)?(?:light|signal)\b", re.I)
 _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 
 
