@@ -859,6 +859,39 @@ PROBES: tuple[Probe, ...] = (
           ("left headlight", "driver side headlamp", "hood", "LF fender", "left front wheel", "front driver side",
            "front left corner"),
           _position, [("R5", "left")]),
+    Probe("a party going around the standing AV on a side, told by any verb of a move with 'around'",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan {w} the Waymo AV on its left and "
+          "sideswiped it.",
+          ("swerved around", "veered around", "pulled around", "cut around", "moved around", "went around",
+           "drove around", "maneuvered around", "steered around", "darted around", "swung around", "whipped around",
+           "was going around", "began to go around", "went past", "zipped past", "overtook", "attempted to pass"),
+          _position, [("R6", "left")]),
+    Probe("a party following the AV too closely",
+          "The Cruise AV was traveling northbound on Geary Boulevard. A pickup truck {w} the Cruise AV struck its "
+          "rear.",
+          ("tailgating", "tail-gating", "riding the bumper of", "following too closely behind", "following closely "
+           "behind", "close behind", "right behind", "just behind", "directly to the rear of", "queued behind"),
+          _position, [("R6", "same")]),
+    Probe("a party in the lane beside the standing AV striking its rear quarter: 'the adjacent lane' is no place "
+          "level with it", "The Waymo AV was stopped at a red light on Mission Street. A sedan {w} sideswiped the "
+          "Waymo AV's left rear quarter panel.",
+          ("traveling in the same direction in the adjacent lane to the left", "in the adjacent left lane",
+           "traveling in the adjacent travel lane on the left", "moving in the left adjacent lane",
+           "driving in the adjacent lanes to the left"),
+          _position, [("R6", "left")]),
+    _scenes("a party heading across the AV's road away from a junction: it came from the side opposite its heading",
+            _partner_position, (
+            ("The Waymo AV was traveling northbound on [XXX] when an SUV traveling eastbound exited a driveway and "
+             "the front of the SUV made contact with the driver side of the Waymo AV.", ("R5", "left")),
+            ("The Waymo AV was traveling northbound on [XXX] when an SUV traveling westbound exited a parking lot "
+             "and the front of the SUV made contact with the passenger side of the Waymo AV.", ("R5", "right")),
+            ("The Zoox vehicle was traveling south on Main Street when a sedan heading west out of an alley struck "
+             "the Zoox vehicle.", ("R5", "left")),
+            ("The Zoox vehicle was traveling southbound on Main Street when a westbound sedan pulled out of a "
+             "parking garage and struck the Zoox vehicle.", ("R5", "left")),
+            ("The Cruise AV was driving eastbound on Pine Street when a pedestrian walking northbound across Pine "
+             "Street mid-block stepped into its path and was struck.", ("R5", "right")),
+    )),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

@@ -136,6 +136,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if junction and rel in (90, 270):
         # Coming from the side opposite its heading: heading +90 (clockwise) of the AV's comes from the AV's left.
         return ("R1" if rel == 90 else "R3"), None, True
+    if rel in (90, 270) and not ego_turning and side_named(ctx) is None:
+        # Away from a junction, heading across the AV's road (out of a driveway, a lot or an alley, or crossing
+        # mid-block: "an SUV traveling eastbound exited a driveway", the AV northbound): it came from the side
+        # opposite its heading, at the roadside beside or ahead of the AV (sketch.md: R5 on that side).
+        return "R5", ("left" if rel == 90 else "right"), True
     compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I) or (
         # at a junction a bare origin does ("traveling on Flamingo Road from the west")
         junction and fre.search(r"\bfrom\s+the\s+(north|south|east|west)\b(?!\s*-?\s*bound)", ctx, re.I))

@@ -85,6 +85,8 @@ _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO|in\s+the\s+travel\s+lane)\b", re.I)
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
+                        # following too close: "tailgating EGO", "riding EGO's bumper", "riding the bumper of EGO"
+                        r"tail-?gat\w*\s+(?:EGO|it|us)|(?:riding|rode)\s+(?:EGO's|its|our|the)\s+(?:rear\s+)?bumper|"
                         r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
                         r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|rear[- ]?ended\s+by|struck\s+from\s+behind\s+by|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
@@ -112,12 +114,15 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
                          r"(?P<between>(?:rode|riding|ride|traveling|travelling|driving|drove|moving|going|went)\s+"
                          r"(?:\w+\s+){0,2}between\s+EGO\s+and)|"
                          r"(?:go|going|went|get|getting|got|come|came|coming|drive|drove|driving|maneuver\w*|manoeuvr\w*|"
-                         r"steer\w*)\s+around(?=\s+(?:the\s+"
+                         # ("swerved around EGO", "pulled around the stopped EGO": any verb of a move with "around")
+                         r"steer\w*|swerv\w*|veer\w*|pull\w*|cut|cutting|mov\w*|dart\w*|swung|swing\w*|whip\w*|"
+                         r"travel\w*|rode|ride|riding|proceed\w*|head\w*|zip\w*|shot|shoot\w*)\s+around(?=\s+(?:the\s+"
                          r"(?:left|right)\s+side\s+of\s+)?(?:the\s+)?(?:\w+\s+)?EGO)|"
                          # "a sedan that was also going around": the same pass as the traffic told before it
                          r"also\s+(?:going|driving|moving|getting)\s+(?:around|past)(?!\s+(?:a|an|the)\s+(?!EGO))|"
                          r"split(?:ting)?\s+(?:the\s+)?lanes?)\b(?:\s+(?:by\s+)?(?:the\s+)?(?:EGO|it))?"
-                         r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+)?(?P<side>left|right))?", re.I)
+                         # the side it passed on: "on the left", "on its left", "on EGO's driver side"
+                         r"(?:[^.|]{0,40}?\bon\s+(?:the\s+|EGO's\s+|its\s+)?(?P<side>left|right|driver|passenger))?", re.I)
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
 # AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
 # "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
@@ -485,7 +490,9 @@ _ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+the\s+adjacent\s+(?!left
 _OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
                                  r"(?:a|an|the|its|their)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|carport|parking\s+"
                                  r"(?:lot|space|spot|stall|garage|structure))\b", re.I)
-_LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent)\b", re.I)
+# Level with the AV or ahead of it ("alongside", "adjacent to EGO"); "the adjacent lane" names a lane, no place
+# along it ("in the adjacent lane to the left sideswiped EGO's left rear quarter panel": it came up from behind).
+_LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent(?!\s+(?:[\w-]+\s+){0,2}?lanes?\b))\b", re.I)
 
 
 def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
