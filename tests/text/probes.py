@@ -247,6 +247,47 @@ _PULLING_OVER = (
     "pulled to the side of the road", "began to pull over", "started to pull over", "attempted to pull over",
 )
 
+_SPEEDING_UP = (
+    "accelerated", "sped up", "picked up speed", "increased its speed", "increased speed", "gained speed",
+    "began to accelerate", "started to accelerate", "accelerated rapidly", "rapidly accelerated",
+    "suddenly accelerated", "accelerated suddenly", "stepped on the gas", "hit the gas", "floored it",
+    "pressed the accelerator", "stepped on the accelerator", "accelerated quickly", "began accelerating",
+    "was accelerating", "sped forward", "gunned the engine", "speeds up", "accelerates", "began speeding up",
+    "continued to accelerate",
+)
+
+_CROSSING_ON_FOOT = (
+    "crossed the street", "walked across the street", "was crossing the street", "ran across the street",
+    "darted across the street", "stepped off the curb", "jaywalked", "entered the crosswalk",
+    "crossed in front of the Waymo AV", "walked in front of the Waymo AV", "ran into the street",
+    "darted into the street", "stepped into the street", "stepped into the roadway", "stepped out into the road",
+    "began to cross the street", "started crossing the street", "attempted to cross the street",
+    "crossed mid-block", "crossed against the light", "crossed outside the crosswalk",
+    "walked into the path of the Waymo AV", "emerged from between parked cars",
+    "stepped out from between two parked cars", "crossed the roadway", "walked across the roadway",
+    "was walking across the road", "entered the roadway from the sidewalk", "came out from behind a parked truck",
+    "ran out in front of the Waymo AV", "dashed across the street", "hurried across the street",
+    "jogged across the street", "was jaywalking across Mission Street", "crosses the street",
+    "walks across the street", "walked out into traffic", "stepped off the sidewalk", "stepped down from the curb",
+    "crossed Mission Street", "walked across Mission Street", "ran across Mission Street",
+    "was crossing Mission Street", "began crossing Mission Street", "crossed from the west curb",
+    "crossed from east to west", "walked from the east side of the street to the west side",
+)
+
+_OUT_OF_A_DRIVEWAY = (
+    "exited a driveway", "pulled out of a driveway", "emerged from a parking lot", "left a gas station",
+    "came out of an alley", "pulled out of a parking lot", "exited a parking lot", "drove out of a driveway",
+    "pulled out from a driveway", "exited from a driveway", "was exiting a driveway", "began to exit a driveway",
+    "pulled out of an alley", "exited an alley", "emerged from an alley", "exited a parking garage",
+    "pulled out of a parking garage", "came out of a parking garage", "exited a private driveway",
+    "pulled out of a residential driveway", "left a driveway", "departed a parking lot",
+    "exited the driveway of a gas station", "pulled out from a gas station", "exited a shopping center parking lot",
+    "pulled out of the driveway on the right", "rolled out of a driveway", "nosed out of a driveway",
+    "edged out of a driveway", "exited a driveway on the right side of the street",
+    "pulled out of a business driveway", "came out of a driveway", "pulled from a driveway", "exits a driveway",
+    "pulls out of a driveway", "emerged from a driveway", "exited a parking structure",
+)
+
 PROBES: tuple[Probe, ...] = (
     _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
             sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
@@ -2244,6 +2285,18 @@ PROBES: tuple[Probe, ...] = (
           "A Zoox vehicle was stopped at a red light on Koval Lane. When the light turned green, the Zoox vehicle {w} "
           "and a sedan traveling behind it struck its rear bumper.",
           _MOVING_OFF, _ego, ("stopped", "i")),
+    Probe("a party behind speeding up, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street. A sedan traveling behind the Waymo AV {w} and "
+          "struck the rear bumper of the Waymo AV.",
+          _SPEEDING_UP, _npc_actions, [("moving", "ab")]),
+    Probe("a walker crossing the AV's road, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street between 16th Street and 17th Street. A pedestrian "
+          "{w} and the Waymo AV made contact with the pedestrian.",
+          _CROSSING_ON_FOOT, _npc_actions, [("moving", "m")]),
+    Probe("a vehicle out of a driveway, a lot or an alley, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street between 16th Street and 17th Street. A sedan {w} "
+          "and made contact with the front of the Waymo AV.",
+          _OUT_OF_A_DRIVEWAY, _npc_actions, [("moving", "m")]),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

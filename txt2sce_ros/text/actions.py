@@ -44,7 +44,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?!\s+in\s+reverse)"),
     # "pulled out and struck", "swung out around the bus": out of a parking spot if it was parked, a start if it
     # stood, a move out of its lane if it was on its way (sequences.sequence); out of a driveway or lot is `m`.
-    ("P", r"\b(?:pull(?:ed|ing|s)?|sw(?:ung|ing|ings|inging))\s+out\b(?!\s+(?:of\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}"
+    ("P", r"\b(?:pull(?:ed|ing|s)?|sw(?:ung|ing|ings|inging))\s+out\b(?!\s+(?:(?:of|from)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}"
           r"(?:driveway|garage|parking|lot|alley|space|spot|stall|gas)|into\s+the\s+intersection|"
           # "swung out into the oncoming lane", "pulled out into the left lane": the lane named tells the move
           r"into\s+the\s+(?:oncoming|opposing|opposite|left|right)\b))|"
@@ -277,9 +277,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:[\w-]+\s+){0,2}?(?:driveway|(?:parking\s+)?lot|parking\s+(?:garage|structure)|garage)\b"),
     ("m", r"\bjaywalk(?:ing|ed)\b|\b(?:cross(?:ed|ing|es)|cross(?=\s+(?:the|all|both|several)\b)|walk(?:ed|ing)|ran|running|darted|stepped)\s+(?:into\s+"
           r"|across\s+|in\s+front\s+of\s+)?(?:the\s+|all\s+|both\s+|several\s+)?(?:street|road|roadway|crosswalk|"
-          r"lanes|driveway|alley)|\b(?:pull(?:ed|ing)\s+"
-          r"out\s+of|exit(?:ed|ing)(?:\s+out\s+of|\s+from)?|leaving|left|emerg(?:ed|ing|es|e)\s+from|"
-          r"(?:came|coming|drove|driving|rolled|rolling)\s+out\s+of)\s+(?:a|an|the)\s+"
+          r"lanes|driveway|alley)|"
+          # out of a driveway, a lot or an alley by any verb of going forward ("pulled out from", "nosed out of",
+          # "began to exit", "departed a parking lot", "pulls out of")
+          r"\b(?:(?:pull|nos|edg|inch|eas|roll|creep|driv|mov)(?:ed|ing|es|e|s)?\s+(?:out\s+)?(?:of|from)|"
+          r"(?:crept|came|coming|comes|come|drove)\s+out\s+(?:of|from)|"
+          r"exit(?:ed|ing|s)?(?:\s+out\s+of|\s+from)?|leaving|left|leaves|depart(?:ed|ing|s)?(?:\s+from)?|"
+          r"emerg(?:ed|ing|es|e)\s+(?:out\s+)?from)\s+(?:a|an|the)\s+"
           r"(?:[\w-]+\s+){0,2}?(?:driveway|garage|gas\s+station|"
           r"parking\s+(?:lot|garage|structure|spot|space|area)|alley|(?:shopping\s+)?(?:center|plaza|mall)|business)"
           r"(?!\s+in\s+reverse)|"
@@ -304,6 +308,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"out\s+(?:from\s+(?:between|behind)|in\s+front)|across\s+(?:the\s+)?(?:street|road|roadway|lanes?|"
           r"intersection|crosswalk))"),
     ("b", r"\baccelerat(?:ed|ing|es|e)\b(?!\s+(?:pedal|forward))|"
+          # a foot on the gas: "stepped on the gas", "pressed the accelerator", "floored it", "gunned the engine"
+          r"\b(?:stepp(?:ed|ing)|steps?|hit|hitting|press(?:ed|ing|es)?|push(?:ed|ing|es)?|floor(?:ed|ing|s)?|"
+          r"mash(?:ed|ing|es)?|stomp(?:ed|ing|s)?)\s+(?:on\s+)?(?:the|its|their|his|her)\s+(?:gas|accelerator|throttle)"
+          r"(?:\s+pedal)?\b|\bfloor(?:ed|ing|s)?\s+it\b|\bgunn?(?:ed|ing|s)?\s+(?:it|the\s+engine)\b|"
+          r"\bsped\s+(?:forward|ahead|off)\b|"
           r"\b(?:pick(?:ed|ing|s)?\s+up|gain(?:ed|ing|s)?)\s+speed\b|\bsped\s+up\b|\bspeed(?:ing|s)\s+up\b|\bincreas(?:ed|ing|es)\s+"
           r"(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+|\w+ly\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
@@ -338,7 +347,8 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "O": ("pull", "traffic", "lane", "park", "curb"),
     "P": ("pull", "swung", "swing", "enter", "nos", "eas", "edg", "inch"),
     "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
-    "d": ("left",), "e": ("right",), "T": ("turn",), "b": ("accelerat", "sped", "speeding", "increas", "speed"),
+    "d": ("left",), "e": ("right",), "T": ("turn",),
+    "b": ("accelerat", "sped", "speeding", "increas", "speed", "gas", "throttle", "floor", "gun"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed", "stop"), "A": ("straight",), "Y": ("turn",),
     "Q": ("front", "path", "off"), "D": ("driveway", "lot", "garage"),
 }
