@@ -1505,6 +1505,25 @@ PROBES: tuple[Probe, ...] = (
            "parked vehicle", "a car door opened into its path and struck it", "it made contact with the open door "
            "of a parked car", "the driver of a parked sedan flung the door open and it hit the Zoox vehicle"),
           lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs]), (["door"], [])),
+    # Session 17: more nouns and noun phrases for a party, each one party of its kind.
+    Probe("a party's category, told by more nouns and noun phrases (one party each)",
+          "A Waymo AV was stopped at a red light on Mission Street. {W} traveling behind the Waymo AV struck its rear "
+          "bumper.",
+          ("a box-truck", "a pick-up", "a pick up truck", "a U-Haul", "a U-Haul truck", "a tricycle", "a pedicab",
+           "a person in a wheelchair", "a man in a wheelchair", "a person on a mobility scooter", "a Ford Transit van",
+           "a white Honda Odyssey minivan", "a Toyota Grand Highlander", "a Chevrolet Express van", "a train",
+           "a tram", "a cable car", "a minibus", "a motorcoach", "a person on a hoverboard", "a Segway rider",
+           "a person riding a motorbike", "a woman riding a tricycle", "a man on a dirt bike"),
+          lambda sk: [p.category for p in sk.npcs],
+          lambda w: [next(c for c, words in (("van", ("Transit", "Odyssey", "Express")),
+                                            ("truck", ("box", "Haul")),
+                                            ("pedestrian", ("wheelchair", "mobility")),
+                                            ("bicycle", ("tricycle", "pedicab")),
+                                            ("bus", ("train", "tram", "cable", "minibus", "motorcoach")),
+                                            ("scooter", ("hoverboard", "Segway")),
+                                            ("motorcycle", ("motorbike", "dirt bike")),
+                                            ("car", ("pick", "Highlander")))
+                          if any(x in w for x in words))]),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

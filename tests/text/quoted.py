@@ -182,6 +182,24 @@ QUOTED: dict[str, tuple[str, str]] = {
         'yielding to approaching traffic when a passenger vehicle made contact with the Waymo AV’s rear bumper '
         'at approximately 6 MPH. The Waymo AV sustained minor damage to its rear bumper, and the passenger '
         'vehicle sustained minor damage to its front bumper. No injuries were reported at the scene.'),
+    'csvr-waymo-20201229-s69': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "69, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was traveling northbound on 3rd Street in San Francisco in '
+        'manual mode when it was rear-ended. The Waymo AV was traveling in autonomous mode at approximately '
+        '30 MPH in the leftmost lane as it approached the intersection at 24th Street. In this location '
+        'there are traffic pylons on the left edge of the leftmost lane that separate this lane from the '
+        'municipal tram line that operates in the median of 3rd Street. As the Waymo AV approached the '
+        'intersection, a San Francisco MUNI city bus traveling at approximately 40 MPH in the right adjacent '
+        'lane began to overtake the Waymo AV from the right, while moving toward the Waymo’s lane of travel. '
+        'Due to the encroaching city bus and the pylons on the left edge of the Waymo AV’s lane, the Waymo '
+        'AV began to brake. The Waymo AV test driver disengaged autonomous mode and took control of the '
+        'Waymo AV. Approximately 1 second later, the passenger vehicle behind the Waymo AV made contact with '
+        'the Waymo AV’s rear bumper at approximately 27 MPH. The Waymo AV was traveling approximately 4 MPH. '
+        'The Waymo AV sustained significant damage to its rear bumper, and the passenger vehicle sustained '
+        'significant damage to its front bumper. The driver of the passenger vehicle and the Waymo AV test '
+        'driver were transported to receive medical attention. The Waymo AV co-driver reported minor '
+        'injuries but did not receive medical attention. Amended Sections 3 and 4.'),
     'csvr-waymo-20210709-s89': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "89, column 'Accident Detail Description'), transcribed",

@@ -59,3 +59,22 @@ def test_the_operator_s_motor_vehicle_is_the_av() -> None:
     # the report is incomplete (gold: no party, missing npcs).
     sk = _sketch("nhtsa-sgo-ads-988-3684-v1")
     assert sk.npcs == () and "npcs" in sk.missing
+
+
+def test_a_line_track_or_station_named_by_a_vehicle_noun_is_no_party() -> None:
+    # "traffic pylons on the left edge of the leftmost lane that separate this lane from the municipal tram line that
+    # operates in the median": a tram line is a place, not a tram; the parties are the city bus and the passenger
+    # vehicle behind (gold).
+    assert sorted(p.category for p in _sketch("csvr-waymo-20201229-s69").npcs) == ["bus", "car"]
+
+
+def test_a_model_named_between_make_and_noun_and_a_rider_s_wheelchair_are_one_party() -> None:
+    # "A passenger car approached the Waymo AV from behind" (nhtsa-sgo-ads-30270-9347-v1), told with a make, its
+    # model and the noun ("a Ford Transit van"), or as a person in a wheelchair: one party of the noun's kind.
+    text = _TEXTS["nhtsa-sgo-ads-30270-9347-v1"][1]
+    assert "a passenger car approached" in text and "the passenger car" in text
+    for name, kind in (("Ford Transit van", "van"), ("white Honda Odyssey minivan", "van"),
+                       ("person in a wheelchair", "pedestrian")):
+        sk = extract(text.replace("a passenger car", f"a {name}").replace("the passenger car", f"the {name}"),
+                     "rewritten")
+        assert [p.category for p in sk.npcs] == [kind], name

@@ -110,6 +110,12 @@ PARTY_HEADS: dict[str, str] = {
     "ambulance": "truck", "street sweeper": "truck", "sweeper": "truck", "rv": "truck", "motorhome": "truck",
     "motor home": "truck", "camper": "truck", "forklift": "truck", "bulldozer": "truck", "excavator": "truck",
     "backhoe": "truck", "tractor": "truck", "unicyclist": "scooter", "unicycle": "scooter", "wheelchair": "pedestrian",
+    # (more of the same kinds: "a box-truck", "a pick-up", "a U-Haul", "a tricycle", "a pedicab", "a hoverboard", "a
+    # Segway", a tram or train as the light rail is read, a cable car as a streetcar, not a car)
+    "box-truck": "truck", "pick-up": "car", "u-haul": "truck", "tricycle": "bicycle", "trike": "bicycle",
+    "pedicab": "bicycle", "hoverboard": "scooter", "segway": "scooter", "onewheel": "scooter",
+    "mobility scooter": "pedestrian", "tram": "bus", "train": "bus", "cable car": "bus", "minibus": "bus",
+    "motorcoach": "bus", "motor coach": "bus",
     # the AV industry's word for another road user ("the agent behind did not come to a stop and made contact")
     "agent": "car",
     # the NHTSA SGO form's role names for the other party, which narratives copy: "the Crash Partner (CP)", "the

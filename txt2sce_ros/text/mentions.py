@@ -65,7 +65,9 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
     # "when" the rules read a clause's subject and its time by
     (("at which",), False, compile_gated(r"\bat\s+which\s+(?:time|point)\b", re.I), lambda m: "when"),
     # "a pick-up truck ... the pickup truck": one noun, spelled one way (the name a party is followed by)
-    (("pick-up",), False, compile_gated(r"\b(pick)-(up)(?=\s+trucks?\b)", re.I), lambda m: m.group(1) + m.group(2)),
+    # ("a pick up truck", spaced: the same noun)
+    (("pick-up", "pick up"), False, compile_gated(r"\b(pick)[- ](up)(?=\s+trucks?\b)", re.I),
+     lambda m: m.group(1) + m.group(2)),
     # "turned to the right", "in back of", "nearing the intersection", "came up from the rear", "immediately
     # behind": the words the rules read
     (("to the left", "to the right", "in back of", "nearing", " up from", "immediately behind"), False,
@@ -226,6 +228,8 @@ _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 # ("the bus and taxi lane", "a bus/bike lane": a lane two kinds of traffic share is a lane too)
 _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b|lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
+                             # ("the municipal tram line", "the train tracks", "a bus station")
+                             r"lines?|tracks?|stations?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
                              r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
@@ -588,8 +592,10 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
         # Join "Toyota Corolla", "Mercedes SUV", "Ford pickup truck": keep one mention, the last head wins.
         gap = s[out[-1].end:m.start()] if out else ""
         # "Toyota Corolla", "Mercedes SUV", and a make with a model code between: "Lexus RX 350 vehicle".
+        # ... and a model named in capitalised words: "a Ford Transit van", "a Honda Odyssey minivan".
         if out and out[-1].kind in ("party",) and kind == "party" and (gap.strip() == "" or (
-                out[-1].head in MAKES and fre.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap))):
+                out[-1].head in MAKES and (fre.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap)
+                                           or fre.fullmatch(r"\s+(?:[A-Z][a-z][\w-]*\s+){1,2}", gap)))):
             prev = out.pop()
             if prev.category == "van" and cat == "car":
                 cat = "van"
@@ -632,7 +638,9 @@ _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|besid
                              r"following|traveling|that|which|in\s+the)", re.I)
 
 
-_RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped")
+_RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped", "motorbike",
+          "motor scooter", "motorscooter", "dirt bike", "tricycle", "trike", "unicycle", "hoverboard", "segway",
+          "onewheel", "wheelchair", "mobility scooter")
 
 
 #: A party's number in the report's own numbering, right after its noun: "Cyclist 3", "Vehicle #2" (not "2 mph").
@@ -734,17 +742,14 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 prev = m
                 continue
         # "an individual riding a motorized scooter": the rider and the ride are one party of the ride's category.
+        # ("a person in a wheelchair", "a man on a mobility scooter": one pedestrian)
         if (prev is not None and prev.sent == m.sent and prev.kind == "party" and prev.category == "pedestrian"
-                and m.kind in ("party", "obstacle") and m.category in ("bicycle", "scooter", "motorcycle", "other")
-                and prev.entity >= 0 and m.head in ("scooter", "bicycle", "bike", "motorcycle", "skateboard",
-                                                    "e-scooter", "e-bike", "moped")):
-            gap = ""
+                and m.kind in ("party", "obstacle") and prev.entity >= 0 and m.head in _RIDES):
             e = ents[prev.entity]
             m.entity = e.idx
             e.heads.add(m.head)
             e.category = {"skateboard": "scooter"}.get(m.head, PARTY_HEADS.get(m.head, "scooter"))
             e.mentions.append(m)
-            del gap
             prev = m
             continue
         target: Entity | None = None
