@@ -1524,6 +1524,12 @@ PROBES: tuple[Probe, ...] = (
                                             ("motorcycle", ("motorbike", "dirt bike")),
                                             ("car", ("pick", "Highlander")))
                           if any(x in w for x in words))]),
+    Probe("a pick-up zone or a passenger pick-up is no pickup truck",
+          "A Zoox vehicle was stopped {w} when a sedan traveling behind it struck its rear bumper.",
+          ("in a pick-up and drop-off zone", "in a pickup and drop-off zone", "at a drop-off/pick-up spot",
+           "for a passenger drop-off and pick-up", "in a pick-up lane", "in a pick-up area", "for a passenger pick-up",
+           "at a pickup location"),
+          lambda sk: [p.category for p in sk.npcs], ["car"]),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

@@ -234,7 +234,10 @@ _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b
                              r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
                               r"\bfor\s+(?:a|the|its|an\s+\w+)\s+pick-?up\s*(?:[.,;]|$|\b(?:and|when|while|at|on|in|facing)\b)|"
-                              r"\bpick-?up\s+(?:location|zone|spot|point)\b", re.I)
+                              r"\bpick-?up\s+(?:location|zone|spot|point|area|lane)\b|"
+                              # "a pick-up and drop-off zone", "passenger drop-off/pick-up"
+                              r"\bpick-?ups?\s*(?:and|or|/|&)\s*drop-?offs?\b|\bdrop-?offs?\s*(?:and|or|/|&)\s*pick-?ups?\b",
+                              re.I)
 _CHAIN_OF = compile_gated(r"^\s*(?:reactions?|collisions?|crash(?:es)?|of\s+events)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
