@@ -933,6 +933,33 @@ PROBES: tuple[Probe, ...] = (
             ("The Cruise AV was driving eastbound on Pine Street when a pedestrian walking northbound across Pine "
              "Street mid-block stepped into its path and was struck.", ("R5", "right")),
     )),
+    Probe("a party on a road crossing the AV's, told without its name, striking the AV's left side (R1)",
+          "The Zoox vehicle was proceeding northbound through the intersection of Main Street and 5th Street on a green light. A sedan {w} ran the red light and struck the Zoox vehicle's driver side.",
+          ("on the cross street", "on the crossing street", "on the side street", "on the intersecting street",
+           "on the perpendicular street", "on the intersecting roadway", "on the cross road", "from the cross street",
+           "traveling on the cross street", "on the intersecting road", "on the perpendicular roadway",
+           "on the adjoining street", "on a side street", "out of the cross-street", "in cross traffic",
+           "traveling perpendicular to the Zoox vehicle"),
+          _position, [("R1", None)]),
+    Probe("a party on a road crossing the AV's, told without its name, striking the AV's right side (R3)",
+          "The Zoox vehicle was proceeding northbound through the intersection of Main Street and 5th Street on a green light. A sedan {w} ran the red light and struck the Zoox vehicle's passenger side.",
+          ("on the cross street", "on the side street", "on the intersecting roadway", "on the cross road",
+           "from a side road", "on the perpendicular avenue"),
+          _position, [("R3", None)]),
+    Probe("a party entering the junction from a side of the AV, told as a direction",
+          "The Zoox vehicle was proceeding northbound through the intersection of Main Street and 5th Street on a green light. A sedan {w} entered the intersection against the red light and struck the Zoox vehicle.",
+          ("from the left", "from its left", "from the Zoox vehicle's left", "from the left side", "approaching from "
+           "the left", "coming from the left", "from left to right", "traveling from left to right"),
+          _position, [("R1", None)]),
+    Probe("a party on the opposite approach turning left across the AV, told by its direction",
+          "The Zoox vehicle was proceeding northbound through the intersection of Main Street and 5th Street on a green light. {W} turned left in front of the Zoox vehicle and the two collided.",
+          ("an oncoming sedan", "a sedan approaching from the opposite direction", "a sedan traveling in the "
+           "opposite direction", "a sedan traveling the opposite way", "a sedan coming the other way",
+           "a sedan traveling toward the Zoox vehicle", "a sedan facing the Zoox vehicle", "a sedan from the "
+           "opposite side of the intersection", "a sedan in the opposing left turn lane", "a southbound sedan on Main "
+           "Street", "a sedan traveling southbound on Main Street", "a sedan going south on Main Street",
+           "a sedan on Main Street heading south", "a sedan traveling south"),
+          _position, [("R2", None)]),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

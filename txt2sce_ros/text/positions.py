@@ -105,8 +105,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # right is read in the AV's frame below (R1/R3).
         return "R4", None, True
     # Before headings: the heading it is given may be the one it turned to ("onto westbound California").
-    if cross and (side := side_named(ctx)):
-        return ("R1" if side == "left" else "R3"), None, True  # "a vehicle on Leavenworth, to the right of EGO"
+    if cross and (side := side_named(ctx) or (cside if rel is None else None)):
+        # "a vehicle on Leavenworth, to the right of EGO"; else, with no heading to tell it (below), the side of the
+        # AV it struck ("a sedan on the cross street ran the red light and struck EGO's driver side": it came from
+        # the AV's left)
+        return ("R1" if side == "left" else "R3"), None, True
     if fre.search(r"\bsame\s+direction\b", ctx + " " + pre, re.I):
         oncoming = None
         side_m = fre.search(r"\b(?:to\s+the\s+)?(left|right)\s+of\s+EGO", ctx + " " + full, re.I)
@@ -152,7 +155,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    from_side = fre.search(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?(?:lane|side))",
+    # ("from the left side" is a direction too; "from the left side of the road" a place, "from the left lane" a lane)
+    from_side = fre.search(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?lane|"
+                           r"\s+side\s+of)",
                           ctx, re.I)
     if junction and from_side and e.category != "pedestrian":  # one on foot crosses the AV's own approach
         return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
@@ -375,11 +380,18 @@ def _turn_is_the_interaction(d: Doc, offset: int) -> bool:
     return first is not None and sent >= first
 
 
+# A road that crosses the AV's, told without its name: "on the cross street", "from a side road", "on the
+# intersecting roadway", "out of the cross-street", "traveling perpendicular to EGO", "in cross traffic".
+_CROSS_ROAD = compile_gated(r"\b(?:on|from|along|down|via|out\s+of|off)\s+(?:the|a|an)\s+(?:(?:cross(?:ing)?|side|perpendicular|"
+                            r"intersecting|adjoining|transverse)[\s-]+|cross-?)(?:street|road|roadway|avenue|thoroughfare)s?\b|"
+                            r"\bcross[\s-]street's\b|\bperpendicular\s+to\s+(?:EGO|EGO's|the\s+direction)\b|"
+                            r"\b(?:in|from|with)\s+(?:the\s+)?cross[\s-]traffic\b", re.I)
+
+
 def _on_other_street(d: Doc, ctx: str) -> bool:
     """Is the party put on a street other than the AV's ("a vehicle on Leavenworth Street ...", "on the cross
     street")?"""
-    if fre.search(r"\b(?:on|from)\s+(?:the|a)\s+(?:cross(?:ing)?|side|perpendicular|intersecting)\s+(?:street|road)\b|"
-                  r"\bcross\s+street's\b", ctx, re.I):
+    if _CROSS_ROAD.search(ctx):
         return True
     street, theirs = av_street(d), _party_street(ctx)
     return bool(street and theirs and not same_street(theirs, street) and not same_street(theirs, exit_street(d)))

@@ -28,7 +28,7 @@ ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|
                          r"\bacross\s+the\s+(?:street|road|roadway)\s+from\s+EGO\b|"
                          # "going the other way", "in the other direction", "traveling toward EGO" (a vehicle's run
                          # at it; "moving toward" or "heading toward" is also said of a sideways move or one on foot)
-                         r"\b(?:the\s+)?other\s+(?:way|direction)\b|"
+                         r"\b(?:the\s+)?other\s+(?:way|direction)\b|\bopposite\s+way\b|"
                          r"\b(?:travel(?:l)?(?:ed|ing|s)?|driv(?:ing|es)|drove)\s+(?:directly\s+|straight\s+)?"
                          r"towards?\s+EGO\b(?!'s)", re.I)  # "toward EGO's destination lane" is no run at it
 
