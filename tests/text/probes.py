@@ -2349,6 +2349,33 @@ PROBES: tuple[Probe, ...] = (
           "The Waymo AV was traveling northbound on Mission Street between 16th Street and 17th Street. A sedan {w} "
           "and made contact with the front of the Waymo AV.",
           _OUT_OF_A_DRIVEWAY, _npc_actions, [("moving", "m")]),
+    Probe("the moving AV's light, green or yellow, in more ways (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane and entered the intersection with Flamingo Road {w}. "
+          "A sedan traveling eastbound on Flamingo Road struck the driver side of the Zoox vehicle.",
+          (
+           "on a green light", "on green", "on a green signal", "with a green light", "on a steady green",
+           "on a solid green light", "on a green arrow", "on a protected green arrow", "on a green left-turn arrow",
+           "during the green phase", "while its light was green", "after its light turned green",
+           "with a green traffic light", "on a circular green indication", "on a green indication",
+           "while it had a green light", "with a green signal", "as its signal was green", "on a stale green light",
+           "with the right of way on a green light", "on a green ball", "under a green light", "on the green light",
+           "on a green traffic signal", "on a yellow light", "on yellow", "on an amber light",
+           "as the light turned yellow", "on a yellow signal", "during the yellow phase", "on a solid yellow light",
+           "as the light changed to amber", "on a flashing yellow arrow", "with a yellow light", "on a yellow arrow",
+          ),
+          lambda sk: (sk.road.control, sk.signal_state),
+          lambda w: ("signal", "yellow" if ("yellow" in w or "amber" in w) else "green")),
+    Probe("the standing AV's red, in more ways (waiting for a green is standing at a red) (session 17)",
+          "A Zoox vehicle was stopped {w} on Koval Lane at Flamingo Road when a sedan traveling behind it struck its "
+          "rear bumper.",
+          (
+           "at a red light", "for a red light", "at a red signal", "at the red light", "at a red traffic light",
+           "at a red traffic signal", "at a solid red light", "at a red arrow", "for a red arrow", "at a steady red",
+           "facing a red light", "facing a red signal", "at a red indication", "waiting for the light to turn green",
+           "waiting for a green light", "at a stoplight", "at a stop light", "at a traffic light", "at the signal",
+           "for the signal", "at a red ball", "at a flashing red light",
+          ),
+          lambda sk: (sk.road.control, sk.signal_state), ("signal", "red")),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -22,7 +22,9 @@ _JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
                        + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        # ("a red left-turn arrow": the arrow of a turn lane's light)
-                       r"\b(?:red|green|yellow)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal)\b|"
+                       # (not "solid yellow", "flashing amber": a lane line, a truck's lamps)
+                       r"\b(?:red|green|yellow)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball|indication|"
+                       r"phase)\b|\b(?:steady|circular)\s+(?:red|green|yellow)\b|"
                        # the line a vehicle stops at before a junction: "stop line", "stop bar", California's "limit line"
                        r"\b(?:stop|limit)\s+(?:bar|line)\b|"
                        + _WAY_STOP + r"|\bjunction\b|\bcross[\s-]+traffic\b|\bcross[\s-]?streets?\b|"
@@ -94,7 +96,8 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
 # "was preparing to make a right-on-red": a turn made on red is made at a signal.
 _TURN_ON_RED = r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b"
-_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball)\b|"
+_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball|"
+                     r"indication|phase)\b|"
                      + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
@@ -316,7 +319,11 @@ _RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s
                            r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b|"
                            r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?red\b", re.I)
 # ("a stoplight", "a stop light": a traffic light)
-_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+at\s+(?:a|the)\s+(?:traffic[\s-]+(?:control\s+)?|stop\s?)?(?:light|signal)\b", re.I)
+_AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+(?:traffic[\s-]+(?:control\s+)?|stop\s?)?(?:light|signal)\b",
+                            re.I)
+# Waiting for a green is standing at a red ("waiting for the light to turn green", "waiting for a green light").
+_WAITING_FOR_GREEN = compile_gated(r"\bwait(?:ed|ing|s)?\s+for\s+(?:(?:the|its)\s+(?:traffic\s+)?(?:light|signal)\s+to\s+"
+                                   r"(?:turn|change)(?:\s+to)?\s+green|(?:a|the)\s+green(?:\s+(?:light|signal|arrow))?)\b", re.I)
 _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 
 
@@ -330,7 +337,7 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         return "none"  # (a junction the text says has no control has no signal either)
     if control != "signal":
         return "unknown"
-    if ego_start == "stopped" and TURNED_GREEN.search(t):
+    if ego_start == "stopped" and (TURNED_GREEN.search(t) or _WAITING_FOR_GREEN.search(t)):
         return "red"  # sketch.md: "an AV stopped at a red light that moves off on green has red"
     # The AV standing, stopping or slowing for a red light ("As the Cruise AV was slowing for a red light at the
     # intersection with Polk Street, an Infiniti Q60 ... failed to stop for the red light"): its own light.
@@ -348,9 +355,9 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         # of no told colour: "was stopped at a traffic light"), stood at that red (sketch.md: it is the AV's
         # signal when its actions begin, even if it then moved off on green).
         return "red"
-    for colour in ("green", "yellow", "red"):
-        if fre.search(rf"\b{colour}\b", t, re.I):
-            return colour
+    for colour, words in (("green", "green"), ("yellow", "yellow|amber"), ("red", "red")):
+        if fre.search(rf"\b(?:{words})\b", t, re.I):
+            return colour  # (amber is the yellow's other name)
     return "unknown"
 
 
