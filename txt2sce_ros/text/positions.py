@@ -75,7 +75,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             "same", True
     if fre.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"
-                 r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\bfrom\s+behind\b|\bfrom\s+the\s+rear\b|"
+                 r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\b" + FROM_BEHIND + r"|\bfrom\s+the\s+rear\b|"
                  r"\bto\s+EGO's\s+rear\b|^\s*\S*\s*behind\b|\b(?:following|trailing|behind)\s+(?:vehicle|car)|"
                  r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
                  ctx, re.I) or any(fre.search(r"\b(?:following|trailing)\s*$", p, re.I) for p in pres):
@@ -144,7 +144,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # mid-block: "an SUV traveling eastbound exited a driveway", the AV northbound): it came from the side
         # opposite its heading, at the roadside beside or ahead of the AV (sketch.md: R5 on that side).
         return "R5", ("left" if rel == 90 else "right"), True
-    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)\s+(?:side|curb)", ctx, re.I) or (
+    # ("from the west sidewalk", "from the eastern curb", "from the north side of the street")
+    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|sidewalk|shoulder|edge)", ctx,
+                         re.I) or (
         # at a junction a bare origin does ("traveling on Flamingo Road from the west")
         junction and fre.search(r"\bfrom\s+the\s+(north|south|east|west)\b(?!\s*-?\s*bound)", ctx, re.I))
     if compass and ego_heading is not None:
@@ -156,13 +158,15 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
     # ("from the left side" is a direction too; "from the left side of the road" a place, "from the left lane" a lane)
+    # ("from right to left" across the AV's path: it came from the right)
     from_side = fre.search(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?lane|"
-                           r"\s+side\s+of)",
+                           r"\s+side\s+of)|\bfrom\s+(?=(?:left\s+to\s+right|right\s+to\s+left)\b)(left|right)",
                           ctx, re.I)
-    if junction and from_side and e.category != "pedestrian":  # one on foot crosses the AV's own approach
-        return ("R1" if from_side.group(1).lower() == "left" else "R3"), None, True
-    if not junction and from_side and e.category in ("pedestrian", "bicycle", "scooter"):
-        return "R5", from_side.group(1).lower(), True  # mid-block, in from the curb on that side (sketch.md)
+    came_from = (from_side.group(1) or from_side.group(2)).lower() if from_side else None
+    if junction and came_from and e.category != "pedestrian":  # one on foot crosses the AV's own approach
+        return ("R1" if came_from == "left" else "R3"), None, True
+    if not junction and came_from and e.category in ("pedestrian", "bicycle", "scooter"):
+        return "R5", came_from, True  # mid-block, in from the curb on that side (sketch.md)
     if fore == "rear" and any(a.who == e.idx and a.code == "m" for a in d.acts):
         # Out of a driveway into the AV's lane, striking its rear: it came in behind, on the side it struck.
         return "R6", cside or "same", True
@@ -237,11 +241,17 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         side = (side_from_flank(d, e) if e.idx == d.partner and fore == "front" and not cside else None) or \
             side_named(ctx) or cside
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
-    if fre.search(r"\bbehind\b", ctx, re.I):
+    if fre.search(r"\bbehind\b(?<!from\sbehind)", ctx, re.I) or fre.search(r"\b" + FROM_BEHIND, ctx, re.I):
         return "R6", "same", True
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+# "from behind" the AV, not from behind another thing ("came out from behind a parked truck": where it was hidden;
+# the other thing is named next, so the party's words end there)
+_NOT_ANOTHER = r"(?!\s*(?:$|\||(?:a|an|the|another|some|its|their)\s+(?!EGO\b)))"
+FROM_BEHIND = r"from\s+behind\b" + _NOT_ANOTHER
 
 
 # In the AV's own lane or right before it, said of a party ("in EGO's lane", "directly in front of EGO"); not one

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import PLACE_SIDE, exit_street, side_from_flank
+from .positions import FROM_BEHIND, PLACE_SIDE, exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -87,7 +87,7 @@ _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
                         # following too close: "tailgating EGO", "riding EGO's bumper", "riding the bumper of EGO"
                         r"tail-?gat\w*\s+(?:EGO|it|us)|(?:riding|rode)\s+(?:EGO's|its|our|the)\s+(?:rear\s+)?bumper|"
-                        r"from\s+(?:the\s+)?(?:rear|behind)|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
+                        r"from\s+(?:the\s+)?rear|" + FROM_BEHIND + r"|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
                         r"to\s+EGO's\s+rear|rear\s+of\s+EGO\b(?!'s)(?=[^.]{0,20}\b(?:travel|approach|driv))|"
                         r"rear[- ]?end(?:ed|ing|s)?\s+(?:EGO|it)|rear[- ]?ended\s+by|struck\s+from\s+behind\s+by|(?:came|come|coming|pulled|pulling)\s+up\s+behind|"
                         r"to\s+the\s+rear\s+of\s+EGO|in\s+the\s+rear\s+of\s+EGO|to\s+(?:the\s+)?rear\s+(?:left|right)\s+of\s+EGO|closing\s+(?:in\s+)?on\s+EGO\s+"
@@ -174,7 +174,13 @@ _PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pas
                             re.I)
 _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
                               r"(?:street|road|roadway|block|(?:(?-i:[A-Z0-9])[\w-]*\s+){1,3}(?:street|st|avenue|ave|"
-                              r"boulevard|blvd|road|rd|way|drive|dr|lane|ln))\b", re.I)
+                              r"boulevard|blvd|road|rd|way|drive|dr|lane|ln))\b|"
+                              # a roadside named by its compass side: "from the west sidewalk", "along the eastern curb"
+                              r"\b(?:on|from|along|off|at)\s+the\s+(north|south|east|west)(?:ern)?\s+(?:sidewalk|curb|"
+                              r"shoulder)\b", re.I)
+# The word before a roadside ("the west sidewalk", "the left shoulder", "the far curb"): it names which side, so the
+# right-hand default of a curb, sidewalk or shoulder does not hold.
+_ROADSIDE_SIDE = compile_gated(r"\b(?:(north|south|east|west)(?:ern)?|(left|right)|opposite|far|other)(?:[- ]hand)?\s+$", re.I)
 _RELATIVE_LANE = compile_gated(r"\b(?:EGO|us|it|its|our|adjacent|neighbou?ring)\b", re.I)
 _BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
@@ -318,6 +324,13 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             side = _side(next(g for g in m.groups() if g))
             if any(a0 <= m.start() < b0 for a0, b0 in absolute):
                 continue  # read against the AV's own lane above
+            if side == "right" and m.group(0).lower().startswith(("sidewalk", "curb", "shoulder")) and \
+                    (named := _ROADSIDE_SIDE.search(win[max(0, m.start() - 16):m.start()])):
+                # "the left shoulder" is on the left; "the far curb" across a two-way street; "the west sidewalk"
+                # is read by its compass side below
+                if named.group(1):
+                    continue
+                side = (named.group(2) or "left").lower()
             if side and not _INTO.search(win[max(0, m.start() - 25):m.start()]) and \
                     not _MOVED_TO.search(win[max(0, m.start() - 45):m.start()]):
                 # ("cut back to the right lane": where it went)
@@ -331,7 +344,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             # "a vehicle exiting a garage on the west side of the street": west is the left of a northbound AV
             ego_h = heading(d, -1)
             if ego_h is not None:
-                rel = (CARDINALS[m.group(1).lower()] - ego_h) % 360
+                rel = (CARDINALS[(m.group(1) or m.group(2)).lower()] - ego_h) % 360
                 if rel in (90, 270):
                     cues.append(Cue("lane", "right" if rel == 90 else "left", (base + m.start(), base + m.end())))
         for m in _SAME_LANE.finditer(win):
