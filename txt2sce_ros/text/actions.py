@@ -74,7 +74,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:mov|roll|drift|creep|crept|coast|driv|drove|went|go|travel|travell|proceed|inch|edg)(?:ed|ing|es|e|s)?\s+"
           r"(?:\w+ly\s+)?(?:backwards?|in\s+reverse)\b|"
           r"\bbacking\b"),
-    ("l", r"\bpull(?:ed|ing|s)?\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel[-\s]+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
+    # ("was pulled over at the curb" is where it stood, _STATE_STOP; "was pulling over" the manoeuvre under way)
+    ("l", r"\b(?:pull(?:ing|s)?|(?<!was\s)(?<!were\s)(?<!been\s)(?<!is\s)pulled)\s+over\b|(?<!been\s)(?<!was\s)(?<!were\s)\bparallel[-\s]+park(?:ing|ed)?\b(?!\s+(?:spot|space|position|stall|lane))|"
           # "was parallel parking" is a manoeuvre under way; only "was parallel parked" tells where a car stood
           r"(?:(?<=\bwas\s)|(?<=\bwere\s))parallel[-\s]+parking\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel[-\s]+)?parking\s+"
@@ -455,13 +456,17 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
                         r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
                          r"\b(?:was|were|is|remained|remains|stayed|stays|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"
-                         r"parked|waiting|sitting|idle|at\s+a\s+(?:complete\s+|full\s+)?stop|at\s+a\s+standstill|at\s+rest|standing|"
-                         r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position)\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:in\s+traffic\s+and\s+)?(?:stopped|waiting|"
+                         r"parked|waiting|sitting|idle|at\s+a\s+(?:complete\s+|full\s+|dead\s+)?stop|at\s+a\s+stand\s?still|at\s+rest|standing|"
+                         r"yielding|idling|motionless|not\s+moving|holding\s+(?:its|their|his|her)\s+position|"
+                         # ("was paused", "was broken down", "was stuck in traffic", "was in park", "was pulled over at
+                         # the curb": standing, in other words)
+                         r"paused|immobile|broken\s+down|stuck\s+in\s+(?:traffic|a\s+queue|a\s+line)|in\s+park|"
+                         r"pulled\s+over(?!\s+by\b)|in\s+a\s+(?:queue|line)\s+of\s+(?:stopped|stationary)\s+(?:traffic|vehicles|cars))\b|^\s*(?:stopped|parked|stationary|waiting|idling)\b|(?<=\w\s)idling\s+(?:in|at|on)\b|\bwhile\s+(?:in\s+traffic\s+and\s+)?(?:stopped|waiting|"
                          r"parked)\b|\band\s+(?:was\s+)?(?:waiting|stationary)\b|"
                          # "a pickup truck stalled in the lane ahead", "a taxi parked at the curb ahead": its state
-                         r"\bstalled\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
+                         r"\bstalled\b|\bhad\s+broken\s+down\b|(?<=\w\s)(?<!EGO\s)parked\s+(?:in|at|on|along|by|near|beside|behind|ahead)\b|"
                          # "a sedan waiting at the light ahead", "a sedan queued ahead of it": a noun's state
-                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+(?:\w+ly\s+)?"
+                         r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+(?:\w+ly\s+|still\s+)?"
                          r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
