@@ -1574,6 +1574,16 @@ PROBES: tuple[Probe, ...] = (
            "for a passenger drop-off and pick-up", "in a pick-up lane", "in a pick-up area", "for a passenger pick-up",
            "at a pickup location"),
           lambda sk: [p.category for p in sk.npcs], ["car"]),
+    Probe("a vehicle the contact pushed the AV into is a party of its own",
+          "The Waymo AV was stopped at a red light on [XXX]. An SUV approached from behind and struck the rear of the "
+          "Waymo AV, {w}.",
+          ("pushing it into the passenger car ahead", "pushing the Waymo AV into the passenger vehicle in front of it",
+           "pushing it forward into the passenger car stopped ahead", "and the Waymo AV was pushed into the passenger "
+           "car ahead of it", "causing the Waymo AV to strike the passenger vehicle in front of it", "which pushed the "
+           "Waymo AV forward into a sedan stopped ahead", "propelling it into the rear of a pickup truck stopped ahead",
+           "and the impact pushed the Waymo AV forward into a sedan stopped ahead", "forcing it into the rear of the "
+           "passenger car ahead", "causing it to roll into the passenger vehicle stopped in front of it"),
+          lambda sk: ([p.category for p in sk.npcs], sk.collision.with_), (["car", "car"], "npc1")),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

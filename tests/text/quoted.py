@@ -1249,6 +1249,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
         'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
         'may become available.'),
+    'nhtsa-sgo-ads-30270-9433-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9433, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 6:16 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San '
+        'Francisco, California was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was '
+        'stopped in traffic for a red light on northbound [XXX] when an SUV approached the Waymo AV from '
+        'behind. The front of the SUV made contact with the rear of the Waymo AV. At the time of the impact, '
+        'the Waymo AVs Level 4 ADS was engaged in autonomous mode, and only one of the two passengers was '
+        'wearing a seatbelt. The SUV sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
     'nhtsa-sgo-ads-30270-9436-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9436, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

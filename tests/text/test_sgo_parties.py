@@ -270,3 +270,15 @@ def test_a_contact_told_in_brief_after_a_note_about_the_report_is_the_summary() 
     # telling is the same car (the note about the report is no part of the story).
     told, other = _told_as("nhtsa-sgo-ads-30270-7719-v2", ("was in a collision involving", "was struck by"))
     assert [p.category for p in told.npcs] == [p.category for p in other.npcs] == ["car"]
+
+
+def test_a_vehicle_the_contact_pushed_the_av_into_takes_part() -> None:
+    # "an SUV approached the Waymo AV from behind. The front of the SUV made contact with the rear of the Waymo AV",
+    # told on with the AV pushed into a car ahead: that car is a party of its own (not the SUV, which no studyable
+    # narrative calls "the passenger car"), and the conflict is still the SUV's contact.
+    told, other = _told_as("nhtsa-sgo-ads-30270-9433-v1", (
+        "made contact with the rear of the Waymo AV.",
+        "made contact with the rear of the Waymo AV, pushing the Waymo AV into the passenger car stopped ahead."))
+    assert [p.category for p in told.npcs] == ["car"]
+    assert [p.category for p in other.npcs] == ["car", "car"]
+    assert other.collision == told.collision

@@ -638,7 +638,10 @@ _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"
 ROLE_HEADS = frozenset({"crash partner", "cp", "ov", "tpv", "pov"})
 _BARE = {"vehicle", "car", "automobile"}  # generic heads the narratives also use for the AV
 _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
-                             r"following|traveling|that|which|in\s+the)", re.I)
+                             r"following|traveling|that|which|in\s+the|"
+                             # ("the passenger car stopped ahead": a place, where "the vehicle stopped" tells the AV's stop)
+                             r"(?:stopped|waiting|standing|parked)\s+(?:directly\s+|immediately\s+)?(?:ahead|in\s+front|"
+                             r"behind|next\s+to|beside))", re.I)
 
 
 _RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped", "motorbike",
@@ -669,7 +672,10 @@ def _compatible(e: Entity, m: Mention) -> bool:
         named = set(e.heads) | {w for x in e.mentions for w in x.mods.split()}
         return m.head in named or any(m.head in h.split() for h in e.heads)
     if m.head in _GENERIC and m.head not in _BARE:
-        return e.category in ("car", "van")  # "the passenger vehicle" is not the bus named before
+        # "the passenger vehicle" is not the bus named before, nor a party the text named by its kind only
+        # ("A pickup truck struck the rear of the Waymo AV, pushing it into the passenger car ahead": no studyable
+        # narrative names a party "a pickup truck", "an SUV" or "a sedan" and then "the passenger car/vehicle")
+        return e.category in ("car", "van") and any(h in _GENERIC or h in MAKES or h in VAN_MODELS for h in e.heads)
     if _names_part_of(m.head, e):
         return True  # "the truck" after "a pick-up truck": the last word of its name
     if m.head in _GENERIC or m.mods.startswith("other"):

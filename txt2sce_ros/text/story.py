@@ -308,9 +308,22 @@ def acted_for(d: Doc, e: Entity, *, around_only: bool = False) -> bool:
     return False
 
 
+# The AV driven by the contact into something ahead of it: "pushing EGO into the passenger car ahead", "EGO was
+# pushed forward into a sedan", "causing EGO to strike the vehicle in front of it" (the words up to the thing met).
+_PUSHED_INTO = compile_gated(r"(?:\b(?:push|propel|shov|forc|knock|send|sent|thr[eo]w)\w*\s+(?:EGO\s+|it\s+)?(?:forward\s+|"
+                             r"ahead\s+)?into|\bcaus(?:ed|ing)\s+(?:EGO|it)\s+to\s+(?:\w+\s+)?(?:strike|hit|collide\s+with|"
+                             r"contact|make\s+contact\s+with|rear-end|bump|roll\s+into|move\s+(?:forward\s+)?into))"
+                             r"[^,;.]{0,40}$", re.I)
+
+
 def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
     """A party named after the AV's contact that itself makes contact in the next sentences ("A second passenger
-    car then made contact with the SUV"): a chain collision's party takes part in the event (sketch.md)."""
+    car then made contact with the SUV"), or that the contact drove the AV into ("pushing EGO into the passenger car
+    ahead"): a chain collision's party takes part in the event (sketch.md)."""
+    if e.kind == "party" and d.contact_sent is not None and 0 <= first.sent - d.contact_sent <= 1 and \
+            first.sent not in d.summary and (first.sent > d.contact_sent or first.start > d.contact_pos) and \
+            _PUSHED_INTO.search(d.sents[first.sent], max(0, first.start - 90), first.start):
+        return True
     if e.kind == "party" and d.contact_sent is not None and first.sent == d.contact_sent and \
             first.start > d.contact_pos and first.sent not in d.summary and \
             fre.search(r"\band\s+(?:also\s+)?(?:with|into)\b", d.sents[first.sent][d.contact_pos:first.start], re.I):
