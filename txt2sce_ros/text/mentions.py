@@ -634,6 +634,8 @@ _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operatin
 _AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|had\s+been|has\s+been)?\s*(?:\w+ly\s+)?"
                               r"(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
+#: Names of a vehicle by who drives it, as general as "a vehicle" ("a motorist ... the passenger vehicle").
+_DRIVER_NAMES = frozenset({"motorist", "agent"})
 #: Role names for the other party ("the CP", "the OV"): they name whichever party the report is about, of any kind.
 ROLE_HEADS = frozenset({"crash partner", "cp", "ov", "tpv", "pov"})
 _BARE = {"vehicle", "car", "automobile"}  # generic heads the narratives also use for the AV
@@ -675,7 +677,8 @@ def _compatible(e: Entity, m: Mention) -> bool:
         # "the passenger vehicle" is not the bus named before, nor a party the text named by its kind only
         # ("A pickup truck struck the rear of the Waymo AV, pushing it into the passenger car ahead": no studyable
         # narrative names a party "a pickup truck", "an SUV" or "a sedan" and then "the passenger car/vehicle")
-        return e.category in ("car", "van") and any(h in _GENERIC or h in MAKES or h in VAN_MODELS for h in e.heads)
+        return e.category in ("car", "van") and any(h in _GENERIC or h in _DRIVER_NAMES or h in MAKES or
+                                                    h in VAN_MODELS for h in e.heads)
     if _names_part_of(m.head, e):
         return True  # "the truck" after "a pick-up truck": the last word of its name
     if m.head in _GENERIC or m.mods.startswith("other"):
