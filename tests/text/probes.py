@@ -977,6 +977,14 @@ PROBES: tuple[Probe, ...] = (
           ("came out from behind a parked truck", "stepped out from behind a bus", "emerged from behind a parked "
            "van", "ran out from behind a double-parked car", "appeared from behind the stopped bus"),
           lambda sk: next((p.position for p in sk.npcs if p.id == sk.collision.with_), None), "R5"),
+    _scenes("lanes named by their use (fast, inside, HOV, carpool: the leftmost; slow, outside, curb: the rightmost)",
+            _position, tuple(
+                (f"The Cruise AV was traveling northbound on Geary Boulevard in the {own} lane. A sedan traveling "
+                 f"northbound in the {theirs} lane drifted over and struck the Cruise AV.", [("R5", side)])
+                for own, theirs, side in (("slow", "fast", "left"), ("curb", "inside", "left"), ("outside", "HOV", "left"),
+                                          ("right", "carpool", "left"), ("fast", "slow", "right"),
+                                          ("inside", "curb", "right"), ("left", "outside", "right"),
+                                          ("HOV", "right", "right")))),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

@@ -126,7 +126,10 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 # Lanes named by their place on the road ("the right lane", "the middle lane", "the leftmost lane"): relative to the
 # AV only once the AV's own lane is known. Scale: 0 leftmost ... 9 rightmost.
 # "the number 1 lane": California's numbering, 1 the leftmost (fast) lane.
-_ABS_LANE = compile_gated(r"\b(?:in|within|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre)"
+# (the lanes named by their use: the fast, inside, HOV or carpool lane is the leftmost; the slow, outside or curb
+# lane the rightmost)
+_ABS_LANE = compile_gated(r"\b(?:in|within|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre|"
+                          r"fast|slow|inside|outside|curb|hov|carpool)"
                           r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
                           r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b|"
@@ -250,6 +253,10 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
     return out
 
 
+_LANE_BY_USE = {"fast": "left", "inside": "left", "hov": "left", "carpool": "left", "slow": "right", "outside": "right",
+                "curb": "right"}
+
+
 def _lane_rank(m: re.Match[str]) -> float:
     mod, side, from_side, number, numeral, side_of = (g.lower() if g else "" for g in m.groups())
     number, side = number or numeral, side or side_of
@@ -257,6 +264,7 @@ def _lane_rank(m: re.Match[str]) -> float:
         return float(_NUMBERS.get(number) or int(number)) - 1.0
     if side in ("middle", "center", "centre"):
         return 4.5
+    side = _LANE_BY_USE.get(side, side)
     if from_side:  # "the second lane from the left"
         k = {"second": 1, "third": 2}.get(mod, 0)
         return k if from_side == "left" else 9 - k
