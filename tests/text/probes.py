@@ -2443,6 +2443,13 @@ PROBES: tuple[Probe, ...] = (
            "stopped and waiting", "at a dead stop", "at a stand still", "immobile", "stalled",
           ),
           _ego, ("stopped", "")),
+    Probe("a party behind the standing AV moving off, told under way and in the SGO form's words (session 17)",
+          "The Waymo AV was stopped at a red light on Mission Street. A sedan behind the Waymo AV was {w} when it "
+          "struck the rear bumper of the Waymo AV.",
+          ("starting in traffic", "starting from a stop", "accelerating from a stop", "beginning to move",
+           "just starting to move", "pulling forward", "moving forward", "creeping forward", "inching forward",
+           "rolling forward", "starting to proceed", "beginning to roll forward"),
+          _npc_actions, [("stopped", "i")]),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

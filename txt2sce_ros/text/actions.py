@@ -128,7 +128,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # "began to move into EGO's lane" begins the move it names, not a start from a standstill.
     # ("began to pass the truck on the left": a move begun past what it had stopped for; "began to proceed around the
     # truck" is the going around, read as that move, F)
-    ("i", r"\b(?:began|begin|begins|begun|started|starts|start)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
+    ("i", r"\b(?:began|begin|begins|begun|beginning|started|starts|start|starting)\s+to\s+(?:slowly\s+)?(?:proceed|move|roll|drive|go|creep|"
           r"edge|accelerate|follow|pass|nudge|inch|pull\s+(?:forward|out|away))"
           r"(?!\s+(?:\w+ly\s+)?(?:into|onto|over|toward|towards|left|right|around|"
           r"across|to\s+the)\b)|\b(?:began|started)\s+(?:moving|proceeding|rolling|"
@@ -142,6 +142,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:(?:mov|pull|nudg|creep|edg|inch|roll|eas)(?:ed|ing|es|e|s)?|crept)\s+(?:\w+ly\s+)?ahead\b(?!\s+of\b)|"
           r"\b(?:mov|inch|creep|edg)(?:ed|ing|es|e|s)?\s+up\b(?!\s+(?:behind|beside|alongside|next|to|on)\b)|"
           r"\bstart(?:ed|ing|s)?\s+(?:up\s+)?(?:again\s+)?from\s+(?:a|the|its)\s+(?:\w+\s+)?(?:stop|standstill)\b|"
+          # the SGO form's "Starting in Traffic", told in a narrative
+          r"\bstart(?:ed|ing|s)?\s+(?:up\s+)?in\s+traffic\b|"
           r"\btook\s+off\b(?!\s+(?:from\s+the\s+scene|the\b|its\b|his\b|her\b|a\b))|"
           r"\bproceed(?:ed|ing|s)?\s+(?:\w+ly\s+)?forward\b|\bproceed(?:ed)?\s+from\s+"
           r"(?:a|the)\s+stop|\bbegins\s+to\s+move|\bbegan\s+to\s+proceed(?!\s+(?:\w+ly\s+)?around\b)|\bproceeded\s+again|"
