@@ -1592,6 +1592,14 @@ PROBES: tuple[Probe, ...] = (
            "and the impact pushed the Waymo AV forward into a sedan stopped ahead", "forcing it into the rear of the "
            "passenger car ahead", "causing it to roll into the passenger vehicle stopped in front of it"),
           lambda sk: ([p.category for p in sk.npcs], sk.collision.with_), (["car", "car"], "npc1")),
+    Probe("a contact told as an event ('a minor contact with ... occurred'), by the AV's operator named in short",
+          "The May shuttle was traveling north on [XXX] in manual mode. {W}",
+          ("The AVO steered to the right and a minor contact with a parked car occurred.",
+           "The AVO steered to the right and a light contact with a parked car occurs.",
+           "The VO steered to the right and a slight contact with a parked car occurred.",
+           "The operator steered to the right and a contact with a parked car occurred.",
+           "The TSO steered to the right, and a brief contact with a parked car occurred."),
+          lambda sk: ([o.category for o in sk.obstacles], sk.collision.with_), (["parked_vehicle"], "obs1")),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

@@ -1409,6 +1409,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'provided in video format, a police report and an operator summary. The GPX coordinates above are '
         'approximate at the time of the e-stop. The shuttle had experienced an unknown e-stop at 15:59 CT on '
         '[XXX] (no passengers).'),
+    'nhtsa-sgo-ads-30413-10763-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-10763, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Manual control was initiated by a May autonomous shuttle operator for a right turn onto [XXX] in '
+        'Atlanta, GA. Autonomous mode was then engaged. The autonomous system executed a stop due to a '
+        'narrow passage obstructed by parked vehicles on both sides of the roadway and an approaching '
+        'vehicle. Following the departure of the first vehicle and the next oncoming vehicle 80m away, the '
+        'Autonomous Vehicle Operator (AVO) disengages and proceeds in manual. The AVO overcorrects to the '
+        "right slightly and a minor contact with the parked car's mirror occurs. Our team looked at the "
+        'incident and determined that this event was caused by human error - no autonomy software defects '
+        'led to this incident.'),
     'nhtsa-sgo-ads-30413-10764-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-10764, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -282,3 +282,13 @@ def test_a_vehicle_the_contact_pushed_the_av_into_takes_part() -> None:
     assert [p.category for p in told.npcs] == ["car"]
     assert [p.category for p in other.npcs] == ["car", "car"]
     assert other.collision == told.collision
+
+
+def test_a_contact_told_as_an_event_by_the_av_s_operator_named_by_abbreviation() -> None:
+    # "the Autonomous Vehicle Operator (AVO) disengages and proceeds in manual. The AVO overcorrects to the right
+    # slightly and a minor contact with the parked car's mirror occurs": the AVO drives the AV, and "a minor contact
+    # with" is the contact; the parked car is the obstacle struck (gold), the oncoming vehicle a party.
+    sk = extract(_SGO["nhtsa-sgo-ads-30413-10763-v1"][1], "nhtsa-sgo-ads-30413-10763-v1")
+    assert [o.category for o in sk.obstacles] == ["parked_vehicle"]
+    assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")
+    assert [p.category for p in sk.npcs] == ["car"]

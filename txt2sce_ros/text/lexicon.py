@@ -78,7 +78,9 @@ EGO_DRIVER = compile_gated(
     r"\b(?:the\s+|our\s+|an?\s+)?(?:(?:av|ego)\s+)?(?:(?:test|safety|vehicle|av|shuttle|remote)\s+)?"
     r"(?:driver|operator|attendant|specialist)s?\b(?!'s\s+(?:side|door|seat|seating|window|mirror))"
     r"(?!\s*-?\s*(?:side|door|seat|seating|window|mirror|'s\s+side))(?:\s+of\s+EGO)?|"
-    r"\bEGO(?:'s)?\s+(?:test\s+|safety\s+)?(?:driver|operator)s?\b(?!\s*-?\s*(?:'s\s+)?(?:side|door|seat))", re.I)
+    r"\bEGO(?:'s)?\s+(?:test\s+|safety\s+)?(?:driver|operator)s?\b(?!\s*-?\s*(?:'s\s+)?(?:side|door|seat))|"
+    # the abbreviations the operators define for them: "the Autonomous Vehicle Operator (AVO)", "the AVO", "the VO"
+    r"\b(?:the\s+)?(?-i:AVO|VO|TSO)s?\b", re.I)
 
 #: Head nouns of other parties -> category (sketch.md's mapping: SUVs/pickups/taxis are cars, ...).
 PARTY_HEADS: dict[str, str] = {
@@ -205,7 +207,9 @@ CONTACT = compile_gated(
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
-    r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs))\b", re.I)
+    r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs)|"
+    # a contact told as an event ("a minor contact with the parked car's mirror occurs")
+    r"\ban?\s+(?:(?:minor|light|slight|brief|low-speed|small)\s+)?contact\s+with)\b", re.I)
 NEGATION = compile_gated(r"\b(?:not|neither|nor|never|without|no\s+contact|avoid(?:ed|ing)?)\b", re.I)
 
 CARDINALS = {"north": 0, "northeast": 45, "east": 90, "southeast": 135, "south": 180, "southwest": 225,
