@@ -985,6 +985,18 @@ PROBES: tuple[Probe, ...] = (
                                           ("right", "carpool", "left"), ("fast", "slow", "right"),
                                           ("inside", "curb", "right"), ("left", "outside", "right"),
                                           ("HOV", "right", "right")))),
+    Probe("an oncoming party in the lane beside the AV's, told by the other direction's lane, side of the road or "
+          "meeting head-on", "The Zoox vehicle was traveling northbound on Main Street. {W} drifted across the double yellow line and sideswiped the Zoox vehicle's driver side.",
+          ("a sedan traveling in the opposite lane", "a sedan in the opposite travel lane", "a sedan traveling on the "
+           "other side of the road", "a sedan on the opposite side of the street", "a sedan approaching head-on",
+           "a sedan coming head on", "a sedan headed the opposite direction", "a sedan traveling the other way"),
+          _position, [("R7", "left")]),
+    Probe("a party coming the wrong way in the AV's lane",
+          "The Zoox vehicle was traveling northbound on Main Street. {W} struck the Zoox vehicle head-on.",
+          ("a wrong-way sedan", "a sedan driving the wrong way", "a sedan going the wrong direction", "a sedan "
+           "traveling against traffic", "a sedan driving against the flow of traffic", "a sedan traveling the "
+           "wrong-way", "a sedan traveling southbound in the Zoox vehicle's lane"),
+          _position, [("R7", "same")]),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

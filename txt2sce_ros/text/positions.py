@@ -131,7 +131,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             return "R2", None, True
         # In the AV's own lane: said ("the wrong way"), or passing the AV on its right (the oncoming lane is on its
         # left: "a passenger car traveling southbound in the parking lot proceeded to pass the Waymo AV on the right").
-        wrong_way = fre.search(r"\bwrong\s+(?:way|side)\b", ctx, re.I) or \
+        wrong_way = fre.search(r"\bwrong[\s-]+(?:way|side|direction)\b|\bagainst\s+(?:the\s+)?(?:flow\s+of\s+)?traffic\b",
+                               ctx, re.I) or \
             (passed_oncoming and (passing.group(1) or "").lower() == "right")
         return "R7", "same" if wrong_way else "left", True
     if rel == 0 and not fre.search(r"\bbehind\b", ctx, re.I):

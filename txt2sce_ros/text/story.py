@@ -21,7 +21,11 @@ from .scene import PRIOR_TURN
 
 # Said of a party travelling the other way: "oncoming", "opposite direction", and at a junction the opposite
 # approach ("from the opposite side of the intersection", "facing EGO").
-ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|\bopposing\b|\bwrong\s+(?:way|side)\b|"
+ONCOMING = compile_gated(r"\bon-?coming\b|\bopposite\s+(?:direction|approach)\b|\bopposing\b|\bwrong[\s-]+(?:way|side|direction)\b|"
+                         # the lanes or side of the road of the other direction ("in the opposite lane", "on the other
+                         # side of the road": the words after it tell a path), going against traffic, meeting head-on
+                         r"\bopposite(?=\s+(?:travel\s+|traffic\s+)?lanes?\b)|\b(?:opposite|other)\s+side(?=\s+of\s+the\s+"
+                         r"(?:road|street|roadway)\b)|\bagainst\s+(?:the\s+)?(?:flow\s+of\s+)?traffic\b|\bhead[\s-]+on\b|"
                          r"\bopposite\s+(?:side|corner|end)\s+of\s+the\s+intersection\b|"
                          r"\bfacing\s+EGO\b|\bacross\s+the\s+intersection\s+from\s+EGO\b|"
                          # the far side of the AV's own road ("reversed out of a driveway across the street from EGO")
