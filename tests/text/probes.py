@@ -2470,6 +2470,13 @@ PROBES: tuple[Probe, ...] = (
            "just starting to move", "pulling forward", "moving forward", "creeping forward", "inching forward",
            "rolling forward", "starting to proceed", "beginning to roll forward"),
           _npc_actions, [("stopped", "i")]),
+    Probe("the AV moving off after a stop, told in the present as in the past (session 17)",
+          "At about 11:35 am our vehicle is traveling northbound on First Street. Our vehicle comes to a stop for a "
+          "pedestrian and then {w}, and a sedan traveling in the left lane changes lanes and strikes our front bumper.",
+          ("proceeds", "enters the intersection", "moves forward", "continues", "accelerates", "pulls forward",
+           "drives on", "proceeded", "entered the intersection", "moved forward", "continued", "accelerated",
+           "drove on"),
+          _ego, ("moving", "ahi")),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -16,7 +16,9 @@ _FORWARD = set("abdefgjm")
 #: Words that give a standing party's direction, not a move ("headed toward Charleston Road").
 _DIRECTION_ONLY = compile_gated(r"(?:headed|heading|facing)\b", re.I)
 #: The AV's own verbs of moving off, as opposed to the participles that only describe it ("approaching").
-_MOVES_OFF = compile_gated(r"(?:entered|proceeded|pulled|continued|drove|went|moved|accelerated|passed)\b", re.I)
+#: (told in the present as in the past: "the AVO disengages and proceeds in manual")
+_MOVES_OFF = compile_gated(r"(?:enter(?:ed|s)|proceed(?:ed|s)|pull(?:ed|s)|continu(?:ed|es)|drove|drives|went|goes|mov(?:ed|es)|"
+                           r"accelerat(?:ed|es)|pass(?:ed|es))\b", re.I)
 
 
 def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> tuple[str, str]:
