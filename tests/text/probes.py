@@ -1612,6 +1612,14 @@ PROBES: tuple[Probe, ...] = (
            "The operator steered to the right and a contact with a parked car occurred.",
            "The TSO steered to the right, and a brief contact with a parked car occurred."),
           lambda sk: ([o.category for o in sk.obstacles], sk.collision.with_), (["parked_vehicle"], "obs1")),
+    Probe("a row of cones, pylons or barricades the AV met or acted for is one obstacle",
+          "A Zoox vehicle was traveling northbound on Koval Lane when {w}.",
+          ("it made contact with construction cones in its lane", "it struck traffic cones placed in the roadway",
+           "it swerved to avoid the pylons in its lane", "it ran over several delineators", "it came to a stop for "
+           "barricades blocking its lane", "it slowed for a taxi and the cones ahead of it, then struck the cones",
+           "it drove over traffic barrels", "it struck a row of bollards"),
+          lambda sk: [o.category for o in sk.obstacles],
+          lambda w: ["barrier" if "barricade" in w else "pole" if "bollard" in w else "cone"]),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

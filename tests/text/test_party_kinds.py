@@ -78,3 +78,11 @@ def test_a_model_named_between_make_and_noun_and_a_rider_s_wheelchair_are_one_pa
         sk = extract(text.replace("a passenger car", f"a {name}").replace("the passenger car", f"the {name}"),
                      "rewritten")
         assert [p.category for p in sk.npcs] == [kind], name
+
+
+def test_a_row_of_pylons_the_av_braked_for_is_one_obstacle() -> None:
+    # "there are traffic pylons on the left edge of the leftmost lane ... Due to the encroaching city bus and the
+    # pylons on the left edge of the Waymo AV's lane, the Waymo AV began to brake": the AV acted for the row (the
+    # second of the two things "due to" names); one cone obstacle, on its left (gold).
+    sk = _sketch("csvr-waymo-20201229-s69")
+    assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [("cone", "R5", "left")]

@@ -177,6 +177,12 @@ OBSTACLE_HEADS: dict[str, str] = {
     # a chain hung across an entrance or a lot's lane closes it as a gate does ("made contact with a hanging chain
     # separating a section of the parking lot"); not "a chain reaction" (mentions.find_mentions)
     "chain": "barrier",
+    # Devices set out in rows, named in the plural ("traffic pylons on the left edge of the leftmost lane ... Due to
+    # the encroaching city bus and the pylons ..., the Waymo AV began to brake"): the row is one obstacle when the AV
+    # met it or acted for it (the study gold of csvr-waymo-20201229-s69 counts one cone); other plural objects stay
+    # unread, as "parked cars" and other groups do.
+    "cones": "cone", "pylons": "cone", "delineators": "cone", "barrels": "cone", "channelizers": "cone",
+    "barricades": "barrier", "bollards": "pole", "k-rails": "barrier",
 }
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
 PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)

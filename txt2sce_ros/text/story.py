@@ -69,7 +69,11 @@ _OF_OWNER = compile_gated(r"^\s*(?:\w+\s+){0,3}?of\s+(?:a|an|the|its|their)\s*$"
 
 _AROUND = compile_gated(r"\b(?:around|for|past|avoid(?:ing)?|behind|due\s+to|of)\s+"
                      r"(?:the\s+(?:left|right)\s+side\s+of\s+)?"
-                     r"(?:a|an|the|another)?\s*(?:[\w-]+\s+){0,3}$", re.I)
+                     r"(?:a|an|the|another)?\s*(?:[\w-]+\s+){0,3}$|"
+                     # the second of two things acted for ("Due to the encroaching city bus and the pylons on the left
+                     # edge of EGO's lane, EGO began to brake")
+                     r"\b(?:around|for|avoid(?:ing)?|due\s+to)\s+(?:a|an|the)\s+(?:[\w-]+\s+){1,3}and\s+(?:a|an|the)?\s*$",
+                     re.I)
 
 
 _AROUND_ONLY = compile_gated(r"\b(?:around|past)\s+(?:the\s+(?:left|right)\s+side\s+of\s+)?(?:a|an|the|another)?\s*"
