@@ -120,6 +120,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'mode with a safety operator in the driver’s seat and was moving at a low speed. The Pony.ai vehicle did '
         'not sustain any damage. There were no injuries or property damage, the police were not called to the '
         'scene, and a Pony.ai employee drove the Pony.ai vehicle back to Pony.ai’s Irvine facility.'),
+    'csvr-waymo-20190206-s2': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 2, "
+        "column 'Accident Detail Description'), transcribed",
+        "Per the DMV's request of 02/21/2019, Waymo is resubmitting this OL316 so the DMV's digital version is "
+        "compliant with accessibility requirements under AB 434. Waymo's original report was submitted on "
+        '02/14/2019. A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode in the slip-lane from '
+        'northbound Shoreline Boulevard to northbound Central Expressway in Mountain View when it was rear-ended. '
+        'The Waymo AV was yielding to approaching traffic from the left when a passenger vehicle rear-ended the '
+        'Waymo AV while travelling approximately 4 MPH. The Waymo AV sustained minor damage to the rear bumper, '
+        'and the passenger vehicle had minor damage to its front bumper. No injuries were reported at the scene '
+        'but the two operators in the Waymo AV later reported minor headache and neck soreness. They sought '
+        'medical attention and both were cleared to return to work.'),
     'csvr-waymo-20190226-s3': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 3, "
         "column 'Accident Detail Description'), transcribed",

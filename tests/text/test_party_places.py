@@ -150,3 +150,23 @@ def test_rear_ended_by_belongs_to_the_party_named_after_by() -> None:
     # the car ahead is ahead (R5); Vehicle #2 came from behind (R6).
     sk = extract(_TEXTS["csvr-zoox-20230208-s212"][1], "csvr-zoox-20230208-s212")
     assert sorted((p.position, p.lane) for p in sk.npcs) == [("R5", "same"), ("R6", "same")]
+
+
+def test_a_party_that_rear_ended_the_av_was_behind_it_whatever_side_a_clause_about_the_av_names() -> None:
+    # "The Waymo AV was yielding to approaching traffic from the left when a passenger vehicle rear-ended the Waymo
+    # AV": told with the AV's clause after the party's (as another reporter writes it), the side "from the left" of
+    # the traffic the AV yielded to comes into the party's words; the rear-end says where the party was (28 of the
+    # 29 studyable reports telling a rear-end of the AV have the party behind it in the gold).
+    text = _TEXTS["csvr-waymo-20190206-s2"][1].replace(
+        "The Waymo AV was yielding to approaching traffic from the left when a passenger vehicle rear-ended the Waymo "
+        "AV while travelling approximately 4 MPH.",
+        "A passenger vehicle rear-ended the Waymo AV while travelling approximately 4 MPH as the Waymo AV was "
+        "yielding to approaching traffic from the left.")
+    assert text != _TEXTS["csvr-waymo-20190206-s2"][1]
+    p = extract(text, "csvr-waymo-20190206-s2").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")
+    # The turn made first keeps the party on its own approach: "a Toyota Sedan on westbound Sacramento Street ...
+    # was making an unprotected right turn on a red light onto northbound Van Ness Avenue behind the Cruise AV.
+    # Shortly thereafter, the Toyota Sedan rear-ended the Cruise AV".
+    p = _party("csvr-cruise-20220409-s148")
+    assert p.position == "R3"

@@ -51,6 +51,16 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # a driveway or lot is no crossing road's.)
         follows = bool(fre.search(r"\bfollow|\bbehind\s+EGO", ctx, re.I)) or fore == "rear"
         return ("R3" if (turns[0] == "d") != follows else "R1"), None, True
+    if e.idx == d.partner and d.contact_sent is not None and not (junction and turns) and \
+            _REAR_ENDED_EGO.search(" ".join(d.sents[:d.contact_sent + 1])):
+        # The contact told as a rear-end of the AV ("a passenger vehicle rear-ended the Waymo AV", "EGO was rear
+        # ended by the truck", "struck from behind"): the party came from behind, whatever side or heading a clause
+        # about the AV names ("... as the Waymo AV was yielding to approaching traffic from the left"). (One that
+        # turned at the junction came from its own approach: "a Toyota Sedan on westbound Sacramento Street was
+        # making an unprotected right turn ... onto northbound Van Ness Avenue behind the Cruise AV. Shortly
+        # thereafter, the Toyota Sedan rear-ended the Cruise AV" is R3.) 28 of the 29 studyable reports telling it
+        # so have the party behind in the gold; the other is that turn.
+        return "R6", _rear_lane(d), True
     # (a pass of the AV itself, not of a thing of its: "went past the AV's stop line")
     # (a word between the verb and the AV describes it, "passed the stopped EGO"; a clause word starts another
     # clause: "began reversing as EGO was passing and EGO came to a stop" is the AV's pass)
@@ -219,11 +229,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
     if fore == "rear":
-        # A corner of the rear ("the left rear corner", "the right tail lamp") is met by a party coming up on that
-        # side, a bumper ("the left rear bumper") by one behind in the lane (the official gold reads them so).
-        corner = _REAR_CORNER.search(d.sents[d.contact_sent]) if d.contact_sent is not None else None
-        side = body_side(corner.group(1) or corner.group(2)) if corner else None
-        return "R6", side or "same", True
+        return "R6", _rear_lane(d), True
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
         # Turning onto the AV's road towards it: a left turn comes from the right, a right turn from the left;
         # a party that then follows the AV turned into its direction, so the sides swap.
@@ -247,6 +253,21 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+def _rear_lane(d: Doc) -> str:
+    """The lane of a party that met the AV's rear: a corner of the rear ("the left rear corner", "the right tail
+    lamp") is met by a party coming up on that side, a bumper ("the left rear bumper") by one behind in the lane
+    (the official gold reads them so)."""
+    corner = _REAR_CORNER.search(d.sents[d.contact_sent]) if d.contact_sent is not None else None
+    return (body_side(corner.group(1) or corner.group(2)) if corner else None) or "same"
+
+
+# The AV rear-ended by the party: "rear-ended EGO", "EGO was rear ended", "EGO ... struck from behind" (not "EGO
+# rear-ended the sedan": the party is then ahead).
+_REAR_ENDED_EGO = compile_gated(r"\brear[- ]?end(?:ed|ing|s)?\s+(?:the\s+)?(?:(?:stopped|stationary|waiting|slowing)\s+)?EGO\b|"
+                                r"\bEGO\b[^.;]{0,60}?\b(?:was|were|got|been|being|is)\s+(?:\w+\s+)?(?:rear[- ]?ended\b|"
+                                r"(?:struck|hit|impacted|bumped)\s+from\s+(?:behind|the\s+rear)\b)", re.I)
 
 
 # "from behind" the AV, not from behind another thing ("came out from behind a parked truck": where it was hidden;
