@@ -204,6 +204,7 @@ _SLOWING = (
     "performed a hard brake", "executed a hard braking maneuver", "made a hard brake",
     "came to a near stop", "came to a rolling stop", "came to an almost complete stop", "slowed to a near stop",
     "came nearly to a stop", "slowed almost to a stop", "slowed to a near standstill",
+    "hits its brakes", "taps its brakes", "slams on its brakes", "steps on its brakes", "pumps its brakes",
 )
 _MOVING_OFF = (
     "began to move", "began moving", "started moving", "started to move", "moved forward", "began to move forward",
@@ -2502,8 +2503,12 @@ PROBES: tuple[Probe, ...] = (
           "bumper.",
           ("after clearing the intersection with Flamingo Road", "having cleared the intersection",
            "after passing through the intersection", "in a parking deck", "in a car park", "in a parking aisle",
-           "in the drive aisle of a parking lot", "in a parking lot aisle", "within a parking structure"),
-          lambda sk: sk.road.layout, lambda w: "straight" if "intersection" in w else "parking"),
+           "in the drive aisle of a parking lot", "in a parking lot aisle", "within a parking structure",
+           "at the entrance of a parking lot", "at the exit of a parking garage", "at the parking lot entrance",
+           "at the driveway of a parking lot", "at the parking garage exit", "at the gate of a parking lot"),
+          lambda sk: sk.road.layout,
+          lambda w: "straight" if any(x in w for x in ("intersection", "entrance", "exit", "driveway", "gate")) else
+          "parking"),
     Probe("a parked party pulling out into traffic, in the ways English tells it (session 17)",
           "The Waymo AV was traveling northbound on Mission Street in the right lane. A sedan that was parked on the "
           "right side of Mission Street {w} and made contact with the front right bumper of the Waymo AV.",

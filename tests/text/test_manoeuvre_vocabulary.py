@@ -31,3 +31,14 @@ def test_moving_forward_from_the_curb_is_pulling_out() -> None:
     # roadway, maneuvering to the left of the Waymo AV": out from the curb by any verb of moving forward is a pull
     # out into the travel lane (gold `lf`: the parking, then the move left out of the curb side).
     assert _parties("nhtsa-sgo-ads-30270-9350-v1")[0] == ("moving", "lf")
+
+
+def test_the_entrance_of_a_parking_lot_is_on_the_road() -> None:
+    # "was in a collision involving a chain at the entrance of a parking lot ... As the Waymo AV was entering the
+    # parking lot, it made contact with a chain hanging at the entrance": the entrance, an exit or the driveway of a
+    # lot is where it meets the road, `straight` (sketch.md: a driveway is `straight`); inside a lot is `parking`.
+    rid = "nhtsa-sgo-ads-30270-7936-v1"
+    assert extract(QUOTED[rid][1], rid).road.layout == "straight"
+    inside = QUOTED[rid][1].replace("at the entrance of a parking lot", "in a parking lot").replace(
+        "hanging at the entrance of the parking lot", "hanging in the parking lot")
+    assert extract(inside, rid).road.layout == "parking"

@@ -321,8 +321,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("c", r"\bslow(?:ed|ing|s)?\b(?![-\s]moving\b)(?!\s+(?:speed|(?:down\s+|\w+ly\s+)?to\s+(?:a\s+|an\s+)?(?:[\w-]+\s+)?(?:stop|halt|standstill)))|\bdecelerat(?:ed|ing|e|es)\b|\bbrak(?:ed|ing|es)\b|"
           r"\bbrake\b(?!\s+(?:and\s+[\w-]+\s+)?(?:lights?|lamps?)\b)|\bapplied\s+(?:the|its|their|his|her)\s+brakes?|\bhard\s+brak|"
           # any hand on the brakes: "hit", "slammed on", "tapped", "pumped", "engaged", "activated" its brakes
-          r"\b(?:hit|hitting|slamm(?:ed|ing)\s+on|slams?\s+on|stepp(?:ed|ing)\s+on|steps?\s+on|jamm(?:ed|ing)\s+on|"
-          r"(?:tapp|pump|engag|activat|depress|press|touch|feather)(?:ed|ing|es|e|s)?(?:\s+on)?)\s+"
+          r"\b(?:hit|hits|hitting|slamm(?:ed|ing)\s+on|slams?\s+on|stepp(?:ed|ing)\s+on|steps?\s+on|jamm(?:ed|ing)\s+on|"
+          r"tap(?:ped|ping|s)?|(?:pump|engag|activat|depress|press|touch|feather)(?:ed|ing|es|e|s)?(?:\s+on)?)\s+"
           r"(?:the|its|their|his|her)\s+brakes?\b(?!\s+(?:lights?|lamps?|pedal\s+lights?))|"
           r"\b(?:reduc|lower|decreas|cut|cutting|dropp|drop)(?:ed|ing|es|e|s)?\s+(?:its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("A", r"\b(?:continu(?:ed|ing)|proceed(?:ed|ing)|went|going|drove|driving)\s+straight\b"),

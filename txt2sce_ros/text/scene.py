@@ -82,6 +82,11 @@ _PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?
                       r"structure|garage|facility|deck|ramp)|garage|parking\s+area|depot|lot|car\s+park)\b|\bparking\s+(?:structure|"
                       # the lanes of a lot: "a parking aisle", "the drive aisle of a parking lot"
                       r"garage|deck)\b|\b(?:drive|driving|parking)\s+aisles?\b", re.I)
+# The entrance, exit or driveway of a lot is where it meets the road, and a driveway is `straight` ("a chain at the
+# entrance of a parking lot", "at the parking garage exit"): no place inside the lot.
+_LOT_EDGE = compile_gated(r"\b(?:(?:entrance|entry|exit|driveway|gate)\s+(?:of|to|from|into)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,2}?"
+                          r"(?:parking\s+(?:lot|garage|structure|deck|area)|garage|lot|car\s+park)|(?:parking\s+(?:lot|garage|"
+                          r"structure|deck)|garage|lot)\s+(?:entrance|entry|exit|driveway|gate))\b", re.I)
 _CURVE = compile_gated(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
 _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
@@ -256,7 +261,7 @@ def _opposite_on_first_road(t: str) -> bool:
 def road(t: str, *, junction: bool) -> RoadInfo:
     if _ROUNDABOUT.search(t):
         layout = "roundabout"
-    elif _PARKING.search(t) and not fre.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
+    elif _PARKING.search(_LOT_EDGE.sub(" ", t)) and not fre.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
                                               r"parking\s+(?:lot|garage|structure)", t, re.I):
         layout = "parking"
     elif junction:
