@@ -1621,6 +1621,17 @@ PROBES: tuple[Probe, ...] = (
            "it drove over traffic barrels", "it struck a row of bollards"),
           lambda sk: [o.category for o in sk.obstacles],
           lambda w: ["barrier" if "barricade" in w else "pole" if "bollard" in w else "cone"]),
+    Probe("an AV named only 'the truck' by a report naming its operator; a vehicle's own parts are no party",
+          "TuSimple's position is that this event does not meet the criteria for reporting. {W}",
+          ("As the truck was being operated on the highway, the vehicle control unit steered it left and the truck "
+           "struck the concrete barrier.",
+           "The vehicle was traveling on the highway when the left front vehicle tire struck a concrete barrier.",
+           "As the truck was traveling on the highway, the truck computer failed and the left front truck wheel "
+           "struck a concrete barrier.",
+           "The truck was traveling in the right lane when the truck control system steered it left and it struck a concrete "
+           "barrier."),
+          lambda sk: ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_),
+          ([], ["barrier"], "obs1")),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

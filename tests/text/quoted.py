@@ -650,6 +650,23 @@ QUOTED: dict[str, tuple[str, str]] = {
         'with a tree on the left side of the road. The Menlo Park Police Department was called to the scene. Two '
         'Zoox operators sustained minor injuries and it is unknown if the driver of the other vehicle sustained '
         'injuries.'),
+    'nhtsa-sgo-ads-10003-3210-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 10003-3210, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'All of the data in this report and the following text is an excerpt from TuSimples original '
+        "submission (30370-2949-1) and constitutes Navistars sole understanding of this event. TuSimple's "
+        'position is that this event does not meet the criteria for reporting under the SGO. Specifically, '
+        'the L4 ADS was not in operation at any point in the 30 seconds prior to making contact with the '
+        'concrete barrier. The event occurred as follows: As the truck was being operated on the highway, '
+        'within its mapped ODD, the driver and test engineer attempted to engage the ADS. However, the ADS '
+        'was not functional at that moment due to the computer unit not having been initialized, and should '
+        'not have been attempted to be activated. In short, this was a failed attempt to engage the system '
+        'as a result of human error. The system has now been modified to prevent the ADS from attempting to '
+        'engage unless the health of the system is fully functional to prevent human error from repeating '
+        'this event. When the erroneous attempt to engage occurred, the uninitialized vehicle control unit '
+        'rotated the steering to the left, causing the truck to veer left. The safety driver took control of '
+        'the steering, and was able to steer accordingly, but not before the left front truck tire and left '
+        'front quarter panel came into contact with the concrete barrier to the left of the lanes of travel.'),
     'nhtsa-sgo-ads-1420-7995-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 1420-7995, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -292,3 +292,13 @@ def test_a_contact_told_as_an_event_by_the_av_s_operator_named_by_abbreviation()
     assert [o.category for o in sk.obstacles] == ["parked_vehicle"]
     assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")
     assert [p.category for p in sk.npcs] == ["car"]
+
+
+def test_an_av_named_only_as_the_truck_of_a_named_operator_and_its_own_parts_are_no_party() -> None:
+    # "TuSimple's position is ... As the truck was being operated on the highway ... the uninitialized vehicle control
+    # unit rotated the steering to the left, causing the truck to veer left ... the left front truck tire and left
+    # front quarter panel came into contact with the concrete barrier": the report names no AV but "the truck" (its
+    # operator named), which is the AV; "vehicle control unit" and "truck tire" are its parts. One barrier (gold).
+    sk = extract(_SGO["nhtsa-sgo-ads-10003-3210-v1"][1], "nhtsa-sgo-ads-10003-3210-v1")
+    assert (len(sk.npcs), [o.category for o in sk.obstacles]) == (0, ["barrier"])
+    assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")

@@ -228,8 +228,10 @@ _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 # ("the bus and taxi lane", "a bus/bike lane": a lane two kinds of traffic share is a lane too)
 _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b|lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
-                             # ("the municipal tram line", "the train tracks", "a bus station")
-                             r"lines?|tracks?|stations?|"
+                             # ("the municipal tram line", "the train tracks", "a bus station"; a vehicle's own parts
+                             # and systems: "the vehicle control unit", "the left front truck tire")
+                             r"lines?|tracks?|stations?|control\s+units?|controls?|systems?|computers?|software|"
+                             r"tires?|tyres?|wheels?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
                              r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
@@ -355,6 +357,12 @@ def _label_digits(t: str) -> str:
     return _LABEL_WORDS.sub(lambda m: f"{m.group(1)} {dict(two=2, three=3, four=4)[m.group(2).lower()]}", t)
 
 
+# A report that names its operator and then its vehicle only as "the truck" ("TuSimple's position is ... As the truck
+# was being operated on the highway ..."): that bare noun is the AV (not "the vehicle control unit", "the car's").
+_BARE_DEFINITE_VEHICLE = compile_gated(r"\bthe\s+(vehicle|car|truck|shuttle|bus|van|suv|pod)\b(?!'s|\s+(?:control|unit|"
+                                       r"system|computer|operator|driver|occupant|passenger)s?\b)", re.I)
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -440,7 +448,8 @@ def normalise(text: str) -> str:
                           r"(?=\s+(?:was|is|had|has|were)\b)", t, re.I) or \
             fre.search(r"\b(?:autonomous|automated|driverless|self-driving)\s+(vehicle|car|truck|shuttle|bus|van|pod)\b",
                        t, re.I) or \
-            fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I)
+            fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I) or \
+            (company_re.search(t) and _BARE_DEFINITE_VEHICLE.search(t))
         if fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*1\b", t, re.I) and \
                 fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*2\b", t, re.I):
             # "Vehicle 1 was stopped ... Vehicle 2 rear-ended Vehicle 1": the form's numbering, the AV first
