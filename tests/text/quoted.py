@@ -1289,6 +1289,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'wearing a seatbelt. The SUV sustained damage. Waymo is reporting this crash under Request No. 2 of '
         'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9435-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-9435, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 10:29 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Los '
+        'Angeles, California was in a collision involving an SUV on [XXX] near [XXX]. As the Waymo AV was '
+        'parked at the curb on the right side of the street facing north on [XXX], an SUV reversed out of a '
+        'driveway on the left side of the street. The rear of the SUV made contact with the rear driver side '
+        'of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous '
+        'mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
+        'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as '
+        'it may become available.'),
     'nhtsa-sgo-ads-30270-9436-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9436, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

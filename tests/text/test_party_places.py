@@ -9,6 +9,7 @@ from __future__ import annotations
 from txt2sce_ros.sketch import Party
 from txt2sce_ros.text.extractor import extract
 
+from .invariance import _clause_after, _when_to_as
 from .quoted import QUOTED
 
 _TEXTS = QUOTED  # report id -> (source, narrative): tests/text/quoted.py
@@ -170,3 +171,21 @@ def test_a_party_that_rear_ended_the_av_was_behind_it_whatever_side_a_clause_abo
     # Shortly thereafter, the Toyota Sedan rear-ended the Cruise AV".
     p = _party("csvr-cruise-20220409-s148")
     assert p.position == "R3"
+
+
+def test_a_clause_about_the_av_after_the_party_s_tells_the_av_s_place_not_the_party_s() -> None:
+    # Told with the AV's clause after the party's (the clause order other reporters use): "A passenger car in front
+    # of the Waymo AV began to reverse to parallel park as the Waymo AV was parked at the curb on the right side of
+    # 29th Avenue": the curb and its side are where the AV stood; the party was ahead in its lane (the gold's R5/same).
+    original = _TEXTS["csvr-waymo-20240605-s317"][1]
+    text = _when_to_as(original)
+    assert text != original and "as the Waymo AV was parked at the curb" in text
+    p = extract(text, "csvr-waymo-20240605-s317").npcs[0]
+    assert (p.position, p.lane) == ("R5", "same")
+    # "An SUV reversed out of a driveway on the left side of the street as the Waymo AV was parked at the curb on the
+    # right side of the street": out of a driveway on the AV's left (the gold's R5/left), not at its curb.
+    original = _TEXTS["nhtsa-sgo-ads-30270-9435-v1"][1]
+    text = _clause_after(original)
+    assert text != original
+    p = extract(text, "nhtsa-sgo-ads-30270-9435-v1").npcs[0]
+    assert (p.position, p.lane) == ("R5", "left")

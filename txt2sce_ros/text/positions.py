@@ -16,7 +16,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                    ego_actions: str = "", behind_av: frozenset[int] = frozenset()) -> tuple[str, str | None, bool]:
     """(position, lane, known): where the party was relative to the AV when the interaction began.
     `behind_av`: the entities already placed behind the AV (R6); whoever follows them is behind too."""
-    ctx = context(d, e)
+    ctx = own_context(d, e)
     # A party said to be on another street than the AV's is on a crossing road: the AV is at a junction with it.
     cross = _on_other_street(d, ctx)
     junction = d.junction or cross
@@ -253,6 +253,18 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+# A clause about the AV joined after the party's ("... began to reverse as EGO was parked at the curb", "...
+# passed on the left while EGO waited"): what it says of a curb, a lane or a side is the AV's place.
+AV_CLAUSE = compile_gated(r",?\s+\b(?:as|when|while|whilst|after|before|until|because|since|whereas)\s+(?:the\s+)?EGO\b",
+                          re.I)
+
+
+def own_context(d: Doc, e: Entity) -> str:
+    """`story.context` of the party, each of its pieces cut where a clause about the AV begins."""
+    return " | ".join(part[:av.start()] if (av := AV_CLAUSE.search(part)) else part
+                      for part in context(d, e).split(" | "))
 
 
 def _rear_lane(d: Doc) -> str:

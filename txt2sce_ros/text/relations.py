@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import FROM_BEHIND, PLACE_SIDE, exit_street, side_from_flank
+from .positions import AV_CLAUSE, FROM_BEHIND, PLACE_SIDE, exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -458,9 +458,13 @@ _YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|t
 
 
 def _clause_end(d: Doc, e: Entity, m: Mention) -> int:
-    """Where the text stops speaking of the party named at `m`: the next other party named, or the sentence end."""
+    """Where the text stops speaking of the party named at `m`: the next other party named, a clause about the AV,
+    or the sentence end."""
+    s = d.sents[m.sent]
     nxt = [x.start for x in d.ments[m.sent] if x.start > m.end and ends_phrase(d, x) and x.entity != e.idx]
-    return min(nxt) if nxt else len(d.sents[m.sent])
+    end = min(nxt) if nxt else len(s)
+    av = AV_CLAUSE.search(s, m.end, end)
+    return av.start() if av else end
 
 
 def _crosses_exit_street(d: Doc, clause: str) -> re.Match[str] | None:
