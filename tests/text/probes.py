@@ -2497,6 +2497,15 @@ PROBES: tuple[Probe, ...] = (
            "drives on", "proceeded", "entered the intersection", "moved forward", "continued", "accelerated",
            "drove on"),
           _ego, ("moving", "ahi")),
+    Probe("a dark or broken traffic light: the junction has a signal, the AV began on none (session 17)",
+          "A Zoox vehicle was stopped {w} on Koval Lane at Flamingo Road when a sedan traveling behind it struck its "
+          "rear bumper.",
+          ("at a malfunctioning traffic light", "at an inoperative traffic signal", "at a dark traffic signal",
+           "at a non-functioning traffic light", "at a traffic light that was not illuminated",
+           "at a traffic signal that was not working", "at the intersection because the traffic lights were out",
+           "at a traffic light that was dark during a power outage", "at an unlit traffic signal",
+           "at a broken traffic light"),
+          lambda sk: (sk.road.layout, sk.road.control, sk.signal_state), ("junction4", "signal", "none")),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

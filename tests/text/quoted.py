@@ -425,6 +425,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode, and a test driver was present (in "
         "the driver's seating position). The Waymo AV sustained damage to the rear left sensor housing and "
         'assembly.'),
+    'csvr-waymo-20241214-s355': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 355, column 'Accident Detail Description'), transcribed",
+        'On December 14, 2024 at 9:53 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a heavy truck on Alabama Street at Cesar Chavez '
+        'Street. The Waymo AV was stopped facing a malfunctioning traffic light on southbound Alabama Street '
+        'at the intersection with Cesar Chavez Street. While the Waymo AV remained stopped and the traffic '
+        'light was not illuminated, a heavy truck that had been stopped behind the Waymo AV entered the '
+        'oncoming lane of Alabama Street to maneuver around the Waymo AV. As the heavy truck was passing the '
+        'stopped Waymo AV, the passenger side of the heavy truck made contact with the rear driver side '
+        'corner of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
+        'autonomous mode. Both vehicles sustained damage.'),
     'csvr-waymo-20241227-s358': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "358, column 'Accident Detail Description'), transcribed",

@@ -42,3 +42,15 @@ def test_the_entrance_of_a_parking_lot_is_on_the_road() -> None:
     inside = QUOTED[rid][1].replace("at the entrance of a parking lot", "in a parking lot").replace(
         "hanging at the entrance of the parking lot", "hanging in the parking lot")
     assert extract(inside, rid).road.layout == "parking"
+
+
+def test_a_dark_traffic_light_gives_no_signal_state() -> None:
+    # "The Waymo AV was stopped facing a malfunctioning traffic light ... While the Waymo AV remained stopped and the
+    # traffic light was not illuminated": a junction with a signal (control `signal`) that showed no colour, so the AV
+    # began on none (gold `none`); the same light told lit is the red it stood at.
+    rid = "csvr-waymo-20241214-s355"
+    sk = extract(QUOTED[rid][1], rid)
+    assert (sk.road.control, sk.signal_state) == ("signal", "none")
+    lit = QUOTED[rid][1].replace("a malfunctioning traffic light", "a red traffic light").replace(
+        "and the traffic light was not illuminated", "at the red light")
+    assert extract(lit, rid).signal_state == "red"

@@ -330,6 +330,16 @@ _AT_A_LIGHT = compile_gated(rf"\b{_STANDING}\s+(?:at|for)\s+(?:a|the)\s+(?:traff
 _WAITING_FOR_GREEN = compile_gated(r"\bwait(?:ed|ing|s)?\s+for\s+(?:(?:the|its)\s+(?:traffic\s+)?(?:light|signal)\s+to\s+"
                                    r"(?:turn|change)(?:\s+to)?\s+green|(?:a|the)\s+green(?:\s+(?:light|signal|arrow))?)\b", re.I)
 _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
+# A light showing nothing ("a malfunctioning traffic light", "the traffic light was not illuminated", "the signals were
+# dark during a power outage"): no signal state at all (csvr-waymo-20241214-s355, gold `none`).
+_DARK_LIGHT = compile_gated(r"\b(?:malfunctioning|inoperative|inoperable|non-?functioning|non-?operational|dark|broken|"
+                            r"unlit|out-of-service)\s+(?:traffic\s+)?(?:lights?|signals?)\b|"
+                            # ("the traffic light was not illuminated"; not "the brake lights were off")
+                            r"\b(?:the|its|their|a)\s+(?:traffic\s+)?(?:light|signal)s?\s+(?:\w+\s+){0,2}?(?:was|were|is|are|"
+                            r"had\s+been)\s+(?:\w+ly\s+)?"
+                            r"(?:not\s+(?:illuminated|lit|working|functioning|operating|operational)|dark|out|off|"
+                            r"malfunctioning|inoperative|without\s+power)\b|"
+                            r"\bpower\s+(?:outage|failure)\b", re.I)
 
 
 def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving") -> str:
@@ -342,6 +352,8 @@ def signal_state(t: str, *, layout: str, control: str, ego_start: str = "moving"
         return "none"  # (a junction the text says has no control has no signal either)
     if control != "signal":
         return "unknown"
+    if _DARK_LIGHT.search(t):
+        return "none"  # a light that showed no colour: no signal to begin on (sketch.md: `none` where there is none)
     if ego_start == "stopped" and (TURNED_GREEN.search(t) or _WAITING_FOR_GREEN.search(t)):
         return "red"  # sketch.md: "an AV stopped at a red light that moves off on green has red"
     # The AV standing, stopping or slowing for a red light ("As the Cruise AV was slowing for a red light at the
