@@ -1632,6 +1632,15 @@ PROBES: tuple[Probe, ...] = (
            "barrier."),
           lambda sk: ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_),
           ([], ["barrier"], "obs1")),
+    Probe("a possessive printed without its apostrophe (redacted SGO text) names the same owner",
+          "The Waymo AV was traveling north on [XXX] {w}.",
+          ("and made contact with a parked cars driver side mirror", "and made contact with a bicyclists back tire", "when the Waymo AVs right "
+           "side made contact with an unoccupied SUVs mirror", "and made contact with a parked vans rear bumper",
+           "and made contact with a parked pickup trucks tailgate", "and made contact with a parked sedans rear "
+           "passenger side door"),
+          lambda sk: ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_ or ""),
+          lambda w: (["bicycle"], [], "npc1") if "bicyclist" in w else
+          ([], ["parked_vehicle"], "obs1")),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

@@ -555,6 +555,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'front bumper fascia and front passenger side wheel opening molding. The driver of the Model 3 Tesla '
         'left the scene without exchanging information. There were no reported injuries. The driver of the Model '
         '3 Tesla later reported damages.'),
+    'dmvca-waymo-20210404-r172': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 172, '
+        'column "Accident Detail Description")',
+        'A Waymo Autonomous Vehicle (“Waymo AV”) traveling northbound on Jones Street approaching Clay '
+        'Street in San Francisco was involved in a collision. After the Waymo AV made a right turn from '
+        'Pleasant Street in autonomous mode, the Waymo AV test driver disengaged autonomous mode to maneuver '
+        'past an oncoming vehicle on Jones Street that was drifting toward the Waymo AV. While in manual '
+        'mode, the Waymo AV’s passenger side view mirror then made contact with an unoccupied parked '
+        'passenger vehicle’s driver side view mirror at approximately 6 MPH. The Waymo AV sustained minor '
+        'damage to its passenger side view mirror. The unoccupied passenger vehicle’s driver-side mirror was '
+        'cracked, but most or all of the damage appeared to have been pre-existing. No other damage was '
+        'observed to the unoccupied passenger vehicle. No injuries were reported at the scene.'),
     'dmvca-waymo-20210712-r196': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 196, column '
         '"Accident Detail Description")',
@@ -574,6 +586,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'stop behind a second passenger vehicle, at which time the driver of the Waymo AV transitioned into '
         'manual mode. The second passenger vehicle reversed into the Waymo AV, making contact with its front '
         'bumper. Both vehicles sustained minor bumper damage.'),
+    'dmvca-waymo-20220208-r284': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 284, '
+        'column "Accident Detail Description")',
+        'On February 8, 2022 at 8:56 AM PST, a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, California was in a collision involving a passenger vehicle on Harrison Street at 9th '
+        'Street. The Waymo AV was traveling southbound on Harrison Street in manual mode, and began slowing '
+        'for a red light as it approached the intersection of 9th Street. The Waymo AV was in the second '
+        'lane from the left on a one-way street. A passenger in a taxi cab that was stopped in the lane to '
+        'the left of the Waymo AV opened the rear passenger door as the Waymo AV was coming to a stop. The '
+        'edge of the taxi cab’s door made contact with the Waymo AV. At the time of the impact, the Waymo '
+        'AV’s Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual mode. The '
+        'other vehicle sustained minor damage.'),
     'dmvca-waymo-20220511-r333': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 333, column '
         '"Accident Detail Description")',
@@ -1479,6 +1503,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'from behind coasted into the ego vehicle. Our system responded with a software Health Drop, which '
         'immediately took the ego out of autonomous mode (for safety). Minor damage was reported to our rear '
         'sensor and bumper.'),
+    'nhtsa-sgo-ads-30413-4170-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-4170, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Operator was approaching stop sign at the intersection of [XXX] westbound and [XXX] northbound, '
+        'which is a planned disengagement (this unprotected turn is outside of our ODD). If left in '
+        'autonomy, the vehicle would have come to a full stop before the stop line and remained stopped '
+        'until the operator took over. 6 seconds prior to incident, operator took the vehicle over manually '
+        'before it could have stopped in autonomy. Operator moved the vehicle manually passed the stop line, '
+        "colliding with a bicyclist's back tire. No injuries reported from the bicyclist or the operator and "
+        'no damage to the vehicle or bicycle.'),
     'nhtsa-sgo-ads-30413-6032-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-6032, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

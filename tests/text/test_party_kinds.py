@@ -86,3 +86,18 @@ def test_a_row_of_pylons_the_av_braked_for_is_one_obstacle() -> None:
     # second of the two things "due to" names); one cone obstacle, on its left (gold).
     sk = _sketch("csvr-waymo-20201229-s69")
     assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [("cone", "R5", "left")]
+
+
+def test_a_possessive_printed_without_its_apostrophe_names_the_same_owner() -> None:
+    # Redacted NHTSA narratives print possessives without the apostrophe ("the Waymo AVs Level 4 ADS", "the heavy
+    # trucks trailer"). Told so, these read as with it: "The edge of the taxi cab's door made contact" (a door, gold),
+    # "colliding with a bicyclist's back tire" (the cyclist), "the unoccupied parked passenger vehicle's driver side
+    # view mirror" (the parked vehicle struck).
+    for rid in ("dmvca-waymo-20220208-r284", "nhtsa-sgo-ads-30413-4170-v1", "dmvca-waymo-20210404-r172"):
+        text = _TEXTS[rid][1]
+        bare = text.replace("’s ", "s ").replace("'s ", "s ")
+        assert bare != text, rid
+        told, other = extract(text, rid), extract(bare, rid)
+        assert [p.category for p in other.npcs] == [p.category for p in told.npcs], rid
+        assert [o.category for o in other.obstacles] == [o.category for o in told.obstacles], rid
+        assert other.collision == told.collision, rid

@@ -225,6 +225,26 @@ def _trie_pattern(words: list[str]) -> str:
 
 
 _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")(?:'s|s')?\b", re.I)
+# A possessive written without its apostrophe, as redacted SGO narratives print it ("the heavy trucks trailer", "the
+# passenger cars driver side", "TuSimples position"): a party's or operator's name, an "s", and a part or quality of
+# it (not a plural: "Both vehicles sustained damage", "two vehicles front bumpers").
+_VEHICLE_PART = (r"(?:(?:front|rear|back|left|right|driver|passenger|lower|upper)(?:[- ]side)?\s+){0,3}(?:bumper|side|door|"
+                 r"mirror|fender|trailer|hood|panel|corner|wheel|tire|tyre|quarter|headlight|taillight|windshield|"
+                 r"window|roof|trunk|sensor|camera|lidar|lane|path|edge|body|front|rear|driver|passenger|position|"
+                 r"level|ads)\b")
+_BARE_POSSESSIVE = compile_gated(r"\b(" + _trie_pattern(sorted(set(PARTY_HEADS) | set(MAKES), key=len, reverse=True))
+                                 + r")s\s+(?=" + _VEHICLE_PART + ")", re.I)
+_COUNTED_BEFORE = compile_gated(r"\b(?:both|two|three|all|several|multiple|many|other|the\s+two)\s+(?:[\w-]+\s+)?$", re.I)
+
+
+def _restore_possessives(t: str) -> str:
+    """"the heavy trucks trailer" as "the heavy truck's trailer" (see `_BARE_POSSESSIVE`)."""
+    if not _BARE_POSSESSIVE.search(t):
+        return t
+    return _BARE_POSSESSIVE.sub(lambda m: m.group(0) if _COUNTED_BEFORE.search(t, max(0, m.start() - 30), m.start())
+                                else f"{m.group(1)}'s ", t)
+
+
 # Heads that name something else when followed by these words ("bike lane", "bus stop", "turn signal").
 # ("the bus and taxi lane", "a bus/bike lane": a lane two kinds of traffic share is a lane too)
 _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b|lanes?(?![- ]split)|racks?|stops?|paths?|routes?|only|signals?|doors?|mirrors?|drivers?|"
@@ -359,6 +379,7 @@ def _label_digits(t: str) -> str:
 
 # A report that names its operator and then its vehicle only as "the truck" ("TuSimple's position is ... As the truck
 # was being operated on the highway ..."): that bare noun is the AV (not "the vehicle control unit", "the car's").
+_COMPANY_S = compile_gated(rf"\b(?:{COMPANY_ALTERNATION})s\b", re.I)  # "TuSimples position": a possessive, unmarked
 _BARE_DEFINITE_VEHICLE = compile_gated(r"\bthe\s+(vehicle|car|truck|shuttle|bus|van|suv|pod)\b(?!'s|\s+(?:control|unit|"
                                        r"system|computer|operator|driver|occupant|passenger)s?\b)", re.I)
 
@@ -379,6 +400,7 @@ def normalise(text: str) -> str:
     for words, cased, rx, repl in _SPELLINGS:
         if any(w in (t if cased else low) for w in words):
             t = rx.sub(repl, t)
+    t = _restore_possessives(t)
     raw = t.encode("utf-8", "surrogatepass")
     n_upper = len(raw) - len(raw.translate(None, _UPPER_BYTES))
     n_alpha = len(raw) - len(raw.translate(None, _ALPHA_BYTES))
@@ -449,7 +471,7 @@ def normalise(text: str) -> str:
             fre.search(r"\b(?:autonomous|automated|driverless|self-driving)\s+(vehicle|car|truck|shuttle|bus|van|pod)\b",
                        t, re.I) or \
             fre.search(r"\b(?:a|an)\s+(?:[\w-]+\s+){0,4}?(vehicle|car|truck|shuttle|bus|van|suv)\b", t, re.I) or \
-            (company_re.search(t) and _BARE_DEFINITE_VEHICLE.search(t))
+            ((company_re.search(t) or _COMPANY_S.search(t)) and _BARE_DEFINITE_VEHICLE.search(t))
         if fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*1\b", t, re.I) and \
                 fre.search(r"\b(?:vehicle|car|unit)\s*#?\s*2\b", t, re.I):
             # "Vehicle 1 was stopped ... Vehicle 2 rear-ended Vehicle 1": the form's numbering, the AV first
