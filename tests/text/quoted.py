@@ -447,6 +447,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'reversing, the rear driver side of the passenger car made contact with the front passenger side of the '
         'stationary Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous '
         'mode, and a test driver was present (in the driver’s seating position). Both vehicles sustained damage.'),
+    'csvr-zoox-20191011-s35': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 35, column 'Accident Detail Description'), transcribed",
+        'The stationary Zoox vehicle was in autonomous mode heading northbound on Union St. Contact occurred '
+        'when the Zoox vehicle was stopped at a stop sign at the intersection of Union St. and Grant St., '
+        'when it was rear-ended by an electric scooter. The scooter was following closely behind the Zoox '
+        'vehicle and the scooter driver was not focused on the Zoox vehicle in front of it, when the '
+        "scooter's front tire made contact with the rear bumper of the Zoox vehicle. There were no injuries."),
     'csvr-zoox-20210511-s81': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "81, column 'Accident Detail Description'), transcribed",

@@ -189,3 +189,29 @@ def test_a_clause_about_the_av_after_the_party_s_tells_the_av_s_place_not_the_pa
     assert text != original
     p = extract(text, "nhtsa-sgo-ads-30270-9435-v1").npcs[0]
     assert (p.position, p.lane) == ("R5", "left")
+
+
+def test_the_same_scene_told_with_other_common_verbs_places_the_party_alike() -> None:
+    # "the scooter's front tire made contact with the rear bumper of the Zoox vehicle", told "struck": the AV's part
+    # is the words after the contact's verb (its rear), not the scooter's front as well; the rider ran into the
+    # middle of the AV's rear, in line behind it (the gold's R6/same).
+    original = _TEXTS["csvr-zoox-20191011-s35"][1]
+    text = original.replace("made contact with", "struck")
+    assert text != original
+    p = extract(text, "csvr-zoox-20191011-s35").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")
+    # "A passenger car (Vehicle 2) was stopped directly behind the Zoox vehicle ... tried to pass the Zoox vehicle on
+    # the right side", told "was stationary": it stood in the AV's queue, in its lane, and moved out to pass.
+    original = _TEXTS["csvr-zoox-20240716-s322"][1]
+    text = original.replace("was stopped", "was stationary")
+    assert text != original
+    p = extract(text, "csvr-zoox-20240716-s322").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")
+    # "The Waymo AV was stopped on the right side of southwestbound [XXX] for a passenger pick-up when an SUV
+    # traveling in the rightmost lane ... passed", told "was stationary": the AV at the right edge, the rightmost
+    # lane on its left (the gold's R6/left).
+    original = _TEXTS["nhtsa-sgo-ads-30270-9436-v1"][1]
+    text = original.replace("was stopped", "was stationary")
+    assert text != original
+    p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
+    assert (p.position, p.lane) == ("R6", "left")

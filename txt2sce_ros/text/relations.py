@@ -305,7 +305,8 @@ _CURB_RANK = 10.0  # beyond the rightmost lane (9): the curb, the parking lane
 # The AV standing at the right curb, or at the right edge of the road ("was parked along the curb", "was stopped on
 # the right side of southwestbound [XXX] for a passenger pick-up").
 AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
-                           r"(?:parked|stopped|pulled\s+over)\s+(?:(?:at|along|against|by)\s+the\s+(?:right\s+)?curb\b|"
+                           r"(?:parked|stopped|stationary|standing|waiting|idling|pulled\s+over)\s+(?:(?:at|along|against|by)\s+the\s+"
+                           r"(?:right\s+)?curb\b|"
                            r"on\s+the\s+right\s+(?:side|edge|shoulder)\s+of\s+(?:the\s+)?(?:road|roadway|street|"
                            r"(?:north|south|east|west)+bound\b))", re.I)
 
@@ -431,7 +432,8 @@ def _ego_body_side(s: str) -> re.Match[str] | None:
 
 # "stopped behind EGO", "had been stopped directly behind EGO", "initially stopped behind EGO": standing in the
 # AV's queue, in its lane ("parked behind" stands at the curb; "from behind" says only where it came from).
-_STOPPED_BEFORE = compile_gated(r"\b(?:stopped|waiting|queued|idling)\b[^.,;]{0,30}$", re.I)
+_STOPPED_BEFORE = compile_gated(r"\b(?:stopped|stationary|standing|sitting|waiting|queued|idling|halted|at\s+(?:a\s+)?"
+                                r"(?:standstill|rest))\b[^.,;]{0,30}$", re.I)
 _BEHIND_AV = compile_gated(r"^behind\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|it)\b", re.I)
 
 

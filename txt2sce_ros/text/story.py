@@ -652,7 +652,8 @@ def ego_contact_part(d: Doc) -> tuple[str | None, str | None]:
 def _ego_parts(s: str) -> list[str]:
     """The AV's parts a sentence names: "the rear driver side of EGO", "EGO's front bumper", "EGO was struck on the
     passenger side", "... EGO, impacting its front fender"."""
-    parts = [m.group(1) for m in _PART_OF_EGO.finditer(s)]
+    # (the words after the contact's verb: "the scooter's front tire struck the rear bumper of EGO" names the rear)
+    parts = [_PART_END.split(m.group(1))[-1] for m in _PART_OF_EGO.finditer(s)]
     passive = _PASSIVE_CONTACT.search(s)
     if passive:
         parts.append(passive.group(1))  # "EGO was struck on a sensor attached to the rear ... by a minivan"
