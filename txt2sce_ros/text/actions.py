@@ -263,9 +263,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:lane\s+(?:line|divider|markings?|boundary)|(?:dividing|white|dashed)\s+(?:lane\s+)?line)"),
     # "moved in front of EGO", "got in front of EGO", "pulled into EGO's path", "cut EGO off": a move across the
     # AV's front; from a lane beside the AV it is a lane change into its lane (sequences.sequence), else no letter.
+    # ("cut sharply in front of EGO": any manner adverb; "moved into the path of EGO", "entered EGO's path": the
+    # AV's path named either way)
     ("Q", r"\b(?:mov|pull|came|com|got|get|swerv|dart|slid|slip|squeez|nos|jump|swung|swing|duck|veer|drift|edg|"
-          r"shift|steer)\w*\s+(?:over\s+|back\s+|out\s+)?(?:directly\s+|right\s+|just\s+|immediately\s+|suddenly\s+)?"
-          r"(?:in\s+front\s+of\s+EGO\b|into\s+(?:EGO's|our)\s+path\b)|\bcut(?:s|ting)?\s+EGO\s+off\b"),
+          r"shift|steer)\w*\s+(?:over\s+|back\s+|out\s+)?(?:(?:\w+ly|right|just)\s+)?"
+          r"(?:in\s+front\s+of\s+EGO\b|into\s+(?:(?:EGO's|our)\s+(?:travel\s+)?path|the\s+(?:travel\s+)?path\s+of\s+EGO)\b)|"
+          r"\bcut(?:s|ting)?\s+(?:\w+ly\s+)?in\s+front\s+of\s+EGO\b|"
+          r"\benter(?:ed|ing|s)?\s+(?:EGO's\s+(?:travel\s+)?path|the\s+(?:travel\s+)?path\s+of\s+EGO)\b|"
+          r"\bcut(?:s|ting)?\s+EGO\s+off\b"),
     ("d", r"\b(?:took|take|takes|taking|hung|hang|hangs|hanging)\s+a\s+left\b(?!\s+lane)|"
           rf"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?left\b|\bleft[- ]hand\s+turn\b|\bleft\s+turn{_NOT_A_TURN}\b|"
           r"\bunprotected\s+left\b(?!\s+turn\s+lane)"),
