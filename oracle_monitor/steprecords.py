@@ -92,11 +92,20 @@ class StepRun:
         self.commands.append(command)
 
 
+_DOUBLES: dict[int, struct.Struct] = {}
+
+
 def _doubles(values: Iterable[float], count: int) -> np.ndarray:
-    """`count` Python floats as a float64 array, by `np.fromiter` into an array of that size (a plain C loop of
-    PyFloat_AsDouble; `array.array` parses each item through a format, ~30 % more instructions, and `np.array` on a
-    list spends longer discovering types). A value that is not a number raises."""
-    return np.fromiter(values, dtype=np.float64, count=count)
+    """`count` Python floats as a float64 array: one `struct.pack` of native doubles (a C loop of
+    PyFloat_AsDouble and an 8-byte copy per item, ~2.7x faster than `np.fromiter`, which converts each item
+    through numpy's scalar machinery; `array.array` parses each item through a format). The packer of each count
+    is kept: a run has a few counts (the batch size and the last batch's). A value that is not a number raises."""
+    packer = _DOUBLES.get(count)
+    if packer is None:
+        if len(_DOUBLES) >= 64:
+            _DOUBLES.clear()
+        packer = _DOUBLES[count] = struct.Struct(f"@{count}d")
+    return np.frombuffer(packer.pack(*values), dtype=np.float64)
 
 
 def _ns(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

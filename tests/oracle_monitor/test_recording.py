@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import signal
+import struct
 import subprocess
 import sys
 import textwrap
@@ -470,3 +471,21 @@ def test_a_file_that_is_no_mcap_is_refused_before_reading(tmp_path: Path) -> Non
     (both / "a.mcap").write_bytes(b"junk")
     with pytest.raises(InputError, match=r"a\.mcap: not an MCAP file"):
         read_bag(both)
+
+
+def test_step_values_convert_to_the_same_doubles_as_numpy() -> None:
+    # `steprecords._doubles` packs the step values with struct; each double must be the one numpy would make,
+    # bit for bit (signed zero, infinities, NaN, ints and numpy scalars included), and a non-number must raise.
+    import math
+
+    import numpy as np
+
+    from oracle_monitor import steprecords
+
+    values = [0.0, -0.0, 1.5, -2.25e-300, 1e308, math.inf, -math.inf, math.nan, 3, np.float64(0.1), True]
+    got = steprecords._doubles(iter(values), len(values))
+    want = np.fromiter(values, dtype=np.float64, count=len(values))
+    assert got.dtype == np.float64 and got.tobytes() == want.tobytes()
+    for bad in (["x"], [None], [1.0, 2.0]):
+        with pytest.raises((struct.error, TypeError)):
+            steprecords._doubles(bad, 1)
