@@ -98,7 +98,7 @@ class RunWriter:
         if network is not None:
             self._raw_ordered(c.TOPIC_MAP_MARKERS, ros_io.road_markers_bytes(network))
             self._raw_ordered(c.TOPIC_SCENARIO_MARKERS,
-                              cdr.encode_marker_array(ros_io.scenario_markers(goal, lights, 0.0)))
+                              ros_io.scenario_markers_bytes(goal, tuple(lights), 0.0))
             self._shown_lights = lights
         sid = envelope.id if envelope else scenario_id
         self._w(c.TOPIC_RUN_STATUS, ros_io.string_msg(RunStatus(sid, "started").to_json()))
@@ -179,7 +179,7 @@ class RunWriter:
         if self._shown_lights is not None and frame.lights != self._shown_lights:
             # A light changed: redraw the goal and lights (rare; the comparison is all a step pays).
             items.append((c.TOPIC_SCENARIO_MARKERS,
-                          cdr.encode_marker_array(ros_io.scenario_markers(self._goal, frame.lights, frame.t))))
+                          ros_io.scenario_markers_bytes(self._goal, tuple(frame.lights), frame.t)))
             self._shown_lights = frame.lights
         items.append((c.TOPIC_EGO_ODOM, odom(frame.ego)))
         if command is not None:

@@ -88,3 +88,24 @@ def test_frames_through_the_fast_decoders_follow_each_light_change() -> None:
         assert out[fast] == out[slow] and out[fast] is not None
         got.append(out[fast].lights[0].state)
     assert got == states
+
+
+def test_scenario_marker_bytes_are_the_messages_serialised() -> None:
+    # The kept bytes must be what serialising the markers gives for these very inputs: a changed light, goal or
+    # time must not be answered from the cache.
+    from oracle_monitor.cdr import encode_marker_array
+
+    goal = Goal(10.0, -2.5, 0.3, 2.0)
+    red = (TrafficLightState("L1", SignalState.RED, 5.0, 1.0, 0.0, "1", (-1,)),)
+    green = (TrafficLightState("L1", SignalState.GREEN, 5.0, 1.0, 0.0, "1", (-1,)),)
+    seen = set()
+    for g, lights, t in ((goal, red, 0.0), (goal, green, 0.0), (goal, red, 1.5), (None, red, 0.0),
+                         (Goal(10.0, -2.5, 0.3, 3.0), red, 0.0), (goal, (), 0.0)):
+        for _ in range(2):                        # the second call is answered from the cache
+            got = ros_io.scenario_markers_bytes(g, lights, t)
+            assert got == encode_marker_array(ros_io.scenario_markers(g, lights, t))
+        markers = deserialize_message(got, MarkerArray).markers
+        assert [m.text for m in markers[1:]] == (["goal", "goal"] if g else []) + [
+            f"L1 {light.state.value}" for light in lights]
+        seen.add(got)
+    assert len(seen) == 6
