@@ -25,11 +25,10 @@ import json
 import re
 import struct
 import time
-from array import array
 from collections import Counter
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 from rosbags.rosbag2 import StoragePlugin, Writer, WriterError
@@ -91,6 +90,21 @@ def _fast_write(storage: Any, cid: int, ns: int, data: bytes | memoryview) -> No
 _CHUNK_HEAD = struct.Struct("<BQQQQIIQ")   # opcode 0x06, record length, start, end, size, CRC, "" (compression), size
 _INDEX_HEAD = struct.Struct("<BQHI")       # opcode 0x07, record length, channel, bytes of (time, offset) pairs
 _U64 = struct.Struct("<Q")
+
+
+def _step_times(received: Sequence[int | None], per_step: int, last: int) -> np.ndarray:
+    """The first log time of each step of a run: its receive time (None: now), made strictly increasing after
+    `last` with room for the step's `per_step` messages: t[0] = max(r[0], last + 1), t[j] = max(r[j], t[j-1] +
+    per_step). As u[j] = t[j] - j * per_step that is a running maximum, computed on the whole column."""
+    if None in received:
+        received = [time.time_ns() if r is None else r for r in received]
+    u = np.fromiter(received, dtype=np.int64, count=len(received))
+    shift = np.arange(len(u), dtype=np.int64) * per_step
+    u -= shift
+    u[0] = max(int(u[0]), last + 1)
+    np.maximum.accumulate(u, out=u)
+    u += shift
+    return u
 
 
 def _index_body(entries: list[Any]) -> bytes:
@@ -361,27 +375,24 @@ class BagRecorder:
             if isinstance(step, StepRun):
                 packer = step.packer
                 per_step = len(packer.offsets)
-                times = []
-                for received_ns in step.received:
-                    t = max(time.time_ns() if received_ns is None else received_ns, last + 1)
-                    times.append(t)
-                    last = t + per_step - 1
+                at = _step_times(step.received, per_step, last)
+                k = len(at)
+                last = int(at[-1]) + per_step - 1
                 if first is None:
-                    first = times[0]
-                at = np.frombuffer(array("q", times), dtype=np.int64)
+                    first = int(at[0])
                 if reserve is None:
                     parts.append(packer.pack_run(at, step.frames, step.commands))
                 else:
                     # Packed in place, at the chunk's end: what came before it is written first.
                     bio.writelines(parts)
                     parts.clear()
-                    packer.pack_run(at, step.frames, step.commands, out=reserve(packer.size * len(times)))
+                    packer.pack_run(at, step.frames, step.commands, out=reserve(packer.size * k))
                 for cid, flat in packer.index(at, pos):
                     index[cid].append(flat)
                 for cid in packer.topics_cids:
-                    written[cid] += len(times)
-                pos += packer.size * len(times)
-                n += per_step * len(times)
+                    written[cid] += k
+                pos += packer.size * k
+                n += per_step * k
                 continue
             received_ns, items = step
             t = max(time.time_ns() if received_ns is None else received_ns, last + 1)

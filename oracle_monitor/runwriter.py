@@ -25,7 +25,7 @@ from . import cdr
 from .messages import verdict_cdr, violations_cdr
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
-from .steprecords import StepPacker, StepRun, cast_key, step_packer
+from .steprecords import StepPacker, StepRun, cast_key, same_layout, step_packer
 
 
 #: Steps encoded together (see `RunWriter.frame`).
@@ -63,7 +63,8 @@ class RunWriter:
         # Steps waiting to be packed: (receive time, frame, command), or (receive time, None, [(topic, bytes)])
         # for a message written between them.
         self._steps: list[tuple[int, Frame | None, Any]] = []
-        self._drained = time.monotonic()
+        self._between = False                     # whether `_steps` holds a message written between steps
+        self._drained = time.time_ns()              # receive time of the last drain (see `frame`)
         self._goal: Goal | None = None
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
         self._last_layout: tuple | None = None     # (lights, cast, packer, (frame, command)) of the last checked step
@@ -76,6 +77,7 @@ class RunWriter:
             # Steps are waiting to be packed: the message joins them in order. (Draining them first, as before,
             # packed a short run of steps for every violation, each paying a batch's fixed cost.)
             self._steps.append((time.time_ns(), None, [(topic, data)]))
+            self._between = True
             return
         self._raw(topic, data)
 
@@ -114,22 +116,45 @@ class RunWriter:
             for topic, data in self._encode(frame, command):
                 self._raw(topic, data)
             return
-        self._steps.append((time.time_ns(), frame, command))
-        if len(self._steps) >= BATCH_STEPS or time.monotonic() - self._drained >= self.rec.flush_interval:
+        ns = time.time_ns()
+        self._steps.append((ns, frame, command))
+        # The interval is told by the receive time the step already has (a second clock read per step cost more
+        # than the test): a wall clock set back only delays a drain until the batch is full.
+        if len(self._steps) >= BATCH_STEPS or ns - self._drained >= self.rec.flush_interval * 1e9:
             self._drain()
 
     def _drain(self) -> None:
         steps, self._steps = self._steps, []
-        self._drained = time.monotonic()
+        if not steps:
+            return
+        self._drained = steps[-1][0]
         out: list[object] = []
+        received, frames, commands = zip(*steps)
+        start = 0
+        if self._between:                       # messages written between steps (`_raw_ordered`): their own entries
+            self._between = False
+            for i, frame in enumerate(frames):
+                if frame is None:
+                    self._pack(received[start:i], frames[start:i], commands[start:i], out)
+                    self.rec.channel(commands[i][0][0])
+                    out.append((received[i], commands[i]))
+                    start = i + 1
+        self._pack(received[start:], frames[start:], commands[start:], out)
+        self.rec.write_steps(out)
+
+    def _pack(self, received: tuple, frames: tuple, commands: tuple, out: list[object]) -> None:
+        """Consecutive steps into `out`: as one `StepRun` when they share a layout and redraw no lights (nearly
+        always; told by `same_layout` without a Python loop over the steps), else step by step."""
+        if not frames:
+            return
+        shown = self._shown_lights
+        lights = frames[0].lights
+        if (shown is None or lights is shown or lights == shown) and same_layout(frames, commands):
+            out.append(StepRun(self._packer(frames[0], commands[0]), received, frames, commands))
+            return
         run: StepRun | None = None
         channel = self.rec.channel
-        for ns, frame, command in steps:
-            if frame is None:                   # a message written between steps (`_raw_ordered`): its own entry
-                channel(command[0][0])
-                out.append((ns, command))
-                run = None
-                continue
+        for ns, frame, command in zip(received, frames, commands):
             shown = self._shown_lights
             if shown is not None and frame.lights is not shown and frame.lights != shown:
                 # A light changed: this step also redraws the goal and lights, so it takes the per-message path.
@@ -144,7 +169,6 @@ class RunWriter:
                     run = StepRun(packer)       # consecutive steps of one layout are packed together
                     out.append(run)
                 run.add(ns, frame, command)
-        self.rec.write_steps(out)
 
     def _packer(self, frame: Frame, command: ControlCommand | None) -> StepPacker:
         """The compiled layout of this kind of step (a few per run: the light states and the cast change

@@ -489,3 +489,96 @@ def test_step_values_convert_to_the_same_doubles_as_numpy() -> None:
     for bad in (["x"], [None], [1.0, 2.0]):
         with pytest.raises((struct.error, TypeError)):
             steprecords._doubles(bad, 1)
+
+
+def test_layout_changes_inside_a_batch_record_the_per_message_bytes(tmp_path: Path,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    # A batch is packed as one run only when `same_layout` says every step has the first one's layout; each kind
+    # of change inside a batch must split it where the per-message path would differ: an entity leaving and
+    # coming back, one renamed, one recategorised (an equal name in a new string object is no change), lights
+    # changing with no view markers shown, steps without a command among steps with one; and receive times that
+    # repeat and go back, which the log times must still order.
+    import dataclasses
+    import itertools
+
+    from oracle_monitor import runwriter
+
+    sim, steps = _closed_loop("traffic_lights")
+    edited = []
+    for k, (f, cmd) in enumerate(steps[:600]):
+        objects = f.objects
+        if 40 <= k < 45:
+            objects = objects[1:]
+        elif k == 70:
+            objects = (dataclasses.replace(objects[0], name="renamed"), *objects[1:])
+        elif k == 90:
+            objects = (dataclasses.replace(objects[0], category="bicycle"), *objects[1:])
+        elif k >= 100:
+            objects = (dataclasses.replace(objects[0], name="".join(objects[0].name)), *objects[1:])
+        lights = f.lights
+        if k in (300, 301, 420):
+            lights = tuple(dataclasses.replace(light, state=SignalState.YELLOW) for light in lights)
+        edited.append((dataclasses.replace(f, objects=objects, lights=lights),
+                       None if k % 150 in (7, 8, 9) else cmd))
+
+    def per_message_drain(self) -> None:
+        queued, self._steps = self._steps, []
+        self.rec.write_steps([(ns, self._encode(f, cmd)) for ns, f, cmd in queued])
+
+    def record(path: Path, drain) -> bytes:
+        ticks = itertools.chain.from_iterable((t, t, t - 5_000) for t in itertools.count(1_700_000_000_000_000_000,
+                                                                                       1000))
+        monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(ticks))
+        monkeypatch.setattr(runwriter.RunWriter, "_drain", drain)
+        with RunWriter(path, flush_interval=1e9) as w:
+            w.begin(None, sim.goal, "x")
+            for f, cmd in edited:
+                w.frame(f, cmd)
+        return (path / "bag.mcap").read_bytes()
+
+    ours = record(tmp_path / "packed" / "bag", runwriter.RunWriter._drain)
+    theirs = record(tmp_path / "per_message" / "bag", per_message_drain)
+    assert ours == theirs
+    times = [m.log_time_ns for m in read_bag(tmp_path / "packed" / "bag").messages()]
+    assert times == sorted(times) and len(set(times)) == len(times)
+
+
+def test_same_layout_says_no_to_each_kind_of_change() -> None:
+    import dataclasses
+
+    from oracle_monitor.steprecords import same_layout
+
+    sim, steps = _closed_loop("traffic_lights")
+    frames = [f for f, _ in steps[:50]]
+    commands = [cmd for _, cmd in steps[:50]]
+    assert same_layout(frames, commands) and same_layout(frames, [None] * 50)
+    f = frames[20]
+    changes = [
+        dataclasses.replace(f, objects=f.objects[1:]),
+        dataclasses.replace(f, objects=(*f.objects, f.objects[0])),
+        dataclasses.replace(f, objects=(dataclasses.replace(f.objects[1], name="other"), f.objects[0])),
+        dataclasses.replace(f, ego=dataclasses.replace(f.ego, category="truck")),
+        dataclasses.replace(f, lights=f.lights[1:]),
+    ]
+    for changed in changes:
+        assert not same_layout([*frames[:20], changed, *frames[21:]], commands)
+    assert not same_layout(frames, [*commands[:49], None])
+    renamed_equal = dataclasses.replace(f, ego=dataclasses.replace(f.ego, name="".join(["", f.ego.name])))
+    assert same_layout([*frames[:20], renamed_equal, *frames[21:]], commands)
+
+
+def test_step_times_follow_the_stepwise_rule() -> None:
+    import random
+
+    from oracle_monitor.recorder import _step_times
+
+    rng = random.Random(7)
+    for _ in range(200):
+        n, per_step, last = rng.randint(1, 40), rng.randint(1, 9), rng.randint(0, 10**6)
+        received = [rng.choice((last + rng.randint(-500, 500), rng.randint(0, 2 * 10**6))) for _ in range(n)]
+        want, prev = [], last
+        for r in received:                      # the rule, step by step
+            t = max(r, prev + 1)
+            want.append(t)
+            prev = t + per_step - 1
+        assert _step_times(received, per_step, last).tolist() == want
