@@ -1641,6 +1641,20 @@ PROBES: tuple[Probe, ...] = (
           lambda sk: ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_ or ""),
           lambda w: (["bicycle"], [], "npc1") if "bicyclist" in w else
           ([], ["parked_vehicle"], "obs1")),
+    Probe("another party's contact with an object or a third party, or a contact only believed, is not the AV's",
+          "The Waymo AV was traveling north on [XXX]. {W}",
+          ("As a sedan was passing the Waymo AV, it swerved left and the driver side made contact with the median curb.",
+           "A pickup truck passing the Waymo AV on the left struck a traffic cone.",
+           "As the Waymo AV slowed, an SUV behind it made contact with a pole.",
+           "The safety driver believed the Waymo AV had struck a rock, but no contact was found.",
+           "The operator thought that the Waymo AV had run over debris."),
+          lambda sk: (sk.collision.with_, sk.collision.type), (None, "none")),
+    Probe("a move that ends in the AV itself is a contact",
+          "The Cruise AV was stopped at a red light when an SUV ran the light and collided with a sedan. The SUV then "
+          "{w} the Cruise AV.",
+          ("spun and continued into", "skidded into", "slid into", "careened into", "drifted into", "spun into",
+           "proceeded into", "rolled backward into"),
+          lambda sk: next((p.category for p in sk.npcs if p.id == sk.collision.with_), None), "car"),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

@@ -302,3 +302,19 @@ def test_an_av_named_only_as_the_truck_of_a_named_operator_and_its_own_parts_are
     sk = extract(_SGO["nhtsa-sgo-ads-10003-3210-v1"][1], "nhtsa-sgo-ads-10003-3210-v1")
     assert (len(sk.npcs), [o.category for o in sk.obstacles]) == (0, ["barrier"])
     assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")
+
+
+def test_a_contact_between_another_party_and_an_object_or_believed_is_not_the_av_s() -> None:
+    # "As the SUV in the left lane was passing the Waymo AV, it maneuvered to the left in its lane, and the driver side
+    # made contact with the center concrete median curb": the SUV met the curb, the AV met nothing (gold: no contact).
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-9376-v1"][1], "nhtsa-sgo-ads-30270-9376-v1")
+    assert (sk.collision.with_, sk.collision.type) == (None, "none")
+    # "subject vehicle was lightly struck from behind by a white Mazda3. Having seen debris on the roadway, the driver
+    # and operator believed they had run over a rock": the rock is a belief; the Mazda struck the AV (gold).
+    sk = extract(_SGO["nhtsa-sgo-ads-30590-3431-v1"][1], "nhtsa-sgo-ads-30590-3431-v1")
+    assert ([p.category for p in sk.npcs], [o.category for o in sk.obstacles]) == (["car"], [])
+    assert (sk.collision.with_, sk.collision.type) == ("npc1", "rear_end")
+    # "an Infiniti Q60 ... made contact with a black sedan ... The Infiniti Q60 spun after contact and continued into
+    # the Cruise AV": the Infiniti's contact with the sedan is theirs; its move into the AV is the AV's (gold: npc1).
+    sk = extract(_SGO["csvr-cruise-20230721-s263"][1], "csvr-cruise-20230721-s263")
+    assert (len(sk.npcs), sk.collision.with_) == (2, "npc1")

@@ -212,6 +212,9 @@ CONTACT = compile_gated(
     r"on(?:to)?)(?=\s+(?:the|a|an)\s+(?:[\w-]+\s+){0,2}(?:curb|kerb|median|island|sidewalk|divider)s?\b)|"
     r"(?:swerved|veered)\s+into\s+(?:the\s+)?(?:(?:front|rear|driver|passenger|left|right|side|door|bumper|fender|"
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
+    # any move that ends in the AV itself ("The Infiniti Q60 spun after contact and continued into the Cruise AV")
+    r"(?:proceeded|continued|spun|skidded|slid|careened|moved|went|came|traveled|travelled|drifted|lurched|"
+    r"accelerated|rolled|backed|reversed)\s+(?:forward\s+|backward\s+|back\s+)?into\s+EGO\b(?!'s)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
     r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs)|"
     # a contact told as an event ("a minor contact with the parked car's mirror occurs")

@@ -138,6 +138,29 @@ def summary_sentences(sents: list[str]) -> set[int]:
     return out
 
 
+# A contact told as a belief ("the driver and operator believed they had run over a rock and did not realize they
+# were hit by the vehicle"): no contact.
+_BELIEVED = compile_gated(r"\b(?:believed|believing|thought|thinking|assumed|assuming|suspected|presumed)\s+(?:that\s+)?"
+                          r"(?:\w+\s+){0,4}$", re.I)
+_CLAUSE_END = compile_gated(r"[,;.]|\b(?:and|when|while|as|then|before|after|but)\b", re.I)
+
+
+def _between_others(d: Doc, i: int, m: re.Match[str]) -> bool:
+    """Is contact `m` of sentence `i` one between another party and a thing that is not the AV ("As the SUV ... was
+    passing EGO, it maneuvered to the left in its lane, and the driver side made contact with the center concrete
+    median curb")? Its doer is a party, what it met (after the verb, in its clause) is another party or an object,
+    and the AV is named neither there nor as the thing met ("was struck by a sedan" tells the doer after "by")."""
+    s = d.sents[i]
+    who = who_for(m.start(), d.ments[i], None)
+    if who is None or who < 0 or d.ents[who].kind != "party":
+        return False
+    end = _CLAUSE_END.search(s, m.end())
+    clause_end = end.start() if end else len(s)
+    met = [x for x in d.ments[i] if m.end() <= x.start < clause_end and x.kind in ("party", "obstacle", "ego", "egod")]
+    return bool(met) and met[0].kind in ("party", "obstacle") and met[0].entity not in (-1, who) and \
+        not fre.search(r"\bby\b|\bEGO", s[m.end():met[0].start], re.I) and "EGO" not in s[m.end():clause_end]
+
+
 def find_contact(d: Doc) -> None:
     """The AV's contact: the last non-negated contact phrase in a sentence about the AV (summaries aside, unless
     nothing else tells it), and the party or object nearest that phrase."""
@@ -162,6 +185,10 @@ def find_contact(d: Doc) -> None:
                 r"\b(?:unable|could\s+not|couldn't|failed)\s+to\s+avoid\b", before, re.I)
             if negated or fre.search(r"\bneither\b|\bno\s+(?:other\s+)?(?:vehicles?|contact)\b", s, re.I):
                 continue
+            if _BELIEVED.search(s, max(0, m.start() - 50), m.start()):
+                continue  # "believed they had run over a rock": what the driver thought, not what happened
+            if _between_others(d, i, m):
+                continue  # "it maneuvered to the left, and the driver side made contact with the median curb"
             others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
             partner = None
             if others:
