@@ -102,6 +102,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'spun after contact and continued into the Cruise AV, damaging the front bumper fascia of the Cruise AV. '
         'The driver of the Infiniti Q60 was transported by police. There were no reported injuries and both the '
         'Infiniti Q60 and the black sedan were towed from the scene.'),
+    'csvr-cruise-20230728-s266': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 266, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'northbound on Van Ness Avenue between California Street and Sacramento Street. As the Cruise AV was '
+        'passing through the intersection with Sacramento Street on a green light, a bag lying on the '
+        'roadway blew in front of the Cruise AV. The Cruise AV braked for the object, and a white pickup '
+        'truck traveling behind the Cruise AV rear-ended the Cruise AV, damaging the rear right bumper, rear '
+        'right quarter panel, and rear windshield. The driver of the white pickup truck left the scene '
+        'without exchanging information. There were no reported injuries and the Cruise AV was towed.'),
     'csvr-mercedes-benz-20220519-s161': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "161, column 'Accident Detail Description'), transcribed",

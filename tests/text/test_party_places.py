@@ -215,3 +215,10 @@ def test_the_same_scene_told_with_other_common_verbs_places_the_party_alike() ->
     assert text != original
     p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
     assert (p.position, p.lane) == ("R6", "left")
+    # "a white pickup truck traveling behind the Cruise AV rear-ended the Cruise AV, damaging the rear right bumper,
+    # rear right quarter panel", told "traveling behind it": the pronoun is the AV, the truck in its lane (R6/same).
+    original = _TEXTS["csvr-cruise-20230728-s266"][1]
+    text = original.replace("traveling behind the Cruise AV", "traveling behind it")
+    assert text != original
+    p = extract(text, "csvr-cruise-20230728-s266").npcs[0]
+    assert (p.position, p.lane) == ("R6", "same")

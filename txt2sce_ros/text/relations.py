@@ -81,7 +81,8 @@ _BODY_SIDE = compile_gated(rf"\b{_SIDE}[- ](?:(?:front|rear|back|side)[- ])?{_PA
 _INTO = compile_gated(r"\b(?:into|onto|entered|entering|enters|enter|toward|towards|cut\s+in(?:to)?)\s+(?:the\s+)?$", re.I)
 _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(?:directly\s+|closely\s+)?behind|"
                            r"(?:directly\s+|closely\s+)?following)\s+"  # "a sedan following EGO" travels behind it
-                           r"(?:the\s+(?:first\s+|second\s+)?)?EGO\b"
+                           # ("a white pickup truck traveling behind it rear-ended EGO": the AV named by a pronoun)
+                           r"(?:(?:the\s+(?:first\s+|second\s+)?)?EGO|it|us)\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO|in\s+the\s+travel\s+lane)\b", re.I)
 _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
