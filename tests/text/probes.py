@@ -2551,6 +2551,20 @@ PROBES: tuple[Probe, ...] = (
            "intruded into the Waymo AV's lane",
           ),
           _npc_actions, [("moving", "af")]),
+    _scenes("a party's turn told only by headings: the side from its heading before to the one after (session 17)",
+            lambda sk: [p.actions for p in sk.npcs], tuple(
+                ("The Waymo AV was traveling northbound on Mission Street. A sedan traveling " + w + " and made "
+                 "contact with the front bumper of the Waymo AV.", [want]) for w, want in (
+                    ("eastbound on 16th Street turned onto northbound Mission Street", "ad"),
+                    ("westbound on 16th Street turned onto northbound Mission Street", "ae"),
+                    ("eastbound on 16th Street turned onto southbound Mission Street", "ae"),
+                    ("westbound on 16th Street turned onto southbound Mission Street", "ad"),
+                    ("southbound on Mission Street turned onto eastbound 16th Street", "ad"),
+                    ("southbound on Mission Street turned onto westbound 16th Street", "ae"),
+                    ("eastbound on 16th Street made a turn onto northbound Mission Street", "ad"),
+                    ("east on 16th Street turned north onto Mission Street", "ad"),
+                    ("west on 16th Street turned south onto Mission Street", "ad"),
+                    ("eastbound on 16th Street was turning onto northbound Mission Street", "d")))),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -523,6 +523,24 @@ class Act:
     on_its_way: bool = False
 
 
+#: The heading a turn ends on, named after it: "turned north onto X", "turned to head north".
+_TURNED_TO = compile_gated(rf"\bturn(?:ed|ing|s)?\s+(?:to\s+(?:head|travel|go)\s+)?({_DIR})(?:bound|ward)?\b", re.I)
+
+
+def _party_turn(s: str, start: int, b: int, e: int) -> str | None:
+    """A party's turn whose side is told only by headings ("a sedan traveling eastbound on 16th Street turned onto
+    northbound Mission Street", "traveling west ... turned south onto X"): from the last heading told of the party
+    before the turn to the first after it in the same clause (not the AV's, told before the party's mention)."""
+    came = [m for m in _HEADING.finditer(s, start, b)]
+    clause = fre.split(r"[,;]", s[b:e + 80])[0]
+    went = _TURNED_TO.search(clause) or _HEADING.search(clause)
+    if not came or went is None:
+        return None
+    h0 = CARDINALS[next(g for g in came[-1].groups() if g).lower()]
+    h1 = CARDINALS[next(g for g in went.groups() if g).lower()]
+    return {90: "e", 270: "d", 180: "j"}.get((h1 - h0) % 360)
+
+
 def heading_of(s: str) -> int | None:
     """The first compass heading in `s`, in degrees (north 0, clockwise)."""
     m = _HEADING.search(s)
@@ -793,6 +811,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             elif fre.search(r"(?:\b(?:was|were|is|are|while|and)|,)\s*$", before, re.I):
                 code = "S"  # "was yielding", "while yielding", ", yielding", "was stopped ... and yielding": where
                 # the AV stood waiting (no event); told in the present ("is yielding") as in the past
+        if code == "T" and who >= 0:
+            own = [m for m in ments if m.entity == who and m.end <= b]
+            code = (_party_turn(s, own[-1].start, b, e) if own else None) or code
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))
