@@ -1655,6 +1655,12 @@ PROBES: tuple[Probe, ...] = (
           ("spun and continued into", "skidded into", "slid into", "careened into", "drifted into", "spun into",
            "proceeded into", "rolled backward into"),
           lambda sk: next((p.category for p in sk.npcs if p.id == sk.collision.with_), None), "car"),
+    Probe("a line stretched across the road is an object ('other'), as a fallen cable is",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a cord draped across the roadway", "a rope stretched across the road", "an extension cord lying in the "
+           "road", "a garden hose across its lane", "caution tape strung across the street", "a banner that had "
+           "fallen into the roadway", "a string of lights hanging over the road"),
+          lambda sk: [o.category for o in sk.obstacles], ["other"]),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

@@ -787,6 +787,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'preparing to exit the Waymo AV. Both vehicles sustained damage. Waymo is reporting this crash under '
         'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10602-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10602, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 1:29 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a non-powered cord on [XXX] at [XXX]. The Waymo '
+        'AV was traveling southbound on [XXX] when the front of the Waymo AV made contact with a cord that '
+        'was draped across the roadway and attached to a plastic chair in the opposing lane. At the time of '
+        "the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo '
+        'may supplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-10630-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10630, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -101,3 +101,12 @@ def test_a_possessive_printed_without_its_apostrophe_names_the_same_owner() -> N
         assert [p.category for p in other.npcs] == [p.category for p in told.npcs], rid
         assert [o.category for o in other.obstacles] == [o.category for o in told.obstacles], rid
         assert other.collision == told.collision, rid
+
+
+def test_a_cord_across_the_road_is_an_object_of_its_own_kind() -> None:
+    # "the front of the Waymo AV made contact with a cord that was draped across the roadway and attached to a
+    # plastic chair in the opposing lane": the cord is what the AV met, an `other` object like a fallen cable (gold);
+    # the chair it was tied to is no second obstacle.
+    sk = _sketch("nhtsa-sgo-ads-30270-10602-v1")
+    assert [o.category for o in sk.obstacles] == ["other"]
+    assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")

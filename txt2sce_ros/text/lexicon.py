@@ -177,6 +177,9 @@ OBSTACLE_HEADS: dict[str, str] = {
     # a chain hung across an entrance or a lot's lane closes it as a gate does ("made contact with a hanging chain
     # separating a section of the parking lot"); not "a chain reaction" (mentions.find_mentions)
     "chain": "barrier",
+    # a line stretched across the road is like a fallen cable ("a cord that was draped across the roadway")
+    "cord": "other", "rope": "other", "extension cord": "other", "hose": "other", "string": "other",
+    "caution tape": "other", "tape": "other", "banner": "other",
     # Devices set out in rows, named in the plural ("traffic pylons on the left edge of the leftmost lane ... Due to
     # the encroaching city bus and the pylons ..., the Waymo AV began to brake"): the row is one obstacle when the AV
     # met it or acted for it (the study gold of csvr-waymo-20201229-s69 counts one cone); other plural objects stay
