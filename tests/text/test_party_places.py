@@ -222,3 +222,8 @@ def test_the_same_scene_told_with_other_common_verbs_places_the_party_alike() ->
     assert text != original
     p = extract(text, "csvr-cruise-20230728-s266").npcs[0]
     assert (p.position, p.lane) == ("R6", "same")
+    # nhtsa-sgo-ads-30270-9436-v1 told "had stopped on the right side of southwestbound [XXX]": the AV at the curb
+    # all the same.
+    text = _TEXTS["nhtsa-sgo-ads-30270-9436-v1"][1].replace("was stopped", "had stopped")
+    p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
+    assert (p.position, p.lane) == ("R6", "left")

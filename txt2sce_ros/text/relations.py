@@ -305,7 +305,7 @@ def av_lane_rank(d: Doc) -> float | None:
 _CURB_RANK = 10.0  # beyond the rightmost lane (9): the curb, the parking lane
 # The AV standing at the right curb, or at the right edge of the road ("was parked along the curb", "was stopped on
 # the right side of southwestbound [XXX] for a passenger pick-up").
-AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
+AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|had|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
                            r"(?:parked|stopped|stationary|standing|waiting|idling|pulled\s+over)\s+(?:(?:at|along|against|by)\s+the\s+"
                            r"(?:right\s+)?curb\b|"
                            r"on\s+the\s+right\s+(?:side|edge|shoulder)\s+of\s+(?:the\s+)?(?:road|roadway|street|"
