@@ -2571,6 +2571,13 @@ PROBES: tuple[Probe, ...] = (
                     ("east on 16th Street turned north onto Mission Street", "ad"),
                     ("west on 16th Street turned south onto Mission Street", "ad"),
                     ("eastbound on 16th Street was turning onto northbound Mission Street", "d")))),
+    Probe("the AV's turn told only by compass words: the side from its heading before to the one after (session 17)",
+          "A Zoox vehicle was traveling {w} when a sedan traveling behind it struck its rear bumper.",
+          ("eastbound on Koval Lane and turned onto northbound Flamingo Road",
+           "westbound on Koval Lane and turned onto northbound Flamingo Road",
+           "east on Koval Lane and turned north onto Flamingo Road", "west on Koval Lane and turned south onto Flamingo Road",
+           "north on Koval Lane and turned east onto Flamingo Road", "south on Koval Lane and turned east onto Flamingo Road"),
+          lambda sk: sk.ego.actions, lambda w: "e" if w.startswith(("westbound", "north on")) else "d"),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -527,10 +527,11 @@ class Act:
 _TURNED_TO = compile_gated(rf"\bturn(?:ed|ing|s)?\s+(?:to\s+(?:head|travel|go)\s+)?({_DIR})(?:bound|ward)?\b", re.I)
 
 
-def _party_turn(s: str, start: int, b: int, e: int) -> str | None:
-    """A party's turn whose side is told only by headings ("a sedan traveling eastbound on 16th Street turned onto
-    northbound Mission Street", "traveling west ... turned south onto X"): from the last heading told of the party
-    before the turn to the first after it in the same clause (not the AV's, told before the party's mention)."""
+def turn_by_headings(s: str, start: int, b: int, e: int) -> str | None:
+    """A turn whose side is told only by headings ("a sedan traveling eastbound on 16th Street turned onto
+    northbound Mission Street", "traveling west ... turned south onto X"): from the last heading told from `start`
+    (a party's mention, so not the AV's told before it) to the turn at `b`, to the first after it in the same clause.
+    """
     came = [m for m in _HEADING.finditer(s, start, b)]
     clause = fre.split(r"[,;]", s[b:e + 80])[0]
     went = _TURNED_TO.search(clause) or _HEADING.search(clause)
@@ -813,7 +814,7 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 # the AV stood waiting (no event); told in the present ("is yielding") as in the past
         if code == "T" and who >= 0:
             own = [m for m in ments if m.entity == who and m.end <= b]
-            code = (_party_turn(s, own[-1].start, b, e) if own else None) or code
+            code = (turn_by_headings(s, own[-1].start, b, e) if own else None) or code
         if code == "Y":
             # "waiting to turn left ... began its turn": the turn it was said to wait for
             side = _TURN_SIDE.findall(s[:b]) or _TURN_SIDE.findall(" ".join(prior))

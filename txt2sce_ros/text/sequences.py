@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from ..sketch import Party
-from .actions import Act, turn_from_headings, who_for
+from .actions import Act, turn_by_headings, turn_from_headings, who_for
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity
@@ -400,7 +400,9 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
                 # turn lane ... when EGO slowed down": so with a lane change under way).
                 prefix = [turning[-1], last]
         elif last.code == "T":
-            turn = turn_from_headings(d.sents[last.sent])
+            # ("was traveling east on X and turned north onto Y": compass words with no "-bound")
+            turn = turn_from_headings(d.sents[last.sent]) or turn_by_headings(
+                d.sents[last.sent], 0, last.pos, last.pos + len(last.text))
             if turn:
                 prefix = [Act(last.sent, last.pos, turn, -1, last.text)]
         elif last.code == "i" and any(a.code == "h" for a in pre[:-1]):
