@@ -1661,6 +1661,20 @@ PROBES: tuple[Probe, ...] = (
            "road", "a garden hose across its lane", "caution tape strung across the street", "a banner that had "
            "fallen into the roadway", "a string of lights hanging over the road"),
           lambda sk: [o.category for o in sk.obstacles], ["other"]),
+    Probe("more objects in the road and animals, by their names (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it made contact with {w}.",
+          ("a sheet of plywood in the roadway", "a cooler in the roadway", "a suitcase in the roadway", "a plastic "
+           "container in the road", "a furniture dolly", "a brick in the road", "a cinder block", "a bumper cover "
+           "lying in the lane", "a muffler in the road", "a jersey barrier", "a water barrier", "a garage door",
+           "a parking gate", "a puppy", "a fox", "a chicken", "a peacock", "a goat", "scaffolding"),
+          lambda sk: [o.category for o in sk.obstacles] + [p.category for p in sk.npcs],
+          lambda w: [next(c for c, words in (("barrier", ("jersey", "water barrier", "garage", "gate")),
+                                            ("animal", ("puppy", "fox", "chicken", "peacock", "goat")),
+                                            ("other", ("scaffolding",)))
+                          if any(x in w for x in words)) if any(x in w for x in ("jersey", "water barrier", "garage",
+                                                                                   "gate", "puppy", "fox", "chicken",
+                                                                                   "peacock", "goat", "scaffolding"))
+                     else "debris"]),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

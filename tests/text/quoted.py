@@ -1282,6 +1282,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV "
         'sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
         'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9355-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9355, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 12:57 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, '
+        'Arizona was in a collision with a piece of debris on [XXX] near [XXX]. The Waymo AV was traveling '
+        'westbound on [XXX] in the right lane when the front passenger side of the Waymo AV made contact '
+        "with a piece of debris that was in the lane of travel. At the time of the impact, the Waymo AV's "
+        'Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this '
+        'crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its '
+        'reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9371-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9371, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -110,3 +110,15 @@ def test_a_cord_across_the_road_is_an_object_of_its_own_kind() -> None:
     sk = _sketch("nhtsa-sgo-ads-30270-10602-v1")
     assert [o.category for o in sk.obstacles] == ["other"]
     assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")
+
+
+def test_what_lay_in_the_lane_named_by_more_nouns_is_the_object_met() -> None:
+    # "the front passenger side of the Waymo AV made contact with a piece of debris that was in the lane of travel"
+    # (gold: one debris, R5 same), told with what the debris was: the same object, of its kind.
+    text = _TEXTS["nhtsa-sgo-ads-30270-9355-v1"][1]
+    assert text.count("a piece of debris") == 2
+    for name, kind in (("a cooler", "debris"), ("a bumper cover", "debris"), ("a cinder block", "debris"),
+                       ("a puppy", "animal"), ("a suitcase", "debris")):
+        sk = extract(text.replace("a piece of debris", name), "rewritten")
+        assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [(kind, "R5", "same")], name
+        assert (sk.collision.with_, len(sk.npcs)) == ("obs1", 0), name

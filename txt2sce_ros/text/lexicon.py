@@ -177,6 +177,15 @@ OBSTACLE_HEADS: dict[str, str] = {
     # a chain hung across an entrance or a lot's lane closes it as a gate does ("made contact with a hanging chain
     # separating a section of the parking lot"); not "a chain reaction" (mentions.find_mentions)
     "chain": "barrier",
+    # more of what falls or is left in the road, road furniture, and animals (not "board", "pipe", "beam", "bear":
+    # "on board", "its exhaust pipe", "high beams", "bear left")
+    "plywood": "debris", "cooler": "debris", "suitcase": "debris", "luggage": "debris", "container": "debris",
+    "dolly": "debris", "brick": "debris", "cinder block": "debris", "concrete block": "debris", "trash": "debris",
+    "garbage": "debris", "bumper cover": "debris", "muffler": "debris", "car part": "debris", "vehicle part": "debris",
+    "scaffolding": "other", "jersey barrier": "barrier", "water barrier": "barrier", "garage door": "barrier",
+    "parking gate": "barrier", "puppy": "animal", "kitten": "animal", "fox": "animal", "chicken": "animal",
+    "peacock": "animal", "goat": "animal", "sheep": "animal", "pig": "animal", "elk": "animal", "moose": "animal",
+    "hawk": "animal", "crow": "animal", "gull": "animal",
     # a line stretched across the road is like a fallen cable ("a cord that was draped across the roadway")
     "cord": "other", "rope": "other", "extension cord": "other", "hose": "other", "string": "other",
     "caution tape": "other", "tape": "other", "banner": "other",
