@@ -353,7 +353,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
           "advanc", "ahead", "ed up", "es up", "ing up", "ve up"),
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"),
-    "P": ("pull", "swung", "swing", "enter", "nos", "eas", "edg", "inch"),
+    "P": ("pull", "swung", "swing", "enter", "nose", "nosi", "ease", "easi", "edge", "edgi", "inch"),
     "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
     "d": ("left",), "e": ("right",), "T": ("turn",),
     "b": ("accelerat", "sped", "speeding", "increas", "speed", "gas", "throttle", "floor", "gun"),
