@@ -2592,6 +2592,21 @@ PROBES: tuple[Probe, ...] = (
            "east on Koval Lane and turned north onto Flamingo Road", "west on Koval Lane and turned south onto Flamingo Road",
            "north on Koval Lane and turned east onto Flamingo Road", "south on Koval Lane and turned east onto Flamingo Road"),
           lambda sk: sk.ego.actions, lambda w: "e" if w.startswith(("westbound", "north on")) else "d"),
+    Probe("a party merging onto the freeway from its ramp, in the ways English tells it (session 17)",
+          "The Zoox vehicle was traveling northbound on Interstate 15 in the rightmost lane. A pickup truck {w} and "
+          "struck the passenger side of the Zoox vehicle.",
+          (
+           "merged onto the freeway from the on-ramp", "entered the freeway from the on-ramp",
+           "merged from the on-ramp", "entering from the on-ramp merged into the Zoox vehicle's lane",
+           "came down the on-ramp and merged", "joined the freeway from the on-ramp", "merged onto Interstate 15",
+           "entered Interstate 15 from the on-ramp", "merged onto the highway", "entered the highway",
+           "merged in from the ramp", "merged from the entrance ramp", "merged from the acceleration lane",
+           "moved from the merge lane into the Zoox vehicle's lane", "merged from the onramp",
+           "merged from the on ramp", "merged into traffic from the on-ramp", "on the on-ramp merged left",
+           "traveling on the on-ramp merged into the rightmost lane", "attempted to merge onto the freeway",
+           "began to merge onto the freeway", "tried to merge from the on-ramp", "merges onto the freeway",
+          ),
+          lambda sk: [(p.position, p.lane, p.actions) for p in sk.npcs], [("R5", "right", "af")]),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -214,7 +214,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?right\b"
           r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))"),
     # Onto a freeway from its ramp is a merge into the lane beside it ("entered the freeway").
-    ("F", r"\benter(?:ed|ing|s)?\s+(?:onto\s+)?the\s+(?:freeway|highway|interstate|expressway|motorway)\b|"
+    # ("joined the freeway", "entered Interstate 15 from the on-ramp": the road named by its number)
+    ("F", r"\b(?:enter|join)(?:ed|ing|s)?\s+(?:onto\s+)?(?:the\s+(?:freeway|highway|interstate|expressway|motorway)\b|"
+          r"(?:Interstate|I-|Highway|Hwy|US|SR|Route|State\s+Route)\s*-?\s*\d+\b(?=[^.]{0,40}\bramp\b))|"
           r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|es|e)\s+lanes?\b|\blane\s+change\b|"
           r"\b(?:switch|shift)(?:ed|ing|es|s)?\s+lanes\b|"
           # Any verb of motion into the AV's lane ("darted", "nosed", "squeezed", "moved laterally into EGO's lane"):
@@ -354,7 +356,8 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"),
     "P": ("pull", "swung", "swing", "enter", "nose", "nosi", "ease", "easi", "edge", "edgi", "inch"),
-    "g": ("right", "enter", "merg"), "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over"),
+    "g": ("right", "enter", "merg"),
+    "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over", "join"),
     "d": ("left",), "e": ("right",), "T": ("turn",),
     "b": ("accelerat", "sped", "speeding", "increas", "speed", "gas", "throttle", "floor", "gun"),
     "c": ("slow", "decelerat", "brak", "reduc", "speed", "stop"), "A": ("straight",), "Y": ("turn",),
