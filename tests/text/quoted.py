@@ -53,6 +53,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         "Cruise AV and made contact with the Cruise AV's rear bumper, damaging the rear right bumper. The driver "
         'of the other vehicle left the scene without exchanging information. There were no injuries and a police '
         'report was later filed.'),
+    'csvr-cruise-20220905-s189': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' "
+        "(serial 189, column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling '
+        'eastbound on Sacramento Street between Van Ness Avenue and Polk Street. The Cruise AV approached a '
+        'semi-trailer truck that was stopped in the left lane of traffic. The Cruise AV stopped before '
+        'maneuvering into the bus and taxi lane to pass the semi-trailer truck. As the Cruise AV was slowly '
+        'maneuvering around the semi-trailer truck and merging back into the left lane of traffic, a Honda '
+        'Accord traveling behind the Cruise AV attempted to pass the Cruise AV and made contact with the '
+        'Cruise AV, damaging the rear passenger side bumper of the Cruise AV. The driver of the Honda Accord '
+        'left the scene without exchanging information. There were no reported injuries.'),
     'csvr-cruise-20230422-s236': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "236, column 'Accident Detail Description'), transcribed",

@@ -227,3 +227,16 @@ def test_the_same_scene_told_with_other_common_verbs_places_the_party_alike() ->
     text = _TEXTS["nhtsa-sgo-ads-30270-9436-v1"][1].replace("was stopped", "had stopped")
     p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
     assert (p.position, p.lane) == ("R6", "left")
+
+
+def test_a_party_first_told_as_what_the_av_came_up_on_is_ahead_in_its_path() -> None:
+    # "EGO approached a semi-trailer truck that was stopped in the left lane of traffic": what the AV came up on
+    # stood in its path, whatever lane the road names it in (the gold's R5/same; 10 of 10 studyable parties first
+    # told so are ahead in the AV's lane in the gold).
+    p = _party("csvr-cruise-20220905-s189")
+    assert (p.position, p.lane) == ("R5", "same")
+    # "... when it approached a stopped pickup truck ... The pickup truck was stopped in the leftmost lane ... The
+    # Waymo AV began changing lanes into the right lane ... to pass the stopped pickup truck": the pass is the AV's
+    # (the truck is what it passed), no pass of the truck's.
+    p = _party("nhtsa-sgo-ads-30270-7724-v1")
+    assert (p.position, p.lane) == ("R5", "same")

@@ -391,6 +391,8 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
             cues.append(Cue("passing", _side(m.group("side")) or "", (base + m.start(), base + m.end())))
         for m in _PASS_QUEUE.finditer(win):
             # "to get around the queue of traffic", "passing the stopped cars": it came up from behind the AV's queue
+            if any(x.sent == sent and a + m.start() < x.start <= a + m.end() + 1 for x in e.mentions):
+                continue  # "EGO began changing lanes ... to pass the stopped pickup truck": the party is what was passed
             cues.append(Cue("passing", "", (base + m.start(), base + m.end())))
         for m in ONCOMING.finditer(win):
             # "the oncoming lane", "the wrong side of the road": a path it drove on, not a direction it came from
@@ -436,6 +438,18 @@ def _ego_body_side(s: str) -> re.Match[str] | None:
 _STOPPED_BEFORE = compile_gated(r"\b(?:stopped|stationary|standing|sitting|waiting|queued|idling|halted|at\s+(?:a\s+)?"
                                 r"(?:standstill|rest))\b[^.,;]{0,30}$", re.I)
 _BEHIND_AV = compile_gated(r"^behind\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|it)\b", re.I)
+
+
+# The AV's own clause ending in the party's name as what it came up on: "EGO approached a", "EGO was stopped behind
+# the", "EGO came to a stop behind a", "EGO slowed for a".
+_AV_CAME_UP_ON = compile_gated(r"\bEGO\b[^.;,]{0,50}?\b(?:behind|approach(?:ed|ing)|came\s+up\s+(?:on|behind)|slowed\s+for|"
+                               r"(?:stopped|braked)\s+(?:for|behind))\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,3}$", re.I)
+
+
+def _in_the_av_s_path(d: Doc, e: Entity) -> bool:
+    """Is the party first told (past the summary) as what the AV came up on, in the AV's own clause?"""
+    m = next((x for x in e.mentions if x.sent not in d.summary), e.first)
+    return bool(_AV_CAME_UP_ON.search(d.sents[m.sent][max(0, m.start - 70):m.start]))
 
 
 def _queued_behind(d: Doc, along: list[Cue]) -> Cue | None:
@@ -684,6 +698,12 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # began, not ahead of it. One that stood beside it and moved off meets the rear half from level.
         pos, rule = "R6", rule + "; contact on the AV's rear, beside it"
         used.append(contact)
+    if pos == "R5" and lane in ("left", "right") and not beside and not passing and \
+            _in_the_av_s_path(d, e) and not any(c.kind == "contact" and c.value.endswith("/flank") for c in cues):
+        # First named as what the AV came up behind ("EGO approached a semi-trailer truck that was stopped in the
+        # left lane", "EGO came to a stop behind a GMC Yukon"): it stood or went ahead in the AV's path, whatever
+        # lane the road names it in (no lane said relative to the AV: "the left lane" is the AV's too).
+        lane, rule = "same", rule + "; in the AV's path"
     if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
             not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and
                     _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues) and \
