@@ -998,6 +998,16 @@ PROBES: tuple[Probe, ...] = (
            "traveling against traffic", "a sedan driving against the flow of traffic", "a sedan traveling the "
            "wrong-way", "a sedan traveling southbound in the Zoox vehicle's lane"),
           _position, [("R7", "same")]),
+    _scenes("what the AV came up on is in its path, unless told at the roadside or on a side", _partner_position, (
+            ("The Cruise AV was traveling northbound on Geary Boulevard. The Cruise AV approached a box truck that "
+             "was stopped in the left lane. The truck reversed into the Cruise AV's front bumper.", ("R5", "same")),
+            ("The Cruise AV was traveling northbound on Geary Boulevard. The Cruise AV came to a stop behind a sedan "
+             "in the rightmost lane. The sedan reversed and struck the Cruise AV's front bumper.", ("R5", "same")),
+            ("The Cruise AV was traveling northbound on Geary Boulevard. The Cruise AV approached a cyclist riding "
+             "in the bike lane. The cyclist swerved left and struck the Cruise AV.", ("R5", "right")),
+            ("The Cruise AV was traveling northbound on Geary Boulevard. The Cruise AV approached a box truck "
+             "stopped on the right. The truck pulled out and struck the Cruise AV.", ("R5", "right")),
+    )),
     Probe("a party standing ahead that the AV runs into",
           "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle failed to stop and struck the rear "
           "of {w}.",

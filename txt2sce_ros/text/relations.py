@@ -441,9 +441,15 @@ _BEHIND_AV = compile_gated(r"^behind\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|
 
 
 # The AV's own clause ending in the party's name as what it came up on: "EGO approached a", "EGO was stopped behind
-# the", "EGO came to a stop behind a", "EGO slowed for a".
-_AV_CAME_UP_ON = compile_gated(r"\bEGO\b[^.;,]{0,50}?\b(?:behind|approach(?:ed|ing)|came\s+up\s+(?:on|behind)|slowed\s+for|"
-                               r"(?:stopped|braked)\s+(?:for|behind))\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,3}$", re.I)
+# the", "EGO came to a stop behind a". (Not what it stopped or slowed for: "stopped for a parallel parking vehicle
+# ahead on the right" may be beside its path.)
+_AV_CAME_UP_ON = compile_gated(r"\bEGO\b[^.;,]{0,50}?\b(?:behind|approach(?:ed|ing)|came\s+up\s+(?:on|behind))\s+"
+                               r"(?:a|an|the)\s+(?:[\w-]+\s+){0,3}$", re.I)
+
+
+# A place beside the AV's path told by the roadside or a side ("a cyclist in the bike lane", "ahead on the right").
+_ROADSIDE_OR_SIDE = compile_gated(r"\b(?:bike|bicycle|parking|bus)\s+lane|\bsidewalk|\bcurb|\bshoulder|"
+                                  r"\bon\s+the\s+(?:left|right)\b|\bto\s+the\s+(?:left|right)\s+of\b", re.I)
 
 
 def _in_the_av_s_path(d: Doc, e: Entity) -> bool:
@@ -699,7 +705,8 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         pos, rule = "R6", rule + "; contact on the AV's rear, beside it"
         used.append(contact)
     if pos == "R5" and lane in ("left", "right") and not beside and not passing and \
-            _in_the_av_s_path(d, e) and not any(c.kind == "contact" and c.value.endswith("/flank") for c in cues):
+            _in_the_av_s_path(d, e) and not any(c.kind == "contact" and c.value.endswith("/flank") for c in cues) and \
+            not _ROADSIDE_OR_SIDE.search(ctx):
         # First named as what the AV came up behind ("EGO approached a semi-trailer truck that was stopped in the
         # left lane", "EGO came to a stop behind a GMC Yukon"): it stood or went ahead in the AV's path, whatever
         # lane the road names it in (no lane said relative to the AV: "the left lane" is the AV's too).
