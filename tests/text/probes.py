@@ -1685,6 +1685,19 @@ PROBES: tuple[Probe, ...] = (
                                                                                    "gate", "puppy", "fox", "chicken",
                                                                                    "peacock", "goat", "scaffolding"))
                      else "debris"]),
+    Probe("a numbered plural of a vehicle's kind is that many parties ('two SUVs', 'two other vans')",
+          "The Waymo AV was stopped at a red light on [XXX] when it was struck by {w}.",
+          ("two SUVs that had collided in the intersection", "two other vans that had collided in the intersection",
+           "two sedans that had collided in the intersection", "two pickup trucks that had collided in the "
+           "intersection", "two taxis that had collided in the intersection", "two buses that had collided in the "
+           "intersection", "two minivans that had collided in the intersection"),
+          lambda sk: len(sk.npcs), 2),
+    Probe("parked vehicles joined by 'and' before 'that were parked' are all parked",
+          "The Zoox vehicle was traveling north on Koval Lane when it made contact with {w} that were parked at the "
+          "curb.",
+          ("a van and a sedan", "two vans and a pickup truck", "a box truck and two SUVs", "an SUV and a minivan"),
+          lambda sk: (len(sk.npcs), sum(o.category == "parked_vehicle" for o in sk.obstacles)),
+          lambda w: (0, sum({"a": 1, "an": 1, "two": 2}[x.split()[0]] for x in w.split(" and ")))),
     # Session 17: the other party named by the NHTSA SGO form's role names and the forms' other numberings.
     Probe("the other party named by a role name or a form's number",
           "The SV was stopped at a red light on [XXX] when {w} approached from behind and made contact with the rear "

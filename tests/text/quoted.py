@@ -1246,6 +1246,23 @@ QUOTED: dict[str, tuple[str, str]] = {
         'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of '
         'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8152-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8152, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 8:15 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], '
+        'California was in a collision involving a portable metal barrier on [XXX] at [XXX]. The Waymo AV '
+        'was traveling southeast on [XXX] at a low rate of speed when the front of the Waymo AV made contact '
+        'with a portable metal barrier at the intersection with [XXX]. As the Waymo AV made a right turn '
+        'onto southwestbound {XXX], it pushed the barrier along with it and the rightmost edge of the '
+        'barrier made contact with the rear driver side of a postal van parked at the curb of southwestbound '
+        '[XXX]. As the Waymo AV began to slow to initiate a pull over (still pushing the barrier), the '
+        'rightmost edge of the barrier made contact with the driver side of two other postal vans and two '
+        'passenger cars that were also parked at the curb of southwestbound [XXX]. The Waymo AV continued to '
+        'push the barrier as it completed the pullover, coming to a stop on the right side of southwestbound '
+        '[XXX]. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The '
+        'metal barrier and all vehicles mentioned sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01.Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9330-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9330, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -318,3 +318,15 @@ def test_a_contact_between_another_party_and_an_object_or_believed_is_not_the_av
     # the Cruise AV": the Infiniti's contact with the sedan is theirs; its move into the AV is the AV's (gold: npc1).
     sk = extract(_SGO["csvr-cruise-20230721-s263"][1], "csvr-cruise-20230721-s263")
     assert (len(sk.npcs), sk.collision.with_) == (2, "npc1")
+
+
+def test_an_object_the_av_pushed_into_parked_vehicles_struck_them_too() -> None:
+    # "the front of the Waymo AV made contact with a portable metal barrier ... it pushed the barrier along with it and
+    # the rightmost edge of the barrier made contact with the rear driver side of a postal van parked at the curb ...
+    # the rightmost edge of the barrier made contact with the driver side of two other postal vans and two passenger
+    # cars that were also parked": the AV met the barrier; the barrier met five parked vehicles (the numbered plurals
+    # counted, "that were also parked" said of both); no moving party (gold).
+    sk = extract(_SGO["nhtsa-sgo-ads-30270-8152-v1"][1], "nhtsa-sgo-ads-30270-8152-v1")
+    assert sk.npcs == ()
+    assert sorted(o.category for o in sk.obstacles) == ["barrier"] + ["parked_vehicle"] * 5
+    assert (sk.collision.with_, sk.collision.type) == ("obs1", "hit_object")

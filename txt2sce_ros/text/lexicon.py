@@ -127,7 +127,10 @@ PARTY_HEADS: dict[str, str] = {
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",
-               "motorists", "riders", "road users", "others", "scooters", "individuals", "persons")
+               "motorists", "riders", "road users", "others", "scooters", "individuals", "persons",
+               # (more plurals, so "two postal vans", "two SUVs" can be counted as a numbered group is)
+               "vans", "minivans", "suvs", "sedans", "buses", "pickups", "pickup trucks", "motorcycles", "motorcyclists",
+               "bikes", "bicycles", "taxis")
 
 #: Makes and models: "a 2014 Audi", "the Toyota Sienna". Models that are vans are vans.
 VAN_MODELS = ("sienna", "odyssey", "pacifica", "voyager", "caravan", "sedona", "quest", "promaster",

@@ -542,7 +542,9 @@ _NUMBERS = {"two": 2, "2": 2, "three": 3, "3": 3, "four": 4, "4": 4}
 _COUNTED_GROUPS = {"vehicles": "car", "cars": "car", "trucks": "truck", "pedestrians": "pedestrian",
                    "people": "pedestrian", "cyclists": "bicycle", "bicyclists": "bicycle", "scooters": "scooter",
                    "motorists": "car", "bikes": "bicycle", "bicycles": "bicycle", "motorcycles": "motorcycle",
-                   "individuals": "pedestrian", "persons": "pedestrian"}
+                   "individuals": "pedestrian", "persons": "pedestrian", "vans": "van", "minivans": "van",
+                   "suvs": "car", "sedans": "car", "buses": "bus", "pickups": "car", "pickup trucks": "car",
+                   "motorcyclists": "motorcycle", "taxis": "car"}
 _RIDING_ON = compile_gated(r"\s+(?:who\s+were\s+)?riding\s+(?:on\s+)?(scooters|bikes|bicycles|motorcycles)\b", re.I)
 
 
@@ -615,7 +617,9 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
             continue  # "its right front tire": a part of a vehicle; "a tire in the roadway" is an object
         kind, cat = _category(head, mod_text)
         count = 1
-        if kind == "group" and not det and mod_text and _NUMBERS.get(mod_text.split()[0]) and hl in _COUNTED_GROUPS:
+        # ("two other postal vans": "other" after the number is no article; "the two vehicles" names ones told before)
+        if kind == "group" and (not det or det == "the" and mod_text.split()[1:2] == ["other"]) and mod_text and \
+                _NUMBERS.get(mod_text.split()[0]) and hl in _COUNTED_GROUPS:
             # "made contact with two unoccupied vehicles", "followed by 2 people riding on scooters": a numbered
             # group is that many parties (sketch.md counts a group only when the text numbers it).
             count, kind, cat = _NUMBERS[mod_text.split()[0]], "party", _COUNTED_GROUPS[hl]
@@ -663,8 +667,8 @@ _IN_VEHICLE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:sitting\s+|s
 _OWN_PART = compile_gated(r"\b(?:front|rear|back|left|right|driver|passenger|spare|its|their|his|her)\b", re.I)
 _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
                    r"\s*(?:[\w-]+\s+){0,2}$", re.I)
-_AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|had\s+been|has\s+been)?\s*(?:\w+ly\s+)?"
-                              r"(?:double[- ])?parked\b", re.I)
+_AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|are|had\s+been|has\s+been)?\s*"
+                              r"(?:(?:\w+ly|also|still|both)\s+)?(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
 #: Names of a vehicle by who drives it, as general as "a vehicle" ("a motorist ... the passenger vehicle").
 _DRIVER_NAMES = frozenset({"motorist", "agent"})
@@ -825,7 +829,7 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             continue
         if target is not None:
             pass
-        elif m.det != "a":
+        elif m.det != "a" and m.count == 1:  # ("two other postal vans": a numbered group is new, never one named)
             recent = list(reversed(sorted(live, key=lambda e: (e.mentions[-1].sent, e.mentions[-1].start))))
             if "first" in m.mods.split():
                 # "A passenger car then braked to a stop ... A second passenger car then made contact with the SUV
@@ -889,5 +893,21 @@ def mark_parked(ents: list[Entity], sents: list[str]) -> None:
             continue
         for m in e.mentions:
             s = sents[m.sent]
-            if PARKED_WORDS.search(m.mods) or _AFTER_PARKED.match(s[m.end:]):
+            if PARKED_WORDS.search(m.mods) or _AFTER_PARKED.match(s[m.end:]) or _joined_parked(ents, sents, m):
                 e.parked = True
+
+
+_AND_NEXT = compile_gated(r"\s+and\s+", re.I)
+
+
+def _joined_parked(ents: list[Entity], sents: list[str], m: Mention) -> bool:
+    """Is the party named by `m` joined by "and" to a next one that the text says was parked ("two other postal vans
+    and two passenger cars that were also parked")?"""
+    s = sents[m.sent]
+    gap = _AND_NEXT.match(s, m.end)
+    if not gap:
+        return False
+    nxt = next((x for e in ents for x in e.mentions if x.sent == m.sent and x.kind == "party" and
+                gap.end() <= x.start <= gap.end() + 30), None)
+    return nxt is not None and bool(fre.match(r"\s*,?\s*(?:that|which)\s+(?:were|are)\b", s[nxt.end:])) and \
+        bool(_AFTER_PARKED.match(s[nxt.end:]))

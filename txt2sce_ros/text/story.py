@@ -142,17 +142,27 @@ def summary_sentences(sents: list[str]) -> set[int]:
 # were hit by the vehicle"): no contact.
 _BELIEVED = compile_gated(r"\b(?:believed|believing|thought|thinking|assumed|assuming|suspected|presumed)\s+(?:that\s+)?"
                           r"(?:\w+\s+){0,4}$", re.I)
+_PART_OF_BEFORE = compile_gated(r"\b(?:edge|side|end|corner|front|rear|part|portion|piece|arm|top|bottom)\s+of\s+"
+                                r"(?:the|a|an|its)\s+$", re.I)
 _CLAUSE_END = compile_gated(r"[,;.]|\b(?:and|when|while|as|then|before|after|but)\b", re.I)
 
 
 def _between_others(d: Doc, i: int, m: re.Match[str]) -> bool:
     """Is contact `m` of sentence `i` one between another party and a thing that is not the AV ("As the SUV ... was
     passing EGO, it maneuvered to the left in its lane, and the driver side made contact with the center concrete
-    median curb")? Its doer is a party, what it met (after the verb, in its clause) is another party or an object,
-    and the AV is named neither there nor as the thing met ("was struck by a sedan" tells the doer after "by")."""
+    median curb")? Its doer is a party (or an object by its part: "the edge of the barrier made contact with"), what
+    it met (after the verb, in its clause) is another party or an object, and the AV is named neither there nor as
+    the thing met ("was struck by a sedan" tells the doer after "by")."""
     s = d.sents[i]
     who = who_for(m.start(), d.ments[i], None)
-    if who is None or who < 0 or d.ents[who].kind != "party":
+    # an object's part as the doer ("the rightmost edge of the barrier made contact with the rear driver side of a
+    # postal van parked at the curb": the barrier the AV pushed met the van, the AV's contact was the barrier)
+    prior = [x for x in d.ments[i] if x.end <= m.start() and x.kind in ("party", "obstacle", "ego")]
+    if prior and prior[-1].kind == "obstacle" and prior[-1].entity >= 0 and \
+            not _CLAUSE_END.search(s, prior[-1].end, m.start()) and \
+            _PART_OF_BEFORE.search(s, max(0, prior[-1].start - 40), prior[-1].start):
+        who = prior[-1].entity
+    if who is None or who < 0 or d.ents[who].kind not in ("party", "obstacle"):
         return False
     end = _CLAUSE_END.search(s, m.end())
     clause_end = end.start() if end else len(s)
@@ -161,10 +171,28 @@ def _between_others(d: Doc, i: int, m: re.Match[str]) -> bool:
         not fre.search(r"\bby\b|\bEGO", s[m.end():met[0].start], re.I) and "EGO" not in s[m.end():clause_end]
 
 
+_MET_LIST_END = compile_gated(r"[;.]|\b(?:when|while|as|then|before|after|but|which|that|who)\b", re.I)
+
+
+def _pushed_on(d: Doc, i: int, m: re.Match[str]) -> None:
+    """The object the AV met, pushed on into other things ("it pushed the barrier along with it and the rightmost edge
+    of the barrier made contact with the rear driver side of a postal van parked at the curb ... with the driver side
+    of two other postal vans and two passenger cars that were also parked"): what it met was struck too."""
+    s = d.sents[i]
+    prior = [x for x in d.ments[i] if x.end <= m.start() and x.kind in ("party", "obstacle", "ego")]
+    if d.partner is None or d.ents[d.partner].kind != "obstacle" or not prior or prior[-1].entity != d.partner:
+        return
+    end = _MET_LIST_END.search(s, m.end())
+    for x in d.ments[i]:
+        if m.end() <= x.start < (end.start() if end else len(s)) and x.kind in ("party", "obstacle") and x.entity >= 0:
+            d.struck.add(x.entity)
+
+
 def find_contact(d: Doc) -> None:
     """The AV's contact: the last non-negated contact phrase in a sentence about the AV (summaries aside, unless
     nothing else tells it), and the party or object nearest that phrase."""
     candidates: list[tuple[int, int, int | None]] = []
+    met_by_others: list[tuple[int, re.Match[str]]] = []
     for i, s in enumerate(d.sents):
         ments = d.ments[i]
         has_ego = any(m.kind in ("ego", "egod") for m in ments) or fre.search(r"\b(?:was|were|been|got)\s+(?:\w+ly\s+)?"
@@ -188,6 +216,7 @@ def find_contact(d: Doc) -> None:
             if _BELIEVED.search(s, max(0, m.start() - 50), m.start()):
                 continue  # "believed they had run over a rock": what the driver thought, not what happened
             if _between_others(d, i, m):
+                met_by_others.append((i, m))
                 continue  # "it maneuvered to the left, and the driver side made contact with the median curb"
             others = [x for x in ments if x.kind in ("party", "obstacle") and x.entity >= 0]
             partner = None
@@ -261,6 +290,8 @@ def find_contact(d: Doc) -> None:
         # conflict is the first contact; the move told next ("then") begins what came after.
         chosen = first
     d.contact_sent, d.contact_pos, d.partner = chosen
+    for i, m in met_by_others:
+        _pushed_on(d, i, m)
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
         d.partner = d.ents[d.partner].merged_into
     # "the AV made contact with the cat ... an SUV then made contact with the rear of the AV": an object the AV
@@ -270,13 +301,15 @@ def find_contact(d: Doc) -> None:
                 d.ents[who].kind == "obstacle" and not _named_in_later_clause(d, i, pos, who):
             d.struck.add(who)
     # "contact with a center divider ... and the traffic sign": every object joined to the struck one was struck.
-    if d.partner is not None and d.ents[d.partner].kind == "obstacle":
+    # (parked vehicles too: "made contact with a van and a sedan that were parked at the curb")
+    if d.partner is not None and (d.ents[d.partner].kind == "obstacle" or d.ents[d.partner].parked):
         # A group word inside a name ("traffic" of "the traffic sign") is no object of its own.
         ms = [x for x in d.ments[d.contact_sent] if x.kind != "group"]
         idx = [k for k, x in enumerate(ms) if x.entity == d.partner]
         for k in range(idx[0] + 1 if idx else len(ms), len(ms)):
             between = d.sents[d.contact_sent][ms[k - 1].end:ms[k].start]
-            if ms[k].kind == "obstacle" and fre.fullmatch(r"[^,;]{0,30}\band\s*(?:(?:the|a|an)\s+)?", between):
+            if (ms[k].kind == "obstacle" or ms[k].entity >= 0 and d.ents[ms[k].entity].parked) and \
+                    fre.fullmatch(r"[^,;]{0,30}\band\s*(?:(?:the|a|an)\s+)?", between):
                 d.struck.add(ms[k].entity)
             else:
                 break
@@ -460,14 +493,14 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                 not PARKED_WORDS.search(" ".join(m.mods for m in e.mentions)) and \
                 not any(a.who == e.idx for a in d.acts) and _only_travelled_behind(d, e):
             continue  # "EGO was traveling ... behind a box truck": where the AV was, named in passing (sketch.md)
-        if not is_partner and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
+        if not is_partner and e.idx not in d.struck and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
             continue  # "a skateboard that escaped control of a nearby pedestrian": named only as an owner
         if e.idx in d.doors:
             obstacles.append(e)
         elif e.kind == "party" and e.parked and not moved:
-            if is_partner or acted_for(d, e) or struck_by_party(d, e):
+            if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e):
                 obstacles.append(e)
         elif e.kind == "party":
             if any(d.doors.get(k) == e.idx for k in d.doors) and not moved:
