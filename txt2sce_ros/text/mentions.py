@@ -231,7 +231,7 @@ _HEAD_RE = compile_gated(r"\b(EGOD|EGO|it|he|she|" + _trie_pattern(_HEADS) + r")
 _VEHICLE_PART = (r"(?:(?:front|rear|back|left|right|driver|passenger|lower|upper)(?:[- ]side)?\s+){0,3}(?:bumper|side|door|"
                  r"mirror|fender|trailer|hood|panel|corner|wheel|tire|tyre|quarter|headlight|taillight|windshield|"
                  r"window|roof|trunk|sensor|camera|lidar|lane|path|edge|body|front|rear|driver|passenger|position|"
-                 r"level|ads)\b")
+                 r"level|ads|tailgate|liftgate|hatch|grille|bed|cab|trailer)\b")
 _BARE_POSSESSIVE = compile_gated(r"\b(" + _trie_pattern(sorted(set(PARTY_HEADS) | set(MAKES), key=len, reverse=True))
                                  + r")s\s+(?=" + _VEHICLE_PART + ")", re.I)
 _S_BEFORE_PART = compile_gated(r"[a-z]s\s+" + _VEHICLE_PART, re.I)
