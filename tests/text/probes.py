@@ -2630,6 +2630,21 @@ PROBES: tuple[Probe, ...] = (
            "began to merge onto the freeway", "tried to merge from the on-ramp", "merges onto the freeway",
           ),
           lambda sk: [(p.position, p.lane, p.actions) for p in sk.npcs], [("R5", "right", "af")]),
+    Probe("the AV pulling over, in the ways the operators tell it (session 17)",
+          "A Zoox vehicle was traveling northbound on Koval Lane. The Zoox vehicle {w} and a sedan traveling behind it "
+          "struck its rear bumper.",
+          (
+           "pulled over", "pulled over to the curb", "pulled to the curb", "executed a pullover",
+           "executed a pull-over maneuver", "performed a pullover", "began to pull over", "initiated a pullover",
+           "pulled into a loading zone", "pulled into the loading zone", "pulled into a bus stop",
+           "pulled over for a passenger pickup", "pulled over to pick up a passenger",
+           "pulled over to drop off a passenger", "moved to the curb to pick up a rider", "pulled into a parking spot",
+           "began to parallel park", "pulled over to the right side of the road", "pulled onto the shoulder",
+           "pulled into the parking lane", "pulled to the side of the road", "pulled up to the curb",
+           "pulled alongside the curb", "pulled in to the curb", "pulled into a pick-up zone",
+           "pulled into the curb lane", "steered toward the curb", "started a pullover maneuver", "began its pullover",
+          ),
+          _ego, ("moving", "al")),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

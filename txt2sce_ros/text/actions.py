@@ -86,6 +86,13 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:shoulder|parking\s+lane)\b|"
           r"\b(?:making|made|performing|performed)\s+(?:a|an|the|its)\s+(?:parallel[-\s]+)?parking\s+maneuver|"
           r"\bpull[-\s]?over\s+(?:maneuver|manoeuvre)\b|"
+          # "executed a pullover", "began its pull-over"; into a place at the curb for its riders or loads ("pulled
+          # into a loading zone", "a pick-up zone", "a bus stop", "the curb lane"); "pulled alongside the curb"
+          r"\b(?:execut|perform|initiat|begin|began|begun|start|complet|conduct|commenc)\w*\s+(?:a|an|the|its)\s+"
+          r"(?:[\w-]+\s+)?pull[-\s]?over\b|"
+          r"\bpull(?:ed|ing|s)?\s+(?:in\s*to|into)\s+(?:a|an|the)\s+(?:[\w-]+\s+)?(?:(?:loading|pick[-\s]?up|drop[-\s]?off|passenger|"
+          r"curbside)\s+(?:zone|area|bay|spot|space)|bus\s+stop|curb\s+lane)\b|"
+          r"\b(?:pull|steer|eas)(?:ed|ing|es|e|s)?\s+(?:in\s+to|alongside|(?:up\s+)?(?:toward|towards))\s+the\s+curb\b|"
           # to the roadside to let a passenger on or off: pulling over
           r"\b(?:pull(?:ed|ing|s)?|mov(?:ed|ing|es|e)|steer(?:ed|ing|s)?)\s+(?:over\s+)?to\s+the\s+(?:curb|(?:right\s+)?side\s+of\s+the\s+(?:road|"
           r"street))\b(?=[^.]{0,30}\b(?:drop|pick|let|load|unload|board|park)|[^.]{0,4}$)"),
