@@ -887,6 +887,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         'truck sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order '
         '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
         'available.'),
+    'nhtsa-sgo-ads-30270-10672-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID '
+        '30270-10672, version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 5:59 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los '
+        'Angeles, California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was '
+        'traveling southwest bound on [XXX] when it slowed to a stop as it approached an SUV reversing in '
+        'the roadway. The Waymo AV reversed to make room for the reversing SUV and came to a stop at the '
+        'right side of the roadway with hazard lights activated. The SUV continued reversing on the left '
+        'side of the roadway and the rear passenger side of the SUV made contact with the front driver side '
+        "of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 '
+        'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
     'nhtsa-sgo-ads-30270-10673-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10673, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -240,3 +240,8 @@ def test_a_party_first_told_as_what_the_av_came_up_on_is_ahead_in_its_path() -> 
     # (the truck is what it passed), no pass of the truck's.
     p = _party("nhtsa-sgo-ads-30270-7724-v1")
     assert (p.position, p.lane) == ("R5", "same")
+    # "The Waymo AV was traveling southwest bound on [XXX] when it slowed to a stop as it approached an SUV reversing
+    # in the roadway. ... The SUV continued reversing on the left side of the roadway": the AV named again by "it";
+    # where the SUV went later is no place it began in (the gold's R5/same).
+    p = _party("nhtsa-sgo-ads-30270-10672-v1")
+    assert (p.position, p.lane) == ("R5", "same")

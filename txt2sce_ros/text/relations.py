@@ -443,8 +443,11 @@ _BEHIND_AV = compile_gated(r"^behind\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|
 # The AV's own clause ending in the party's name as what it came up on: "EGO approached a", "EGO was stopped behind
 # the", "EGO came to a stop behind a". (Not what it stopped or slowed for: "stopped for a parallel parking vehicle
 # ahead on the right" may be beside its path.)
-_AV_CAME_UP_ON = compile_gated(r"\bEGO\b[^.;,]{0,50}?\b(?:behind|approach(?:ed|ing)|came\s+up\s+(?:on|behind))\s+"
-                               r"(?:a|an|the)\s+(?:[\w-]+\s+){0,3}$", re.I)
+# ("EGO was traveling southwest bound on [XXX] when it slowed to a stop as it approached an SUV": the AV named
+# again by "it" in its own sentence)
+_AV_CAME_UP_ON = compile_gated(r"(?:\bEGO\b[^.;,]{0,50}?|\bEGO\b[^.;]{0,100}?\b(?:when|as|and|then)\s+it\s+(?:\w+\s+){0,2}?)"
+                               r"\b(?:behind|approach(?:ed|ing)|came\s+up\s+(?:on|behind))\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,3}$",
+                               re.I)
 
 
 # A place beside the AV's path told by the roadside or a side ("a cyclist in the bike lane", "ahead on the right").
@@ -453,9 +456,12 @@ _ROADSIDE_OR_SIDE = compile_gated(r"\b(?:bike|bicycle|parking|bus)\s+lane|\bside
 
 
 def _in_the_av_s_path(d: Doc, e: Entity) -> bool:
-    """Is the party first told (past the summary) as what the AV came up on, in the AV's own clause?"""
+    """Is the party first told (past the summary) as what the AV came up on, in the AV's own clause, and not at the
+    roadside or on a side in that first telling?"""
     m = next((x for x in e.mentions if x.sent not in d.summary), e.first)
-    return bool(_AV_CAME_UP_ON.search(d.sents[m.sent][max(0, m.start - 70):m.start]))
+    s = d.sents[m.sent]
+    return bool(_AV_CAME_UP_ON.search(s[max(0, m.start - 160):m.start])) and \
+        not _ROADSIDE_OR_SIDE.search(s[m.start:_clause_end(d, e, m)])
 
 
 def _queued_behind(d: Doc, along: list[Cue]) -> Cue | None:
@@ -705,8 +711,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         pos, rule = "R6", rule + "; contact on the AV's rear, beside it"
         used.append(contact)
     if pos == "R5" and lane in ("left", "right") and not beside and not passing and \
-            _in_the_av_s_path(d, e) and not any(c.kind == "contact" and c.value.endswith("/flank") for c in cues) and \
-            not _ROADSIDE_OR_SIDE.search(ctx):
+            _in_the_av_s_path(d, e) and not any(c.kind == "contact" and c.value.endswith("/flank") for c in cues):
         # First named as what the AV came up behind ("EGO approached a semi-trailer truck that was stopped in the
         # left lane", "EGO came to a stop behind a GMC Yukon"): it stood or went ahead in the AV's path, whatever
         # lane the road names it in (no lane said relative to the AV: "the left lane" is the AV's too).
