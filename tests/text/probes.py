@@ -1605,6 +1605,11 @@ PROBES: tuple[Probe, ...] = (
            "for a passenger drop-off and pick-up", "in a pick-up lane", "in a pick-up area", "for a passenger pick-up",
            "at a pickup location"),
           lambda sk: [p.category for p in sk.npcs], ["car"]),
+    Probe("a party named by its kind and then 'the passenger car/vehicle' is one party (unless placed ahead anew)",
+          "The Waymo AV was stopped at a red light on [XXX]. {W} approached from behind and the front of the "
+          "passenger car made contact with the rear of the Waymo AV.",
+          ("a white sedan", "an SUV", "a pickup truck", "a Toyota Camry", "a hatchback"),
+          lambda sk: (len(sk.npcs), sk.collision.with_), (1, "npc1")),
     Probe("a vehicle the contact pushed the AV into is a party of its own",
           "The Waymo AV was stopped at a red light on [XXX]. An SUV approached from behind and struck the rear of the "
           "Waymo AV, {w}.",

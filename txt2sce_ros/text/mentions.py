@@ -692,7 +692,13 @@ _NUMBER_LABEL = compile_gated(r"\s+#?([1-9])\b(?!\s*(?:mph|miles?|feet|foot|ft|m
                            r"inches|km|[:.,]\d))", re.I)
 
 
-def _compatible(e: Entity, m: Mention) -> bool:
+# A thing placed ahead as it is named ("pushing it into the passenger car ahead", "the passenger car stopped in front
+# of it"): a vehicle met there, not one told before by its kind.
+_PLACED_AHEAD = compile_gated(r"\s*(?:(?:stopped|waiting|standing|parked)\s+)?(?:directly\s+|immediately\s+)?"
+                              r"(?:ahead|in\s+front)\b", re.I)
+
+
+def _compatible(e: Entity, m: Mention, *, placed_ahead: bool = False) -> bool:
     if e.kind == "party" and PARKED_WORDS.search(m.mods) and not any(PARKED_WORDS.search(x.mods) for x in e.mentions):
         return False  # "the parked vehicle" is not the moving one named before
     if e.kind == "obstacle" or m.kind == "obstacle":
@@ -710,11 +716,11 @@ def _compatible(e: Entity, m: Mention) -> bool:
         named = set(e.heads) | {w for x in e.mentions for w in x.mods.split()}
         return m.head in named or any(m.head in h.split() for h in e.heads)
     if m.head in _GENERIC and m.head not in _BARE:
-        # "the passenger vehicle" is not the bus named before, nor a party the text named by its kind only
-        # ("A pickup truck struck the rear of the Waymo AV, pushing it into the passenger car ahead": no studyable
-        # narrative names a party "a pickup truck", "an SUV" or "a sedan" and then "the passenger car/vehicle")
-        return e.category in ("car", "van") and any(h in _GENERIC or h in _DRIVER_NAMES or h in MAKES or
-                                                    h in VAN_MODELS for h in e.heads)
+        # "the passenger vehicle" is not the bus named before, nor, placed ahead as it is named, a party the text
+        # named by its kind only ("A pickup truck struck the rear of the Waymo AV, pushing it into the passenger car
+        # ahead")
+        return e.category in ("car", "van") and (not placed_ahead or any(
+            h in _GENERIC or h in _DRIVER_NAMES or h in MAKES or h in VAN_MODELS for h in e.heads))
     if _names_part_of(m.head, e):
         return True  # "the truck" after "a pick-up truck": the last word of its name
     if m.head in _GENERIC or m.mods.startswith("other"):
@@ -848,7 +854,7 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                     # A bare "the vehicle" in the telling does not reach back to the summary's party; "the
                     # passenger vehicle" after "a collision involving a passenger vehicle" does.
                     continue
-                if _compatible(e, m):
+                if _compatible(e, m, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
                     target = e
                     break
         else:
