@@ -2650,6 +2650,21 @@ PROBES: tuple[Probe, ...] = (
            "pulled into the curb lane", "steered toward the curb", "started a pullover maneuver", "began its pullover",
           ),
           _ego, ("moving", "al")),
+    Probe("a rider crossing the AV's road, in the ways English tells it (session 17)",
+          "The Waymo AV was traveling northbound on Mission Street between 16th Street and 17th Street. A cyclist {w} "
+          "and the Waymo AV made contact with the cyclist.",
+          (
+           "rode across the street", "crossed the street", "was riding across the street",
+           "rode across Mission Street", "cut across the street", "darted across the street",
+           "crossed in front of the Waymo AV", "entered the roadway from the sidewalk",
+           "rode off the sidewalk into the street", "rode out from a driveway",
+           "came off the sidewalk into the roadway", "crossed mid-block", "crossed against the light",
+           "was crossing the street", "attempted to cross the street", "began to cross the street",
+           "rode into the street", "rode into the roadway", "rode out into the street", "pedaled across the street",
+           "was pedaling across the street", "crossed from the west side of the street", "crosses the street",
+           "rides across the street",
+          ),
+          _npc_actions, [("moving", "m")]),
     Probe("a junction told by its line, light, arrow or stop, in more ways (session 17)",
           "A Zoox vehicle was traveling northbound on Koval Lane in the right lane. The Zoox vehicle was stopped {w} "
           "when a sedan traveling behind it struck its rear bumper.",

@@ -298,7 +298,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # out of a driveway, a lot or an alley by any verb of going forward ("pulled out from", "nosed out of",
           # "began to exit", "departed a parking lot", "pulls out of")
           r"\b(?:(?:pull|nos|edg|inch|eas|roll|creep|driv|mov)(?:ed|ing|es|e|s)?\s+(?:out\s+)?(?:of|from)|"
-          r"(?:crept|came|coming|comes|come|drove)\s+out\s+(?:of|from)|"
+          r"(?:crept|came|coming|comes|come|drove|rode|riding|walked|walking|ran)\s+out\s+(?:of|from)|"
           r"exit(?:ed|ing|s)?(?:\s+out\s+of|\s+from)?|leaving|left|leaves|depart(?:ed|ing|s)?(?:\s+from)?|"
           r"emerg(?:ed|ing|es|e)\s+(?:out\s+)?from)\s+(?:a|an|the)\s+"
           r"(?:[\w-]+\s+){0,2}?(?:driveway|garage|gas\s+station|"
@@ -307,9 +307,14 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # a walker or rider out on the road from its edge, or across a named street ("rode across Koval Lane")
           r"\bent(?:er|ered|ering|ers)\s+the\s+(?:roadway|road|street)\s+from\s+(?:the\s+|a\s+)?(?:[\w-]+\s+){0,2}?"
           r"(?:curb|sidewalk|median|driveway|parking\s+lot)\b|"
-          r"\b(?:walk(?:ed|ing)|ran|running|rode|riding|cycl(?:ed|ing)|skat(?:ed|ing)|cut|cutting|dart(?:ed|ing))\s+"
+          # (a walker's or rider's verbs of going, in any tense: "pedaled", "rides", "jogged", "hurried", "scooted")
+          r"\b(?:walk(?:ed|ing|s)?|ran|runs|running|rode|rides|riding|cycl(?:ed|ing|es)|skat(?:ed|ing|es)|cut|cutting|"
+          r"dart(?:ed|ing|s)?|pedal(?:l)?(?:ed|ing|s)|jogg(?:ed|ing)|jogs|dash(?:ed|ing|es)|hurr(?:ied|ying|ies)|"
+          r"scoot(?:ed|ing|s)|bik(?:ed|ing|es))\s+"
           r"across\s+(?:[\w.]+\s+){1,3}?(?:street|st|road|rd|avenue|ave|lane|boulevard|blvd|drive|way)\b|"
           # crossing told by where it was not allowed: "crossed mid-block", "crossed against the light"
+          # ("crossed from the west side of the street", "crossing from the far curb")
+          r"\bcross(?:ed|ing|es)\s+from\s+(?:the\s+)?(?:[\w-]+\s+){0,3}?(?:side|curb|sidewalk|corner|median)\b|"
           r"\bcross(?:ed|ing|es)\b[^.,;]{0,40}?(?:\bmid-?block\b|\bagainst\s+the\s+(?:light|signal|red)\b|"
           r"\boutside\s+(?:of\s+)?(?:the|a)\s+crosswalk\b)|\bent(?:er|ered|ering|ers)\s+(?:the|a)\s+crosswalk\s+from\b|"
           r"\bentered\s+the\s+(?:lane|roadway|road|street)\s+"
@@ -319,7 +324,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # front of EGO"): across its path, not along its side
           r"\b(?:pass(?:ed|ing|es)|(?:proceed(?:ed|ing)|mov(?:ed|ing)|went|going)\s+past)\s+(?:directly\s+|just\s+)?"
           r"(?:in\s+front\s+of|the\s+front\s+of)\s+(?:EGO\b|the\s+vehicle\b)|"
-          r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding|cut|cutting)\s+"
+          # ("came off the sidewalk into the roadway", "rolled off the curb": off the roadside only)
+          r"\b(?:came|coming|roll(?:ed|ing))\s+off\s+the\s+(?:curb|sidewalk|median)\b|"
+          r"\b(?:stepp(?:ed|ing)|dart(?:ed|ing)|jump(?:ed|ing)|walk(?:ed|ing)|ran|running|rode|riding|cut|cutting|"
+          r"pedal(?:l)?(?:ed|ing))\s+"
           r"(?:out\s+)?"
           r"(?:off\s+the\s+(?:curb|sidewalk|median|(?:traffic\s+)?island)|into\s+(?:the\s+|EGO's\s+)?(?:path|street|road|roadway|traffic|crosswalk)|"
           r"out\s+(?:from\s+(?:between|behind)|in\s+front)|across\s+(?:the\s+)?(?:street|road|roadway|lanes?|"
