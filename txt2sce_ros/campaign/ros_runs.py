@@ -197,7 +197,7 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                 return RunRecord(sid, Verdict.ERROR, error=why, details=extra), why
         if any(v.end_reason in GRAPH_END_REASONS for v in verdicts):
             # What the planner and the player said last, for a run that broke on timing (the logs go with `work`).
-            extra["last_log_lines"] = {name: _log_tail(work / "log" / f"{name}.log", 5)
+            extra["last_log_lines"] = {name: _log_tail(work / "log" / f"{name}.log", 20, 4000)
                                        for name in ("planner", "player")}
         if keep_bag is not None:
             shutil.copytree(bags[0].parent, Path(keep_bag), dirs_exist_ok=True)
@@ -226,11 +226,11 @@ def _attempt(scenario: str | Path | ScenarioEnvelope, sid: str, faults: tuple[st
                      error=v.error, **common), ""
 
 
-def _log_tail(path: Path, lines: int = 3) -> str:
-    """The last meaningful lines of a node's log, one line (for an error verdict)."""
+def _log_tail(path: Path, lines: int = 3, limit: int = 400) -> str:
+    """The last meaningful lines of a node's log, one line of at most `limit` characters (for an error verdict)."""
     try:
         text = path.read_text(encoding="utf-8", errors="replace").splitlines()
     except OSError:
         return "no log"
     keep = [t.strip() for t in text if t.strip() and "nanobind" not in t and "leaked" not in t]
-    return " | ".join(keep[-lines:])[:400] or "empty log"
+    return " | ".join(keep[-lines:])[:limit] or "empty log"

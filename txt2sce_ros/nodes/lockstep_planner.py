@@ -9,6 +9,7 @@ run waits until the envelope received since the previous run has been read. Subc
 
 from __future__ import annotations
 
+import time
 from typing import Any, Protocol
 
 from diagnostic_msgs.msg import DiagnosticArray
@@ -156,7 +157,11 @@ class LockStepPlannerNode(Node):
         if self.pending is None or self.awaiting_scenario or self.network is None or self.goal is None:
             return
         if self.planner is None:
+            t0 = time.monotonic()
             self.planner = self.make_planner(self.network, self.goal, self.envelope)
+            # One line a run: if a first frame goes unanswered, the log says whether the planner got that far.
+            self.get_logger().info(f"run {self.envelope.id if self.envelope else '?'}: planner ready in "
+                                   f"{time.monotonic() - t0:.2f} s, first frame t = {self.pending.t:.2f} s")
         frame, self.pending = self.pending, None
         self.last_key = stamp_key(to_stamp(frame.t))
         self.fresh_scenario = False
