@@ -1610,6 +1610,13 @@ PROBES: tuple[Probe, ...] = (
           "passenger car made contact with the rear of the Waymo AV.",
           ("a white sedan", "an SUV", "a pickup truck", "a Toyota Camry", "a hatchback"),
           lambda sk: (len(sk.npcs), sk.collision.with_), (1, "npc1")),
+    Probe("'the vehicle' after the summary's 'a vehicle', as the subject of a sentence naming the AV after it, is "
+          "that party",
+          "On April [XXX], 2025 a Waymo Autonomous Vehicle (\"Waymo AV\") operating in Phoenix was in a collision "
+          "involving a vehicle on [XXX]. The Waymo AV was stopped at a red light when {w}.",
+          ("the vehicle approached from behind and struck the rear of the Waymo AV", "the vehicle struck the rear of "
+           "the Waymo AV", "the vehicle, traveling behind the Waymo AV, made contact with its rear bumper"),
+          lambda sk: ([p.category for p in sk.npcs], sk.collision.with_), (["car"], "npc1")),
     Probe("a vehicle the contact pushed the AV into is a party of its own",
           "The Waymo AV was stopped at a red light on [XXX]. An SUV approached from behind and struck the rear of the "
           "Waymo AV, {w}.",

@@ -122,3 +122,16 @@ def test_what_lay_in_the_lane_named_by_more_nouns_is_the_object_met() -> None:
         sk = extract(text.replace("a piece of debris", name), "rewritten")
         assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [(kind, "R5", "same")], name
         assert (sk.collision.with_, len(sk.npcs)) == ("obs1", 0), name
+
+
+def test_the_vehicle_after_a_summary_s_vehicle_that_then_meets_the_av_is_that_party() -> None:
+    # "was in a collision involving a passenger vehicle ... when the passenger vehicle approached from behind while
+    # changing lanes. The passenger vehicle struck the rear of the stopped Waymo AV", told with the bare noun ("a
+    # vehicle ... the vehicle approached ... The vehicle struck the rear of the stopped Waymo AV"): "the vehicle",
+    # the subject of a sentence that names the AV after it, is the summary's party, not the AV.
+    text = _TEXTS["csvr-waymo-20210709-s89"][1]
+    bare = text.replace("passenger vehicle", "vehicle")
+    assert bare != text
+    told, other = extract(text, "s89"), extract(bare, "s89")
+    assert [p.category for p in other.npcs] == [p.category for p in told.npcs] == ["car"]
+    assert other.collision.with_ == told.collision.with_ == "npc1"

@@ -850,9 +850,14 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             for e in recent:
                 if m.head in _GENERIC and m.sent not in summary_sents and \
                         all(x.sent in summary_sents for x in e.mentions) and \
-                        (m.head not in e.heads or m.head in _BARE):
+                        (m.head not in e.heads or m.head in _BARE) and \
+                        not (m.head in e.heads and m.subject and
+                             fre.search(r"\bEGO\b", sents[m.sent][m.end:]) is not None):
                     # A bare "the vehicle" in the telling does not reach back to the summary's party; "the
-                    # passenger vehicle" after "a collision involving a passenger vehicle" does.
+                    # passenger vehicle" after "a collision involving a passenger vehicle" does, and so does "the
+                    # vehicle" after "a collision involving a vehicle" as the subject of a sentence that names the AV
+                    # after it ("the vehicle approached the Waymo AV from behind"; not "the test driver transitioned
+                    # the vehicle to manual mode").
                     continue
                 if _compatible(e, m, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
                     target = e
