@@ -155,6 +155,9 @@ _LANE_CHANGE_LEFT = (
     "entered into the Waymo AV's lane of travel", "moved into the Waymo AV's lane of travel",
     "moved into the Waymo AV's travel lane", "merged into the Waymo AV's travel lane",
     "cut over into the Waymo AV's lane",
+    "lane-changed to the left", "lane changed to the left", "lane-changed into the Waymo AV's lane",
+    "performed a lane-change to the left", "made a lane-change", "initiated a lane-change", "switched lane",
+    "changed lanes leftward", "merged leftward", "changed into the left lane",
 )
 _U_TURN = (
     "made a U-turn", "made a u-turn", "made a U turn", "made a uturn", "performed a U-turn", "executed a U-turn",

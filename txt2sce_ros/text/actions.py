@@ -160,7 +160,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:complete\s+|full\s+)?(?:standstill|stop)\b|"
           # "As EGO advanced and then came to a stop": advancing is moving forward
           r"\badvanc(?:ed|ing|es)\b(?!\s+(?:warning|notice))"),
-    ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
+    ("f", r"\b(?:left|leftward)\s+lane\s+change\b|\blane[-\s]chang(?:e|ed|ing|es)\s+(?:to\s+the\s+|into\s+the\s+)?left\b|\bchang(?:ed|"
           r"ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?left|\bmerg(?:ed|ing|es|e)\s+(?:left|to\s+the\s+left|"
           r"(?:back\s+)?into\s+the\s+left\s+lane)|\b(?:moved|moving|move|switched|switching|pulled|pulling|swung|swinging)\s+"
           r"(?:out\s+|back\s+)?into\s+the\s+left\s+lane|(?<=\s)into\s+the\s+(?:adjacent\s+)?left\s+(?:adjacent\s+)?(?:travel\s+|through\s+)?lane\b|"
@@ -196,7 +196,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))|"
           r"\b(?:drift|veer|swerv|wander)(?:ed|ing|e|s)?\s+(?:over|across)\s+(?:the\s+)?(?:center\s*line|centerline|"
           r"double\s+(?:yellow|solid)|yellow\s+line|median)"),
-    ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane\s+change\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
+    ("g", r"\b(?:right|rightward)\s+lane\s+change\b|\blane[-\s]chang(?:e|ed|ing|es)\s+(?:to\s+the\s+|into\s+the\s+)?right\b|\bchang"
           r"(?:ed|ing|es|e)\s+lanes?\s+(?:to\s+the\s+|into\s+the\s+)?right|\bmerg(?:ed|ing|es|e)\s+(?:right|to\s+the\s+"
           r"right|(?:back\s+)?into\s+the\s+right\s+lane)|\b(?:moved|moving|move|switched|switching)\s+(?:(?:back\s+)?into\s+the\s+right\s+"
           r"lane|over\s+to\s+the\s+right)|\b(?:pulled|pulling|swung|swinging)\s+(?:out\s+|back\s+)?into\s+the\s+right\s+lane\b|"
@@ -225,7 +225,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
     ("F", r"\b(?:enter|join)(?:ed|ing|s)?\s+(?:onto\s+)?(?:the\s+(?:freeway|highway|interstate|expressway|motorway)\b|"
           r"(?:Interstate|I-|Highway|Hwy|US|SR|Route|State\s+Route)\s*-?\s*\d+\b(?=[^.]{0,40}\bramp\b))|"
           r"\b(?:cut|cutting|cuts)\s+(?:in|into|over|off\s+EGO)|\bchang(?:ed|ing|es|e)\s+lanes?\b|\blane\s+change\b|"
-          r"\b(?:switch|shift)(?:ed|ing|es|s)?\s+lanes\b|"
+          # ("lane-changed", "lane changed to the left": the noun made a verb)
+          r"\blane[-\s]chang(?:ed|ing|es)\b|"
+          r"\b(?:switch|shift)(?:ed|ing|es|s)?\s+lanes?\b|"
           # Any verb of motion into the AV's lane ("darted", "nosed", "squeezed", "moved laterally into EGO's lane"):
           # the lane entered tells the manoeuvre, whatever the verb; a turn into it is the turn's end, not a change.
           r"\b(?:(?!turn)[a-z]+(?:ed|ing)|came|went|drove|ran|rode|swung|cut|slid|crept)\s+(?:\w+ly\s+)?(?:over\s+|back\s+)?into\s+"
