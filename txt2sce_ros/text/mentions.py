@@ -234,13 +234,16 @@ _VEHICLE_PART = (r"(?:(?:front|rear|back|left|right|driver|passenger|lower|upper
                  r"level|ads|tailgate|liftgate|hatch|grille|bed|cab|trailer)\b")
 _BARE_POSSESSIVE = compile_gated(r"\b(" + _trie_pattern(sorted(set(PARTY_HEADS) | set(MAKES), key=len, reverse=True))
                                  + r")s\s+(?=" + _VEHICLE_PART + ")", re.I)
-_S_BEFORE_PART = compile_gated(r"[a-z]s\s+" + _VEHICLE_PART, re.I)
+# (the cheap look: case-sensitive on the lower-cased text, which starts at each "s" only; the text's white space is
+# one space by then)
+_S_BEFORE_PART = compile_gated(r"s(?<!'s)(?<!\bits)(?<!\bwas)(?<!\bis)(?<!\bhas)(?<!\bhis)(?<!\bthis)(?<!\bas) "
+                               + _VEHICLE_PART.replace("\\s+", " "))
 _COUNTED_BEFORE = compile_gated(r"\b(?:both|two|three|all|several|multiple|many|other|the\s+two)\s+(?:[\w-]+\s+)?$", re.I)
 
 
 def _restore_possessives(t: str) -> str:
     """"the heavy trucks trailer" as "the heavy truck's trailer" (see `_BARE_POSSESSIVE`)."""
-    if not _S_BEFORE_PART.search(t):  # (a cheap look first: most narratives hold no such word)
+    if not _S_BEFORE_PART.search(t.lower()):  # (a cheap look first: most narratives hold no such word)
         return t
     return _BARE_POSSESSIVE.sub(lambda m: m.group(0) if _COUNTED_BEFORE.search(t, max(0, m.start() - 30), m.start())
                                 else f"{m.group(1)}'s ", t)
