@@ -13,6 +13,11 @@ recorder flushes by size only here (`flush_interval=1e9`): under valgrind's ~50x
 flush would cut the run into hundreds of tiny drains a native run never makes. Compare a `rec` run with a `plain`
 run of the same scenario (and a checkout of the code before a change with one after, via PYTHONPATH).
 
+    ... python -m txt2sce_ros.bench._judge_callgrind {plain|rec} NAME loop
+
+marks the loop alone instead (part 2 starts after the run's set-up: scenario, map, planner, oracle) and keeps the
+collector off during it, so a collection falling in or out of the run (±3 M) does not move the difference.
+
     ... python -m txt2sce_ros.bench._judge_callgrind offline
 
 measures offline judging instead: the bench's judging input with one copy of each scenario (both runs recorded
@@ -39,11 +44,12 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
     if args == ["offline"]:
         return _offline()
-    if len(args) != 2 or args[0] not in ("plain", "rec") or args[1] not in SCENARIOS:
-        print(f"usage: python -m txt2sce_ros.bench._judge_callgrind {{plain|rec}} {{{'|'.join(SCENARIOS)}}} | "
-              f"offline", file=sys.stderr)
+    loop = args[2:] == ["loop"]
+    if len(args) != 2 + loop or args[0] not in ("plain", "rec") or args[1] not in SCENARIOS:
+        print(f"usage: python -m txt2sce_ros.bench._judge_callgrind {{plain|rec}} {{{'|'.join(SCENARIOS)}}} [loop] "
+              f"| offline", file=sys.stderr)
         return 2
-    mode, name = args
+    mode, name = args[:2]
     tmp = Path(tempfile.mkdtemp(prefix="txt2sce_judge_callgrind_"))
     try:
         _lockstep(name, None)
@@ -51,14 +57,22 @@ def main(argv: list[str] | None = None) -> int:
         _lockstep(name, w)
         w.close()
         gc.collect()
-        os.getppid()                        # callgrind dumps part 1 here: what follows is the measured run
+        # callgrind dumps part 1 at the first getppid: what follows is the measured run (with `loop`, from the
+        # loop's start, marked inside `_lockstep`; its second mark is skipped so the bag's closing counts too).
+        marks = [os.getppid] if loop else []
+        if loop:
+            gc.disable()
+        else:
+            os.getppid()
+        mark = lambda: marks.pop()() if marks else None    # noqa: E731
         if mode == "rec":
             w = RunWriter(tmp / "run", flush_interval=1e9)
-            _lockstep(name, w)
+            _lockstep(name, w, mark=mark)
             w.close()
         else:
-            _lockstep(name, None)
+            _lockstep(name, None, mark=mark)
         os.getppid()                        # end of part 2
+        gc.enable()
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return 0

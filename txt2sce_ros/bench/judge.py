@@ -33,7 +33,7 @@ import shutil
 import tempfile
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from ..paths import shared_dir
 
@@ -46,8 +46,10 @@ def _xosc(name: str) -> Path:
     return shared_dir() / "data" / "conformance" / "esmini" / "xosc" / f"{name}.xosc"
 
 
-def _lockstep(name: str, writer: Any | None, view: bool = True) -> tuple[float, int, Any]:
-    """One closed-loop run; returns (CPU seconds of the loop, steps, verdict). `view`: record the view markers."""
+def _lockstep(name: str, writer: Any | None, view: bool = True,
+              mark: Callable[[], object] | None = None) -> tuple[float, int, Any]:
+    """One closed-loop run; returns (CPU seconds of the loop, steps, verdict). `view`: record the view markers.
+    `mark`: called just before the loop and just after it (a profiler's markers; see `_judge_callgrind`)."""
     from oracle_monitor import Oracle, OracleParams
     from scenario_player import Simulation, SimulationConfig, load_scenario
     from standin_planner import Faults, Planner, PlannerParams
@@ -63,6 +65,8 @@ def _lockstep(name: str, writer: Any | None, view: bool = True) -> tuple[float, 
     env = ScenarioEnvelope(id=name, xosc=path.read_text(), map_path=str(src),
                            map_xodr=src.read_text() if src.is_file() else "")
     steps = 0
+    if mark is not None:
+        mark()
     t0 = time.process_time()
     if writer is not None:
         writer.begin(env, sim.goal, network=sim.network if view else None, lights=frame.lights)
@@ -80,7 +84,10 @@ def _lockstep(name: str, writer: Any | None, view: bool = True) -> tuple[float, 
         writer.frame(frame)
         writer.violations(frame.t, new)
         writer.end(sim.status, verdict)
-    return time.process_time() - t0, steps, verdict
+    cpu = time.process_time() - t0
+    if mark is not None:
+        mark()
+    return cpu, steps, verdict
 
 
 def _overhead(tmp: Path, pairs: int) -> dict[str, float]:
