@@ -191,42 +191,32 @@ def test_a_clause_about_the_av_after_the_party_s_tells_the_av_s_place_not_the_pa
     assert (p.position, p.lane) == ("R5", "left")
 
 
+def _rewritten_place(report_id: str, old: str, new: str) -> tuple[str, str | None]:
+    """(position, lane) of the first party of a quoted narrative told with `old` replaced by `new`."""
+    original = _TEXTS[report_id][1]
+    text = original.replace(old, new)
+    assert text != original, (report_id, old)
+    p = extract(text, report_id).npcs[0]
+    return p.position, p.lane
+
+
 def test_the_same_scene_told_with_other_common_verbs_places_the_party_alike() -> None:
     # "the scooter's front tire made contact with the rear bumper of the Zoox vehicle", told "struck": the AV's part
     # is the words after the contact's verb (its rear), not the scooter's front as well; the rider ran into the
     # middle of the AV's rear, in line behind it (the gold's R6/same).
-    original = _TEXTS["csvr-zoox-20191011-s35"][1]
-    text = original.replace("made contact with", "struck")
-    assert text != original
-    p = extract(text, "csvr-zoox-20191011-s35").npcs[0]
-    assert (p.position, p.lane) == ("R6", "same")
+    assert _rewritten_place("csvr-zoox-20191011-s35", "made contact with", "struck") == ("R6", "same")
     # "A passenger car (Vehicle 2) was stopped directly behind the Zoox vehicle ... tried to pass the Zoox vehicle on
     # the right side", told "was stationary": it stood in the AV's queue, in its lane, and moved out to pass.
-    original = _TEXTS["csvr-zoox-20240716-s322"][1]
-    text = original.replace("was stopped", "was stationary")
-    assert text != original
-    p = extract(text, "csvr-zoox-20240716-s322").npcs[0]
-    assert (p.position, p.lane) == ("R6", "same")
+    assert _rewritten_place("csvr-zoox-20240716-s322", "was stopped", "was stationary") == ("R6", "same")
     # "The Waymo AV was stopped on the right side of southwestbound [XXX] for a passenger pick-up when an SUV
-    # traveling in the rightmost lane ... passed", told "was stationary": the AV at the right edge, the rightmost
-    # lane on its left (the gold's R6/left).
-    original = _TEXTS["nhtsa-sgo-ads-30270-9436-v1"][1]
-    text = original.replace("was stopped", "was stationary")
-    assert text != original
-    p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
-    assert (p.position, p.lane) == ("R6", "left")
+    # traveling in the rightmost lane ... passed", told "was stationary" or "had stopped": the AV at the right
+    # edge, the rightmost lane on its left (the gold's R6/left).
+    for told in ("was stationary", "had stopped"):
+        assert _rewritten_place("nhtsa-sgo-ads-30270-9436-v1", "was stopped", told) == ("R6", "left")
     # "a white pickup truck traveling behind the Cruise AV rear-ended the Cruise AV, damaging the rear right bumper,
     # rear right quarter panel", told "traveling behind it": the pronoun is the AV, the truck in its lane (R6/same).
-    original = _TEXTS["csvr-cruise-20230728-s266"][1]
-    text = original.replace("traveling behind the Cruise AV", "traveling behind it")
-    assert text != original
-    p = extract(text, "csvr-cruise-20230728-s266").npcs[0]
-    assert (p.position, p.lane) == ("R6", "same")
-    # nhtsa-sgo-ads-30270-9436-v1 told "had stopped on the right side of southwestbound [XXX]": the AV at the curb
-    # all the same.
-    text = _TEXTS["nhtsa-sgo-ads-30270-9436-v1"][1].replace("was stopped", "had stopped")
-    p = extract(text, "nhtsa-sgo-ads-30270-9436-v1").npcs[0]
-    assert (p.position, p.lane) == ("R6", "left")
+    assert _rewritten_place("csvr-cruise-20230728-s266", "traveling behind the Cruise AV",
+                            "traveling behind it") == ("R6", "same")
 
 
 def test_a_party_first_told_as_what_the_av_came_up_on_is_ahead_in_its_path() -> None:
