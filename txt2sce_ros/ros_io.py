@@ -296,11 +296,14 @@ def scenario_markers_bytes(goal: Goal | None, lights: tuple[TrafficLightState, .
     """`scenario_markers(goal, lights, t)` serialised (by the recorder's CDR writer), kept per (goal, lights, t):
     building the rclpy Marker messages costs ~0.15 ms, and a recorder writes the same ones at the start of every
     run of a scenario (t = 0) and at each of its light changes. Equal inputs, equal bytes."""
-    key = (goal, lights, t)
-    data = _SCENE_BYTES.get(key)
-    if data is None:
-        from oracle_monitor.cdr import encode_marker_array      # the recorder's CDR writer; lazy like its users
+    from oracle_monitor.cdr import encode_marker_array          # the recorder's CDR writer; lazy like its users
 
+    key = (goal, lights, t)
+    try:
+        data = _SCENE_BYTES.get(key)
+    except TypeError:                     # a light built with a list for its lanes: not hashable, so not kept
+        return encode_marker_array(scenario_markers(goal, lights, t))
+    if data is None:
         if len(_SCENE_BYTES) >= 256:
             _SCENE_BYTES.clear()
         data = _SCENE_BYTES[key] = encode_marker_array(scenario_markers(goal, lights, t))

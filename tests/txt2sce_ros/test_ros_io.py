@@ -109,3 +109,6 @@ def test_scenario_marker_bytes_are_the_messages_serialised() -> None:
             f"L1 {light.state.value}" for light in lights]
         seen.add(got)
     assert len(seen) == 6
+    # A light built with a list for its lanes cannot be a cache key: the bytes are made all the same.
+    listed = (TrafficLightState("L1", SignalState.RED, 5.0, 1.0, 0.0, "1", [-1]),)
+    assert ros_io.scenario_markers_bytes(goal, listed, 0.0) == ros_io.scenario_markers_bytes(goal, red, 0.0)
