@@ -2710,6 +2710,33 @@ PROBES: tuple[Probe, ...] = (
           _AV_STOPPED.replace("at 16th Street", "") + "A sedan that was stopped behind the Waymo AV {w} and made "
           "contact with the rear bumper of the Waymo AV.",
           _MOVING_OFF, _npc_actions, [("stopped", "i")]),
+    # Session 18: a party told crossing the AV's way at a junction (running the light or the stop sign, cross traffic,
+    # broadside) with no heading, side or street of its own (a redacted street): on the crossing road on the side of
+    # the AV it struck, told by the part's many names, before or after the AV's name.
+    Probe("a party told crossing the AV's way at a junction, by the side of the AV it struck (session 18)",
+          "The Waymo AV was traveling northbound on [XXX] through the intersection with [XXX] on a green light when a "
+          "sedan on [XXX] {w}.",
+          ("ran the red light and struck the right side of the Waymo AV",
+           "ran the red light and struck the Waymo AV on its passenger side",
+           "ran the red light and made contact with the Waymo AV's right front fender",
+           "ran the red light and broadsided the Waymo AV on its passenger side",
+           "ran the red light and T-boned the Waymo AV on the passenger side",
+           "failed to stop for the red light and collided with the passenger side of the Waymo AV",
+           "entered the intersection against the red light and struck the Waymo AV's passenger side doors",
+           "disregarded the stop sign and impacted the right side of the Waymo AV",
+           "proceeded through the red light and contacted the Waymo AV's right rear quarter panel",
+           "ran the stop sign and struck the left side of the Waymo AV",
+           "ran the red light and struck the Waymo AV on its driver side",
+           "violated the red light and broadsided the Waymo AV on the driver's side",
+           "ran the red light and made contact with the Waymo AV's left rear corner",
+           "failed to stop at the stop sign and T-boned the Waymo AV on its left side"),
+          _position, lambda w: [("R1" if ("left" in w or "driver" in w) else "R3", None)]),
+    Probe("a vehicle the AV gave way to at a junction, nothing else told of it (session 18)",
+          "The Waymo AV was traveling northbound on [XXX] and came to a stop at a four-way stop sign intersection. "
+          "The Waymo AV {w} at the intersection when a sedan rear-ended the Waymo AV.",
+          ("stopped to yield to another vehicle", "was yielding to a pickup truck", "waited for a van",
+           "was stopped for a passenger car", "braked for a box truck", "yielded to an SUV"),
+          lambda sk: [(p.position, p.lane) for p in sk.npcs], [("R1", None), ("R6", "same")]),
 )
 
 

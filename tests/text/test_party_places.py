@@ -235,3 +235,49 @@ def test_a_party_first_told_as_what_the_av_came_up_on_is_ahead_in_its_path() -> 
     # where the SUV went later is no place it began in (the gold's R5/same).
     p = _party("nhtsa-sgo-ads-30270-10672-v1")
     assert (p.position, p.lane) == ("R5", "same")
+
+
+def _rewritten(report_id: str, *edits: tuple[str, str]) -> tuple[str, str | None]:
+    """(position, lane) of the first party of a quoted narrative with each (old, new) edit made."""
+    text = _TEXTS[report_id][1]
+    for old, new in edits:
+        assert old in text, (report_id, old)
+        text = text.replace(old, new)
+    p = extract(text, report_id).npcs[0]
+    return p.position, p.lane
+
+
+def test_a_party_told_crossing_the_av_s_way_at_a_junction_is_on_the_crossing_road_on_the_side_it_struck() -> None:
+    # "the Cruise AV yielded to an electric scooterist traveling northbound on Mission Street and violating a red
+    # light ... the electric scooterist made contact with the right rear corner of the Cruise AV" (the gold's R3),
+    # told without its heading: running the light puts it on the crossing road, on the side of the AV it struck,
+    # though it struck a rear corner (the tail of an AV crossing its way), not behind the AV.
+    assert _rewritten("dmvca-cruise-20191107-r89", ("traveling northbound on Mission Street and violating",
+                                                    "violating")) == ("R3", None)
+    # "a passenger vehicle which had previously been stopped at a red light, proceeded through the red light. The
+    # passenger vehicle approached from the left and made contact with the left rear bumper" (the gold's R1), told
+    # without "from the left": the side of the AV it struck tells it.
+    assert _rewritten("csvr-waymo-20230122-s209", ("approached from the left and made", "made")) == ("R1", None)
+
+
+def test_a_side_of_the_av_named_after_it_and_a_broadside_are_read() -> None:
+    # "... proceeded through the red light. The passenger vehicle approached from the left and made contact with the
+    # left rear bumper of the Waymo AV", told "broadsided the Waymo AV on its driver side" / "on its passenger side":
+    # a contact (the party is the collision's), and the part named after the AV's name is the side it struck (the
+    # crossing road on that side).
+    for side, leg in (("driver", "R1"), ("passenger", "R3")):
+        text = _TEXTS["csvr-waymo-20230122-s209"][1].replace(
+            "approached from the left and made contact with the left rear bumper of the Waymo AV",
+            f"broadsided the Waymo AV on its {side} side")
+        sk = extract(text, "csvr-waymo-20230122-s209")
+        assert sk.collision.with_ == "npc1" and (sk.npcs[0].position, sk.npcs[0].lane) == (leg, None), side
+
+
+def test_a_vehicle_the_av_gave_way_to_at_a_junction_is_on_the_crossing_road_from_the_left() -> None:
+    # "The Waymo AV stopped to yield to another vehicle at the intersection" (a four-way stop, the AV going
+    # straight): nothing else places it; a driver going straight yields to the crossing road from the left (R1).
+    assert (_party("csvr-waymo-20190226-s3").position, _party("csvr-waymo-20190226-s3").lane) == ("R1", None)
+    # "The first Waymo AV was preparing to make a right turn, while yielding to the other Waymo AV" (a T-junction
+    # of a parking lot): the same, for an AV turning right.
+    p = _party("dmvca-waymo-20241016-r620", 1)
+    assert (p.position, p.lane) == ("R1", None)

@@ -221,6 +221,7 @@ CONTACT = compile_gated(
     r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\s+of\s+EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
     r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\b))|"
     r"(?:jumped|climbed|leaped|leapt|landed)\s+(?:up\s+)?onto\s+(?:the\s+)?(?:hood|roof|windshield|bumper|trunk)\s+of\s+EGO|"
+    r"broadsid(?:ed|ing|es)|"  # ("broadsided the AV": struck it side-on, as "T-boned")
     r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
     # climbing a curb or median is contact with it ("mounted the curb", "drove up onto the median")
     r"(?:mounted|mounting|jumped|jumping|hopped|hopping|(?:drove|driving|rode|riding|ran|running|went|going)\s+up\s+"

@@ -228,6 +228,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if e.idx == d.partner and fre.search(r"[fg]", ego_actions) and not fre.search(r"[fg]", "".join(
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
+    if junction and (fore != "rear" or cside) and (leg := _crossing_leg(d, e, ctx, fore, cside, ego_turning)):
+        return leg
     if fore == "rear":
         return "R6", _rear_lane(d), True
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
@@ -250,9 +252,57 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         return ("R1" if side == "left" else "R3" if side == "right" else "R2"), None, bool(side)
     if fre.search(r"\bbehind\b(?<!from\sbehind)", ctx, re.I) or fre.search(r"\b" + FROM_BEHIND, ctx, re.I):
         return "R6", "same", True
+    if junction and (leg := _yielded_at_junction(d, e, fore, ego_actions)):
+        return leg
     if fore == "front":
         return "R5", "same", True
     return "R5", "same", False
+
+
+# A party told as crossing the AV's way at a junction: running the light or the stop sign ("ran the red light",
+# "failed to stop for the stop sign", "proceeded through the red light"), cross traffic, heading perpendicular to
+# the AV, or striking it broadside ("broadsided", "T-boned").
+_CROSSING_TOLD = compile_gated(r"\b(?:ran|run|runs|running|through|against|violat\w*|disregard\w*|ignor\w*|"
+                               r"fail\w*\s+to\s+(?:stop|yield)\s+(?:at|for))\s+(?:a|the|its|their)\s+"
+                               r"(?:steady\s+|solid\s+|circular\s+)?(?:red|stop\s+sign)|\bred[- ]light[- ]runn\w*|"
+                               r"\bcross[\s-]traffic\b|\bperpendicular\b|\bbroadsid\w*|\bt-?bon(?:ed|ing|es)\b", re.I)
+# The AV gave way to the party: "yielding to the other Waymo AV", "stopped for a vehicle" (the words before its name).
+YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|to)\s+(?:a|an|the|another)\s+"
+                           r"(?:\w+\s+){0,2}$", re.I)
+
+
+def _crossing_leg(d: Doc, e: Entity, ctx: str, fore: str | None, cside: str | None,
+                  ego_turning: bool) -> tuple[str, None, bool] | None:
+    """A vehicle or rider at a junction that no heading, side or lane placed, told in its own words crossing the
+    AV's way (running the light or the stop sign, cross traffic, broadside), and not behind the AV: on the crossing
+    road on the side of the AV it struck, else on the left. Studyable: 10 reports tell a party running a red light
+    or a stop sign; 6 of those parties are on a crossing road in the gold (2 more on the opposite approach, 2 behind
+    the AV), all placed by a heading, a side or "from behind" before this; it reads the scene when those are
+    missing (a redacted street, no heading), and a rear corner struck is then the tail of an AV crossing its way. A
+    turning AV struck on its left met it from there too ("As the AV was making the left turn, a Subaru ... failed to
+    stop for the stop sign and struck the front left side of the Cruise AV": R1)."""
+    if e.category == "pedestrian" or fre.search(r"\bbehind\b|\bfollowing\b|\bfrom\s+the\s+rear\b",
+                                                                 ctx, re.I):
+        return None
+    # (in the party's own words: "EGO was yielding to check for cross traffic ... when it was rear-ended" is not)
+    if not _CROSSING_TOLD.search(ctx):
+        return None
+    side = cside or (side_from_flank(d, e) if e.idx == d.partner and fore == "front" else None)
+    if ego_turning and side != "left":
+        return None  # (a turning AV struck on its right or front may have met the opposite approach, R2)
+    return ("R3" if side == "right" else "R1"), None, True
+
+
+def _yielded_at_junction(d: Doc, e: Entity, fore: str | None, ego_actions: str) -> tuple[str, None, bool] | None:
+    """A vehicle at a junction that nothing else placed and that the AV, going straight or turning right, gave way
+    to ("stopped to yield to another vehicle at the intersection", "while yielding to the other Waymo AV"), touching
+    no end of the AV: on the crossing road from the left, which a driver going straight or turning right yields to
+    (3 of the 3 such studyable parties no other words place are R1 in the gold)."""
+    if e.category not in ("car", "van", "truck", "bus", "motorcycle") or "d" in ego_actions or fore is not None:
+        return None
+    if any(YIELDED_TO.search(d.sents[m.sent][max(0, m.start - 40):m.start]) for m in e.mentions):
+        return "R1", None, True
+    return None
 
 
 # A clause about the AV joined after the party's ("... began to reverse as EGO was parked at the curb", "...

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import AV_CLAUSE, FROM_BEHIND, PLACE_SIDE, exit_street, side_from_flank
+from .positions import AV_CLAUSE, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -482,8 +482,6 @@ def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
     return sorted(cues, key=key)
 
 
-_YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|to)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}$",
-                            re.I)
 
 
 def _clause_end(d: Doc, e: Entity, m: Mention) -> int:
@@ -528,7 +526,7 @@ def _on_exit_crosswalk(d: Doc, e: Entity, far_only: bool = False) -> Cue | None:
         # "..., stepped into the crosswalk"; "crossing the street EGO was turning onto", "crossing Taylor Street"
         cw = fre.search(r"\bcrosswalk\b", win, re.I) or fre.search(r"\bcrosswalk\b", clause, re.I) or \
             (not far_only and _crosses_exit_street(d, clause))
-        if cw or _YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
+        if cw or YIELDED_TO.search(s[max(0, m.start - 40):m.start]):
             a = d.offset(m.sent) + max(0, m.start - 40)
             return Cue("junction", "exit leg", (a + cw.start(), a + cw.end()) if cw else
                        (d.offset(m.sent) + m.start, d.offset(m.sent) + m.end))

@@ -694,6 +694,10 @@ _ITS_PART = compile_gated(r"\bEGO\b[^.;]{0,40},\s+(?:impacting|striking|hitting|
 _CONTACT_ITS = compile_gated(r"\b(?:made\s+contact\s+with|contacted|struck|hit|impacted|rear-ended|collided\s+with|"
                              r"sideswiped)\s+its\s+((?:[\w-]+\s+){0,3}?(?:bumper|side|corner|door|fender|"
                              rf"panel|end|sensor|mirror|wheel|tire|{REAR_PARTS}|{FRONT_PARTS})\b)", re.I)
+# "struck EGO on its passenger side", "hit EGO in the right rear door": the part named after the AV's name.
+_EGO_ON_PART = compile_gated(r"\bEGO\s+(?:broadside\s+)?(?:on|in|at|along)\s+(?:its|the)\s+((?:[\w-]+\s+){0,3}?"
+                             rf"(?:bumper|side|corner|door|fender|panel|quarter|sensor|mirror|wheel|tire|{REAR_PARTS}|"
+                             rf"{FRONT_PARTS})\b)", re.I)
 _PART_END = re.compile(r"\b(?:collided|made|struck|hit|contacted|impacted|came|was|were|had|sideswiped|scraped|"
                        r"clipped|rubbed|touched|bumped|with|against|into)\b", re.I)
 _PART_WORD = compile_gated(rf"\b(?:{REAR_PARTS}|{FRONT_PARTS}|driver|passenger|left|right|(?-i:LF|RF|LR|RR))\b", re.I)
@@ -720,6 +724,7 @@ def _ego_parts(s: str) -> list[str]:
     # "EGO's front end collided with the driver side of the pickup": the AV's part ends where the verb begins
     parts += [_PART_END.split(m.group(1), 1)[0] for m in _EGOS_PART.finditer(s)]
     parts += [m.group(1) for m in _ITS_PART.finditer(s)]
+    parts += [m.group(1) for m in _EGO_ON_PART.finditer(s)]
     # "... when another vehicle made contact with its rear bumper": a party that touched "its" part touched the
     # AV's (a vehicle does not strike its own bumper); not where the AV itself is the doer just before.
     parts += [m.group(1) for m in _CONTACT_ITS.finditer(s) if "EGO" not in s[max(0, m.start() - 40):m.start()]]
