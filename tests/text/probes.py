@@ -2737,6 +2737,11 @@ PROBES: tuple[Probe, ...] = (
           ("stopped to yield to another vehicle", "was yielding to a pickup truck", "waited for a van",
            "was stopped for a passenger car", "braked for a box truck", "yielded to an SUV"),
           lambda sk: [(p.position, p.lane) for p in sk.npcs], [("R1", None), ("R6", "same")]),
+    Probe("a party going forward into the front of the standing AV came at it; one backing was ahead (session 18)",
+          "The Waymo AV was stopped on [XXX] in the middle of the block. A sedan {w} the front of the Waymo AV.",
+          ("made contact with", "struck", "collided with", "drove into", "hit", "then made contact with",
+           "reversed and made contact with", "backed up and struck", "rolled back into"),
+          _position, lambda w: [("R5" if any(x in w for x in ("revers", "back")) else "R7", "same")]),
 )
 
 

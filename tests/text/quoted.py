@@ -1658,4 +1658,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         "and incorporates Kodiak's response into this submission by reference. Paccar's submission is based on "
         'facts supplied to Paccar by Kodiak. Paccar has not investigated the alleged incident and has no '
         'independent knowledge of the facts in the Report.'),
+    'nhtsa-sgo-ads-30270-10800-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10800, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On Tuesday, April [XXX], 2025 at 2:37 AM CDT, a Waymo Autonomous Vehicle ("Waymo AV") operating in '
+        'Austin, Texas was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was parked at'
+        ' the curb facing south on [XXX] when a passenger car reversed into the vacant parallel parking space in '
+        'front of the Waymo AV. The rear of the passenger car made contact with the front of the Waymo AV. At the'
+        " time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
 }

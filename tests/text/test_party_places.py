@@ -281,3 +281,16 @@ def test_a_vehicle_the_av_gave_way_to_at_a_junction_is_on_the_crossing_road_from
     # of a parking lot): the same, for an AV turning right.
     p = _party("dmvca-waymo-20241016-r620", 1)
     assert (p.position, p.lane) == ("R1", None)
+
+
+def test_a_party_going_forward_into_the_front_of_a_standing_av_came_at_it_head_on() -> None:
+    # "The Waymo AV remained stopped as the oncoming cyclists rode around both sides of the Waymo AV. One cyclist
+    # then made contact with the front of the stationary Waymo AV": the cyclist named anew, nothing said of its
+    # place, going forward into the middle of the front of an AV standing still: it came the other way, in the
+    # AV's lane (the gold's R7/same), not ahead of the AV at the lane edge.
+    p = _party("dmvca-waymo-20230507-r466")
+    assert (p.position, p.lane) == ("R7", "same")
+    # One that backed into the front of the standing AV was ahead of it: "a passenger car reversed into the vacant
+    # parallel parking space in front of the Waymo AV. The rear of the passenger car made contact with the front of
+    # the Waymo AV" (R5, in the AV's path).
+    assert _party("nhtsa-sgo-ads-30270-10800-v1").position == "R5"

@@ -255,8 +255,28 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if junction and (leg := _yielded_at_junction(d, e, fore, ego_actions)):
         return leg
     if fore == "front":
-        return "R5", "same", True
+        # The middle of the front of an AV standing still struck by a party going forward: it came at the AV
+        # head-on; else the AV ran into it, ahead in its lane.
+        return ("R7" if not junction and _came_at_standing_av(d, e, ctx, cside, ego_actions) else "R5"), "same", True
     return "R5", "same", False
+
+
+# Backing up: "reversed", "backed up / out / into", "rolled back".
+BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
+
+
+def _came_at_standing_av(d: Doc, e: Entity, ctx: str, cside: str | None, ego_actions: str) -> bool:
+    """Did a vehicle or rider strike the front of the AV, no side of it, while the AV stood (stopped throughout or
+    before the contact), going forward, with no turn, lane change or crossing of its own? Then it came the other
+    way ("One cyclist then made contact with the front of the stationary Waymo AV": the gold's R7). Studyable: of
+    the 13 parties that met the middle of the front of a standing AV, the 10 that backed into it are ahead (R5), the
+    3 going forward oncoming (R7; lane same 1, left 2, the two on the left placed before this by their words)."""
+    if cside or e.category == "pedestrian" or not (ego_actions == "" or ego_actions.endswith("h")):
+        return False
+    own = {a.code for a in d.acts if a.who == e.idx}
+    return not own & set("dekfgjmFT") and not BACKING.search(ctx) and \
+        not fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued)\b",
+                       " ".join(m.mods for m in e.mentions), re.I)
 
 
 # A party told as crossing the AV's way at a junction: running the light or the stop sign ("ran the red light",

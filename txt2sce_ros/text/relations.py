@@ -45,7 +45,7 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import AV_CLAUSE, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
+from .positions import AV_CLAUSE, BACKING, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
 from .lexicon import CARDINALS
 from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
 
@@ -186,7 +186,6 @@ _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(
 # right-hand default of a curb, sidewalk or shoulder does not hold.
 _ROADSIDE_SIDE = compile_gated(r"\b(?:(north|south|east|west)(?:ern)?|(left|right)|opposite|far|other)(?:[- ]hand)?\s+$", re.I)
 _RELATIVE_LANE = compile_gated(r"\b(?:EGO|us|it|its|our|adjacent|neighbou?ring)\b", re.I)
-_BACKING = compile_gated(r"\brevers|\bback(?:ed|ing|s)?\s+(?:up|out|into)\b|\bbacking\b|\brolled\s+back", re.I)
 
 
 @dataclass(frozen=True)
@@ -582,7 +581,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         return Placement(pos, lane, "first reading", tuple(cues), tuple(cues))
     rule = "first reading"
     ctx = context(d, e)  # the words of its place, read by several rules below
-    backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(_BACKING.search(ctx))
+    backing = any(a.who == e.idx and a.code == "k" for a in d.acts) or bool(BACKING.search(ctx))
     along = _nearest_first([c for c in cues if c.kind == "along"], d, e)
     passing = [c for c in cues if c.kind == "passing"]
     contact = next((c for c in cues if c.kind == "contact"), None)
