@@ -2742,6 +2742,22 @@ PROBES: tuple[Probe, ...] = (
           ("made contact with", "struck", "collided with", "drove into", "hit", "then made contact with",
            "reversed and made contact with", "backed up and struck", "rolled back into"),
           _position, lambda w: [("R5" if any(x in w for x in ("revers", "back")) else "R7", "same")]),
+    # Session 18: the AV's run before its stop, told by any verb of going or by its heading alone (put for "was
+    # traveling" in the 158 studyable narratives that use it, each of these changed 10-21 AV strings on 78babff).
+    Probe("the AV's run before its stop, told by other verbs of going (session 18)",
+          "The Waymo AV was {w} on Mission Street and came to a stop at a red light. A sedan traveling behind the "
+          "Waymo AV made contact with its rear bumper.",
+          ("operating northbound", "going northbound", "en route northbound", "in motion northbound",
+           "being driven northbound", "navigating northbound", "northbound", "cruising northbound",
+           "headed northbound", "rolling northbound", "operating north", "going north"),
+          _ego, ("moving", "ah")),
+    Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
+          "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
+          "traveling in the left lane made contact with the driver side of the Waymo AV.",
+          ("operating northbound", "going northbound", "en route northbound", "in motion northbound",
+           "being driven northbound", "navigating northbound", "northbound", "cruising northbound",
+           "headed northbound", "rolling northbound"),
+          _ego, ("moving", "af")),
 )
 
 

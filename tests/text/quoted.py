@@ -553,6 +553,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'the right rear corner of the Cruise AV, damaging the Cruise AV’s right rear fascia and brake light. The '
         'electric scooterist left the scene without exchanging information. There were no injuries and police '
         'were not called.'),
+    'dmvca-cruise-20200725-r132': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 132, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“Cruise AV”) being driven in conventional mode was involved in a '
+        'single-car collision on westbound Taraval Street near the intersection with 21st Avenue. After '
+        'completing a right turn onto Taraval from 21st, the driver of the Cruise AV turned into a parallel '
+        'parking space and made contact with the curb, damaging the Cruise AV’s front right tire. There were '
+        'no injuries and police were not called.'),
     'dmvca-cruise-20230814-r511': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 511, column '
         '"Accident Detail Description")',

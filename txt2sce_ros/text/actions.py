@@ -360,7 +360,16 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
           r"pull(?:ed|ing|s)?\s+up\s+(?:behind|beside|next\s+to|alongside)|"
-          r"continued\s+(?:its|on|forward|through)|walking|walked|running)\b"),
+          r"continued\s+(?:its|on|forward|through)|walking|walked|running|"
+          # A run told by other verbs of going, or by the heading alone ("was going north", "was operating
+          # southbound", "was en route", "was northbound on X"): the AV's and a party's run along its road (each
+          # wording, put for "was traveling" in the 158 studyable narratives that use it, changed 10-21 AV strings).
+          rf"go(?:ing|es)\s+{_DIR}(?:bound|ward)?|operat(?:ed|ing|es)\s+{_DIR}(?:bound|ward)?|en\s+route|"
+          # ("being driven in conventional mode" tells the mode, no run)
+          rf"in\s+motion|navigat(?:ed|ing|es)|being\s+driven(?!\s+(?:in\s+(?:[\w-]+\s+)?mode|manually|autonomously|by)\b)|"
+          rf"(?:(?<=was\s)|(?<=were\s)){_DIR}bound(?=\s+(?:on|along|in)\b)|"
+          r"roll(?:ed|ing|s)?(?!\s+(?:back|backward|backwards|in\s+reverse|stop))(?=\s+(?:forward|along|ahead|down|"
+          rf"through|at|on|{_DIR})))\b"),
 )
 _PHRASE_RES = [(c, compile_gated(p, re.I)) for c, p in PHRASES]
 #: Words one of which every match of a code's phrase contains: a sentence without any of them skips that regex
@@ -497,7 +506,7 @@ _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\
                          r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
-                      rf"moving|riding|was)\s+"
+                      rf"moving|riding|operating|cruising|navigating|en\s+route|was)\s+"
                       # "traveling at approximately 20 mph northwest": a speed told between the verb and its heading
                       rf"(?:at\s+(?:approximately\s+|about\s+|around\s+|roughly\s+)?\d+\s*(?:mph|miles\s+per\s+hour|"
                       rf"km/h)\s+)?(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"
@@ -628,11 +637,16 @@ def who_for(pos: int, ments: list[Mention], fallback: int | None, sentence: str 
     return -1 if best.kind in ("ego", "egod") else (best.entity if best.entity >= 0 else fallback)
 
 
+#: A verb form that tells a move going on: the participle ("turning"), or a state of going told after "was" ("was en
+#: route", "was in motion", "was being driven", "was northbound on X"), read as "was traveling" is.
+_GOING_FORM = compile_gated(rf"\w+ing\b|en\s+route\b|in\s+motion\b|being\s+driven\b|{_DIR}bound\b", re.I)
+
+
 def _in_progress(s: str, b: int, e: int, rel: Mention | None) -> bool:
     """Is the manoeuvre at s[b:e] told as already in progress: "was turning right", "was making a right turn",
     "while changing lanes", or a participle right after its doer as subject ("A truck merging onto the freeway")?"""
     before = s[max(0, b - 70):b]
-    if fre.match(r"\w+ing\b", s[b:e]):
+    if _GOING_FORM.match(s[b:e]):
         # The participle opens the subject's own clause ("A truck merging onto ... moved into"); after an object of
         # seeing ("seeing the car crossing the centerline") it tells what was seen, not when it began.
         return bool(_PROGRESSIVE.search(before)) or (rel is not None and rel.subject and not s[rel.end:b].strip())

@@ -90,7 +90,10 @@ _LOT_EDGE = compile_gated(r"\b(?:(?:entrance|entry|exit|driveway|gate)\s+(?:of|t
 _CURVE = compile_gated(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
 _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
-                      r"driving|proceeding|heading|northbound|southbound|eastbound|westbound|us\s+\d+|route|"
+                      # (a run told by another verb of going on a road: "was en route north on [XXX]"; a bare "was in
+                      # motion" names no place)
+                      r"driving|proceeding|heading|headed|cruising|navigating|en\s+route|"
+                      r"northbound|southbound|eastbound|westbound|us\s+\d+|route|"
                       r"road|curb|driveway|oncoming|opposite\s+direction|opposing|traffic|"
                       # a queue of cars, a parking space, a passenger let on or off: a place on a street
                       r"queue|line\s+of\s+(?:cars|vehicles)|parking\s+(?:space|spot|stall)|drop(?:ping|ped)?[- ]off|"
