@@ -1676,4 +1676,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         " time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
         'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10717-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10717, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 9:44 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'northeastbound on [XXX] in the rightmost dedicated left turn lane and made an unprotected left turn onto'
+        ' [XXX]. As the Waymo AV completed the left turn onto [XXX], a passenger car turning left in the leftmost'
+        ' dedicated left turn lane directly next to the Waymo AV crossed into the lane of the Waymo AV and the '
+        'front passenger side of the passenger car made contact with the driver side of the Waymo AV. At the time'
+        " of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+        'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
 }

@@ -434,6 +434,8 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|
                                r"completing|conducting|negotiating)|in\s+the\s+(?:middle|midst)\s+of|"
                                r"(?:partway|midway|halfway)\s+(?:through|into))\s+(?:a|an|its|the|their|his|her)\s+"
                                r"(?:[\w-]+\s+)?$", re.I)
+_MAKING_NOUN = compile_gated(r"\s*(?:making|executing|performing|completing|conducting)\s+(?:a|an|its|the|their)\s+"
+                             r"(?:[\w-]+\s+)?", re.I)
 # "abruptly stopped", "suddenly halted": a manner adverb makes a stop an event of a party on its way.
 _SUDDEN = compile_gated(r"\b(?:suddenly|abruptly|quickly|unexpectedly|immediately)\s+$", re.I)
 # What a stop is made at when it is where a party waited: a sign, a light, a line.
@@ -650,7 +652,10 @@ def _in_progress(s: str, b: int, e: int, rel: Mention | None) -> bool:
         # The participle opens the subject's own clause ("A truck merging onto ... moved into"); after an object of
         # seeing ("seeing the car crossing the centerline") it tells what was seen, not when it began.
         return bool(_PROGRESSIVE.search(before)) or (rel is not None and rel.subject and not s[rel.end:b].strip())
-    return bool(_PROGRESSIVE_NOUN.search(before))
+    # So does the noun of the manoeuvre after a participle ("a passenger car making a left turn in the leftmost
+    # lane crossed into ..." as "a passenger car turning left in ...")
+    return bool(_PROGRESSIVE_NOUN.search(before)) or (rel is not None and rel.subject and
+                                                       bool(_MAKING_NOUN.fullmatch(s[rel.end:b])))
 
 
 def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,

@@ -1,0 +1,27 @@
+"""Issue 13, the other parties' start and action strings, read from real narratives of the studyable sets (quoted in
+tests/text/quoted.py with their sources). One test per reading (session 18); each asserts what sketch.md's rules and
+the official gold's conventions give, on the narrative as written and, where the reading is one of grammar, on the
+same narrative told in another common wording.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.sketch import Party
+from txt2sce_ros.text.extractor import extract
+
+from .quoted import QUOTED
+
+
+def _party(report_id: str, text: str | None = None, k: int = 0) -> Party:
+    return extract(text if text is not None else QUOTED[report_id][1], report_id).npcs[k]
+
+
+def test_a_turn_named_after_the_party_s_participle_is_under_way() -> None:
+    # "a passenger car turning left in the leftmost dedicated left turn lane ... crossed into the lane of the Waymo
+    # AV": the turn was under way when the story takes the car up (`d`, then the move into the AV's lane, `g`; the
+    # gold `dg`). "a passenger car making a left turn in ..." tells the same: the noun of the manoeuvre after the
+    # subject's participle is under way as the participle itself is, so no run (`a`) opens the string.
+    rid = "nhtsa-sgo-ads-30270-10717-v1"
+    assert _party(rid).actions == "dg"
+    told = QUOTED[rid][1].replace("a passenger car turning left", "a passenger car making a left turn")
+    assert _party(rid, told).actions == "dg"
