@@ -25,3 +25,20 @@ def test_a_turn_named_after_the_party_s_participle_is_under_way() -> None:
     assert _party(rid).actions == "dg"
     told = QUOTED[rid][1].replace("a passenger car turning left", "a passenger car making a left turn")
     assert _party(rid, told).actions == "dg"
+
+
+def test_a_backing_or_speed_up_after_a_contact_begins_another_episode_with_or_without_then() -> None:
+    # "The heavy truck then reversed and proceeded eastbound. As the heavy truck passed the stationary Waymo AV, it
+    # made contact with the driver side ...": the conflict is the first contact, so the truck's string ends there
+    # (`af`, the gold), without the backing. Told without "then" the backing still follows the first contact.
+    rid = "nhtsa-sgo-ads-30270-10776-v1"
+    assert _party(rid).actions == "af"
+    assert _party(rid, QUOTED[rid][1].replace("The heavy truck then reversed", "The heavy truck reversed")).actions \
+        == "af"
+    # "The passenger car then accelerated and the front right corner of the passenger car made contact with the rear
+    # left corner of the stationary Waymo AV": the second contact, after the first ("made continuous contact ...
+    # before the passenger car slowed down and separated"); the car's string is its approach from behind (`a`).
+    rid = "csvr-waymo-20240319-s304"
+    assert _party(rid).actions == "a"
+    assert _party(rid, QUOTED[rid][1].replace("The passenger car then accelerated", "The passenger car accelerated")) \
+        .actions == "a"

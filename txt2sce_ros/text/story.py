@@ -283,11 +283,15 @@ def find_contact(d: Doc) -> None:
         chosen = next(c for c in (detailed or candidates) if c[2] == chosen[2] or c[2] is None)
     elif chosen[2] is not None and (first := next((c for c in detailed if c[2] == chosen[2]), chosen)) != chosen and \
             any(a.who == chosen[2] and first[0] < a.sent and (a.sent, a.pos) < chosen[:2] and
-                a.code in "abdefgjkmFT" and _THEN_BEFORE.search(d.sents[a.sent][max(0, a.pos - 12):a.pos])
-                for a in d.acts):
+                (a.code in "abdefgjkmFT" and _THEN_BEFORE.search(d.sents[a.sent][max(0, a.pos - 12):a.pos]) or
+                 a.code in _NEW_EPISODE) for a in d.acts):
         # The same party touched the AV, then moved again and touched it once more ("made contact with the front
         # driver side of EGO. The heavy truck then reversed ... it made contact with the driver side"): the
-        # conflict is the first contact; the move told next ("then") begins what came after.
+        # conflict is the first contact; the move told next ("then") begins what came after. A backing or a
+        # speed-up told after the contact sentence begins it with or without "then" ("The heavy truck reversed and
+        # proceeded eastbound", "The passenger car accelerated and ... made contact with the rear left corner"):
+        # neither retells the run that led to the first contact, as "The bus was traveling less than 2mph when it
+        # hit" does.
         chosen = first
     d.contact_sent, d.contact_pos, d.partner = chosen
     for i, m in met_by_others:
@@ -316,6 +320,8 @@ def find_contact(d: Doc) -> None:
 
 
 _THEN_BEFORE = compile_gated(r"\bthen\s+$", re.I)
+#: A party's moves that, told after its first contact with the AV, begin another episode (backing, speeding up).
+_NEW_EPISODE = "bk"
 _AFTER_FIRST_CONTACT = compile_gated(r"\s*(?:after|following)\s+(?:the|this|that)\s+(?:initial|first)\s+"
                                      r"(?:contact|impact|collision)\b", re.I)
 _CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
