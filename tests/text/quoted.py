@@ -1688,4 +1688,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         " of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
         'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10718-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10718, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 8:57 PM CDT a Waymo Autonomous Vehicle ("Waymo AV") operating in Austin, Texas '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling eastbound in '
+        'the right turn lane of [XXX] and came to a stop in a queue of traffic for a red traffic light at the '
+        'intersection with [XXX]. A passenger car travelling directly behind the Waymo AV initially came to a '
+        'stop in the queue of traffic, then began to proceed forward and the front of the passenger car made '
+        "contact with the rear of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+        'was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
 }

@@ -42,3 +42,17 @@ def test_a_backing_or_speed_up_after_a_contact_begins_another_episode_with_or_wi
     assert _party(rid).actions == "a"
     assert _party(rid, QUOTED[rid][1].replace("The passenger car then accelerated", "The passenger car accelerated")) \
         .actions == "a"
+
+
+def test_a_stop_told_as_the_party_s_first_state_is_where_it_stood() -> None:
+    # "a passenger car traveling westbound on [XXX] initially stopped behind the Waymo AV, then proceeded to pass to
+    # Waymo AV on the left": it stood behind the parked AV when the story begins (`stopped`), then moved off and
+    # passed (`if`, the gold), not a run that stopped (`ahif`).
+    assert (_party("nhtsa-sgo-ads-30270-10666-v1").start, _party("nhtsa-sgo-ads-30270-10666-v1").actions) == \
+        ("stopped", "if")
+    # "A passenger car travelling directly behind the Waymo AV initially came to a stop in the queue of traffic, then
+    # began to proceed forward": `stopped`, `i` (the gold), told "initially", "at first" or "first".
+    rid = "nhtsa-sgo-ads-30270-10718-v1"
+    for first in ("initially", "at first", "first"):
+        p = _party(rid, QUOTED[rid][1].replace("initially came", f"{first} came"))
+        assert (p.start, p.actions) == ("stopped", "i"), first

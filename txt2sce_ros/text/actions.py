@@ -436,6 +436,8 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|
                                r"(?:[\w-]+\s+)?$", re.I)
 _MAKING_NOUN = compile_gated(r"\s*(?:making|executing|performing|completing|conducting)\s+(?:a|an|its|the|their)\s+"
                              r"(?:[\w-]+\s+)?", re.I)
+#: A stop told as the party's first state ("initially stopped", "at first came to a stop", "was originally stopped").
+_AT_FIRST = compile_gated(r"\b(?:initially|originally|at\s+first|first)\s+(?:(?:was|were|had)\s+)?$", re.I)
 # "abruptly stopped", "suddenly halted": a manner adverb makes a stop an event of a party on its way.
 _SUDDEN = compile_gated(r"\b(?:suddenly|abruptly|quickly|unexpectedly|immediately)\s+$", re.I)
 # What a stop is made at when it is where a party waited: a sign, a light, a line.
@@ -828,6 +830,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "S"
         elif code == "h" and who >= 0 and _AT_CONTROL.match(s[e:e + 60]):
             code = "S"  # a party's stop "at the stop sign", "for the red light": where it waited
+        elif code == "h" and who >= 0 and _AT_FIRST.search(before):
+            # "a passenger car traveling westbound initially stopped behind the Waymo AV, then proceeded to pass":
+            # the stop told as the first state is where the party stood when the story begins (3 of 3 studyable
+            # reports telling a party's stop "initially": gold `stopped`, the string from its move off)
+            code = "S"
         if code == "S" and fre.match(r"(?:waiting|queued|idling|sitting|standing)\b", s[b:e], re.I):
             # "a vehicle that was stopped in the travel lane waiting to parallel park": a participle right after a
             # party's state, in the same clause, tells more of that state.
