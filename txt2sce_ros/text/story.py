@@ -284,14 +284,10 @@ def find_contact(d: Doc) -> None:
     elif chosen[2] is not None and (first := next((c for c in detailed if c[2] == chosen[2]), chosen)) != chosen and \
             any(a.who == chosen[2] and first[0] < a.sent and (a.sent, a.pos) < chosen[:2] and
                 (a.code in "abdefgjkmFT" and _THEN_BEFORE.search(d.sents[a.sent][max(0, a.pos - 12):a.pos]) or
-                 a.code in _NEW_EPISODE) for a in d.acts):
+                 _new_episode(d, a, first)) for a in d.acts):
         # The same party touched the AV, then moved again and touched it once more ("made contact with the front
         # driver side of EGO. The heavy truck then reversed ... it made contact with the driver side"): the
-        # conflict is the first contact; the move told next ("then") begins what came after. A backing or a
-        # speed-up told after the contact sentence begins it with or without "then" ("The heavy truck reversed and
-        # proceeded eastbound", "The passenger car accelerated and ... made contact with the rear left corner"):
-        # neither retells the run that led to the first contact, as "The bus was traveling less than 2mph when it
-        # hit" does.
+        # conflict is the first contact; the move told next ("then") begins what came after.
         chosen = first
     d.contact_sent, d.contact_pos, d.partner = chosen
     for i, m in met_by_others:
@@ -322,6 +318,17 @@ def find_contact(d: Doc) -> None:
 _THEN_BEFORE = compile_gated(r"\bthen\s+$", re.I)
 #: A party's moves that, told after its first contact with the AV, begin another episode (backing, speeding up).
 _NEW_EPISODE = "bk"
+
+
+def _new_episode(d: Doc, a: Act, first: tuple[int, int, int | None]) -> bool:
+    """Does the party's move `a`, told after its first contact with the AV at `first`, begin another episode with or
+    without "then" ("The heavy truck reversed and proceeded eastbound", "The passenger car accelerated and ... made
+    contact with the rear left corner")? A backing or a speed-up does, unless the party was told doing it up to that
+    first contact: then the later telling retells how the contact came about ("A passenger vehicle reversed into it.
+    ... the passenger vehicle began to reverse out of the parking spot and made contact"). A run never begins one
+    ("The bus was traveling less than 2mph when it hit the Zoox vehicle" retells the first contact)."""
+    return a.code in _NEW_EPISODE and not any(x.who == a.who and x.code == a.code and (x.sent, x.pos) <= first[:2]
+                                              for x in d.acts)
 _AFTER_FIRST_CONTACT = compile_gated(r"\s*(?:after|following)\s+(?:the|this|that)\s+(?:initial|first)\s+"
                                      r"(?:contact|impact|collision)\b", re.I)
 _CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
