@@ -2758,6 +2758,13 @@ PROBES: tuple[Probe, ...] = (
            "being driven northbound", "navigating northbound", "northbound", "cruising northbound",
            "headed northbound", "rolling northbound"),
           _ego, ("moving", "af")),
+    Probe("a rider splitting lanes past the standing AV, no side named (session 18)",
+          "The Waymo AV was stopped in traffic on northbound [XXX]. A motorcyclist {w} clipped the mirror of the "
+          "Waymo AV.",
+          ("splitting lanes", "that was lane splitting", "lane-splitting through traffic", "riding between the two "
+           "lanes of traffic", "traveling between lanes", "filtering between the stopped cars", "riding on the lane "
+           "line", "splitting traffic", "straddling the lane line", "white-lining between the cars"),
+          _position, [("R6", "left")]),
 )
 
 

@@ -294,3 +294,12 @@ def test_a_party_going_forward_into_the_front_of_a_standing_av_came_at_it_head_o
     # parallel parking space in front of the Waymo AV. The rear of the passenger car made contact with the front of
     # the Waymo AV" (R5, in the AV's path).
     assert _party("nhtsa-sgo-ads-30270-10800-v1").position == "R5"
+
+
+def test_a_rider_splitting_lanes_is_beside_the_av_coming_up_from_behind() -> None:
+    # "While in traffic and stopped at 0mph in autonomy, a motorized scooter riding between the 2 lanes of traffic
+    # clipped the May Mobility vehicle's mirror with their own mirror": riding the line between two lanes, it is in
+    # no lane of the AV's and passes it from behind; no side of the AV named, on its left (the gold's R6/left), not
+    # ahead at the curb edge.
+    p = _party("nhtsa-sgo-ads-30413-7880-v1")
+    assert (p.position, p.lane) == ("R6", "left")

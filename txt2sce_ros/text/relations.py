@@ -157,6 +157,15 @@ _PARTY_FRONT = compile_gated(r"\b(?:its|their|the\s+(?!EGO)\w+'s)\s+(?:\w+\s+){0
 # Riders who keep to the edge of the road (bike lane, curb side); a motorcycle takes a lane like a car.
 _EDGE_RIDERS = ("bicycle", "scooter")
 _MOTOR = ("car", "van", "truck", "bus", "motorcycle")
+_RIDERS = ("motorcycle", "bicycle", "scooter")
+# Riding the line between two lanes of traffic: "lane-splitting", "splitting lanes", "riding between the two lanes",
+# "filtering between the stopped cars", "on the lane line", "white-lining".
+_SPLITTING = compile_gated(r"\blane[- ]?split\w*|\bsplit(?:ting|s)?\s+(?:the\s+)?(?:lanes?|traffic)\b|"
+                           r"\b(?:between|straddl\w*)\s+(?:the\s+)?(?:two\s+|2\s+)?(?:lanes|lane\s+lines?)\b|"
+                           r"\bfilter\w*\s+(?:between|past|through)\b|"
+                           r"\b(?:on|along|down|straddl\w*)\s+the\s+(?:lane\s+(?:line|divider|marking)|"
+                           r"dividing\s+line)s?\b|"
+                           r"\bwhite[- ]lin(?:e|ing)\b", re.I)
 #: The rule that places a party come out of a driveway, garage, lot or parking space beside or ahead of the AV: it
 #: did not travel along the AV's road before its turn (extractor reads its action string so).
 OUT_OF_ROADSIDE = "out of a roadside place, not behind"
@@ -713,6 +722,13 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # left lane", "EGO came to a stop behind a GMC Yukon"): it stood or went ahead in the AV's path, whatever
         # lane the road names it in (no lane said relative to the AV: "the left lane" is the AV's too).
         lane, rule = "same", rule + "; in the AV's path"
+    if pos in ("R5", "R6") and lane == "same" and e.category in _RIDERS and _SPLITTING.search(ctx) and \
+            not any(c.kind == "along" and c.value == "ahead" for c in cues):
+        # Riding the line between two lanes of traffic ("a motorized scooter riding between the 2 lanes of traffic
+        # clipped the May Mobility vehicle's mirror", "a lane-splitting electric scooterist"): never in the AV's lane
+        # but beside it, coming up past it from behind, on the side of the AV it struck, else on its left (2 of the
+        # 2 studyable lane splitters are R6/left; California's riders split the lanes to the left of traffic most).
+        pos, lane, rule = "R6", cside or "left", rule + "; splitting lanes"
     if pos in ("R5", "R6") and lane == "same" and e.category in _EDGE_RIDERS and \
             not any(c.kind in ("lane", "along") and c.value in ("same", "ahead") and
                     _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in cues) and \
