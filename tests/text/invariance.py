@@ -354,6 +354,12 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("was traveling -> was en route", _sub(r"\bwas traveling\b", "was en route")),
     Rewrite("was traveling <dir>bound -> was <dir>bound", _sub(r"\bwas traveling (?=(?:north|south|east|west)\w*bound)",
                                                                "was ")),
+    # Session 18: the AV's standing told in other words (over all 379 studyable narratives, "was idling" changed the
+    # AV's road in 2, "was at a stop" its road or signal in 5, "had been stopped" 1, "stopped completely" its string
+    # in 3, on 78babff; "was idling in traffic" was no queue, "at a stop at a red light" no standing at the red).
+    Rewrite("was stopped -> was idling", _sub(r"\bwas stopped\b", "was idling")),
+    Rewrite("was stopped -> was at a stop", _sub(r"\bwas stopped\b", "was at a stop")),
+    Rewrite("came to a stop -> stopped completely", _sub(r"\bcame to a stop\b", "stopped completely")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

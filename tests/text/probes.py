@@ -1918,7 +1918,8 @@ PROBES: tuple[Probe, ...] = (
           "struck its rear bumper.",
           ("pulled over to the curb", "pulled to the right side of the road to drop off a passenger", "was pulling "
            "over", "pulled over to pick up a passenger", "began pulling over to the curb", "pulled into a parking "
-           "spot at the curb", "moved to the curb to drop off a passenger", "was pulling to the curb"),
+           "spot at the curb", "moved to the curb to drop off a passenger", "was pulling to the curb",
+           "pulled to the right side of the street", "was pulling toward the right side of the roadway"),
           _ego, ("moving", "al")),
     Probe("the AV backing",
           "A Zoox vehicle was parked on Koval Lane. The Zoox vehicle {w} and struck a sedan that was stopped behind "

@@ -47,3 +47,36 @@ def test_a_run_named_as_a_mode_is_no_run() -> None:
     # no run; the string is the pull into the space (`l`).
     text = QUOTED["dmvca-cruise-20200725-r132"][1]
     assert _ego("dmvca-cruise-20200725-r132", text) == ("moving", "l")
+
+
+def _road(report_id: str, text: str) -> tuple[str, str, str]:
+    sk = extract(text, report_id)
+    return sk.road.layout, sk.road.control, sk.signal_state
+
+
+def test_the_av_standing_told_in_other_words_is_the_same_standing() -> None:
+    # csvr-waymo-20210709-s89: "... in a collision involving a passenger vehicle at Bush Street and Grant Avenue. The
+    # Waymo AV was stopped in traffic": a queue at the cross street the summary names is at that junction (gold
+    # junction4); so is one the AV "was idling in" or "was sitting in".
+    text = QUOTED["csvr-waymo-20210709-s89"][1]
+    for words in ("was idling in traffic", "was sitting in traffic", "was at a stop in traffic"):
+        assert _road("csvr-waymo-20210709-s89", text.replace("was stopped in traffic", words))[0] == "junction4"
+    # csvr-zoox-20220205-s130: "was stopped at a traffic light on Brannan Street at 7th Street when a passenger
+    # vehicle hit the Zoox vehicle from behind": it stood at the red (gold `red`); "was at a stop at a traffic
+    # light" is the same standing.
+    text = QUOTED["csvr-zoox-20220205-s130"][1]
+    assert _road("csvr-zoox-20220205-s130", text.replace("was stopped", "was at a stop"))[2] == "red"
+    # csvr-waymo-20200214-s53: "was stopped in autonomous mode turning right from eastbound Park Drive onto
+    # southbound Miramonte Avenue ... when it was rear-ended": the summary's turn the AV was making is the scene
+    # (gold junction4), also with two more words before the turn ("had been stopped").
+    text = QUOTED["csvr-waymo-20200214-s53"][1]
+    assert _road("csvr-waymo-20200214-s53", text.replace("was stopped", "had been stopped"))[0] == "junction4"
+
+
+def test_a_stop_told_with_an_adverb_before_its_queue_is_where_the_av_stood() -> None:
+    # nhtsa-sgo-ads-30270-10685-v1: "was traveling southeastbound on [XXX] and came to a stop in a queue of traffic
+    # for a red light ... the front of the SUV made contact with the rear of the stationary Waymo AV": the stop names
+    # the queue the AV then stood in (gold `stopped`, empty); "stopped completely in a queue" is the same.
+    text = QUOTED["nhtsa-sgo-ads-30270-10685-v1"][1]
+    assert _ego("nhtsa-sgo-ads-30270-10685-v1", text) == ("stopped", "")
+    assert _ego("nhtsa-sgo-ads-30270-10685-v1", text.replace("came to a stop", "stopped completely")) == ("stopped", "")

@@ -80,7 +80,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?:(?<=\bwas\s)|(?<=\bwere\s))parallel[-\s]+parking\b(?!\s+(?:spot|space|position|stall|lane))|"
           r"\binto\s+a\s+(?:parallel[-\s]+)?parking\s+"
           r"(?:space|spot|stall)|(?<!waiting\s)(?<!preparing\s)(?<!planning\s)\b(?:to|attempting\s+to)\s+park\b|"
-          r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|side\s+of\s+the\s+road)\b|"
+          r"\bpull(?:ed|ing|s)?\s+(?:over\s+|up\s+)?(?:to|toward|towards)\s+the\s+(?:curb|shoulder|(?:(?:right|left)\s+)?"
+          r"side\s+of\s+the\s+(?:road|street|roadway))\b|"
           # onto the shoulder or into the parking lane: out of traffic to the road's edge
           r"\b(?:pull|mov|steer|eas)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:onto|into)\s+the\s+(?:right\s+|left\s+)?"
           r"(?:shoulder|parking\s+lane)\b|"
@@ -477,7 +478,8 @@ _IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
 # A manoeuvre whose words name the AV as its goal ("into EGO's lane", "the lane occupied by EGO").
 _NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\blane\s+(?:occupied\s+by|of)\s+EGO\b")
 # A stop told with the queue it ended in ("came to a stop in a queue of traffic", "stopped in a line of cars").
-_IN_QUEUE = compile_gated(r"\s+in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
+# (an adverb of the stop may come between: "stopped completely in a queue of traffic")
+_IN_QUEUE = compile_gated(r"\s+(?:\w+ly\s+)?in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
 _PAST = compile_gated(r"(?:\w+ed|made|took|ran|went|drove|began|cut|swung|rode|struck|hit|came|backed|stopped)\b", re.I)

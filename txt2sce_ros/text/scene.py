@@ -35,7 +35,9 @@ _JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
 _CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
                           r"(?:all|two|four|three|\d)[-\s]way\s+stop|traffic[\s-]+(?:control\s+)?(?:light|signal))\b", re.I)
-_AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is|had)\s+(?:\w+\s+){0,4}?(?:turning|making\s+(?:a|an)\s+"
+# (up to six words between: "EGO had been stopped in autonomous mode turning right", "was at a stop in autonomous
+# mode turning right")
+_AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is|had)\s+(?:\w+\s+){0,6}?(?:turning|making\s+(?:a|an)\s+"
                           r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
 _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection|"
@@ -244,9 +246,14 @@ _HEADING_ON = (compile_gated(rf"\b{_DIR}(?:bound|ward)?\s+on\s+{_STREET}", re.I)
 # The summary's place of the collision at a cross street ("on [XXX] at [XXX]", "at Bush Street and Grant Avenue");
 # "on X near Y" places it away from the junction.
 _AT_CROSS_STREET = compile_gated(rf"\b(?:on|at)\s+{_STREET}\.?\s+(?:at|and)\s+{_STREET}", re.I)  # "Bush St. and"
+# Words for standing still (a red the AV stood at is its signal when its actions begin; a queue it stood in is at
+# the junction ahead). ("had come to a stop at a traffic light": a stop reached is a standing too; "was at a stop",
+# "was sitting", "was idling in traffic": the same standing in other words)
+_STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|sitting|standing(?:\s+still)?|"
+             r"at\s+(?:a\s+)?(?:standstill|rest)|at\s+a\s+(?:complete\s+|full\s+)?stop(?!\s+(?:sign|line|bar|light))|"
+             r"(?:came|come)\s+to\s+a\s+(?:\w+\s+)?(?:stop|halt|standstill))")
 # Standing in a queue of traffic (not a lone stop, not traffic the AV yielded to).
-_QUEUED = compile_gated(r"\b(?:stopped|sitting|waiting|standing(?:\s+still)?|(?:came|come)\s+to\s+a\s+(?:\w+\s+)?stop)\s+in\s+"
-                        r"traffic\b|\bbehind\s+stopped\s+traffic\b|"
+_QUEUED = compile_gated(rf"\b{_STANDING}\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
                         r"\b(?:in|behind)\s+a\s+queue\s+of\s+(?:\w+\s+)?traffic\b", re.I)
 
 
@@ -310,10 +317,6 @@ def lane_count(t: str) -> int | None:
     return n or None
 
 
-# Words for standing still (a red the AV stood at is its signal when its actions begin).
-# ("had come to a stop at a traffic light": a stop reached is a standing too)
-_STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|standing(?:\s+still)?|at\s+(?:a\s+)?(?:standstill|rest)|"
-             r"(?:came|come)\s+to\s+a\s+(?:\w+\s+)?(?:stop|halt|standstill))")
 
 
 # A light that turned green was red before it: an AV that stood when the interaction began stood at that red.
