@@ -2766,6 +2766,14 @@ PROBES: tuple[Probe, ...] = (
            "lanes of traffic", "traveling between lanes", "filtering between the stopped cars", "riding on the lane "
            "line", "splitting traffic", "straddling the lane line", "white-lining between the cars"),
           _position, [("R6", "left")]),
+    Probe("a party driving into an AV standing throughout, no part of the AV and no place told (session 18)",
+          "The Waymo AV was stopped at a red light on northbound [XXX]. {W}.",
+          ("a sedan was unable to stop in time and collided with the Waymo AV",
+           "the driver of a sedan was distracted and struck the Waymo AV",
+           "a pickup truck failed to stop and made contact with the Waymo AV",
+           "a sedan did not stop and hit the Waymo AV", "an SUV collided with the Waymo AV",
+           "a motorcyclist struck the Waymo AV", "a box truck bumped into the Waymo AV"),
+          _position, [("R6", "same")]),
 )
 
 

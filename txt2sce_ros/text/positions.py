@@ -258,6 +258,13 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # The middle of the front of an AV standing still struck by a party going forward: it came at the AV
         # head-on; else the AV ran into it, ahead in its lane.
         return ("R7" if not junction and _came_at_standing_av(d, e, ctx, cside, ego_actions) else "R5"), "same", True
+    if e.idx == d.partner and cside is None and d.ego_start == "stopped" and ego_actions == "" and \
+            _going_forward(d, e, ctx):
+        # Nothing told of its place nor of the part of the AV it struck, and the AV stood still throughout: it drove
+        # into a standing AV, most often from behind ("The AV was stopped at a red light when a sedan was unable to
+        # stop in time and collided with the AV"). Studyable: of the 119 parties that touched an AV standing
+        # throughout, 86 were behind it (69 in its lane), 8 ahead in its lane (backing into it, mostly).
+        return "R6", "same", False
     return "R5", "same", False
 
 
@@ -271,10 +278,16 @@ def _came_at_standing_av(d: Doc, e: Entity, ctx: str, cside: str | None, ego_act
     way ("One cyclist then made contact with the front of the stationary Waymo AV": the gold's R7). Studyable: of
     the 13 parties that met the middle of the front of a standing AV, the 10 that backed into it are ahead (R5), the
     3 going forward oncoming (R7; lane same 1, left 2, the two on the left placed before this by their words)."""
-    if cside or e.category == "pedestrian" or not (ego_actions == "" or ego_actions.endswith("h")):
+    if cside or not (ego_actions == "" or ego_actions.endswith("h")):
         return False
+    return _going_forward(d, e, ctx)
+
+
+def _going_forward(d: Doc, e: Entity, ctx: str) -> bool:
+    """A vehicle or rider on its way ahead along its lane: no backing in its string or words, no turn, lane change
+    or crossing of its own, not named as stopped or parked."""
     own = {a.code for a in d.acts if a.who == e.idx}
-    return not own & set("dekfgjmFT") and not BACKING.search(ctx) and \
+    return e.category != "pedestrian" and not own & set("dekfgjmFT") and not BACKING.search(ctx) and \
         not fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued)\b",
                        " ".join(m.mods for m in e.mentions), re.I)
 
