@@ -2752,6 +2752,13 @@ PROBES: tuple[Probe, ...] = (
            "being driven northbound", "navigating northbound", "northbound", "cruising northbound",
            "headed northbound", "rolling northbound", "operating north", "going north"),
           _ego, ("moving", "ah")),
+    Probe("states told after the AV's stop event are its result (session 18)",
+          "The Waymo AV was traveling westbound on Mission Street when it came to a stop{w} the Waymo AV remained "
+          "stationary, a sedan traveling behind the Waymo AV made contact with its rear bumper.",
+          (", yielding to stopped traffic ahead. While", " while yielding to a pedestrian. While",
+           ", waiting for a pedestrian to cross. While", ", allowing a pickup truck to pass. As",
+           " and was yielding to cross traffic. While", ", giving way to an oncoming bus. As"),
+          _ego, ("moving", "ah")),
     Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
           "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
           "traveling in the left lane made contact with the driver side of the Waymo AV.",

@@ -1370,6 +1370,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'driver alleged an injury. Waymo is reporting this crash under Request No. 2 of Standing General Order '
         '2021-01. Waymo may supplement or correct its reporting with additional information as it may become '
         'available.'),
+    'nhtsa-sgo-ads-30270-9408-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9408, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 1:54 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV '
+        'was traveling west on [XXX] when it came to a stop, yielding to stopped traffic ahead. While the '
+        'Waymo AV remained stationary, a passenger car that was traveling behind the Waymo AV began to lane '
+        'change right. As it did so, the front driver side of the passenger car made contact with the rear '
+        "passenger side of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+        'engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under '
+        'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
+        'additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9409-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9409, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -80,3 +80,13 @@ def test_a_stop_told_with_an_adverb_before_its_queue_is_where_the_av_stood() -> 
     text = QUOTED["nhtsa-sgo-ads-30270-10685-v1"][1]
     assert _ego("nhtsa-sgo-ads-30270-10685-v1", text) == ("stopped", "")
     assert _ego("nhtsa-sgo-ads-30270-10685-v1", text.replace("came to a stop", "stopped completely")) == ("stopped", "")
+
+
+def test_states_told_after_a_stop_event_are_its_result() -> None:
+    # nhtsa-sgo-ads-30270-9408-v1: "The Waymo AV was traveling west on [XXX] when it came to a stop, yielding to
+    # stopped traffic ahead. While the Waymo AV remained stationary, a passenger car that was traveling behind the
+    # Waymo AV began to lane change right": the stop is an event of the AV on its way; "yielding" and "remained
+    # stationary" tell its result (the official gold's `ah` for a stop so told: dmvca-waymo-20220910-r383 "came to a
+    # stop in the parking lot while yielding ... While the Waymo AV was stopped").
+    text = QUOTED["nhtsa-sgo-ads-30270-9408-v1"][1]
+    assert _ego("nhtsa-sgo-ads-30270-9408-v1", text) == ("moving", "ah")

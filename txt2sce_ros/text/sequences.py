@@ -265,6 +265,21 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     return start, actions
 
 
+def _stop_results_dropped(acts: list[Act]) -> list[Act]:
+    """"EGO came to a stop to yield to cross-traffic. As EGO was stopped, the passenger car ...": the state told after
+    a stop (in its sentence or the next) is that stop's result, not a fact of its own; so is each state told after
+    it ("came to a stop, yielding to stopped traffic ahead. While EGO remained stationary, a passenger car ...": the
+    official gold's `ah` for a stop told as an event, dmvca-waymo-20220910-r383, -20241014-r619, -20230507-r466)."""
+    out: list[Act] = []
+    stop: Act | None = None  # the AV's last stop, while only its states follow it
+    for a in acts:
+        if a.code == "S" and stop is not None and stop.sent >= a.sent - 1:
+            continue
+        stop = a if a.code == "h" else None
+        out.append(a)
+    return out
+
+
 def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bool) -> tuple[str, str, bool]:
     """`ego_sequence`'s reading, and whether the string opens with a manoeuvre told under way."""
     # A summary sentence still tells the AV's state ("was stopped ... when a vehicle reversed into it").
@@ -282,10 +297,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # direction it faced is no move.
     acts = [a for k, a in enumerate(acts) if not (a.code == "a" and _DIRECTION_ONLY.match(a.text) and k > 0 and
                                                   acts[k - 1].code in "hS")]
-    # "EGO came to a stop to yield to cross-traffic. As EGO was stopped, the passenger car ...": the state told
-    # after a stop is that stop's result, not a fact of its own.
-    acts = [a for k, a in enumerate(acts) if not (a.code == "S" and k > 0 and acts[k - 1].code == "h" and
-                                                  acts[k - 1].sent >= a.sent - 1)]
+    acts = _stop_results_dropped(acts)
     # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
     # is the AV's at the contact when the telling goes back to it travelling.
     told = [a for a in acts if a.sent not in d.summary]
