@@ -2781,6 +2781,12 @@ PROBES: tuple[Probe, ...] = (
            "a sedan did not stop and hit the Waymo AV", "an SUV collided with the Waymo AV",
            "a motorcyclist struck the Waymo AV", "a box truck bumped into the Waymo AV"),
           _position, [("R6", "same")]),
+    Probe("a chain behind the standing AV, the striker named first (session 18)",
+          "The Waymo AV was stopped in traffic. A sedan traveling at a high rate of speed {w} an SUV that was stopped "
+          "behind the Waymo AV, and the SUV then struck the rear of the Waymo AV.",
+          ("rear-ended", "struck", "struck the rear of", "hit the back of", "collided with", "made contact with the "
+           "rear of", "impacted", "contacted"),
+          lambda sk: [(p.position, p.lane) for p in sk.npcs], [("R6", "same"), ("R6", "same")]),
 )
 
 

@@ -1712,4 +1712,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under '
         'Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with '
         'additional information as it may become available.'),
+    'csvr-waymo-20241104-s345': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "345, column 'Accident Detail Description'), transcribed",
+        'On November 4, 2024 at 6:28 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in Culver City, '
+        'California was in a collision involving an SUV on Culver Boulevard near Sepulveda Boulevard. The Waymo '
+        'AV was stopped in traffic for a red light on southwestbound Culver Boulevard with an SUV stopped '
+        'directly behind the Waymo AV. Moments later, a passenger car traveling at a high rate of speed '
+        'approached the stopped SUV from behind and made contact with the rear of the SUV. The front of the SUV '
+        'then made contact with the rear of the stopped Waymo AV. At the time of the impact, the Waymo AV’s Level'
+        ' 4 ADS was engaged in autonomous mode. All three vehicles sustained damage.'),
 }

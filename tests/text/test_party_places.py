@@ -316,3 +316,18 @@ def test_a_party_that_drove_into_an_av_standing_throughout_came_from_behind_when
         sk = extract(text, "csvr-zoox-20220205-s130")
         assert (sk.npcs[0].position, sk.npcs[0].lane) == ("R6", "same"), told
         assert "position" in sk.missing
+
+
+def test_a_party_striking_one_told_behind_the_av_came_from_further_behind_whichever_is_named_first() -> None:
+    # "... with an SUV stopped directly behind the Waymo AV. Moments later, a passenger car traveling at a high rate
+    # of speed approached the stopped SUV from behind and made contact with the rear of the SUV" (the gold's two
+    # R6/same), told with the striker first: "a passenger car traveling at a high rate of speed made contact with the
+    # rear of an SUV that was stopped directly behind the Waymo AV". The chain puts it behind the SUV, so behind
+    # the AV, though the SUV is placed after it.
+    text = _TEXTS["csvr-waymo-20241104-s345"][1].replace(
+        " with an SUV stopped directly behind the Waymo AV. Moments later, a passenger car traveling at a high rate of "
+        "speed approached the stopped SUV from behind and made contact with the rear of the SUV.",
+        ". Moments later, a passenger car traveling at a high rate of speed made contact with the rear of an SUV that "
+        "was stopped directly behind the Waymo AV.")
+    sk = extract(text, "csvr-waymo-20241104-s345")
+    assert [(p.position, p.lane) for p in sk.npcs] == [("R6", "same"), ("R6", "same")]

@@ -25,8 +25,8 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # after the verb, by its mention, however many words its name has ("the passenger car", "the white SUV").
     for m in e.mentions:
         for x in d.ments[m.sent]:
-            if x.start > m.end and x.kind == "party" and x.entity in behind_av and _CHAIN.search(
-                    d.sents[m.sent][m.end:x.start][-80:]):
+            if x.start > m.end and x.kind == "party" and x.entity != e.idx and _CHAIN.search(
+                    d.sents[m.sent][m.end:x.start][-80:]) and (x.entity in behind_av or _told_behind_av(d, x.entity)):
                 return "R6", "same", True
     # ... or by its noun, where the two were taken for one party ("a second motorcyclist then collided with the first
     # motorcyclist")
@@ -391,7 +391,18 @@ PLACE_SIDE = compile_gated(r"\bto\s+the\s+(?:left|right)\s+of\s+EGO\b|\bfrom\s+(
 _CHAIN_VERBS = (r"\b(?:behind|following|trailing|approached|collided\s+(?:with|into)|(?:made|came\s+into)\s+contact\s+"
                 r"with(?:\s+the\s+(?:rear|back)(?:\s+bumper)?\s+of)?|rear[- ]ended|struck|impacted|contacted|hit)\s+"
                 r"(?:the|a|an)\s+")
-_CHAIN = compile_gated(_CHAIN_VERBS + r"(?:[\w-]+\s+)?$", re.I)
+# ("struck the rear of the pickup truck": the other party named after a part of it)
+_CHAIN = compile_gated(_CHAIN_VERBS + r"(?:(?:rear|back)(?:\s+(?:end|bumper))?\s+of\s+(?:the|a|an)\s+)?(?:[\w-]+\s+)?$",
+                       re.I)
+# A party told standing or going behind the AV in its own words ("an SUV that was stopped behind the Waymo AV").
+_BEHIND_EGO = compile_gated(r"\bbehind\s+(?:the\s+)?(?:stopped\s+|stationary\s+)?EGO\b", re.I)
+
+
+def _told_behind_av(d: Doc, k: int) -> bool:
+    """Is the party `k` told behind the AV in its own words? One that strikes it in a chain came from further
+    behind, whichever of the two the text names first ("A sedan ... rear-ended an SUV that was stopped behind the
+    Waymo AV, and the SUV then struck the rear of the Waymo AV")."""
+    return bool(_BEHIND_EGO.search(own_context(d, d.ents[k])))
 _CHAIN_NOUN = compile_gated(_CHAIN_VERBS + r"([\w-]+)(?:\s+([\w-]+))?", re.I)
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
                          r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
