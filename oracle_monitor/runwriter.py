@@ -149,6 +149,12 @@ class RunWriter:
         always; told by `same_layout` without a Python loop over the steps), else step by step."""
         if not frames:
             return
+        if len(frames) > 1 and commands[-1] is None and commands[0] is not None:
+            # A run's last step has no command, so its last batch would fail `same_layout` and be split step by
+            # step: pack the steps before it as usual and that one on its own.
+            self._pack(received[:-1], frames[:-1], commands[:-1], out)
+            self._pack(received[-1:], frames[-1:], commands[-1:], out)
+            return
         shown = self._shown_lights
         lights = frames[0].lights
         if (shown is None or lights is shown or lights == shown) and same_layout(frames, commands):

@@ -299,6 +299,31 @@ def test_packed_steps_are_the_per_message_bytes(tmp_path: Path, monkeypatch: pyt
         assert len(ours) > 1_000_000 and ours == theirs
 
 
+def test_a_runs_last_batch_is_not_split_step_by_step(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The last frame of a run has no command, so its batch fails `same_layout`; the steps before it must still
+    # be packed as one run, their layout looked up once (step by step, each step paid a lookup), and the last step
+    # as a run of its own. The bytes are the per-message path's (test_packed_steps_are_the_per_message_bytes).
+    from oracle_monitor import runwriter
+    from oracle_monitor.recorder import BagRecorder
+    from oracle_monitor.steprecords import StepRun
+
+    sim, steps = _closed_loop("pedestrian_collision")
+    steps = steps[:100]
+    steps[-1] = (steps[-1][0], None)
+    runs: list[int] = []
+    lookups: list[int] = []
+    write_steps, packer = BagRecorder.write_steps, runwriter.RunWriter._packer
+    monkeypatch.setattr(BagRecorder, "write_steps", lambda self, batch: (
+        runs.extend(len(s.frames) for s in batch if isinstance(s, StepRun)), write_steps(self, batch))[1])
+    monkeypatch.setattr(runwriter.RunWriter, "_packer",
+                        lambda self, f, cmd: (lookups.append(1), packer(self, f, cmd))[1])
+    with RunWriter(tmp_path / "bag", flush_interval=1e9) as w:
+        w.begin(None, sim.goal, "x")
+        for f, cmd in steps:
+            w.frame(f, cmd)
+    assert runs == [99, 1] and len(lookups) == 2
+
+
 def test_message_indexes_point_at_their_records(tmp_path: Path) -> None:
     # Each MessageIndex entry (log time, offset in the chunk's data) must land on a Message record of that channel
     # and log time - also for the first batch, whose new channels write their records into the same chunk.
