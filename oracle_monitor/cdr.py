@@ -1,5 +1,5 @@
 """Fast ROS 2 CDR for the closed loop's high-rate messages: Odometry, MarkerArray, DiagnosticArray, Clock,
-TwistStamped, PoseStamped (the goal).
+TwistStamped, PoseStamped (the goal), and String (a run's envelope and status, so a recorder needs no rclpy).
 
 Why hand-written: building rclpy message objects and serialising them costs ~60 µs per Odometry and ~140 µs per
 MarkerArray, more than a player step; rosbags' generic deserialiser spends ~100 µs on a MarkerArray. Recording a
@@ -267,6 +267,13 @@ def encode_marker_array(msg: Any) -> bytes:
 
 def encode_clock(t: float) -> bytes:
     return HEADER + _stamp(t)
+
+
+def encode_string(text: str) -> bytes:
+    """`std_msgs/String`: one CDR string (not kept in `_cdr_string`'s cache: these are whole envelopes and
+    statuses, large and seldom repeated)."""
+    raw = text.encode()
+    return b"".join((HEADER, _u32.pack(len(raw) + 1), raw, b"\x00"))
 
 
 _POSE = struct.Struct("<7d")

@@ -499,11 +499,21 @@ def _close_writer(w: Writer) -> None:
     }
     if storage.chunk.bio.tell():
         _close_chunk(storage)                 # the last chunk, as storage.close would close it (same bytes)
-    storage.close(w.version, metadata_yaml(info))
+    inner, outer = _metadata_texts(info)
+    storage.close(w.version, inner)
     w.storage = None
     tmp = w.metapath.with_suffix(".yaml.tmp")
-    tmp.write_text(metadata_yaml({"rosbag2_bagfile_information": info}) + "\n", "utf8")
+    tmp.write_text(outer + "\n", "utf8")
     tmp.replace(w.metapath)
+
+
+def _metadata_texts(info: dict[str, Any]) -> tuple[str, str]:
+    """`metadata_yaml(info)` (the MCAP summary's copy) and `metadata_yaml({"rosbag2_bagfile_information": info})`
+    (metadata.yaml), emitted once: the second is the first's lines indented under that key."""
+    lines: list[str] = []
+    if not _emit(info, "", lines):
+        return metadata_yaml(info), metadata_yaml({"rosbag2_bagfile_information": info})
+    return "\n".join(lines), "rosbag2_bagfile_information:\n  " + "\n  ".join(lines)
 
 
 _PLAIN = re.compile(r"[A-Za-z/][A-Za-z0-9_/.\-]*")

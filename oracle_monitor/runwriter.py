@@ -14,8 +14,6 @@ import time
 from pathlib import Path
 from typing import Any, Iterable
 
-from rclpy.serialization import serialize_message
-
 from txt2sce_ros import contract as c
 from txt2sce_ros import ros_io
 from txt2sce_ros.contract import ControlCommand, Frame, Goal, RunStatus, ScenarioEnvelope, TrafficLightState
@@ -70,9 +68,6 @@ class RunWriter:
         self._shown_lights: tuple[TrafficLightState, ...] | None = None
         self._last_layout: tuple | None = None     # (lights, cast, packer, (frame, command)) of the last checked step
 
-    def _w(self, topic: str, msg: object) -> None:
-        self._raw_ordered(topic, serialize_message(msg))
-
     def _raw_ordered(self, topic: str, data: bytes) -> None:
         if self._steps:
             # Steps are waiting to be packed: the message joins them in order. (Draining them first, as before,
@@ -96,7 +91,7 @@ class RunWriter:
         if self._steps:
             self._drain()                         # the previous run's steps, with the previous run's goal
         if envelope is not None:
-            self._w(c.TOPIC_SCENARIO, ros_io.string_msg(envelope.to_json()))
+            self._raw_ordered(c.TOPIC_SCENARIO, cdr.encode_string(envelope.to_json()))
         self._goal, self._shown_lights = goal, None
         if network is not None:
             self._raw_ordered(c.TOPIC_MAP_MARKERS, ros_io.road_markers_bytes(network))
@@ -104,9 +99,9 @@ class RunWriter:
                               ros_io.scenario_markers_bytes(goal, tuple(lights), 0.0))
             self._shown_lights = lights
         sid = envelope.id if envelope else scenario_id
-        self._w(c.TOPIC_RUN_STATUS, ros_io.string_msg(RunStatus(sid, "started").to_json()))
+        self._raw_ordered(c.TOPIC_RUN_STATUS, cdr.encode_string(RunStatus(sid, "started").to_json()))
         if goal is not None:
-            self._w(c.TOPIC_GOAL, ros_io.goal_to_pose(goal))
+            self._raw_ordered(c.TOPIC_GOAL, cdr.encode_goal(goal))
 
     def frame(self, frame: Frame, command: ControlCommand | None = None) -> None:
         """Record one step. Steps are kept (with their receive time) and encoded in batches: encoding a few
@@ -227,7 +222,7 @@ class RunWriter:
 
     def end(self, status: RunStatus | None, verdict: RunVerdict | None = None) -> None:
         if status is not None:
-            self._w(c.TOPIC_RUN_STATUS, ros_io.string_msg(status.to_json()))
+            self._raw_ordered(c.TOPIC_RUN_STATUS, cdr.encode_string(status.to_json()))
         if verdict is not None:
             self._raw_ordered(c.TOPIC_VIOLATIONS, verdict_cdr(verdict))
 

@@ -65,6 +65,12 @@ def test_clock_and_command_bytes_equal_rclpy() -> None:
     assert cdr.encode_command(cmd) == serialize_message(ros_io.command_to_twist(cmd))
 
 
+@pytest.mark.parametrize("text", ["", "started", '{"id": "Ölgrund – ✓", "xosc": "<a/>"}', "x" * 100_003])
+def test_string_bytes_equal_rclpy(text: str) -> None:
+    # A run's envelope and status messages: any length, any Unicode.
+    assert cdr.encode_string(text) == serialize_message(ros_io.string_msg(text))
+
+
 def test_decoders_agree_with_rosbags_through_ros_io() -> None:
     ts = typestore()
     frame = Frame(12.35, ENTS[0], tuple(ENTS[1:]), LIGHTS)

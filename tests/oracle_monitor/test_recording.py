@@ -381,7 +381,7 @@ def test_metadata_yaml_reads_back_as_written(name: str) -> None:
     import yaml
     from ruamel.yaml import YAML
 
-    from oracle_monitor.recorder import metadata_yaml
+    from oracle_monitor.recorder import _metadata_texts, metadata_yaml
 
     value = {"rosbag2_bagfile_information": {"relative_file_paths": [name + ".mcap", name],
                                              "files": [{"path": name, "message_count": 3,
@@ -390,6 +390,9 @@ def test_metadata_yaml_reads_back_as_written(name: str) -> None:
     text = metadata_yaml(value)
     assert yaml.safe_load(text) == value
     assert YAML(typ="safe").load(io.StringIO(text)) == value
+    # The bag writes the info twice (MCAP summary, metadata.yaml under its key), emitted once.
+    inner = value["rosbag2_bagfile_information"]
+    assert _metadata_texts(inner) == (metadata_yaml(inner), text)
 
 
 def test_frames_with_list_lights_record_as_tuples_do(tmp_path: Path) -> None:
