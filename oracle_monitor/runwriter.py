@@ -11,6 +11,8 @@ So an in-process campaign run gets the same recording a node-graph run gets, and
 from __future__ import annotations
 
 import time
+from itertools import compress, pairwise
+from operator import attrgetter, is_not
 from pathlib import Path
 from typing import Any, Iterable
 
@@ -28,6 +30,15 @@ from .steprecords import StepPacker, StepRun, cast_key, same_layout, step_packer
 
 #: Steps encoded together (see `RunWriter.frame`).
 BATCH_STEPS = 256
+
+_LIGHTS = attrgetter("lights")
+
+
+def _light_cuts(frames: tuple[Frame, ...]) -> list[int]:
+    """The steps whose lights tuple is not the previous step's (the player keeps one tuple while no light
+    changes, so this finds the changes by identity, with C-level maps; an equal new tuple is a harmless cut)."""
+    lights = list(map(_LIGHTS, frames))
+    return list(compress(range(1, len(lights)), map(is_not, lights[1:], lights[:-1])))
 
 
 def _same_cast(last: tuple[Frame, ControlCommand | None], frame: Frame, command: ControlCommand | None) -> bool:
@@ -141,30 +152,47 @@ class RunWriter:
 
     def _pack(self, received: tuple, frames: tuple, commands: tuple, out: list[object]) -> None:
         """Consecutive steps into `out`: as one `StepRun` when they share a layout and redraw no lights (nearly
-        always; told by `same_layout` without a Python loop over the steps), else step by step."""
+        always; told by `same_layout` without a Python loop over the steps). Otherwise the batch is cut where the
+        lights change and before a run's last step (which has no command), and each piece is packed whole; only
+        a piece whose cast or commands change inside it, or a batch cut too often, goes step by step."""
         if not frames:
-            return
-        if len(frames) > 1 and commands[-1] is None and commands[0] is not None:
-            # A run's last step has no command, so its last batch would fail `same_layout` and be split step by
-            # step: pack the steps before it as usual and that one on its own.
-            self._pack(received[:-1], frames[:-1], commands[:-1], out)
-            self._pack(received[-1:], frames[-1:], commands[-1:], out)
             return
         shown = self._shown_lights
         lights = frames[0].lights
         if (shown is None or lights is shown or lights == shown) and same_layout(frames, commands):
             out.append(StepRun(self._packer(frames[0], commands[0]), received, frames, commands))
             return
+        n = len(frames)
+        m = n - 1 if n > 1 and commands[-1] is None and commands[0] is not None else n
+        cuts = _light_cuts(frames[:m])
+        if len(cuts) * 8 > n:                   # pieces of a few steps each cost more than going step by step
+            self._step_by_step(received, frames, commands, out)
+            return
+        for a, b in pairwise((0, *cuts, m, n)):
+            if a < b:
+                self._piece(received[a:b], frames[a:b], commands[a:b], out)
+
+    def _piece(self, received: tuple, frames: tuple, commands: tuple, out: list[object]) -> None:
+        """Steps that share one lights tuple: the first redraws the lights if they changed, the rest are packed
+        as one run if they share a layout."""
+        shown = self._shown_lights
+        first = frames[0]
+        if shown is not None and first.lights is not shown and first.lights != shown:
+            self._redraw(received[0], first, commands[0], out)
+            received, frames, commands = received[1:], frames[1:], commands[1:]
+            if not frames:
+                return
+        if same_layout(frames, commands):
+            out.append(StepRun(self._packer(frames[0], commands[0]), received, frames, commands))
+        else:
+            self._step_by_step(received, frames, commands, out)
+
+    def _step_by_step(self, received: tuple, frames: tuple, commands: tuple, out: list[object]) -> None:
         run: StepRun | None = None
-        channel = self.rec.channel
         for ns, frame, command in zip(received, frames, commands):
             shown = self._shown_lights
             if shown is not None and frame.lights is not shown and frame.lights != shown:
-                # A light changed: this step also redraws the goal and lights, so it takes the per-message path.
-                items = self._encode(frame, command)
-                for topic, _ in items:
-                    channel(topic)              # channels in first-use order, as the messages are written
-                out.append((ns, items))
+                self._redraw(ns, frame, command, out)
                 run = None
             else:
                 packer = self._packer(frame, command)
@@ -172,6 +200,14 @@ class RunWriter:
                     run = StepRun(packer)       # consecutive steps of one layout are packed together
                     out.append(run)
                 run.add(ns, frame, command)
+
+    def _redraw(self, ns: int, frame: Frame, command: ControlCommand | None, out: list[object]) -> None:
+        """A step whose lights changed: it also redraws the goal and lights, so it takes the per-message path."""
+        items = self._encode(frame, command)
+        channel = self.rec.channel
+        for topic, _ in items:
+            channel(topic)                      # channels in first-use order, as the messages are written
+        out.append((ns, items))
 
     def _packer(self, frame: Frame, command: ControlCommand | None) -> StepPacker:
         """The compiled layout of this kind of step (a few per run: the light states and the cast change

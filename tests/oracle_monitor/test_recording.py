@@ -299,29 +299,39 @@ def test_packed_steps_are_the_per_message_bytes(tmp_path: Path, monkeypatch: pyt
         assert len(ours) > 1_000_000 and ours == theirs
 
 
-def test_a_runs_last_batch_is_not_split_step_by_step(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    # The last frame of a run has no command, so its batch fails `same_layout`; the steps before it must still
-    # be packed as one run, their layout looked up once (step by step, each step paid a lookup), and the last step
-    # as a run of its own. The bytes are the per-message path's (test_packed_steps_are_the_per_message_bytes).
+@pytest.mark.parametrize("name, view, runs", [
+    # The last frame of a run has no command: the steps before it are one run, that step another.
+    ("pedestrian_collision", True, [199, 1]),
+    # Lights change at steps 82 and 142 (and the tuple the player hands over changes only then): with the view
+    # markers on, each change step is written message by message (it redraws the lights), the steps between are
+    # runs; without them, the change steps begin the runs.
+    ("traffic_lights", True, [82, 59, 56, 1]),
+    ("traffic_lights", False, [82, 60, 57, 1]),
+])
+def test_a_batch_is_cut_into_runs_where_its_layout_changes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                           name: str, view: bool, runs: list[int]) -> None:
+    # A batch that is not one layout is cut where the lights change and before a run's command-less last step,
+    # and each piece packed as one run with its layout looked up once (step by step, every step paid a lookup).
+    # The bytes are the per-message path's (test_packed_steps_are_the_per_message_bytes).
     from oracle_monitor import runwriter
     from oracle_monitor.recorder import BagRecorder
     from oracle_monitor.steprecords import StepRun
 
-    sim, steps = _closed_loop("pedestrian_collision")
-    steps = steps[:100]
+    sim, steps = _closed_loop(name)
+    steps = steps[:200]
     steps[-1] = (steps[-1][0], None)
-    runs: list[int] = []
+    got: list[int] = []
     lookups: list[int] = []
     write_steps, packer = BagRecorder.write_steps, runwriter.RunWriter._packer
     monkeypatch.setattr(BagRecorder, "write_steps", lambda self, batch: (
-        runs.extend(len(s.frames) for s in batch if isinstance(s, StepRun)), write_steps(self, batch))[1])
+        got.extend(len(s.frames) for s in batch if isinstance(s, StepRun)), write_steps(self, batch))[1])
     monkeypatch.setattr(runwriter.RunWriter, "_packer",
                         lambda self, f, cmd: (lookups.append(1), packer(self, f, cmd))[1])
     with RunWriter(tmp_path / "bag", flush_interval=1e9) as w:
-        w.begin(None, sim.goal, "x")
+        w.begin(None, sim.goal, "x", network=sim.network if view else None, lights=steps[0][0].lights)
         for f, cmd in steps:
             w.frame(f, cmd)
-    assert runs == [99, 1] and len(lookups) == 2
+    assert got == runs and len(lookups) == len(runs)
 
 
 def test_message_indexes_point_at_their_records(tmp_path: Path) -> None:
