@@ -1722,4 +1722,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         'approached the stopped SUV from behind and made contact with the rear of the SUV. The front of the SUV '
         'then made contact with the rear of the stopped Waymo AV. At the time of the impact, the Waymo AV’s Level'
         ' 4 ADS was engaged in autonomous mode. All three vehicles sustained damage.'),
+    'csvr-waymo-20240131-s297': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "297, column 'Accident Detail Description'), transcribed",
+        'On January 31, 2024 at 5:15 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Potrero Avenue near 22nd Street. The '
+        'Waymo AV was traveling southbound on Potrero Avenue in the leftmost thru lane, adjacent to a dedicated '
+        'left turn lane on its left. As the Waymo AV approached the intersection with 22nd Street, it came to a '
+        'stop behind its lead vehicle. The passenger vehicle behind the Waymo AV then attempted to change lanes '
+        'into the dedicated left turn lane, and made contact with the rear driver side corner of the Waymo AV. At'
+        ' the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. Both vehicles '
+        'sustained damage.'),
 }

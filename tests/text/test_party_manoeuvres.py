@@ -56,3 +56,15 @@ def test_a_stop_told_as_the_party_s_first_state_is_where_it_stood() -> None:
     for first in ("initially", "at first", "first"):
         p = _party(rid, QUOTED[rid][1].replace("initially came", f"{first} came"))
         assert (p.start, p.actions) == ("stopped", "i"), first
+
+
+def test_the_vehicle_the_av_stood_behind_stood_too_by_any_word_of_standing() -> None:
+    # "it came to a stop behind its lead vehicle": the lead vehicle, of which no move is told, stood (`stopped`, no
+    # actions; the gold). So whatever word tells the AV's standing behind it.
+    rid = "csvr-waymo-20240131-s297"
+    lead = next(p for p in extract(QUOTED[rid][1], rid).npcs if p.position == "R5")
+    assert (lead.start, lead.actions) == ("stopped", "")
+    for told in ("came to rest behind", "halted behind", "paused behind", "was stopping behind"):
+        sk = extract(QUOTED[rid][1].replace("came to a stop behind", told), rid)
+        lead = next(p for p in sk.npcs if p.position == "R5")
+        assert (lead.start, lead.actions) == ("stopped", ""), told

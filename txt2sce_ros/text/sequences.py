@@ -165,7 +165,9 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
     return ("stopped", "i") if green and behind else (start, actions)
 
 
-_STOP_BEHIND = compile_gated(r"\b(?:stop|stopped|halted|standstill|waiting|waited|queued)\s+(?:directly\s+|"
+# (any word of the AV's standing: "came to rest behind", "was idling behind", "paused behind", "halting behind")
+_STOP_BEHIND = compile_gated(r"\b(?:stop|stops|stopped|stopping|halt|halts|halted|halting|standstill|rest|waiting|waited|"
+                             r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+(?:directly\s+|"
                              r"immediately\s+|right\s+)?behind\s+(?:a|an|the|its|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
 
 
