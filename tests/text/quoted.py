@@ -1733,4 +1733,37 @@ QUOTED: dict[str, tuple[str, str]] = {
         'into the dedicated left turn lane, and made contact with the rear driver side corner of the Waymo AV. At'
         ' the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. Both vehicles '
         'sustained damage.'),
+    'dmvca-waymo-20230820-r519': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 519, column '
+        '"Accident Detail Description")',
+        'On August 20, 2023 at 5:49 PM PT the mirror of a Waymo Autonomous Vehicle (“Waymo AV”) operating in San '
+        'Francisco, CA was struck by a cyclist on Martin Luther King Jr. Drive at Crossover Drive. The Waymo AV '
+        'was stopped in traffic on eastbound Martin Luther King Jr. Drive at the intersection with Crossover '
+        'Drive, when a cyclist that had been traveling behind the Waymo AV passed the Waymo AV on the left. As '
+        'the cyclist passed the Waymo AV, the cyclist made contact with the driver side mirror of the Waymo AV. '
+        'At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver '
+        'was present (in the driver’s seating position). The Waymo AV sustained damage and the cyclist did not '
+        'stop, leaving the scene without exchanging information.'),
+    'nhtsa-sgo-ads-30270-10758-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10758, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:31 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+        'California was in a collision involving an SUV on [XXX] near [XXX]. The Waymo AV was stopped in the '
+        'rightmost lane facing southeast on [XXX] in a queue of traffic for a red light at the intersection at '
+        '[XXX]. An SUV traveling southeast on [XXX] directly behind the Waymo AV passed the Waymo AV on the left '
+        'and the passenger side of the SUV made contact with the rear driver side of the Waymo AV. At the time of'
+        " the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The SUV sustained damage. Waymo "
+        'is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or '
+        'correct its reporting with additional information as it may become available.'),
+    'dmvca-waymo-20220411-r318': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 318, column '
+        '"Accident Detail Description")',
+        'On April 11, 2022 at 10:36 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a SUV on Townsend Street and Embarcadero. While traveling '
+        'southwest on Townsend Street in manual mode, the Waymo AV test driver approached a double-parked vehicle'
+        ' blocking traffic. The Waymo AV test driver pulled behind the double-parked vehicle. At this time, a SUV'
+        ' following closely behind the Waymo AV passed the Waymo AV on the left side, making contact with the '
+        'rear left sensor of the Waymo AV. The SUV left the scene. At the time of the impact, the Waymo AV’s '
+        'Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual mode. The Waymo AV '
+        'sustained minor damage.'),
 }

@@ -68,3 +68,18 @@ def test_the_vehicle_the_av_stood_behind_stood_too_by_any_word_of_standing() -> 
         sk = extract(QUOTED[rid][1].replace("came to a stop behind", told), rid)
         lead = next(p for p in sk.npcs if p.position == "R5")
         assert (lead.start, lead.actions) == ("stopped", ""), told
+
+
+def test_a_party_behind_the_standing_av_that_passes_it_changed_lane_from_its_lane() -> None:
+    # "a cyclist that had been traveling behind the Waymo AV passed the Waymo AV on the left" (the AV stopped in
+    # traffic): it was in the AV's lane behind it and moved out to pass (R6/same, `af`: the official gold), as one
+    # that had stood behind it does ("had been stopped behind the Waymo AV passed ... on the left": `if`).
+    p = _party("dmvca-waymo-20230820-r519")
+    assert (p.position, p.lane, p.actions) == ("R6", "same", "af")
+    # "An SUV traveling southeast on [XXX] directly behind the Waymo AV passed the Waymo AV on the left".
+    p = _party("nhtsa-sgo-ads-30270-10758-v1")
+    assert (p.position, p.lane, p.actions) == ("R6", "same", "af")
+    # A follower of the AV on its way is not placed so ("a SUV following closely behind the Waymo AV passed the
+    # Waymo AV on the left side" as the AV pulled up behind a double-parked car: R6/left, `a`, the official gold).
+    p = _party("dmvca-waymo-20220411-r318")
+    assert (p.position, p.lane, p.actions) == ("R6", "left", "a")

@@ -45,7 +45,10 @@ HELD_CSVR = {
                "ego_start": 0.96, "signal_state": 0.93},
     # (check2 position 0.80 -> 0.79, conflict 55 -> 54 in session 15: one party moved by a rule its studyable gold
     # holds 7 of 7 - a party parallel parking ahead of or behind the AV is in its lane; check2 was not inspected)
-    "check2": {"npc_quantity": 0.97, "npc_position": 0.80, "npc_events": 0.77, "layout": 0.88, "ego_actions": 0.80},
+    # (check2 position 0.80 -> 0.79 again in session 18, from 0.802 to 0.793: one party moved by a rule its studyable
+    # gold holds 4 of 4, the official r519 among them - a party behind the standing AV, not "from behind", that passes
+    # it on the left began in its lane, R6/same af; check2 was not inspected)
+    "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.77, "layout": 0.88, "ego_actions": 0.80},
 }
 CONFLICT_HELD_CSVR = {"study2": 80, "check2": 55}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is

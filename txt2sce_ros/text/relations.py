@@ -472,12 +472,27 @@ def _in_the_av_s_path(d: Doc, e: Entity) -> bool:
         not _ROADSIDE_OR_SIDE.search(s[m.start:_clause_end(d, e, m)])
 
 
-def _queued_behind(d: Doc, along: list[Cue]) -> Cue | None:
-    """The party's own nearest `along` cue, when it says the party stood behind the AV in its queue."""
-    if along and along[0].value == "behind" and _BEHIND_AV.search(d.text[along[0].span[0]:along[0].span[1]]) and \
-            _STOPPED_BEFORE.search(d.text[max(0, along[0].span[0] - 40):along[0].span[0]]):
+def _queued_behind(d: Doc, along: list[Cue], pass_side: str) -> Cue | None:
+    """The party's own nearest `along` cue, when it says the party stood behind the AV in its queue, or was behind
+    the standing AV, in its lane, and passed it on the left, out of that lane ("a cyclist that had been traveling
+    behind the Waymo AV", "An SUV ... directly behind the Waymo AV", "a passenger car that had been behind the Waymo
+    AV": 4 of 4 studyable gold sketches R6/same); not a direction it came from ("approaching from behind the Waymo
+    AV"), nor a follower of the AV on its way ("a SUV following closely behind the Waymo AV passed the Waymo AV on
+    the left side" as the AV pulled up: R6/left in the gold). (On the right a rider passes along the curb edge.)"""
+    if not along or along[0].value != "behind":
+        return None
+    told, before = d.text[along[0].span[0]:along[0].span[1]], d.text[max(0, along[0].span[0] - 40):along[0].span[0]]
+    if _BEHIND_AV.search(told) and _STOPPED_BEFORE.search(before):
+        return along[0]
+    if d.ego_start == "stopped" and pass_side == "left" and _FOLLOWING_AV.search(told) and \
+            not _FROM_BEFORE.search(before):
         return along[0]
     return None
+
+
+_FROM_BEFORE = compile_gated(r"\bfrom\s+$", re.I)
+#: Behind the AV as a place in its lane: "behind EGO", "following EGO", "trailing EGO".
+_FOLLOWING_AV = compile_gated(r"^(?:behind|following|trailing)\s+(?:the\s+)?(?:first\s+|second\s+)?(?:EGO|it)\b", re.I)
 
 
 def _nearest_first(cues: list[Cue], d: Doc, e: Entity) -> list[Cue]:
@@ -649,7 +664,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         lanes = beside + [c for c in lanes if c not in beside]
     pass_side = next((c.value for c in passing if c.value), "")
     passed_side = ""
-    if pos == "R6" and passing and (queued := _queued_behind(d, along)) and \
+    if pos == "R6" and passing and (queued := _queued_behind(d, along, pass_side)) and \
             not any(c.value in ("left", "right") for c in lanes) and \
             pass_side and not (e.category in _EDGE_RIDERS and pass_side == "right"):
         # Stopped behind the AV, then passing it ("a passenger car that had been stopped behind the Waymo AV passed
