@@ -2759,6 +2759,15 @@ PROBES: tuple[Probe, ...] = (
            ", waiting for a pedestrian to cross. While", ", allowing a pickup truck to pass. As",
            " and was yielding to cross traffic. While", ", giving way to an oncoming bus. As"),
           _ego, ("moving", "ah")),
+    Probe("the AV's move after a take-over, told in the present tense (session 18)",
+          "Prior to the collision, the Nuro Prius came to a stop at the intersection of Main Street and Elm Street. The "
+          "Nuro operator disengaged autonomy, switched to manual, and {w}. A passenger vehicle collided with the Nuro "
+          "Prius before the operator completed the maneuver.",
+          ("proceeds to make a left turn", "proceeds to turn left", "continues to make a left turn",
+           "tries to make a left turn", "attempts to make a left turn", "begins to make a left turn",
+           "starts to make a left turn", "goes on to make a left turn", "proceeds into the travel lane",
+           "moves into the travel lane", "pulls into the travel lane"),
+          _ego, lambda w: ("stopped", "if" if "lane" in w else "id")),
     Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
           "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
           "traveling in the left lane made contact with the driver side of the Waymo AV.",

@@ -90,3 +90,14 @@ def test_states_told_after_a_stop_event_are_its_result() -> None:
     # stop in the parking lot while yielding ... While the Waymo AV was stopped").
     text = QUOTED["nhtsa-sgo-ads-30270-9408-v1"][1]
     assert _ego("nhtsa-sgo-ads-30270-9408-v1", text) == ("moving", "ah")
+
+
+def test_a_move_begun_in_the_present_tense_is_made() -> None:
+    # nhtsa-sgo-ads-30291-7981-v1: "Prior to the collision, the Nuro Prius operating autonomously came to a stop at
+    # the intersection of [XXX] and [XXX]. The Nuro vehicle operator disengaged autonomy, switched to manual, and
+    # proceeded to make a left turn. A passenger vehicle collided with the Nuro Prius": it moved off into the turn
+    # (`id`). Some operators tell it in the present ("the AVO disengages and proceeds in manual": 30413-10763):
+    # "proceeds to make a left turn" is the same move, not an intention.
+    text = QUOTED["nhtsa-sgo-ads-30291-7981-v1"][1]
+    assert _ego("nhtsa-sgo-ads-30291-7981-v1", text) == ("stopped", "id")
+    assert _ego("nhtsa-sgo-ads-30291-7981-v1", text.replace("proceeded to make", "proceeds to make")) == ("stopped", "id")

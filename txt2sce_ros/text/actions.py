@@ -38,7 +38,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"stop\b(?!\s+(?:line|bar|sign|light)))|"
           r"\bpull(?:ed|ing|s)?\s+out\s+into\s+(?:EGO's|the|its|our)\s+(?:\w+\s+)?(?:lane|path)|"
 
-          r"\b(?:proceeded|pulled|pulling|moved|merged)\s+(?:back\s+)?(?:out\s+)?into\s+the\s+(?:driving|travel|traffic)\s+lane\b|"
+          r"\b(?:proceed(?:ed|s)|pull(?:ed|ing|s)|mov(?:ed|es)|merg(?:ed|es))\s+(?:back\s+)?(?:out\s+)?into\s+the\s+"
+          r"(?:driving|travel|traffic)\s+lane\b|"
           r"\b(?:enter(?:ed|ing|s)?|merg(?:ed|ing|es|e))\s+(?:into\s+)?traffic\s+from\s+(?:a|an|the|its)\s+"
           r"(?:curbside\s+|parallel\s+)?(?:parked\s+position|parking\s+(?:spot|space|stall|position)|curb))"
           r"(?!\s+in\s+reverse)"),
@@ -56,7 +57,7 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"(?!\s+(?:from|out\s+of)\s+(?:the\s+|a\s+|an\s+)?(?:[\w-]+\s+){0,2}?(?:curb|sidewalk|median|driveway|"
           r"parking\s+lot|lot|garage|alley))"),
     ("Y", r"\b(?:began|started|initiated|commenced|made|completed)\s+(?:its|the|his|her|their)\s+turn\b|"
-          r"\b(?:attempted|attempting|began|started|tried|proceeded)\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
+          r"\b(?:attempt(?:ed|ing|s)|beg(?:an|ins)|start(?:ed|s)|tr(?:ied|ies)|proceed(?:ed|s))\s+to\s+(?:make\s+(?:a|the|its|his|her|their)\s+)?"
           r"turn\b(?!\s+(?:left|right|lane|signal))"),
     # (any dash a report's text carries, "U‑turn" with a non-breaking hyphen; a three-point or K-turn turns the car
     # around in as many moves: a U-turn)
@@ -491,8 +492,10 @@ _CAUSED = compile_gated(r"\b(?:forc(?:ed|ing|es)|caus(?:ed|ing|es)|prompt(?:ed|i
 # intention (the pass is how it got there).
 _PURPOSE_DONE = compile_gated(r"\b(?:passed|overtook|(?:went|drove|moved)\s+past|went\s+around|drove\s+around|"
                               r"maneuvered\s+around|swerved\s+around)\b[^,.;]{0,50}\bto\s+(?:\w+\s+){0,2}$", re.I)
-_INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|"
-                        r"proceeded|proceeding|continued|continuing|continue|beginning|starting|went\s+on|"
+# (told in the present as in the past: "the AVO disengages and proceeds to make a left turn")
+_INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attempted|attempting|attempts|tried|trying|tries|"
+                        r"proceeded|proceeding|proceeds|continued|continuing|continue|continues|beginning|starting|"
+                        r"went\s+on|goes\s+on|"
                         # "had to stop for a pedestrian", "was forced to brake": it did
                         r"had|(?:was|were)\s+forced)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
