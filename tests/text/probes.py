@@ -2796,6 +2796,13 @@ PROBES: tuple[Probe, ...] = (
           ("rear-ended", "struck", "struck the rear of", "hit the back of", "collided with", "made contact with the "
            "rear of", "impacted", "contacted"),
           lambda sk: [(p.position, p.lane) for p in sk.npcs], [("R6", "same"), ("R6", "same")]),
+    Probe("a party going the other way in the lanes of the AV's direction, told by their heading (session 18)",
+          "The Waymo AV was traveling westbound on [XXX] when a passenger car {w} made contact with the front of the "
+          "Waymo AV.",
+          ("traveling eastbound in the westbound lanes of [XXX]", "traveling east in the westbound lane",
+           "heading eastbound within the westbound travel lane", "driving eastbound down the westbound lanes",
+           "traveling eastbound in the westbound through lanes"),
+          _position, [("R7", "same")]),
 )
 
 

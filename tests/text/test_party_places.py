@@ -331,3 +331,14 @@ def test_a_party_striking_one_told_behind_the_av_came_from_further_behind_whiche
         "was stopped directly behind the Waymo AV.")
     sk = extract(text, "csvr-waymo-20241104-s345")
     assert [(p.position, p.lane) for p in sk.npcs] == [("R6", "same"), ("R6", "same")]
+
+
+def test_a_party_coming_the_other_way_in_the_lanes_of_the_av_s_direction_is_the_wrong_way_in_its_lane() -> None:
+    # "an SUV that was traveling westbound on [XXX] in the middle shared turn lane, directly in front of the Waymo
+    # AV" (the AV eastbound; the gold's R7/same), told "in the eastbound lanes": a lane named by the direction it
+    # carries, the AV's, holds a party going the other way in the AV's lane, head-on, also at the junction.
+    for told in ("in the eastbound lanes", "within the eastbound travel lane"):
+        text = _TEXTS["nhtsa-sgo-ads-30270-10726-v1"][1].replace(
+            "in the middle shared turn lane, directly in front of the Waymo AV", told)
+        p = extract(text, "nhtsa-sgo-ads-30270-10726-v1").npcs[0]
+        assert (p.position, p.lane) == ("R7", "same"), told

@@ -137,6 +137,11 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             # road is R5-R7). Not one that got there later ("entered the intersection and veered into EGO's lane of
             # travel ... continued traveling in EGO's lane"): it came from where it was first.
             return "R7", "same", True
+        if ego_heading is not None and (lanes := _HEADING_LANE.search(opening)) and \
+                CARDINALS[lanes.group(1).lower()] == ego_heading:
+            # Coming the other way in the lanes of the AV's direction when first told ("a passenger car traveling
+            # eastbound in the westbound lanes", the AV westbound): the wrong way, in the AV's lane.
+            return "R7", "same", True
         if junction:
             return "R2", None, True
         # In the AV's own lane: said ("the wrong way"), or passing the AV on its right (the oncoming lane is on its
@@ -375,6 +380,9 @@ FROM_BEHIND = r"from\s+behind\b" + _NOT_ANOTHER
 # only partly in it (a straddle of the centre line), nor one moving into it ("crossed into EGO's lane").
 _IN_EGO_LANE = compile_gated(r"(?<!partially\s)(?<!partly\s)\b(?:in|within)\s+EGO's\s+(?:travel\s+)?lane\b|"
                              r"\b(?:directly|immediately)\s+in\s+front\s+of\s+EGO\b", re.I)
+# A lane named by the direction it carries ("in the westbound lanes of [XXX]", "within the northbound travel lane").
+_HEADING_LANE = compile_gated(r"\b(?:in|within|along|down)\s+(?:the\s+)?(north|south|east|west)bound\s+(?:travel\s+|"
+                              r"traffic\s+|through\s+)?lanes?\b", re.I)
 _INTO_A_LANE = compile_gated(r"\binto\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\b", re.I)
 # A part at a rear corner, on one side: the corner or quarter itself, a tail light, the rear wheel or tyre.
 _CORNER_PART = r"(?:corner|quarter|tail[- ]?(?:light|lamp)|(?:wheel|tire|tyre)(?!\s+well))"
