@@ -1766,4 +1766,28 @@ QUOTED: dict[str, tuple[str, str]] = {
         'rear left sensor of the Waymo AV. The SUV left the scene. At the time of the impact, the Waymo AV’s '
         'Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual mode. The Waymo AV '
         'sustained minor damage.'),
+    'nhtsa-sgo-ads-30270-10570-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10570, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:48 AM MST a Waymo Autonomous Vehicle ("Waymo AV") operating in Scottsdale, '
+        'Arizona was in a collision involving an SUV in an alley behind [XXX]. The Waymo AV was traveling '
+        'northbound in the alley behind [XXX] when an SUV parked in a carport to the right of the Waymo AV began '
+        'to exit its parking stall and proceed into the alley. As the Waymo AV passed the wall of the carport '
+        'stall, the front driver side of the SUV made contact with the front passenger side of the Waymo AV. At '
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+        'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
+        'because a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional'
+        ' information as it may become available.'),
+    'dmvca-cruise-20220129-r278': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 278, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in supervised autonomous mode, was traveling '
+        'southbound on Potrero Avenue between 15th Street and 16th Street. The Cruise AV approached the '
+        'intersection with 16th Street as a Toyota Tundra traveling southbound on Potrero Avenue was making a '
+        'right turn onto westbound 16th street. The Toyota Tundra was yielding for pedestrians and blocking the '
+        'bike lane on southbound Potrero Avenue with Cyclist 1 and Cyclist 2 approaching. The Cruise AV braked '
+        'for the two cyclists as Cyclist 3 traveling behind the Cruise AV veered left to avoid another vehicle '
+        'pulling out of a curbside parking spot. Cyclist 3 then made contact with the right rear bumper of the '
+        'Cruise AV, falling off their bike. Cyclist 3 reported minor injuries related to the incident and police '
+        'were not called.'),
 }

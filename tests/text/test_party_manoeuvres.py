@@ -83,3 +83,14 @@ def test_a_party_behind_the_standing_av_that_passes_it_changed_lane_from_its_lan
     # Waymo AV on the left side" as the AV pulled up behind a double-parked car: R6/left, `a`, the official gold).
     p = _party("dmvca-waymo-20220411-r318")
     assert (p.position, p.lane, p.actions) == ("R6", "left", "a")
+
+
+def test_a_space_off_the_road_is_left_across_the_way_a_curbside_one_into_a_lane() -> None:
+    # "an SUV parked in a carport to the right of the Waymo AV began to exit its parking stall and proceed into the
+    # alley": the stall is off the roadway, so the SUV moved off across the AV's path (`im`, the gold), not from the
+    # curb into a lane (`if`).
+    p = _party("nhtsa-sgo-ads-30270-10570-v1")
+    assert (p.start, p.actions) == ("stopped", "im")
+    # "another vehicle pulling out of a curbside parking spot": from the curb into the lane (`if`, the official gold).
+    p = next(x for x in extract(QUOTED["dmvca-cruise-20220129-r278"][1], "r278").npcs if x.start == "stopped")
+    assert p.actions == "if"

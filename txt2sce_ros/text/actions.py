@@ -438,6 +438,8 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|
                                r"(?:[\w-]+\s+)?$", re.I)
 _MAKING_NOUN = compile_gated(r"\s*(?:making|executing|performing|completing|conducting)\s+(?:a|an|its|the|their)\s+"
                              r"(?:[\w-]+\s+)?", re.I)
+#: A place off the roadway a party leaves across the road (`m`), named before its move out.
+_OFF_ROAD_PLACE = compile_gated(r"\b(?:driveway|parking\s+(?:lot|garage|structure)|garage|alley|carport)\b", re.I)
 #: A stop told as the party's first state ("initially stopped", "at first came to a stop", "was originally stopped").
 _AT_FIRST = compile_gated(r"\b(?:initially|originally|at\s+first|first)\s+(?:(?:was|were|had)\s+)?$", re.I)
 # "abruptly stopped", "suddenly halted": a manner adverb makes a stop an event of a party on its way.
@@ -823,9 +825,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 code in "abcdefghikF" and who >= 0:
             # "both vehicles proceeded forward": the AV did it too.
             out.append(Act(sent=sent_idx, pos=b, code=code, who=-1, text=s[b:e]))
-        if code == "P" and fre.search(r"\b(?:driveway|parking\s+(?:lot|garage|structure)|garage|alley)\b",
-                                      s[max(0, b - 90):b], re.I):
-            code = "m"  # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road
+        if code in "PO" and who >= 0 and _OFF_ROAD_PLACE.search(s, max(0, b - 90), b):
+            # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road; "an SUV
+            # parked in a carport to the right of the Waymo AV began to exit its parking stall": a space off the
+            # road (a carport, a lot, a garage) is left across the way, not from the curb into a lane
+            code = "m"
         if code == "h" and s[b:e].lower() == "stopped" and fre.match(r"\s+(?:traffic|vehicles|cars|queue)\b", s[e:]) \
                 and any(x.code == "S" and x.who == who for x in out):
             continue  # "EGO was stopped ... behind stopped traffic": the queue's state, the AV's told already
