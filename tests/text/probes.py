@@ -2768,6 +2768,16 @@ PROBES: tuple[Probe, ...] = (
            "starts to make a left turn", "goes on to make a left turn", "proceeds into the travel lane",
            "moves into the travel lane", "pulls into the travel lane"),
           _ego, lambda w: ("stopped", "if" if "lane" in w else "id")),
+    Probe("a summary near a cross street: the intersection ahead is not the scene, a stop at it is (session 18)",
+          "On May 3, 2024 at 2:10 PM PT a Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) operating in San Francisco, "
+          "California was in a collision involving a passenger car on Mission Street near 16th Street. The Waymo AV was "
+          "traveling northbound on Mission Street {w}. A passenger car traveling in the right lane changed lanes to "
+          "the left and made contact with the passenger side of the Waymo AV.",
+          ("approaching the intersection with 16th Street", "as it approached the intersection with 16th Street",
+           "toward the intersection with 16th Street", "preparing to turn left at the intersection with 16th Street",
+           "about to enter the intersection with 16th Street", "and came to a stop at the intersection with 16th "
+           "Street", "and was stopped in traffic at the intersection with 16th Street"),
+          lambda sk: sk.road.layout, lambda w: "junction4" if "stop" in w else "straight"),
     Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
           "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
           "traveling in the left lane made contact with the driver side of the Waymo AV.",

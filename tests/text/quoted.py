@@ -1413,6 +1413,21 @@ QUOTED: dict[str, tuple[str, str]] = {
         'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
         'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
         'may become available.'),
+    'nhtsa-sgo-ads-30270-9431-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9431, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2024 at 2:21 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Los Angeles, '
+        'California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was '
+        'traveling northwest in the leftmost lane of a two-lane section of [XXX] behind a pickup truck '
+        'traveling in the same direction. As the pickup truck approached the intersection with [XXX], it '
+        'maneuvered into the center left turn lane. The pickup truck continued to travel in the center left '
+        'turn lane, which, after crossing the intersection, became the leftmost dedicated left turn lane for '
+        'oncoming traffic. As the Waymo AV was passing the pickup truck on the right, the pickup truck began '
+        'to maneuver out of its lane and re-enter the leftmost lane of northwestbound [XXX]. The passenger '
+        'side of the pickup truck made contact with the driver side of the Waymo AV. At the time of the '
+        'impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. '
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9433-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9433, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

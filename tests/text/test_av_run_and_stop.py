@@ -101,3 +101,22 @@ def test_a_move_begun_in_the_present_tense_is_made() -> None:
     text = QUOTED["nhtsa-sgo-ads-30291-7981-v1"][1]
     assert _ego("nhtsa-sgo-ads-30291-7981-v1", text) == ("stopped", "id")
     assert _ego("nhtsa-sgo-ads-30291-7981-v1", text.replace("proceeded to make", "proceeds to make")) == ("stopped", "id")
+
+
+@pytest.mark.parametrize("report_id, layout", [
+    # "in a collision involving a pickup truck on [XXX] near [XXX] ... As the pickup truck approached the
+    # intersection with [XXX], it maneuvered into the center left turn lane ... As the Waymo AV was passing the
+    # pickup truck on the right": the summary puts the collision near the cross street; the intersection is only
+    # ahead (gold straight).
+    ("nhtsa-sgo-ads-30270-9431-v1", "straight"),
+    # "... an SUV on [XXX] near [XXX]. The Waymo AV was travelling southbound ..., preparing to enter the dedicated
+    # left turn lane at the intersection with [XXX], when an SUV was exiting a shopping center driveway": the
+    # intersection the AV was preparing to reach is not where they met (gold straight).
+    ("nhtsa-sgo-ads-30270-9544-v1", "straight"),
+    # "... a passenger vehicle on Potrero Avenue near 22nd Street ... As the Waymo AV approached the intersection with
+    # 22nd Street, it came to a stop behind its lead vehicle": the AV stopped there, in the queue at the junction
+    # (gold junction4).
+    ("csvr-waymo-20240131-s297", "junction4"),
+])
+def test_a_summary_near_a_cross_street_leaves_the_intersection_ahead(report_id: str, layout: str) -> None:
+    assert _road(report_id, QUOTED[report_id][1])[0] == layout

@@ -50,6 +50,16 @@ _OUT_OF_A_LOT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out
                               r"(?:parking\s+(?:lot|garage|structure)|driveway|garage|alley)\b", re.I)
 # The AV (or a party) on its way to an intersection: at a junction unless someone came out of a driveway or lot there.
 _APPROACHING = compile_gated(r"\b(?:approaching|toward|towards)\s+the\s+intersection\b", re.I)
+# An intersection named only as ahead: approached, or where the AV was preparing or about to go ("As the pickup truck
+# approached the intersection with [XXX]", "preparing to enter the dedicated left turn lane at the intersection").
+_AHEAD_ONLY = compile_gated(r"\b(?:approach(?:ed|ing|es)|toward|towards)\s+the\s+intersection\b|"
+                            r"\b(?:preparing|about|planning|intending|getting\s+ready)\s+to\s+[^.,;]{0,60}?\bintersection\b",
+                            re.I)
+# The summary places the collision near a cross street, not at it ("in a collision involving an SUV on [XXX] near
+# [XXX]"): 47 of the 53 studyable reports so summarised are gold `straight`, and the 6 at a junction tell the AV
+# standing or stopping there ("stopped in a queue of traffic at a red light at the intersection").
+_NEAR_CROSS_STREET = compile_gated(r"\bon\s+(?:\[XXX\]|(?-i:[A-Z0-9][\w.'-]*)(?:\s+(?-i:[A-Z][\w.'-]*)){0,3})\s+near\s+"
+                                   r"(?:\[XXX\]|(?-i:[A-Z0-9]))", re.I)
 _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
                          r"\b(?:three|3)[- ]?(?:way|legged|leg)\s+(?:intersection|stop|junction)\b|"
                          # "where Koval Lane ends at Flamingo Road", "the end of X where it meets Y": a road ending
@@ -198,10 +208,16 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
     the AV is in or approaching), unless someone came out of a driveway, lot or garage: the interaction is then at
     that exit (sketch.md: a driveway is `straight`), and a turn onto the road from there is no junction's."""
     exit_at = next((i for i, s in enumerate(sents) if i not in summary and _OUT_OF_A_LOT.search(s)), None)
+    near = any(_NEAR_CROSS_STREET.search(sents[i]) for i in summary if i < len(sents))
     for i, s in enumerate(sents):
         # An arrow on a work truck's light board is no traffic signal.
         cleaned = _NOT_JUNCTION.sub(" ", _LOT_EXIT.sub(" ", PRIOR_TURN.sub(" ", _DISPLAYED.sub(" ", _NOT_CONTROL.sub(
             " ", s)))))
+        if near and i not in summary and not _STOOD.search(cleaned):
+            # near a cross street: the intersection ahead is not the scene, unless the sentence stops or stands the
+            # AV there ("As the Waymo AV approached the intersection with 22nd Street, it came to a stop behind its
+            # lead vehicle": a queue at the junction)
+            cleaned = _AHEAD_ONLY.sub(" ", cleaned)
         if exit_at is not None:
             # "As the AV was approaching the intersection with Stillman Street, a blue Model 3 Tesla exited out of a
             # parking garage into the AV's lane of travel"; "allowing for a passenger car to exit a parking lot ...
@@ -252,6 +268,7 @@ _AT_CROSS_STREET = compile_gated(rf"\b(?:on|at)\s+{_STREET}\.?\s+(?:at|and)\s+{_
 _STANDING = (r"(?:stopped|waiting|stationary|idle|idling|halted|queued|sitting|standing(?:\s+still)?|"
              r"at\s+(?:a\s+)?(?:standstill|rest)|at\s+a\s+(?:complete\s+|full\s+)?stop(?!\s+(?:sign|line|bar|light))|"
              r"(?:came|come)\s+to\s+a\s+(?:\w+\s+)?(?:stop|halt|standstill))")
+_STOOD = compile_gated(rf"\b{_STANDING}", re.I)
 # Standing in a queue of traffic (not a lone stop, not traffic the AV yielded to).
 _QUEUED = compile_gated(rf"\b{_STANDING}\s+in\s+traffic\b|\bbehind\s+stopped\s+traffic\b|"
                         r"\b(?:in|behind)\s+a\s+queue\s+of\s+(?:\w+\s+)?traffic\b", re.I)
