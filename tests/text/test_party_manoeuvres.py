@@ -94,3 +94,14 @@ def test_a_space_off_the_road_is_left_across_the_way_a_curbside_one_into_a_lane(
     # "another vehicle pulling out of a curbside parking spot": from the curb into the lane (`if`, the official gold).
     p = next(x for x in extract(QUOTED["dmvca-cruise-20220129-r278"][1], "r278").npcs if x.start == "stopped")
     assert p.actions == "if"
+
+
+def test_the_way_out_of_a_driveway_told_with_its_turn_is_the_turn() -> None:
+    # "an SUV was exiting a shopping center driveway making a right turn onto southbound [XXX]": the exit is the
+    # turn onto the AV's road (`e`, the gold), not a crossing and then a turn (`me`); so when told "exited ... and
+    # turned right onto".
+    rid = "nhtsa-sgo-ads-30270-9544-v1"
+    assert _party(rid).actions == "e"
+    told = QUOTED[rid][1].replace("was exiting a shopping center driveway making a right turn onto",
+                                  "exited a shopping center driveway and turned right onto")
+    assert _party(rid, told).actions == "e"

@@ -897,6 +897,14 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # the space in reverse is the backing itself (as "left the space in reverse" is, PHRASES "O")
             continue
         turn = next((x for x in reversed(dedup) if x.who == a.who), None)
+        if a.code in "de" and a.who >= 0 and turn is not None and turn.code == "m" and turn.sent == a.sent and \
+                fre.fullmatch(r"[^,.;]{0,60}", s[turn.pos + len(turn.text):a.pos]):
+            # "an SUV was exiting a shopping center driveway making a right turn onto southbound [XXX]", "exited a
+            # driveway and turned right onto": the way out of the driveway or lot is the turn onto the road (the
+            # gold `e`), and the party's first move there: no run along the AV's road opens its string (the turn
+            # opens it, as one told under way does)
+            dedup[dedup.index(turn)] = Act(a.sent, a.pos, a.code, a.who, a.text, True)
+            continue
         if a.code in ("f", "g", "F") and a.text[:4].lower() == "into" and turn is not None and \
                 turn.code in ("d", "e", "j", "k", "m", "O", "P", "T") and turn.sent == a.sent and \
                 0 <= a.pos - turn.pos <= 70:
