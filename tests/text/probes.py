@@ -292,6 +292,17 @@ _OUT_OF_A_DRIVEWAY = (
     "pulls out of a driveway", "emerged from a driveway", "exited a parking structure",
 )
 
+# A move of a party behind the AV and the rear corner of the AV it struck -> the party's lane (session 18).
+_REAR_CORNER_MOVES = {
+    "changed lanes to the left and struck the rear passenger side corner of the Waymo AV": "right",
+    "changed lanes to the right and struck the rear driver side corner of the Waymo AV": "left",
+    "moved over to the right and made contact with the Waymo AV's left rear corner": "left",
+    "merged to the left and made contact with the right rear corner of the Waymo AV": "right",
+    "changed lanes to the left and made contact with the rear left corner of the Waymo AV": "same",
+    "changed lanes to the right and made contact with the Waymo AV's right rear corner": "same",
+}
+
+
 PROBES: tuple[Probe, ...] = (
     _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
             sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
@@ -2813,6 +2824,10 @@ PROBES: tuple[Probe, ...] = (
            "heading eastbound within the westbound travel lane", "driving eastbound down the westbound lanes",
            "traveling eastbound in the westbound through lanes"),
           _position, [("R7", "same")]),
+    Probe("a party behind moving over toward the AV's rear corner came from that side; moving out, from its lane "
+          "(session 18)",
+          "The Waymo AV was stopped at a red light on northbound [XXX]. A sedan approached from behind, {w}.",
+          tuple(_REAR_CORNER_MOVES), _position, lambda w: [("R6", _REAR_CORNER_MOVES[w])]),
 )
 
 

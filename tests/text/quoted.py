@@ -1805,4 +1805,24 @@ QUOTED: dict[str, tuple[str, str]] = {
         'pulling out of a curbside parking spot. Cyclist 3 then made contact with the right rear bumper of the '
         'Cruise AV, falling off their bike. Cyclist 3 reported minor injuries related to the incident and police '
         'were not called.'),
+    'dmvca-cruise-20220816-r374': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 374, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in supervised autonomous mode, was at a complete '
+        'stop in response to a red light on eastbound Martin Luther King Jr. Drive at the intersection with '
+        'Crossover Drive. A white Honda SUV approaching from the rear in the lane to the left of the Cruise AV '
+        'changed into the Cruise AV’s lane, came to a complete stop behind the Cruise AV, and then proceeded '
+        'forward to make contact with the rear driver side bumper of the Cruise AV. The white Honda SUV reversed '
+        'backwards several feet, proceeded forward, came to a complete stop, and then proceeded forward to make '
+        'contact with the Cruise AV again. This caused damage to the Cruise AV’s rear driver side fascia. The '
+        'driver of the other vehicle left the scene without exchanging information. Both Cruise AV operators '
+        'reported injuries.'),
+    'csvr-cruise-20191017-s39': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 39,"
+        " column 'Accident Detail Description'), transcribed",
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was stopped at a red light on '
+        'southbound Hyde Street at the intersection with Sutter Street when another vehicle behind the Cruise AV '
+        'attempted to change into the right adjacent lane and made contact with the right rear corner of the '
+        'Cruise AV, damaging the Cruise AV’s right rear radar and assembly. There were no injuries and police '
+        'were not called.'),
 }

@@ -342,3 +342,19 @@ def test_a_party_coming_the_other_way_in_the_lanes_of_the_av_s_direction_is_the_
             "in the middle shared turn lane, directly in front of the Waymo AV", told)
         p = extract(text, "nhtsa-sgo-ads-30270-10726-v1").npcs[0]
         assert (p.position, p.lane) == ("R7", "same"), told
+
+
+def test_a_party_behind_moving_over_toward_the_av_came_from_the_side_of_the_rear_corner_it_struck() -> None:
+    # "A white Honda SUV approaching from the rear in the lane to the left of the Cruise AV changed into the Cruise
+    # AV's lane ... and then proceeded forward to make contact with the rear driver side bumper of the Cruise AV"
+    # (the gold's R6/left), told "approaching from the rear changed lanes to the right": no lane named, but a move
+    # to the right ending at the AV's rear left came from the left lane.
+    old = "approaching from the rear in the lane to the left of the Cruise AV changed into the Cruise AV’s lane"
+    for told in ("approaching from the rear changed lanes to the right", "approaching from the rear moved over to the "
+                 "right"):
+        p = extract(_TEXTS["dmvca-cruise-20220816-r374"][1].replace(old, told), "dmvca-cruise-20220816-r374").npcs[0]
+        assert (p.position, p.lane) == ("R6", "left"), told
+    # A move out toward the side struck left the AV's lane: "a vehicle behind the Cruise AV attempted to change into
+    # the right adjacent lane and made contact with the right rear corner" (csvr-cruise-20191017-s39: R6/same).
+    p = _party("csvr-cruise-20191017-s39")
+    assert (p.position, p.lane) == ("R6", "same")

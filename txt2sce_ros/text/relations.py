@@ -47,7 +47,7 @@ from .fastre import compile_gated
 from .mentions import Entity, Mention
 from .positions import AV_CLAUSE, BACKING, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
 from .lexicon import CARDINALS
-from .story import ONCOMING, TURN_WORDS, Doc, context, ego_contact_part, ends_phrase, heading
+from .story import ONCOMING, TURN_WORDS, Doc, before_contact, context, ego_contact_part, ends_phrase, heading
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger(?:'s)?)"
 # Explicit lane relations to the AV, said of the party ("in the lane to the right of EGO", "the left adjacent lane").
@@ -704,6 +704,16 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # changing lanes itself ("was changing lanes into the left turn lane ... another vehicle changing into the
         # same lane made contact with the rear bumper"): both moved over from one lane, it behind the AV in it.
         lane, rule = ("left" if moves[-1] == "f" else "right"), rule + "; AV moved over"
+    elif pos == "R6" and lane == "same" and fore == "rear" and cside and \
+            (moves := [a.code for a in d.acts if a.who == e.idx and a.code in "fg" and
+                       before_contact(d, a.sent, a.pos)]) and moves[0] == ("f" if cside == "right" else "g"):
+        # Behind the AV, moving over toward its lane from one side and striking its rear corner on that side: it came
+        # from the lane on that side ("merging from the on-ramp ... struck the rear passenger side corner"). The
+        # studyable gold holds the geometry in 28 of the 30 parties behind with a rear corner struck and a lane
+        # change told: moving toward the AV, the side struck (7 of 7); moving out toward that side, the AV's lane
+        # (21 of 23, the passers of sketch.md's queue).
+        lane, rule = cside, rule + "; moved over toward the AV from the side it struck"
+        used.append(contact)
     elif cside and lane == "same" and (pos == "R5" or passing or flank or _ADJACENT_LANE.search(ctx)) and \
             contact is not None and \
             not (backing and pos == "R5" and fore == "front"):
