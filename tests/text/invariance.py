@@ -360,6 +360,11 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("was stopped -> was idling", _sub(r"\bwas stopped\b", "was idling")),
     Rewrite("was stopped -> was at a stop", _sub(r"\bwas stopped\b", "was at a stop")),
     Rewrite("came to a stop -> stopped completely", _sub(r"\bcame to a stop\b", "stopped completely")),
+    # Session 18: a light and a place told in police shorthand ("at a red", "close to Y"; over all 379 studyable
+    # narratives these changed the road or signal in 14 and 4 on 78babff).
+    Rewrite("at a red light -> at a red", _sub(r"\bat a red light\b", "at a red")),
+    Rewrite("on X near Y -> on X close to Y", _sub(r"\b(on (?:\[XXX\]|[A-Z]\w+ (?:Street|Avenue|Boulevard))) near\b",
+                                                   r"\1 close to")),
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

@@ -189,6 +189,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'approximately 5 MPH. The Waymo AV sustained minor damage to the rear bumper, and the passenger vehicle '
         'left the scene without stopping or exchanging information. The Waymo AV driver complained of neck, '
         'back, and nose pain and was treated at the scene by emergency responders.'),
+    'csvr-waymo-20191010-s34': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "34, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode in traffic at a red light on '
+        'southbound Rengstorff Avenue at Central Expressway in Mountain View when it was rear-ended by a '
+        'passenger vehicle. The passenger vehicle made contact with the Waymo AV’s rear bumper at '
+        'approximately 1 MPH. The Waymo AV sustained minor damage to its rear bumper, and the passenger '
+        'vehicle sustained minor damage to its front bumper. No injuries were reported.'),
     'csvr-waymo-20191014-s37': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "37, column 'Accident Detail Description'), transcribed",
@@ -1672,6 +1680,13 @@ QUOTED: dict[str, tuple[str, str]] = {
         'We question whether this interaction meets the reporting requirements nevertheless, we are submitting '
         'this report out of an abundance of caution. This 10-Day update provides complete information for this '
         'incident.'),
+    'nhtsa-sgo-ads-30610-5225-v2': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-5225, version '
+        '2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle in autonomous mode was stopped in a merge lane from northbound [XXX] onto [XXX] '
+        'yielding and waiting for cross traffic. As it began to creep forward, it again came to a stop and it '
+        'was struck by the vehicle behind at low speed. There were no injuries and police were not called. '
+        'This report was updated to change the mileage section to "Highlander".'),
     'nhtsa-sgo-ads-30792-6114-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30792-6114, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -120,3 +120,37 @@ def test_a_move_begun_in_the_present_tense_is_made() -> None:
 ])
 def test_a_summary_near_a_cross_street_leaves_the_intersection_ahead(report_id: str, layout: str) -> None:
     assert _road(report_id, QUOTED[report_id][1])[0] == layout
+
+
+def test_a_light_told_in_police_shorthand_is_the_same_light() -> None:
+    # csvr-waymo-20191010-s34: "was stopped in autonomous mode in traffic at a red light on southbound Rengstorff
+    # Avenue at Central Expressway ... when it was rear-ended": at a junction, signal, red (the gold's). "at a red"
+    # (the light unsaid) and "a stoplight that was red" tell the same light.
+    text = QUOTED["csvr-waymo-20191010-s34"][1]
+    for words in ("at a red", "at a stoplight that was red"):
+        assert _road("csvr-waymo-20191010-s34", text.replace("at a red light", words)) == ("junction4", "signal", "red")
+    # nhtsa-sgo-ads-30270-3786-v1: "The Waymo AV was stopped in traffic at a red light facing West on [XXX]".
+    text = QUOTED["nhtsa-sgo-ads-30270-3786-v1"][1]
+    assert _road("nhtsa-sgo-ads-30270-3786-v1", text.replace("at a red light", "at a red")) == (
+        "junction4", "signal", "red")
+    # csvr-waymo-20241214-s355: a traffic light that showed nothing is no signal to begin on (gold `none`); so is a
+    # "stoplight" told so.
+    text = QUOTED["csvr-waymo-20241214-s355"][1]
+    assert _road("csvr-waymo-20241214-s355", text)[2] == "none"
+    assert _road("csvr-waymo-20241214-s355", text.replace("traffic light", "stoplight"))[2] == "none"
+
+
+def test_a_merging_lane_is_a_merge_lane() -> None:
+    # nhtsa-sgo-ads-30610-5225-v2: "A Zoox vehicle in autonomous mode was stopped in a merge lane from northbound
+    # [XXX] onto [XXX] yielding and waiting for cross traffic": a merge lane ends at a T (gold junction3); a
+    # "merging lane" is the same lane.
+    text = QUOTED["nhtsa-sgo-ads-30610-5225-v2"][1]
+    assert _road("nhtsa-sgo-ads-30610-5225-v2", text)[0] == "junction3"
+    assert _road("nhtsa-sgo-ads-30610-5225-v2", text.replace("merge lane", "merging lane"))[0] == "junction3"
+
+
+@pytest.mark.parametrize("near", ("close to", "just past", "north of"))
+def test_a_summary_placing_the_collision_away_from_the_cross_street_in_other_words(near: str) -> None:
+    # nhtsa-sgo-ads-30270-9544-v1 (above) with its summary's "on [XXX] near [XXX]" told another way.
+    text = QUOTED["nhtsa-sgo-ads-30270-9544-v1"][1].replace("on [XXX] near [XXX]", f"on [XXX] {near} [XXX]", 1)
+    assert _road("nhtsa-sgo-ads-30270-9544-v1", text)[0] == "straight"

@@ -13,9 +13,15 @@ from .lexicon import CARDINALS, NUMBER_WORDS
 _WAY_STOP = r"\b(?:all|two|four|three|\d)[-\s]way\s+stop\b"
 #: A traffic light by its names ("traffic signal", "traffic-control signal", "traffic control light").
 _TRAFFIC_LIGHT = r"\btraffic[\s-]+(?:control\s+)?(?:light|signal)s?\b"
-#: A light told by its colour after it ("a light that was red", "the signal was still green"): a traffic light.
-_LIGHT_WAS = r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?(?:red|green|yellow|amber)\b"
-_JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
+#: A light told by its colour after it ("a light that was red", "the signal was still green", "a stoplight that was
+#: red"): a traffic light.
+_LIGHT_WAS = (r"\b(?:stop\s?)?(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?"
+              r"(?:red|green|yellow|amber)\b")
+#: A red told without its light, as police write it ("stopped at a red", "waiting for the red when"): the colour
+#: ends its phrase (not "a red sedan").
+_AT_A_RED = (r"\b(?:at|for)\s+(?:a|the)\s+red(?=\s*(?:[,.;:]|$|\b(?:and|when|while|as|at|on|in|before|with|then|until|"
+             r"facing|behind|near|for|to|waiting)\b))")
+_JUNCTION = compile_gated(_LIGHT_WAS + "|" + _AT_A_RED + r"|\bintersection\b|"
                           # "at the corner of Bush Street and Grant Avenue" (not "the front corner of EGO": a street's
                           # name, capitalised or redacted, follows)
                           r"\b(?:at|on)\s+the\s+(?:\w+\s+)?corner\s+of\s+(?-i:[A-Z0-9\[])|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
@@ -33,13 +39,14 @@ _JUNCTION = compile_gated(_LIGHT_WAS + r"|\bintersection\b|"
                        r"\b(?:stopped|waiting|queued|traffic|traveling|travelling|proceeding|driving)\s+in\s+(?:a|the)\s+"
                        r"(?:(?:dedicated|leftmost|rightmost|left-most|right-most)\s+)?(?:left|right)[- ]turn\s+"
                        r"(?:pocket|lane|only\s+lane)\b", re.I)
-_CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|"
-                          r"(?:all|two|four|three|\d)[-\s]way\s+stop|traffic[\s-]+(?:control\s+)?(?:light|signal))\b", re.I)
+_CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|stop\s?light|"
+                          r"(?:all|two|four|three|\d)[-\s]way\s+stop|traffic[\s-]+(?:control\s+)?(?:light|signal))\b|"
+                          + _AT_A_RED, re.I)
 # (up to six words between: "EGO had been stopped in autonomous mode turning right", "was at a stop in autonomous
 # mode turning right")
 _AV_TURNING = compile_gated(r"\bEGO\b[^.;]{0,60}?\b(?:was|is|had)\s+(?:\w+\s+){0,6}?(?:turning|making\s+(?:a|an)\s+"
                           r"(?:\w+\s+)?(?:left|right)\s+turn)", re.I)
-_NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from)\s+the\s+intersection\b|"
+_NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from|close\s+to)\s+the\s+intersection\b|"
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection|"
                            # a junction left behind: "after clearing the intersection", "having passed through the
                            # intersection"
@@ -58,7 +65,9 @@ _AHEAD_ONLY = compile_gated(r"\b(?:approach(?:ed|ing|es)|toward|towards)\s+the\s
 # The summary places the collision near a cross street, not at it ("in a collision involving an SUV on [XXX] near
 # [XXX]"): 47 of the 53 studyable reports so summarised are gold `straight`, and the 6 at a junction tell the AV
 # standing or stopping there ("stopped in a queue of traffic at a red light at the intersection").
-_NEAR_CROSS_STREET = compile_gated(r"\bon\s+(?:\[XXX\]|(?-i:[A-Z0-9][\w.'-]*)(?:\s+(?-i:[A-Z][\w.'-]*)){0,3})\s+near\s+"
+# ("close to", "just past", "north of", "approaching" [a cross street] place it away from the junction too)
+_NEAR_CROSS_STREET = compile_gated(r"\bon\s+(?:\[XXX\]|(?-i:[A-Z0-9][\w.'-]*)(?:\s+(?-i:[A-Z][\w.'-]*)){0,3})\s+"
+                                   r"(?:just\s+)?(?:near|close\s+to|past|approaching|(?:north|south|east|west)\s+of)\s+"
                                    r"(?:\[XXX\]|(?-i:[A-Z0-9]))", re.I)
 _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|instersection)\b|"
                          r"\b(?:three|3)[- ]?(?:way|legged|leg)\s+(?:intersection|stop|junction)\b|"
@@ -67,14 +76,14 @@ _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|insters
                          r"\b(?-i:(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln)\.?\s+"
                          r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
                          r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
-                         r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+                         r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
 # A ramp named as what the junction meets or where a party heads ("at the [XXX] onramp", "the intersection with
 # Interstate [XXX] onramp", "a left turn onto the Interstate [XXX] onramp"): one leg of a crossing the AV is at, not
 # the ramp the AV is on (a slip lane or ramp the AV is on makes a T: _T_JUNCTION).
 _RAMP_AS_LEG = compile_gated(r"\b(?:intersection\s+with|at|onto|to|towards?)\s+(?:the\s+|an?\s+)?(?:[\w\[\]-]+\s+){0,2}"
                              r"(?:on|off)-?\s?ramp\b", re.I)
 # A slip lane, merge lane or ramp is the AV's place even in a summary: the report is not filed from one.
-_CONNECTOR = compile_gated(r"\bmerge\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+_CONNECTOR = compile_gated(r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
@@ -116,7 +125,7 @@ _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blv
                       r"(?:railroad|railway|rail|train)\s+crossing)", re.I)
 # "was preparing to make a right-on-red": a turn made on red is made at a signal.
 _TURN_ON_RED = r"\b(?:right|left)(?:[- ]turn)?[- ]on[- ]red\b"
-_SIGNAL = compile_gated(_LIGHT_WAS + r"|\b(?:red|green|yellow|amber)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball|"
+_SIGNAL = compile_gated(_LIGHT_WAS + "|" + _AT_A_RED + r"|\b(?:red|green|yellow|amber)\s+(?:(?:left|right)[- ]turn\s+)?(?:light|arrow|signal|ball|"
                      r"indication|phase)\b|"
                      + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|\bsignali[sz]ed\b|\bthe\s+(?:light|signal)\b|\bon\s+(?:a\s+)?(?:green|red|yellow)\b|"
                      r"\b(?:solid|flashing|steady|circular)\s+(?:green|red|yellow|amber)\b|"
@@ -343,7 +352,7 @@ TURNED_GREEN = compile_gated(r"\b(?:stop\s?)?(?:light|signal|lights|signals)\s+(
 
 # A red light named as such (not "a red sedan"): "a red light", "the red traffic signal", "a right-on-red", "turned red".
 # ("a light that was red", "while the signal was still red": the colour told of the light after it)
-_RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|" + _TURN_ON_RED +
+_RED_LIGHT = compile_gated(r"\bred\s+(?:traffic\s+)?(?:light|signal|arrow|ball)s?\b|" + _TURN_ON_RED + "|" + _AT_A_RED +
                            r"|\b(?:turned|changed\s+to|went)\s+red\b|\bon\s+(?:a\s+)?red\b|"
                            r"\b(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|remained)\s+(?:still\s+)?red\b", re.I)
 # ("a stoplight", "a stop light": a traffic light)
@@ -356,7 +365,7 @@ _COLOUR = compile_gated(r"\b(?:red|green|yellow|amber)\b", re.I)
 # A light showing nothing ("a malfunctioning traffic light", "the traffic light was not illuminated", "the signals were
 # dark during a power outage"): no signal state at all (csvr-waymo-20241214-s355, gold `none`).
 _DARK_LIGHT = compile_gated(r"\b(?:malfunctioning|inoperative|inoperable|non-?functioning|non-?operational|dark|broken|"
-                            r"unlit|out-of-service)\s+(?:traffic\s+)?(?:lights?|signals?)\b|"
+                            r"unlit|out-of-service)\s+(?:traffic\s+|stop\s?)?(?:lights?|signals?)\b|"
                             # ("the traffic light was not illuminated"; not "the brake lights were off")
                             r"\b(?:the|its|their|a)\s+(?:traffic\s+)?(?:light|signal)s?\s+(?:\w+\s+){0,2}?(?:was|were|is|are|"
                             r"had\s+been)\s+(?:\w+ly\s+)?"
