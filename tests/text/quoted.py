@@ -1840,4 +1840,12 @@ QUOTED: dict[str, tuple[str, str]] = {
         'attempted to change into the right adjacent lane and made contact with the right rear corner of the '
         'Cruise AV, damaging the Cruise AV’s right rear radar and assembly. There were no injuries and police '
         'were not called.'),
+    'dmvca-apollobaid-20230906-r524': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 524, column '
+        '"Accident Detail Description")',
+        'An Apollo autonomous vehicle (“AV”) was traveling westbound on Rivera Street in San Francisco in '
+        'autonomous mode and stopped for a double-parked vehicle near 31st Avenue. An Apollo safety operator '
+        'disengaged the AV from autonomous mode into conventional mode with use of the steering wheel. Then the '
+        'AV side-swiped the double-parked vehicle while in conventional mode. There were no injuries and '
+        'emergency services were not needed. Both the AV and the second vehicle sustained minor damage.'),
 }

@@ -358,3 +358,18 @@ def test_a_party_behind_moving_over_toward_the_av_came_from_the_side_of_the_rear
     # the right adjacent lane and made contact with the right rear corner" (csvr-cruise-20191017-s39: R6/same).
     p = _party("csvr-cruise-20191017-s39")
     assert (p.position, p.lane) == ("R6", "same")
+
+
+def test_a_verb_made_of_a_part_after_the_av_s_name_is_what_the_av_did_not_a_part_of_it() -> None:
+    # "a white pickup truck traveling behind the Cruise AV rear-ended the Cruise AV" and "Then the AV side-swiped the
+    # double-parked vehicle": the AV's name before "rear-ended" / "side-swiped" is no possessive ("EGO's rear"), so
+    # no part of the AV is read from the verb.
+    from txt2sce_ros.text.mentions import normalise
+    t = normalise(_TEXTS["csvr-cruise-20230728-s266"][1])
+    assert "behind EGO rear-ended EGO" in t and "EGO's rear-ended" not in t
+    t = normalise(_TEXTS["dmvca-apollobaid-20230906-r524"][1])
+    assert "EGO side-swiped" in t
+    # So the AV rear-ending the car ahead of it keeps that car ahead (R5/same), not behind it.
+    sk = extract("The Waymo AV was traveling northbound on Main Street. A sedan ahead slammed on its brakes and the "
+                 "Waymo AV rear-ended the sedan.", "t")
+    assert (sk.npcs[0].position, sk.npcs[0].lane) == ("R5", "same")

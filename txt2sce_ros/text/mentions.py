@@ -755,8 +755,9 @@ def _between(sents: list[str], a: Mention, b: Mention) -> str:
     return sents[a.sent][a.end:b.start] if a.sent < len(sents) else ""
 
 
+# (not a verb made of a part: "EGO rear-ended the sedan", "EGO side-swiped the parked vehicle" are what it did)
 _EGO_BARE_POSSESSIVE = compile_gated(r"\bEGO(?=\s+(?:lane|path|front|rear|bumper|hood|door|mirror|sensor|roof|trunk|"
-                                     r"fender|tire|wheel|side|direction)\b)")
+                                     r"fender|tire|wheel|side|direction)\b(?![- ]?(?:end(?:ed|ing|s)?|swip\w*)\b))")
 
 
 _OTHER_EGO = compile_gated(r"\b((?:a|an|the)\s+(?:second|other|third)|another)\s+EGO\b(?!'s)", re.I)
