@@ -56,6 +56,11 @@ KNOWN: dict[str, set[str]] = {
     # rightmost, so the party behind it that merges into the center lane is read as in the AV's lane (R6/same,
     # `if`: the gold reading) instead of on its left (R6/left, `ifg`).
     "in the <side> lane -> in the lane on the <side>": {"dmvca-waymo-20220206-r282"},
+    # "a passenger car entered the center southeast lane from a driveway ... As the passenger car entered the center
+    # southeast lane just in front of the pickup truck": the retelling reads as the car's lane change (`af`; the
+    # gold `e`, the way out of the driveway); as "a motorist" the retelling's "the passenger car" is no longer tied
+    # to it and the car keeps `a`. Both readings miss the gold.
+    "a passenger vehicle -> a motorist": {"dmvca-waymo-20241014-r619"},
     # "swung wide ... while making a right turn" reads the turn under way (`e`, the gold); "while turning right" does
     # not (`ae`): the challenge set reads "traveling in the opposite direction ... lost control while turning left"
     # as a run, then the turn (`ad`), and the two are not yet told apart.

@@ -105,3 +105,17 @@ def test_the_way_out_of_a_driveway_told_with_its_turn_is_the_turn() -> None:
     told = QUOTED[rid][1].replace("was exiting a shopping center driveway making a right turn onto",
                                   "exited a shopping center driveway and turned right onto")
     assert _party(rid, told).actions == "e"
+
+
+def test_a_lane_entered_by_any_name_is_a_lane_change() -> None:
+    # "The passenger car partially entered the number 2 lane as the front right corner of the passenger car made
+    # contact with the rear left corner of the Waymo AV": the car behind the AV moved out of its lane (`af`, the
+    # gold), as "moved into the number 2 lane" reads; so whatever names the lane.
+    rid = "csvr-waymo-20240513-s311"
+    assert _party(rid).actions == "af"
+    for name in ("lane 2", "the #2 lane", "the No. 2 lane", "the center lane", "the adjacent lane"):
+        told = QUOTED[rid][1].replace("partially entered the number 2 lane", f"partially entered {name}")
+        assert _party(rid, told).actions == "af", name
+    # "a pedestrian on a scooter who entered the lane of traffic in front of the AV": a walker or rider into the
+    # traffic lane is crossing (`m`, the official gold), not changing lanes.
+    assert _party("dmvca-cruise-20230617-r484").actions == "m"

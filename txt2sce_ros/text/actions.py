@@ -265,6 +265,11 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "attempted to move into the turn lane", "change into the left turn lane": into a named lane, the side
           # read from where the party was
           r"\b(?:chang|mov|merg|shift)(?:ed|ing|es|e|s)?\s+(?:over\s+)?into\s+the\s+(?:[\w-]+\s+){0,3}lane\b|"
+          # ... or entered, whatever names it ("partially entered the number 2 lane", "entered the center lane",
+          # "entered lane 2"), as "moved into" it (a party's: find_acts leaves the AV's to its own rules; from a
+          # driveway or the curb it is the way out, read by its own words)
+          r"\b(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?(?:the\s+(?:[\w#.-]+\s+){1,3}lane\b|lane\s+\d\b)"
+          r"(?!\s+(?:of\s+traffic|from\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}?(?:driveway|lot|garage|curb|alley|parking)))|"
           # "shifted over toward the center lane", "crossed over the lane line into EGO's lane", "moved toward our lane"
           r"\b(?:mov|shift|drift|veer|swerv|edg|nudg|inch|steer|swung|swing|cross|merg|wander)(?:ed|ing|es|e|s)?\s+"
           r"(?:over\s+)?(?:(?:(?:across|over)\s+)?(?:the\s+)?(?:lane\s+(?:line|divider|markings?)|line)\s+)?"
@@ -438,6 +443,9 @@ _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|
                                r"(?:[\w-]+\s+)?$", re.I)
 _MAKING_NOUN = compile_gated(r"\s*(?:making|executing|performing|completing|conducting)\s+(?:a|an|its|the|their)\s+"
                              r"(?:[\w-]+\s+)?", re.I)
+#: A lane entered, by the words of PHRASES' generic "F" alternative ("entered the number 2 lane").
+_ENTERED_LANE = compile_gated(r"(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?(?:the\s+(?:[\w#.-]+\s+){1,3}lane\b|"
+                              r"lane\s+\d\b)", re.I)
 #: A place off the roadway a party leaves across the road (`m`), named before its move out.
 _OFF_ROAD_PLACE = compile_gated(r"\b(?:driveway|parking\s+(?:lot|garage|structure)|garage|alley|carport)\b", re.I)
 #: A stop told as the party's first state ("initially stopped", "at first came to a stop", "was originally stopped").
@@ -825,6 +833,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
                 code in "abcdefghikF" and who >= 0:
             # "both vehicles proceeded forward": the AV did it too.
             out.append(Act(sent=sent_idx, pos=b, code=code, who=-1, text=s[b:e]))
+        if code == "F" and who == -1 and _ENTERED_LANE.match(s, b):
+            continue  # the AV's entry into a lane is read by its own rules (a turn lane entered is a move left)
         if code in "PO" and who >= 0 and _OFF_ROAD_PLACE.search(s, max(0, b - 90), b):
             # "stopped in a driveway on the right ... pulled out": out of the driveway, across the road; "an SUV
             # parked in a carport to the right of the Waymo AV began to exit its parking stall": a space off the
