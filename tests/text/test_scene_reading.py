@@ -59,7 +59,10 @@ HELD_SGO = {
                "ego_actions": 0.84, "ego_start": 0.95, "signal_state": 0.96},
     # (check3 position 0.65 -> 0.64, events 0.63 -> 0.62 in session 15: one party moved by a rule its studyable gold
     # holds 8 of 8 - a party stopped behind the AV that passes it began in the AV's lane; check3 was not inspected)
-    "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.62, "layout": 0.90, "ego_actions": 0.73},
+    # (check3 events 0.62 -> 0.61 in session 18, from 0.620 to 0.619: one party's string moved by a wording rule
+    # that moved two studyable sketches, one to its gold - a lane entered by any name is a lane change, as "moved
+    # into" it is; check3 was not inspected)
+    "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.61, "layout": 0.90, "ego_actions": 0.73},
 }
 CONFLICT_HELD_SGO = {"study3": 70, "check3": 41}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
