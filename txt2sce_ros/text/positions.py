@@ -319,8 +319,7 @@ def _crossing_leg(d: Doc, e: Entity, ctx: str, fore: str | None, cside: str | No
     missing (a redacted street, no heading), and a rear corner struck is then the tail of an AV crossing its way. A
     turning AV struck on its left met it from there too ("As the AV was making the left turn, a Subaru ... failed to
     stop for the stop sign and struck the front left side of the Cruise AV": R1)."""
-    if e.category == "pedestrian" or fre.search(r"\bbehind\b|\bfollowing\b|\bfrom\s+the\s+rear\b",
-                                                                 ctx, re.I):
+    if e.category == "pedestrian" or fre.search(r"\bbehind\b|\bfollowing\b|\bfrom\s+the\s+rear\b", ctx, re.I):
         return None
     # (in the party's own words: "EGO was yielding to check for cross traffic ... when it was rear-ended" is not)
     if not _CROSSING_TOLD.search(ctx):
@@ -402,6 +401,7 @@ _CHAIN_VERBS = (r"\b(?:behind|following|trailing|approached|collided\s+(?:with|i
 # ("struck the rear of the pickup truck": the other party named after a part of it)
 _CHAIN = compile_gated(_CHAIN_VERBS + r"(?:(?:rear|back)(?:\s+(?:end|bumper))?\s+of\s+(?:the|a|an)\s+)?(?:[\w-]+\s+)?$",
                        re.I)
+_CHAIN_NOUN = compile_gated(_CHAIN_VERBS + r"([\w-]+)(?:\s+([\w-]+))?", re.I)
 # A party told standing or going behind the AV in its own words ("an SUV that was stopped behind the Waymo AV").
 _BEHIND_EGO = compile_gated(r"\bbehind\s+(?:the\s+)?(?:stopped\s+|stationary\s+)?EGO\b", re.I)
 
@@ -411,7 +411,8 @@ def _told_behind_av(d: Doc, k: int) -> bool:
     behind, whichever of the two the text names first ("A sedan ... rear-ended an SUV that was stopped behind the
     Waymo AV, and the SUV then struck the rear of the Waymo AV")."""
     return bool(_BEHIND_EGO.search(own_context(d, d.ents[k])))
-_CHAIN_NOUN = compile_gated(_CHAIN_VERBS + r"([\w-]+)(?:\s+([\w-]+))?", re.I)
+
+
 _TOWARD_EGO = re.compile(r"(?<!began\s)(?<!begun\s)(?<!started\s)(?<!begin\s)(?<!start\s)"
                          r"\b(?:heading|headed|coming|came|moving)\s+(?:directly\s+|straight\s+)?towards?\s+EGO\b(?!'s)"
                          r"(?![^|.]{0,25}\bfrom\s+(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}lane\b)", re.I)
