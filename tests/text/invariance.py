@@ -365,6 +365,9 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("at a red light -> at a red", _sub(r"\bat a red light\b", "at a red")),
     Rewrite("on X near Y -> on X close to Y", _sub(r"\b(on (?:\[XXX\]|[A-Z]\w+ (?:Street|Avenue|Boulevard))) near\b",
                                                    r"\1 close to")),
+    # ("yielding to" -> "waiting for": 9 of 38 AV strings changed on the session's start code, 4 after; left out of
+    # this list: "before waiting for a pedestrian" is no stop as "before yielding to" is, and "while waiting" after
+    # "stopped at a stop sign" no longer tells the stop's moment; those readings stay "yielding"'s own.)
     Rewrite("began to <move> -> <moved>",
             _sub(r"\b(?:began|started) to (reverse|proceed|move|accelerate|slow|merge|pass|back up)\b(?!\s+and\s)",
                  lambda m: _DONE[m.group(1)])),

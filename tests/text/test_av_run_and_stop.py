@@ -154,3 +154,22 @@ def test_a_summary_placing_the_collision_away_from_the_cross_street_in_other_wor
     # nhtsa-sgo-ads-30270-9544-v1 (above) with its summary's "on [XXX] near [XXX]" told another way.
     text = QUOTED["nhtsa-sgo-ads-30270-9544-v1"][1].replace("on [XXX] near [XXX]", f"on [XXX] {near} [XXX]", 1)
     assert _road("nhtsa-sgo-ads-30270-9544-v1", text)[0] == "straight"
+
+
+def test_a_stop_event_then_waiting_is_the_stop() -> None:
+    # csvr-waymo-20230605-s246: "The Waymo AV came to a stop while yielding to a pickup truck which was reversing
+    # into a perpendicular parking space in front of the Waymo AV. While the Waymo AV was stopped, a van ... began
+    # reversing": the stop is an event of the AV on its way (gold `ah`); "while waiting for a pickup truck" tells the
+    # same stop's result, as "while yielding" does.
+    text = QUOTED["csvr-waymo-20230605-s246"][1]
+    assert _ego("csvr-waymo-20230605-s246", text) == ("moving", "ah")
+    assert _ego("csvr-waymo-20230605-s246", text.replace("while yielding to", "while waiting for")) == ("moving", "ah")
+
+
+def test_a_participle_before_traffic_is_the_traffic_s() -> None:
+    # csvr-waymo-20190206-s2: "The Waymo AV was yielding to approaching traffic from the left when a passenger
+    # vehicle rear-ended the Waymo AV": it stood (gold `stopped`, empty); "was waiting for approaching traffic" is the
+    # same (the participle "approaching" describes the traffic, no run of the AV's).
+    text = QUOTED["csvr-waymo-20190206-s2"][1]
+    assert _ego("csvr-waymo-20190206-s2", text) == ("stopped", "")
+    assert _ego("csvr-waymo-20190206-s2", text.replace("was yielding to", "was waiting for")) == ("stopped", "")

@@ -490,6 +490,8 @@ _IN_PLACE = compile_gated(r"\s+(?:in\s+(?:traffic|(?:a\s+)?(?:queue|line))|"
 _NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\blane\s+(?:occupied\s+by|of)\s+EGO\b")
 # A stop told with the queue it ended in ("came to a stop in a queue of traffic", "stopped in a line of cars").
 # (an adverb of the stop may come between: "stopped completely in a queue of traffic")
+# A group noun of traffic right after a participle ("approaching traffic", "passing cross-traffic"): its adjective.
+_BEFORE_TRAFFIC = compile_gated(r"\s+(?:cross[\s-]?)?traffic\b", re.I)
 _IN_QUEUE = compile_gated(r"\s+(?:\w+ly\s+)?in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
@@ -738,6 +740,8 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             continue  # "parked at the curb following a passenger drop-off": "after", no following of anyone
         if fre.search(r"\btraffic\s+$", before) and fre.match(r"\w+ing\b", s[b:e]):
             continue  # "to gain visibility of oncoming traffic traveling southbound": traffic's move, no party's
+        if code == "a" and fre.match(r"\w+ing$", s[b:e]) and _BEFORE_TRAFFIC.match(s, e):
+            continue  # "was waiting for approaching traffic": the participle describes the traffic, no one's move
         if code in ("h", "S", "a", "c") and fre.search(r"\b(?:the|a|an|its|their)\s+$", before) and \
                 fre.match(r"\s+(?:EGO\b|[A-Za-z])", s[e:e + 12]):
             continue  # "the stopped EGO", "the approaching car": an adjective of a noun, not a manoeuvre
@@ -941,7 +945,10 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if dedup and a.who == dedup[-1].who and a.sent == dedup[-1].sent and {a.code, dedup[-1].code} == {"S", "h"} \
                 and a.pos <= dedup[-1].pos + len(dedup[-1].text) + 1:
             # (one span inside the other, or next to it; "came to a stop while yielding" is a stop, then a state)
-            if dedup[-1].code == "h":
+            # The AV's stop told as an event and a state told right after it ("came to a stop while waiting for a
+            # pickup truck"): the event stays, the state is its result (sequences: the official gold's `ah`).
+            after_stop = dedup[-1].code == "h" and a.who == -1 and a.pos >= dedup[-1].pos + len(dedup[-1].text)
+            if dedup[-1].code == "h" and not after_stop:
                 dedup[-1] = a
             continue
         dedup.append(a)
