@@ -119,3 +119,15 @@ def test_a_lane_entered_by_any_name_is_a_lane_change() -> None:
     # "a pedestrian on a scooter who entered the lane of traffic in front of the AV": a walker or rider into the
     # traffic lane is crossing (`m`, the official gold), not changing lanes.
     assert _party("dmvca-cruise-20230617-r484").actions == "m"
+
+
+def test_a_standing_party_that_passes_moved_off_first_whatever_its_verb() -> None:
+    # "an SUV that had been stopped partially in-lane behind the Waymo AV passed the Waymo AV on the left": it stood,
+    # moved off and moved out to pass (`stopped`, `if`: the gold). A verb of passing that tells no move of its own
+    # ("overtook", "got around", "pulled around") still begins with the move off, never a run (`af`) from a stand.
+    rid = "nhtsa-sgo-ads-30270-8150-v1"
+    assert (_party(rid).start, _party(rid).actions) == ("stopped", "if")
+    for verb in ("overtook", "got around", "pulled around"):
+        p = _party(rid, QUOTED[rid][1].replace("behind the Waymo AV passed the Waymo AV", f"behind the Waymo AV {verb} "
+                                                                                      "the Waymo AV"))
+        assert (p.start, p.actions) == ("stopped", "if"), verb

@@ -275,8 +275,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             acts = "a"  # a party in motion that the text gives no manoeuvre: it kept to its lane
         side = next((c.value for c in placed.seen if c.kind == "passing" and c.value), "")
         if pos == "R6" and lane == "same" and side and not set(acts) & set("fg"):
-            # Passing the AV from behind it in its own lane takes a move to the side it passed on.
-            acts = (acts or "a") + ("f" if side == "left" else "g")
+            # Passing the AV from behind it in its own lane takes a move to the side it passed on; one that stood
+            # behind it moved off first ("had been stopped ... behind the Waymo AV overtook": `if`, as "passed" gives).
+            acts = (acts or ("i" if start == "stopped" else "a")) + ("f" if side == "left" else "g")
         if pos == "R6" and lane == "same" and ego_start == "stopped" and start == "moving" and \
                 not set(acts) & set("fgklm") and AV_AT_CURB.search(t):
             # The AV parked at the curb ("was parallel parked along the curb when it began to pull away"): a
