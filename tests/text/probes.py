@@ -2746,8 +2746,9 @@ PROBES: tuple[Probe, ...] = (
     Probe("a vehicle the AV gave way to at a junction, nothing else told of it (session 18)",
           "The Waymo AV was traveling northbound on [XXX] and came to a stop at a four-way stop sign intersection. "
           "The Waymo AV {w} at the intersection when a sedan rear-ended the Waymo AV.",
-          ("stopped to yield to another vehicle", "was yielding to a pickup truck", "waited for a van",
-           "was stopped for a passenger car", "braked for a box truck", "yielded to an SUV"),
+          ("stopped to yield to another vehicle", "was yielding to a pickup truck", "gave way to a van",
+           "was yielding the right of way to a passenger car", "gave the right of way to a box truck",
+           "yielded to an SUV"),
           lambda sk: [(p.position, p.lane) for p in sk.npcs], [("R1", None), ("R6", "same")]),
     Probe("a party going forward into the front of the standing AV came at it; one backing was ahead (session 18)",
           "The Waymo AV was stopped on [XXX] in the middle of the block. A sedan {w} the front of the Waymo AV.",

@@ -304,9 +304,14 @@ _CROSSING_TOLD = compile_gated(r"\b(?:ran|run|runs|running|through|against|viola
                                r"fail\w*\s+to\s+(?:stop|yield)\s+(?:at|for))\s+(?:a|the|its|their)\s+"
                                r"(?:steady\s+|solid\s+|circular\s+)?(?:red|stop\s+sign)|\bred[- ]light[- ]runn\w*|"
                                r"\bcross[\s-]traffic\b|\bperpendicular\b|\bbroadsid\w*|\bt-?bon(?:ed|ing|es)\b", re.I)
-# The AV gave way to the party: "yielding to the other Waymo AV", "stopped for a vehicle" (the words before its name).
+# The AV stopped or slowed for the party: "yielding to the other Waymo AV", "stopped for a vehicle" (the words
+# before its name).
 YIELDED_TO = compile_gated(r"\b(?:yield\w*|stopp\w*|wait\w*|brak\w*)\s+(?:for|to)\s+(?:a|an|the|another)\s+"
                            r"(?:\w+\s+){0,2}$", re.I)
+# ... gave it the right of way: "yield(ed/ing) to", "gave way to", "gave the right of way to" (not "stopped for" or
+# "braked for": those may be the car ahead).
+_GAVE_WAY_TO = compile_gated(r"\b(?:yield\w*(?:\s+the\s+right[- ]of[- ]way)?|gave\s+way|giving\s+way|gave\s+(?:the\s+)?"
+                             r"right[- ]of[- ]way)\s+(?:for|to)\s+(?:a|an|the|another)\s+(?:\w+\s+){0,2}$", re.I)
 
 
 def _crossing_leg(d: Doc, e: Entity, ctx: str, fore: str | None, cside: str | None,
@@ -331,13 +336,13 @@ def _crossing_leg(d: Doc, e: Entity, ctx: str, fore: str | None, cside: str | No
 
 
 def _yielded_at_junction(d: Doc, e: Entity, fore: str | None, ego_actions: str) -> tuple[str, None, bool] | None:
-    """A vehicle at a junction that nothing else placed and that the AV, going straight or turning right, gave way
+    """A vehicle at a junction that nothing else placed and that the AV, going straight or turning right, yielded
     to ("stopped to yield to another vehicle at the intersection", "while yielding to the other Waymo AV"), touching
     no end of the AV: on the crossing road from the left, which a driver going straight or turning right yields to
     (3 of the 3 such studyable parties no other words place are R1 in the gold)."""
     if e.category not in ("car", "van", "truck", "bus", "motorcycle") or "d" in ego_actions or fore is not None:
         return None
-    if any(YIELDED_TO.search(d.sents[m.sent][max(0, m.start - 40):m.start]) for m in e.mentions):
+    if any(_GAVE_WAY_TO.search(d.sents[m.sent][max(0, m.start - 50):m.start]) for m in e.mentions):
         return "R1", None, True
     return None
 
