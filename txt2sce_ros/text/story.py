@@ -350,6 +350,9 @@ def _named_in_later_clause(d: Doc, sent: int, pos: int, who: int) -> bool:
 _LATER_WORDS = (r"\bthen\b|\bbefore\b|\bafter\b|\bcontinued\b|\bleft\s+the\s+scene|\bcausing\b|\bdamaging\b|"
                 r"\bresulting\b")
 _AFTERWARDS = compile_gated(r"\band\b|" + _LATER_WORDS, re.I)
+# A verb in the simple past after a comma, the next of a list of what was done ("made contact with the front passenger
+# side of the stationary EGO, backed the bicycle up slightly, dropped the bicycle, then fell").
+_NEXT_IN_LIST = compile_gated(r",\s+(?:\w+ly\s+)?[a-z]+ed\s+(?:the|a|an|its|his|her|their|up|out|away|off)\b", re.I)
 
 
 # Only a braking is read there: the AV's reaction just before the contact, told after it.
@@ -369,6 +372,9 @@ def before_contact(d: Doc, sent: int, pos: int) -> bool:
         return sent < d.contact_sent or bool(_BEFORE_IMPACT.search(d.sents[sent]))
     if pos <= d.contact_pos:
         return True
+    listed = _NEXT_IN_LIST.search(d.sents[sent], d.contact_pos, pos + 40)
+    if listed and listed.start() < pos:
+        return False
     after = d.sents[sent][d.contact_pos:pos]
     # "walked into EGO's front bumper as the light turned green and EGO began to move": a clause of the same moment
     # ("as", "while") runs to the sentence's end; its "and" joins what happened then, not what came next.
