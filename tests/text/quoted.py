@@ -6,6 +6,17 @@ studyable sets, word for word."""
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-10669-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10669, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 12:28 PM MST a Waymo Autonomous Vehicle ("Waymo AV") operating in Scottsdale, '
+        'Arizona was in a collision involving a passenger car in a parking lot near [XXX]. The Waymo AV was '
+        'traveling westbound in a parking lot near [XXX] when it stopped for a rider pick-up. While the Waymo AV '
+        'remained parked with hazard lights activated, a passenger car in a parking spot to the left of the Waymo'
+        ' AV reversed and the rear of the passenger car made contact with the driver side of the stationary Waymo'
+        " AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles"
+        ' sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
     'csvr-argo-20211019-s102': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "102, column 'Accident Detail Description'), transcribed",

@@ -131,3 +131,16 @@ def test_a_standing_party_that_passes_moved_off_first_whatever_its_verb() -> Non
         p = _party(rid, QUOTED[rid][1].replace("behind the Waymo AV passed the Waymo AV", f"behind the Waymo AV {verb} "
                                                                                       "the Waymo AV"))
         assert (p.start, p.actions) == ("stopped", "if"), verb
+
+
+def test_a_bare_backed_is_a_backing_and_a_listed_verb_after_the_contact_comes_after_it() -> None:
+    # "a passenger car in a parking spot to the left of the Waymo AV reversed and the rear of the passenger car made
+    # contact": `stopped`, `k` (the gold); told "backed" (no particle) it is the same backing.
+    rid = "nhtsa-sgo-ads-30270-10669-v1"
+    for told in (QUOTED[rid][1], QUOTED[rid][1].replace("Waymo AV reversed and", "Waymo AV backed and")):
+        p = _party(rid, told)
+        assert (p.start, p.actions) == ("stopped", "k")
+    # "The cyclist then reached out a hand and made contact with the front passenger side of the stationary Waymo AV,
+    # backed the bicycle up slightly, dropped the bicycle, then fell": what the list tells after the contact came
+    # after it (`mc`, the gold; no backing).
+    assert _party("nhtsa-sgo-ads-30270-8039-v1").actions == "mc"

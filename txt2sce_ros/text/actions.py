@@ -67,6 +67,10 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:(?<!remained\s)(?<!remains\s)(?<!was\s)(?<!were\s)(?<!got\s)(?<!is\s)(?<!are\s)backed|backing|backs)\s+"
           r"(?:up|out|into|away|toward|towards|onto|across|down|along|in)\b|"
           r"(?<=\bto\s)back\s+(?:up|out|into|away|toward|towards|onto|across|down|along|in)\b|"
+          # a bare "backed" of a vehicle, as "reversed" ("the SUV backed and the rear of the SUV made contact", "backed
+          # approximately 113 meters", "backed at a low speed from an adjacent driveway"); not a state ("was backed
+          # up") nor "backed by"
+          r"\b(?<!remained\s)(?<!remains\s)(?<!was\s)(?<!were\s)(?<!got\s)(?<!is\s)(?<!are\s)(?<!been\s)backed\b(?!-|\s+by\b)|"
           # "began to back", "started to back and": the infinitive with no particle is the backing itself
           r"(?<=\bto\s)back\b(?=\s*(?:[,.;]|$|and\b|slowly\b|while\b|when\b))|"
           r"\b(?:roll|drift|coast)(?:ed|ing|s)?\s+back(?:wards?)?\b(?!\s+(?:to|into)\s+(?:its|their|the)\s+(?:own\s+)?lane)|"
