@@ -2790,6 +2790,13 @@ PROBES: tuple[Probe, ...] = (
            "about to enter the intersection with 16th Street", "and came to a stop at the intersection with 16th "
            "Street", "and was stopped in traffic at the intersection with 16th Street"),
           lambda sk: sk.road.layout, lambda w: "junction4" if "stop" in w else "straight"),
+    Probe("the AV's move into a curbside lane named by its kind is to the right (session 18)",
+          "The Waymo AV was traveling northbound on Mission Street. The Waymo AV {w}, and a sedan traveling behind the "
+          "Waymo AV made contact with its rear bumper.",
+          ("moved into the bus lane", "maneuvered into the bus and taxi lane", "merged into the bike lane",
+           "entered the bus lane", "moved into the curb lane", "swerved into the bike lane",
+           "shifted into the transit lane", "moved over into the bus only lane"),
+          _ego, ("moving", "ag")),
     Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
           "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
           "traveling in the left lane made contact with the driver side of the Waymo AV.",

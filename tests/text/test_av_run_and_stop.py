@@ -173,3 +173,14 @@ def test_a_participle_before_traffic_is_the_traffic_s() -> None:
     text = QUOTED["csvr-waymo-20190206-s2"][1]
     assert _ego("csvr-waymo-20190206-s2", text) == ("stopped", "")
     assert _ego("csvr-waymo-20190206-s2", text.replace("was yielding to", "was waiting for")) == ("stopped", "")
+
+
+@pytest.mark.parametrize("move", ("stopped and then maneuvered into", "stopped, then moved into", "stopped and then entered"))
+def test_a_move_into_a_curbside_lane_named_by_its_kind_is_to_the_right(move: str) -> None:
+    # csvr-cruise-20220905-s189: "The Cruise AV approached a semi-trailer truck that was stopped in the left lane of
+    # traffic. The Cruise AV stopped before maneuvering into the bus and taxi lane to pass the semi-trailer truck. As
+    # the Cruise AV was slowly maneuvering around the semi-trailer truck and merging back into the left lane": the bus
+    # and taxi lane runs along the right-hand curb, so the move into it is to the right (gold `ahigf`). ("before
+    # maneuvering" is read as a plan, so the test tells the move as done.)
+    text = QUOTED["csvr-cruise-20220905-s189"][1].replace("stopped before maneuvering into", move)
+    assert _ego("csvr-cruise-20220905-s189", text) == ("moving", "ahigf")

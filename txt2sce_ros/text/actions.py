@@ -222,7 +222,12 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\b(?:(?!turn|pull|back|revers)[a-z]+(?:ed|ing)|cut|cutting)\s+right\s+(?:into|in\s+front)\b|"
           r"\bcut(?:s|ting)?\s+(?:back\s+)?(?:in\s+)?(?:over\s+)?to\s+the\s+right\b|"
           r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull)(?:ed|ing|es|e|s)?\s+into)\s+the\s+(?:[\w-]+\s+){0,2}?"
-          r"right[- ]turn\s+(?:lane|pocket|bay)|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
+          r"right[- ]turn\s+(?:lane|pocket|bay)|"
+          # Into a lane that runs along the right-hand curb, named by its kind ("maneuvering into the bus and taxi
+          # lane to pass the semi-trailer truck", "moved into the bike lane"): a move to the right.
+          r"\b(?:enter(?:ed|ing|s)?|(?:merg|mov|pull|shift|steer|maneuver|manoeuvr|swerv|veer|swung|swing|cut|nudg)"
+          r"(?:ed|ing|es|e|s)?\s+(?:over\s+)?into)\s+the\s+(?:bus|bike|bicycle|curb|transit)(?:\s+and\s+taxi)?"
+          r"(?:\s+only)?\s+lane\b|\bsteer(?:ed|ing)?\s+(?:to\s+the\s+)?"
           r"right\b|\bswerv(?:ed|ing|es)\s+(?:to\s+the\s+)?right\b|\b(?:veer|drift)(?:ed|ing|s)?\s+(?:to\s+the\s+)?right\b|"
           r"\b(?:mov|shift|nudg|edg|inch|swung|swing|pull)(?:ed|ing|es|e|s)?\s+(?:over\s+)?(?:to\s+the\s+)?right\b"
           r"(?!\s+(?:of\s+(?:the\s+)?EGO|turn\b|hand))"),
@@ -393,7 +398,7 @@ _NEEDS: dict[str, tuple[str, ...]] = {
     "f": ("left", "oncoming", "opposing", "opposite", "merg", "center", "double", "median", "yellow"),
     "O": ("pull", "traffic", "lane", "park", "curb"),
     "P": ("pull", "swung", "swing", "enter", "nose", "nosi", "ease", "easi", "edge", "edgi", "inch"),
-    "g": ("right", "enter", "merg"),
+    "g": ("right", "enter", "merg", "bus", "bike", "bicycle", "curb", "transit"),
     "F": ("cut", "lane", "merg", "around", "swerv", "encroach", "veer", "drift", "enter", "path", "line", "over", "join"),
     "d": ("left",), "e": ("right",), "T": ("turn",),
     "b": ("accelerat", "sped", "speeding", "increas", "speed", "gas", "throttle", "floor", "gun"),
