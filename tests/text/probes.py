@@ -2819,6 +2819,11 @@ PROBES: tuple[Probe, ...] = (
            "a sedan did not stop and hit the Waymo AV", "an SUV collided with the Waymo AV",
            "a motorcyclist struck the Waymo AV", "a box truck bumped into the Waymo AV"),
           _position, [("R6", "same")]),
+    Probe("a party standing at the curb that pulls out into the standing AV stays beside it (session 18)",
+          "The Waymo AV was stopped at a red light on northbound [XXX]. A car {w} and struck the Waymo AV.",
+          ("that was parked at the curb pulled out", "that was parked along the right curb pulled out",
+           "parked at the curb pulled away", "that was stopped at the curb pulled out"),
+          _position, [("R5", "right")]),
     Probe("a chain behind the standing AV, the striker named first (session 18)",
           "The Waymo AV was stopped in traffic. A sedan traveling at a high rate of speed {w} an SUV that was stopped "
           "behind the Waymo AV, and the SUV then struck the rear of the Waymo AV.",

@@ -290,9 +290,10 @@ def _came_at_standing_av(d: Doc, e: Entity, ctx: str, cside: str | None, ego_act
 
 def _going_forward(d: Doc, e: Entity, ctx: str) -> bool:
     """A vehicle or rider on its way ahead along its lane: no backing in its string or words, no turn, lane change
-    or crossing of its own, not named as stopped or parked."""
+    or crossing of its own, not told standing, parked or pulling out ("A car that was parked at the curb pulled out
+    and struck the Waymo AV" stood at the curb beside or ahead of it), not named as stopped or parked."""
     own = {a.code for a in d.acts if a.who == e.idx}
-    return e.category != "pedestrian" and not own & set("dekfgjmFT") and not BACKING.search(ctx) and \
+    return e.category != "pedestrian" and not own & set("dekfgjmFTOPS") and not BACKING.search(ctx) and \
         not fre.search(r"\b(?:stopped|parked|stationary|waiting|stalled|idling|queued)\b",
                        " ".join(m.mods for m in e.mentions), re.I)
 
