@@ -6,6 +6,16 @@ studyable sets, word for word."""
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'dmvca-cruise-20201024-r143': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 143, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle (“Cruise AV”), operating in autonomous mode, was traveling westbound on 17th'
+        ' Street at the intersection with Potrero St., when the Cruise AV was struck by a 2007 Subaru Outback '
+        'that crossed the centerline while driving eastbound on 17th Street. Immediately before the incident, the'
+        ' driver of the Cruise AV, seeing the oncoming vehicle crossing the centerline, disengaged from '
+        'autonomous mode and brought the Cruise AV to a stop. The oncoming car made contact with the front driver'
+        ' side quarter panel of the Cruise AV, causing damage. There were no injuries, but the police were '
+        'called. The driver of the 2007 Subaru Outback left the scene before the police arrived.'),
     'nhtsa-sgo-ads-30270-10669-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10669, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

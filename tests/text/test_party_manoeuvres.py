@@ -144,3 +144,13 @@ def test_a_bare_backed_is_a_backing_and_a_listed_verb_after_the_contact_comes_af
     # backed the bicycle up slightly, dropped the bicycle, then fell": what the list tells after the contact came
     # after it (`mc`, the gold; no backing).
     assert _party("nhtsa-sgo-ads-30270-8039-v1").actions == "mc"
+
+
+def test_a_party_named_on_its_way_by_any_participle_of_going_ran_along_its_lane_first() -> None:
+    # "seeing the oncoming vehicle crossing the centerline": on its way (`a`), then across the centre line (`f`;
+    # the official gold `af`). "the opposing vehicle", "the advancing vehicle" tell the same run.
+    rid = "dmvca-cruise-20201024-r143"
+    assert _party(rid).actions == "af"
+    for word in ("opposing", "on-coming", "advancing"):
+        told = QUOTED[rid][1].replace("oncoming", word)
+        assert _party(rid, told).actions == "af", word

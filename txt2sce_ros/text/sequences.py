@@ -561,8 +561,10 @@ def _during_first(d: Doc, acts: list[Act]) -> list[Act]:
     return out
 
 
-_MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)), ("a", compile_gated(r"\boncoming\b|\bapproaching\b|"
-                                                                                       r"\bfollowing\b|\blane-splitting\b", re.I)))
+# (a party on its way told by any participle of going: "an opposing vehicle", "the trailing bus", "a speeding car")
+_MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)),
+             ("a", compile_gated(r"\b(?:on-?coming|opposing|approaching|advancing|following|trailing|speeding|"
+                                 r"lane-splitting)\b", re.I)))
 
 
 def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:
