@@ -233,8 +233,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     if e.idx == d.partner and fre.search(r"[fg]", ego_actions) and not fre.search(r"[fg]", "".join(
             a.code for a in d.acts if a.who == e.idx)):
         return "R6", "left" if "f" in ego_actions else "right", True  # the AV moved over into its lane
-    if junction and (fore != "rear" or cside) and (leg := _crossing_leg(d, e, ctx, fore, cside, ego_turning)):
-        return leg
+    if junction and (fore != "rear" or cside) and not turns and \
+            (leg := _crossing_leg(d, e, ctx, fore, cside, ego_turning)):
+        return leg  # (a party turning at the junction is read by its turn, below)
     if fore == "rear":
         return "R6", _rear_lane(d), True
     if junction and turns and not fre.search(r"\bfrom\s+the\s+(?:left|right)", ctx, re.I):
