@@ -19,6 +19,8 @@ Parameters (defaults from config/player.yaml `node:`):
   end_reason 'planner_not_responding'. The first frame of a run may take up to `startup_timeout` (the stack
   loads the map and plans then).
 - `startup_timeout` (double, s wall): how long a run waits for its subscribers before the first frame (below).
+- `first_frame_resend` (double, s wall; <= 0: never): lock-step sends a run's first frame again when it has gone
+  this long unanswered (below).
 - `await_subscribers` (string[]): names of nodes (e.g. 'oracle_monitor') that must subscribe `/sim/ego/odom`
   before a run starts; default `node.await_subscribers` of config/player.yaml, else none.
 - `run_timeout` (double, s wall): a run never takes longer (end_reason 'wall_clock_limit', 'error').
@@ -32,15 +34,24 @@ player therefore waits (up to `startup_timeout`) until, on every topic it publis
 knows of (QoS-compatible) has matched its publisher, a planner is there (planner mode) and every
 `await_subscribers` node subscribes the ego topic. Missing planner -> 'planner_not_responding' (error); other
 subscribers still missing -> a warning, and the run goes ahead.
+
+Even then DDS may lose the first frame: a publisher that has just matched a subscription can send before the
+subscriber has matched it back, and a volatile subscriber drops what came before (a known race of DDS
+implementations). Lock-step would then stall on frame 0 until `planner_timeout` (seen with planners that start
+slowly, such as the CommonRoad adapter). So the first frame (the goal with it) is sent again every
+`first_frame_resend` seconds while unanswered; subscribers drop copies of a step they have completed
+(`ros_io.FrameAssembler`), and a copy answered twice gives a command the player has already taken and ignores.
 """
 
 from __future__ import annotations
 
 import collections
 import gc
+import math
 import sys
 import time
 from dataclasses import replace
+from typing import Callable
 
 import rclpy
 from geometry_msgs.msg import PoseStamped, TwistStamped
@@ -84,6 +95,7 @@ class PlayerNode(Node):
         self.declare_parameter("run_timeout", float(node_cfg.get("run_wall_limit", 300.0)))
         self.declare_parameter("realtime_factor", float(node_cfg.get("realtime_factor", 1.0)))
         self.declare_parameter("startup_timeout", float(node_cfg.get("startup_timeout", 10.0)))
+        self.declare_parameter("first_frame_resend", float(node_cfg.get("first_frame_resend", 5.0)))
         self.declare_parameter("ego_mode", "planner")
         self.declare_parameter("time_limit", 0.0)
         self.declare_parameter("dt", float(sim_cfg.get("dt", 0.05)))
@@ -96,6 +108,7 @@ class PlayerNode(Node):
         self.run_timeout = float(p("run_timeout").value)
         self.rt_factor = max(float(p("realtime_factor").value), 1e-3)
         self.startup_timeout = float(p("startup_timeout").value)
+        self.first_frame_resend = float(p("first_frame_resend").value)
         self.ego_mode = str(p("ego_mode").value)
         self.time_limit = float(p("time_limit").value)
         self.exit_when_idle = bool(p("exit_when_idle").value)
@@ -266,6 +279,7 @@ class PlayerNode(Node):
         # The first frame of a run waits as long as start-up may take: the stack loads the new map and plans its
         # route then, which on a loaded machine can outlast the per-step limit without anything being wrong.
         timeout = max(self.planner_timeout, self.startup_timeout)
+        first = True
         while not sim.done:
             self.publish_frame(sim, frame)
             cmd: ControlCommand | None = None
@@ -276,8 +290,10 @@ class PlayerNode(Node):
                     # motion) is done while the planner works on this frame: only the rest of the step lies
                     # between its answer and the next frame (Simulation.prepare_step; same bits as sim.step).
                     sim.prepare_step()
-                    cmd = self._await_command(executor, key, wall0, timeout)
+                    resend = (lambda f=frame: self.publish_frame(sim, f)) if first else None
+                    cmd = self._await_command(executor, key, wall0, timeout, resend)
                     timeout = self.planner_timeout
+                    first = False
                     if cmd is None:
                         break
                 else:
@@ -315,9 +331,14 @@ class PlayerNode(Node):
         self.get_logger().info(f"run {env.id}: {status.end_reason} at t={status.t:.2f}s")
         return status
 
-    def _await_command(self, executor: SingleThreadedExecutor, key: int, wall0: float,
-                       timeout: float) -> ControlCommand | None:
-        deadline = time.monotonic() + timeout
+    def _await_command(self, executor: SingleThreadedExecutor, key: int, wall0: float, timeout: float,
+                       resend: Callable[[], None] | None = None) -> ControlCommand | None:
+        """The command stamped `key`, or None when the run ended waiting. `resend` (the first frame): called every
+        `first_frame_resend` seconds the frame goes unanswered (the module's docstring says why)."""
+        start = time.monotonic()
+        deadline = start + timeout
+        every = self.first_frame_resend if resend is not None and self.first_frame_resend > 0 else math.inf
+        next_send = start + every
         while key not in self.commands:
             now = time.monotonic()
             if now > deadline:
@@ -326,6 +347,10 @@ class PlayerNode(Node):
             if now - wall0 > self.run_timeout:
                 self._current.abort("wall_clock_limit")
                 return None
+            if now >= next_send:
+                self.get_logger().info(f"first frame unanswered after {now - start:.1f} s: sent again")
+                resend()                        # type: ignore[misc]
+                next_send = now + every
             self.command_wait.wait(0.01)
         return self.commands[key]
 

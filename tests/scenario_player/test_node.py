@@ -50,11 +50,12 @@ def ros(tmp_path: Path):
     rclpy.shutdown()
 
 
-def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, **params: object
-                ) -> tuple[dict[int, tuple[float, float, float, float]], list[RunStatus],
-                           dict[int, tuple[float, float, float, float]]]:
+def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *, lose_first: bool = False,
+                **params: object) -> tuple[dict[int, tuple[float, float, float, float]], list[RunStatus],
+                                           dict[int, tuple[float, float, float, float]]]:
     """Start the player node (subprocess) on cut-in.xosc with this process as the planner; return the ego states
-    by step and the run statuses received."""
+    by step and the run statuses received. `lose_first`: the planner acts as if DDS lost the first frame's ego
+    odometry (it ignores the first copy it receives)."""
     from geometry_msgs.msg import TwistStamped
     from nav_msgs.msg import Odometry
     from rclpy.executors import SingleThreadedExecutor
@@ -82,9 +83,14 @@ def _run_player(env: dict[str, str], tmp_path: Path, answer_steps: int | None, *
             npc[round(stamp_key(msg.header.stamp) / 50_000_000)] = (
                 p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), msg.twist.twist.linear.x)
 
+    lost: list[int] = []
+
     def on_ego(msg: Odometry) -> None:
         assert msg.child_frame_id == "ego"       # cut-in calls it 'Ego'; the wire name is the contract's
         k = round(stamp_key(msg.header.stamp) / 50_000_000)
+        if lose_first and not lost:
+            lost.append(k)
+            return
         p, v = msg.pose.pose.position, msg.twist.twist.linear.x
         ego[k] = (p.x, p.y, quat_to_yaw(msg.pose.pose.orientation), v)
         if answer_steps is None or k < answer_steps:
@@ -142,6 +148,17 @@ def test_planner_that_stops_answering_ends_the_run_as_error(ros, tmp_path: Path)
     assert final.state == "finished"
     assert final.end_reason == "planner_not_responding" and final.verdict_hint == "error"
     assert max(ego) == 10                           # it waited at step 10 and went no further
+
+
+def test_a_lost_first_frame_is_sent_again_and_the_run_goes_on(ros, tmp_path: Path) -> None:
+    # DDS can lose the first frame right after discovery (scenario_player/node.py); lock-step then stalled at t = 0
+    # until the planner timeout. The player sends an unanswered first frame again.
+    ego, statuses, _ = _run_player(ros, tmp_path, None, lose_first=True, planner_timeout=10.0,
+                                   first_frame_resend=0.3)
+    final = statuses[-1]
+    assert final.state == "finished" and final.end_reason == "time_limit" and final.verdict_hint == ""
+    assert sorted(ego) == list(range(len(batch_run()["Ego"])))
+    assert "first frame unanswered after" in (tmp_path / "player.log").read_text()
 
 
 def test_scenarios_from_the_topic_run_in_order_and_bad_ones_report_errors(ros, tmp_path: Path) -> None:
