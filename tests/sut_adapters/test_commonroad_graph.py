@@ -4,6 +4,7 @@ only when the planner's environment is absent (`make test` creates it)."""
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -21,10 +22,15 @@ pytestmark = pytest.mark.skipif(bool(WHY), reason=WHY)
 def _run(name: str, tmp_path: Path, time_limit: float | None = None):
     traj = tmp_path / f"{name}.npz"
     # Two attempts, as a campaign gives a run that broke on timing: twice in five full CI runs (sessions 16, 17)
-    # the adapter left the first frame unanswered for 60 s at t = 0 while passing 16 of 16 times in loops. What
-    # these tests check is the planner's driving; the graph's own robustness has its tests in tests/integration.
+    # the adapter left the first frame unanswered for 60 s at t = 0 while passing 16 of 16 times in loops. The
+    # likely cause, DDS losing the first frame sent right after discovery, is handled since session 18 (the player
+    # sends an unanswered first frame again, tests/scenario_player/test_node.py); a second attempt is reported as
+    # a warning, so CI's log says whether it still happens. What these tests check is the planner's driving; the
+    # graph's own robustness has its tests in tests/integration.
     rec = run_over_ros(SCENARIOS / f"{name}.xosc", planner=PlannerSpec("commonroad"), keep_trajectory=traj,
                        run_timeout=800.0, attempts=2, time_limit=time_limit)
+    if rec.details.get("ros_attempts", 1) > 1:
+        warnings.warn(f"{name}: the CommonRoad run took {rec.details['ros_attempts']} attempts", stacklevel=2)
     if rec.verdict.value == "error":
         # The logs' last lines in full (an assertion message would be cut short), to say where the run stood.
         tails = rec.details.get("last_log_lines") or {}
