@@ -56,6 +56,7 @@ from typing import Callable
 import rclpy
 from geometry_msgs.msg import PoseStamped, TwistStamped
 from nav_msgs.msg import Odometry
+from rclpy.duration import Duration
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSCompatibility, QoSProfile, ReliabilityPolicy, qos_check_compatible
@@ -77,6 +78,9 @@ from txt2sce_ros.ros_io import road_markers_bytes, scenario_markers, string_msg
 
 from .simulation import Simulation, SimulationConfig
 from .syntax.scenario import load_scenario
+
+#: How long (s) an exiting player waits for its subscribers to acknowledge the last run status.
+EXIT_ACK_TIMEOUT = 2.0
 
 
 def qos(depth: int, latched: bool = False) -> QoSProfile:
@@ -359,6 +363,10 @@ class PlayerNode(Node):
             if self.queue:
                 self.run_one(self.queue.popleft(), executor)
             elif self.exit_when_idle:
+                # The last 'finished' goes out just before the process ends: a reliable message is delivered (and
+                # repaired) only while its writer lives, and a subscriber then sometimes never got it (seen: a test
+                # waited 60 s for the status of a run the log shows finished). Give the subscribers a moment.
+                self.pub_status.wait_for_all_acked(Duration(seconds=EXIT_ACK_TIMEOUT))
                 return
             else:
                 executor.spin_once(timeout_sec=0.1)
