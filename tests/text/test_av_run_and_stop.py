@@ -184,3 +184,17 @@ def test_a_move_into_a_curbside_lane_named_by_its_kind_is_to_the_right(move: str
     # maneuvering" is read as a plan, so the test tells the move as done.)
     text = QUOTED["csvr-cruise-20220905-s189"][1].replace("stopped before maneuvering into", move)
     assert _ego("csvr-cruise-20220905-s189", text) == ("moving", "ahigf")
+
+
+@pytest.mark.parametrize("report_id", ("nhtsa-sgo-ads-30270-9371-v1", "nhtsa-sgo-ads-30270-8121-v1",
+                                       "csvr-waymo-20191010-s34", "nhtsa-sgo-ads-30270-9408-v1"))
+def test_a_narrative_in_capitals_reads_as_its_prose(report_id: str) -> None:
+    # Some reporters write the whole narrative in capitals (dmvca-mercedesbe-20230601-r475: "THE DRIVER WAS OPERATING
+    # THIS VEHICLE ON US HWY 710N IN L2 MODE ..."). Lower-cased, its sentences lost their capitals, which the
+    # sentence splitter and the rules written for prose expect: over all 379 studyable narratives put in capitals,
+    # 175 sketches read differently from the prose (the AV's start or string in 109); told again in sentence case,
+    # 41 (6). The AV's story, its road and its light read as in the prose.
+    text = QUOTED[report_id][1]
+    prose, caps = extract(text, report_id), extract(text.upper(), report_id)
+    assert (caps.ego, caps.road.layout, caps.road.control, caps.signal_state) == \
+        (prose.ego, prose.road.layout, prose.road.control, prose.signal_state)

@@ -388,6 +388,9 @@ _BARE_DEFINITE_VEHICLE = compile_gated(r"\bthe\s+(vehicle|car|truck|shuttle|bus|
                                        r"system|computer|operator|driver|occupant|passenger)s?\b)", re.I)
 
 
+_SENTENCE_START = compile_gated(r"(?:^|(?<=[.!?]\s)|(?<=[.!?]\s\s))\s*[a-z]")
+
+
 def normalise(text: str) -> str:
     """Unify quotes/dashes, drop parenthetical definitions, name the AV `EGO` and its drivers `EGOD`."""
     # (Speed: on a text with any non-ASCII character str.translate looks every character up in its table, ~150 us
@@ -409,7 +412,9 @@ def normalise(text: str) -> str:
     n_upper = len(raw) - len(raw.translate(None, _UPPER_BYTES))
     n_alpha = len(raw) - len(raw.translate(None, _ALPHA_BYTES))
     if n_upper > 0.6 * n_alpha:
-        t = t.lower()  # all-caps narratives: case carries no information there
+        # all-caps narratives: case carries no information there; told again in sentence case (each sentence's first
+        # letter a capital, as the sentence splitter and the rules written for prose expect)
+        t = _SENTENCE_START.sub(lambda m: m.group(0).upper(), t.lower())
     ego_res, company_re = _name_patterns(_unknown_operator(t))
     # Told in the first person ("our vehicle ... behind us", "We were stopped"): looked for before the AV's names
     # are replaced, since "our AV" and "our vehicle" are among them.
