@@ -6,6 +6,19 @@ studyable sets, word for word."""
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'dmvca-waymo-20220206-r282': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 282, column '
+        '"Accident Detail Description")',
+        'On February 6, 2022 at 1:53 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'California was in a collision involving a passenger vehicle on Pine Street at Fillmore Street. The Waymo'
+        ' AV was stopped in the right lane of a three lane, one-way street in manual mode while boarding a '
+        'passenger. A passenger vehicle stopped behind the Waymo AV then attempted to go around the Waymo AV, '
+        'attempting to merge with traffic in the center lane but colliding instead with a third passenger vehicle'
+        ' and also making contact with the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was '
+        'not engaged and a test driver was operating the Waymo AV in manual mode. The Waymo AV and the passenger '
+        'vehicle that made contact with it sustained moderate damage. The third vehicle sustained minor damage. '
+        'The Waymo AV passenger reported minor discomfort at the scene but advised they did not require medical '
+        'attention.'),
     'dmvca-cruise-20201024-r143': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 143, column '
         '"Accident Detail Description")',

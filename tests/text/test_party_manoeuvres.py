@@ -154,3 +154,11 @@ def test_a_party_named_on_its_way_by_any_participle_of_going_ran_along_its_lane_
     for word in ("opposing", "on-coming", "advancing"):
         told = QUOTED[rid][1].replace("oncoming", word)
         assert _party(rid, told).actions == "af", word
+
+
+def test_a_party_s_sideless_lane_change_right_after_one_with_a_side_is_the_same_move() -> None:
+    # "A passenger vehicle stopped behind the Waymo AV then attempted to go around the Waymo AV, attempting to merge
+    # with traffic in the center lane": the merge is the going around told by its purpose, to the left (`if`, the
+    # gold), not a move back to the right (`ifg`).
+    p = _party("dmvca-waymo-20220206-r282")
+    assert (p.position, p.lane, p.start, p.actions) == ("R6", "same", "stopped", "if")

@@ -40,9 +40,10 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         if c == "F" and codes and codes[-1] == "m" and not ego:
             continue  # "exiting a parking garage, crossed into EGO's lane": the crossing itself, not a lane change
         told = next((x for x in reversed(codes) if x != "a"), "")
-        if c == "F" and ego and told in ("f", "g"):
+        if c == "F" and told in ("f", "g") and (ego or codes[-1] == told and acts[k - 1].sent == a.sent):
             # "began a lane change into the right thru lane ... as the Waymo AV began merging": the AV's lane change
-            # told again without its side is the one just told
+            # told again without its side is the one just told; so is a party's told right after it in the same
+            # sentence ("attempted to go around the Waymo AV, attempting to merge with traffic in the center lane")
             c = told
         elif c == "F":
             c = "f" if (ego or side != "left") else "g"
