@@ -17,6 +17,7 @@ import time
 
 import rclpy
 from rcl_interfaces.msg import ParameterDescriptor
+from rclpy.duration import Duration
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
@@ -94,6 +95,10 @@ def main(args: list[str] | None = None) -> int:
     with node_lifetime(node):
         while rclpy.ok() and not (node.done and node.exit_when_done):
             rclpy.spin_once(node, timeout_sec=0.1)
+        if rclpy.ok():
+            # Without `wait_for_result` the last envelopes go out just before the process ends, and a reliable
+            # message is delivered (and repaired) only while its writer lives: let the player acknowledge them.
+            node.pub.wait_for_all_acked(Duration(seconds=2.0))
     return 0
 
 
