@@ -6,6 +6,17 @@ studyable sets, word for word."""
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-7726-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7726, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2024 at 7:08 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, '
+        'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stopped in '
+        'traffic for a red light on southbound [XXX]. The driver of a passenger car traveling directly behind the'
+        ' Waymo AV began to exit their vehicle, and as they did so with the door open, the passenger car started '
+        'to proceed straight and made contact with the rear of the Waymo AV. At the time of the impact, the Waymo'
+        ' AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage and the passenger car '
+        'left the scene. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
+        'Waymo may supplement or correct its reporting with additional information as it may become available.'),
     'dmvca-waymo-20220206-r282': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 282, column '
         '"Accident Detail Description")',

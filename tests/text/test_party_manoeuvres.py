@@ -162,3 +162,14 @@ def test_a_party_s_sideless_lane_change_right_after_one_with_a_side_is_the_same_
     # gold), not a move back to the right (`ifg`).
     p = _party("dmvca-waymo-20220206-r282")
     assert (p.position, p.lane, p.start, p.actions) == ("R6", "same", "stopped", "if")
+
+
+def test_a_participle_that_places_the_party_behind_the_standing_av_is_no_run() -> None:
+    # "The driver of a passenger car traveling directly behind the Waymo AV began to exit their vehicle, and as they
+    # did so with the door open, the passenger car started to proceed straight": the car stood in the queue behind
+    # the AV stopped at the red light and moved off (`stopped`, `i`: the gold), as told "a passenger car directly
+    # behind the Waymo AV"; "traveling" only places it.
+    rid = "nhtsa-sgo-ads-30270-7726-v1"
+    for told in (QUOTED[rid][1], QUOTED[rid][1].replace("traveling directly behind", "directly behind")):
+        p = _party(rid, told)
+        assert (p.start, p.actions) == ("stopped", "i")

@@ -150,6 +150,9 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
     passenger vehicle behind EGO made contact"): it stood behind the AV and started with the queue, so its string
     is a start from a standstill (sketch.md: a party that was stopped and then moved off forward starts with `i`).
     One told travelling or approaching was on its way (`a`)."""
+    # ("A passenger car traveling directly behind the Waymo AV ... started to proceed straight": a participle that
+    # places the party behind the AV tells where it was, not a run; "directly behind the Waymo AV" tells the same)
+    told = [a for a in told if not (a.code == "a" and _PLACED_BEHIND.match(d.sents[a.sent], a.pos))]
     if place != ("R6", "same") or d.ego_start != "stopped" or start != "moving" or \
             any(a.code in "aAcdefgjkmF" for a in told):
         return start, actions
@@ -167,6 +170,9 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
 
 
 # (any word of the AV's standing: "came to rest behind", "was idling behind", "paused behind", "halting behind")
+#: A participle of going that only places the party behind the AV ("traveling directly behind EGO").
+_PLACED_BEHIND = compile_gated(r"(?:travel(?:l)?ing|driving|positioned|located)\s+(?:directly\s+|immediately\s+|right\s+)?"
+                               r"behind\s+EGO\b", re.I)
 _STOP_BEHIND = compile_gated(r"\b(?:stop|stops|stopped|stopping|halt|halts|halted|halting|standstill|rest|waiting|waited|"
                              r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+(?:directly\s+|"
                              r"immediately\s+|right\s+)?behind\s+(?:a|an|the|its|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
