@@ -2797,6 +2797,13 @@ PROBES: tuple[Probe, ...] = (
            "entered the bus lane", "moved into the curb lane", "swerved into the bike lane",
            "shifted into the transit lane", "moved over into the bus only lane"),
           _ego, ("moving", "ag")),
+    Probe("the AV merging onto a named road is at a T (session 18)",
+          "The Waymo AV was {w} when a passenger car traveling behind the Waymo AV made contact with its rear bumper.",
+          ("stopped at the end of the on-ramp, preparing to merge onto northbound Mission Street",
+           "stopped on the slip road, waiting to merge into [XXX]", "yielding before merging onto eastbound Market "
+           "Street", "preparing to make a right turn and merge into Market Street from a side street",
+           "on the interchange from Alma Street merging onto southbound Oregon Expressway"),
+          lambda sk: sk.road.layout, "junction3"),
     Probe("the AV's run before its lane change, told by other verbs of going (session 18)",
           "The Waymo AV was {w} on Mission Street in the right lane when it changed lanes to the left. A sedan "
           "traveling in the left lane made contact with the driver side of the Waymo AV.",

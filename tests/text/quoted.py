@@ -30,6 +30,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         'vehicle that made contact with it sustained moderate damage. The third vehicle sustained minor damage. '
         'The Waymo AV passenger reported minor discomfort at the scene but advised they did not require medical '
         'attention.'),
+    'csvr-waymo-20191018-s40': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
+        "40, column 'Accident Detail Description'), transcribed",
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was stopped in autonomous mode on the interchange from '
+        'eastbound Alma Street merging onto southbound Oregon Expressway in Palo Alto when it was rear-ended. '
+        'The Waymo AV was yielding to cross-traffic when a passenger vehicle made contact with the Waymo AV’s '
+        'rear bumper at approximately 8 MPH. The Waymo AV sustained minor damage to the rear bumper, and the '
+        'passenger vehicle sustained minor damage to its front bumper. There were no injuries reported at the '
+        'scene; the Waymo test driver later reported dizziness but declined medical attention.'),
     'dmvca-cruise-20201024-r143': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 143, column '
         '"Accident Detail Description")',
@@ -40,6 +49,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'autonomous mode and brought the Cruise AV to a stop. The oncoming car made contact with the front driver'
         ' side quarter panel of the Cruise AV, causing damage. There were no injuries, but the police were '
         'called. The driver of the 2007 Subaru Outback left the scene before the police arrived.'),
+    'dmvca-cruise-20211226-r264': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 264, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in supervised autonomous mode, was traveling '
+        'eastbound on Fulton Street in the leftmost lane between 14th Avenue and Park Presidio Boulevard. A '
+        'Toyota Sienna traveling southbound on 14th Avenue made an unprotected left turn to merge onto '
+        'eastbound Fulton Street. The Cruise AV braked prior to the Cruise AV operator disengaging the Cruise '
+        'AV from autonomous mode. The Cruise AV operator continued to brake but, shortly thereafter, the '
+        'Toyota Sienna made contact with the Cruise AV, damaging the front left fender of the Cruise AV. '
+        'Police were not called to the scene and no injuries were reported.'),
     'nhtsa-sgo-ads-30270-10669-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10669, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -198,3 +198,20 @@ def test_a_narrative_in_capitals_reads_as_its_prose(report_id: str) -> None:
     prose, caps = extract(text, report_id), extract(text.upper(), report_id)
     assert (caps.ego, caps.road.layout, caps.road.control, caps.signal_state) == \
         (prose.ego, prose.road.layout, prose.road.control, prose.signal_state)
+
+
+@pytest.mark.parametrize("report_id, layout", [
+    # "was stopped in autonomous mode on the interchange from eastbound Alma Street merging onto southbound Oregon
+    # Expressway": the AV's road ends at the one it merges onto, a T (gold junction3).
+    ("csvr-waymo-20191018-s40", "junction3"),
+    # "The Waymo AV was preparing to make a right turn and merge into [XXX] from a roadway that was located south of
+    # [XXX]. While the Waymo AV remained stopped at a stop sign" (gold junction3).
+    ("nhtsa-sgo-ads-30270-10557-v1", "junction3"),
+    # A party's merge is no T of the AV's: "a scooterist approaching from the rear merged into the Cruise AV's lane"
+    # (gold junction4), "a Toyota Sienna ... made an unprotected left turn to merge onto eastbound Fulton Street"
+    # (gold junction4).
+    ("csvr-cruise-20230504-s240", "junction4"),
+    ("dmvca-cruise-20211226-r264", "junction4"),
+])
+def test_the_av_merging_onto_a_named_road_is_at_a_t(report_id: str, layout: str) -> None:
+    assert _road(report_id, QUOTED[report_id][1])[0] == layout

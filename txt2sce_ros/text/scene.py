@@ -76,14 +76,23 @@ _T_JUNCTION = compile_gated(r"\b(?:T|Y|tee)-?\s?(?:junction|intersection|insters
                          r"\b(?-i:(?:Street|St|Avenue|Ave|Road|Rd|Boulevard|Blvd|Drive|Dr|Way|Lane|Ln)\.?\s+"
                          r"(?:ends|dead-ends|terminates)\s+(?:at|into)\s+[A-Z])|"
                          r"\bend\s+of\s+[^.]{0,40}?\bwhere\s+it\s+(?:meets|joins)\b|"
-                         r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+                         r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?(?:lane|road)\b", re.I)
+# The AV merging onto a named road ("preparing to make a right turn and merge into [XXX] from a roadway", "on the
+# interchange from eastbound Alma Street merging onto southbound Oregon Expressway", "attempting a merge onto
+# northbound Bayshore Boulevard"): its road ends at that one, a T (4 of the 4 studyable reports so told are gold
+# junction3; a party's merge after its turn, "made an unprotected left turn to merge onto eastbound Fulton Street",
+# tells the party's road, not the AV's).
+# (in the AV's own clause, and onto a road, not into the AV's lane: "As EGO passed through the intersection, a
+# scooterist ... merged into EGO's lane")
+_AV_MERGES_ONTO = compile_gated(r"\bEGO\b[^.;,]{0,100}?\bmerg(?:e|es|ed|ing)\s+(?:onto|into)\s+(?:the\s+)?"
+                                r"(?:(?:north|south|east|west)\w*\s+)?(?:\[XXX\]|(?!EGO\b)(?-i:[A-Z]))", re.I)
 # A ramp named as what the junction meets or where a party heads ("at the [XXX] onramp", "the intersection with
 # Interstate [XXX] onramp", "a left turn onto the Interstate [XXX] onramp"): one leg of a crossing the AV is at, not
 # the ramp the AV is on (a slip lane or ramp the AV is on makes a T: _T_JUNCTION).
 _RAMP_AS_LEG = compile_gated(r"\b(?:intersection\s+with|at|onto|to|towards?)\s+(?:the\s+|an?\s+)?(?:[\w\[\]-]+\s+){0,2}"
                              r"(?:on|off)-?\s?ramp\b", re.I)
 # A slip lane, merge lane or ramp is the AV's place even in a summary: the report is not filed from one.
-_CONNECTOR = compile_gated(r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?lane\b", re.I)
+_CONNECTOR = compile_gated(r"\bmerg(?:e|ing)\s+lane\b|\b(?:on|off)-?\s?ramp\b|\bslip[- ]?(?:lane|road)\b", re.I)
 _TURN_ONTO = compile_gated(r"\bturn(?:ed|ing|s)?\s+(?:\w+ly\s+)?(?:left|right)?\s*(?:from\s+[^,;]{1,40}?\s+)?onto\b|\b(?:left|right)"
                         r"\s+turn\s+(?:from\s+[^,;]{1,40}?\s+)?(?:onto|towards?\s+\w+bound)\b|\bturning\s+from\b|\bunprotected\s+(?:left|"
                         r"right)\b|\bwaiting\s+to\s+(?:make|turn)\b|"
@@ -239,13 +248,14 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
                 fre.search(r"\b(?:at|in|through|entering|entered|crossing)\s+the\s+(?:[\w.'-]+\s+){0,6}?intersection\b",
                           cleaned, re.I):
             return True  # a summary placing the event in an intersection ("at the Grant Ave. and Union St. ...")
-        if i in summary and not _CONTROL_AT.search(cleaned) and not _CONNECTOR.search(cleaned) and not (
+        if i in summary and not _CONTROL_AT.search(cleaned) and not _CONNECTOR.search(cleaned) and \
+                not _AV_MERGES_ONTO.search(cleaned) and not (
                 _TURN_ONTO.search(cleaned) and _AV_TURNING.search(cleaned)):
             # A summary's junction words are often where the report was filed from; a signal or stop sign the AV
             # stood at ("was stopped at a red light on X when it was rear-ended"), or a turn it was making ("was
             # stopped turning right from Park Drive onto Miramonte Avenue when it was rear-ended"), is the scene.
             continue
-        if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned):
+        if _JUNCTION.search(cleaned) or _T_JUNCTION.search(cleaned) or _AV_MERGES_ONTO.search(cleaned):
             return True
         if _TURN_ONTO.search(cleaned) and (i >= first_sent or _ONGOING_TURN.search(cleaned)):
             return True
@@ -301,7 +311,8 @@ def road(t: str, *, junction: bool) -> RoadInfo:
                                               r"parking\s+(?:lot|garage|structure)", t, re.I):
         layout = "parking"
     elif junction:
-        layout = "junction3" if _T_JUNCTION.search(_RAMP_AS_LEG.sub(" ", t)) else "junction4"
+        layout = "junction3" if _T_JUNCTION.search(_RAMP_AS_LEG.sub(" ", t)) or _AV_MERGES_ONTO.search(t) else \
+            "junction4"
     elif _CURVE.search(t):
         layout = "curve"
     elif _ROADWAY.search(t):
