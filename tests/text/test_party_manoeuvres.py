@@ -64,7 +64,8 @@ def test_the_vehicle_the_av_stood_behind_stood_too_by_any_word_of_standing() -> 
     rid = "csvr-waymo-20240131-s297"
     lead = next(p for p in extract(QUOTED[rid][1], rid).npcs if p.position == "R5")
     assert (lead.start, lead.actions) == ("stopped", "")
-    for told in ("came to rest behind", "halted behind", "paused behind", "was stopping behind"):
+    for told in ("came to rest behind", "halted behind", "paused behind", "was stopping behind",
+                 "stopped completely behind"):
         sk = extract(QUOTED[rid][1].replace("came to a stop behind", told), rid)
         lead = next(p for p in sk.npcs if p.position == "R5")
         assert (lead.start, lead.actions) == ("stopped", ""), told
@@ -76,9 +77,12 @@ def test_a_party_behind_the_standing_av_that_passes_it_changed_lane_from_its_lan
     # that had stood behind it does ("had been stopped behind the Waymo AV passed ... on the left": `if`).
     p = _party("dmvca-waymo-20230820-r519")
     assert (p.position, p.lane, p.actions) == ("R6", "same", "af")
-    # "An SUV traveling southeast on [XXX] directly behind the Waymo AV passed the Waymo AV on the left".
-    p = _party("nhtsa-sgo-ads-30270-10758-v1")
-    assert (p.position, p.lane, p.actions) == ("R6", "same", "af")
+    # "An SUV traveling southeast on [XXX] directly behind the Waymo AV passed the Waymo AV on the left"; so when
+    # it "went by" or "drove by" the Waymo AV on the left.
+    rid = "nhtsa-sgo-ads-30270-10758-v1"
+    for verb in ("passed", "went by", "drove by"):
+        p = _party(rid, QUOTED[rid][1].replace("Waymo AV passed the Waymo AV", f"Waymo AV {verb} the Waymo AV"))
+        assert (p.position, p.lane, p.actions) == ("R6", "same", "af"), verb
     # A follower of the AV on its way is not placed so ("a SUV following closely behind the Waymo AV passed the
     # Waymo AV on the left side" as the AV pulled up behind a double-parked car: R6/left, `a`, the official gold).
     p = _party("dmvca-waymo-20220411-r318")

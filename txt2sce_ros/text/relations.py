@@ -106,6 +106,8 @@ _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
                          r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got|"
                          r"accelerat\w+|sped|speeding|raced|racing|zoomed|pulled|pulling)\s+past|"
+                         # "went by the Waymo AV on the left": by the AV itself (the side read below)
+                         r"(?:rode|drove|went|came|moved|got|sped|zoomed|pulled)\s+by(?=\s+(?:the\s+)?(?:\w+\s+)?EGO\b)|"
                          # squeezing between the AV and the curb, filtering through queued traffic: a pass
                          r"squeez\w*\s+(?:between|past|by|through)|filter\w*\s+(?:between|past|through)|"
                          # "a motorcyclist riding between EGO and a pickup truck": splitting the lane beside it

@@ -174,7 +174,7 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
 _PLACED_BEHIND = compile_gated(r"(?:travel(?:l)?ing|driving|positioned|located)\s+(?:directly\s+|immediately\s+|right\s+)?"
                                r"behind\s+EGO\b", re.I)
 _STOP_BEHIND = compile_gated(r"\b(?:stop|stops|stopped|stopping|halt|halts|halted|halting|standstill|rest|waiting|waited|"
-                             r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+(?:directly\s+|"
+                             r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+(?:\w+ly\s+)?(?:directly\s+|"
                              r"immediately\s+|right\s+)?behind\s+(?:a|an|the|its|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
 
 
