@@ -6,6 +6,18 @@ studyable sets, word for word."""
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-8139-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8139, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 12:28 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in [XXX], California '
+        'was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling north on '
+        '[XXX] through the intersection at [XXX] when a passenger car passed the Waymo AV on the right. The '
+        'passenger car turned to the left in front of the Waymo AV and came to an abrupt stop. The driver side '
+        'rear corner of the passenger car made contact with the passenger side front corner of the Waymo AV. At '
+        'the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained'
+        ' damage and the passenger car left the scene. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
     'nhtsa-sgo-ads-30270-7726-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7726, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -177,3 +177,12 @@ def test_a_participle_that_places_the_party_behind_the_standing_av_is_no_run() -
     for told in (QUOTED[rid][1], QUOTED[rid][1].replace("traveling directly behind", "directly behind")):
         p = _party(rid, told)
         assert (p.start, p.actions) == ("stopped", "i")
+
+
+def test_a_pass_told_with_went_by_is_a_run_along_the_av() -> None:
+    # "a passenger car passed the Waymo AV on the right" before turning: a run (`a`), then its turn and stop (`adh`,
+    # the gold); "went by the Waymo AV" or "drove by the Waymo AV" tell the same run.
+    rid = "nhtsa-sgo-ads-30270-8139-v1"
+    for verb in ("passed", "went by", "drove by"):
+        told = QUOTED[rid][1].replace("passenger car passed the Waymo AV", f"passenger car {verb} the Waymo AV")
+        assert _party(rid, told).actions == "adh", verb

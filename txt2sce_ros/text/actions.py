@@ -370,8 +370,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
     ("a", r"\b(?:(?<!of\s)travel(?:l)?(?:ed|ing|s)?|driving|drove|drives|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|near(?:ed|ing)|"
-          # "went past EGO on the left": a pass told with a verb of going
+          # "went past EGO on the left", "went by EGO": a pass told with a verb of going
           r"(?:went|going|drove|driving|moved|moving|rode|riding)\s+past|"
+          r"(?:went|going|drove|driving|rode|riding)\s+by(?=\s+(?:the\s+)?(?:\w+\s+)?EGO\b)|"
           r"drift(?:ed|ing|s)|enter(?:ed|ing|s)\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
           r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
