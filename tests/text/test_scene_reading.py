@@ -22,49 +22,49 @@ REPORTS = shared_dir() / "data" / "reports"
 #: What the extractor reaches on each gold set (fractions), held so a change cannot quietly lose it. The check
 #: set's floors are below the issue's targets: see the closing note; raise them as the extractor improves.
 HELD = {
-    "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.89, "npc_events": 0.91,
+    "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.91, "npc_events": 0.93,
                  "obstacle_quantity": 0.95, "completeness": 0.95, "ego_start": 1.0, "ego_actions": 0.98,
                  "layout": 0.96, "signal_state": 0.98},
-    "dev_gold_study": {"npc_quantity": 0.98, "npc_type": 0.95, "npc_position": 0.83, "npc_events": 0.87,
+    "dev_gold_study": {"npc_quantity": 0.98, "npc_type": 0.95, "npc_position": 0.87, "npc_events": 0.89,
                        "obstacle_quantity": 0.99, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.96,
                        "layout": 0.96, "signal_state": 0.95},
-    "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.61, "npc_events": 0.77,
+    "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.63, "npc_events": 0.80,
                        "obstacle_quantity": 0.92, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.90},
 }
 #: The user's figure (complete reports whose conflict is reproduced exactly), held as a count per set.
 # (dev_gold_check 16 -> 15 in session 15: one report's layout moved by the spec's own reading, an intersection the AV
 # is approaching is a junction, which 10 of the 11 studyable reports with the words follow; the 11th is a driveway
 # exit, read as such. The same rule raised check2 and check3 layout; the check set was scored only, never read.)
-CONFLICT_HELD = {"dev_gold": 50, "dev_gold_study": 66, "dev_gold_check": 15}
+CONFLICT_HELD = {"dev_gold": 51, "dev_gold_study": 68, "dev_gold_check": 17}
 
 #: The same for the 213 real narratives new in session 13 (tests/text/csvr/README.md): study2 may be read, check2 is
 #: scored only. Both sets' gold is one annotator's.
 CSVR = Path(__file__).parent / "csvr"
 HELD_CSVR = {
-    "study2": {"npc_quantity": 0.99, "npc_position": 0.92, "npc_events": 0.91, "layout": 0.95, "ego_actions": 0.93,
+    "study2": {"npc_quantity": 0.99, "npc_position": 0.95, "npc_events": 0.91, "layout": 0.96, "ego_actions": 0.93,
                "ego_start": 0.96, "signal_state": 0.93},
     # (check2 position 0.80 -> 0.79, conflict 55 -> 54 in session 15: one party moved by a rule its studyable gold
     # holds 7 of 7 - a party parallel parking ahead of or behind the AV is in its lane; check2 was not inspected)
     # (check2 position 0.80 -> 0.79 again in session 18, from 0.802 to 0.793: one party moved by a rule its studyable
     # gold holds 4 of 4, the official r519 among them - a party behind the standing AV, not "from behind", that passes
     # it on the left began in its lane, R6/same af; check2 was not inspected)
-    "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.77, "layout": 0.88, "ego_actions": 0.80},
+    "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.78, "layout": 0.88, "ego_actions": 0.81},
 }
-CONFLICT_HELD_CSVR = {"study2": 80, "check2": 55}
+CONFLICT_HELD_CSVR = {"study2": 84, "check2": 57}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is
 #: scored only; one annotator's gold each (check3's first 44 labelled twice and adjudicated).
 SGO = Path(__file__).parent / "sgo"
 HELD_SGO = {
-    "study3": {"npc_quantity": 0.96, "npc_type": 0.95, "npc_position": 0.83, "npc_events": 0.76, "layout": 0.95,
-               "ego_actions": 0.84, "ego_start": 0.95, "signal_state": 0.96},
+    "study3": {"npc_quantity": 0.96, "npc_type": 0.95, "npc_position": 0.90, "npc_events": 0.87, "layout": 0.98,
+               "ego_actions": 0.85, "ego_start": 0.96, "signal_state": 0.96},
     # (check3 position 0.65 -> 0.64, events 0.63 -> 0.62 in session 15: one party moved by a rule its studyable gold
     # holds 8 of 8 - a party stopped behind the AV that passes it began in the AV's lane; check3 was not inspected)
     # (check3 events 0.62 -> 0.61 in session 18, from 0.620 to 0.619: one party's string moved by a wording rule
     # that moved two studyable sketches, one to its gold - a lane entered by any name is a lane change, as "moved
     # into" it is; check3 was not inspected)
-    "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.61, "layout": 0.90, "ego_actions": 0.73},
+    "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.62, "layout": 0.91, "ego_actions": 0.74},
 }
-CONFLICT_HELD_SGO = {"study3": 70, "check3": 41}
+CONFLICT_HELD_SGO = {"study3": 91, "check3": 42}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()}
 
