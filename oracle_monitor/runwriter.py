@@ -11,8 +11,7 @@ So an in-process campaign run gets the same recording a node-graph run gets, and
 from __future__ import annotations
 
 import time
-from itertools import compress, pairwise
-from operator import attrgetter, is_not
+from itertools import pairwise
 from pathlib import Path
 from typing import Any, Iterable
 
@@ -25,22 +24,13 @@ from . import cdr
 from .messages import verdict_cdr, violations_cdr
 from .recorder import BagRecorder
 from .records import RunVerdict, Violation
-from .steprecords import StepPacker, StepRun, cast_key, same_layout, step_packer
+from .steprecords import StepPacker, StepRun, cast_key, light_cuts, same_layout, step_packer
 
 
 #: Steps encoded together at most (see `RunWriter.frame`; the flush interval bounds a batch in time as well). 1024
 #: rather than 256: in session 18's interleaved in-loop measurements (16 and 24 rounds, both scenarios of `bench
 #: judge`) the recording overhead was 1.1-1.7 points lower, 64 and 128 higher; 4096 was no better than 1024.
 BATCH_STEPS = 1024
-
-_LIGHTS = attrgetter("lights")
-
-
-def _light_cuts(frames: tuple[Frame, ...]) -> list[int]:
-    """The steps whose lights tuple is not the previous step's (the player keeps one tuple while no light
-    changes, so this finds the changes by identity, with C-level maps; an equal new tuple is a harmless cut)."""
-    lights = list(map(_LIGHTS, frames))
-    return list(compress(range(1, len(lights)), map(is_not, lights[1:], lights[:-1])))
 
 
 def _same_cast(last: tuple[Frame, ControlCommand | None], frame: Frame, command: ControlCommand | None) -> bool:
@@ -117,8 +107,8 @@ class RunWriter:
             self._raw_ordered(c.TOPIC_GOAL, cdr.encode_goal(goal))
 
     def frame(self, frame: Frame, command: ControlCommand | None = None) -> None:
-        """Record one step. Steps are kept (with their receive time) and encoded in batches: encoding a few
-        hundred steps in a row keeps the encoders hot in the CPU caches, which halves their cost inside a
+        """Record one step. Steps are kept (with their receive time) and encoded in batches of up to
+        `BATCH_STEPS`: encoding many steps in a row keeps the encoders hot in the CPU caches, which halves their cost inside a
         closed loop whose own working set evicts them every step. A batch is written at least every
         `flush_interval` seconds, so a crash loses what an unbatched recorder would lose (the unflushed tail)."""
         if self._base is not None:
@@ -166,7 +156,7 @@ class RunWriter:
             return
         n = len(frames)
         m = n - 1 if n > 1 and commands[-1] is None and commands[0] is not None else n
-        cuts = _light_cuts(frames[:m])
+        cuts = light_cuts(frames[:m])
         if len(cuts) * 8 > n:                   # pieces of a few steps each cost more than going step by step
             self._step_by_step(received, frames, commands, out)
             return

@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import math
 import struct
-from itertools import chain
-from operator import attrgetter
+from itertools import chain, compress
+from operator import attrgetter, is_not
 from typing import Iterable, Sequence
 
 import numpy as np
@@ -121,6 +121,14 @@ def same_layout(frames: Sequence[Frame], commands: Sequence[ControlCommand | Non
         flat = list(chain.from_iterable(objects))
         return all(_same_column(flat[j::m]) for j in range(m))
     return True
+
+
+def light_cuts(frames: Sequence[Frame]) -> list[int]:
+    """The steps whose lights tuple is not the previous step's: the player keeps one tuple while no light changes,
+    so the changes are found by identity, with C-level maps (an equal new tuple is a harmless cut: the layout
+    lookup compares by value)."""
+    lights = list(map(_LIGHTS, frames))
+    return list(compress(range(1, len(lights)), map(is_not, lights[1:], lights[:-1])))
 
 
 def _same_column(entities: list) -> bool:
