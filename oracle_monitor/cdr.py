@@ -52,11 +52,8 @@ class _W:
         self.b += s.pack(*values)
 
     def string(self, text: str) -> None:
-        raw = text.encode()
         self.align(4)
-        self.b += _u32.pack(len(raw) + 1)
-        self.b += raw
-        self.b += b"\x00"
+        self.b += _string_bytes(text)
 
     def header(self, t: float, frame_id: str) -> None:
         ns = int(round(t * 1e9))
@@ -81,11 +78,17 @@ _POSE_SCALE = struct.Struct("<10d")
 _STR: dict[str, bytes] = {}
 
 
+def _string_bytes(text: str) -> bytes:
+    """A CDR string: uint32 length (with the NUL), the UTF-8 bytes, the NUL."""
+    raw = text.encode()
+    return b"".join((_u32.pack(len(raw) + 1), raw, b"\x00"))
+
+
 def _cdr_string(text: str) -> bytes:
+    """`_string_bytes`, kept per text: names and frame ids repeat every step."""
     raw = _STR.get(text)
     if raw is None:
-        enc = text.encode()
-        raw = _u32.pack(len(enc) + 1) + enc + b"\x00"
+        raw = _string_bytes(text)
         if len(_STR) > 8192:
             _STR.clear()
         _STR[text] = raw
@@ -272,8 +275,7 @@ def encode_clock(t: float) -> bytes:
 def encode_string(text: str) -> bytes:
     """`std_msgs/String`: one CDR string (not kept in `_cdr_string`'s cache: these are whole envelopes and
     statuses, large and seldom repeated)."""
-    raw = text.encode()
-    return b"".join((HEADER, _u32.pack(len(raw) + 1), raw, b"\x00"))
+    return HEADER + _string_bytes(text)
 
 
 _POSE = struct.Struct("<7d")
