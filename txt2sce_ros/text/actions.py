@@ -445,14 +445,15 @@ _INTENT_TO_BEGIN = compile_gated(r"\b(?:to|before|prior\s+to)\s+(?:begin(?:ning)
 _PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are|had\s+been|has\s+been)\s+"
                              r"(?:(?:already|still|actively|currently|just|slowly)\s+)?"
                              r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
+# The verbs that put a manoeuvre's noun under way ("making a left turn", "executing a lane change").
+_DOING_NOUN = r"making|executing|performing|completing|conducting"
 # ("swung wide ... while making a right turn": "while" with the noun of the manoeuvre tells it under way too)
 _PROGRESSIVE_NOUN = compile_gated(r"\b(?:was|were|is|are|while)\s+(?:(?:already|still|currently|just)\s+)?"
-                               r"(?:(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:making|executing|performing|"
-                               r"completing|conducting|negotiating)|in\s+the\s+(?:middle|midst)\s+of|"
+                               r"(?:(?:in\s+the\s+(?:process|middle)\s+of\s+)?(?:" + _DOING_NOUN + r"|negotiating)|"
+                               r"in\s+the\s+(?:middle|midst)\s+of|"
                                r"(?:partway|midway|halfway)\s+(?:through|into))\s+(?:a|an|its|the|their|his|her)\s+"
                                r"(?:[\w-]+\s+)?$", re.I)
-_MAKING_NOUN = compile_gated(r"\s*(?:making|executing|performing|completing|conducting)\s+(?:a|an|its|the|their)\s+"
-                             r"(?:[\w-]+\s+)?", re.I)
+_MAKING_NOUN = compile_gated(r"\s*(?:" + _DOING_NOUN + r")\s+(?:a|an|its|the|their)\s+(?:[\w-]+\s+)?", re.I)
 #: A lane entered, by the words of PHRASES' generic "F" alternative ("entered the number 2 lane").
 _ENTERED_LANE = compile_gated(r"(?:partially\s+)?enter(?:ed|ing|s)?\s+(?:into\s+)?(?:the\s+(?:[\w#.-]+\s+){1,3}lane\b|"
                               r"lane\s+\d\b)", re.I)
