@@ -2848,6 +2848,21 @@ PROBES: tuple[Probe, ...] = (
           "(session 18)",
           "The Waymo AV was stopped at a red light on northbound [XXX]. A sedan approached from behind, {w}.",
           tuple(_REAR_CORNER_MOVES), _position, lambda w: [("R6", _REAR_CORNER_MOVES[w])]),
+    Probe("the lane a party came out of is where it was, not the lanes it went through or into (session 19)",
+          "The Waymo AV was traveling northbound on [XXX] in the center lane of three lanes. A passenger car "
+          "traveling behind the Waymo AV {w}. The passenger car passed the Waymo AV in the leftmost lane and made "
+          "contact with the driver side of the Waymo AV.",
+          ("began to change lanes from the rightmost lane to the leftmost lane",
+           "changed lanes from the right lane to the left lane", "moved from the right lane into the left lane",
+           "merged from the rightmost lane into the leftmost lane", "crossed from the right lane to the left lane",
+           "swerved from the right lane into the left lane",
+           "was changing lanes from the rightmost lane toward the leftmost lane",
+           "moved over from the right lane to the left lane", "veered from the rightmost lane into the leftmost lane",
+           "cut across from the right lane to the left lane",
+           "attempted a lane change from the right lane to the left lane",
+           "made an abrupt lane change from the rightmost lane into the leftmost lane",
+           "came from the right lane and moved into the left lane"),
+          _position, [("R6", "right")]),
 )
 
 

@@ -373,3 +373,13 @@ def test_a_verb_made_of_a_part_after_the_av_s_name_is_what_the_av_did_not_a_part
     sk = extract("The Waymo AV was traveling northbound on Main Street. A sedan ahead slammed on its brakes and the "
                  "Waymo AV rear-ended the sedan.", "t")
     assert (sk.npcs[0].position, sk.npcs[0].lane) == ("R5", "same")
+
+
+def test_the_lane_a_party_came_out_of_is_where_it_was() -> None:
+    # "a passenger car that was traveling behind the Waymo AV at a high rate of speed began to change lanes from the
+    # rightmost lane to the leftmost lane. As the Waymo AV entered the leftmost lane, the passenger car passed the
+    # Waymo AV in the leftmost lane" (the AV "in the center lane of three lanes"): it was in the lane to the AV's
+    # right when the interaction began, not in the AV's lane ("traveling behind") nor in the leftmost lane it
+    # passed in (relations.place: the lane it came out of first).
+    p = _party("nhtsa-sgo-ads-30270-8121-v1")
+    assert (p.position, p.lane) == ("R6", "right")

@@ -196,6 +196,10 @@ _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(
 # The word before a roadside ("the west sidewalk", "the left shoulder", "the far curb"): it names which side, so the
 # right-hand default of a curb, sidewalk or shoulder does not hold.
 _ROADSIDE_SIDE = compile_gated(r"\b(?:(north|south|east|west)(?:ern)?|(left|right)|opposite|far|other)(?:[- ]hand)?\s+$", re.I)
+# A lane cue told as where the party came from: the cue's own "from the rightmost lane", or "from the" before it
+# ("from the right lane", "from its left adjacent lane").
+_FROM_LANE = compile_gated(r"from\s", re.I)
+_FROM_BEFORE_LANE = compile_gated(r"\bfrom\s+(?:the\s+|its\s+|their\s+|EGO's\s+)?$", re.I)
 _RELATIVE_LANE = compile_gated(r"\b(?:EGO|us|it|its|our|adjacent|neighbou?ring)\b", re.I)
 
 
@@ -664,6 +668,13 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     beside = [c for c in lanes if c.value in ("left", "right") and _RELATIVE_LANE.search(d.text[c.span[0]:c.span[1]])]
     if beside:
         lanes = beside + [c for c in lanes if c not in beside]
+    # The lane it came out of ("began to change lanes from the rightmost lane to the leftmost lane", the AV in the
+    # centre lane; "merged from the right lane") is where it was when the interaction began: it outranks the lanes
+    # it went through or into.
+    origin = [c for c in lanes if _FROM_LANE.match(d.text[c.span[0]:c.span[1]]) or
+              _FROM_BEFORE_LANE.search(d.text[max(0, c.span[0] - 20):c.span[0]])]
+    if origin:
+        lanes = origin + [c for c in lanes if c not in origin]
     pass_side = next((c.value for c in passing if c.value), "")
     passed_side = ""
     if pos == "R6" and passing and (queued := _queued_behind(d, along, pass_side)) and \
