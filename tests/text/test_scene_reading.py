@@ -65,8 +65,18 @@ HELD_SGO = {
     "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.62, "layout": 0.91, "ego_actions": 0.74},
 }
 CONFLICT_HELD_SGO = {"study3": 91, "check3": 42}
+#: And for the 173 NHTSA SGO narratives new in session 19 (tests/text/sgo4/README.md), labelled before the extractor
+#: was run on them: study4 may be read, check4 is scored only; one annotator's gold each.
+SGO4 = Path(__file__).parent / "sgo4"
+HELD_SGO4 = {
+    "study4": {"npc_quantity": 0.92, "npc_type": 0.92, "npc_position": 0.71, "npc_events": 0.72, "layout": 0.86,
+               "ego_actions": 0.73, "ego_start": 0.85, "signal_state": 0.85},
+    "check4": {"npc_quantity": 0.92, "npc_position": 0.72, "npc_events": 0.68, "layout": 0.93, "ego_actions": 0.68},
+}
+CONFLICT_HELD_SGO4 = {"study4": 35, "check4": 34}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
-    name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()}
+    name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()} | {
+    name: (SGO4, held, CONFLICT_HELD_SGO4[name]) for name, held in HELD_SGO4.items()}
 
 
 @pytest.fixture(scope="module")
