@@ -381,12 +381,12 @@ class BagRecorder:
                 if first is None:
                     first = int(at[0])
                 if reserve is None:
-                    parts.append(packer.pack_run(at, step.frames, step.commands))
+                    parts.append(packer.pack_run(at, step.values))
                 else:
                     # Packed in place, at the chunk's end: what came before it is written first.
                     bio.writelines(parts)
                     parts.clear()
-                    packer.pack_run(at, step.frames, step.commands, out=reserve(packer.size * k))
+                    packer.pack_run(at, step.values, out=reserve(packer.size * k))
                 for cid, flat in packer.index(at, pos):
                     index[cid].append(flat)
                 for cid in packer.topics_cids:

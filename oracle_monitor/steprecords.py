@@ -6,8 +6,8 @@ channel, sequence, log time, publish time) around its CDR bytes. While the same 
 stage, a step's layout does not change: every length, every padding and every string is the same, only the
 numbers move. `StepPacker` compiles that layout once into a template (the constant runs, built by the `cdr`
 encoders' own pieces: names, marker tails, the lights body; zeros elsewhere) and a numpy record type naming each
-number's offset. A run of steps of one layout is then packed column by column: the entities' attributes are read
-in one pass (one `attrgetter` call per entity and step), the derived values computed on whole columns, and the
+number's offset. A step's numbers are read when it is recorded (`step_values`: one `attrgetter` call per entity),
+and a run of steps of one layout is packed column by column: the derived values computed on whole columns, and the
 numbers written into copies of the template by a few dozen array assignments for the whole run. The message
 index entries of the run are computed the same way (`StepPacker.index`).
 
@@ -26,8 +26,7 @@ from __future__ import annotations
 
 import math
 import struct
-from itertools import chain, compress
-from operator import attrgetter, is_not
+from operator import attrgetter
 from typing import Iterable, Sequence
 
 import numpy as np
@@ -39,13 +38,24 @@ from . import cdr
 _REC_HEAD = struct.Struct("<BQHI")     # opcode 0x05, record length, channel, sequence (log and publish time follow)
 _NUMPY = {"d": "<f8", "i": "<i4", "I": "<u4", "Q": "<u8"}
 
-#: An entity's attributes a step's records hold, read in one call per entity and step.
-_ENTITY = attrgetter("t", "x", "y", "heading", "speed", "accel", "yaw_rate", "center_x", "length", "width", "height")
+#: An entity's numbers a step's records hold, read in one call per entity and step.
+ENTITY_VALUES = attrgetter("t", "x", "y", "heading", "speed", "accel", "yaw_rate", "center_x", "length", "width",
+                           "height")
 _T, _X, _Y, _H, _V, _A, _YAW, _CX, _LEN, _WID, _HGT = _ATTRS = range(11)
-_COMMAND = attrgetter("t", "speed", "yaw_rate")
-_EGO, _OBJECTS, _LIGHTS, _TIME = attrgetter("ego"), attrgetter("objects"), attrgetter("lights"), attrgetter("t")
-_NAME, _CATEGORY = attrgetter("name"), attrgetter("category")
-_NONE = type(None)
+#: A command's numbers.
+COMMAND_VALUES = attrgetter("t", "speed", "yaw_rate")
+
+
+def step_values(frame: Frame, command: ControlCommand | None) -> list[float]:
+    """A step's numbers as `StepPacker.pack_run` reads them: the ego's `ENTITY_VALUES`, each object's, the frame's
+    time, then the command's `COMMAND_VALUES` if there is one. (`RunWriter.frame` appends the same, inline.)"""
+    values = [*ENTITY_VALUES(frame.ego)]
+    for obj in frame.objects:
+        values += ENTITY_VALUES(obj)
+    values.append(frame.t)
+    if command is not None:
+        values += COMMAND_VALUES(command)
+    return values
 
 
 def cast_key(frame: Frame, command: ControlCommand | None) -> tuple:
@@ -79,63 +89,20 @@ def step_packer(frame: Frame, command: ControlCommand | None, cids: Sequence[int
 
 
 class StepRun:
-    """Consecutive steps of one layout, to be packed together: their receive times (None: now), frames and
-    commands."""
+    """Consecutive steps of one layout, to be packed together: their receive times (None: now) and their numbers,
+    flat, in `step_values`' order."""
 
-    __slots__ = ("packer", "received", "frames", "commands")
+    __slots__ = ("packer", "received", "values")
 
-    def __init__(self, packer: "StepPacker", received: Sequence[int | None] = (), frames: Sequence[Frame] = (),
-                 commands: Sequence[ControlCommand | None] = ()) -> None:
+    def __init__(self, packer: "StepPacker", received: Sequence[int | None] = (),
+                 values: Sequence[float] = ()) -> None:
         self.packer = packer
-        self.received: list[int | None] = list(received)
-        self.frames: list[Frame] = list(frames)
-        self.commands: list[ControlCommand | None] = list(commands)
+        self.received: list[int | None] = list(received) if not isinstance(received, list) else received
+        self.values: list[float] = list(values) if not isinstance(values, list) else values
 
     def add(self, received: int | None, frame: Frame, command: ControlCommand | None) -> None:
         self.received.append(received)
-        self.frames.append(frame)
-        self.commands.append(command)
-
-
-def same_layout(frames: Sequence[Frame], commands: Sequence[ControlCommand | None]) -> bool:
-    """Whether all these steps have the first step's layout: the very same (or equal) lights, the same cast (the
-    entities' names and categories, in order) and all or none with a command. Told column by column with C-level
-    `map`/`count` (identity first, then equality, as `layout_key` compares), ~1 us a step where comparing step by
-    step in Python cost ~7: a batch is nearly always one layout, so the caller splits it step by step only when
-    this says no."""
-    n = len(frames)
-    # By type: `count(None)` would call the dataclass's Python `__eq__` for every command.
-    if list(map(type, commands)).count(_NONE) not in (0, n):
-        return False
-    lights = list(map(_LIGHTS, frames))
-    if lights.count(lights[0]) != n:
-        return False
-    egos = list(map(_EGO, frames))
-    if not _same_column(egos):
-        return False
-    objects = list(map(_OBJECTS, frames))
-    m = len(objects[0])
-    if list(map(len, objects)).count(m) != n:
-        return False
-    if m:
-        flat = list(chain.from_iterable(objects))
-        return all(_same_column(flat[j::m]) for j in range(m))
-    return True
-
-
-def light_cuts(frames: Sequence[Frame]) -> list[int]:
-    """The steps whose lights tuple is not the previous step's: the player keeps one tuple while no light changes,
-    so the changes are found by identity, with C-level maps (an equal new tuple is a harmless cut: the layout
-    lookup compares by value)."""
-    lights = list(map(_LIGHTS, frames))
-    return list(compress(range(1, len(lights)), map(is_not, lights[1:], lights[:-1])))
-
-
-def _same_column(entities: list) -> bool:
-    """Whether these entities (one per step) all have the first one's name and category."""
-    first, n = entities[0], len(entities)
-    return (list(map(_NAME, entities)).count(first.name) == n
-            and list(map(_CATEGORY, entities)).count(first.category) == n)
+        self.values += step_values(frame, command)
 
 
 _DOUBLES: dict[int, struct.Struct] = {}
@@ -167,7 +134,8 @@ class StepPacker:
     """The compiled layout of one kind of step. `cids`: the channel ids of clock, lights, objects' odometry,
     markers, ego odometry and command, in that order."""
 
-    __slots__ = ("_template", "_dtype", "_fields", "topics_cids", "offsets", "size", "_n_entities", "_channels")
+    __slots__ = ("_template", "_dtype", "_fields", "topics_cids", "offsets", "size", "_n_entities", "_command",
+                 "_channels")
 
     def __init__(self, frame: Frame, command: ControlCommand | None, cids: Sequence[int]) -> None:
         clock_cid, lights_cid, odom_cid, markers_cid, ego_cid, command_cid = cids
@@ -276,25 +244,24 @@ class StepPacker:
         self.offsets = tuple(offsets)
         self.size = size
         self._n_entities = len(entities)
+        self._command = command is not None
         # Each channel's records in the step, in order (the objects' odometry has one per object).
         channels: dict[int, list[int]] = {}
         for r, cid in enumerate(record_cids):
             channels.setdefault(cid, []).append(r)
         self._channels = tuple((cid, tuple(rs)) for cid, rs in channels.items())
 
-    def pack_run(self, times: np.ndarray, frames: Sequence[Frame], commands: Sequence[ControlCommand | None],
-                 out: np.ndarray | None = None) -> np.ndarray:
+    def pack_run(self, times: np.ndarray, values: Sequence[float], out: np.ndarray | None = None) -> np.ndarray:
         """The records of a run of steps of this layout, as one array of bytes: step k's log (and publish) times
-        are times[k], times[k] + 1, ... in record order. `out`: the uint8 array (of `size` bytes per step) to
-        pack them into, else a new one."""
-        n, m = len(frames), self._n_entities
+        are times[k], times[k] + 1, ... in record order; its numbers are the k-th `step_values` stretch of
+        `values`. `out`: the uint8 array (of `size` bytes per step) to pack them into, else a new one."""
+        n, m = len(times), self._n_entities
         width = len(_ATTRS)
-        # The attributes column-wise by C-level `map`s (no Python bytecode per step): the ego's, then the objects'.
-        ent = _doubles(chain.from_iterable(map(_ENTITY, map(_EGO, frames))), n * width).reshape(n, 1, width)
-        if m > 1:
-            objects = chain.from_iterable(map(_OBJECTS, frames))
-            others = _doubles(chain.from_iterable(map(_ENTITY, objects)), n * (m - 1) * width)
-            ent = np.concatenate((ent, others.reshape(n, m - 1, width)), axis=1)
+        per_step = m * width + 1 + (3 if self._command else 0)
+        if len(values) != n * per_step:
+            raise ValueError(f"{len(values)} step values for {n} steps of {per_step}")
+        steps = _doubles(values, n * per_step).reshape(n, per_step)
+        ent = steps[:, :m * width].reshape(n, m, width)
         heading = ent[:, :, _H]
         half = (heading / 2.0).ravel().tolist()
         sin, cos = math.sin, math.cos
@@ -308,10 +275,10 @@ class StepPacker:
         cx = ent[:, :, _CX]
         derived = {"qz": qz, "qw": qw, "mx": ent[:, :, _X] + cx * cos_h, "my": ent[:, :, _Y] + cx * sin_h,
                    "mz": ent[:, :, _HGT] / 2.0}
-        frame_sec, frame_nsec = _ns(_doubles(map(_TIME, frames), n))
+        frame_sec, frame_nsec = _ns(steps[:, m * width])
         ent_sec, ent_nsec = _ns(ent[:, :, _T])
-        if commands[0] is not None:
-            cmd = _doubles(chain.from_iterable(map(_COMMAND, commands)), 3 * n).reshape(n, 3)
+        if self._command:
+            cmd = steps[:, m * width + 1:]
             cmd_sec, cmd_nsec = _ns(cmd[:, 0])
         if out is None:
             buf = np.tile(self._template, n)

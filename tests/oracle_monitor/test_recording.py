@@ -246,6 +246,29 @@ def _closed_loop(name: str):
     return sim, [(f, planner.step(f)) for f in frames]
 
 
+def _per_message(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Makes `RunWriter` write every waiting step by the per-message encoders (`RunWriter._encode`), the reference
+    the packed path must equal byte for byte: the same batches and receive times, each step's frame kept aside."""
+    from collections import deque
+
+    from oracle_monitor import runwriter
+
+    kept: deque = deque()
+    frame = runwriter.RunWriter.frame
+
+    def keep(self, f, cmd=None) -> None:
+        kept.append((f, cmd))
+        frame(self, f, cmd)
+
+    def per_message(self, segment, out) -> None:
+        for ns in segment.received:
+            f, cmd = kept.popleft()
+            self._messages(ns, f, cmd, out)
+
+    monkeypatch.setattr(runwriter.RunWriter, "frame", keep)
+    monkeypatch.setattr(runwriter.RunWriter, "_pack", per_message)
+
+
 def _message_indexes(mcap: bytes) -> list[tuple[int, tuple[int, ...]]]:
     """(channel, flat (log time, offset) pairs) of every MessageIndex record, with each chunk's data start."""
     import struct
@@ -274,45 +297,43 @@ def test_packed_steps_are_the_per_message_bytes(tmp_path: Path, monkeypatch: pyt
 
     from oracle_monitor import runwriter
 
-    def per_message_drain(self) -> None:
-        steps, self._steps = self._steps, []
-        self.rec.write_steps([(ns, self._encode(f, cmd)) for ns, f, cmd in steps])
-
-    def record(path: Path, sim, steps, drain) -> bytes:
+    def record(path: Path, sim, steps) -> bytes:
         clock = itertools.count(1_700_000_000_000_000_000, 1000)
         monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(clock))
-        monkeypatch.setattr(runwriter.RunWriter, "_drain", drain)
         with RunWriter(path, flush_interval=1e9) as w:        # chunks closed by size only: same in both
             w.begin(None, sim.goal, "x", network=sim.network, lights=steps[0][0].lights)
             for f, cmd in steps:
                 w.frame(f, cmd)
         return (path / "bag.mcap").read_bytes()
 
-    packed_drain = runwriter.RunWriter._drain
     for name in ("traffic_lights", "pedestrian_collision"):
         sim, steps = _closed_loop(name)
         steps[3] = (dataclasses.replace(steps[3][0], ego=dataclasses.replace(steps[3][0].ego, t=0.123456789)),
                     steps[3][1])
         steps[-1] = (steps[-1][0], None)
-        ours = record(tmp_path / name / "packed" / "bag", sim, steps, packed_drain)
-        theirs = record(tmp_path / name / "per_message" / "bag", sim, steps, per_message_drain)
+        with monkeypatch.context() as m:
+            ours = record(tmp_path / name / "packed" / "bag", sim, steps)
+        with monkeypatch.context() as m:
+            _per_message(m)
+            theirs = record(tmp_path / name / "per_message" / "bag", sim, steps)
         assert len(ours) > 1_000_000 and ours == theirs
 
 
 @pytest.mark.parametrize("name, view, runs", [
-    # The last frame of a run has no command: the steps before it are one run, that step another.
-    ("pedestrian_collision", True, [199, 1]),
+    # The last frame of a run has no command: the steps before it are one run; that step, a segment of its own,
+    # is written message by message (a segment of fewer than SHORT_SEGMENT steps).
+    ("pedestrian_collision", True, [199]),
     # Lights change at steps 82 and 142 (and the tuple the player hands over changes only then): with the view
     # markers on, each change step is written message by message (it redraws the lights), the steps between are
     # runs; without them, the change steps begin the runs.
-    ("traffic_lights", True, [82, 59, 56, 1]),
-    ("traffic_lights", False, [82, 60, 57, 1]),
+    ("traffic_lights", True, [82, 59, 56]),
+    ("traffic_lights", False, [82, 60, 57]),
 ])
 def test_a_batch_is_cut_into_runs_where_its_layout_changes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
                                                            name: str, view: bool, runs: list[int]) -> None:
-    # A batch that is not one layout is cut where the lights change and before a run's command-less last step,
-    # and each piece packed as one run with its layout looked up once (step by step, every step paid a lookup).
-    # The bytes are the per-message path's (test_packed_steps_are_the_per_message_bytes).
+    # Steps wait in segments of one lights tuple and one cast; a batch is packed a segment at a time, each as one
+    # run with its layout looked up once. The bytes are the per-message path's
+    # (test_packed_steps_are_the_per_message_bytes).
     from oracle_monitor import runwriter
     from oracle_monitor.recorder import BagRecorder
     from oracle_monitor.steprecords import StepRun
@@ -324,7 +345,7 @@ def test_a_batch_is_cut_into_runs_where_its_layout_changes(tmp_path: Path, monke
     lookups: list[int] = []
     write_steps, packer = BagRecorder.write_steps, runwriter.RunWriter._packer
     monkeypatch.setattr(BagRecorder, "write_steps", lambda self, batch: (
-        got.extend(len(s.frames) for s in batch if isinstance(s, StepRun)), write_steps(self, batch))[1])
+        got.extend(len(s.received) for s in batch if isinstance(s, StepRun)), write_steps(self, batch))[1])
     monkeypatch.setattr(runwriter.RunWriter, "_packer",
                         lambda self, f, cmd: (lookups.append(1), packer(self, f, cmd))[1])
     with RunWriter(tmp_path / "bag", flush_interval=1e9) as w:
@@ -440,18 +461,13 @@ def test_messages_between_steps_keep_their_place(tmp_path: Path, monkeypatch: py
     sim, steps = _closed_loop("pedestrian_collision")
     drains = []
 
-    def per_message_drain(self) -> None:
-        queued, self._steps = self._steps, []
-        self.rec.write_steps([(ns, cmd if f is None else self._encode(f, cmd)) for ns, f, cmd in queued])
-
     def counting_drain(self) -> None:
-        drains.append(len(self._steps))
+        drains.append(self._waiting)
         packed_drain(self)
 
-    def record(path: Path, drain) -> bytes:
+    def record(path: Path) -> bytes:
         clock = itertools.count(1_700_000_000_000_000_000, 1000)
         monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(clock))
-        monkeypatch.setattr(runwriter.RunWriter, "_drain", drain)
         with RunWriter(path, flush_interval=1e9) as w:
             w.begin(None, sim.goal, "x", network=sim.network, lights=steps[0][0].lights)
             for k, (f, cmd) in enumerate(steps):
@@ -462,9 +478,13 @@ def test_messages_between_steps_keep_their_place(tmp_path: Path, monkeypatch: py
         return (path / "bag.mcap").read_bytes()
 
     packed_drain = runwriter.RunWriter._drain
-    ours = record(tmp_path / "packed" / "bag", counting_drain)
+    with monkeypatch.context() as m:
+        m.setattr(runwriter.RunWriter, "_drain", counting_drain)
+        ours = record(tmp_path / "packed" / "bag")
     assert len(drains) <= -(-len(steps) // runwriter.BATCH_STEPS) + 1      # batches only, none per violation
-    theirs = record(tmp_path / "per_message" / "bag", per_message_drain)
+    with monkeypatch.context() as m:
+        _per_message(m)
+        theirs = record(tmp_path / "per_message" / "bag")
     assert ours == theirs
     topics = [m.topic for m in read_bag(tmp_path / "packed" / "bag").messages()]
     assert topics.count(c.TOPIC_VIOLATIONS) == len(range(5, len(steps), 97))
@@ -531,8 +551,8 @@ def test_step_values_convert_to_the_same_doubles_as_numpy() -> None:
 
 def test_layout_changes_inside_a_batch_record_the_per_message_bytes(tmp_path: Path,
                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
-    # A batch is packed as one run only when `same_layout` says every step has the first one's layout; each kind
-    # of change inside a batch must split it where the per-message path would differ: an entity leaving and
+    # Steps wait in segments of one layout (`RunWriter.frame`); each kind of change inside a batch must start a
+    # new segment where the per-message path would differ: an entity leaving and
     # coming back, one renamed, one recategorised (an equal name in a new string object is no change), lights
     # changing with no view markers shown, steps without a command among steps with one; and receive times that
     # repeat and go back, which the log times must still order.
@@ -559,37 +579,34 @@ def test_layout_changes_inside_a_batch_record_the_per_message_bytes(tmp_path: Pa
         edited.append((dataclasses.replace(f, objects=objects, lights=lights),
                        None if k % 150 in (7, 8, 9) else cmd))
 
-    def per_message_drain(self) -> None:
-        queued, self._steps = self._steps, []
-        self.rec.write_steps([(ns, self._encode(f, cmd)) for ns, f, cmd in queued])
-
-    def record(path: Path, drain) -> bytes:
+    def record(path: Path) -> bytes:
         ticks = itertools.chain.from_iterable((t, t, t - 5_000) for t in itertools.count(1_700_000_000_000_000_000,
                                                                                        1000))
         monkeypatch.setattr(runwriter.time, "time_ns", lambda: next(ticks))
-        monkeypatch.setattr(runwriter.RunWriter, "_drain", drain)
         with RunWriter(path, flush_interval=1e9) as w:
             w.begin(None, sim.goal, "x")
             for f, cmd in edited:
                 w.frame(f, cmd)
         return (path / "bag.mcap").read_bytes()
 
-    ours = record(tmp_path / "packed" / "bag", runwriter.RunWriter._drain)
-    theirs = record(tmp_path / "per_message" / "bag", per_message_drain)
+    ours = record(tmp_path / "packed" / "bag")
+    with monkeypatch.context() as m:
+        _per_message(m)
+        theirs = record(tmp_path / "per_message" / "bag")
     assert ours == theirs
     times = [m.log_time_ns for m in read_bag(tmp_path / "packed" / "bag").messages()]
     assert times == sorted(times) and len(set(times)) == len(times)
 
 
-def test_same_layout_says_no_to_each_kind_of_change() -> None:
+def test_each_kind_of_layout_change_starts_a_segment(tmp_path: Path) -> None:
+    # A step joins the waiting segment only if it has its lights tuple and cast: a change of either, or of whether
+    # a command follows, starts a new one (told by identity: an equal name in a new string object starts one too,
+    # which costs a layout lookup, never a wrong layout).
     import dataclasses
-
-    from oracle_monitor.steprecords import same_layout
 
     sim, steps = _closed_loop("traffic_lights")
     frames = [f for f, _ in steps[:50]]
     commands = [cmd for _, cmd in steps[:50]]
-    assert same_layout(frames, commands) and same_layout(frames, [None] * 50)
     f = frames[20]
     changes = [
         dataclasses.replace(f, objects=f.objects[1:]),
@@ -597,12 +614,22 @@ def test_same_layout_says_no_to_each_kind_of_change() -> None:
         dataclasses.replace(f, objects=(dataclasses.replace(f.objects[1], name="other"), f.objects[0])),
         dataclasses.replace(f, ego=dataclasses.replace(f.ego, category="truck")),
         dataclasses.replace(f, lights=f.lights[1:]),
+        dataclasses.replace(f, ego=dataclasses.replace(f.ego, name="".join(["", f.ego.name]))),
     ]
+
+    def segments(frames, commands) -> list[int]:
+        w = RunWriter(tmp_path / f"bag{len(list(tmp_path.iterdir()))}", flush_interval=1e9)
+        w.begin(None, sim.goal, "x")
+        for fr, cmd in zip(frames, commands):
+            w.frame(fr, cmd)
+        got = [len(s.received) for s in w._pending]
+        w.close()
+        return got
+
+    assert segments(frames, commands) == [50] and segments(frames, [None] * 50) == [50]
     for changed in changes:
-        assert not same_layout([*frames[:20], changed, *frames[21:]], commands)
-    assert not same_layout(frames, [*commands[:49], None])
-    renamed_equal = dataclasses.replace(f, ego=dataclasses.replace(f.ego, name="".join(["", f.ego.name])))
-    assert same_layout([*frames[:20], renamed_equal, *frames[21:]], commands)
+        assert segments([*frames[:20], changed, *frames[21:]], commands) == [20, 1, 29]
+    assert segments(frames, [*commands[:49], None]) == [49, 1]
 
 
 def test_step_times_follow_the_stepwise_rule() -> None:
