@@ -1934,4 +1934,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'ground in front of the Cruise AV’s front passenger side tire, and walked away off the roadway. After the'
         ' pedestrian left, the Cruise AV attempted to proceed forward and made contact with the abandoned '
         'scooter. There were no damages to the Cruise AV and there were no reported injuries.'),
+    'nhtsa-sgo-ads-30270-7007-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7007, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2023 at 3:23 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San '
+        'Francisco, California was in a collision involving a heavy truck on [XXX] near [XXX]. The Waymo AV was '
+        'traveling westbound on [XXX] following behind a heavy truck. The heavy truck came to a stop, began to '
+        'back up, proceeded forward, and then stopped again. The Waymo AV came to a stop both times the heavy '
+        'truck stopped (moving a short distance at a low speed in between the stops). While the Waymo AV '
+        'remained stopped the second time, the heavy truck began to reverse again and made contact with the '
+        'front of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous '
+        'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
+        'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
+        'may become available.'),
 }

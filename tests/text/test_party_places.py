@@ -383,3 +383,11 @@ def test_the_lane_a_party_came_out_of_is_where_it_was() -> None:
     # passed in (relations.place: the lane it came out of first).
     p = _party("nhtsa-sgo-ads-30270-8121-v1")
     assert (p.position, p.lane) == ("R6", "right")
+
+
+def test_a_party_the_av_follows_behind_is_ahead_of_it() -> None:
+    # "The Waymo AV was traveling westbound on [XXX] following behind a heavy truck. ... the heavy truck began to
+    # reverse again and made contact with the front of the Waymo AV" (nhtsa-sgo-ads-30270-7007-v1, study4): "following
+    # behind" with the truck named after it is the AV's place behind the truck, so the truck is ahead (R5, same).
+    p = _party("nhtsa-sgo-ads-30270-7007-v1")
+    assert (p.position, p.lane) == ("R5", "same")

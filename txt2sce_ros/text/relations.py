@@ -85,7 +85,10 @@ _SAME_LANE = compile_gated(r"\b(?:(?:(?:traveling|travelling|driving|riding)\s+(
                            r"(?:(?:the\s+(?:first\s+|second\s+)?)?EGO|it|us)\b"
                            r"(?!\s+(?:and|in\s+the|on\s+the))|same\s+lane|EGO's\s+lane|its\s+lane|in\s+(?:the\s+)?lane\s+(?:of|with)\s+EGO|"
                            r"directly\s+(?:behind|ahead\s+of|in\s+front\s+of)\s+EGO|in\s+the\s+travel\s+lane)\b", re.I)
-_BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|following\s+(?:EGO|it|us|behind)|trailing\s+(?:EGO|it)|"
+# ("following behind" alone is the party's place; "EGO was traveling ... following behind a heavy truck" puts the one
+# named after it ahead)
+_BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO|it|us)|"
+                        r"following\s+(?:EGO|it|us|behind(?!\s+(?:a|an|another|the)\s+(?!EGO\b)))|trailing\s+(?:EGO|it)|"
                         # following too close: "tailgating EGO", "riding EGO's bumper", "riding the bumper of EGO"
                         r"tail-?gat\w*\s+(?:EGO|it|us)|(?:riding|rode)\s+(?:EGO's|its|our|the)\s+(?:rear\s+)?bumper|"
                         r"from\s+(?:the\s+)?rear|" + FROM_BEHIND + r"|approach\w*\s+from\s+(?:the\s+)?(?:rear|behind)|"
