@@ -2863,6 +2863,15 @@ PROBES: tuple[Probe, ...] = (
            "made an abrupt lane change from the rightmost lane into the leftmost lane",
            "came from the right lane and moved into the left lane"),
           _position, [("R6", "right")]),
+    Probe("the AV standing on one street approaching the cross street: a place, no move off (session 19)",
+          "A Zoox vehicle in autonomy {w} on [XXX] approaching [XXX] in Las Vegas. A passenger car traveling behind "
+          "the Zoox vehicle rear-ended the stopped Zoox vehicle.",
+          ("was stopped behind traffic for a red traffic signal", "was stopped at a red light",
+           "was stationary in the left turn lane", "was waiting at the red light",
+           "was stopped in the left turn lane (lane 2) for a red traffic signal", "was idling in traffic",
+           "remained stopped for the red signal", "was at a stop", "was stopped in a queue of traffic",
+           "was sitting at a red light", "was stopped in traffic"),
+          _ego, ("stopped", "")),
 )
 
 

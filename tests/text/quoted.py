@@ -1947,4 +1947,21 @@ QUOTED: dict[str, tuple[str, str]] = {
         'mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing '
         'General Order 2021-01. Waymo may supplement or correct its reporting with additional information as it '
         'may become available.'),
+    'nhtsa-sgo-ads-30610-10018-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-10018'
+        ', version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle (Vehicle 1) in autonomy was stopped behind traffic in the left turn lane (lane 2) for'
+        ' a red traffic signal on [XXX] approaching[XXX] in Las Vegas. At that time, an SUV (Vehicle 2) was a'
+        'ttempting to merge onto [XXX] from a parking lot on the right when it entered the travel path of a p'
+        'assenger car (Vehicle 3) traveling north on [XXX] in the left through lane (lane 3). The front end o'
+        'f Vehicle 2 struck the front passenger side area of Vehicle 3. Vehicle 3 was redirected to the right'
+        ' after being impacted by Vehicle 2, and it rear-ended the stopped Zoox vehicle. The Zoox vehicle ope'
+        'rator then disengaged from autonomy. The Zoox vehicle operator pulled over into a nearby parking lot'
+        ' and returned to the scene to exchange information. The Zoox vehicle sustained minor damage to the r'
+        'ear bumper and exhaust pipe. Vehicle 2 sustained moderate damage to the front end with an airbag dep'
+        'loyment and was towed from the scene. Vehicle 3 sustained major damage to the front end and passenge'
+        'r-side front area with multiple airbag deployments and was towed from the scene. Police and EMS were'
+        ' called to the scene, and the driver of Vehicle 3 was transported by an ambulance. The content of th'
+        'is report is unchanged from the initial report and provides complete information to date for this in'
+        'cident.'),
 }

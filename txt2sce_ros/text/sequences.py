@@ -274,6 +274,23 @@ def ego_sequence(d: Doc, first_party_pos: tuple[int, int] | None, *, party_first
     return start, actions
 
 
+#: Between a standing and the participle that places it, no new clause ("was stopped ... for a red traffic signal on
+#: [XXX] approaching [XXX]"; not "was stopped ..., and was approaching", "then approaching").
+_CLAUSE_BREAK = compile_gated(r"[,;]|\b(?:and|then|when|while|as|before|after|until|but)\b", re.I)
+
+
+def _place_approached(d: Doc, acts: list[Act], k: int) -> bool:
+    """Is the AV's run `acts[k]` the participle "approaching" that tells where it stood, in the clause of the standing
+    told just before it ("A Zoox vehicle ... was stopped behind traffic in the left turn lane (lane 2) for a red
+    traffic signal on [XXX] approaching [XXX]": the cross street ahead of the stop, not a move off)?"""
+    a = acts[k]
+    if a.code != "a" or k == 0 or not fre.match(r"approaching\b", a.text, re.I):
+        return False
+    prev = acts[k - 1]
+    return prev.code == "S" and prev.sent == a.sent and \
+        not _CLAUSE_BREAK.search(d.sents[a.sent], prev.pos + len(prev.text), a.pos)
+
+
 def _stop_results_dropped(acts: list[Act]) -> list[Act]:
     """"EGO came to a stop to yield to cross-traffic. As EGO was stopped, the passenger car ...": the state told after
     a stop (in its sentence or the next) is that stop's result, not a fact of its own; so is each state told after
@@ -305,7 +322,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # "was stopped in traffic ... on southbound San Antonio Road headed toward Charleston Road": after a stop, the
     # direction it faced is no move.
     acts = [a for k, a in enumerate(acts) if not (a.code == "a" and _DIRECTION_ONLY.match(a.text) and k > 0 and
-                                                  acts[k - 1].code in "hS")]
+                                                  acts[k - 1].code in "hS") and not _place_approached(d, acts, k)]
     acts = _stop_results_dropped(acts)
     # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
     # is the AV's at the contact when the telling goes back to it travelling.

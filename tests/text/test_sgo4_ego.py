@@ -1,0 +1,27 @@
+"""Issue 13, the AV's own start and action string and the road, read from the real NHTSA SGO narratives labelled
+in session 19 before the extractor ran on them (tests/text/sgo4/study4.jsonl; each row's `source` beside its text
+in tests/text/quoted.py). One test per reading; each asserts the reading sketch.md's rules and the official gold's
+conventions give, and fails if the rule is removed.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.text.extractor import extract
+
+from .quoted import QUOTED
+
+
+def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
+    sk = extract(text if text is not None else QUOTED[report_id][1], report_id)
+    return sk.ego.start, sk.ego.actions
+
+
+def test_approaching_after_a_standing_places_it() -> None:
+    # "A Zoox vehicle (Vehicle 1) in autonomy was stopped behind traffic in the left turn lane (lane 2) for a red
+    # traffic signal on [XXX] approaching[XXX] in Las Vegas": "approaching" names the cross street ahead of where it
+    # stood, not a move off; it stood throughout (stopped, '').
+    assert _ego("nhtsa-sgo-ads-30610-10018-v2") == ("stopped", "")
+    # In a clause of its own after the standing, "approaching" is told as a move again.
+    moved = ("The Waymo AV was stopped at a red light on Mission Street, and then began approaching the intersection "
+             "with 16th Street when a sedan traveling behind the Waymo AV made contact with its rear bumper.")
+    assert _ego("t", moved) != ("stopped", "")
