@@ -2872,6 +2872,16 @@ PROBES: tuple[Probe, ...] = (
            "remained stopped for the red signal", "was at a stop", "was stopped in a queue of traffic",
            "was sitting at a red light", "was stopped in traffic"),
           _ego, ("stopped", "")),
+    Probe("an oncoming party turning off into a roadside place or crossing the median, the AV waiting for a junction: "
+          "on the AV's own road, not the opposite approach (session 19)",
+          "The Waymo AV was stopped in a queue of northbound traffic for a red light at the intersection with [XXX]. "
+          "A passenger car traveling southbound on [XXX] {w} and made contact with the front of the Waymo AV.",
+          ("made a left turn into a driveway", "turned left into a parking lot", "turned left into the entrance of a "
+           "parking lot", "attempted to make a left turn across the Waymo AV's lane of travel to the entrance of a "
+           "parking lot", "began a left turn toward a driveway", "turned left into a gas station",
+           "made a left turn into an alley", "turned left into a parking garage", "crossed over the median",
+           "swerved to the left, crossing the curbed median", "jumped the median", "drove across the center divider"),
+          _position, [("R7", "left")]),
 )
 
 

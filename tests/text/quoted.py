@@ -1964,4 +1964,31 @@ QUOTED: dict[str, tuple[str, str]] = {
         ' called to the scene, and the driver of Vehicle 3 was transported by an ambulance. The content of th'
         'is report is unchanged from the initial report and provides complete information to date for this in'
         'cident.'),
+    'nhtsa-sgo-ads-30270-10175-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10175, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On March [XXX], 2025 at 5:43 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, '
+        'Arizona was in a collision involving an SUV on [XXX]. The Waymo AV was stopped in a queue of westbound '
+        'traffic for a red traffic light on [XXX]. An SUV traveling eastbound on W Monroe Street attempted to '
+        "make a left turn across the stationary Waymo AV's lane of travel to the entrance of a parking lot on "
+        'the right of the Waymo AV. As the SUV attempted the left turn the front passenger side of the SUV made '
+        "contact with the front of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 "
+        'ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under '
+        'Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may '
+        'supplement or correct its reporting with additional information as it may become available.'),
+    'dmvca-waymo-20241014-r619': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 619, column '
+        '"Accident Detail Description")',
+        'On October 14, 2024 at 5:04 PM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in South San '
+        'Francisco, California was in a collision involving a pickup truck (Chevrolet El Camino) on El Camino '
+        'Real at Westborough Boulevard. The Waymo AV was traveling northwest on El Camino Real when it came to '
+        'a stop behind a queue of traffic in the rightmost dedicated left turn lane at the intersection with '
+        'Westborough Boulevard. Simultaneously, a pickup truck was traveling southeast on El Camino Real in the '
+        'center of three lanes when a passenger car entered the center southeast lane from a driveway to the '
+        'right of the pickup truck. As the passenger car entered the center southeast lane just in front of the '
+        'pickup truck, the pickup truck swerved to the left, crossing the curbed median. The front of the '
+        'pickup truck then made contact with the rear driver side of the stopped Waymo AV and with the rear '
+        'driver side of another pickup truck traveling two lanes to the right of the Waymo AV. At the time of '
+        'the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. All three vehicles sustained '
+        'damage.'),
 }

@@ -391,3 +391,17 @@ def test_a_party_the_av_follows_behind_is_ahead_of_it() -> None:
     # behind" with the truck named after it is the AV's place behind the truck, so the truck is ahead (R5, same).
     p = _party("nhtsa-sgo-ads-30270-7007-v1")
     assert (p.position, p.lane) == ("R5", "same")
+
+
+def test_an_oncoming_party_turning_into_a_lot_or_crossing_the_median_is_on_the_av_s_road_not_the_opposite_approach() -> None:
+    # "The Waymo AV was stopped in a queue of westbound traffic for a red traffic light on [XXX]. An SUV traveling
+    # eastbound on W Monroe Street attempted to make a left turn across the stationary Waymo AV's lane of travel to
+    # the entrance of a parking lot on the right of the Waymo AV" (nhtsa-sgo-ads-30270-10175-v1, study4): it turns
+    # off mid-block, oncoming on the AV's own road (R7, left), not on the junction's opposite approach (R2).
+    p = _party("nhtsa-sgo-ads-30270-10175-v1")
+    assert (p.position, p.lane) == ("R7", "left")
+    # "a pickup truck was traveling southeast on El Camino Real in the center of three lanes ... the pickup truck
+    # swerved to the left, crossing the curbed median" (dmvca-waymo-20241014-r619, dev, official gold R7/left), the
+    # AV stopped behind a queue in a left turn lane at the intersection.
+    p = _party("dmvca-waymo-20241014-r619")
+    assert (p.position, p.lane) == ("R7", "left")

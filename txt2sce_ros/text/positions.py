@@ -142,7 +142,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             # Coming the other way in the lanes of the AV's direction when first told ("a passenger car traveling
             # eastbound in the westbound lanes", the AV westbound): the wrong way, in the AV's lane.
             return "R7", "same", True
-        if junction:
+        if junction and not _off_the_junction(d, e, ctx):
+            # (one turning off into a driveway or lot, or crossing the median, meets the AV on the AV's own road
+            # away from the junction: R7, below)
             return "R2", None, True
         # In the AV's own lane: said ("the wrong way"), or passing the AV on its right (the oncoming lane is on its
         # left: "a passenger car traveling southbound in the parking lot proceeded to pass the Waymo AV on the right").
@@ -380,6 +382,24 @@ _REAR_ENDED_EGO = compile_gated(r"\brear[- ]?end(?:ed|ing|s)?\s+(?:the\s+)?(?:(?
 # the other thing is named next, so the party's words end there)
 _NOT_ANOTHER = r"(?!\s*(?:$|\||(?:a|an|the|another|some|its|their)\s+(?!EGO\b)))"
 FROM_BEHIND = r"from\s+behind\b" + _NOT_ANOTHER
+
+
+# An oncoming party's move that is no junction's: a turn into a roadside place ("attempted to make a left turn across
+# the stationary Waymo AV's lane of travel to the entrance of a parking lot"), or a run across the median ("swerved to
+# the left, crossing the curbed median"). Met so, it is on the AV's own road even where the AV waits for a junction
+# (sketch.md: a party on the AV's approach road is R5-R7). Studyable: the 2 oncoming parties read at a junction that
+# are told so are both R7/left in the gold; the 17 others there are R2 (15), R1 and R3.
+_OFF_THE_JUNCTION = compile_gated(r"\b(?:into|to|toward|towards)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,3}?(?:driveway|parking\s+"
+                                  r"(?:lot|garage|structure)|garage|entrance|alley|gas\s+station)\b|"
+                                  r"\b(?:cross\w*|over|across|jump\w*|mount\w*)\s+(?:the\s+)?(?:[\w-]+\s+)?"
+                                  r"(?:median|divider)\b", re.I)
+
+
+def _off_the_junction(d: Doc, e: Entity, ctx: str) -> bool:
+    """Does the oncoming party turn off into a roadside place or cross the median (its words, or the words of its own
+    turn, which may be told further on than its context reaches)?"""
+    return bool(_OFF_THE_JUNCTION.search(ctx)) or any(
+        _OFF_THE_JUNCTION.search(d.sents[a.sent][a.pos:a.pos + 100]) for a in d.acts if a.who == e.idx and a.code in "de")
 
 
 # In the AV's own lane or right before it, said of a party ("in EGO's lane", "directly in front of EGO"); not one
