@@ -6,9 +6,9 @@ channel, sequence, log time, publish time) around its CDR bytes. While the same 
 stage, a step's layout does not change: every length, every padding and every string is the same, only the
 numbers move. `StepPacker` compiles that layout once into a template (the constant runs, built by the `cdr`
 encoders' own pieces: names, marker tails, the lights body; zeros elsewhere) and a numpy record type naming each
-number's offset. A step's numbers are read when it is recorded (`step_values`: one `attrgetter` call per entity),
-and a run of steps of one layout is packed column by column: the derived values computed on whole columns, and the
-numbers written into copies of the template by a few dozen array assignments for the whole run. The message
+number's offset. A step's numbers are read when it is recorded (`add_step_values`: one `attrgetter` call per
+entity), and a run of steps of one layout is packed column by column: the derived values computed on whole
+columns, and the numbers written into copies of the template by a few dozen array assignments for the whole run. The message
 index entries of the run are computed the same way (`StepPacker.index`).
 
 Packing step by step (one value list and one `struct.pack` per step, the previous version) cost ~7 µs a step of
@@ -39,23 +39,21 @@ _REC_HEAD = struct.Struct("<BQHI")     # opcode 0x05, record length, channel, se
 _NUMPY = {"d": "<f8", "i": "<i4", "I": "<u4", "Q": "<u8"}
 
 #: An entity's numbers a step's records hold, read in one call per entity and step.
-ENTITY_VALUES = attrgetter("t", "x", "y", "heading", "speed", "accel", "yaw_rate", "center_x", "length", "width",
-                           "height")
+_ENTITY = attrgetter("t", "x", "y", "heading", "speed", "accel", "yaw_rate", "center_x", "length", "width", "height")
 _T, _X, _Y, _H, _V, _A, _YAW, _CX, _LEN, _WID, _HGT = _ATTRS = range(11)
-#: A command's numbers.
-COMMAND_VALUES = attrgetter("t", "speed", "yaw_rate")
+_COMMAND = attrgetter("t", "speed", "yaw_rate")
 
 
-def step_values(frame: Frame, command: ControlCommand | None) -> list[float]:
-    """A step's numbers as `StepPacker.pack_run` reads them: the ego's `ENTITY_VALUES`, each object's, the frame's
-    time, then the command's `COMMAND_VALUES` if there is one. (`RunWriter.frame` appends the same, inline.)"""
-    values = [*ENTITY_VALUES(frame.ego)]
+def add_step_values(values: list[float], frame: Frame, command: ControlCommand | None) -> None:
+    """Append a step's numbers as `StepPacker.pack_run` reads them: the ego's `_ENTITY` attributes, each object's,
+    the frame's time, then the command's `_COMMAND` attributes if there is one. (The float objects themselves:
+    packing each step into doubles at once cost the loop more than keeping them, session 19.)"""
+    values += _ENTITY(frame.ego)
     for obj in frame.objects:
-        values += ENTITY_VALUES(obj)
+        values += _ENTITY(obj)
     values.append(frame.t)
     if command is not None:
-        values += COMMAND_VALUES(command)
-    return values
+        values += _COMMAND(command)
 
 
 def cast_key(frame: Frame, command: ControlCommand | None) -> tuple:
@@ -90,19 +88,14 @@ def step_packer(frame: Frame, command: ControlCommand | None, cids: Sequence[int
 
 class StepRun:
     """Consecutive steps of one layout, to be packed together: their receive times (None: now) and their numbers,
-    flat, in `step_values`' order."""
+    flat, in `add_step_values`' order."""
 
     __slots__ = ("packer", "received", "values")
 
-    def __init__(self, packer: "StepPacker", received: Sequence[int | None] = (),
-                 values: Sequence[float] = ()) -> None:
+    def __init__(self, packer: "StepPacker", received: Sequence[int | None], values: Sequence[float]) -> None:
         self.packer = packer
-        self.received: list[int | None] = list(received) if not isinstance(received, list) else received
-        self.values: list[float] = list(values) if not isinstance(values, list) else values
-
-    def add(self, received: int | None, frame: Frame, command: ControlCommand | None) -> None:
-        self.received.append(received)
-        self.values += step_values(frame, command)
+        self.received = received
+        self.values = values
 
 
 _DOUBLES: dict[int, struct.Struct] = {}
@@ -253,7 +246,7 @@ class StepPacker:
 
     def pack_run(self, times: np.ndarray, values: Sequence[float], out: np.ndarray | None = None) -> np.ndarray:
         """The records of a run of steps of this layout, as one array of bytes: step k's log (and publish) times
-        are times[k], times[k] + 1, ... in record order; its numbers are the k-th `step_values` stretch of
+        are times[k], times[k] + 1, ... in record order; its numbers are the k-th `add_step_values` stretch of
         `values`. `out`: the uint8 array (of `size` bytes per step) to pack them into, else a new one."""
         n, m = len(times), self._n_entities
         width = len(_ATTRS)
