@@ -2882,6 +2882,15 @@ PROBES: tuple[Probe, ...] = (
            "made a left turn into an alley", "turned left into a parking garage", "crossed over the median",
            "swerved to the left, crossing the curbed median", "jumped the median", "drove across the center divider"),
           _position, [("R7", "left")]),
+    Probe("'stopped' after an article or a preposition, before a traffic noun: what the AV went by (session 19)",
+          "The Waymo AV was traveling southbound on [XXX] in the center lane, {w} in the leftmost lane, when a "
+          "pedestrian stepped out from between the vehicles and crossed the path of the Waymo AV. The front of the "
+          "Waymo AV made contact with the pedestrian.",
+          ("passing a queue of stopped traffic", "passing a line of stopped cars", "going past stopped vehicles",
+           "driving alongside stopped traffic", "passing stopped traffic", "overtaking a row of stopped cars",
+           "moving past a line of stopped vehicles", "traveling beside stopped traffic", "passing the stopped traffic",
+           "proceeding by stopped cars"),
+          _ego, ("moving", "a")),
 )
 
 

@@ -1991,4 +1991,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         'driver side of another pickup truck traveling two lanes to the right of the Waymo AV. At the time of '
         'the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode. All three vehicles sustained '
         'damage.'),
+    'nhtsa-sgo-ads-30270-9822-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9822,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 4:53 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Ari'
+        'zona was in a collision involving a domestic animal on [XXX]. The Waymo AV was traveling southbound '
+        'on [XXX]in the center of three southbound lanes, passing a queue of stopped traffic in the leftmost '
+        'lane, when a domestic animal emerged from a gap between vehicles in the leftmost lane and crossed th'
+        'e path of the Waymo AV. The front of the Waymo AV came in contact with the animal, which did not sur'
+        "vive. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Waymo is"
+        ' reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or'
+        ' correct its reporting with additional information as it may become available.'),
 }

@@ -25,3 +25,10 @@ def test_approaching_after_a_standing_places_it() -> None:
     moved = ("The Waymo AV was stopped at a red light on Mission Street, and then began approaching the intersection "
              "with 16th Street when a sedan traveling behind the Waymo AV made contact with its rear bumper.")
     assert _ego("t", moved) != ("stopped", "")
+
+
+def test_stopped_before_a_traffic_noun_is_its_adjective() -> None:
+    # "was traveling southbound on [XXX] in the center of three southbound lanes, passing a queue of stopped traffic
+    # in the leftmost lane, when a domestic animal emerged": "stopped" tells the traffic the AV went by, not a stop
+    # of the AV's (`a`, not `ahi`).
+    assert _ego("nhtsa-sgo-ads-30270-9822-v1") == ("moving", "a")

@@ -503,6 +503,8 @@ _NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\bla
 # (an adverb of the stop may come between: "stopped completely in a queue of traffic")
 # A group noun of traffic right after a participle ("approaching traffic", "passing cross-traffic"): its adjective.
 _BEFORE_TRAFFIC = compile_gated(r"\s+(?:cross[\s-]?)?traffic\b", re.I)
+#: The word before a participle used as an adjective of a noun ("a queue of stopped traffic", "past stopped cars").
+_ADJECTIVE_PLACE = compile_gated(r"\b(?:of|a|an|the|past|passing|by|between|among|alongside|beside)\s+$", re.I)
 _IN_QUEUE = compile_gated(r"\s+(?:\w+ly\s+)?in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
 _NEGATED = compile_gated(r"\b(?:not|n't|never|without|unable\s+to|failed\s+to)\s+(?:\w+\s+){0,2}$", re.I)
 _NEW_CLAUSE = compile_gated(r"\b(?:and|then|but)\s+(?:then\s+)?$", re.I)
@@ -856,8 +858,11 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             # road (a carport, a lot, a garage) is left across the way, not from the curb into a lane
             code = "m"
         if code == "h" and s[b:e].lower() == "stopped" and fre.match(r"\s+(?:traffic|vehicles|cars|queue)\b", s[e:]) \
-                and any(x.code == "S" and x.who == who for x in out):
-            continue  # "EGO was stopped ... behind stopped traffic": the queue's state, the AV's told already
+                and (any(x.code == "S" and x.who == who for x in out) or
+                     (who == -1 and _ADJECTIVE_PLACE.search(s, max(0, b - 12), b))):
+            # "EGO was stopped ... behind stopped traffic": the queue's state, the AV's told already; "passing a queue
+            # of stopped traffic": the adjective of what the AV went by, after an article or a preposition
+            continue
         if code in "hl" and fre.search(r"\bhad\s+(?:already\s+|just\s+)?$", before, re.I):
             # "had come to a stop", "had pulled up to the curb ... for a requested passenger pickup": where it stood
             # when the story begins, not an event of it
