@@ -6,6 +6,32 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-9910-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9910, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 1:23 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, Calif'
+        'ornia was in a collision involving an SUV on [XXX]. The Waymo AV was traveling east on [XXX], then pulled over'
+        ' at the curb for a passenger drop-off. The Waymo AV passenger opened the rear driver side door and was attempt'
+        'ing to exit the Waymo AV. An SUV traveling east on [XXX] attempted to pass the Waymo AV on the left, and the p'
+        'assenger side of the SUV made contact with the open back driver side door of the stationary Waymo AV. The pass'
+        'engers in the Waymo AV were not belted at the time of the collision, likely because they were at a drop-off lo'
+        "cation preparing to exit the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in au"
+        'tonomous mode. The SUV sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General'
+        ' Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may become ava'
+        'ilable.'),
+    'nhtsa-sgo-ads-30413-6684-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-6684, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The May vehicle was traveling eastbound on [XXX] in autonomy. The vehicles internal facing cameras show that t'
+        'he operator started to fall asleep while applying physical input to the steering wheel. The road started to be'
+        'nd to the left. The physical input from the operator was enough to deviate the vehicle from its intended path '
+        'but not enough to trigger an intervention and take the vehicle out of autonomy. The vehicle, going straight as'
+        ' the road curved, then struck the curb, resulting in minor vehicle damage. Due to the vehicle being off path, '
+        'the vehicle begins to stop. This occurs as the operator wakes up. The operator was not injured and no third pa'
+        'rties were impacted or otherwise affected by the incident. The local May Mobility site staff did not notice an'
+        'y signs of fatigue from this operator prior to going out in the vehicle. The operator had responded to audio c'
+        'heck-ins from site staff at a regular interval. We are exploring additional risk mitigation options for in-cab'
+        'in health monitoring, in addition to the existing cameras and radio check-ins.'),
     'nhtsa-sgo-ads-30270-8139-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8139, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -257,7 +257,7 @@ _NOT_HEAD_AFTER = compile_gated(r"^\s*(?:(?:(?:and|or)\s+|/\s*)[\w-]+\s+lanes?\b
                              r"lines?|tracks?|stations?|control\s+units?|controls?|systems?|computers?|software|"
                              r"tires?|tyres?|wheels?|"
                              r"operators?|sensors?|side|seat|seating|mode|gear|pedal|bumper|lights?|"
-                             r"occupants?|passengers?|lengths?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
+                             r"occupants?|passengers?|lengths?|damages?|cameras?|footage|owners?)\b(?!-)", re.I)  # "a motorcyclist lane(-)splitting" is a rider
 _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled)\s+pick-?ups?\b|"
                               r"\bfor\s+(?:a|the|its|an\s+\w+)\s+pick-?up\s*(?:[.,;]|$|\b(?:and|when|while|at|on|in|facing)\b)|"
                               r"\bpick-?up\s+(?:location|zone|spot|point|area|lane)\b|"

@@ -62,7 +62,8 @@ _AV_DOOR_BEFORE = compile_gated(r"(?:\bEGO(?:'s)?\s+(?:(?:rear|front|back)\s+)?(
 # ("EGO's open rear passenger door", "the rear door of EGO": the words between the owner and "door" name its place)
 _AV_DOOR_NAMED = compile_gated(r"\bEGO's\s+(?:(?:open|opened|front|rear|back|left|right|driver|passenger|side|"
                                r"sliding|'s)\s+){0,4}$")
-_AV_DOOR_AFTER = compile_gated(r"s?\s+of\s+EGO\b")
+# ("the open back driver side door of the stationary EGO": a word of its state may stand between)
+_AV_DOOR_AFTER = compile_gated(r"s?\s+of\s+(?:the\s+)?(?:[\w-]+\s+)?EGO\b")
 # "the (open) door of a parked car": the vehicle named right after the door owns it.
 _OF_OWNER = compile_gated(r"^\s*(?:\w+\s+){0,3}?of\s+(?:a|an|the|its|their)\s*$", re.I)
 
@@ -488,6 +489,11 @@ def struck_by_party(d: Doc, e: Entity) -> bool:
     return any(m.sent not in d.summary and _met_by_party(d, m) for m in e.mentions)
 
 
+def _moved(d: Doc, who: int) -> bool:
+    """Is any move of party `who` told (O, P: out of a parking spot)?"""
+    return any(a.who == who and a.code in "abcdefgijkmFTOP" for a in d.acts)
+
+
 def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
     parties, obstacles = [], []
     for e in d.ents:
@@ -499,7 +505,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start) and \
                 not _in_chain(d, e, first):
             continue
-        moved = any(a.who == e.idx and a.code in "abcdefgijkmFTOP" for a in d.acts)  # O, P: out of a parking spot
+        moved = _moved(d, e.idx)
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
                 acted_for(d, e, around_only=True) and not fre.search(
                     r"\b(?:oncoming|approaching|moving|traveling|passing)\b", " ".join(m.mods for m in e.mentions)) and \
@@ -517,7 +523,10 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                                   for m in e.mentions) and not moved:
             continue  # "a skateboard that escaped control of a nearby pedestrian": named only as an owner
         if e.idx in d.doors:
-            obstacles.append(e)
+            if is_partner or e.idx in d.struck or not _moved(d, d.doors[e.idx]):
+                obstacles.append(e)
+            # (else the door of a vehicle that moved and did the touching, "as they did so with the door open, the
+            # passenger car started to proceed straight and made contact": the vehicle takes part, not its door)
         elif e.kind == "party" and e.parked and not moved:
             if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e):
                 obstacles.append(e)

@@ -1,0 +1,39 @@
+"""Issue 13, who counts and what the other parties do, read from real NHTSA SGO narratives labelled before the
+extractor ran on them (tests/text/sgo4/study4.jsonl; each entry's `source` beside its text in tests/text/quoted.py).
+One test per reading mechanism; each asserts what sketch.md's rules and the official gold's conventions give.
+"""
+
+from __future__ import annotations
+
+from txt2sce_ros.sketch import Sketch
+from txt2sce_ros.text.extractor import extract
+
+from .quoted import QUOTED
+
+
+def _sketch(report_id: str, text: str | None = None) -> Sketch:
+    return extract(text if text is not None else QUOTED[report_id][1], report_id)
+
+
+def test_a_vehicle_noun_naming_the_damage_is_no_party() -> None:
+    # "then struck the curb, resulting in minor vehicle damage": "vehicle" names the damage, not a vehicle; the AV
+    # struck the curb alone ("no third parties were impacted").
+    sk = _sketch("nhtsa-sgo-ads-30413-6684-v1")
+    assert (len(sk.npcs), [o.category for o in sk.obstacles]) == (0, ["barrier"])
+    for words in ("vehicle camera footage", "car damage", "vehicle owner"):
+        text = QUOTED["nhtsa-sgo-ads-30413-6684-v1"][1].replace("minor vehicle damage", f"minor {words}")
+        assert not _sketch("t", text).npcs, words
+
+
+def test_the_av_s_own_door_is_no_obstacle_wherever_it_is_named() -> None:
+    # "the passenger side of the SUV made contact with the open back driver side door of the stationary Waymo AV":
+    # the AV's own door (a word of its state between "of" and the AV's name); the SUV is the party touched.
+    sk = _sketch("nhtsa-sgo-ads-30270-9910-v1")
+    assert (sk.obstacles, sk.collision.with_) == ((), "npc1")
+
+
+def test_the_door_of_a_vehicle_that_moved_into_the_av_is_no_obstacle() -> None:
+    # "as they did so with the door open, the passenger car started to proceed straight and made contact with the
+    # rear of the Waymo AV": the car moved and touched the AV; its open door took no part of its own.
+    sk = _sketch("nhtsa-sgo-ads-30270-7726-v1")
+    assert (sk.obstacles, sk.collision.with_, sk.npcs[0].actions) == ((), "npc1", "i")
