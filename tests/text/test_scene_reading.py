@@ -28,8 +28,12 @@ HELD = {
     "dev_gold_study": {"npc_quantity": 0.98, "npc_type": 0.95, "npc_position": 0.87, "npc_events": 0.89,
                        "obstacle_quantity": 0.99, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.96,
                        "layout": 0.96, "signal_state": 0.95},
+    # (dev_gold_check obstacle quantity 0.925 -> 0.90 in session 19: one report's door obstacle went with a rule the
+    # studyable sets decide - the AV's own door named after a word of its state, and the door of a vehicle that moved
+    # and did the touching, are no obstacle; door readings over the 461 studyable gold sketches 455 -> 458 of 461,
+    # study4's held half among the gains; the check set was not inspected)
     "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.63, "npc_events": 0.80,
-                       "obstacle_quantity": 0.92, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.90},
+                       "obstacle_quantity": 0.90, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.90},
 }
 #: The user's figure (complete reports whose conflict is reproduced exactly), held as a count per set.
 # (dev_gold_check 16 -> 15 in session 15: one report's layout moved by the spec's own reading, an intersection the AV
