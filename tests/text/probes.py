@@ -2790,6 +2790,23 @@ PROBES: tuple[Probe, ...] = (
            "about to enter the intersection with 16th Street", "and came to a stop at the intersection with 16th "
            "Street", "and was stopped in traffic at the intersection with 16th Street"),
           lambda sk: sk.road.layout, lambda w: "junction4" if "stop" in w else "straight"),
+    Probe("an intersection the AV had gone through, the AV named or not: behind it, not the scene (session 19)",
+          "On May 3, 2024 at 2:10 PM PT a Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) operating in Tempe, Arizona "
+          "was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling southbound on "
+          "[XXX] in the rightmost lane of three lanes. {W}, a passenger car in the middle lane moved into the "
+          "rightmost lane and made contact with the front driver side of the Waymo AV.",
+          ("after the Waymo AV crossed the intersection with [XXX]", "after the Waymo AV had cleared the intersection",
+           "after it passed through the intersection", "after the Waymo AV proceeded through the intersection",
+           "after traveling through the intersection", "having crossed the intersection",
+           "after the Waymo AV exited the intersection", "after the Waymo AV went through the intersection",
+           "after driving through the intersection", "after the Waymo AV had traversed the intersection"),
+          lambda sk: sk.road.layout, "straight"),
+    Probe("a road's curve told by any of its nouns (session 19)",
+          "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
+          "contact with the curb.",
+          ("a slight curvature", "a sharp curve", "a gentle bend", "several curves", "a curvy section",
+           "winding sections", "two bends", "a curved section"),
+          lambda sk: sk.road.layout, "curve"),
     Probe("the AV's move into a curbside lane named by its kind is to the right (session 18)",
           "The Waymo AV was traveling northbound on Mission Street. The Waymo AV {w}, and a sedan traveling behind the "
           "Waymo AV made contact with its rear bumper.",

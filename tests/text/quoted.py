@@ -32,6 +32,33 @@ QUOTED: dict[str, tuple[str, str]] = {
         'y signs of fatigue from this operator prior to going out in the vehicle. The operator had responded to audio c'
         'heck-ins from site staff at a regular interval. We are exploring additional risk mitigation options for in-cab'
         'in health monitoring, in addition to the existing cameras and radio check-ins.'),
+    'nhtsa-sgo-ads-30270-7012-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7012,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2023 at 7:02 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Tempe, Ariz'
+        'ona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling south'
+        'bound on [XXX] in the rightmost lane of three lanes in the southbound direction. After the Waymo AV '
+        'crossed the intersection with [XXX], an SUV in the leftmost lane initiated a right lane change in fr'
+        'ont of a passenger car in the middle lane. The passenger car in the middle lane then moved into the '
+        'rightmost lane, and the passengers side of the passenger car made contact with the front drivers sid'
+        'e of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mo'
+        'de. Both vehicles sustained damage. Waymo is reporting this crash under Request No. 2 of Standing Ge'
+        'neral Order 2021-01. Waymo may supplement or correct its reporting with additional information as it'
+        ' may become available.'),
+    'nhtsa-sgo-ads-30413-8861-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-8861,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A May autonomous vehicle was traveling in the right lane of a two-lane road, maintaining a steady sp'
+        'eed of 30 mph, in compliance with the posted speed limit. The road was characterized by light traffi'
+        'c, with a slight curvature that transitioned from a gentle rightward sway to a leftward sway. As the'
+        ' vehicle navigated this transition of curvature, the May vehicle made contact with the curb, causing'
+        ' a flat tire. At the time of the incident, no other vehicles or pedestrians were present in the imme'
+        'diate vicinity, and there were no external factors such as obstructions or adverse weather condition'
+        's influencing the vehicles path. Speed was reduced from 30mph to 25mph after this event and tested ('
+        'and worked to mitigate the problem in that area) and now will be reduced to 22 which is the sweet sp'
+        'ot for most areas on the route. The May vehicle chose to maneuver at the curb due to perceived risk '
+        'from a car in an adjacent lane, so May is increasing the allowed distance to the curb to mitigate ho'
+        'w close the vehicles are allowed to get.'),
     'nhtsa-sgo-ads-30270-8139-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8139, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

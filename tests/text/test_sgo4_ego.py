@@ -32,3 +32,20 @@ def test_stopped_before_a_traffic_noun_is_its_adjective() -> None:
     # in the leftmost lane, when a domestic animal emerged": "stopped" tells the traffic the AV went by, not a stop
     # of the AV's (`a`, not `ahi`).
     assert _ego("nhtsa-sgo-ads-30270-9822-v1") == ("moving", "a")
+
+
+def _layout(report_id: str, text: str | None = None) -> str:
+    return extract(text if text is not None else QUOTED[report_id][1], report_id).road.layout
+
+
+def test_an_intersection_the_av_had_crossed_is_behind_it() -> None:
+    # "After the Waymo AV crossed the intersection with [XXX], an SUV in the leftmost lane initiated a right lane
+    # change ...": the junction was left behind before the interaction; the summary's "on [XXX] at [XXX]" is where
+    # the report was filed from (`straight`).
+    assert _layout("nhtsa-sgo-ads-30270-7012-v1") == "straight"
+
+
+def test_curvature_is_a_curve() -> None:
+    # "The road was characterized by light traffic, with a slight curvature that transitioned from a gentle rightward
+    # sway to a leftward sway" (`curve`).
+    assert _layout("nhtsa-sgo-ads-30413-8861-v1") == "curve"

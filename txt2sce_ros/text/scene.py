@@ -50,8 +50,11 @@ _NOT_JUNCTION = compile_gated(r"\b(?:near|before|past|from|close\s+to)\s+the\s+i
                            r"\bbefore\s+(?:reaching\s+)?the\s+intersection|\bnear\s+the\s+intersection|"
                            # a junction left behind: "after clearing the intersection", "having passed through the
                            # intersection"
-                           r"\b(?:after|having|had)\s+(?:clear|pass|exit|travers|cross)(?:ed|ing)\s+(?:through\s+)?"
-                           r"the\s+intersection\b", re.I)
+                           # (the AV named between: "After the Waymo AV crossed the intersection with [XXX], an SUV
+                           # ..."; or gone through it by another verb: "after EGO proceeded through the intersection")
+                           r"\b(?:after|having|had)\s+(?:(?:EGO|it)\s+(?:had\s+)?)?(?:(?:clear|pass|exit|travers|cross)"
+                           r"(?:ed|ing)\s+(?:through\s+)?|(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|went|going|drove|"
+                           r"driving)\s+through\s+)the\s+intersection\b", re.I)
 # Someone coming out of a driveway, a lot or a garage (not out of a parking space: a parking manoeuvre).
 _OUT_OF_A_LOT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+){0,2}"
                               r"(?:parking\s+(?:lot|garage|structure)|driveway|garage|alley)\b", re.I)
@@ -117,7 +120,7 @@ _PARKING = compile_gated(r"\b(?:in|inside|within|through|at)\s+(?:a|an|the)\s+(?
 _LOT_EDGE = compile_gated(r"\b(?:(?:entrance|entry|exit|driveway|gate)\s+(?:of|to|from|into)\s+(?:a|an|the)\s+(?:[\w'-]+\s+){0,2}?"
                           r"(?:parking\s+(?:lot|garage|structure|deck|area)|garage|lot|car\s+park)|(?:parking\s+(?:lot|garage|"
                           r"structure|deck)|garage|lot)\s+(?:entrance|entry|exit|driveway|gate))\b", re.I)
-_CURVE = compile_gated(r"\b(?:curve|curved|curving|bend|winding)\b", re.I)
+_CURVE = compile_gated(r"\b(?:curve|curved|curves|curving|curvature|curvy|bend|bends|winding)\b", re.I)
 _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
                       # (a run told by another verb of going on a road: "was en route north on [XXX]"; a bare "was in
