@@ -405,3 +405,43 @@ def test_an_oncoming_party_turning_into_a_lot_or_crossing_the_median_is_on_the_a
     # AV stopped behind a queue in a left turn lane at the intersection.
     p = _party("dmvca-waymo-20241014-r619")
     assert (p.position, p.lane) == ("R7", "left")
+
+
+def _said(report_id: str, old: str, new: str, k: int = 0) -> tuple[str, str | None]:
+    """The place of party `k` in the real narrative with one wording replaced (each occurrence) by another of the
+    same fact."""
+    text = _TEXTS[report_id][1]
+    assert old in text
+    p = extract(text.replace(old, new), report_id).npcs[k]
+    return p.position, p.lane
+
+
+def test_a_heading_told_in_the_simple_past_places_the_party_as_the_progressive_does() -> None:
+    # "The Waymo AV was traveling east on [XXX] ... A pickup truck traveling west on [XXX] approached the Waymo AV"
+    # (nhtsa-sgo-ads-30270-8141-v1, study3: R7/left), told "traveled east", "traveled west" as police write it.
+    assert _said("nhtsa-sgo-ads-30270-8141-v1", "traveling", "traveled") == ("R7", "left")
+    assert _said("nhtsa-sgo-ads-30270-8141-v1", "was traveling", "drove") == ("R7", "left")
+
+
+def test_an_av_standing_at_the_right_edge_in_other_words_puts_the_road_s_lanes_on_its_left() -> None:
+    # "The Waymo AV was stopped on the right side of southwestbound [XXX] for a passenger pick-up when an SUV
+    # traveling in the rightmost lane ... passed the Waymo AV" (nhtsa-sgo-ads-30270-9436-v1, study3: R6/left), the
+    # standing told as the road reading's other words tell it.
+    for standing in ("was at a standstill", "was sitting", "had come to a stop", "was at a stop"):
+        assert _said("nhtsa-sgo-ads-30270-9436-v1", "was stopped", standing) == ("R6", "left")
+
+
+def test_a_side_of_the_av_s_body_is_no_lane_beside_it() -> None:
+    # "The Waymo AV was rear ended by the truck, causing minor damage to the right rear bumper of the Waymo AV"
+    # (csvr-waymo-20220103-s122, study2: R6/same), told "to the Waymo AV's right rear bumper": a part of the AV, not
+    # a place to its right.
+    assert _said("csvr-waymo-20220103-s122", "the right rear bumper of the Waymo AV",
+                 "the Waymo AV's right rear bumper") == ("R6", "same")
+
+
+def test_the_party_s_own_flank_after_its_pass_is_no_side_it_passed_on() -> None:
+    # "As the heavy truck was passing the stopped Waymo AV, the passenger side of the heavy truck made contact with
+    # the rear driver side corner of the Waymo AV" (csvr-waymo-20241214-s355, study2: R6/same after stopping behind
+    # it), told "the right side of the heavy truck": the truck's own side, not the AV's side it passed on.
+    assert _said("csvr-waymo-20241214-s355", "the passenger side of the heavy truck",
+                 "the right side of the heavy truck") == ("R6", "same")

@@ -539,8 +539,10 @@ _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\
                          r"(?<=\w\s)(?<!EGO\s)(?:waiting|queued|idling|sitting|standing)\s+(?:\w+ly\s+|still\s+)?"
                          r"(?:in|at|on|for|behind|ahead|to)\b",
                          re.I)
+# (the simple past too, as police and operators write it: "a pickup truck traveled west on [XXX]", "drove south")
 _HEADING = compile_gated(rf"\b(?:(?:traveling|travelling|heading|headed|facing|driving|proceeding|going|approaching|"
-                      rf"moving|riding|operating|cruising|navigating|en\s+route|was)\s+"
+                      rf"moving|riding|operating|cruising|navigating|en\s+route|was|traveled|travelled|drove|"
+                      rf"proceeded|went|moved|rode|cruised|continued|continuing)\s+"
                       # "traveling at approximately 20 mph northwest": a speed told between the verb and its heading
                       rf"(?:at\s+(?:approximately\s+|about\s+|around\s+|roughly\s+)?\d+\s*(?:mph|miles\s+per\s+hour|"
                       rf"km/h)\s+)?(?:in\s+the\s+)?(?:north\s+)?({_DIR})(?:bound|ward)?\b|"

@@ -80,9 +80,10 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # wide right turn from eastbound [XXX] into the left lane of southbound [XXX]. As the bus passed the stopped
         # EGO")
         # The side it passed on: said with the pass, else the side of the AV it touched, else a side named just
-        # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides).
-        return "R6", (passing.group(1) or "").lower() or cside or side_named(ctx[passing.end():passing.end() + 30]) or \
-            "same", True
+        # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides; nor
+        # "As the heavy truck was passing the stopped EGO, the right side of the heavy truck made contact").
+        after = _OWN_FLANK.sub(lambda m: " " * len(m.group(0)), ctx[passing.end():passing.end() + 60])[:30]
+        return "R6", (passing.group(1) or "").lower() or cside or side_named(after) or "same", True
     if fre.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"
                  r"trailing)\s+(?:directly\s+)?(?:the\s+)?(?:EGO|it|us|our)\b|\b" + FROM_BEHIND + r"|\bfrom\s+the\s+rear\b|"
@@ -90,8 +91,9 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                  r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
                  ctx, re.I) or any(fre.search(r"\b(?:following|trailing)\s*$", p, re.I) for p in pres):
         side = None
-        if fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", ctx, re.I):
-            side = side_named(fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", ctx, re.I).group(0))
+        sides = _OWN_FLANK.sub(lambda m: " " * len(m.group(0)), ctx)  # (the party's own flank is no side it passed on)
+        if fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", sides, re.I):
+            side = side_named(fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", sides, re.I).group(0))
         elif fre.search(r"\bbehind\s+and\s+to\s+the\s+(left|right)", ctx, re.I):
             side = side_named(ctx)
         if side is None and fre.search(r"\bsidewalk\b|\bbike\s+lane\b", ctx, re.I):
@@ -450,6 +452,9 @@ _CLAUSE_END = re.compile(r"[;]|\b(?:when|while|as|but|after|before|because|until
 
 # The party's own flank named as where it was touched: "the passenger side of the sedan", "the rear driver side door
 # of the vehicle" (a corner or a bumper may be an off-centre rear-end: no flank).
+# ... and that flank named before its owner, wherever it stands ("the right side of the heavy truck", "its left mirror")
+_OWN_FLANK = compile_gated(r"\b(?:its|their)\s+(?:(?:front|rear)[- ])?(?:left|right)\b|\b(?:left|right)(?:[- ](?:front|rear))?[- ]"
+                           r"(?:side|door|quarter|fender|panel|mirror)\w*\s+of\s+(?:the|a|an|its|their)\s+(?!EGO\b)", re.I)
 _FLANK_OF = compile_gated(r"\b(?:(?:front|rear)[- ])?(left|right|driver(?:'s)?|passenger(?:'s)?)(?:[- ](?:front|rear))?[- ]"
                           r"(?:side|door|quarter|fender|panel)\w*(?:\s+(?:door|panel))?\s+of\s+(?:the|a|an|that)\s+"
                           r"(?:[\w-]+\s+){0,2}$", re.I)

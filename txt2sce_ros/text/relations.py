@@ -47,6 +47,7 @@ from .fastre import compile_gated
 from .mentions import Entity, Mention
 from .positions import AV_CLAUSE, BACKING, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
 from .lexicon import CARDINALS
+from .scene import _STANDING as STANDING
 from .story import ONCOMING, TURN_WORDS, Doc, before_contact, context, ego_contact_part, ends_phrase, heading
 
 _SIDE = r"(left|right|driver(?:'s)?|passenger(?:'s)?)"
@@ -55,7 +56,10 @@ _LANE_CUES = compile_gated(
     r"\b(?:lane|lanes)\s+(?:immediately\s+|directly\s+)?to\s+(?:the\s+|our\s+|EGO's\s+)?(left|right)(?:\s+of\s+(?:EGO|it|us))?|"
     r"\b(left|right)(?:-hand|most)?\s+(?:adjacent\s+|neighbou?ring\s+|parallel\s+)?(?:travel\s+)?lane\b|"
     r"\b(?:adjacent|neighbou?ring)\s+(left|right)\s+lane\b|"
-    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+(?:EGO|us)\b|\b(?:on|to)\s+(?:EGO's|our)\s+(left|right)\b|"
+    r"\bto\s+(?:the\s+)?(left|right)\s+(?:side\s+)?of\s+(?:EGO|us)\b|"
+    # (not a part of the AV's body: "minor damage to EGO's right rear bumper")
+    r"\b(?:on|to)\s+(?:EGO's|our)\s+(left|right)\b(?![- ](?:(?:front|rear|back)\b|(?:side[- ])?(?:door|corner|quarter|"
+    r"fender|mirror|bumper|wheel|tire|panel)))|"
     r"\bon\s+its\s+(left|right)\b|"
     # "merged into its lane from the left": where it came from, beside the AV
     r"\binto\s+(?:EGO's|its|our)\s+lane\s+from\s+(?:the\s+|EGO's\s+|its\s+)?(left|right)\b(?!\s+(?:turn|side\s+of))|"
@@ -322,8 +326,9 @@ def av_lane_rank(d: Doc) -> float | None:
 _CURB_RANK = 10.0  # beyond the rightmost lane (9): the curb, the parking lane
 # The AV standing at the right curb, or at the right edge of the road ("was parked along the curb", "was stopped on
 # the right side of southwestbound [XXX] for a passenger pick-up").
+# (standing told in any of the words the road reading knows: "was sitting", "was at a standstill", "had come to a stop")
 AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|had|remained)\s+(?:\w+\s+)?(?:parallel\s+)?"
-                           r"(?:parked|stopped|stationary|standing|waiting|idling|pulled\s+over)\s+(?:(?:at|along|against|by)\s+the\s+"
+                           rf"(?:parked|pulled\s+over|{STANDING})\s+(?:(?:at|along|against|by)\s+the\s+"
                            r"(?:right\s+)?curb\b|"
                            r"on\s+the\s+right\s+(?:side|edge|shoulder)\s+of\s+(?:the\s+)?(?:road|roadway|street|"
                            r"(?:north|south|east|west)+bound\b))", re.I)
