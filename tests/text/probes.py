@@ -304,6 +304,29 @@ _REAR_CORNER_MOVES = {
 
 
 PROBES: tuple[Probe, ...] = (
+    # Session 19 (who counts, what the parties do), from study4's fresh narratives: a stop of the party's own, then
+    # a move made to pass the AV (any verb of moving with the pass as its purpose) starts it off again.
+    Probe("a party that stopped behind the AV, then moved to pass it",
+          "The Waymo AV was stopped at the curb on Mission Street for a passenger pickup when a passenger car "
+          "approached the Waymo AV from behind and came to a stop. The passenger car then {w} the Waymo AV on the "
+          "left, and the passenger side of the passenger car made contact with the rear driver side of the Waymo AV.",
+          ("maneuvered to pass", "moved to pass", "veered to pass", "steered to pass", "attempted to pass",
+           "tried to pass", "began to pass", "passed", "proceeded to pass", "started to pass", "overtook",
+           "overtakes"),
+          _npc_actions, [("moving", "ahi")]),
+    # The AV's own door, whatever word of its state stands between "of" and the AV's name.
+    Probe("the AV's own open door met by a passing party",
+          "A Waymo AV was traveling east on Mission Street, then pulled over at the curb for a passenger drop-off. An "
+          "SUV traveling east on Mission Street attempted to pass the Waymo AV on the left, and the passenger side of "
+          "the SUV made contact with the open rear door of the {w} Waymo AV.",
+          ("stationary", "stopped", "parked", "idle", "standing"),
+          lambda sk: (len(sk.obstacles), sk.collision.with_), (0, "npc1")),
+    # A vehicle noun naming the damage is no party.
+    Probe("a vehicle noun before the damage",
+          "The Zoox vehicle was traveling eastbound on Main Street in autonomy. The road curved to the left and the "
+          "Zoox vehicle struck the curb, resulting in minor {w}. No other party was involved.",
+          ("vehicle damage", "car damage", "vehicle damages", "damage to the vehicle"),
+          lambda sk: len(sk.npcs), 0),
     _scenes("the AV told in the first person: the contact and the party's place", lambda sk: (
             sk.collision.with_, [(p.position, p.lane) for p in sk.npcs]), (
             ("Our vehicle was stopped at a red light. A car behind us struck our rear bumper.",

@@ -6,6 +6,17 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-9853-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9853, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 7:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, Calif'
+        'ornia was in a collision involving a passenger car on [XXX] The Waymo AV was stopped at the curb facing southw'
+        'est on [XXX] for a passenger pickup when a passenger car approached the Waymo AV from behind, and came to a st'
+        'op. The passenger car then maneuvered to pass the Waymo AV on the left, and the passenger side of the passenge'
+        'r car made contact with the rear driver side of the stationary Waymo AV. At the time of the impact, the Waymo '
+        "AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash "
+        'under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with addi'
+        'tional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9910-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9910, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -37,3 +37,17 @@ def test_the_door_of_a_vehicle_that_moved_into_the_av_is_no_obstacle() -> None:
     # rear of the Waymo AV": the car moved and touched the AV; its open door took no part of its own.
     sk = _sketch("nhtsa-sgo-ads-30270-7726-v1")
     assert (sk.obstacles, sk.collision.with_, sk.npcs[0].actions) == ((), "npc1", "i")
+
+
+def test_a_redaction_that_swallowed_the_period_still_ends_the_sentence() -> None:
+    # "... involving a passenger car on [XXX] The Waymo AV was stopped at the curb ...": the opening summary ends at
+    # the redacted street; the telling after it is read as told (the party's approach and stop are no summary).
+    sk = _sketch("nhtsa-sgo-ads-30270-9853-v1")
+    assert sk.npcs[0].actions.startswith("ah")
+
+
+def test_a_move_made_to_pass_after_a_stop_of_its_own_moves_the_party_off() -> None:
+    # "approached the Waymo AV from behind, and came to a stop. The passenger car then maneuvered to pass the Waymo
+    # AV on the left": approach, stop, move off (`ahi`); the pass is the purpose the move achieved.
+    sk = _sketch("nhtsa-sgo-ads-30270-9853-v1")
+    assert (sk.npcs[0].start, sk.npcs[0].actions) == ("moving", "ahi")

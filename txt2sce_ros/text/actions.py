@@ -370,12 +370,15 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # ("the lane of travel", "its direction of travel": the noun, no manoeuvre)
     ("a", r"\b(?:(?<!of\s)travel(?:l)?(?:ed|ing|s)?|driving|drove|drives|proceed(?:ed|ing|s)?(?!\s+to\s+(?:revers|back))|heading|headed|approach(?:ed|ing|es)|"
           r"continu(?:ed|ing)\s+straight|going\s+straight|went\s+straight|pass(?:ed|ing|es)|follow(?:ed|ing)|near(?:ed|ing)|"
+          # the infinitive of a pass a party set out on ("then maneuvered to pass EGO on the left", "attempted to pass"):
+          # after a stop of its own, a move off (`i`)
+          r"(?<=\bto\s)pass\b(?!\s+(?:through|by)\b)|"
           # "went past EGO on the left", "went by EGO": a pass told with a verb of going
           r"(?:went|going|drove|driving|moved|moving|rode|riding)\s+past|"
           r"(?:went|going|drove|driving|rode|riding)\s+by(?=\s+(?:the\s+)?(?:\w+\s+)?EGO\b)|"
           r"drift(?:ed|ing|s)|enter(?:ed|ing|s)\s+the\s+intersection|"
           r"pull(?:ed|ing)\s+(?:out\s+)?into\s+the\s+intersection|riding|rode|cruising|"
-          r"moving|tailgating|overtak(?:e|ing|en)|crossing\s+the\s+intersection|"
+          r"moving|tailgating|overtak(?:e|es|ing|en)|overtook|crossing\s+the\s+intersection|"
           r"pull(?:ed|ing|s)?\s+up\s+(?:behind|beside|next\s+to|alongside)|"
           r"continued\s+(?:its|on|forward|through)|walking|walked|running|"
           # A run told by other verbs of going, or by the heading alone ("was going north", "was operating
@@ -522,7 +525,10 @@ _INTENT_OK = compile_gated(r"\b(?:began|begin|begins|started|start|starts|attemp
                         r"proceeded|proceeding|proceeds|continued|continuing|continue|continues|beginning|starting|"
                         r"went\s+on|goes\s+on|"
                         # "had to stop for a pedestrian", "was forced to brake": it did
-                        r"had|(?:was|were)\s+forced)\s+to\s+"
+                        r"had|(?:was|were)\s+forced|"
+                        # a move made for the next ("then maneuvered to pass EGO on the left", "swerved to go around"):
+                        # the purpose is what the move did
+                        r"maneuver(?:ed|ing|s)?|manoeuvred|moved|swerved|veered|steered)\s+to\s+"
                         r"(?:\w+\s+){0,2}$", re.I)
 _STATE_STOP = compile_gated(r"\b(?:had|has)\s+not\s+(?:yet\s+)?moved\b|\bwaited\s+(?:\w+ly\s+)?(?:at|for|behind|in|on)\b|"
                          r"\b(?:was|were|is|remained|remains|stayed|stays|being|sat|had\s+been)\s+(?:(?!(?:approaching|following|nearing|passing|behind)\s)\w+\s+|\w+-)?(?:stopped|stationary|"

@@ -193,7 +193,10 @@ _ALIAS_DEF = compile_gated(r"\(\s*(?:the\s+)?[\"']\s*([A-Za-z][\w.-]*(?:\s+[\w.-
 _ABBREV = compile_gated(r"\b(?:Mt|Jr|Sr|No|[Aa]pprox|vs|S|N|E|W|U\.S|a\.m|p\.m|Mr|Ms|Mrs|Dr(?=\.\s+[A-Z][a-z]+\s+"
                      r"(?:St|Ave|Blvd|Rd|Street|Avenue)))\.|"
                      r"\b(?:St|Ave|Blvd|Rd|Dr|Hwy|Pkwy|Ln|Ct|Pl)\.(?=\s+[a-z0-9(,])")
-_SENT_SPLIT = compile_gated(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])")
+# (a redaction that swallowed the period after a street name: "... involving a passenger car on [XXX] The Waymo AV
+# was stopped at the curb": a capitalised determiner or clause word after it opens the next sentence)
+_SENT_SPLIT = compile_gated(r"(?<=[.!?])\s+(?=[A-Z\[\"(0-9])|(?<=[a-z]\.)(?=[A-Z][a-z])|"
+                            r"(?<=\[XXX\])\s+(?=(?:The|A|An|While|As|When|After|At|Then|It|EGO)\s)")
 # ("on westbound Lincoln Way": a heading between the preposition and the street's name)
 _HEADING_WORD_END = compile_gated(r"\b(?:north|south|east|west|northeast|northwest|southeast|southwest)bound\s+$", re.I)
 _PLACE_PREP = compile_gated(r"\b(?:on|onto|along|at|from|of|near|down|up|to|toward|towards)\s+$")
