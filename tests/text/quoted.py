@@ -2066,4 +2066,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         "vive. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Waymo is"
         ' reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or'
         ' correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-10689-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10689, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2025 at 2:40 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Santa Monica, '
+        'California was in a collision involving a heavy truck on [XXX] near [XXX]. The Waymo AV was parked '
+        'in-lane facing northwest on a narrow portion of [XXX], with hazard lights activated, when a heavy '
+        'truck traveling southeastbound on [XXX] passed the Waymo AV on the right. As the heavy truck passed by '
+        'the stationary Waymo AV, the passenger side of the heavy truck trailer made contact with the rear '
+        "passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of '
+        'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }

@@ -445,3 +445,20 @@ def test_the_party_s_own_flank_after_its_pass_is_no_side_it_passed_on() -> None:
     # it), told "the right side of the heavy truck": the truck's own side, not the AV's side it passed on.
     assert _said("csvr-waymo-20241214-s355", "the passenger side of the heavy truck",
                  "the right side of the heavy truck") == ("R6", "same")
+
+
+def test_the_side_a_pass_was_made_on_is_the_pass_s_whatever_its_pronoun() -> None:
+    # "an SUV that had been stopped partially in-lane behind the Waymo AV passed the Waymo AV on the left"
+    # (nhtsa-sgo-ads-30270-8150-v1, study3: R6/same, it stood in the AV's lane and moved out), told "on its left":
+    # the side of the pass, read as "on the left" is, not a lane the SUV was in.
+    assert _said("nhtsa-sgo-ads-30270-8150-v1", "on the left", "on its left") == ("R6", "same")
+    # "a heavy truck traveling southeastbound on [XXX] passed the Waymo AV on the right"
+    # (nhtsa-sgo-ads-30270-10689-v1, study3, the AV northwest): the oncoming pass on the AV's right puts it in the AV's lane, told either way.
+    assert _said("nhtsa-sgo-ads-30270-10689-v1", "on the right", "on its right") == \
+        _said("nhtsa-sgo-ads-30270-10689-v1", "on the right", "on the right") == ("R7", "same")
+
+
+def test_an_oncoming_party_directly_ahead_of_the_av_is_in_its_lane_however_ahead_is_said() -> None:
+    # "an SUV that was traveling westbound on [XXX] in the middle shared turn lane, directly in front of the Waymo AV"
+    # (nhtsa-sgo-ads-30270-10726-v1, study3: R7/same), told "directly ahead of the Waymo AV".
+    assert _said("nhtsa-sgo-ads-30270-10726-v1", "directly in front of", "directly ahead of") == ("R7", "same")

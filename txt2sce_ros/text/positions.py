@@ -66,7 +66,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # clause: "began reversing as EGO was passing and EGO came to a stop" is the AV's pass)
     passing = fre.search(r"\b(?:pass(?:ed|ing|es)?|past|overtak(?:e|ing|en)|overtook)\s+(?:by\s+)?(?:the\s+)?"
                         r"(?:(?!(?:and|as|when|while|then|but|or|so)\s)\w+\s+)?(?:EGO|it)\b(?!'s)"
-                        r"(?:\s+(?:on\s+the\s+)?(left|right))?", ctx, re.I)
+                        r"(?:\s+(?:on\s+(?:the|its|EGO's)\s+)?(left|right))?", ctx, re.I)
     h = heading(d, e.idx)
     rel = None if h is None or ego_heading is None else (h - ego_heading) % 360
     # An oncoming party also "passes" the AV, from the front: only a same-direction pass puts it behind. Oncoming is
@@ -407,7 +407,7 @@ def _off_the_junction(d: Doc, e: Entity, ctx: str) -> bool:
 # In the AV's own lane or right before it, said of a party ("in EGO's lane", "directly in front of EGO"); not one
 # only partly in it (a straddle of the centre line), nor one moving into it ("crossed into EGO's lane").
 _IN_EGO_LANE = compile_gated(r"(?<!partially\s)(?<!partly\s)\b(?:in|within)\s+EGO's\s+(?:travel\s+)?lane\b|"
-                             r"\b(?:directly|immediately)\s+in\s+front\s+of\s+EGO\b", re.I)
+                             r"\b(?:directly|immediately|right)\s+(?:in\s+front|ahead)\s+of\s+EGO\b", re.I)
 # A lane named by the direction it carries ("in the westbound lanes of [XXX]", "within the northbound travel lane").
 _HEADING_LANE = compile_gated(r"\b(?:in|within|along|down)\s+(?:the\s+)?(north|south|east|west)bound\s+(?:travel\s+|"
                               r"traffic\s+|through\s+)?lanes?\b", re.I)

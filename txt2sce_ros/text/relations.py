@@ -352,10 +352,14 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                 side = "same" if rank == own else "left" if rank < own else "right"
                 absolute.append((m.start(), m.end()))
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
+        passes = list(_PASSING.finditer(win))
+        # The side a pass was made on ("passed EGO on its left") is the pass's, read with it below as "on the left"
+        # is, not a lane the party was in.
+        pass_sides = {p.end("side") for p in passes if p.group("side")}
         for m in _LANE_CUES.finditer(win):
             side = _side(next(g for g in m.groups() if g))
-            if any(a0 <= m.start() < b0 for a0, b0 in absolute):
-                continue  # read against the AV's own lane above
+            if any(a0 <= m.start() < b0 for a0, b0 in absolute) or m.end() in pass_sides:
+                continue  # read against the AV's own lane above, or the side of a pass
             if side == "right" and m.group(0).lower().startswith(("sidewalk", "curb", "shoulder")) and \
                     (named := _ROADSIDE_SIDE.search(win[max(0, m.start() - 16):m.start()])):
                 # "the left shoulder" is on the left; "the far curb" across a two-way street; "the west sidewalk"
@@ -401,7 +405,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                     _INTO_LANE.search(win[max(0, m.start() - 40):m.start()]):
                 continue  # "cut in front of EGO", "moved into the right lane ahead of EGO": where it went
             cues.append(Cue("along", "ahead", (base + m.start(), base + m.end())))
-        for m in _PASSING.finditer(win):
+        for m in passes:
             if fre.match(r"\s+(?:in\s+front\s+of\b|(?:the|a|an)\s+(?!EGO|(?:left|right|driver|passenger)(?:'s)?\s+side\s+"
                          r"of\s+EGO))", win[m.end():]) or _PASSED_OTHER.match(win, m.start()):
                 # "changed lanes to pass the bus", "going past the parked cars", "passed through the intersection":
