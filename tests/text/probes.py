@@ -70,13 +70,16 @@ _CATEGORIES = {
             "limousine", "minicab", "jeep", "crossover", "passenger car"),
     "van": ("minivan", "delivery van", "cargo van", "Sprinter van", "panel van"),
     "truck": ("box truck", "tractor-trailer", "semi-truck", "dump truck", "garbage truck", "tow truck", "fire truck",
-              "cement mixer", "big rig", "18-wheeler", "delivery truck"),
+              "cement mixer", "big rig", "18-wheeler", "delivery truck", "flatbed", "flatbed truck", "car carrier",
+              "car hauler"),
     "bus": ("city bus", "Muni bus", "school bus", "shuttle bus", "coach"),
     # (a bare "scooterist" rides a motor scooter: a motorcycle in 2 of the 3 studyable gold sketches naming one)
-    "motorcycle": ("motorcyclist", "moped", "motor scooter", "dirt bike", "motorbike", "scooterist"),
+    "motorcycle": ("motorcyclist", "moped", "motor scooter", "dirt bike", "motorbike", "scooterist", "sport bike",
+                   "sportbike", "Vespa"),
     "bicycle": ("cyclist", "bicyclist", "bike rider", "e-bike rider"),
     "scooter": ("scooter rider", "e-scooter rider", "skateboarder", "electric scooterist"),
-    "pedestrian": ("pedestrian", "jogger", "man", "woman", "child", "person", "runner"),
+    "pedestrian": ("pedestrian", "jogger", "man", "woman", "child", "person", "runner", "construction worker",
+                   "worker", "flagger", "crossing guard", "teenager", "passerby", "boy", "girl"),
 }
 
 _AV_STOPPED = "The Waymo AV was stopped at a red light on Mission Street at 16th Street. "

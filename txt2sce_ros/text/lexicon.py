@@ -118,6 +118,14 @@ PARTY_HEADS: dict[str, str] = {
     "pedicab": "bicycle", "hoverboard": "scooter", "segway": "scooter", "onewheel": "scooter",
     "mobility scooter": "pedestrian", "tram": "bus", "train": "bus", "cable car": "bus", "minibus": "bus",
     "motorcoach": "bus", "motor coach": "bus",
+    # (session 19, breadth: another operator's driverless car, trucks by their body, motorcycles by their kind or
+    # make, people on foot by their role or age; not "officer" or "attendant", which name police called to the scene
+    # and the AV's own staff)
+    "robotaxi": "car", "robo-taxi": "car", "flatbed": "truck", "flatbed truck": "truck", "car carrier": "truck",
+    "car hauler": "truck", "auto transporter": "truck", "sport bike": "motorcycle", "sportbike": "motorcycle",
+    "vespa": "motorcycle", "worker": "pedestrian", "construction worker": "pedestrian", "flagger": "pedestrian",
+    "crossing guard": "pedestrian", "teenager": "pedestrian", "teen": "pedestrian", "passerby": "pedestrian",
+    "boy": "pedestrian", "girl": "pedestrian",
     # the AV industry's word for another road user ("the agent behind did not come to a stop and made contact")
     "agent": "car",
     # the NHTSA SGO form's role names for the other party, which narratives copy: "the Crash Partner (CP)", "the
