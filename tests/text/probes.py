@@ -2827,6 +2827,25 @@ PROBES: tuple[Probe, ...] = (
            "after the Waymo AV exited the intersection", "after the Waymo AV went through the intersection",
            "after driving through the intersection", "after the Waymo AV had traversed the intersection"),
           lambda sk: sk.road.layout, "straight"),
+    Probe("after the AV's stop and its state, a party that comes in or manoeuvres meets it standing; a follower "
+          "running into its rear met it as it stopped (session 19)",
+          "The Waymo AV was traveling northbound on [XXX] and came to a stop in the travel lane for a passenger "
+          "pick-up. {W}.",
+          ("while the Waymo AV remained stopped, a passenger car traveling behind the Waymo AV maneuvered around the "
+           "left side of the Waymo AV and made contact with its rear driver side",
+           "while stopped, a vehicle approached from behind and made contact with the rear bumper of the Waymo AV",
+           "while the Waymo AV remained stationary, an SUV in the left lane changed lanes to the right and made "
+           "contact with the driver side of the Waymo AV",
+           "as the Waymo AV remained stopped, a passenger car parked on the right reversed and made contact with the "
+           "passenger side of the Waymo AV",
+           "while the Waymo AV was stopped, a cyclist passed the Waymo AV on the right and made contact with its "
+           "passenger side mirror",
+           "while the Waymo AV remained stopped, a pickup truck traveling directly behind the Waymo AV made contact "
+           "with the rear of the Waymo AV",
+           "while the Waymo AV was stopped, the passenger car following the Waymo AV made contact with its rear bumper",
+           "as the Waymo AV remained stopped, a sedan traveling behind the Waymo AV struck the rear of the Waymo AV"),
+          _ego, lambda w: ("moving", "ah") if "behind the Waymo AV made" in w or "following" in w or "sedan" in w
+          else ("stopped", "")),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

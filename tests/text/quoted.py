@@ -146,6 +146,40 @@ QUOTED: dict[str, tuple[str, str]] = {
         " AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles"
         ' sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. '
         'Waymo may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8851-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8851,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On September [XXX], 2024 at 11:27 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Franc'
+        'isco, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was tr'
+        'aveling on northeastbound [XXX] in the rightmost portion of the drivable roadway, having maneuvered '
+        'around a segment of the rightmost lane that was blocked off due to road work. When the traffic light'
+        ' was green, the Waymo AV entered the intersection to prepare to make a right turn onto southeastboun'
+        'd [XXX]. It then slowed to a stop, with its hazards on due to a change in the traffic light configur'
+        'ation. While the Waymo AV remained stopped, a passenger car traveling behind the Waymo AV maneuvered'
+        ' around the left side of the Waymo AV and made contact with the rear driver side of the Waymo AV. At'
+        ' the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sust'
+        'ained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. W'
+        'aymo may supplement or correct its reporting with additional information as it may become available.'),
+    'csvr-waymo-20220219-s135': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 135, column 'Accident Detail Description'), transcribed",
+        'On February 19, 2022 at 7:45 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francis'
+        'co, California was in a collision involving a passenger vehicle at the northbound merge lane on the '
+        '100 block of Bayshore Boulevard. While attempting a merge onto northbound Bayshore Boulevard from so'
+        'uthbound Bayshore Boulevard, the Waymo AV came to a stop to yield for approaching traffic on the rig'
+        'ht. While stopped, a vehicle approached from behind and made contact with the rear bumper of the Way'
+        'mo AV. The other vehicle left the scene without exchanging information. At the time of the impact, t'
+        'he Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driv'
+        'er’s seating position). The Waymo AV sustained minor damage.'),
+    'csvr-waymo-20230629-s259': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial"
+        " 259, column 'Accident Detail Description'), transcribed",
+        'On June 29, 2023 at 7:50 AM PT a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, C'
+        'A was in a collision involving a pickup truck on Jersey Street at Church Street. The Waymo AV was tr'
+        'aveling eastbound on Jersey Street and stopped at a stop sign at the intersection of Church Street. '
+        'While yielding to pedestrians crossing the street, a pickup truck traveling directly behind the Waym'
+        'o AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 A'
+        'DS was engaged in autonomous mode. The Waymo AV sustained damage.'),
     'csvr-argo-20211019-s102': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "102, column 'Accident Detail Description'), transcribed",

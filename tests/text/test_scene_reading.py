@@ -68,7 +68,10 @@ HELD_SGO = {
     # into" it is; check3 was not inspected)
     "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.62, "layout": 0.91, "ego_actions": 0.74},
 }
-CONFLICT_HELD_SGO = {"study3": 91, "check3": 42}
+# (study3 91 -> 90 in session 19: the AV met by a party that moved in while it "remained stopped" after a stop is
+# stopped with '' (sketch.md, the official convention study4's three annotators follow); study3's one annotator reads
+# `ah` for 9408, whose test in test_av_run_and_stop now asserts the official reading)
+CONFLICT_HELD_SGO = {"study3": 90, "check3": 42}
 #: And for the 173 NHTSA SGO narratives new in session 19 (tests/text/sgo4/README.md), labelled before the extractor
 #: was run on them: study4 may be read, check4 is scored only; one annotator's gold each.
 SGO4 = Path(__file__).parent / "sgo4"

@@ -49,3 +49,17 @@ def test_curvature_is_a_curve() -> None:
     # "The road was characterized by light traffic, with a slight curvature that transitioned from a gentle rightward
     # sway to a leftward sway" (`curve`).
     assert _layout("nhtsa-sgo-ads-30413-8861-v1") == "curve"
+
+
+def test_a_party_that_moves_in_while_the_av_remains_stopped_meets_it_standing() -> None:
+    # "It then slowed to a stop, with its hazards on due to a change in the traffic light configuration. While the
+    # Waymo AV remained stopped, a passenger car traveling behind the Waymo AV maneuvered around the left side of the
+    # Waymo AV and made contact with the rear driver side": the party's manoeuvre began with the AV standing.
+    assert _ego("nhtsa-sgo-ads-30270-8851-v1") == ("stopped", "")
+    # "came to a stop to yield for approaching traffic on the right. While stopped, a vehicle approached from behind
+    # and made contact with the rear bumper" (study2): its approach began with the AV standing.
+    assert _ego("csvr-waymo-20220219-s135") == ("stopped", "")
+    # A follower already behind the AV that ran into its rear met it as it stopped: "stopped at a stop sign ... While
+    # yielding to pedestrians crossing the street, a pickup truck traveling directly behind the Waymo AV made contact
+    # with the rear of the Waymo AV" (study2): `ah`.
+    assert _ego("csvr-waymo-20230629-s259") == ("moving", "ah")
