@@ -2953,6 +2953,15 @@ PROBES: tuple[Probe, ...] = (
            "moving past a line of stopped vehicles", "traveling beside stopped traffic", "passing the stopped traffic",
            "proceeding by stopped cars"),
           _ego, ("moving", "a")),
+    Probe("a party on the compass side of the street opposite the AV's own is across the street, beyond the "
+          "oncoming lane (session 19)",
+          "The Waymo AV was parked at the curb facing eastbound on the south side of [XXX]. A pickup truck {w} and made "
+          "contact with the driver side of the Waymo AV.",
+          ("reversed out of a driveway on the north side of [XXX]", "backed out of a driveway on the north side of "
+           "[XXX]", "reversed out of a driveway on the north side of the street", "pulled out of a parking space on "
+           "the northern side of [XXX]", "backed out of a parking spot on the north curb of [XXX]",
+           "was reversing out of a driveway on the north side of the road"),
+          _position, [("R7", "left")]),
 )
 
 

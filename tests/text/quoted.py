@@ -2112,4 +2112,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         'autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of '
         'Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9881-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9881, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January[XXX], 2025 at 6:41 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, '
+        'Arizona was in a collision involving a pickup truck on [XXX]. The Waymo AV was parked at the curb '
+        'facing westbound on the north side of [XXX]when a pickup truck reversed out of a driveway on the south '
+        'side of [XXX] into the Waymo AV. The rear of the pickup truck made contact with the rear driver side '
+        "of the stationary Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+        'autonomous mode. The pickup truck sustained damage. Waymo is reporting this crash under Request No. 2 '
+        'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
+        'information as it may become available.'),
 }

@@ -462,3 +462,15 @@ def test_an_oncoming_party_directly_ahead_of_the_av_is_in_its_lane_however_ahead
     # "an SUV that was traveling westbound on [XXX] in the middle shared turn lane, directly in front of the Waymo AV"
     # (nhtsa-sgo-ads-30270-10726-v1, study3: R7/same), told "directly ahead of the Waymo AV".
     assert _said("nhtsa-sgo-ads-30270-10726-v1", "directly in front of", "directly ahead of") == ("R7", "same")
+
+
+def test_a_party_on_the_compass_side_of_the_street_opposite_the_av_s_is_across_the_street() -> None:
+    # "The Waymo AV was parked at the curb facing westbound on the north side of [XXX]when a pickup truck reversed
+    # out of a driveway on the south side of [XXX] into the Waymo AV" (nhtsa-sgo-ads-30270-9881-v1, study4, gold
+    # R7/left): the two compass sides are opposite, so the truck came from across the street, as "across the street
+    # from the Waymo AV" says (beyond the oncoming lane).
+    p = _party("nhtsa-sgo-ads-30270-9881-v1")
+    assert (p.position, p.lane) == ("R7", "left")
+    # With the AV's own side untold, the south side of a redacted street is the left of an AV facing west.
+    assert _said("nhtsa-sgo-ads-30270-9881-v1", "westbound on the north side of [XXX]", "westbound on [XXX] ") == \
+        ("R5", "left")

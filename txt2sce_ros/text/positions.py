@@ -102,7 +102,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
     # Oncoming is said of the party itself ("an oncoming truck", "traveling in the opposite direction"), close to
     # its name; "without yielding to oncoming traffic" further on speaks of others.
     near = " | ".join(f"{m.mods} {_own_clause(d.sents[m.sent][m.end:m.end + 100])}" for m in e.mentions)
-    oncoming = ONCOMING.search(near + " " + pre)
+    oncoming = ONCOMING.search(near + " " + pre) or _across_by_compass(d, ctx)
     if oncoming and fre.search(r"\b(?:yield\w*|stop\w*|wait\w*)\s+(?:for|to)\s+(?:the\s+)?oncoming\s+traffic", near,
                               re.I) and not fre.search(r"\boncoming\b", " ".join(m.mods for m in e.mentions), re.I):
         oncoming = None
@@ -395,6 +395,24 @@ _OFF_THE_JUNCTION = compile_gated(r"\b(?:into|to|toward|towards)\s+(?:a|an|the)\
                                   r"(?:lot|garage|structure)|garage|entrance|alley|gas\s+station)\b|"
                                   r"\b(?:cross\w*|over|across|jump\w*|mount\w*)\s+(?:the\s+)?(?:[\w-]+\s+)?"
                                   r"(?:median|divider)\b", re.I)
+
+
+# A roadside told by its compass side of the street ("on the north side of [XXX]", "on the west curb of 2nd Avenue").
+_COMPASS_SIDE_OF = r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\b"
+_PARTY_SIDE_OF = compile_gated(_COMPASS_SIDE_OF, re.I)
+# ... the AV's own, in its clause ("EGO was parked at the curb facing westbound on the north side of [XXX]")
+_AV_SIDE_OF = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while|as|and)\b)[^.;]){0,100}?" + _COMPASS_SIDE_OF, re.I)
+
+
+def _across_by_compass(d: Doc, ctx: str) -> re.Match[str] | None:
+    """The party's roadside on the compass side of the street opposite the AV's own ("The Waymo AV was parked at the
+    curb ... on the north side of [XXX] when a pickup truck reversed out of a driveway on the south side of [XXX]"):
+    across the street from the AV, beyond the oncoming lane, as "across the street from EGO" says (R7/left)."""
+    theirs = _PARTY_SIDE_OF.search(ctx)
+    mine = theirs and d.once("av_side_of_street", lambda: _AV_SIDE_OF.search(d.text))
+    if not (theirs and mine):
+        return None
+    return theirs if (CARDINALS[theirs.group(1).lower()] - CARDINALS[mine.group(1).lower()]) % 360 == 180 else None
 
 
 def _off_the_junction(d: Doc, e: Entity, ctx: str) -> bool:

@@ -195,8 +195,9 @@ _PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pas
                             r"(?:\s+(?:of\s+)?(?:traffic|vehicles|cars))?|\bbypass(?:ed|ing)?\s+(?:the\s+)?traffic\b)",
                             re.I)
 _COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
+                              # (a street's name, or its redaction in the SGO narratives: "on the north side of [XXX]")
                               r"(?:street|road|roadway|block|(?:(?-i:[A-Z0-9])[\w-]*\s+){1,3}(?:street|st|avenue|ave|"
-                              r"boulevard|blvd|road|rd|way|drive|dr|lane|ln))\b|"
+                              r"boulevard|blvd|road|rd|way|drive|dr|lane|ln)|\[XXX\])(?:\b|(?<=\]))|"
                               # a roadside named by its compass side: "from the west sidewalk", "along the eastern curb"
                               r"\b(?:on|from|along|off|at)\s+the\s+(north|south|east|west)(?:ern)?\s+(?:sidewalk|curb|"
                               r"shoulder)\b", re.I)
