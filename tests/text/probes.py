@@ -82,6 +82,29 @@ _CATEGORIES = {
                    "worker", "flagger", "crossing guard", "teenager", "passerby", "boy", "girl"),
 }
 
+_OBJECTS = {
+    "barrier": ("a parking gate", "a gate arm", "a parking garage gate", "a concrete barrier", "a jersey barrier",
+                "a k-rail", "a curb", "a raised median", "a traffic island", "a concrete median", "a wall", "a fence",
+                "a chain-link fence", "a guardrail", "a wooden barricade", "a construction barricade",
+                "a parking block", "a wheel stop", "a concrete planter", "a retaining wall", "a security gate",
+                "a rolling gate", "a crash attenuator", "a gate"),
+    "pole": ("a utility pole", "a light pole", "a street light", "a stop sign", "a street sign", "a fire hydrant",
+             "a parking meter", "a bollard", "a metal post", "a sign post", "a pillar", "a concrete column",
+             "a parking structure pillar", "a traffic signal pole", "a delineator post"),
+    "cone": ("a traffic cone", "a cone", "a construction cone", "a construction barrel", "a traffic barrel", "a pylon",
+             "a delineator", "a plastic delineator"),
+    "debris": ("debris", "road debris", "a piece of debris", "a wooden pallet", "a tire tread", "a ladder",
+               "a mattress", "a piece of metal", "a metal pipe", "a tire", "a hubcap", "a rock", "a piece of wood",
+               "a steel plate", "a bumper cover", "a piece of lumber"),
+    "animal": ("a dog", "a cat", "a deer", "a coyote", "a raccoon", "a bird", "a pigeon", "a skunk", "an opossum",
+               "a squirrel", "a rabbit", "a goose", "a duck", "a chicken", "a fox", "a javelina", "a bobcat",
+               "a stray dog", "an animal", "a small animal", "a seagull", "a crow"),
+    "other": ("a tree", "a tree branch", "a low-hanging branch", "a shopping cart", "a trash bin", "a trash can",
+              "a recycling bin", "a garbage can", "a dumpster", "a mailbox", "a bus shelter", "a power line", "a cable",
+              "a bike rack", "a newspaper stand", "a remote controlled toy car", "a toy car", "an RC truck",
+              "a plastic bag", "an electric scooter lying in the road", "a parked e-scooter",
+              "a scooter lying in the road", "a bicycle that was left on the ground", "a bike on its side"),
+}
 _AV_STOPPED = "The Waymo AV was stopped at a red light on Mission Street at 16th Street. "
 # A lane entered after a verb of going forward or of starting (two probe sets: a party moving, one standing).
 _LANE_ENTERED_GOING = ("began to proceed into the Waymo AV's lane", "proceeded into the Waymo AV's lane",
@@ -307,6 +330,13 @@ _REAR_CORNER_MOVES = {
 
 
 PROBES: tuple[Probe, ...] = (
+    # Objects by name, as SGO and DMV narratives name them (a ride left lying and a toy are things, not parties).
+    Probe("an object the AV's front met, by name",
+          "The Waymo AV was traveling north on Mission Street when the front of the Waymo AV made contact with {w} in "
+          "its lane.",
+          tuple(w for ws in _OBJECTS.values() for w in ws),
+          lambda sk: ([o.category for o in sk.obstacles], len(sk.npcs)),
+          lambda w: ([next(c for c, ws in _OBJECTS.items() if w in ws)], 0)),
     # Session 19 (who counts, what the parties do), from study4's fresh narratives: a stop of the party's own, then
     # a move made to pass the AV (any verb of moving with the pass as its purpose) starts it off again.
     Probe("a party that stopped behind the AV, then moved to pass it",

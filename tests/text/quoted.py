@@ -6,6 +6,16 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-9823-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9823, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 12:38 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Arizona was '
+        'in a collision involving a remote controlled toy car on [XXX]. The Waymo AV was traveling westbound on [XXX] w'
+        'hen it approached a remote controlled toy car that was crossing the intersection of [XXX]. As the Waymo AV tra'
+        'versed the intersection, the front of the Waymo AV made contact with the remote controlled toy car. At the tim'
+        "e of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The remote controlled toy car sust"
+        'ained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may s'
+        'upplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9853-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9853, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

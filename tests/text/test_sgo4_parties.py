@@ -51,3 +51,10 @@ def test_a_move_made_to_pass_after_a_stop_of_its_own_moves_the_party_off() -> No
     # AV on the left": approach, stop, move off (`ahi`); the pass is the purpose the move achieved.
     sk = _sketch("nhtsa-sgo-ads-30270-9853-v1")
     assert (sk.npcs[0].start, sk.npcs[0].actions) == ("moving", "ahi")
+
+
+def test_a_toy_vehicle_is_an_object() -> None:
+    # "a remote controlled toy car that was crossing the intersection": a thing the AV struck (obstacle `other`),
+    # no traffic participant, though it moved.
+    sk = _sketch("nhtsa-sgo-ads-30270-9823-v1")
+    assert (sk.npcs, [o.category for o in sk.obstacles], sk.collision.with_) == ((), ["other"], "obs1")

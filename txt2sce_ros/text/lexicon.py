@@ -170,6 +170,7 @@ OBSTACLE_HEADS: dict[str, str] = {
     "raccoon": "animal", "squirrel": "animal", "goose": "animal", "opossum": "animal", "possum": "animal",
     "skunk": "animal", "rabbit": "animal", "pigeon": "animal", "seagull": "animal", "turkey": "animal",
     "horse": "animal", "cow": "animal", "duck": "animal",
+    "javelina": "animal", "bobcat": "animal", "goat": "animal", "elk": "animal",
     "tread": "debris", "tire tread": "debris", "couch": "debris", "chair": "debris", "sandbag": "debris",
     "tumbleweed": "debris", "barrel": "cone", "traffic barrel": "cone", "limb": "other", "tree limb": "other",
     "power line": "other", "mailbox": "other", "bike rack": "other", "bus shelter": "other",

@@ -693,6 +693,12 @@ _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|besid
                              r"behind|next\s+to|beside))", re.I)
 
 
+# A ride told lying where it was left ("an electric scooter lying in the roadway", "a bicycle that was left on the
+# ground", "a scooter on its side").
+_LEFT_LYING = compile_gated(r"\s*,?\s*(?:(?:that|which)\s+(?:was|had\s+been)\s+)?(?:lying|laying|left|sitting\s+on\s+the\s+ground|"
+                            r"resting\s+on|on\s+(?:its|the)\s+(?:side|ground)|knocked\s+over|tipped\s+over)\b", re.I)
+#: A vehicle noun that names a toy or a model ("a remote controlled toy car", "an RC truck").
+_TOY = compile_gated(r"\b(?:toy|remote[- ]controlled|remote[- ]control|rc)\b", re.I)
 _RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped", "motorbike",
           "motor scooter", "motorscooter", "dirt bike", "tricycle", "trike", "unicycle", "hoverboard", "segway",
           "onewheel", "wheelchair", "mobility scooter")
@@ -820,8 +826,11 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             continue
         target: Entity | None = None
         live = [e for e in ents if e.merged_into is None]
-        if m.head in _RIDES and fre.search(r"\b(?:abandoned|unattended|dropped|fallen|parked|discarded)\b", m.mods):
+        if m.head in _RIDES and (fre.search(r"\b(?:abandoned|unattended|dropped|fallen|parked|discarded)\b", m.mods) or
+                                 _LEFT_LYING.match(sents[m.sent], m.end)):
             m.kind, m.category = "obstacle", "other"  # a scooter left lying in the road is an object
+        elif m.kind == "party" and _TOY.search(m.mods):
+            m.kind, m.category = "obstacle", "other"  # "a remote controlled toy car": a thing, no traffic participant
         # "The trailing vehicle is a bus": a predicate noun names the same party more precisely.
         if m.det == "a" and prev is not None and prev.sent == m.sent and prev.kind == "party" and m.kind == "party" \
                 and prev.entity >= 0 and (fre.fullmatch(r"\s+(?:is|was)\s+(?:a|an)\s*", _between(sents, prev, m)) or
