@@ -2876,6 +2876,21 @@ PROBES: tuple[Probe, ...] = (
            "as the Waymo AV remained stopped, a sedan traveling behind the Waymo AV struck the rear of the Waymo AV"),
           _ego, lambda w: ("moving", "ah") if "behind the Waymo AV made" in w or "following" in w or "sedan" in w
           else ("stopped", "")),
+    Probe("a yield sign the AV stopped at is a sign control, no signal (session 19)",
+          "The AV was in a right-turn lane, turning onto [XXX] from [XXX]. The AV {w} before merging onto [XXX] and a "
+          "silver Toyota rear-ended the AV.",
+          ("stopped at a yield sign", "came to a stop at the yield sign", "was stopped for a yield sign",
+           "was waiting at a yield sign", "stopped at the yield-controlled entrance", "yielded at a yield sign"),
+          lambda sk: (sk.road.control, sk.signal_state), ("stop_sign", "none")),
+    Probe("a turn lane the AV waits in, the summary near a cross street: short of the junction (session 19)",
+          "On May 3, 2024 at 6:17 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, California "
+          "was in a collision involving a van on [XXX] near [XXX]. The Waymo AV was {w}. While the Waymo AV remained "
+          "stopped, a van traveling behind the Waymo AV maneuvered around the Waymo AV and made contact with the rear "
+          "driver side of the Waymo AV.",
+          ("stopped in traffic in the dedicated right turn lane of southwestbound [XXX]", "waiting in the left turn lane",
+           "stopped in the left-turn pocket", "queued in the rightmost right turn lane",
+           "stopped in traffic in a right turn only lane", "waiting in a left-turn lane"),
+          lambda sk: sk.road.layout, "straight"),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

@@ -1410,6 +1410,35 @@ QUOTED: dict[str, tuple[str, str]] = {
         'sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 '
         'because a vehicle involved was towed away and because of airbag deployment. Waymo may supplement or '
         'correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-669-8496-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 669-8496, v'
+        'ersion 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        "In conjunction with Motional's filing of the subject incident, and according to statement(s) provide"
+        "d in Motional's incident report: A Motional AV with VIN PFDKB4AE6RF[XXX] was operating in autonomous"
+        ' mode in Las Vegas, Nevada at approximately 1PM PT, with a safety driver at the wheel, an engineer i'
+        'n the front passenger seat, and two other employees in the rear seats. The AV was in a right-turn la'
+        'ne, turning onto [XXX] from [XXX]. The AV stopped at a yield sign in the right-turn only lane before'
+        ' merging onto [XXX] and a silver Toyota rear-ended the AV at approximately 15 MPH. There were three '
+        'occupants of the silver Toyota, one in the front seat and two in the back, with one verbally reporti'
+        'ng an injury to the face area. An ambulance was traveling on [XXX]. at the time of the incident and '
+        'stopped at the scene. The ambulance transported the complaining occupant of the silver Toyota and an'
+        "other occupant (believed to the individual's sister) rode in the ambulance. It is unknown where thes"
+        'e individuals were taken. No injuries were reported from the occupants in the AV. Both vehicles were'
+        ' damaged and required towing from the scene. No airbags were deployed in either vehicle. Las Vegas M'
+        'etro Police were called to the scene. It is unknown if the other driver was cited. A police report w'
+        'ill be supplied when available. 9/16/2024 Update: No new information available at this time.'),
+    'nhtsa-sgo-ads-30270-8875-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8875,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On September [XXX], 2024 at 6:17 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Franci'
+        'sco, California was in a collision involving a van on [XXX] near [XXX]. The Waymo AV was stopped in '
+        'traffic in the dedicated right turn lane of southwestbound [XXX]. While the Wamo AV remained stopped'
+        ', a van traveling behind the Waymo AV partially entered the left adjacent lane to maneuver around th'
+        'e Waymo AV. As the van was passing the stopped Waymo AV, the front passenger side of the van made co'
+        'ntact with the rear driver side of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 AD'
+        'S was engaged in autonomous mode. The van sustained damage. Waymo is reporting this crash under Requ'
+        'est No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with addi'
+        'tional information as it may become available.'),
     'nhtsa-sgo-ads-30270-8121-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8121, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

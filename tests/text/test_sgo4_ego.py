@@ -63,3 +63,18 @@ def test_a_party_that_moves_in_while_the_av_remains_stopped_meets_it_standing() 
     # yielding to pedestrians crossing the street, a pickup truck traveling directly behind the Waymo AV made contact
     # with the rear of the Waymo AV" (study2): `ah`.
     assert _ego("csvr-waymo-20230629-s259") == ("moving", "ah")
+
+
+def test_a_yield_sign_is_a_sign_control() -> None:
+    # "The AV stopped at a yield sign in the right-turn only lane before merging onto [XXX] and a silver Toyota
+    # rear-ended the AV": the sign control the schema's `stop_sign` stands for; no signal (`none`).
+    sk = extract(QUOTED["nhtsa-sgo-ads-669-8496-v2"][1], "nhtsa-sgo-ads-669-8496-v2")
+    assert (sk.road.control, sk.signal_state) == ("stop_sign", "none")
+
+
+def test_a_turn_lane_near_a_cross_street_is_short_of_the_junction() -> None:
+    # "... a collision involving a van on [XXX] near [XXX]. The Waymo AV was stopped in traffic in the dedicated right
+    # turn lane of southwestbound [XXX]. While the Wamo AV remained stopped, a van traveling behind the Waymo AV
+    # partially entered the left adjacent lane to maneuver around the Waymo AV": the summary places it near the cross
+    # street; the turn lane is the approach to the junction, not in it (`straight`).
+    assert _layout("nhtsa-sgo-ads-30270-8875-v1") == "straight"

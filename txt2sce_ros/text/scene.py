@@ -21,10 +21,15 @@ _LIGHT_WAS = (r"\b(?:stop\s?)?(?:light|signal)\s+(?:that\s+|which\s+)?(?:was|is|
 #: ends its phrase (not "a red sedan").
 _AT_A_RED = (r"\b(?:at|for)\s+(?:a|the)\s+red(?=\s*(?:[,.;:]|$|\b(?:and|when|while|as|at|on|in|before|with|then|until|"
              r"facing|behind|near|for|to|waiting)\b))")
+#: Waiting in a turn pocket: turn lanes end at a junction.
+_IN_TURN_POCKET = (r"\b(?:stopped|waiting|queued|traffic|traveling|travelling|proceeding|driving)\s+in\s+(?:a|the)\s+"
+                   r"(?:(?:dedicated|leftmost|rightmost|left-most|right-most)\s+)?(?:left|right)[- ]turn\s+"
+                   r"(?:pocket|lane|only\s+lane)\b")
+_TURN_POCKET = compile_gated(_IN_TURN_POCKET, re.I)
 _JUNCTION = compile_gated(_LIGHT_WAS + "|" + _AT_A_RED + r"|\bintersection\b|"
                           # "at the corner of Bush Street and Grant Avenue" (not "the front corner of EGO": a street's
                           # name, capitalised or redacted, follows)
-                          r"\b(?:at|on)\s+the\s+(?:\w+\s+)?corner\s+of\s+(?-i:[A-Z0-9\[])|\bcross\s*roads\b|\bcrosswalk\b|\bstop\s+signs?\b|"
+                          r"\b(?:at|on)\s+the\s+(?:\w+\s+)?corner\s+of\s+(?-i:[A-Z0-9\[])|\bcross\s*roads\b|\bcrosswalk\b|\b(?:stop|yield)\s+signs?\b|"
                        + _TRAFFIC_LIGHT + r"|\b(?<!its\s)(?<!their\s)stop\s?lights?\b|"
                        r"\b(?:at|for)\s+the\s+(?:light|signal)\b|"
                        # ("a red left-turn arrow": the arrow of a turn lane's light)
@@ -34,12 +39,8 @@ _JUNCTION = compile_gated(_LIGHT_WAS + "|" + _AT_A_RED + r"|\bintersection\b|"
                        # the line a vehicle stops at before a junction: "stop line", "stop bar", California's "limit line"
                        r"\b(?:stop|limit)\s+(?:bar|line)\b|"
                        + _WAY_STOP + r"|\bjunction\b|\bcross[\s-]+traffic\b|\bcross[\s-]?streets?\b|"
-                       r"\bthe\s+light\s+turned\b|"
-                       # waiting in a turn pocket: turn lanes end at a junction
-                       r"\b(?:stopped|waiting|queued|traffic|traveling|travelling|proceeding|driving)\s+in\s+(?:a|the)\s+"
-                       r"(?:(?:dedicated|leftmost|rightmost|left-most|right-most)\s+)?(?:left|right)[- ]turn\s+"
-                       r"(?:pocket|lane|only\s+lane)\b", re.I)
-_CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|stop\s+sign|stop\s?light|"
+                       r"\bthe\s+light\s+turned\b|" + _IN_TURN_POCKET, re.I)
+_CONTROL_AT = compile_gated(r"\b(?:at|for)\s+(?:a|an|the)\s+(?:red\s+(?:traffic\s+)?(?:light|signal)|(?:stop|yield)\s+sign|stop\s?light|"
                           r"(?:all|two|four|three|\d)[-\s]way\s+stop|traffic[\s-]+(?:control\s+)?(?:light|signal))\b|"
                           + _AT_A_RED, re.I)
 # (up to six words between: "EGO had been stopped in autonomous mode turning right", "was at a stop in autonomous
@@ -144,7 +145,9 @@ _SIGNAL = compile_gated(_LIGHT_WAS + "|" + _AT_A_RED + r"|\b(?:red|green|yellow|
                      r"\b(?:its|their|EGO's)\s+(?:traffic\s+)?(?:light|signal)\s+(?:\w+\s+){0,2}?(?:green|red|yellow|amber)\b|"
                      r"\b(?:green|red|yellow|amber)\s+(?:turn\s+)?arrow\b|\b(?:signal|light)[- ]controlled\b|"
                      + _TURN_ON_RED, re.I)
-_STOP_SIGN = compile_gated(r"\bstop\s+sign|" + _WAY_STOP + r"|\bstop-controlled\b", re.I)
+# (a yield sign is the sign control the schema's `stop_sign` stands for: "The AV stopped at a yield sign in the
+# right-turn only lane before merging")
+_STOP_SIGN = compile_gated(r"\bstop\s+sign|\byield\s+sign|" + _WAY_STOP + r"|\b(?:stop|yield)-controlled\b", re.I)
 # A junction the text says has no control: the AV's approach is then `none`, not `unknown`.
 _NO_CONTROL = compile_gated(r"\b(?:uncontrolled|unsignali[sz]ed|non-?signali[sz]ed)\s+(?:[\w-]+\s+)?intersection\b|"
                             r"\bno\s+traffic\s+(?:controls?|signals?|lights?)\b|"
@@ -239,6 +242,11 @@ def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = fro
             # AV there ("As the Waymo AV approached the intersection with 22nd Street, it came to a stop behind its
             # lead vehicle": a queue at the junction)
             cleaned = _AHEAD_ONLY.sub(" ", cleaned)
+        if near and i not in summary:
+            # near a cross street, a turn lane the AV waits in is the approach to the junction, short of it ("was
+            # stopped in traffic in the dedicated right turn lane of southwestbound [XXX]": 3 of 3 W-half studyable
+            # reports so told with a "near" summary are gold `straight`)
+            cleaned = _TURN_POCKET.sub(" ", cleaned)
         if exit_at is not None:
             # "As the AV was approaching the intersection with Stillman Street, a blue Model 3 Tesla exited out of a
             # parking garage into the AV's lane of travel"; "allowing for a passenger car to exit a parking lot ...
