@@ -329,6 +329,14 @@ _REAR_CORNER_MOVES = {
 }
 
 
+_MOVING_THING_SIDES = {
+    "ran from the west side of [XXX] into the roadway": "left", "darted into the road from the left": "left",
+    "ran into the street from the east side of the street": "right", "came from the right": "right",
+    "crossed from the western curb": "left", "ran out from the left side": "left",
+    "emerged from the east sidewalk": "right", "ran across the road from the right": "right",
+}
+
+
 PROBES: tuple[Probe, ...] = (
     # Objects by name, as SGO and DMV narratives name them (a ride left lying and a toy are things, not parties).
     Probe("an object the AV's front met, by name",
@@ -3007,6 +3015,11 @@ PROBES: tuple[Probe, ...] = (
            "the northern side of [XXX]", "backed out of a parking spot on the north curb of [XXX]",
            "was reversing out of a driveway on the north side of the road"),
           _position, [("R7", "left")]),
+    Probe("an animal or a thing moving into the AV's path from one side is beside its lane on that side (session 19)",
+          "The Waymo AV was traveling northbound on [XXX] when a dog {w}, and the front of the Waymo AV made contact "
+          "with the dog.",
+          tuple(_MOVING_THING_SIDES),
+          lambda sk: [(o.position, o.lane) for o in sk.obstacles][:1], lambda w: [("R5", _MOVING_THING_SIDES[w])]),
 )
 
 

@@ -2162,4 +2162,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'autonomous mode. The pickup truck sustained damage. Waymo is reporting this crash under Request No. 2 '
         'of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional '
         'information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8612-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8612, '
+        'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2024 at 8:23 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, '
+        'Arizona was in a collision involving a dog on [XXX] and [XXX]. The Waymo AV was traveling eastbound on '
+        '[XXX] at the intersection of [XXX] when a dog ran from the north side of [XXX] towards the path of the '
+        'Waymo AV. The Waymo AV engaged heavy braking but as it slowed, the rear driver side of the Waymo AV '
+        'made contact with the dog. The dog then crossed behind the Waymo AV onto the south side of [XXX]. At '
+        "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Waymo received "
+        'notice of injury to the dog. Waymo is reporting this crash under Request No. 2 of Standing General '
+        'Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
+        'become available.'),
 }

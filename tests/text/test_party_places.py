@@ -474,3 +474,12 @@ def test_a_party_on_the_compass_side_of_the_street_opposite_the_av_s_is_across_t
     # With the AV's own side untold, the south side of a redacted street is the left of an AV facing west.
     assert _said("nhtsa-sgo-ads-30270-9881-v1", "westbound on the north side of [XXX]", "westbound on [XXX] ") == \
         ("R5", "left")
+
+
+def test_an_animal_that_ran_into_the_av_s_path_from_one_side_is_beside_its_lane_on_that_side() -> None:
+    # "The Waymo AV was traveling eastbound on [XXX] at the intersection of [XXX] when a dog ran from the north side
+    # of [XXX] towards the path of the Waymo AV ... the rear driver side of the Waymo AV made contact with the dog. The
+    # dog then crossed behind the Waymo AV" (nhtsa-sgo-ads-30270-8612-v1, study4, gold R5/left): north is the left of
+    # an eastbound AV; where the dog went after the contact is not where it was.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8612-v1"][1], "nhtsa-sgo-ads-30270-8612-v1")
+    assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [("animal", "R5", "left")]

@@ -165,8 +165,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # opposite its heading, at the roadside beside or ahead of the AV (sketch.md: R5 on that side).
         return "R5", ("left" if rel == 90 else "right"), True
     # ("from the west sidewalk", "from the eastern curb", "from the north side of the street")
-    compass = fre.search(r"\bfrom\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|sidewalk|shoulder|edge)", ctx,
-                         re.I) or (
+    compass = FROM_COMPASS_SIDE.search(ctx) or (
         # at a junction a bare origin does ("traveling on Flamingo Road from the west")
         junction and fre.search(r"\bfrom\s+the\s+(north|south|east|west)\b(?!\s*-?\s*bound)", ctx, re.I))
     if compass and ego_heading is not None:
@@ -177,12 +176,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
             if junction:
                 return ("R3" if side == "right" else "R1"), None, True
             return "R5", side, True
-    # ("from the left side" is a direction too; "from the left side of the road" a place, "from the left lane" a lane)
-    # ("from right to left" across the AV's path: it came from the right)
-    from_side = fre.search(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?lane|"
-                           r"\s+side\s+of)|\bfrom\s+(?=(?:left\s+to\s+right|right\s+to\s+left)\b)(left|right)",
-                          ctx, re.I)
-    came_from = (from_side.group(1) or from_side.group(2)).lower() if from_side else None
+    came_from = came_from_side(ctx)
     if junction and came_from and e.category != "pedestrian":  # one on foot crosses the AV's own approach
         return ("R1" if came_from == "left" else "R3"), None, True
     if not junction and came_from and e.category in ("pedestrian", "bicycle", "scooter"):
@@ -276,6 +270,32 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # throughout, 86 were behind it (69 in its lane), 8 ahead in its lane (backing into it, mostly).
         return "R6", "same", False
     return "R5", "same", False
+
+
+# Where a party or a thing came from, told by a compass side of the street ("from the west sidewalk", "from the
+# eastern curb", "ran from the north side of [XXX]").
+FROM_COMPASS_SIDE = compile_gated(r"\bfrom\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|sidewalk|shoulder|edge)",
+                                  re.I)
+# ... or by a side of the AV ("from the left side" is a direction too; "from the left side of the road" a place, "from
+# the left lane" a lane; "from right to left" across the AV's path: it came from the right)
+_FROM_SIDE = compile_gated(r"\bfrom\s+(?:the|EGO's|its)\s+(left|right)\b(?!\s+adjacent|\s+(?:turn\s+|hand\s+)?lane|"
+                           r"\s+side\s+of)|\bfrom\s+(?=(?:left\s+to\s+right|right\s+to\s+left)\b)(left|right)", re.I)
+
+
+def came_from_side(ctx: str) -> str | None:
+    """The side of the AV (left/right) a party or thing came from, when its words say so."""
+    m = _FROM_SIDE.search(ctx)
+    return (m.group(1) or m.group(2)).lower() if m else None
+
+
+def _compass_side(d: Doc, ctx: str) -> str | None:
+    """The side of the AV a thing came from, told by a compass side of the street against the AV's heading."""
+    m = FROM_COMPASS_SIDE.search(ctx)
+    ego_heading = heading(d, -1)
+    if m is None or ego_heading is None:
+        return None
+    rel = (CARDINALS[m.group(1).lower()] - ego_heading) % 360
+    return "right" if rel == 90 else "left" if rel == 270 else None
 
 
 # Backing up: "reversed", "backed up / out / into", "rolled back".
@@ -629,6 +649,10 @@ _FAR_SIDE = compile_gated(r"\b(?:opposite|other|far)\s+(?:side|curb)\b", re.I)
 _SIDE_HEADING = compile_gated(r"\b(?:on|along)\s+(?:the\s+)?(north|south|east|west)bound\b", re.I)
 
 
+# Things that move into the AV's path of themselves or thrown (an animal, a wheel come loose, a toy car).
+_MOVING_THINGS = ("animal", "debris", "other")
+
+
 def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> tuple[str, str]:
     ctx = context(d, e)
     full = " ".join(d.sents[m.sent] for m in e.mentions)
@@ -667,11 +691,18 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
         oc = context(d, owner) + " " + full
         lane = "left" if fre.search(r"\bon\s+the\s+right\b|\bbetween\b|\bmiddle\s+of\s+the\s+road", oc, re.I) else \
             "shoulder" if fre.search(r"\bparked\b|\bcurb\b", oc, re.I) else (side_named(oc) or "shoulder")
+    if cat in _MOVING_THINGS and (origin := _compass_side(d, ctx) or came_from_side(ctx)):
+        # An animal or a thing that moved into the AV's path from one side ("a dog ran from the north side of [XXX]
+        # towards the path of EGO", the AV eastbound) was beside the AV's lane on that side, as a walker crossing
+        # mid-block is (sketch.md).
+        lane = origin
     pos = "R5"
     # Behind the AV: said of the object itself, or (for the object the AV touched) its rear touched or the AV backing
-    # into it; words about another party in the same sentences ("a sedan traveling behind it") are not the object's.
+    # into it, up to the contact ("The dog then crossed behind EGO" is where it went after); words about another party
+    # in the same sentences ("a sedan traveling behind it") are not the object's.
+    upto = " ".join(d.sents[m.sent] for m in e.mentions if d.contact_sent is None or m.sent <= d.contact_sent)
     if fre.search(r"\bbehind\s+(?:it|EGO)\b", own, re.I) or (e.idx == d.partner and fre.search(
-            r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", full, re.I)) or \
+            r"\bbehind\s+(?:it|EGO)\b|\brear\s+of\s+EGO|\bEGO's\s+rear\b|\breversing|\bbacking", upto, re.I)) or \
             (ego_codes.endswith("k") and e.idx == d.partner):
         pos = "R6"
     elif d.junction and ego_turning and e.idx == d.partner:
