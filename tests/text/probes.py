@@ -2899,6 +2899,14 @@ PROBES: tuple[Probe, ...] = (
            "stopped in the left-turn pocket", "queued in the rightmost right turn lane",
            "stopped in traffic in a right turn only lane", "waiting in a left-turn lane"),
           lambda sk: sk.road.layout, "straight"),
+    Probe("the AV's stop told again in progress in a clause of the same moment: no slowing of its own (session 19)",
+          "The Waymo AV was traveling northwestbound on [XXX] and slowed to a stop in anticipation of turning right "
+          "into a driveway. A passenger car made a U-turn just behind and to the left of the Waymo AV {w}, and the "
+          "front of the passenger car made contact with the rear driver side of the Waymo AV.",
+          ("as the AV was slowing", "as the Waymo AV was braking", "while the Waymo AV was decelerating",
+           "as the Waymo AV was stopping", "as the AV was still slowing", "as the Waymo AV was coming to a stop",
+           "while it was slowing down", "as the Waymo AV was slowing to a stop"),
+          _ego, ("moving", "ah")),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

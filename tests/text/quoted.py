@@ -970,6 +970,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained "
         'damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may '
         'supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8631-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8631,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2024 at 10:59 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Ari'
+        'zona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling nort'
+        'hwestbound on [XXX] and slowed to a stop in anticipation of turning right into a driveway immediatel'
+        'y after the intersection with [XXX]. A passenger car traveling southeastbound on [XXX] made a U-turn'
+        ' in the near-side crosswalk just behind and to the left of the Waymo AV as the AV was slowing, and t'
+        'he front passenger side of the passenger car made contact with the rear driver side of the Waymo AV.'
+        " At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles"
+        ' sustained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-'
+        '01. Waymo may supplement or correct its reporting with additional information as it may become avail'
+        'able.'),
     'nhtsa-sgo-ads-30270-10598-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10598, '
         'version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

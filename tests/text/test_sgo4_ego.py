@@ -78,3 +78,11 @@ def test_a_turn_lane_near_a_cross_street_is_short_of_the_junction() -> None:
     # partially entered the left adjacent lane to maneuver around the Waymo AV": the summary places it near the cross
     # street; the turn lane is the approach to the junction, not in it (`straight`).
     assert _layout("nhtsa-sgo-ads-30270-8875-v1") == "straight"
+
+
+def test_a_slowing_told_again_in_a_clause_of_the_same_moment_is_the_stop() -> None:
+    # "The Waymo AV was traveling northwestbound on [XXX] and slowed to a stop in anticipation of turning right into a
+    # driveway ... A passenger car ... made a U-turn in the near-side crosswalk just behind and to the left of the
+    # Waymo AV as the AV was slowing": the slowing is the stop told again, the contact came while it stopped (`ah`,
+    # not `ahc`).
+    assert _ego("nhtsa-sgo-ads-30270-8631-v1") == ("moving", "ah")

@@ -292,6 +292,24 @@ def _place_approached(d: Doc, acts: list[Act], k: int) -> bool:
         not _CLAUSE_BREAK.search(d.sents[a.sent], prev.pos + len(prev.text), a.pos)
 
 
+#: A clause of the same moment opening just before the AV's move it tells ("... as the AV was slowing", "while EGO was
+#: braking"): the move is the background of the main clause.
+_AS_EGO_WAS = compile_gated(r"\b(?:as|while|when)\s+(?:EGO|it)\s+was\s+(?:still\s+)?$", re.I)
+
+
+def _stop_retold_dropped(d: Doc, acts: list[Act]) -> list[Act]:
+    """"slowed to a stop in anticipation of turning right ... A passenger car ... made a U-turn ... just behind the
+    Waymo AV as the AV was slowing": a slowing or stop of the AV told in progress in a clause of the same moment, after
+    its stop was told, is that stop told again (the contact came while it stopped); no slowing of its own."""
+    out: list[Act] = []
+    for a in acts:
+        if a.code in "ch" and a.under_way and out and out[-1].code == "h" and out[-1].sent < a.sent and \
+                _AS_EGO_WAS.search(d.sents[a.sent], max(0, a.pos - 30), a.pos):
+            continue
+        out.append(a)
+    return out
+
+
 #: A party placed behind the AV by a participle of going or following ("a pickup truck traveling directly behind the
 #: Waymo AV", "the vehicle following EGO"): a follower, on its way behind the AV before the AV stopped.
 _FOLLOWER = compile_gated(r"(?:travel(?:l)?ing|driving|positioned|located|following)\s+(?:directly\s+|immediately\s+|"
@@ -352,6 +370,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     acts = [a for k, a in enumerate(acts) if not (a.code == "a" and _DIRECTION_ONLY.match(a.text) and k > 0 and
                                                   acts[k - 1].code in "hS") and not _place_approached(d, acts, k)]
     acts = _stop_results_dropped(d, acts)
+    acts = _stop_retold_dropped(d, acts)
     # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
     # is the AV's at the contact when the telling goes back to it travelling.
     told = [a for a in acts if a.sent not in d.summary]
