@@ -483,3 +483,13 @@ def test_an_animal_that_ran_into_the_av_s_path_from_one_side_is_beside_its_lane_
     # an eastbound AV; where the dog went after the contact is not where it was.
     sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8612-v1"][1], "nhtsa-sgo-ads-30270-8612-v1")
     assert [(o.category, o.position, o.lane) for o in sk.obstacles] == [("animal", "R5", "left")]
+
+
+def test_things_on_the_road_the_av_turned_onto_told_by_its_heading_are_on_the_exit_leg() -> None:
+    # "As the Waymo AV made a right turn onto southwestbound {XXX], it pushed the barrier along with it and the
+    # rightmost edge of the barrier made contact with the rear driver side of a postal van parked at the curb of
+    # southwestbound [XXX] ... two other postal vans and two passenger cars that were also parked at the curb of
+    # southwestbound [XXX]" (nhtsa-sgo-ads-30270-8152-v1, study3, gold R4/shoulder for the five): the heading the AV
+    # turned to names the road of its exit leg; the vans, first named after the first contact, stood there.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8152-v1"][1], "nhtsa-sgo-ads-30270-8152-v1")
+    assert [(o.position, o.lane) for o in sk.obstacles if o.category == "parked_vehicle"] == [("R4", "shoulder")] * 5

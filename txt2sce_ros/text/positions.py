@@ -646,7 +646,10 @@ _OBJECT_NEXT_LANE = compile_gated(r"\b(?:in|into|within)\s+the\s+(?:adjacent\s+(
 # An object on the far side of a two-way street ("parked on the opposite side of the street", "along the opposite
 # curb"; a heading opposite the AV's, "parked on southbound 36th Avenue"): beside the oncoming lane.
 _FAR_SIDE = compile_gated(r"\b(?:opposite|other|far)\s+(?:side|curb)\b", re.I)
-_SIDE_HEADING = compile_gated(r"\b(?:on|along)\s+(?:the\s+)?(north|south|east|west)bound\b", re.I)
+_SIDE_HEADING = compile_gated(r"\b(?:on|along|of)\s+(?:the\s+)?((?:north|south|east|west)+)bound\b", re.I)
+# The heading the AV turned to, in its own clause ("As EGO made a right turn onto southwestbound [XXX]").
+_AV_TURNED_ONTO = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while|whereupon)\b)[^.]){0,120}?\bturn\w*\b[^.]{0,60}?\b"
+                                r"onto\s+(?:the\s+)?((?:north|south|east|west)+)bound\b", re.I)
 
 
 # Things that move into the AV's path of themselves or thrown (an animal, a wheel come loose, a toy car).
@@ -659,7 +662,9 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
     cat = "door" if e.idx in d.doors else e.category
     own = ctx.split(" | ")[0]  # what the first mention itself says of its place
     next_lane = _OBJECT_NEXT_LANE.search(own)
-    told = _SIDE_HEADING.search(own)
+    # (a thing first named after the contact, struck on the way on, stood where its first mention puts it: "two
+    # passenger cars that were also parked at the curb of southwestbound [XXX]")
+    told = _SIDE_HEADING.search(own or d.sents[e.first.sent][e.first.end:e.first.end + 110])
     ego_heading = heading(d, -1)
     far = bool(_FAR_SIDE.search(own)) or (told is not None and ego_heading is not None and
                                           (CARDINALS[told.group(1).lower()] - ego_heading) % 360 == 180)
@@ -706,5 +711,11 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
             (ego_codes.endswith("k") and e.idx == d.partner):
         pos = "R6"
     elif d.junction and ego_turning and e.idx == d.partner:
+        pos = "R4"
+    elif d.junction and told is not None and (onto := _AV_TURNED_ONTO.search(d.text)) and \
+            CARDINALS.get(told.group(1).lower()) == CARDINALS.get(onto.group(1).lower()):
+        # On the road the AV turned onto, told by the heading the AV turned to ("As EGO made a right turn onto
+        # southwestbound [XXX] ... two passenger cars that were also parked at the curb of southwestbound [XXX]"):
+        # beyond the junction, on its exit leg, whatever the AV touched first.
         pos = "R4"
     return pos, lane
