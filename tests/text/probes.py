@@ -338,6 +338,19 @@ _MOVING_THING_SIDES = {
 
 
 PROBES: tuple[Probe, ...] = (
+    # The AV's operator's name misspelt ("the Wamo AV"): still the AV, whose standing is no party's; another
+    # operator's AV is a party, a car.
+    Probe("the AV's operator's name misspelt",
+          "The Waymo AV was stopped in traffic on Mission Street. While the {w} AV remained stopped, a van traveling "
+          "behind the Waymo AV entered the left adjacent lane to go around the Waymo AV, and the front passenger side "
+          "of the van made contact with the rear driver side of the Waymo AV.",
+          ("Waymo", "Wamo", "Wamyo", "Waymoo", "Wayom", "Wyamo"),
+          _npc_actions, [("moving", "af")]),
+    Probe("another operator's AV behind the AV",
+          "A Zoox vehicle in autonomy was stopped at a red light on Folsom Street. {W} traveling behind the Zoox "
+          "vehicle struck its rear bumper.",
+          ("a Cruise AV", "a Waymo AV", "a Waymo autonomous vehicle", "a Cruise autonomous vehicle", "another AV"),
+          lambda sk: ([p.category for p in sk.npcs], sk.collision.with_), (["car"], "npc1")),
     # Objects by name, as SGO and DMV narratives name them (a ride left lying and a toy are things, not parties).
     Probe("an object the AV's front met, by name",
           "The Waymo AV was traveling north on Mission Street when the front of the Waymo AV made contact with {w} in "

@@ -6,6 +6,17 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-8875-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8875, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On September [XXX], 2024 at 6:17 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, Calif'
+        'ornia was in a collision involving a van on [XXX] near [XXX]. The Waymo AV was stopped in traffic in the dedic'
+        'ated right turn lane of southwestbound [XXX]. While the Wamo AV remained stopped, a van traveling behind the W'
+        'aymo AV partially entered the left adjacent lane to maneuver around the Waymo AV. As the van was passing the s'
+        'topped Waymo AV, the front passenger side of the van made contact with the rear driver side of the Waymo AV. A'
+        't the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The van sustained damage. '
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or c'
+        'orrect its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-9823-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9823, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -58,3 +58,10 @@ def test_a_toy_vehicle_is_an_object() -> None:
     # no traffic participant, though it moved.
     sk = _sketch("nhtsa-sgo-ads-30270-9823-v1")
     assert (sk.npcs, [o.category for o in sk.obstacles], sk.collision.with_) == ((), ["other"], "obs1")
+
+
+def test_a_misspelt_operator_s_name_still_names_the_av() -> None:
+    # "While the Wamo AV remained stopped, a van traveling behind the Waymo AV partially entered the left adjacent
+    # lane": the standing is the AV's; the van was on its way (`af`, not a start from a standstill).
+    p = _sketch("nhtsa-sgo-ads-30270-8875-v1").npcs[0]
+    assert (p.start, p.actions) == ("moving", "af")

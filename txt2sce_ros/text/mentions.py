@@ -391,6 +391,7 @@ _BARE_DEFINITE_VEHICLE = compile_gated(r"\bthe\s+(vehicle|car|truck|shuttle|bus|
                                        r"system|computer|operator|driver|occupant|passenger)s?\b)", re.I)
 
 
+_NAMED_BEFORE_EGO = compile_gated(r"\b([Tt]he|[Aa]n?|[Aa]nother)\s+([A-Z][a-z]{2,})\s+EGO\b")
 _SENTENCE_START = compile_gated(r"(?:^|(?<=[.!?]\s)|(?<=[.!?]\s\s))\s*[a-z]")
 
 
@@ -462,6 +463,17 @@ def normalise(text: str) -> str:
     t = _EGO_BARE_POSSESSIVE.sub("EGO's", t)
     # "yielding to the other Waymo AV", "a second Waymo AV approached": another AV of the fleet is a party, a car.
     t = _OTHER_EGO.sub(r"\1 car", t)
+    # "While the Wamo AV remained stopped": a misspelt operator's name before the AV's own name is the AV's; another
+    # operator's, introduced as one ("A Cruise AV traveling behind the Waymo AV struck its rear"), makes another
+    # party, a car (a name the AV itself is given besides its operator's, "the Pony AV", stays the AV's).
+    others = {m.group(2) for m in _NAMED_BEFORE_EGO.finditer(t) if m.group(1)[0] in "Aa" and
+              company_re.fullmatch(m.group(2)) and _company_key(m.group(2)) != av_company}
+
+    def misspelt_or_other(m: re.Match[str]) -> str:
+        if not company_re.fullmatch(m.group(2)):
+            return "EGO"
+        return f"{m.group(1)} {m.group(2)} car" if m.group(2) in others else m.group(0)
+    t = _NAMED_BEFORE_EGO.sub(misspelt_or_other, t)
     if first_person:
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us"); "we" is the
         # AV where it drives ("we were stopped", "we proceeded"), not the company reporting ("we are reporting").
