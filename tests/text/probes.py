@@ -2920,6 +2920,17 @@ PROBES: tuple[Probe, ...] = (
            "as the Waymo AV was stopping", "as the AV was still slowing", "as the Waymo AV was coming to a stop",
            "while it was slowing down", "as the Waymo AV was slowing to a stop"),
           _ego, ("moving", "ah")),
+    Probe("a speed told after the AV's turn or lane change under way is that move's (session 19)",
+          "The Waymo AV was {w}. A passenger car traveling in the adjacent lane made contact with the passenger side "
+          "of the Waymo AV.",
+          ("making a right turn onto Main Street, traveling at 16 mph",
+           "making a right turn along Main Street, traveling at 16 mph",
+           "turning right onto Main Street, moving at approximately 5 mph",
+           "making a left turn onto Main Street, going at about 10 mph",
+           "changing lanes to the left on Main Street, traveling at a speed of 12 mph",
+           "executing a right turn, proceeding at less than 5 mph",
+           "making a right turn along the [XXX], traveling at 16 mph", "turning left, traveling at approximately 8 mph"),
+          _ego, lambda w: ("moving", "f" if "lanes" in w else "d" if "left" in w else "e")),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

@@ -849,6 +849,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'the system from autonomous to manual mode just before the moment of impact. The SUV immediately left '
         'the scene. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test driver was '
         'operating the Waymo AV in manual mode. The Waymo AV sustained minor damage.'),
+    'nhtsa-sgo-ads-30791-10003-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30791-10003'
+        ', version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On Feb [XXX], 2025 at 06:31 PM PT, the blind spot sensor pod of our autonomous vehicle (AV) made con'
+        'tact with a parked passenger car on [XXX], Santa Clara, CA. The AV was making a right turn along the'
+        '[XXX], traveling at 16 mph. Due to an inaccurate map version downloaded on the AV causing the AV to '
+        'drive close to the parked vehicles on the side of the street, the safety driver disengaged the AV. A'
+        'fter disengagement, the right side sensor pod of the AV made contact with the left side rear view mi'
+        'rror of a passenger vehicle parked on the side of the Kingsbury Cir. At the time of the impact, the '
+        "AV's Level 4 ADS was not engaged and the safety driver was operating the AV in manual mode. Both veh"
+        'icles sustained minor damage.'),
     'dmvca-waymo-20220605-r349': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 349, column '
         '"Accident Detail Description")',

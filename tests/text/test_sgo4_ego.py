@@ -86,3 +86,9 @@ def test_a_slowing_told_again_in_a_clause_of_the_same_moment_is_the_stop() -> No
     # Waymo AV as the AV was slowing": the slowing is the stop told again, the contact came while it stopped (`ah`,
     # not `ahc`).
     assert _ego("nhtsa-sgo-ads-30270-8631-v1") == ("moving", "ah")
+
+
+def test_a_speed_told_after_a_turn_under_way_is_the_turn_s() -> None:
+    # "The AV was making a right turn along the[XXX], traveling at 16 mph": the participle tells how fast it turned,
+    # no run of its own after the turn (`e`, not `a`).
+    assert _ego("nhtsa-sgo-ads-30791-10003-v1") == ("moving", "e")

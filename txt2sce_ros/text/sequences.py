@@ -292,6 +292,24 @@ def _place_approached(d: Doc, acts: list[Act], k: int) -> bool:
         not _CLAUSE_BREAK.search(d.sents[a.sent], prev.pos + len(prev.text), a.pos)
 
 
+#: A participle of going that tells the speed of a move ("traveling at 16 mph", "moving at approximately 5 mph").
+_AT_SPEED = compile_gated(r"(?:travel(?:l)?ing|moving|driving|going|proceeding)\s+at\s+(?:a\s+|an\s+)?(?:speed\s+of\s+)?"
+                          r"(?:approximately\s+|about\s+|around\s+|roughly\s+|less\s+than\s+|under\s+)?\d", re.I)
+
+
+def _describes_move(d: Doc, acts: list[Act], k: int) -> bool:
+    """Is the AV's run `acts[k]` only the speed of the turn or lane change told under way just before it, in its
+    sentence ("The AV was making a right turn along the [XXX], traveling at 16 mph")? The manoeuvre is what it was
+    doing; the participle tells how fast."""
+    a = acts[k]
+    if a.code != "a" or k == 0 or not _AT_SPEED.match(d.sents[a.sent], a.pos):
+        return False
+    prev = acts[k - 1]
+    between = d.sents[a.sent][prev.pos + len(prev.text):a.pos]
+    return prev.code in "defgjF" and prev.under_way and prev.sent == a.sent and \
+        not fre.search(r"[;.]|\b(?:and|then|when|while|before|after)\b", between)
+
+
 #: A clause of the same moment opening just before the AV's move it tells ("... as the AV was slowing", "while EGO was
 #: braking"): the move is the background of the main clause.
 _AS_EGO_WAS = compile_gated(r"\b(?:as|while|when)\s+(?:EGO|it)\s+was\s+(?:still\s+)?$", re.I)
@@ -370,6 +388,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     acts = [a for k, a in enumerate(acts) if not (a.code == "a" and _DIRECTION_ONLY.match(a.text) and k > 0 and
                                                   acts[k - 1].code in "hS") and not _place_approached(d, acts, k)]
     acts = _stop_results_dropped(d, acts)
+    acts = [a for k, a in enumerate(acts) if not _describes_move(d, acts, k)]
     acts = _stop_retold_dropped(d, acts)
     # "EGO was stopped ... when it was involved in a collision. EGO was traveling northbound ...": a summary's state
     # is the AV's at the contact when the telling goes back to it travelling.
