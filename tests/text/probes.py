@@ -3052,6 +3052,14 @@ PROBES: tuple[Probe, ...] = (
           "with the dog.",
           tuple(_MOVING_THING_SIDES),
           lambda sk: [(o.position, o.lane) for o in sk.obstacles][:1], lambda w: [("R5", _MOVING_THING_SIDES[w])]),
+    Probe("a barrier that closes the way (a gate, its arm, a barricade, a portable barrier) stands in the AV's lane; "
+          "curbs and medians line the road (session 19)",
+          "The Waymo AV was traveling northbound on [XXX] when the front of the Waymo AV made contact with {w}. The "
+          "Waymo AV sustained damage.",
+          ("a gate arm at the exit of a parking garage", "a construction barricade", "a portable metal barrier",
+           "a parking lot gate", "a temporary barrier", "the gate of a parking lot", "a barricade",
+           "a water-filled barrier"),
+          lambda sk: [(o.category, o.position, o.lane) for o in sk.obstacles][:1], [("barrier", "R5", "same")]),
 )
 
 

@@ -493,3 +493,10 @@ def test_things_on_the_road_the_av_turned_onto_told_by_its_heading_are_on_the_ex
     # turned to names the road of its exit leg; the vans, first named after the first contact, stood there.
     sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8152-v1"][1], "nhtsa-sgo-ads-30270-8152-v1")
     assert [(o.position, o.lane) for o in sk.obstacles if o.category == "parked_vehicle"] == [("R4", "shoulder")] * 5
+
+
+def test_a_barrier_that_closes_the_way_stands_in_the_av_s_lane() -> None:
+    # "the front of the Waymo AV made contact with a portable metal barrier at the intersection with [XXX]"
+    # (nhtsa-sgo-ads-30270-8152-v1, study3, gold R5/same): a portable barrier stands across the way, not at the curb.
+    sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8152-v1"][1], "nhtsa-sgo-ads-30270-8152-v1")
+    assert [(o.position, o.lane) for o in sk.obstacles if o.category == "barrier"] == [("R5", "same")]

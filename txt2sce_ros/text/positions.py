@@ -652,6 +652,13 @@ _AV_TURNED_ONTO = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while|whereupon)\b)[^.]
                                 r"onto\s+(?:the\s+)?((?:north|south|east|west)+)bound\b", re.I)
 
 
+# A barrier that closes a way rather than lining it: a gate or its arm, a barricade, a portable or construction
+# barrier. It stands across the AV's path, in its lane; curbs, medians, walls and guardrails line the road. Studyable
+# gold: the 4 barriers so named are all in the AV's lane (13 others: shoulder 8, left 4, same 1, a chain).
+# ("a gate reader box", "the gate post": a thing beside the gate, no gate)
+_ACROSS_THE_WAY = compile_gated(r"\b(?:(?:gate|gates|gate\s+arm|arm)\b(?!\s+(?:reader|box|post|pole|key\w*|control\w*|"
+                                r"sign|house|booth|card|button|motor))|barricade\w*\b|(?:portable|temporary|construction|"
+                                r"movable|moveable|water[- ]filled)\s+(?:\w+\s+)?barrier\b)", re.I)
 # Things that move into the AV's path of themselves or thrown (an animal, a wheel come loose, a toy car).
 _MOVING_THINGS = ("animal", "debris", "other")
 
@@ -676,6 +683,8 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
         lane = "left"
     elif fre.search(r"\bon\s+the\s+divider|\bon\s+the\s+median", ctx, re.I):
         lane = "left"
+    elif cat == "barrier" and _ACROSS_THE_WAY.search(own):
+        lane = "same"
     elif cat in ("barrier",) or fre.search(r"\b(?:curb|parked\s+at|parallel|sidewalk|shoulder|side\s+of\s+the\s+"
                                           r"(?:road|street)|parking\s+(?:lane|spot|space))\b", ctx, re.I):
         lane = "shoulder"
