@@ -338,6 +338,14 @@ _MOVING_THING_SIDES = {
 
 
 PROBES: tuple[Probe, ...] = (
+    # The vehicle the AV stopped behind stood, wherever the AV's clause places the AV first.
+    Probe("the vehicle the AV stopped behind, its place told between",
+          "The Waymo AV came to a stop {w} behind a van that was unloading passengers in the travel lane. A sedan "
+          "behind the Waymo AV then changed lanes to pass and struck the rear left corner of the Waymo AV.",
+          ("", "in the rightmost lane", "in the right lane heading south on Mission Street at 16th Street,",
+           "in its lane on Mission Street,", "on southbound Mission Street near 16th Street,",
+           "in the travel lane, directly", "at the curb lane of Mission Street,"),
+          lambda sk: [(p.start, p.actions) for p in sk.npcs if p.category == "van"], [("stopped", "")]),
     # The AV's operator's name misspelt ("the Wamo AV"): still the AV, whose standing is no party's; another
     # operator's AV is a party, a car.
     Probe("the AV's operator's name misspelt",

@@ -6,6 +6,17 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-6662-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6662, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On October [XXX], 2023 at 5:42 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, Califor'
+        'nia was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV came to a stop in the rightmo'
+        'st travel lane heading south on [XXX] at [XXX], behind a van that was unloading passengers and cargo in the tr'
+        'avel lane. As the Waymo AV was awaiting an opportunity to maneuver into the left lane to pass the van, the pas'
+        'senger car behind the Waymo AV maneuvered into the left lane to pass both vehicles. As the passenger car passe'
+        'd the Waymo AV, the drivers side of the passenger car made contact with the rear left corner of the Waymo AV. '
+        'At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained d'
+        'amage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01.'),
     'nhtsa-sgo-ads-30270-8875-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8875, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -65,3 +65,10 @@ def test_a_misspelt_operator_s_name_still_names_the_av() -> None:
     # lane": the standing is the AV's; the van was on its way (`af`, not a start from a standstill).
     p = _sketch("nhtsa-sgo-ads-30270-8875-v1").npcs[0]
     assert (p.start, p.actions) == ("moving", "af")
+
+
+def test_the_vehicle_the_av_stopped_behind_stood_though_the_av_s_place_is_told_between() -> None:
+    # "came to a stop in the rightmost travel lane heading south on [XXX] at [XXX], behind a van that was unloading
+    # passengers and cargo in the travel lane": the van stood throughout (stopped, no action).
+    sk = _sketch("nhtsa-sgo-ads-30270-6662-v1")
+    assert [(p.start, p.actions) for p in sk.npcs if p.category == "van"] == [("stopped", "")]

@@ -174,13 +174,17 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
 _PLACED_BEHIND = compile_gated(r"(?:travel(?:l)?ing|driving|positioned|located)\s+(?:directly\s+|immediately\s+|right\s+)?"
                                r"behind\s+EGO\b", re.I)
 _STOP_BEHIND = compile_gated(r"\b(?:stop|stops|stopped|stopping|halt|halts|halted|halting|standstill|rest|waiting|waited|"
-                             r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+(?:\w+ly\s+)?(?:directly\s+|"
+                             r"waits|queued|idling|idled|sitting|sat|paused|pausing)\s+"
+                             # where it stood told first, in its clause ("came to a stop in the rightmost travel lane
+                             # heading south on X at Y, behind a van that was unloading")
+                             r"(?:(?:(?!\b(?:when|while|as|and|but|then|after|before)\b)[^.;]){0,90}?[\s,]\s*)?"
+                             r"(?:\w+ly\s+)?(?:directly\s+|"
                              r"immediately\s+|right\s+)?behind\s+(?:a|an|the|its|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
 
 
 def _av_stood_behind(d: Doc, e: Entity) -> bool:
     """Is the party named as what the AV stopped or waited behind ("came to a stop behind its lead vehicle")?"""
-    return any(m.sent not in d.summary and named_behind_by_av(d, m, _STOP_BEHIND, 60) for m in e.mentions)
+    return any(m.sent not in d.summary and named_behind_by_av(d, m, _STOP_BEHIND, 150) for m in e.mentions)
 
 
 def moved_off_into_object(d: Doc, obstacles: list[Entity], actions: str) -> str:
