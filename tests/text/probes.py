@@ -2939,6 +2939,13 @@ PROBES: tuple[Probe, ...] = (
            "executing a right turn, proceeding at less than 5 mph",
            "making a right turn along the [XXX], traveling at 16 mph", "turning left, traveling at approximately 8 mph"),
           _ego, lambda w: ("moving", "f" if "lanes" in w else "d" if "left" in w else "e")),
+    Probe("the AV's road told single-lane, a turn lane named ahead: one lane (session 19)",
+          "The Waymo AV was stopped {w}, just before the road widened to include a dedicated left turn lane ahead. A "
+          "sedan traveling behind the Waymo AV struck its rear bumper.",
+          ("in traffic in a one-lane section of northbound [XXX]", "at a stop sign in the single lane of "
+           "southwestbound [XXX]", "on the single lane on [XXX]", "in the single travel lane of [XXX]",
+           "on a one lane road", "in a single-lane portion of Main Street", "on a one lane section of Main Street"),
+          lambda sk: sk.road.lanes, 1),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

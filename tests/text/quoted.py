@@ -672,6 +672,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         'stopped Waymo AV, the passenger side of the heavy truck made contact with the rear driver side '
         'corner of the Waymo AV. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in '
         'autonomous mode. Both vehicles sustained damage.'),
+    'nhtsa-sgo-ads-30270-8627-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8627,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2024 at 5:27 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Ariz'
+        'ona was in a collision involving an SUV on [XXX] at [XXX]. The Waymo AV was stopped in traffic in a '
+        'one-lane section of northbound [XXX], just before the road widened to include a dedicated left turn '
+        'lane in the left adjacent lane ahead. While the Waymo AV remained stopped, an SUV approached the Way'
+        'mo AV from behind and began to maneuver around the left side of the Waymo AV to proceed into the ded'
+        'icated left turn lane. While passing the stopped Waymo AV, the passenger side of the SUV made contac'
+        "t with the driver side rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS w"
+        'as engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under R'
+        'equest No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with a'
+        'dditional information as it may become available.'),
     'csvr-waymo-20241227-s358': (
         "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial "
         "358, column 'Accident Detail Description'), transcribed",

@@ -92,3 +92,11 @@ def test_a_speed_told_after_a_turn_under_way_is_the_turn_s() -> None:
     # "The AV was making a right turn along the[XXX], traveling at 16 mph": the participle tells how fast it turned,
     # no run of its own after the turn (`e`, not `a`).
     assert _ego("nhtsa-sgo-ads-30791-10003-v1") == ("moving", "e")
+
+
+def test_a_single_lane_road_has_one_lane_whatever_turn_lane_is_ahead() -> None:
+    # "The Waymo AV was stopped in traffic in a one-lane section of northbound [XXX], just before the road widened to
+    # include a dedicated left turn lane in the left adjacent lane ahead": one lane in the AV's direction (the turn
+    # lane and "left adjacent lane" are where the road widens next).
+    sk = extract(QUOTED["nhtsa-sgo-ads-30270-8627-v1"][1], "nhtsa-sgo-ads-30270-8627-v1")
+    assert sk.road.lanes == 1

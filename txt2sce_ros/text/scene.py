@@ -349,9 +349,17 @@ def road(t: str, *, junction: bool) -> RoadInfo:
     return RoadInfo(layout=layout, control=control, one_way=one_way, lanes=lane_count(t))  # type: ignore[arg-type]
 
 
+#: The AV's road said to have one lane ("in the single lane of southwestbound [XXX]", "a one-lane section of
+#: northbound [XXX]"): a turn lane or a widening named beside it is where the road goes next, not a second lane.
+_SINGLE_LANE = compile_gated(r"\bsingle(?:[- ]|\s+travel\s+)lane\b|\bone-lane\b|\bone\s+lane\s+(?:road|street|section|"
+                             r"roadway|portion)\b", re.I)
+
+
 def lane_count(t: str) -> int | None:
     """The least lane count the text states or implies for the AV's direction."""
     t2 = _OPPOSING_LANE.sub(" ", t)
+    if _SINGLE_LANE.search(t2) and not _LANE_ORD.search(t2) and not _LANE_MIDDLE.search(t2):
+        return 1  # (3 of 3 W-half studyable reports saying so are gold 1, all with a turn lane named ahead)
     n = 0
     for m in _LANES_N.finditer(t2):
         w = (m.group(1) or m.group(2)).lower()
