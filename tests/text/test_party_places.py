@@ -500,3 +500,16 @@ def test_a_barrier_that_closes_the_way_stands_in_the_av_s_lane() -> None:
     # (nhtsa-sgo-ads-30270-8152-v1, study3, gold R5/same): a portable barrier stands across the way, not at the curb.
     sk = extract(_TEXTS["nhtsa-sgo-ads-30270-8152-v1"][1], "nhtsa-sgo-ads-30270-8152-v1")
     assert [(o.position, o.lane) for o in sk.obstacles if o.category == "barrier"] == [("R5", "same")]
+
+
+def test_a_thing_that_came_into_the_av_s_path_from_a_lane_named_on_the_road_is_placed_against_the_av_s_lane() -> None:
+    # "The Waymo AV was traveling southbound on [XXX]in the center of three southbound lanes, passing a queue of
+    # stopped traffic in the leftmost lane, when a domestic animal emerged from a gap between vehicles in the leftmost
+    # lane and crossed the path of the Waymo AV" (nhtsa-sgo-ads-30270-9822-v1, study4, gold R5/left): the AV's lane is
+    # the centre of three, the animal came from the leftmost.
+    def animal(text: str) -> list[tuple[str, str, str]]:
+        return [(o.category, o.position, o.lane) for o in extract(text, "nhtsa-sgo-ads-30270-9822-v1").obstacles]
+    text = _TEXTS["nhtsa-sgo-ads-30270-9822-v1"][1]
+    assert animal(text) == [("animal", "R5", "left")]
+    # ... told "left most", the word split as some operators write it
+    assert animal(text.replace("leftmost", "left most")) == [("animal", "R5", "left")]

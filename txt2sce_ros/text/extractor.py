@@ -18,8 +18,8 @@ from . import fastre as fre
 from .fastre import compile_gated
 from .actions import Act, find_acts
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
-from .positions import obstacle_position, party_position
-from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place
+from .positions import MOVING_THINGS, obstacle_position, party_position
+from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place, thing_origin_lane
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
@@ -315,6 +315,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
     obs: list[Obstacle] = []
     for k, e in enumerate(obstacles, 1):
         pos, lane = obstacle_position(d, e, ego_actions, ego_turning)
+        if e.category in MOVING_THINGS and (origin := thing_origin_lane(d, e)):
+            lane = origin  # a thing that moved into the AV's path came from the lane the road names for it
         thrown_from = placed_at.get(thrower(d, e) if e.category == "debris" else None)
         if thrown_from and thrown_from[0] in ("R5", "R6", "R7") and thrown_from[1]:
             # Debris a party threw at the AV ("a nearby semi-trailer truck merging from Interstate 238 generated a

@@ -660,7 +660,7 @@ _ACROSS_THE_WAY = compile_gated(r"\b(?:(?:gate|gates|gate\s+arm|arm)\b(?!\s+(?:r
                                 r"sign|house|booth|card|button|motor))|barricade\w*\b|(?:portable|temporary|construction|"
                                 r"movable|moveable|water[- ]filled)\s+(?:\w+\s+)?barrier\b)", re.I)
 # Things that move into the AV's path of themselves or thrown (an animal, a wheel come loose, a toy car).
-_MOVING_THINGS = ("animal", "debris", "other")
+MOVING_THINGS = ("animal", "debris", "other")
 
 
 def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> tuple[str, str]:
@@ -705,7 +705,7 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
         oc = context(d, owner) + " " + full
         lane = "left" if fre.search(r"\bon\s+the\s+right\b|\bbetween\b|\bmiddle\s+of\s+the\s+road", oc, re.I) else \
             "shoulder" if fre.search(r"\bparked\b|\bcurb\b", oc, re.I) else (side_named(oc) or "shoulder")
-    if cat in _MOVING_THINGS and (origin := _compass_side(d, ctx) or came_from_side(ctx)):
+    if cat in MOVING_THINGS and (origin := _compass_side(d, ctx) or came_from_side(ctx)):
         # An animal or a thing that moved into the AV's path from one side ("a dog ran from the north side of [XXX]
         # towards the path of EGO", the AV eastbound) was beside the AV's lane on that side, as a walker crossing
         # mid-block is (sketch.md).

@@ -140,12 +140,14 @@ _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|
 # lane the rightmost)
 _ABS_LANE = compile_gated(r"\b(?:in|within|from|into|of)\s+the\s+(?:(far|second|third)\s+)?(left|right|middle|center|centre|"
                           r"fast|slow|inside|outside|curb|hov|carpool)"
-                          r"(?:-?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
+                          # ("the right most lane": the word split as some operators write it)
+                          r"(?:-?\s?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
                           r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b|"
-                          # "in the right of two travel lanes", "in the leftmost of two through lanes"
-                          r"\b(?:in|from|into|of)\s+the\s+(left|right)(?:-?most)?\s+of\s+(?:the\s+)?(?:two|three|four|[234])\s+"
-                          r"(?:[\w-]+\s+)?lanes\b", re.I)
+                          # "in the right of two travel lanes", "in the leftmost of two through lanes", "in the center of
+                          # three southbound lanes"
+                          r"\b(?:in|from|into|of)\s+the\s+(left|right|middle|center|centre)(?:-?\s?most)?\s+of\s+(?:the\s+)?"
+                          r"(?:two|three|four|five|[2-5])\s+(?:[\w-]+\s+)?lanes\b", re.I)
 _INTO_LANE = compile_gated(r"\b(?:into|onto)\s+(?:the\s+|EGO's\s+)?(?:[\w-]+\s+){0,2}lane\s+$", re.I)
 # The AV is the subject of the clause that ends in "behind it" ("EGO, which had stopped behind it", "EGO came to a
 # stop behind it"): the AV is behind. Not "EGO slowed for a motorcyclist behind it", where "it" is the AV.
@@ -333,6 +335,26 @@ AV_AT_CURB = compile_gated(r"\bEGO\b[^.]{0,40}?\b(?:was|had\s+been|had|remained)
                            r"(?:right\s+)?curb\b|"
                            r"on\s+the\s+right\s+(?:side|edge|shoulder)\s+of\s+(?:the\s+)?(?:road|roadway|street|"
                            r"(?:north|south|east|west)+bound\b))", re.I)
+
+
+def thing_origin_lane(d: Doc, e: Entity) -> str | None:
+    """The lane (left/right/same) a thing that moved into the AV's path came from, named on the road and read
+    against the AV's own lane: "the left front wheel from an SUV traveling in the right most lane ... rolled into EGO's
+    lane" (the AV in the middle lane: right), "a domestic animal emerged from a gap between vehicles in the leftmost
+    lane" (the AV in the centre of three lanes: left). A lane it went into is where it went, not where it was."""
+    own = d.av_lane
+    if own is None:
+        return None
+    for m in e.mentions:
+        if d.contact_sent is not None and m.sent > d.contact_sent:
+            break
+        after = d.sents[m.sent][m.end:m.end + 120]
+        for lm in _ABS_LANE.finditer(after):
+            if lm.group(0).lower().startswith(("into", "onto")) or _INTO.search(after[max(0, lm.start() - 25):lm.start()]):
+                continue
+            rank = _lane_rank(lm)
+            return "same" if rank == own else "left" if rank < own else "right"
+    return None
 
 
 def gather(d: Doc, e: Entity) -> list[Cue]:
