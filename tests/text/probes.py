@@ -2946,6 +2946,13 @@ PROBES: tuple[Probe, ...] = (
            "southwestbound [XXX]", "on the single lane on [XXX]", "in the single travel lane of [XXX]",
            "on a one lane road", "in a single-lane portion of Main Street", "on a one lane section of Main Street"),
           lambda sk: sk.road.lanes, 1),
+    Probe("a pull-over finished before the party comes in, the AV met standing: it stood (session 19)",
+          "The Waymo AV was traveling east on [XXX], {w}. An SUV traveling east on [XXX] attempted to pass the Waymo "
+          "AV on the left and made contact with the driver side mirror of the stationary Waymo AV.",
+          ("then pulled over at the curb for a passenger drop-off", "and pulled to the curb to pick up a passenger",
+           "then pulled over to the right curb", "and pulled up to the curb for a drop-off", "then pulled over",
+           "and executed a pullover maneuver at the curb"),
+          _ego, ("stopped", "")),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

@@ -100,3 +100,11 @@ def test_a_single_lane_road_has_one_lane_whatever_turn_lane_is_ahead() -> None:
     # lane and "left adjacent lane" are where the road widens next).
     sk = extract(QUOTED["nhtsa-sgo-ads-30270-8627-v1"][1], "nhtsa-sgo-ads-30270-8627-v1")
     assert sk.road.lanes == 1
+
+
+def test_a_pull_over_finished_before_the_party_comes_in_is_where_the_av_stood() -> None:
+    # "The Waymo AV was traveling east on [XXX], then pulled over at the curb for a passenger drop-off. The Waymo AV
+    # passenger opened the rear driver side door ... An SUV ... attempted to pass the Waymo AV on the left, and the
+    # passenger side of the SUV made contact with the open back driver side door of the stationary Waymo AV": the AV
+    # stood when the interaction began (stopped, '', not `lh`).
+    assert _ego("nhtsa-sgo-ads-30270-9910-v1") == ("stopped", "")

@@ -493,6 +493,14 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
             stopped, prefix = True, [last]  # "moved off on a green light": no run told before it, it stood
             # ("was moving forward", told in progress, is a run along its lane; "while departing from a
             # standstill" names where it began)
+        elif last.code == "l" and not last.under_way and last.sent < fs and d.contact_sent is not None and \
+                _STANDING_AV.search(d.sents[d.contact_sent]):
+            # "The Waymo AV was traveling east on [XXX], then pulled over at the curb for a passenger drop-off. The
+            # Waymo AV passenger opened the rear driver side door ... An SUV ... attempted to pass the Waymo AV on the
+            # left, and ... made contact with the open back driver side door of the stationary Waymo AV": a pull-over
+            # finished in a sentence before the party comes in, the AV met standing, is where it stood when the
+            # interaction began (stopped, ''); a contact during the pull-over keeps `l`
+            stopped = True
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
             if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
