@@ -2233,4 +2233,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'notice of injury to the dog. Waymo is reporting this crash under Request No. 2 of Standing General '
         'Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may '
         'become available.'),
+    'dmvca-waymo-20201218-r146': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 146, column '
+        '"Accident Detail Description")',
+        'A Waymo Autonomous Vehicle (“Waymo AV”) was traveling northbound on Sanchez Street in San Francisco in '
+        'autonomous mode when it entered the oncoming lane in order to proceed around a garbage truck and '
+        'dumpster. As the Waymo AV maneuvered around the garbage truck and dumpster, the Waymo AV test driver '
+        'disengaged autonomous mode and took control of the Waymo AV. As the test driver was attempting to '
+        're-enter the northbound lane in manual mode, the Waymo AV’s front driver’s side tire drove over the '
+        'curb of a traffic island median and the Waymo AV sustained minor damage to its front bumper. No '
+        'injuries were reported.'),
 }

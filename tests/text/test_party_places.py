@@ -513,3 +513,11 @@ def test_a_thing_that_came_into_the_av_s_path_from_a_lane_named_on_the_road_is_p
     assert animal(text) == [("animal", "R5", "left")]
     # ... told "left most", the word split as some operators write it
     assert animal(text.replace("leftmost", "left most")) == [("animal", "R5", "left")]
+
+
+def test_a_median_named_as_the_curb_s_modifier_is_on_the_av_s_left() -> None:
+    # "the Waymo AV's front driver's side tire drove over the curb of a traffic island median" (dmvca-waymo-20201218-r146,
+    # official dev gold: the barrier R5/left), told "a median curb": the modifier opens the object's words.
+    sk = extract(_TEXTS["dmvca-waymo-20201218-r146"][1].replace("the curb of a traffic island median", "a median curb"),
+                 "dmvca-waymo-20201218-r146")
+    assert [(o.position, o.lane) for o in sk.obstacles if o.category == "barrier"] == [("R5", "left")]

@@ -679,7 +679,8 @@ def obstacle_position(d: Doc, e: Entity, ego_codes: str, ego_turning: bool) -> t
         return "R7", "shoulder"
     if next_lane:
         lane = next(g for g in next_lane.groups() if g).lower()
-    elif cat in ("barrier",) and fre.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + ctx, re.I):
+    elif cat in ("barrier",) and fre.search(r"\b(?:median|divider|island)\b", " ".join(e.heads) + " " + ctx, re.I):
+        # (the heads and the context joined by a space: "the median curb" opens the context with its modifier)
         lane = "left"
     elif fre.search(r"\bon\s+the\s+divider|\bon\s+the\s+median", ctx, re.I):
         lane = "left"
