@@ -338,6 +338,14 @@ _MOVING_THING_SIDES = {
 
 
 PROBES: tuple[Probe, ...] = (
+    # A chain collision's party named after the AV's contact: its string is what its own sentence tells.
+    Probe("a party of the chain that stopped after the AV's contact",
+          "The Waymo AV was stopped at a red light on Mission Street. An SUV traveling behind the Waymo AV struck its "
+          "rear bumper. A passenger car then {w} behind the SUV. A pickup truck then made contact with the rear of the "
+          "passenger car.",
+          ("braked to a stop", "came to a stop", "slowed to a stop", "came to an abrupt stop", "came to a complete stop",
+           "braked hard and stopped", "applied the brakes to a stop", "braked to stop", "slowed to stop"),
+          lambda sk: [(p.start, p.actions) for p in sk.npcs], [("moving", "a"), ("moving", "ah"), ("moving", "a")]),
     # The vehicle the AV stopped behind stood, wherever the AV's clause places the AV first.
     Probe("the vehicle the AV stopped behind, its place told between",
           "The Waymo AV came to a stop {w} behind a van that was unloading passengers in the travel lane. A sedan "

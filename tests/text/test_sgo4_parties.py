@@ -72,3 +72,12 @@ def test_the_vehicle_the_av_stopped_behind_stood_though_the_av_s_place_is_told_b
     # passengers and cargo in the travel lane": the van stood throughout (stopped, no action).
     sk = _sketch("nhtsa-sgo-ads-30270-6662-v1")
     assert [(p.start, p.actions) for p in sk.npcs if p.category == "van"] == [("stopped", "")]
+
+
+def test_a_chain_party_named_after_the_contact_is_read_in_its_own_sentence() -> None:
+    # (official gold, dev_gold_study) "The front of an SUV traveling directly behind the Waymo AV then made contact
+    # with the right rear of the stationary Waymo AV. A passenger car then braked to a stop behind the Waymo and to
+    # the left of the SUV. A second passenger car then made contact with the SUV and the first passenger car.":
+    # the first passenger car travelled and stopped (`ah`), the second travelled (`a`).
+    sk = _sketch("nhtsa-sgo-ads-30270-10695-v1")
+    assert [p.actions for p in sk.npcs] == ["a", "ah", "a"]

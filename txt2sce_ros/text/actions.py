@@ -117,6 +117,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
     # "proceeded slowly forward")
     ("h", r"\b(?:(?:came|come|comes|coming)\s+(?:\w+ly\s+)?to|brought\s+(?:EGO|it|the\s+\w+)\s+to|brings?\s+\w+\s+to|"
           r"slow(?:ed|ing|s)?\s+(?:down\s+|\w+ly\s+)?to|brak(?:ed|ing)\s+(?:\w+ly\s+)?to|decelerat(?:ed|ing|es)\s+(?:\w+ly\s+)?to|"
+          # ("applied the brakes to a stop": the braking told by its noun, as "braked to a stop")
+          r"appl(?:ied|ying|ies)\s+(?:the|its|their|his|her)\s+brakes?\s+to|"
           # "screeched to a halt", "ground to a halt", "skidded to a stop", "rolled to a stop": any verb of a vehicle
           # ending its run, with the standstill it reached
           r"(?:screech|skid|slamm|jerk|lurch|roll|eas|glid|coast|slid|drift|pull|grind)(?:ed|ing|s|e)?\s+(?:\w+ly\s+)?to|"

@@ -17,6 +17,7 @@ from ..sketch import Collision, EgoInfo, Obstacle, Party, Sketch
 from . import fastre as fre
 from .fastre import compile_gated
 from .actions import Act, find_acts
+from .lexicon import CONTACT
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import MOVING_THINGS, obstacle_position, party_position
 from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place, thing_origin_lane
@@ -140,6 +141,19 @@ def _told_finite(d: Doc, acts: list[Act]) -> bool:
     return first is not None and not _PARTICIPLE_BEFORE.search(d.sents[first.sent][max(0, first.pos - 40):first.pos])
 
 
+def _own_telling_after_contact(d: Doc, e: Entity) -> list[Act]:
+    """A party first named after the AV's contact (a chain collision's: "A passenger car then braked to a stop behind
+    the Waymo and to the left of the SUV. A second passenger car then made contact with the SUV"): its string is what
+    its own sentence tells, up to its own contact (sketch.md: strings end at the contact)."""
+    told = [m for m in e.mentions if m.sent not in d.summary]
+    if d.contact_sent is None or not told or told[0].sent <= d.contact_sent:
+        return []
+    first = told[0].sent
+    s = d.sents[first]
+    met = CONTACT.search(s, told[0].end)
+    return [a for a in d.acts if a.who == e.idx and a.sent == first and (met is None or a.pos < met.start())]
+
+
 _PARTICIPLE_BEFORE = compile_gated(r"\b(?:attempting|trying|beginning|starting)\s+to\s+(?:\w+\s+)?$", re.I)
 
 
@@ -224,6 +238,8 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             behind.add(e.idx)
         placed_at.setdefault(e.idx, (pos, lane))
         pacts = [a for a in d.acts if a.who == e.idx and a.sent not in summary and before_contact(d, a.sent, a.pos)]
+        if not pacts and e.idx != d.partner:
+            pacts = _own_telling_after_contact(d, e)
         if not any(a.code in "defgjkmFT" for a in pacts):
             # The telling gives no manoeuvre of the party but the summary does ("A Nissan made a left turn into
             # the AV"): the summary is the narrative's own account of it.

@@ -74,7 +74,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
         if not codes and c == "k":  # backing away is from a standstill (sketch.md)
             start = "stopped"
         if not codes and c == "h" and not ego and not stopped:
-            if a.on_its_way or fre.search(r"\b(?:to\s+(?:a|an)\s|suddenly|abruptly|short|quickly|hard)", a.text, re.I):
+            if a.on_its_way or fre.search(r"\b(?:to\s+(?:a\s|an\s|stop\b)|suddenly|abruptly|short|quickly|hard)", a.text,
+                                          re.I):
                 codes.append("a")  # "the bus stopped suddenly", "came to a stop": an event of a party under way
             else:
                 start = "stopped"  # "a vehicle stopped behind EGO then ...": where it stood
