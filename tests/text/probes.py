@@ -2961,6 +2961,14 @@ PROBES: tuple[Probe, ...] = (
            "then pulled over to the right curb", "and pulled up to the curb for a drop-off", "then pulled over",
            "and executed a pullover maneuver at the curb"),
           _ego, ("stopped", "")),
+    Probe("a yield the AV kept up as it moved off is no stop (session 19)",
+          "The Waymo AV was stopped in a queue of traffic at a red light. After the light turned green, the Waymo AV "
+          "began to slowly move ahead {w} when the front of the pickup truck following behind the Waymo AV made "
+          "contact with the rear of the Waymo AV.",
+          ("while continuing to yield to the traffic ahead", "while continuing to yield for pedestrians",
+           "as it continued to yield to the traffic ahead", "while it kept yielding to the traffic ahead",
+           "continuing to yield to cross traffic"),
+          _ego, ("stopped", "i")),
     Probe("a road's curve told by any of its nouns (session 19)",
           "The May autonomous vehicle was traveling in the right lane of a two-lane road with {w} when it made "
           "contact with the curb.",

@@ -754,6 +754,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'the passenger car tried to pass the Zoox vehicle on the right side and contacted the Zoox vehicle. The '
         'front bumper on the passenger car and rear bumper on the Zoox vehicle sustained minor damage. There '
         'were no reported injuries and the police were not called.'),
+    'nhtsa-sgo-ads-30270-7813-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7813,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 10:37 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco'
+        ', California was in a collision involving a pickup truck on [XXX] near [XXX]. The Waymo AV was trave'
+        'ling southwest on [XXX] in the far left lane and stopped in a queue of traffic at a red light at the'
+        ' intersection with [XXX]. After the light turned green, the Waymo AV began to slowly move ahead whil'
+        'e continuing to yield to the traffic ahead when the front of the pickup truck following behind the W'
+        "aymo AV made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level "
+        '4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash '
+        'under Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Way'
+        'mo may supplement or correct its reporting with additional information as it may become available.'),
     'dmvca-apple-20240126-r555': (
         'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 555, column '
         '"Accident Detail Description")',

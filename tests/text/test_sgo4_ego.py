@@ -108,3 +108,10 @@ def test_a_pull_over_finished_before_the_party_comes_in_is_where_the_av_stood() 
     # passenger side of the SUV made contact with the open back driver side door of the stationary Waymo AV": the AV
     # stood when the interaction began (stopped, '', not `lh`).
     assert _ego("nhtsa-sgo-ads-30270-9910-v1") == ("stopped", "")
+
+
+def test_a_yield_kept_up_while_moving_is_no_stop() -> None:
+    # (study3) "After the light turned green, the Waymo AV began to slowly move ahead while continuing to yield to the
+    # traffic ahead when the front of the pickup truck following behind the Waymo AV made contact": it moved off
+    # from the red (`i`); the yield it kept up as it moved is no stop (not `ih`).
+    assert _ego("nhtsa-sgo-ads-30270-7813-v1") == ("stopped", "i")

@@ -508,6 +508,8 @@ _NAMES_EGO = compile_gated(r"\b(?:into|toward|towards)\s+(?:the\s+)?EGO's\b|\bla
 # (an adverb of the stop may come between: "stopped completely in a queue of traffic")
 # A group noun of traffic right after a participle ("approaching traffic", "passing cross-traffic"): its adjective.
 _BEFORE_TRAFFIC = compile_gated(r"\s+(?:cross[\s-]?)?traffic\b", re.I)
+#: A yield kept up, told after the verb of keeping on ("while continuing to yield", "still yielding").
+_KEPT_ON = compile_gated(r"\b(?:continu(?:ed|ing|es|e)\s+(?:to\s+)?|kept\s+(?:on\s+)?|keeping\s+(?:on\s+)?)$", re.I)
 #: The word before a participle used as an adjective of a noun ("a queue of stopped traffic", "past stopped cars").
 _ADJECTIVE_PLACE = compile_gated(r"\b(?:of|a|an|the|past|passing|by|between|among|alongside|beside)\s+$", re.I)
 _IN_QUEUE = compile_gated(r"\s+(?:\w+ly\s+)?in\s+(?:a|the)\s+(?:\w+\s+)?(?:queue|line)\b", re.I)
@@ -901,6 +903,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
             code = "S"
         if code in "hS" and who == -1 and fre.search(r"\bafter\s+(?:having\s+|(?:it|EGO)\s+had\s+)?$", before, re.I):
             code = "S"  # "was proceeding through the intersection after stopping": it had stood (sequences)
+        if code == "h" and who == -1 and s[b:e].lower().startswith("yield") and _KEPT_ON.search(before):
+            continue  # "began to slowly move ahead while continuing to yield to the traffic ahead": the yield it kept
+            # up as it moved is how it moved, no stop
         if code == "h" and who == -1 and s[b:e].lower() == "yielding":
             if _YIELD_ASIDE.search(before) and _AV_MOVING.search(s[:b]) and not _STOP_TOLD.search(s[:b]):
                 code = "c"
