@@ -337,6 +337,464 @@ _MOVING_THING_SIDES = {
 }
 
 
+# Session 19: whole scenes of the collision party's place, one per construction the fresh SGO narratives use.
+_SESSION19_SCENES: tuple[tuple[str, object], ...] = (
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped in a queue of traffic '
+     'on northbound [XXX]. A passenger car traveling northbound approached from behind and the front of the '
+     "passenger car made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 "
+     'ADS was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and slowed for traffic ahead. The front of a passenger car made contact with the rear of the Waymo AV. At the '
+     "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+     'damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX]. A '
+     'passenger car that was approaching from behind made contact with the rear bumper of the Waymo AV. At the time '
+     "of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX]. A '
+     'passenger car traveling in the adjacent lane to the left approached from behind and made contact with the '
+     "rear driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car that was traveling in the adjacent lane to the left began to change lanes to the right, and '
+     'the passenger side of the passenger car made contact with the front driver side of the Waymo AV. At the time '
+     "of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R5', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     "A passenger car that was traveling in the adjacent lane to the right merged into the Waymo AV's lane and made "
+     "contact with the front passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+     'was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'in the left lane. A passenger car traveling northbound in the right lane changed lanes to the left and made '
+     "contact with the front passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+     'was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'in the left lane. A passenger car traveling northbound in the right lane behind the Waymo AV changed lanes to '
+     'the left and made contact with the rear passenger side of the Waymo AV. At the time of the impact, the Waymo '
+     "AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R6', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car traveling southbound in the opposing lane crossed the center line and the front of the '
+     'passenger car made contact with the front driver side of the Waymo AV. At the time of the impact, the Waymo '
+     "AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car traveling in the opposing lane drifted across the double yellow line and made contact with '
+     "the driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     "A southbound passenger car crossed into the Waymo AV's lane and made contact with the front left of the Waymo "
+     "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car traveling in the opposite direction made contact with the driver side mirror of the Waymo AV. '
+     "At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+     'damage.',
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and proceeded through the intersection with [XXX] on a green light. A passenger car traveling eastbound on '
+     '[XXX] entered the intersection and made contact with the driver side of the Waymo AV. At the time of the '
+     "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R1', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and proceeded through the intersection with [XXX] on a green light. A passenger car traveling westbound on '
+     '[XXX] entered the intersection and made contact with the passenger side of the Waymo AV. At the time of the '
+     "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R3', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     "and entered the intersection with [XXX]. A passenger car crossing from the Waymo AV's left made contact with "
+     "the driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R1', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and entered the intersection with [XXX]. A passenger car crossing from the right made contact with the front '
+     "passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R3', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and entered the intersection with [XXX]. A passenger car that was stopped facing westbound on the cross '
+     'street began to proceed and made contact with the passenger side of the Waymo AV. At the time of the impact, '
+     "the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R3', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and entered the intersection with [XXX]. A passenger car that was stopped facing eastbound on [XXX] proceeded '
+     'into the intersection and made contact with the driver side of the Waymo AV. At the time of the impact, the '
+     "Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R1', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car exited a driveway on the right and made contact with the passenger side of the Waymo AV. At '
+     "the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+     'damage.',
+     ('R5', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car exiting a parking lot on the right side of the road pulled into the path of the Waymo AV and '
+     "made contact with the front of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+     'engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car exited a driveway on the left and made contact with the driver side of the Waymo AV. At the '
+     "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+     'damage.',
+     ('R5', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car exited a parking lot on the west side of [XXX] and made contact with the driver side of the '
+     "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R5', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'and proceeded through the intersection with [XXX] on a green light. A passenger car traveling southbound on '
+     '[XXX] made a left turn in front of the Waymo AV and the front of the Waymo AV made contact with the passenger '
+     "side of the passenger car. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+     'mode. Both vehicles sustained damage.',
+     ('R2', None)),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped at a red light on '
+     'northbound [XXX]. A passenger car traveling northbound passed the Waymo AV on the left and made contact with '
+     "the driver side mirror of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'behind a passenger car. The passenger car braked suddenly and the front of the Waymo AV made contact with the '
+     "rear of the passenger car. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+     'mode. Both vehicles sustained damage.',
+     ('R5', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'following a passenger car. The passenger car began to reverse and made contact with the front of the Waymo '
+     "AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R5', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX] '
+     'following behind a passenger car. The passenger car began to reverse and made contact with the front of the '
+     "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R5', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped at a red light on '
+     'northbound [XXX]. A passenger car traveling behind the Waymo AV failed to stop and made contact with the rear '
+     "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+     'vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped at a red light on '
+     'northbound [XXX]. A passenger car in the lane to the right of the Waymo AV attempted to change lanes to the '
+     "left and made contact with the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AV's "
+     'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car traveling in the adjacent lane to the right of the Waymo AV changed lanes to the left into '
+     "the Waymo AV's lane, and the driver side of the passenger car made contact with the passenger side of the "
+     "Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R5', 'right')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX]. A '
+     "southbound passenger car made a left turn into a driveway across the Waymo AV's lane and made contact with "
+     "the front of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+     'mode. Both vehicles sustained damage.',
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was parked at the curb on the east '
+     'side of northbound [XXX]. A passenger car reversed out of a driveway on the west side of [XXX] and made '
+     "contact with the driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+     'engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'An oncoming passenger car made contact with the driver side mirror of the Waymo AV. At the time of the '
+     "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R7', 'left')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling northbound on [XXX]. '
+     'A passenger car traveling behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the '
+     "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX] '
+     "when it was rear-ended by a passenger car. At the time of the impact, the Waymo AV's Level 4 ADS was engaged "
+     'in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. While the Waymo AV was stopped on northbound '
+     "[XXX], a passenger car collided with the rear of the Waymo AV. At the time of the impact, the Waymo AV's "
+     'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX]. A '
+     "passenger car struck the Waymo AV from behind. At the time of the impact, the Waymo AV's Level 4 ADS was "
+     'engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On March [XXX], 2025 at 1:14 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizona was '
+     'in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on northbound [XXX]. A '
+     "passenger car made contact with the Waymo AV's rear bumper. At the time of the impact, the Waymo AV's Level 4 "
+     'ADS was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car traveling in the opposite direction made a left turn in front of the '
+     'Waymo AV into a driveway, and the front of the Waymo AV made contact with the passenger side of the passenger '
+     "car. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R7', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car that was stopped in the left turn lane to the left of the Waymo AV began '
+     "to merge into the Waymo AV's lane and made contact with the driver side of the Waymo AV. At the time of the "
+     "impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R5', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car, which had been parked on the right side of the road, pulled into the '
+     "Waymo AV's lane and made contact with the passenger side of the Waymo AV. At the time of the impact, the "
+     "Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A cyclist riding in the bike lane to the right of the Waymo AV swerved into the lane and '
+     "made contact with the passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+     'was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A bus that was pulling away from a bus stop on the right made contact with the passenger '
+     "side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. "
+     'Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] in the left lane. A passenger car traveling in the same direction in the lane to the '
+     "right moved into the Waymo AV's lane and made contact with the passenger side of the Waymo AV. At the time of "
+     "the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car emerged from a parking garage on the left side of the street and made '
+     "contact with the driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was "
+     'engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car reversing out of a parking space on the right made contact with the '
+     "passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped on '
+     'northbound [XXX]. The Waymo AV began to reverse and made contact with a passenger car that was stopped behind '
+     "it. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R6', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] and entered the intersection with [XXX] on a green light. A passenger car approaching '
+     'from the opposite direction made a left turn across the path of the Waymo AV and made contact with the front '
+     "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+     'vehicles sustained damage.',
+     ('R2', None)),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] and entered the intersection with [XXX] on a green light. A passenger car traveling on '
+     "the cross street from the Waymo AV's right entered the intersection and made contact with the passenger side "
+     "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+     'vehicles sustained damage.',
+     ('R3', None)),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stopped at a stop '
+     'sign on northbound [XXX] at the intersection with [XXX]. A pickup truck that was stopped at the stop sign on '
+     'the cross street to the right of the Waymo AV proceeded into the intersection and made contact with the front '
+     "of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both "
+     'vehicles sustained damage.',
+     ('R3', None)),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] and entered the intersection with [XXX]. A passenger car coming from the left on [XXX] '
+     'failed to yield and made contact with the driver side of the Waymo AV. At the time of the impact, the Waymo '
+     "AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R1', None)),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car ahead of the Waymo AV in the same lane stopped suddenly, and the front '
+     "of the Waymo AV made contact with the rear of the passenger car. At the time of the impact, the Waymo AV's "
+     'Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. The lead vehicle braked hard, and the Waymo AV made contact with the rear of the lead '
+     "vehicle. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles "
+     'sustained damage.',
+     ('R5', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] in the right lane. A passenger car traveling in the left lane behind the Waymo AV '
+     'attempted to change into the right lane and made contact with the rear driver side of the Waymo AV. At the '
+     "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained "
+     'damage.',
+     ('R6', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] in the left lane. A motorcyclist approaching from behind in the right lane attempted to '
+     'pass and made contact with the passenger side mirror of the Waymo AV. At the time of the impact, the Waymo '
+     "AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R6', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A scooter rider on the sidewalk to the right of the Waymo AV rode into the roadway and '
+     "made contact with the passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+     'was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was making a right '
+     'turn from northbound [XXX] onto eastbound [XXX]. A pedestrian crossing [XXX] in the crosswalk made contact '
+     "with the passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R4', None)),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped in '
+     'traffic on northbound [XXX]. A passenger car traveling northbound on [XXX] did not stop in time and its front '
+     "made contact with the Waymo AV's rear. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was slowing to a '
+     'stop on northbound [XXX] for a pedestrian. The vehicle behind the Waymo AV, a passenger car, made contact '
+     "with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R6', 'same')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car traveling southbound on [XXX] made a U-turn and made contact with the '
+     "driver side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous "
+     'mode. Both vehicles sustained damage.',
+     ('R7', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A passenger car that was parallel parked on the right began to make a U-turn and made '
+     "contact with the front passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+     'was engaged in autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX] on a two-lane road. A southbound passenger car swerved to avoid a cyclist and crossed '
+     "into the Waymo AV's lane, making contact with the front of the Waymo AV. At the time of the impact, the Waymo "
+     "AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R7', 'left')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling '
+     'northbound on [XXX]. A delivery van double-parked in the right lane began to pull forward and made contact '
+     "with the passenger side of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in "
+     'autonomous mode. Both vehicles sustained damage.',
+     ('R5', 'right')),
+    ('On May [XXX], 2024 at 2:10 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, '
+     'California was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was stopped for a '
+     'red light on northbound [XXX]. A passenger car in the adjacent left lane, which had been stopped behind the '
+     "Waymo AV's rear, began to move forward and made contact with the driver side of the Waymo AV. At the time of "
+     "the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage.",
+     ('R6', 'left')),
+    ('A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was stopped at a red '
+     'light on eastbound Pine Street at Polk Street when a Toyota Prius approached from behind and made contact '
+     'with the rear bumper of the Cruise AV.',
+     ('R6', 'same')),
+    ('A Cruise autonomous vehicle ("Cruise AV"), operating in autonomous mode, was traveling eastbound on Pine '
+     'Street in the right lane. A Honda Civic traveling in the left lane attempted to merge into the right lane '
+     'behind the Cruise AV and made contact with the rear left bumper of the Cruise AV.',
+     ('R6', 'left')),
+    ('A Cruise autonomous vehicle ("Cruise AV"), operating in autonomous mode, was traveling northbound on Valencia '
+     'Street. A cyclist in the bike lane to the right of the Cruise AV moved left into the lane and made contact '
+     'with the right side of the Cruise AV.',
+     ('R5', 'right')),
+    ('A Waymo Autonomous Vehicle ("Waymo AV") was stopped in the left lane of northbound Mission Street at a red '
+     'light. A motorcyclist riding between the lanes passed on the right side of the Waymo AV and made contact with '
+     'the right side mirror.',
+     ('R6', 'right')),
+    ('A Zoox vehicle was traveling northbound on Market Street in autonomous mode. A vehicle traveling southbound '
+     'crossed over the double yellow lines and sideswiped the left side of the Zoox vehicle.',
+     ('R7', 'left')),
+    ('A Cruise autonomous vehicle ("Cruise AV") was traveling northbound on Fillmore Street through the '
+     'intersection with Geary Boulevard on a green light when a Ford Fusion traveling eastbound on Geary Boulevard '
+     'ran the red light and struck the left side of the Cruise AV.',
+     ('R1', None)),
+    ('A Cruise autonomous vehicle ("Cruise AV") was traveling northbound on Fillmore Street through the '
+     'intersection with Geary Boulevard on a green light when a Ford Fusion traveling westbound on Geary Boulevard '
+     'ran the red light and struck the right side of the Cruise AV.',
+     ('R3', None)),
+    ('A Cruise autonomous vehicle ("Cruise AV") was traveling northbound on Fillmore Street and entered the '
+     'intersection with Geary Boulevard on a green light when a southbound Nissan Altima made a left turn across '
+     'the path of the Cruise AV, and the front of the Cruise AV made contact with the right side of the Nissan '
+     'Altima.',
+     ('R2', None)),
+    ('The Waymo vehicle was stopped for a pedestrian at the crosswalk on westbound El Camino Real when another '
+     'vehicle traveling in the same direction collided with the rear of the Waymo vehicle.',
+     ('R6', 'same')),
+    ('Our vehicle (V1) was stopped at the limit line. V2 was behind V1 and rear-ended V1.',
+     ('R6', 'same')),
+    ('Our AV was traveling behind a box truck on westbound Howard Street. The box truck stopped and began '
+     'reversing, making contact with the front bumper of our AV.',
+     ('R5', 'same')),
+    ('The Pony.ai vehicle was stopped at a red light in the number 2 lane of northbound Main Street. A sedan in the '
+     'number 1 lane approached from behind and made contact with the left rear quarter panel of the Pony.ai vehicle '
+     'while changing lanes.',
+     ('R6', 'left')),
+    ('The WeRide vehicle was traveling in the number 1 lane of northbound Main Street. A pickup truck in the number '
+     '2 lane changed lanes to the left and made contact with the right front fender of the WeRide vehicle.',
+     ('R5', 'right')),
+    ('The AutoX vehicle was traveling in the number 2 lane of eastbound Stevens Creek Boulevard. A sedan in the '
+     'number 1 lane made an unsafe lane change to the right and struck the left front of the AutoX vehicle.',
+     ('R5', 'left')),
+    ('The Apple vehicle was stopped in traffic on northbound De Anza Boulevard when it was struck in the rear by a '
+     'passenger vehicle.',
+     ('R6', 'same')),
+    ('While stopped at the red light, our vehicle was hit from behind by a Honda Accord.',
+     ('R6', 'same')),
+    ('The Nuro vehicle was traveling northbound on Bay Area Boulevard when a vehicle pulled out of a driveway on '
+     'the right and struck the right side of the Nuro vehicle.',
+     ('R5', 'right')),
+    ('The Waymo AV was stopped at the stop sign on southbound Hill Street at Elm Street and then proceeded into the '
+     'intersection. A sedan traveling eastbound on Elm Street failed to stop at its stop sign and made contact with '
+     'the right side of the Waymo AV.',
+     ('R3', None)),
+    ('The Cruise AV was stopped in the left-turn lane on northbound Van Ness Avenue. A pickup truck in the adjacent '
+     'through lane to its right, traveling northbound, moved left and made contact with the rear passenger side of '
+     'the Cruise AV.',
+     ('R6', 'right')),
+    ('The Cruise AV was proceeding northbound on Van Ness Avenue. A Tesla following too closely behind the Cruise '
+     'AV failed to stop and made contact with the rear of the Cruise AV.',
+     ('R6', 'same')),
+)
+
+
 PROBES: tuple[Probe, ...] = (
     # A chain collision's party named after the AV's contact: its string is what its own sentence tells.
     Probe("a party of the chain that stopped after the AV's contact",
@@ -3057,6 +3515,10 @@ PROBES: tuple[Probe, ...] = (
            "remained stopped for the red signal", "was at a stop", "was stopped in a queue of traffic",
            "was sitting at a red light", "was stopped in traffic"),
           _ego, ("stopped", "")),
+    _scenes("the collision party's place told as SGO and DMV narratives tell it: contact parts, lanes beside, "
+            "oncoming, crossing, driveways, followed and following (session 19, 84 scenes, all read right when "
+            "written)",
+            _partner_position, _SESSION19_SCENES),
     Probe("an oncoming party turning off into a roadside place or crossing the median, the AV waiting for a junction: "
           "on the AV's own road, not the opposite approach (session 19)",
           "The Waymo AV was stopped in a queue of northbound traffic for a red light at the intersection with [XXX]. "
