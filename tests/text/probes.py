@@ -796,6 +796,12 @@ _SESSION19_SCENES: tuple[tuple[str, object], ...] = (
 
 
 PROBES: tuple[Probe, ...] = (
+    # The party the AV reacted to, named in the AV's reason told after the contact.
+    Probe("the party the AV acted for, named after the contact",
+          "The Zoox vehicle was traveling in the right lane of Main Street when it struck the curb. The Zoox vehicle "
+          "had moved toward the curb {w} a truck in the adjacent lane.",
+          ("due to", "because of", "in response to", "to avoid", "due to perceived risk from", "in order to avoid"),
+          lambda sk: ([p.category for p in sk.npcs], [o.category for o in sk.obstacles]), (["truck"], ["barrier"])),
     # A chain collision's party named after the AV's contact: its string is what its own sentence tells.
     Probe("a party of the chain that stopped after the AV's contact",
           "The Waymo AV was stopped at a red light on Mission Street. An SUV traveling behind the Waymo AV struck its "

@@ -81,3 +81,12 @@ def test_a_chain_party_named_after_the_contact_is_read_in_its_own_sentence() -> 
     # the first passenger car travelled and stopped (`ah`), the second travelled (`a`).
     sk = _sketch("nhtsa-sgo-ads-30270-10695-v1")
     assert [p.actions for p in sk.npcs] == ["a", "ah", "a"]
+
+
+def test_the_party_the_av_acted_for_counts_though_named_after_the_contact() -> None:
+    # "the May vehicle made contact with the curb ... The May vehicle chose to maneuver at the curb due to perceived
+    # risk from a car in an adjacent lane": the car the AV reacted to took part (sketch.md: a party the AV acted for,
+    # singled out); the curb is the object struck.
+    sk = _sketch("nhtsa-sgo-ads-30413-8861-v1")
+    assert ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_) == \
+        (["car"], ["barrier"], "obs1")

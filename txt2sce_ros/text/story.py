@@ -489,6 +489,19 @@ def struck_by_party(d: Doc, e: Entity) -> bool:
     return any(m.sent not in d.summary and _met_by_party(d, m) for m in e.mentions)
 
 
+# The AV's reason told after the contact ("EGO chose to maneuver at the curb due to perceived risk from a car in an
+# adjacent lane"): the party it reacted to took part before the contact, wherever the telling names it.
+_REASON_BEFORE = compile_gated(r"\b(?:due\s+to|because\s+of|in\s+response\s+to|risk\s+(?:from|of|posed\s+by)|to\s+avoid|"
+                               r"in\s+order\s+to\s+avoid)\s+(?:[\w-]+\s+){0,2}?(?:a|an|the|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def _reason_told_after(d: Doc, m: Mention) -> bool:
+    """Is mention `m`, told after the contact, the party the AV acted for (its reason, told after the event)?"""
+    s = d.sents[m.sent]
+    return m.kind == "party" and bool(_REASON_BEFORE.search(s, max(0, m.start - 70), m.start)) and \
+        who_for(m.start - 1, [x for x in d.ments[m.sent] if x.start < m.start], None, s) == -1
+
+
 def _moved(d: Doc, who: int) -> bool:
     """Is any move of party `who` told (O, P: out of a parking spot)?"""
     return any(a.who == who and a.code in "abcdefgijkmFTOP" for a in d.acts)
@@ -503,7 +516,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
         first = first_detail[0] if first_detail else e.first
         is_partner = e.idx == d.partner
         if not is_partner and e.idx not in d.struck and not before_contact(d, first.sent, first.start) and \
-                not _in_chain(d, e, first):
+                not _in_chain(d, e, first) and not _reason_told_after(d, first):
             continue
         moved = _moved(d, e.idx)
         if e.kind == "party" and not moved and not is_partner and e.category in ("car", "van", "truck", "bus") and \
