@@ -363,8 +363,6 @@ def _stop_results_dropped(d: Doc, acts: list[Act]) -> list[Act]:
     them in the official gold; the gold's start agrees with this reading in 7 of 8 (stopped: study2 s135, study3
     10669 and 10726, study4 8851; `ah` for a follower: study2 s259 and s275, study3 7719); study3's 9347 ("approached
     the Waymo AV from behind") reads `ah`."""
-    if not _follower_ran_in(d):
-        return acts
     out: list[Act] = []
     stop: Act | None = None  # the AV's last stop, while only its states follow it
     for a in acts:
@@ -372,7 +370,8 @@ def _stop_results_dropped(d: Doc, acts: list[Act]) -> list[Act]:
             continue
         stop = a if a.code == "h" else None
         out.append(a)
-    return out
+    # (who met the AV is read only when a state was told after a stop: most narratives tell none)
+    return out if len(out) < len(acts) and _follower_ran_in(d) else acts
 
 
 def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bool) -> tuple[str, str, bool]:
