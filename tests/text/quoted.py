@@ -6,6 +6,21 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-7938-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7938, version 1, column'
+        ' "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May 28, 2024, Waymo received notice of an allegation that a Waymo Autonomous Vehicle ("Waymo AV") operating'
+        ' in San Francisco, California may have contributed to a low-speed collision between a fire engine and an SUV o'
+        'n [XXX] near [XXX]. On May [XXX], 2024 at 6:11 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San '
+        'Francisco, California was traveling north on [XXX] within its lane when it slowed to a stop as a fire engine, '
+        'which was not displaying lights or sounding its sirens, approached in the oncoming direction. The Waymo AV beg'
+        'an to slowly proceed straight within its lane as the fire engine was passing on its left. Neither the SUV nor '
+        'the fire engine made contact with the Waymo AV. Waymo received notice of an allegation that as the fire engine'
+        ' proceeded straight, it made contact with the driver side of an SUV that was parked at the curb immediately to'
+        " the right of the fire engine. When the Waymo AV proceeded in its lane past the fire engine, the Waymo AV's Le"
+        'vel 4 ADS was engaged in autonomous mode. Waymo is reporting this crash under Request No. 2 of Standing Genera'
+        'l Order 2021-01. Waymo may supplement or correct its reporting with additional information as it may become av'
+        'ailable.'),
     'nhtsa-sgo-ads-30270-6662-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6662, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -90,3 +90,13 @@ def test_the_party_the_av_acted_for_counts_though_named_after_the_contact() -> N
     sk = _sketch("nhtsa-sgo-ads-30413-8861-v1")
     assert ([p.category for p in sk.npcs], [o.category for o in sk.obstacles], sk.collision.with_) == \
         (["car"], ["barrier"], "obs1")
+
+
+def test_a_second_notice_of_an_allegation_tells_the_event() -> None:
+    # (official gold, dev_gold) "On May 28, 2024, Waymo received notice of an allegation that a Waymo Autonomous
+    # Vehicle ... may have contributed to a low-speed collision between a fire engine and an SUV ... Waymo received
+    # notice of an allegation that as the fire engine proceeded straight, it made contact with the driver side of an
+    # SUV that was parked at the curb": the first notice announces, the second tells; the parked SUV the fire engine
+    # struck takes part (obstacle `parked_vehicle`).
+    sk = _sketch("nhtsa-sgo-ads-30270-7938-v1")
+    assert ([p.category for p in sk.npcs], [o.category for o in sk.obstacles]) == (["truck"], ["parked_vehicle"])

@@ -690,7 +690,8 @@ _IN_VEHICLE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:sitting\s+|s
 _OWN_PART = compile_gated(r"\b(?:front|rear|back|left|right|driver|passenger|spare|its|their|his|her)\b", re.I)
 _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operating|aboard)\s+(?:a|an|the|his|her|their)?"
                    r"\s*(?:[\w-]+\s+){0,2}$", re.I)
-_AFTER_PARKED = compile_gated(r"^\s*,?\s*(?:that|which)?\s*(?:was|were|is|are|had\s+been|has\s+been)?\s*"
+# (a model's name may follow the make the mention names: "a Ford Explorer that was parked at the curb")
+_AFTER_PARKED = compile_gated(r"^(?:\s+(?-i:[A-Z])[\w-]*)?\s*,?\s*(?:that|which)?\s*(?:was|were|is|are|had\s+been|has\s+been)?\s*"
                               r"(?:(?:\w+ly|also|still|both)\s+)?(?:double[- ])?parked\b", re.I)
 _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
 #: Names of a vehicle by who drives it, as general as "a vehicle" ("a motorist ... the passenger vehicle").

@@ -125,11 +125,19 @@ _ABOUT_THE_REPORT = compile_gated(r"\b(?:this|the|original|initial|monthly|previ
 _FORM_FIELD = compile_gated(r"\b[A-Z][\w/]*(?:\s+[\w/]+){0,3}:\s")  # "Weather: ", "Lighting Conditions: "
 
 
+_NOTICE = compile_gated(r"\breceived\s+notice\b", re.I)
+
+
 def summary_sentences(sents: list[str]) -> set[int]:
     """Sentences that summarise or administer rather than tell: "was in a collision involving an SUV", "Waymo is
     reporting this crash under ...", form headers ("Weather: Clear Passengers: 4 ...")."""
     out = {i for i, s in enumerate(sents) if _SUMMARY.search(s) or BOILERPLATE.search(s)
            or len(_FORM_FIELD.findall(s)) >= 3}
+    notices = [i for i in sorted(out) if _NOTICE.search(sents[i])]
+    # "Waymo received notice of an allegation that ..." a second time: the first announces the event, a later one
+    # tells it ("... that as the fire engine proceeded straight, it made contact with the driver side of an SUV that
+    # was parked at the curb"), unless it is a summary on other grounds too.
+    out -= {i for i in notices[1:] if not _SUMMARY.search(_NOTICE.sub("", sents[i]))}
     # The opening sentence tells the contact in brief when a later one tells it again ("A Zoox vehicle was rear-ended
     # by a passenger car ... The passenger car ..."); notes about the report itself may come first ("This report is
     # meant to correct monthly report 30270-7719-1 ...", "The content of this report is unchanged ...").
@@ -464,7 +472,7 @@ def _only_travelled_behind(d: Doc, e: Entity) -> bool:
 # (the second of two things met, too: "made contact with the SUV and the first passenger car")
 _CONTACT_OBJECT = compile_gated(r"^\s*(?:with\s+|into\s+|against\s+)?(?:(?:the|an?)\s+(?:[\w-]+\s+){1,3}and\s+)?"
                                 r"(?:the\s+|an?\s+)?(?:(?:front|rear|back|left|right|"
-                                r"driver|passenger|side|corner|bumper|door|mirror)\s+){0,4}(?:of\s+)?(?:the\s+|an?\s+)?$",
+                                r"driver|passenger|side|corner|bumper|door|mirror)(?:'s)?\s+){0,4}(?:of\s+)?(?:the\s+|an?\s+)?$",
                                 re.I)
 
 
