@@ -796,6 +796,16 @@ _SESSION19_SCENES: tuple[tuple[str, object], ...] = (
 
 
 PROBES: tuple[Probe, ...] = (
+    # A turn that swings over the centre line: the crossing is the turn's own path, no lane change.
+    Probe("a turn that crosses the centre line",
+          "The Waymo AV was stopped at a red light on Mission Street at 16th Street. A heavy truck traveling west on "
+          "16th Street {w}, and the left side of the truck made contact with the driver side front corner of the "
+          "Waymo AV.",
+          ("made a left turn onto Mission Street crossing the center line",
+           "turned left onto Mission Street and partially crossed the centerline",
+           "turned left onto Mission Street, partially crossing the double yellow line",
+           "made a left turn onto Mission Street, crossing over the centre line"),
+          lambda sk: [p.actions for p in sk.npcs], ["ad"]),
     # The party the AV reacted to, named in the AV's reason told after the contact.
     Probe("the party the AV acted for, named after the contact",
           "The Zoox vehicle was traveling in the right lane of Main Street when it struck the curb. The Zoox vehicle "

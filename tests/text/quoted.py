@@ -6,6 +6,18 @@ tests/text/sgo4/study4.jsonl, ../shared/data/reports/dev.jsonl with the dev gold
 from __future__ import annotations
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-7882-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7882, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On June [XXX], 2024 at 12:41 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco, Califor'
+        'nia was in a collision involving a heavy truck on [XXX] near [XXX]. The Waymo AV was traveling north on [XXX] '
+        'and came to a stop in its lane at the intersection with [XXX] as a heavy truck was making a left turn from wes'
+        'tbound [XXX] onto southbound [XXX] in front of the Waymo AV. As the truck turned left, it partially crossed th'
+        'e centerline of [XXX] and the left side of the truck body made contact with the driver side front corner of th'
+        "e Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV"
+        ' sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because'
+        ' a vehicle involved was towed away. Waymo may supplement or correct its reporting with additional information '
+        'as it may become available.'),
     'nhtsa-sgo-ads-30270-7938-v1': (
         'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7938, version 1, column'
         ' "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -100,3 +100,8 @@ def test_a_second_notice_of_an_allegation_tells_the_event() -> None:
     # struck takes part (obstacle `parked_vehicle`).
     sk = _sketch("nhtsa-sgo-ads-30270-7938-v1")
     assert ([p.category for p in sk.npcs], [o.category for o in sk.obstacles]) == (["truck"], ["parked_vehicle"])
+
+
+def test_a_turn_that_crosses_the_centre_line_is_no_lane_change() -> None:
+    # "As the truck turned left, it partially crossed the centerline of [XXX]": the turn swung wide (`d`).
+    assert _sketch("nhtsa-sgo-ads-30270-7882-v1").npcs[0].actions == "d"

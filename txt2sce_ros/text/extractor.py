@@ -24,7 +24,7 @@ from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place, thing_o
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
-                        prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact)
+                        prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact, wide_turn)
 from .story import (BOILERPLATE, body_side, context, Doc, add_doors, attach_towed, before_contact, counted,
                     ego_contact_part, find_contact, heading, summary_sentences, thrower)
 
@@ -245,7 +245,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # the AV"): the summary is the narrative's own account of it.
             pacts = sorted(pacts + [a for a in d.acts if a.who == e.idx and a.sent in summary and a.code in "defgjkm"],
                            key=lambda a: (a.sent, a.pos))
-        pacts = prepend_modifier_acts(d, e, pacts)
+        pacts = wide_turn(prepend_modifier_acts(d, e, pacts))
         first_sent = ([m.sent for m in e.mentions if m.sent not in summary] or [e.first.sent])[0]
         setup_stop = [k for k, a in enumerate(pacts) if a.code == "S" and a.sent == first_sent]
         if setup_stop:

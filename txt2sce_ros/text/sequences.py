@@ -669,6 +669,23 @@ _MOD_ACTS = (("m", compile_gated(r"\bjaywalking\b|\bcrossing\b", re.I)),
                                  r"lane-splitting)\b", re.I)))
 
 
+_CENTRE_LINE = compile_gated(r"\b(?:cent(?:er|re)[\s-]?lines?|double[\s-]yellow|median\s+lines?)\b", re.I)
+
+
+def wide_turn(acts: list[Act]) -> list[Act]:
+    """A turn that swings over the centre line ("As the truck turned left, it partially crossed the centerline", "made
+    a right turn onto X crossing the center line into the lane the Waymo AV was traveling in"): the crossing is the
+    turn's own path, no lane change of its own (the studyable gold: `d`, `ea`)."""
+    out: list[Act] = []
+    for a in acts:
+        turned = next((x for x in reversed(out) if x.code not in "aA"), None)
+        if a.code in "fgF" and _CENTRE_LINE.search(a.text) and turned is not None and turned.code in "de" and \
+                0 <= a.sent - turned.sent <= 1:
+            continue
+        out.append(a)
+    return out
+
+
 def prepend_modifier_acts(d: Doc, e: Entity, pacts: list[Act]) -> list[Act]:
     """"a jaywalking pedestrian", "an oncoming vehicle": the modifier tells the manoeuvre."""
     first = e.mentions[0]
