@@ -1,8 +1,7 @@
 """Real collision narratives quoted by the extraction tests, one place for all of them: report id -> (source,
 narrative), the narrative as the studyable set gives it (tests/text/csvr/study2.jsonl, tests/text/sgo/study3.jsonl,
-tests/text/sgo4/study4.jsonl, tests/text/sgo5/study5.jsonl, ../shared/data/reports/dev.jsonl with the dev gold) and
-its source beside it;
-`test_quoted` holds them to the studyable sets, word for word."""
+tests/text/sgo4/study4.jsonl, tests/text/sgo5/study5.jsonl, ../shared/data/reports/dev.jsonl with the dev gold)
+and its source beside it; `test_quoted` holds them to the studyable sets, word for word."""
 
 from __future__ import annotations
 
