@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Iterable
 
 from txt2sce_ros import contract as c
 from txt2sce_ros import ros_io
