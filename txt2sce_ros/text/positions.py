@@ -417,11 +417,12 @@ _OFF_THE_JUNCTION = compile_gated(r"\b(?:into|to|toward|towards)\s+(?:a|an|the)\
                                   r"(?:median|divider)\b", re.I)
 
 
-# A roadside told by its compass side of the street ("on the north side of [XXX]", "on the west curb of 2nd Avenue").
-_COMPASS_SIDE_OF = r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\b"
-_PARTY_SIDE_OF = compile_gated(_COMPASS_SIDE_OF, re.I)
+#: A roadside told by its compass side of the street ("on the north side of [XXX]", "on the west curb of 2nd
+#: Avenue"); `relations` reads the street after it as a lane cue.
+COMPASS_SIDE_OF = r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\b"
+_PARTY_SIDE_OF = compile_gated(COMPASS_SIDE_OF, re.I)
 # ... the AV's own, in its clause ("EGO was parked at the curb facing westbound on the north side of [XXX]")
-_AV_SIDE_OF = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while|as|and)\b)[^.;]){0,100}?" + _COMPASS_SIDE_OF, re.I)
+_AV_SIDE_OF = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while|as|and)\b)[^.;]){0,100}?" + COMPASS_SIDE_OF, re.I)
 
 
 def _across_by_compass(d: Doc, ctx: str) -> re.Match[str] | None:

@@ -45,7 +45,8 @@ from dataclasses import dataclass
 from . import fastre as fre
 from .fastre import compile_gated
 from .mentions import Entity, Mention
-from .positions import AV_CLAUSE, BACKING, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street, side_from_flank
+from .positions import (AV_CLAUSE, BACKING, COMPASS_SIDE_OF, FROM_BEHIND, PLACE_SIDE, YIELDED_TO, exit_street,
+                        side_from_flank)
 from .lexicon import CARDINALS
 from .scene import _STANDING as STANDING
 from .story import ONCOMING, TURN_WORDS, Doc, before_contact, context, ego_contact_part, ends_phrase, heading
@@ -196,7 +197,7 @@ _PASS_QUEUE = compile_gated(r"\b(?:(?:get|go|going|drive|driving|move|moving|pas
                             rf"(?:long\s+)?{_QUEUE}"
                             r"(?:\s+(?:of\s+)?(?:traffic|vehicles|cars))?|\bbypass(?:ed|ing)?\s+(?:the\s+)?traffic\b)",
                             re.I)
-_COMPASS_SIDE = compile_gated(r"\bon\s+the\s+(north|south|east|west)(?:ern)?\s+(?:side|curb|edge)\s+of\s+(?:the\s+)?"
+_COMPASS_SIDE = compile_gated(COMPASS_SIDE_OF + r"\s+(?:the\s+)?"
                               # (a street's name, or its redaction in the SGO narratives: "on the north side of [XXX]")
                               r"(?:street|road|roadway|block|(?:(?-i:[A-Z0-9])[\w-]*\s+){1,3}(?:street|st|avenue|ave|"
                               r"boulevard|blvd|road|rd|way|drive|dr|lane|ln)|\[XXX\])(?:\b|(?<=\]))|"
