@@ -5,6 +5,9 @@ and its source beside it; `test_quoted` holds them to the studyable sets, word f
 
 from __future__ import annotations
 
+from txt2sce_ros.sketch import Sketch
+from txt2sce_ros.text.extractor import extract
+
 QUOTED: dict[str, tuple[str, str]] = {
     'nhtsa-sgo-ads-30270-7882-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7882, version 1'
@@ -2283,3 +2286,8 @@ QUOTED: dict[str, tuple[str, str]] = {
         'curb of a traffic island median and the Waymo AV sustained minor damage to its front bumper. No '
         'injuries were reported.'),
 }
+
+
+def quoted_sketch(report_id: str, text: str | None = None) -> Sketch:
+    """The extractor's sketch of the quoted narrative `report_id`, or of `text` (a rewording of it) under that id."""
+    return extract(text if text is not None else QUOTED[report_id][1], report_id)

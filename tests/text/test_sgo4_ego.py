@@ -6,13 +6,11 @@ conventions give, and fails if the rule is removed.
 
 from __future__ import annotations
 
-from txt2sce_ros.text.extractor import extract
-
-from .quoted import QUOTED
+from .quoted import quoted_sketch
 
 
 def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
-    sk = extract(text if text is not None else QUOTED[report_id][1], report_id)
+    sk = quoted_sketch(report_id, text)
     return sk.ego.start, sk.ego.actions
 
 
@@ -35,7 +33,7 @@ def test_stopped_before_a_traffic_noun_is_its_adjective() -> None:
 
 
 def _layout(report_id: str, text: str | None = None) -> str:
-    return extract(text if text is not None else QUOTED[report_id][1], report_id).road.layout
+    return quoted_sketch(report_id, text).road.layout
 
 
 def test_an_intersection_the_av_had_crossed_is_behind_it() -> None:
@@ -68,7 +66,7 @@ def test_a_party_that_moves_in_while_the_av_remains_stopped_meets_it_standing() 
 def test_a_yield_sign_is_a_sign_control() -> None:
     # "The AV stopped at a yield sign in the right-turn only lane before merging onto [XXX] and a silver Toyota
     # rear-ended the AV": the sign control the schema's `stop_sign` stands for; no signal (`none`).
-    sk = extract(QUOTED["nhtsa-sgo-ads-669-8496-v2"][1], "nhtsa-sgo-ads-669-8496-v2")
+    sk = quoted_sketch("nhtsa-sgo-ads-669-8496-v2")
     assert (sk.road.control, sk.signal_state) == ("stop_sign", "none")
 
 
@@ -98,7 +96,7 @@ def test_a_single_lane_road_has_one_lane_whatever_turn_lane_is_ahead() -> None:
     # "The Waymo AV was stopped in traffic in a one-lane section of northbound [XXX], just before the road widened to
     # include a dedicated left turn lane in the left adjacent lane ahead": one lane in the AV's direction (the turn
     # lane and "left adjacent lane" are where the road widens next).
-    sk = extract(QUOTED["nhtsa-sgo-ads-30270-8627-v1"][1], "nhtsa-sgo-ads-30270-8627-v1")
+    sk = quoted_sketch("nhtsa-sgo-ads-30270-8627-v1")
     assert sk.road.lanes == 1
 
 

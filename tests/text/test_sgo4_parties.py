@@ -5,14 +5,8 @@ One test per reading mechanism; each asserts what sketch.md's rules and the offi
 
 from __future__ import annotations
 
-from txt2sce_ros.sketch import Sketch
-from txt2sce_ros.text.extractor import extract
-
 from .quoted import QUOTED
-
-
-def _sketch(report_id: str, text: str | None = None) -> Sketch:
-    return extract(text if text is not None else QUOTED[report_id][1], report_id)
+from .quoted import quoted_sketch as _sketch
 
 
 def test_a_vehicle_noun_naming_the_damage_is_no_party() -> None:
