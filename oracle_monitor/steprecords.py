@@ -8,8 +8,8 @@ numbers move. `StepPacker` compiles that layout once into a template (the consta
 encoders' own pieces: names, marker tails, the lights body; zeros elsewhere) and a numpy record type naming each
 number's offset. A step's numbers are read when it is recorded (`add_step_values`: one `attrgetter` call per
 entity), and a run of steps of one layout is packed column by column: the derived values computed on whole
-columns, and the numbers written into copies of the template by a few dozen array assignments for the whole run. The message
-index entries of the run are computed the same way (`StepPacker.index`).
+columns, and the numbers written into copies of the template by a few dozen array assignments for the whole run.
+The message index entries of the run are computed the same way (`StepPacker.index`).
 
 Packing step by step (one value list and one `struct.pack` per step, the previous version) cost ~7 µs a step of
 Python; a run costs ~1-2 µs a step. The float results are the ones the encoders compute: the same IEEE operations
