@@ -488,6 +488,15 @@ def test_messages_between_steps_keep_their_place(tmp_path: Path, monkeypatch: py
     assert ours == theirs
     topics = [m.topic for m in read_bag(tmp_path / "packed" / "bag").messages()]
     assert topics.count(c.TOPIC_VIOLATIONS) == len(range(5, len(steps), 97))
+    # Each violation right after the step it was written after (steps are kept a few at a time before they are
+    # read into segments: a message between them must not overtake them).
+    clocks, before = 0, []
+    for topic in topics:
+        if topic == c.TOPIC_CLOCK:
+            clocks += 1
+        elif topic == c.TOPIC_VIOLATIONS:
+            before.append(clocks)
+    assert before == [k + 1 for k in range(5, len(steps), 97)]
 
 
 def test_shared_step_layouts_record_the_same_bytes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -622,6 +631,7 @@ def test_each_kind_of_layout_change_starts_a_segment(tmp_path: Path) -> None:
         w.begin(None, sim.goal, "x")
         for fr, cmd in zip(frames, commands):
             w.frame(fr, cmd)
+        w._take()                                  # the last steps, still kept as they came
         got = [len(s.received) for s in w._pending]
         w.close()
         return got
