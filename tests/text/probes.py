@@ -3576,6 +3576,16 @@ PROBES: tuple[Probe, ...] = (
            "a parking lot gate", "a temporary barrier", "the gate of a parking lot", "a barricade",
            "a water-filled barrier"),
           lambda sk: [(o.category, o.position, o.lane) for o in sk.obstacles][:1], [("barrier", "R5", "same")]),
+    # Session 20: a party backing out of a roadside place stood at the roadside beside the AV, not behind it, whatever
+    # half of the AV's side it struck; no side named, the place lines the curb on the AV's right (relations.place).
+    Probe("a party backing out of a roadside place struck the AV's rear door: beside it, on the curb side",
+          "The Waymo AV was stopped on Mission Street for a passenger pickup when a sedan {w}. The rear of the sedan "
+          "made contact with the rear passenger side door of the Waymo AV.",
+          ("reversed out of a parking spot", "backed out of a parking space", "began reversing out of one of the "
+           "parking stalls", "backed out of his parking space", "reversed out of a diagonal stall",
+           "backed out of a parking bay", "reversed out of a driveway", "began backing out of a garage",
+           "reversed out of her parking place", "backed out of one of the angled parking spaces"),
+          _position, [("R5", "right")]),
 )
 
 

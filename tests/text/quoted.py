@@ -2285,6 +2285,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         're-enter the northbound lane in manual mode, the Waymo AV’s front driver’s side tire drove over the '
         'curb of a traffic island median and the Waymo AV sustained minor damage to its front bumper. No '
         'injuries were reported.'),
+    'nhtsa-sgo-ads-30270-8608-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8608, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2024 at 2:35 PM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Arizona was in'
+        ' a collision involving an SUV in a parking lot near [XXX] at [XXX]. The Waymo AV was stopped in a parking lot '
+        'for a passenger pickup when a parked SUV began reversing out of a diagonal parking stall. The rear driver side'
+        " of the SUV made contact with the front of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS"
+        ' was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No'
+        '. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional informati'
+        'on as it may become available.'),
 }
 
 

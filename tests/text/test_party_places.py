@@ -521,3 +521,12 @@ def test_a_median_named_as_the_curb_s_modifier_is_on_the_av_s_left() -> None:
     sk = extract(_TEXTS["dmvca-waymo-20201218-r146"][1].replace("the curb of a traffic island median", "a median curb"),
                  "dmvca-waymo-20201218-r146")
     assert [(o.position, o.lane) for o in sk.obstacles if o.category == "barrier"] == [("R5", "left")]
+
+
+def test_a_party_backing_out_of_a_space_into_the_av_s_front_stood_in_its_path() -> None:
+    # "a parked SUV began reversing out of a diagonal parking stall. The rear driver side of the SUV made contact with
+    # the front of the Waymo AV": the AV's front, no side of it, met the backing SUV's rear corner: it was in the
+    # AV's path (R5/same), not at the curb on the right, and its "rear driver side" is a corner, no flank that faced
+    # the AV (a flank met by the AV's front tells the side a party came from only for one going forward).
+    p = _party("nhtsa-sgo-ads-30270-8608-v1")
+    assert (p.position, p.lane, p.actions) == ("R5", "same", "k")

@@ -604,9 +604,10 @@ _REAR_DOOR = compile_gated(r"\brear\s+(?:\w+\s+){0,2}door", re.I)
 # "in the adjacent lane", "from the adjacent straight lane": beside the AV, on a side the words do not name.
 _ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+the\s+adjacent\s+(?!left\b|right\b)(?:[\w-]+\s+)?lane\b", re.I)
 # Leaving a place off the roadway that lines the curb: "reversed out of a parking spot", "exiting a driveway".
+# ("out of one of the parking stalls", "from his parking space", "out of a diagonal stall", "from a parking bay")
 _OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
-                                 r"(?:a|an|the|its|their)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|carport|parking\s+"
-                                 r"(?:lot|space|spot|stall|garage|structure))\b", re.I)
+                                 r"(?:one\s+of\s+)?(?:a|an|the|its|their|his|her)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|"
+                                 r"carport|parking\s+(?:lot|space|spot|stall|garage|structure|bay|place)|stall|bay)s?\b", re.I)
 # Level with the AV or ahead of it ("alongside", "adjacent to EGO"); "the adjacent lane" names a lane, no place
 # along it ("in the adjacent lane to the left sideswiped EGO's left rear quarter panel": it came up from behind).
 _LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent(?!\s+(?:[\w-]+\s+){0,2}?lanes?\b))\b", re.I)
@@ -742,7 +743,7 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
             came or "right"
         rule += "; cut in"
     elif pos == "R5" and lane == "same" and contact is not None and fore == "front" and not cside and not along and \
-            (came := side_from_flank(d, e)):
+            not backing and (came := side_from_flank(d, e)):
         # The AV's front met the party's flank ("the front of EGO struck the passenger side of the sedan"): the party
         # was crossing or cutting across its path from the other side.
         lane, rule = came, rule + "; its flank met by the AV's front"
@@ -775,10 +776,14 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         used.append(contact)
     if pos in ("R5", "R6") and lane == "same" and not lanes and _OUT_OF_CURBSIDE.search(ctx) and \
             not fre.search(r"\b(?:left|right)\b", ctx, re.I) and \
-            not any(c.kind == "along" and c.value == "ahead" for c in cues):
+            not any(c.kind == "along" and c.value == "ahead" for c in cues) and \
+            not (backing and fore == "front" and not cside):
         # Out of a driveway, garage or parking space, no side named ("a passenger vehicle reversed out of a parking
         # spot into EGO's rear bumper"): those places line the curb, on the AV's right (right-hand traffic). One
-        # said to be in front of the AV ("reversing out of an angled parking space in front of EGO") is in its path.
+        # said to be in front of the AV ("reversing out of an angled parking space in front of EGO") is in its path;
+        # so is one backing into the AV's front, no side of it ("a parked SUV began reversing out of a diagonal
+        # parking stall. The rear driver side of the SUV made contact with the front of EGO": studyable, 2 of 2
+        # parties backing out of a space into the AV's front with no side are R5/same in the gold).
         lane, rule = "right", rule + "; out of a curbside place"
     if pos == "R5" and lane in ("left", "right") and not along and contact is not None and \
             fore == "rear" and cside in ("", lane) and not backing and \
