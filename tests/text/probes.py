@@ -3586,6 +3586,17 @@ PROBES: tuple[Probe, ...] = (
            "backed out of a parking bay", "reversed out of a driveway", "began backing out of a garage",
            "reversed out of her parking place", "backed out of one of the angled parking spaces"),
           _position, [("R5", "right")]),
+    # Session 20: a party astride two lanes, one of them the AV's, is on the side of the other (relations.place).
+    Probe("a party astride the AV's lane and the next passes the standing AV: behind it on the other lane's side",
+          "The Waymo AV was stopped at a red light in the rightmost of two lanes on northbound Mission Street. A sedan "
+          "traveling {w} approached the Waymo AV from behind. As the sedan was passing the stopped Waymo AV, the "
+          "passenger side of the sedan made contact with the rear driver side of the Waymo AV.",
+          ("partially in the rightmost lane and partially in the left lane", "straddling the lane line",
+           "partly in the right lane and partly in the left-adjacent lane", "straddling two lanes",
+           "half in the rightmost lane and half in the adjacent lane", "straddling the lanes",
+           "partially in the rightmost lane and partially in the left-adjacent dedicated left turn lane",
+           "partially in the Waymo AV's lane and partially in the lane to its left"),
+          _position, [("R6", "left")]),
 )
 
 

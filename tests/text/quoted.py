@@ -2295,6 +2295,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         ' was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No'
         '. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional informati'
         'on as it may become available.'),
+    'nhtsa-sgo-ads-30270-9736-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9736, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 10:39 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Scottsdale, Arizona w'
+        'as in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was stopped at a stop sign facing '
+        'east in the rightmost of two lanes on [XXX] at the intersection with [XXX]. While the Waymo AV remained stoppe'
+        'd, a passenger car traveling partially in the rightmost lane and partially in the left-adjacent dedicated left'
+        ' turn lane approached the Waymo AV from behind. As the passenger car was passing the stopped Waymo AV, the pas'
+        'senger side of the passenger car made contact with the rear driver side of the stationary Waymo AV. At the tim'
+        'e of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Way'
+        'mo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved wa'
+        's towed away. Waymo may supplement or correct its reporting with additional information as it may become avail'
+        'able.'),
 }
 
 

@@ -530,3 +530,12 @@ def test_a_party_backing_out_of_a_space_into_the_av_s_front_stood_in_its_path() 
     # the AV (a flank met by the AV's front tells the side a party came from only for one going forward).
     p = _party("nhtsa-sgo-ads-30270-8608-v1")
     assert (p.position, p.lane, p.actions) == ("R5", "same", "k")
+
+
+def test_a_party_astride_the_av_s_lane_and_the_next_is_on_the_next_lane_s_side() -> None:
+    # "a passenger car traveling partially in the rightmost lane and partially in the left-adjacent dedicated left
+    # turn lane approached the Waymo AV from behind. As the passenger car was passing the stopped Waymo AV, the
+    # passenger side of the passenger car made contact with the rear driver side": the AV in the rightmost lane, the
+    # lane the car shared with it is not its side; it passed on the left (R6/left), keeping its way (`a`).
+    p = _party("nhtsa-sgo-ads-30270-9736-v1")
+    assert (p.position, p.lane, p.actions) == ("R6", "left", "a")

@@ -608,6 +608,11 @@ _ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+the\s+adjacent\s+(?!left
 _OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
                                  r"(?:one\s+of\s+)?(?:a|an|the|its|their|his|her)\s+(?:[\w-]+\s+){0,3}?(?:garage|driveway|"
                                  r"carport|parking\s+(?:lot|space|spot|stall|garage|structure|bay|place)|stall|bay)s?\b", re.I)
+# A party astride two lanes: "partially in the number 1 lane (leftmost) and partially in the number 2 lane",
+# "straddling the lane line", "straddling two lanes". Studyable: the 2 parties beside or behind the AV told so are on
+# the side of the lane it did not share with the AV in the gold.
+_STRADDLING = compile_gated(r"\b(?:partially|partly|half)\s+in\s+[^.;|]{0,80}?\band\s+(?:partially|partly|half)\s+in\b|"
+                            r"\bstraddl\w*\s+(?:the\s+|two\s+)?(?:lanes?|lane\s+lines?|lane\s+markings?)\b", re.I)
 # Level with the AV or ahead of it ("alongside", "adjacent to EGO"); "the adjacent lane" names a lane, no place
 # along it ("in the adjacent lane to the left sideswiped EGO's left rear quarter panel": it came up from behind).
 _LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent(?!\s+(?:[\w-]+\s+){0,2}?lanes?\b))\b", re.I)
@@ -702,6 +707,11 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     # A lane said relative to the AV ("to the left of EGO", "the adjacent lane") outranks a lane's name on the road
     # ("the right lane of the freeway"), which says where the party is only against the AV's own lane.
     lanes = _nearest_first([c for c in cues if c.kind == "lane"], d, e)
+    if _STRADDLING.search(ctx):
+        # Half in the AV's lane and half in another ("traveling partially in the rightmost lane and partially in the
+        # left-adjacent dedicated left turn lane", the AV in the rightmost): the lane it shares with the AV is not
+        # its side; the other lane, the side it passed on or the side of the AV it touched is.
+        lanes = [c for c in lanes if c.value != "same"]
     beside = [c for c in lanes if c.value in ("left", "right") and _RELATIVE_LANE.search(d.text[c.span[0]:c.span[1]])]
     if beside:
         lanes = beside + [c for c in lanes if c not in beside]
