@@ -3332,7 +3332,7 @@ PROBES: tuple[Probe, ...] = (
            "headed northbound", "rolling northbound", "operating north", "going north"),
           _ego, ("moving", "ah")),
     Probe("states told after the AV's stop event are its result (session 18)",
-          "The Waymo AV was traveling westbound on Mission Street when it came to a stop{w} the Waymo AV remained "
+          "The Waymo AV was traveling westbound on Mission Street when it came to a stop{w} the Waymo AV was "
           "stationary, a sedan traveling behind the Waymo AV made contact with its rear bumper.",
           (", yielding to stopped traffic ahead. While", " while yielding to a pedestrian. While",
            ", waiting for a pedestrian to cross. While", ", allowing a pickup truck to pass. As",
@@ -3369,7 +3369,8 @@ PROBES: tuple[Probe, ...] = (
            "after driving through the intersection", "after the Waymo AV had traversed the intersection"),
           lambda sk: sk.road.layout, "straight"),
     Probe("after the AV's stop and its state, a party that comes in or manoeuvres meets it standing; a follower "
-          "running into its rear met it as it stopped (session 19)",
+          "running into its rear met it as it stopped (session 19), unless the AV is told standing on, \"remained "
+          "stopped\" (session 20: study5's gold)",
           "The Waymo AV was traveling northbound on [XXX] and came to a stop in the travel lane for a passenger "
           "pick-up. {W}.",
           ("while the Waymo AV remained stopped, a passenger car traveling behind the Waymo AV maneuvered around the "
@@ -3385,8 +3386,17 @@ PROBES: tuple[Probe, ...] = (
            "with the rear of the Waymo AV",
            "while the Waymo AV was stopped, the passenger car following the Waymo AV made contact with its rear bumper",
            "as the Waymo AV remained stopped, a sedan traveling behind the Waymo AV struck the rear of the Waymo AV"),
-          _ego, lambda w: ("moving", "ah") if "behind the Waymo AV made" in w or "following" in w or "sedan" in w
-          else ("stopped", "")),
+          _ego, lambda w: ("moving", "ah") if ("behind the Waymo AV made" in w or "following" in w or "sedan" in w)
+          and "remained" not in w else ("stopped", "")),
+    Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
+          "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
+          "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "
+          "the Waymo AV.",
+          ("while the Waymo AV remained stopped", "while the Waymo AV remained stationary",
+           "as the Waymo AV remained at a stop", "while the Waymo AV stayed stopped", "while the Waymo AV was still "
+           "stopped", "while the Waymo AV continued to yield", "while the Waymo AV continued to wait",
+           "while the Waymo AV had remained stopped"),
+          _ego, ("stopped", "")),
     Probe("a yield sign the AV stopped at is a sign control, no signal (session 19)",
           "The AV was in a right-turn lane, turning onto [XXX] from [XXX]. The AV {w} before merging onto [XXX] and a "
           "silver Toyota rear-ended the AV.",

@@ -2308,6 +2308,31 @@ QUOTED: dict[str, tuple[str, str]] = {
         'mo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a vehicle involved wa'
         's towed away. Waymo may supplement or correct its reporting with additional information as it may become avail'
         'able.'),
+    'nhtsa-sgo-ads-30270-9635-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9635,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 8:17 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisc'
+        'o, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was trave'
+        'ling in the leftmost lane of westbound [XXX] when it slowed to a stop to yield to traffic ahead of i'
+        't in the same lane. While the Waymo AV remained stopped, a passenger car traveling directly behind t'
+        'he Waymo AV approached the Waymo AV from behind. The front driver side of the passenger car made con'
+        'tact with the rear passenger side of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 '
+        'ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash un'
+        'der Request No. 1 of Standing General Order 2021-01 because a vehicle involved was towed away. Waymo'
+        ' may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-8617-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8617,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2024 at 6:59 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Ar'
+        'izona was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling eas'
+        'tbound on [XXX] and approached the intersection with [XXX] in the singular dedicated left turn lane '
+        'to make an unprotected left turn. The Waymo AV pulled forward into the intersection at a slow rate o'
+        'f speed and came to a stop, yielding to high speed traffic in the oncoming lane. The passenger car t'
+        'hat was following closely behind the Waymo AV then entered the intersection while the Waymo AV conti'
+        'nued to yield and the front of the passenger car made contact with the rear of the Waymo AV. At the '
+        "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustain"
+        'ed damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waym'
+        'o may supplement or correct its reporting with additional information as it may become available.'),
 }
 
 

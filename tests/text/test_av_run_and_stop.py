@@ -92,8 +92,9 @@ def test_states_told_after_a_stop_event_are_its_result_only_for_a_follower() -> 
     # met: `ah` by its own rule.)
     text = QUOTED["nhtsa-sgo-ads-30270-9408-v1"][1]
     assert _ego("nhtsa-sgo-ads-30270-9408-v1", text) == ("stopped", "")
-    # A follower that only ran into the AV's rear met it as it stopped: the state is the stop's result (`ah`).
-    follower = text[:text.index("While")] + ("While the Waymo AV remained stationary, a passenger car that was "
+    # A follower that only ran into the AV's rear met it as it stopped: the state is the stop's result (`ah`),
+    # unless the AV is told standing on ("remained stationary": test_sgo5_ego, study5's gold).
+    follower = text[:text.index("While")] + ("As the Waymo AV was stationary, a passenger car that was "
                                              "traveling directly behind the Waymo AV made contact with the rear of "
                                              "the Waymo AV.")
     assert _ego("nhtsa-sgo-ads-30270-9408-v1", follower) == ("moving", "ah")

@@ -80,20 +80,25 @@ SGO4 = Path(__file__).parent / "sgo4"
 HELD_SGO4 = {
     "study4": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.78, "npc_events": 0.79, "layout": 0.90,
                "ego_actions": 0.81, "ego_start": 0.89, "signal_state": 0.85},
-    "check4": {"npc_quantity": 0.92, "npc_position": 0.72, "npc_events": 0.68, "layout": 0.93, "ego_actions": 0.71,
-               "ego_start": 0.86},
+    "check4": {"npc_quantity": 0.92, "npc_position": 0.72, "npc_events": 0.68, "layout": 0.93, "ego_actions": 0.70,
+               "ego_start": 0.85},
 }
+# (check4 ego_actions 0.71 -> 0.70 and ego_start 0.86 -> 0.85 in session 20, one report: the AV told standing on
+# after its stop ("remained stopped", "continued to yield") when a follower struck it is `stopped` with '', as
+# study5's gold reads both W-half reports so told and 6 of the 7 studyable reports with a stop, a follower and the
+# AV standing on; sgo4's three annotators did not all read this convention the same way (sgo4/README.md). Decided
+# on the studyable sets alone, as the session's hygiene rule asks.)
 CONFLICT_HELD_SGO4 = {"study4": 45, "check4": 36}
 #: And for the 144 NHTSA SGO narratives new at the end of session 19 (tests/text/sgo5/README.md), kept from everyone
 #: who wrote rules that session: study5 may be read from session 20 on, check5 is scored only.
 SGO5 = Path(__file__).parent / "sgo5"
 HELD_SGO5 = {
     "study5": {"npc_quantity": 0.89, "npc_type": 0.89, "npc_position": 0.65, "npc_events": 0.60, "layout": 0.85,
-               "ego_actions": 0.70, "ego_start": 0.87},
+               "ego_actions": 0.73, "ego_start": 0.91},
     "check5": {"npc_quantity": 0.89, "npc_position": 0.70, "npc_events": 0.64, "layout": 0.94, "ego_actions": 0.65,
                "ego_start": 0.83},
 }
-CONFLICT_HELD_SGO5 = {"study5": 17, "check5": 32}
+CONFLICT_HELD_SGO5 = {"study5": 19, "check5": 32}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()} | {
     name: (SGO4, held, CONFLICT_HELD_SGO4[name]) for name, held in HELD_SGO4.items()} | {

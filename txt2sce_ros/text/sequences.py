@@ -353,6 +353,21 @@ def _follower_ran_in(d: Doc) -> bool:
                if m.sent <= d.contact_sent)
 
 
+#: The AV's standing told as lasting while the party came ("While the Waymo AV remained stopped, a passenger car
+#: traveling directly behind ...", "... entered the intersection while the Waymo AV continued to yield"): it stood
+#: when the interaction began, follower or not (7 studyable reports tell a stop, a follower and the AV standing on:
+#: gold `stopped` in 6; study5 9635 and 8617 read `ah` without this).
+_STOOD_ON = compile_gated(r"\bEGO\s+(?:had\s+)?(?:(?:remained|stayed|was\s+still)\s+(?:stopped|stationary|still|"
+                          r"parked|halted|in\s+place|at\s+(?:a\s+)?(?:complete\s+|full\s+)?(?:stop|standstill|rest))|"
+                          r"(?:continued|continues)\s+to\s+(?:yield|wait|remain|be\s+stopped))\b", re.I)
+
+
+def _stood_on(d: Doc, stop: Act) -> bool:
+    """Is the AV told standing on after its stop `stop`, up to the contact (a lasting state, not the stop's result)?"""
+    last = d.contact_sent if d.contact_sent is not None else stop.sent
+    return any(_STOOD_ON.search(d.sents[i]) for i in range(stop.sent, last + 1))
+
+
 def _stop_results_dropped(d: Doc, acts: list[Act]) -> list[Act]:
     """"EGO came to a stop to yield to cross-traffic. As EGO was stopped, a pickup truck traveling directly behind
     EGO made contact with its rear": the state told after a stop (in its sentence or the next) is that stop's result,
@@ -365,13 +380,17 @@ def _stop_results_dropped(d: Doc, acts: list[Act]) -> list[Act]:
     the Waymo AV from behind") reads `ah`."""
     out: list[Act] = []
     stop: Act | None = None  # the AV's last stop, while only its states follow it
+    dropped_after: Act | None = None
     for a in acts:
         if a.code == "S" and stop is not None and stop.sent >= a.sent - 1:
+            dropped_after = stop
             continue
         stop = a if a.code == "h" else None
         out.append(a)
     # (who met the AV is read only when a state was told after a stop: most narratives tell none)
-    return out if len(out) < len(acts) and _follower_ran_in(d) else acts
+    if dropped_after is None or _stood_on(d, dropped_after):
+        return acts
+    return out if _follower_ran_in(d) else acts
 
 
 def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bool) -> tuple[str, str, bool]:
@@ -466,6 +485,10 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
             # the manoeuvre told under way, and what only describes it ("was slowing and moving at approximately 2
             # mph"): the string opens with the manoeuvre
             prefix = [pre[0]]
+        elif last.code == "h" and not last.under_way and _stood_on(d, last) and not _stopped_for_partner(d, last):
+            # "slowed to a stop to yield to traffic ahead ... While EGO continued to yield, a passenger car traveling
+            # directly behind EGO made contact": told standing on when the party came, the AV stood (`_STOOD_ON`)
+            stopped = True
         elif last.code == "h" and any(a.code in ("a", "A") for a in pre[:-1]) and (
                 not _waited(d, last) or (_struck_from_behind(d) and (last.sent, last.pos) < (fs, clause_start))):
             # "was traveling ... when it came to a stop behind a queue": a stop told as an event of the story is

@@ -1,0 +1,30 @@
+"""Issue 13, the AV's own start and action string and the road, read from the real NHTSA SGO narratives labelled
+in session 19 and kept from every rule writer until session 20 (tests/text/sgo5/study5.jsonl; each row's `source`
+beside its text in tests/text/quoted.py). One test per reading; each asserts the reading sketch.md's rules and the
+gold's conventions give (sgo5/README.md: an AV stopped for a light, sign or queue before the other party acted is
+`stopped` with ''), and fails if the rule is removed.
+"""
+
+from __future__ import annotations
+
+from .quoted import quoted_sketch
+
+
+def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
+    sk = quoted_sketch(report_id, text)
+    return sk.ego.start, sk.ego.actions
+
+
+def test_a_standing_told_as_lasting_is_the_start_even_for_a_follower() -> None:
+    # "... when it slowed to a stop to yield to traffic ahead of it in the same lane. While the Waymo AV remained
+    # stopped, a passenger car traveling directly behind the Waymo AV approached the Waymo AV from behind": the AV
+    # stood on while the follower came in (stopped, '').
+    assert _ego("nhtsa-sgo-ads-30270-9635-v1") == ("stopped", "")
+    # "... came to a stop, yielding to high speed traffic in the oncoming lane. The passenger car that was following
+    # closely behind the Waymo AV then entered the intersection while the Waymo AV continued to yield": the same.
+    assert _ego("nhtsa-sgo-ads-30270-8617-v1") == ("stopped", "")
+    # Without the lasting state, the follower met the AV as it stopped (`ah`, the follower rule).
+    text = ("The Waymo AV was traveling in the leftmost lane of westbound [XXX] when it slowed to a stop to yield to "
+            "traffic ahead of it in the same lane. As the Waymo AV was stopped, a passenger car traveling directly "
+            "behind the Waymo AV made contact with the rear passenger side of the Waymo AV.")
+    assert _ego("t", text) == ("moving", "ah")
