@@ -319,6 +319,9 @@ _OUT_OF_A_DRIVEWAY = (
 )
 
 # A move of a party behind the AV and the rear corner of the AV it struck -> the party's lane (session 18).
+# A lane beside the AV named without its side.
+_ADJACENT_NO_SIDE = ("in an adjacent lane", "in the adjacent lane", "traveling in the adjacent lane",
+                     "in the adjacent travel lane", "driving in an adjacent lane")
 _REAR_CORNER_MOVES = {
     "changed lanes to the left and struck the rear passenger side corner of the Waymo AV": "right",
     "changed lanes to the right and struck the rear driver side corner of the Waymo AV": "left",
@@ -3607,6 +3610,17 @@ PROBES: tuple[Probe, ...] = (
            "partially in the rightmost lane and partially in the left-adjacent dedicated left turn lane",
            "partially in the Waymo AV's lane and partially in the lane to its left"),
           _position, [("R6", "left")]),
+    # Session 20: "the adjacent lane" beside an AV in an edge lane is on its open side, also for a party told only
+    # after the contact (relations.place).
+    Probe("a party in the adjacent lane beside an AV in the right lane, told after the contact: on the AV's left",
+          "The May vehicle was traveling in the right lane of a two-lane road when it made contact with the curb, "
+          "causing a flat tire. The May vehicle chose to maneuver at the curb due to perceived risk from a car {w}.",
+          _ADJACENT_NO_SIDE, _position, [("R5", "left")]),
+    Probe("a party in the adjacent lane beside an AV in the leftmost lane, told after the contact: on the AV's right",
+          "The May vehicle was traveling in the leftmost lane of a two-lane road when it made contact with the median "
+          "curb, causing a flat tire. The May vehicle chose to maneuver at the curb due to perceived risk from a car "
+          "{w}.",
+          _ADJACENT_NO_SIDE, _position, [("R5", "right")]),
 )
 
 

@@ -539,3 +539,12 @@ def test_a_party_astride_the_av_s_lane_and_the_next_is_on_the_next_lane_s_side()
     # lane the car shared with it is not its side; it passed on the left (R6/left), keeping its way (`a`).
     p = _party("nhtsa-sgo-ads-30270-9736-v1")
     assert (p.position, p.lane, p.actions) == ("R6", "left", "a")
+
+
+def test_the_adjacent_lane_beside_an_av_in_the_right_lane_is_on_its_left() -> None:
+    # "A May autonomous vehicle was traveling in the right lane of a two-lane road ... the May vehicle made contact
+    # with the curb ... The May vehicle chose to maneuver at the curb due to perceived risk from a car in an adjacent
+    # lane": the only lane beside an AV in the right lane of two is on its left; the car, told only after the
+    # contact, is read at its first mention.
+    p = _party("nhtsa-sgo-ads-30413-8861-v1")
+    assert (p.position, p.lane) == ("R5", "left")

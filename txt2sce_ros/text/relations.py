@@ -602,7 +602,7 @@ _TAIL_END = compile_gated(r"\brear\s+(?:quarter|bumper|corner|end|fender|wheel|t
                           r"\bback\s+(?:bumper|corner)", re.I)
 _REAR_DOOR = compile_gated(r"\brear\s+(?:\w+\s+){0,2}door", re.I)
 # "in the adjacent lane", "from the adjacent straight lane": beside the AV, on a side the words do not name.
-_ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+the\s+adjacent\s+(?!left\b|right\b)(?:[\w-]+\s+)?lane\b", re.I)
+_ADJACENT_LANE = compile_gated(r"\b(?:in|from|within)\s+(?:the|an)\s+adjacent\s+(?!left\b|right\b)(?:[\w-]+\s+)?lane\b", re.I)
 # Leaving a place off the roadway that lines the curb: "reversed out of a parking spot", "exiting a driveway".
 # ("out of one of the parking stalls", "from his parking space", "out of a diagonal stall", "from a parking bay")
 _OUT_OF_CURBSIDE = compile_gated(r"\b(?:out\s+of|from|exit(?:ed|ing|s)?|leav(?:ing|es)|pull(?:ed|ing)\s+out\s+of)\s+"
@@ -743,6 +743,13 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
     elif pass_side:
         lane, rule = pass_side, rule + "; passing side"
         used.append(next(c for c in passing if c.value))
+    elif lane == "same" and not cside and d.av_lane is not None and (d.av_lane <= 0 or d.av_lane >= 9) and \
+            _ADJACENT_LANE.search(ctx or d.sents[e.first.sent][e.first.end:e.first.end + 60]):
+        # "a car in an adjacent lane", the AV in the right lane of a two-lane road (or the leftmost, or at the
+        # curb): the only lane beside an AV at the road's edge is on its open side. (A party told only after the
+        # contact, the reason for the AV's move, is read at its first mention: "due to perceived risk from a car in
+        # an adjacent lane".)
+        lane, rule = ("right" if d.av_lane <= 0 else "left"), rule + "; the adjacent lane beside an AV at an edge"
     elif pos == "R5" and lane == "same" and (changes := [a.code for a in d.acts if a.who == e.idx and a.code in "fgF"]):
         # Cutting in ahead of the AV: a move to the left came from the right-hand lane, and the other way round. A
         # lane change of no stated side came from the side of the AV it touched, or from the side opposite its own
