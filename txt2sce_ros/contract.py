@@ -18,7 +18,7 @@ from __future__ import annotations
 import enum
 import functools
 import json
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 from .quick_init import quick_init
@@ -187,7 +187,10 @@ class RunStatus:
     unsupported: tuple[str, ...] = ()
 
     def to_json(self) -> str:
-        return json.dumps(asdict(self), sort_keys=True)
+        # Field by field rather than `asdict` (a deep copy; a status is written twice per recorded run).
+        return json.dumps({"scenario_id": self.scenario_id, "state": self.state, "t": self.t,
+                           "end_reason": self.end_reason, "verdict_hint": self.verdict_hint,
+                           "unsupported": list(self.unsupported)}, sort_keys=True)
 
     @classmethod
     def from_json(cls, text: str) -> "RunStatus":

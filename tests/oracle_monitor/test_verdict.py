@@ -94,3 +94,24 @@ def test_unsupported_elements_are_noted() -> None:
     status = RunStatus("s", "finished", 3.0, "stop_trigger", unsupported=("unsupported: <SynchronizeAction> at line 40",))
     verdict, _ = judge(Oracle(None, None, PARAMS), frames, status)
     assert verdict.verdict is Verdict.PASS and any("SynchronizeAction" in n for n in verdict.notes)
+
+
+def test_records_serialise_every_field() -> None:
+    # Violation, Finding and RunStatus write their fields one by one (not `dataclasses.asdict`, whose deep copy was
+    # most of a recorded verdict's cost): every field is there, with the values `asdict` gave (enums by value,
+    # tuples as lists), so a field added later cannot go missing from the recordings.
+    import dataclasses
+    import json
+
+    from oracle_monitor.records import Finding, Violation
+
+    v = Violation(Rule.CONTACT, Category.COLLISIONS, 1.25, 0.5, 0.0, "m", ("a", "b"), "hit")
+    f = Finding(Category.PLAN_FAIL, 2.5, Rule.GOAL_NOT_REACHED, 115.0, 3.0, "m", ("ego",), "far", 3)
+    for rec in (v, f, Violation(Rule.SMOOTH_JERK, None, 0.1, 2.0, 0.9, "m/s³")):
+        expected = dataclasses.asdict(rec)
+        expected.update(rule=rec.rule.value, category=rec.category.value if rec.category else None,
+                        entities=list(rec.entities))
+        assert rec.to_dict() == expected and list(rec.to_dict()) == [x.name for x in dataclasses.fields(rec)]
+    s = RunStatus("sid", "finished", 3.5, "goal_reached", "error", ("Trajectory", "Polyline"))
+    assert s.to_json() == json.dumps(dataclasses.asdict(s), sort_keys=True)
+    assert RunStatus.from_json(s.to_json()) == s
