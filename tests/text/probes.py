@@ -3391,6 +3391,12 @@ PROBES: tuple[Probe, ...] = (
            "as the Waymo AV remained stopped, a sedan traveling behind the Waymo AV struck the rear of the Waymo AV"),
           _ego, lambda w: ("moving", "ah") if ("behind the Waymo AV made" in w or "following" in w or "sedan" in w)
           and "remained" not in w else ("stopped", "")),
+    Probe("a manoeuvre told in progress with any manner adverb between the auxiliary and the participle (session 20)",
+          "A Zoox vehicle in autonomous mode was {w} slowing to a stop for a red traffic signal on southbound Main "
+          "Street when a sedan traveling behind made contact with its rear bumper.",
+          ("gradually", "steadily", "carefully", "still slowly", "smoothly", "cautiously", "already gradually",
+           "slowly"),
+          _ego, ("moving", "h")),
     Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
           "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
           "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "

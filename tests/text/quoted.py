@@ -2333,6 +2333,24 @@ QUOTED: dict[str, tuple[str, str]] = {
         "time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustain"
         'ed damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waym'
         'o may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30610-8290-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-8290,'
+        ' version 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle (Vehicle 1) in autonomy was gradually slowing to a stop in the right travel lane (lan'
+        'e 5) for a red traffic signal on southbound [XXX] at the intersection with [XXX] in Spring Valley, N'
+        'evada. A motorcyclist (Vehicle 2), also southbound on [XXX], was traveling at high speed in the left'
+        ' through lane (lane 3), aggressively approaching a slowing SUV (Vehicle 3) in lane 3. The motorcycli'
+        'st clipped the right rear corner of Vehicle 3, deflecting the motorcycle to the right, causing the m'
+        'otorcyclist to lose control and fall to the pavement. The motorcyclist was sliding on the pavement w'
+        "hen the motorcycle made contact with the Zoox vehicle's rear bumper. The Zoox vehicle operator disen"
+        'gaged from autonomy and brought the vehicle to a stop. The motorcycle came to rest on its right side'
+        " with the motorcyclist's right leg stuck underneath the motorcycle. An adjacent bystander immediatel"
+        'y aided the motorcyclist and asked the Zoox vehicle operator to move the Zoox vehicle "slightly forw'
+        'ard". After the Zoox operator moved the vehicle forward, the bystander lifted the motorcycle and the'
+        ' motorcyclist remained on the ground for a short period of time before standing up and walking aroun'
+        'd the scene. The motorcyclist was observed to have injuries. Police and EMS were called to the scene'
+        ' and the motorcyclist was later transported by an ambulance. The content of this report is unchanged'
+        ' from the initial report and provides complete information to date for this incident.'),
 }
 
 

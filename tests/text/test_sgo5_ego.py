@@ -28,3 +28,10 @@ def test_a_standing_told_as_lasting_is_the_start_even_for_a_follower() -> None:
             "traffic ahead of it in the same lane. As the Waymo AV was stopped, a passenger car traveling directly "
             "behind the Waymo AV made contact with the rear passenger side of the Waymo AV.")
     assert _ego("t", text) == ("moving", "ah")
+
+
+def test_a_slowing_told_in_progress_with_a_manner_adverb_is_under_way() -> None:
+    # "A Zoox vehicle (Vehicle 1) in autonomy was gradually slowing to a stop in the right travel lane (lane 5) for a
+    # red traffic signal ... the motorcycle made contact with the Zoox vehicle's rear bumper": the stop was under way
+    # at the contact, so the AV was moving (gold `moving`; "was slowly slowing" read so before, "gradually" not).
+    assert _ego("nhtsa-sgo-ads-30610-8290-v2")[0] == "moving"

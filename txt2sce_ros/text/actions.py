@@ -446,9 +446,10 @@ _TURN_SIDE = compile_gated(r"\b(?:turn\s+(left|right)|(left|right)[- ]turn)\b", 
 _INTENT_TO_BEGIN = compile_gated(r"\b(?:to|before|prior\s+to)\s+(?:begin(?:ning)?|start(?:ing)?|proceed(?:ing)?)\s+to\s+"
                                  r"(?:\w+\s+){0,2}$", re.I)
 # "was making a right turn", "were in the process of changing lanes", "while turning": the manoeuvre in progress.
-# ("had been traveling": the progressive told in the past perfect)
+# ("had been traveling": the progressive told in the past perfect; up to two adverbs between, any manner adverb:
+# "was gradually slowing to a stop", "was still slowly creeping", not only "was slowly")
 _PROGRESSIVE = compile_gated(r"(?:\b(?:was|were|is|are|had\s+been|has\s+been)\s+"
-                             r"(?:(?:already|still|actively|currently|just|slowly)\s+)?"
+                             r"(?:(?:already|still|just|\w+ly)\s+){0,2}"
                              r"(?:in\s+the\s+(?:process|middle)\s+of\s+)?|(?:^|[,;]\s*)while\s+)$", re.I)
 # The verbs that put a manoeuvre's noun under way ("making a left turn", "executing a lane change").
 _DOING_NOUN = r"making|executing|performing|completing|conducting"
