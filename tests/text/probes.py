@@ -319,6 +319,8 @@ _OUT_OF_A_DRIVEWAY = (
 )
 
 # A move of a party behind the AV and the rear corner of the AV it struck -> the party's lane (session 18).
+# The side of a numbered lane from the AV's lane 2 (lanes count from the left).
+_NUMBERED_SIDE = {"1": "left", "one": "left", "2": "same", "two": "same", "3": "right", "three": "right"}
 # A lane beside the AV named without its side.
 _ADJACENT_NO_SIDE = ("in an adjacent lane", "in the adjacent lane", "traveling in the adjacent lane",
                      "in the adjacent travel lane", "driving in an adjacent lane")
@@ -3627,6 +3629,15 @@ PROBES: tuple[Probe, ...] = (
           "curb, causing a flat tire. The May vehicle chose to maneuver at the curb due to perceived risk from a car "
           "{w}.",
           _ADJACENT_NO_SIDE, _position, [("R5", "right")]),
+    # Session 20: lanes numbered from the left, the AV's own lane numbered in its clause ("(lane 2)"): a party's
+    # numbered lane is read against that number (relations.av_lane_number).
+    Probe("a party behind in a numbered lane, the AV's lane numbered in parentheses: lanes count from the left",
+          "A Zoox vehicle (Vehicle 1) in autonomy was stopped for a red traffic signal in the right lane (lane 2) on "
+          "northbound [XXX] in Las Vegas. A sedan (Vehicle 2) traveling northbound {w} struck the rear of the Zoox "
+          "vehicle.",
+          ("in lane 2", "in lane 1", "in lane 3", "in lane #1", "in lane number 3", "in lane two", "in lane one",
+           "in lane three"),
+          _position, lambda w: [("R6", _NUMBERED_SIDE[w.split()[-1].lstrip("#")])]),
 )
 
 

@@ -2351,6 +2351,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         'd the scene. The motorcyclist was observed to have injuries. Police and EMS were called to the scene'
         ' and the motorcyclist was later transported by an ambulance. The content of this report is unchanged'
         ' from the initial report and provides complete information to date for this incident.'),
+    'nhtsa-sgo-ads-669-8495-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 669-8495, version 1, '
+        'column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        "In conjunction with Motional's filing of the subject incident, and according to statement(s) provided in Motio"
+        "nal's incident report: A Motional AV was operating in Las Vegas, Nevada, in autonomous mode with a safety driv"
+        'er at the wheel and an engineer in the front passenger seat. The AV was eastbound on [XXX], approaching the in'
+        'tersection with [XXX], in the furthest left of five lanes (lane one), a dedicated left turn lane. Another vehi'
+        'cle, originally traveling in a middle through-traffic lane (lane three), had entered lane two, also a dedicate'
+        'd left turn lane, and come to a stop almost perpendicular to the flow of traffic. As the AV approached the oth'
+        'er vehicle began moving from lane two into lane one without signaling. The safety driver took control, turning'
+        " the steering wheel to the left to create space from the other vehicle, momentarily bringing the AV's left fro"
+        'nt wheel onto a median curb before safely returning to the roadway after the AV had passed the other vehicle. '
+        'There were no injuries or property damage other than a minor tire scuff. law enforcement was not involved.'),
 }
 
 

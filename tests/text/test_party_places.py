@@ -548,3 +548,11 @@ def test_the_adjacent_lane_beside_an_av_in_the_right_lane_is_on_its_left() -> No
     # contact, is read at its first mention.
     p = _party("nhtsa-sgo-ads-30413-8861-v1")
     assert (p.position, p.lane) == ("R5", "left")
+
+
+def test_a_numbered_lane_is_read_against_the_av_s_numbered_lane() -> None:
+    # "The AV was eastbound on [XXX], approaching the intersection with [XXX], in the furthest left of five lanes
+    # (lane one) ... Another vehicle, originally traveling in a middle through-traffic lane (lane three), had entered
+    # lane two": lanes count from the left, so lanes two and three are on the right of the AV's lane one.
+    p = _party("nhtsa-sgo-ads-669-8495-v1")
+    assert (p.position, p.lane) == ("R5", "right")

@@ -182,8 +182,8 @@ _OPEN_CLAUSE = compile_gated(r"^\W*(?:when|as|while|after|once|before|because|si
 _PREPOSITION_END = compile_gated(r"\b(?:of|to|from|behind|by|with|at|in|on|for|past|around|near|into|onto|toward|"
                                  r"towards|than|ahead|beside|alongside|and|between)\s*$", re.I)
 # ("Waymo AV"), (Vehicle 2), (car 1), (AV), (Level 4): definitions and labels, not story. Other parentheses
-# ("a fixed object (solar panel)") keep their words.
-_PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|[A-Z][A-Za-z.]{0,6}"
+# ("a fixed object (solar panel)", a lane's number: "the left turn lane (lane 2)") keep their words.
+_PAREN_DEF = compile_gated(r"\s*\((?:\s*(?:the\s+)?[\"'][^()]{0,40}|(?:vehicle|car|v)\s*#?\s*\d+|(?!lanes?\b)[A-Z][A-Za-z.]{0,6}"
                         r"(?:\s+\d+)?|\d[^()]{0,20}|[^()]*\bmode\b[^()]*|"
                         # "The subject vehicle (autonomous vehicle - AV)": what the AV is, said again
                         r"\s*(?:autonomous|automated|self-driving|driverless)\s+vehicle\b[^()]{0,20})\)", re.I)

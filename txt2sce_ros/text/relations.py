@@ -144,7 +144,7 @@ _ABS_LANE = compile_gated(r"\b(?:in|within|from|into|of)\s+the\s+(?:(far|second|
                           # ("the right most lane": the word split as some operators write it)
                           r"(?:-?\s?most)?\s+(?:(?:travel|through|traffic|turn)\s+)?lane\b(?:\s+from\s+the\s+(left|right))?|"
                           r"\b(?:in|from|into|of)\s+(?:the\s+(?:number|no\.?|#)\s*(\d|one|two|three|four|five)\s+lane|"
-                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d)(?![\d,]|\.\d))\b|"
+                          r"lane\s+(?:number\s+|no\.?\s*|#)?(\d|one|two|three|four|five)(?![\d,]|\.\d))\b|"
                           # "in the right of two travel lanes", "in the leftmost of two through lanes", "in the center of
                           # three southbound lanes"
                           r"\b(?:in|from|into|of)\s+the\s+(left|right|middle|center|centre)(?:-?\s?most)?\s+of\s+(?:the\s+)?"
@@ -327,6 +327,28 @@ def av_lane_rank(d: Doc) -> float | None:
     return None
 
 
+def av_lane_number(d: Doc) -> float | None:
+    """The AV's lane by its number, counted from the left (0 for "lane 1"), when a sentence that names no other party
+    before it numbers the AV's lane ("A Zoox vehicle ... was stopped ... in the left turn lane (lane 2)", "The AV was
+    eastbound ..., in the furthest left of five lanes (lane one)"); a party's numbered lane is compared with it."""
+    return d.once("av_lane_number", lambda: _read_av_lane_number(d))
+
+
+_LANE_NUMBER = compile_gated(r"\blane\s+(?:number\s+|no\.?\s*|#)?(\d|one|two|three|four|five)(?![\d,]|\.\d)\b", re.I)
+
+
+def _read_av_lane_number(d: Doc) -> float | None:
+    for i, s in enumerate(d.sents):
+        ego = next((m for m in d.ments[i] if m.kind == "ego"), None)
+        if ego is None:
+            continue
+        n = _LANE_NUMBER.search(s, ego.end)
+        if n and not any(x.kind == "party" and x.start < n.start() for x in d.ments[i]) and \
+                not _INTO.search(s[max(0, n.start() - 25):n.start()]):
+            return float(_NUMBERS.get(n.group(1).lower()) or int(n.group(1))) - 1.0
+    return None
+
+
 _CURB_RANK = 10.0  # beyond the rightmost lane (9): the curb, the parking lane
 # The AV standing at the right curb, or at the right edge of the road ("was parked along the curb", "was stopped on
 # the right side of southwestbound [XXX] for a passenger pick-up").
@@ -373,7 +395,13 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
                         _INTO.search(win[max(0, m.start() - 25):m.start() + 5]):
                     continue
                 rank = _lane_rank(m)
-                side = "same" if rank == own else "left" if rank < own else "right"
+                if (number := av_lane_number(d)) is not None and (m.group(4) or m.group(5)):
+                    # a numbered lane against the AV's own number: lanes count from the left (police, DMV and
+                    # operators number them so: "the left turn lane (lane 2)", "the left through lane (lane 3)")
+                    own_rank = number
+                else:
+                    own_rank = own
+                side = "same" if rank == own_rank else "left" if rank < own_rank else "right"
                 absolute.append((m.start(), m.end()))
                 cues.append(Cue("lane", side, (base + m.start(), base + m.end())))
         passes = list(_PASSING.finditer(win))
