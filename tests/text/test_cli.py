@@ -76,3 +76,17 @@ def test_extract_prints_the_reason_of_a_missing_input(tmp_path: Path, capsys: py
     err = capsys.readouterr().err
     # the reason is on the console, not only in the output file
     assert "no_such_report" in err and "file not found" in err and "1 errors" in err
+
+
+def test_extract_names_an_oversized_report_once_and_goes_on(tmp_path: Path,
+                                                            capsys: pytest.CaptureFixture[str]) -> None:
+    # A narrative past the limit is refused with its size and the limit, the report named once; the batch goes on.
+    rows = [{"id": "huge", "text": "The AV was rear-ended. " * 6000}, {"id": "fine", "text": "The AV was rear-ended."}]
+    src = tmp_path / "in.jsonl"
+    src.write_text("".join(json.dumps(r) + "\n" for r in rows))
+    assert main(["extract", str(src), "--out", str(tmp_path / "o.jsonl")]) == 1
+    err = capsys.readouterr().err
+    assert "txt2sce extract: error: huge: narrative is 138,000 characters, over the limit of 100,000" in err
+    assert "huge: huge" not in err and "1 errors" in err
+    out = (tmp_path / "o.jsonl").read_text().splitlines()
+    assert [json.loads(line)["report_id"] for line in out] == ["huge", "fine"]

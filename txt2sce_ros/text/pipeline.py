@@ -118,7 +118,9 @@ def echo_errors(items: Iterable[Sketch | ErrorRecord], prog: str, *, where: str,
         if isinstance(item, ErrorRecord):
             errors += 1
             if errors <= limit:
-                print(f"{prog}: error: {item.report_id}: {item.error}", file=sys.stderr)
+                # The reason often names the report already (an InputError's source): say it once.
+                reason = item.error.removeprefix(f"{item.report_id}: ")
+                print(f"{prog}: error: {item.report_id}: {reason}", file=sys.stderr)
         yield item
     if errors > limit:
         print(f"{prog}: ... and {errors - limit} more errors (every one is in {where})", file=sys.stderr)
