@@ -3638,6 +3638,15 @@ PROBES: tuple[Probe, ...] = (
           ("in lane 2", "in lane 1", "in lane 3", "in lane #1", "in lane number 3", "in lane two", "in lane one",
            "in lane three"),
           _position, lambda w: [("R6", _NUMBERED_SIDE[w.split()[-1].lstrip("#")])]),
+    # Session 20: a party that struck the AV again is placed at its first contact, also where the opening sentence
+    # alone tells that one (story.find_contact, relations._mention_windows).
+    Probe("a party that struck the AV from behind, told in the opening sentence, then again as it passed: behind",
+          "On July 14, 2021 at 4:47 PM PDT, a Waymo Autonomous Vehicle was proceeding straight westbound on Clement "
+          "Street in San Francisco, when a passenger vehicle struck the Waymo AV from behind. The passenger vehicle "
+          "then struck the Waymo AV {w}, on the left side of the Waymo AV, as it passed on the left, then fled the "
+          "scene.",
+          ("again", "a second time", "once more", "a third time"),
+          _party, [("R6", "same", "a")]),
 )
 
 

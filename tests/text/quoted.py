@@ -2364,6 +2364,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         " the steering wheel to the left to create space from the other vehicle, momentarily bringing the AV's left fro"
         'nt wheel onto a median curb before safely returning to the roadway after the AV had passed the other vehicle. '
         'There were no injuries or property damage other than a minor tire scuff. law enforcement was not involved.'),
+    'csvr-waymo-20210714-s91': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 91, colum"
+        "n 'Accident Detail Description'), transcribed",
+        'On July 14, 2021 at 4:47 PM PDT, a Waymo Autonomous Vehicle (“Waymo AV”) was proceeding straight westbound on '
+        'Clement Street in San Francisco, when a passenger vehicle struck the Waymo AV from behind two times. The passe'
+        'nger vehicle then struck the Waymo AV a third time, on the left side of the Waymo AV, as it passed on the left'
+        ', then immediately fled the scene. The San Francisco Police Department is investigating the event as a crimina'
+        'l act. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver'
+        ' was present (in the driver’s seating position).'),
 }
 
 

@@ -556,3 +556,11 @@ def test_a_numbered_lane_is_read_against_the_av_s_numbered_lane() -> None:
     # lane two": lanes count from the left, so lanes two and three are on the right of the AV's lane one.
     p = _party("nhtsa-sgo-ads-669-8495-v1")
     assert (p.position, p.lane) == ("R5", "right")
+
+
+def test_a_party_that_struck_the_av_again_is_placed_at_its_first_contact() -> None:
+    # "... when a passenger vehicle struck the Waymo AV from behind two times. The passenger vehicle then struck the
+    # Waymo AV a third time, on the left side of the Waymo AV, as it passed on the left": the conflict is the first
+    # contact, told in the opening sentence; the pass after it is where the party went then (R6/same, not left).
+    p = _party("csvr-waymo-20210714-s91")
+    assert (p.position, p.lane, p.actions) == ("R6", "same", "a")

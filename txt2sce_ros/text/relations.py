@@ -266,8 +266,9 @@ def _mention_windows(d: Doc, e: Entity) -> list[tuple[int, int, int]]:
         if m.sent in d.summary and any(x.sent not in d.summary for x in e.mentions):
             continue
         if d.contact_sent is not None and m.sent > d.contact_sent and \
-                any(x.sent <= d.contact_sent and x.sent not in d.summary for x in e.mentions):
-            continue  # told after the contact: where it went then, not where the interaction began
+                any(x.sent <= d.contact_sent and (x.sent not in d.summary or x.sent == d.contact_sent)
+                    for x in e.mentions):
+            continue  # told after the contact (also one the opening sentence tells): where it went then
         s = d.sents[m.sent]
         end = _clause_end(d, e, m)
         # The words just before the name belong to it only within its clause ("As EGO proceeded in the far right

@@ -288,8 +288,10 @@ def find_contact(d: Doc) -> None:
             chosen = (chosen[0], chosen[1], recent[-1])
     if fre.search(r"\b(?:again|a\s+(?:second|third|fourth)\s+time|once\s+more)\b", d.sents[chosen[0]][chosen[1]:], re.I):
         # "... and struck the AV again": the story's conflict ends at the first contact (sketch.md: strings end at
-        # the contact), not at the repeat.
-        chosen = next(c for c in (detailed or candidates) if c[2] == chosen[2] or c[2] is None)
+        # the contact), not at the repeat; also where the opening sentence alone tells the first ones ("On July 14,
+        # 2021 ... when a passenger vehicle struck EGO from behind two times. The passenger vehicle then struck EGO a
+        # third time, on the left side of EGO, as it passed on the left").
+        chosen = next(c for c in candidates if c[2] == chosen[2] or c[2] is None)
     elif chosen[2] is not None and (first := next((c for c in detailed if c[2] == chosen[2]), chosen)) != chosen and \
             any(a.who == chosen[2] and first[0] < a.sent and (a.sent, a.pos) < chosen[:2] and
                 (a.code in "abdefgjkmFT" and _THEN_BEFORE.search(d.sents[a.sent][max(0, a.pos - 12):a.pos]) or
