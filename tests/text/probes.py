@@ -3399,6 +3399,15 @@ PROBES: tuple[Probe, ...] = (
           ("gradually", "steadily", "carefully", "still slowly", "smoothly", "cautiously", "already gradually",
            "slowly"),
           _ego, ("moving", "h")),
+    Probe("a queue's standing told in a relative clause is the queue's, not the AV's approaching it (session 20)",
+          "The Waymo AV was traveling west on Main Street in the leftmost through lane when it began to slow as it "
+          "approached {w} for a red light. A passenger car traveling behind the Waymo AV then began to change lanes "
+          "into the right adjacent lane. As the passenger car was passing the Waymo AV, the driver side of the "
+          "passenger car made contact with the rear passenger side of the Waymo AV.",
+          ("a queue of traffic that was stopped", "a line of cars that were stopped", "traffic which was stopped",
+           "vehicles that had been stopped", "a cue of traffic that was stopped", "a queue of traffic that was "
+           "waiting", "traffic that was stationary", "a line of vehicles which were stopped"),
+          _ego, ("moving", "ac")),
     Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
           "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
           "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "

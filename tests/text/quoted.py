@@ -2373,6 +2373,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         ', then immediately fled the scene. The San Francisco Police Department is investigating the event as a crimina'
         'l act. At the time of the impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver'
         ' was present (in the driver’s seating position).'),
+    'nhtsa-sgo-ads-30270-8383-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8383,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On July [XXX], 2024 at 8:18 AM MT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Ariz'
+        'ona was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling wes'
+        't on [XXX] in the leftmost through lane when it began to slow as it approached a cue of traffic that'
+        ' was stopped for a red light. A passenger car traveling behind the Waymo AV then began to change lan'
+        'es into the right adjacent lane. As the passenger car was passing the Waymo AV, the driver side of t'
+        'he passenger car made contact with the rear passenger side of the Waymo AV. At the time of the impac'
+        "t, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo "
+        'is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
 }
 
 

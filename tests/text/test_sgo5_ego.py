@@ -35,3 +35,10 @@ def test_a_slowing_told_in_progress_with_a_manner_adverb_is_under_way() -> None:
     # red traffic signal ... the motorcycle made contact with the Zoox vehicle's rear bumper": the stop was under way
     # at the contact, so the AV was moving (gold `moving`; "was slowly slowing" read so before, "gradually" not).
     assert _ego("nhtsa-sgo-ads-30610-8290-v2")[0] == "moving"
+
+
+def test_a_queues_standing_in_a_relative_clause_is_not_the_avs() -> None:
+    # "The Waymo AV was traveling west on [XXX] in the leftmost through lane when it began to slow as it approached a
+    # cue of traffic that was stopped for a red light": "was stopped" tells the queue's state (the relative clause of
+    # "traffic"), not the AV's; the AV was slowing when the passing car struck it (gold moving `ac`).
+    assert _ego("nhtsa-sgo-ads-30270-8383-v1") == ("moving", "ac")

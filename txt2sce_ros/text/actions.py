@@ -760,8 +760,9 @@ def find_acts(sent_idx: int, s: str, ments: list[Mention], fallback: int | None,
         if _NEGATED.search(before) and not own_clause:
             continue  # "did not immediately proceed"
         if code in ("h", "S") and fre.search(r"\b(?:vehicles|cars|trucks|traffic|queue|line\s+of\s+\w+)\s+"
-                                            r"(?:that\s+(?:were|was|had)\s+(?:been\s+)?)?$", before, re.I):
-            continue  # "a line of vehicles stopped at a red light": a group's state, not the subject's
+                                            r"(?:(?:that|which)\s+(?:(?:were|was|had)\s+(?:been\s+)?)?)?$", before, re.I):
+            continue  # "a line of vehicles stopped at a red light": a group's state, not the subject's ("traffic that
+            # was stopped": the auxiliary may be inside the state's own span)
         if code == "a" and s[b:e].lower() == "following" and _EVENT_AFTER.match(s[e:]):
             continue  # "parked at the curb following a passenger drop-off": "after", no following of anyone
         if fre.search(r"\btraffic\s+$", before) and fre.match(r"\w+ing\b", s[b:e]):
