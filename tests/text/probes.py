@@ -3656,6 +3656,16 @@ PROBES: tuple[Probe, ...] = (
           "scene.",
           ("again", "a second time", "once more", "a third time"),
           _party, [("R6", "same", "a")]),
+    # Session 20: a party behind that passes on a side no word names, with no lane change told, passed on the side
+    # of the AV it struck (sketch.md; relations.place).
+    Probe("a party behind the AV passing it on no named side, striking its rear passenger side: behind, on the right",
+          "The Cruise AV was traveling eastbound on Sacramento Street at low speed. A Honda Accord traveling behind the "
+          "Cruise AV {w} and made contact with the Cruise AV, damaging the rear passenger side bumper of the Cruise "
+          "AV.",
+          ("attempted to pass the Cruise AV", "passed the Cruise AV", "tried to overtake the Cruise AV",
+           "began to pass the Cruise AV", "was passing the Cruise AV", "overtook the Cruise AV",
+           "attempted to drive past the Cruise AV"),
+          _party, [("R6", "right", "a")]),
 )
 
 

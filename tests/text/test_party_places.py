@@ -564,3 +564,11 @@ def test_a_party_that_struck_the_av_again_is_placed_at_its_first_contact() -> No
     # contact, told in the opening sentence; the pass after it is where the party went then (R6/same, not left).
     p = _party("csvr-waymo-20210714-s91")
     assert (p.position, p.lane, p.actions) == ("R6", "same", "a")
+
+
+def test_a_party_passing_from_behind_on_no_named_side_passed_on_the_side_it_struck() -> None:
+    # "a Honda Accord traveling behind the Cruise AV attempted to pass the Cruise AV and made contact with the Cruise
+    # AV, damaging the rear passenger side bumper": no side of the pass named, no lane change told; the side of the
+    # AV it struck is the side it passed on (sketch.md: R6 on the side it passed, `a`).
+    p = _party("csvr-cruise-20220905-s189", 1)
+    assert (p.position, p.lane, p.actions) == ("R6", "right", "a")

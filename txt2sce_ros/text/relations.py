@@ -112,7 +112,8 @@ _BEHIND = compile_gated(r"\b(?:behind\s+(?:the\s+(?:first\s+|second\s+)?)?(?:EGO
 _AHEAD = compile_gated(r"\b(?:ahead\s+of\s+EGO|in\s+front\s+of\s+EGO|preceding\s+EGO|leading\s+EGO|"
                        r"(?:directly|immediately)\s+ahead|just\s+ahead|(?:lead|preceding)\s+vehicle)\b", re.I)
 _PASSING = compile_gated(r"\b(?:pass(?:ed|ing|es)?|overtak(?:e|ing|en)|overtook|lane[- ]split\w*|"
-                         r"(?:rode|riding|drove|driving|went|going|came|coming|moved|moving|move|get|getting|got|"
+                         r"(?:rode|riding|ride|drove|driving|drive|went|going|go|came|coming|come|moved|moving|move|get|"
+                         r"getting|got|"
                          r"accelerat\w+|sped|speeding|raced|racing|zoomed|pulled|pulling)\s+past|"
                          # "went by the Waymo AV on the left": by the AV itself (the side read below)
                          r"(?:rode|drove|went|came|moved|got|sped|zoomed|pulled)\s+by(?=\s+(?:the\s+)?(?:\w+\s+)?EGO\b)|"
@@ -766,6 +767,16 @@ def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
         # "traveling behind EGO, then passed it on the right": it came up in the AV's lane and passed on that side
         lane, rule = pass_side, rule + "; passing side"
         used.append(next(c for c in passing if c.value))
+    elif lanes and passing and cside and contact is not None and pos == "R6" and not backing and \
+            all(c.value == "same" and not _EXPLICIT_SAME.search(d.text[c.span[0]:c.span[1]]) for c in lanes) and \
+            not any(a.who == e.idx and a.code in "fgF" for a in d.acts):
+        # "a Honda Accord traveling behind the Cruise AV attempted to pass the Cruise AV and made contact ...,
+        # damaging the rear passenger side bumper": behind it, then passing on a side no word names, with no lane
+        # change told: the side of the AV it struck is the side it passed on (sketch.md: a party passing the AV
+        # without a stated lane change is R6 on the side it passed). (One that changed lanes to pass began in the
+        # AV's lane: R6/same, its string the change.)
+        lane, rule = cside, rule + "; passing on the side it struck"
+        used.append(contact)
     elif lanes:
         lane, rule = lanes[0].value, rule + "; lane"
         used.append(lanes[0])
