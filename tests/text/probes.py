@@ -3408,6 +3408,15 @@ PROBES: tuple[Probe, ...] = (
            "vehicles that had been stopped", "a cue of traffic that was stopped", "a queue of traffic that was "
            "waiting", "traffic that was stationary", "a line of vehicles which were stopped"),
           _ego, ("moving", "ac")),
+    Probe("a slowing told with the stop it prepared for is a stop (session 20)",
+          "The Waymo AV was traveling northbound on Main Street in the leftmost lane as it was approaching the "
+          "intersection with 1st Street. The signal was yellow as the Waymo AV approached the intersection. The "
+          "Waymo AV {w}, and a van traveling directly behind the Waymo AV then made contact with the rear of the "
+          "Waymo AV.",
+          ("slowed, preparing to stop", "slowed in preparation to stop", "braked, preparing to stop",
+           "decelerated in order to stop", "slowed down, getting ready to stop", "slowed to stop",
+           "slowed down, preparing to stop", "braked in preparation to stop"),
+          _ego, ("moving", "ah")),
     Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
           "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
           "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "

@@ -9,6 +9,18 @@ from txt2sce_ros.sketch import Sketch
 from txt2sce_ros.text.extractor import extract
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-5591-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5591,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On April [XXX], 2023 at 8:02 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, Arizo'
+        'na was in a collision involving a van on [XXX] at [XXX]. The Waymo AV was traveling northbound on [X'
+        'XX] in the leftmost lane as it was approaching the intersection with [XXX]. The signal for traffic p'
+        'roceeding north on [XXX] was yellow as the Waymo AV approached the intersection. The Waymo AV slowed'
+        ', preparing to stop, and a van traveling directly behind the Waymo AV then made contact with the rea'
+        'r of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mo'
+        'de. Both the Waymo AV and the van sustained damage. Waymo is reporting this crash under Request No. '
+        '2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional i'
+        'nformation as it may become available.'),
     'nhtsa-sgo-ads-30270-7882-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7882, version 1'
         ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

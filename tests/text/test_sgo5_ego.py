@@ -42,3 +42,9 @@ def test_a_queues_standing_in_a_relative_clause_is_not_the_avs() -> None:
     # cue of traffic that was stopped for a red light": "was stopped" tells the queue's state (the relative clause of
     # "traffic"), not the AV's; the AV was slowing when the passing car struck it (gold moving `ac`).
     assert _ego("nhtsa-sgo-ads-30270-8383-v1") == ("moving", "ac")
+
+
+def test_a_slowing_told_with_the_stop_it_prepared_for_is_a_stop() -> None:
+    # "The Waymo AV slowed, preparing to stop, and a van traveling directly behind the Waymo AV then made contact
+    # with the rear of the Waymo AV": the slowing was to a standstill (sketch.md: slowing to a standstill is `h`).
+    assert _ego("nhtsa-sgo-ads-30270-5591-v1") == ("moving", "ah")

@@ -130,7 +130,9 @@ PHRASES: tuple[tuple[str, str], ...] = (
           r"\bbrought\s+(?:itself\s+)?to\s+(?:a|an)\s+(?:\w+\s+)?(?:stop|halt)\b|"
           r"\bhad\s+to\s+(?:come\s+to\s+a\s+(?:\w+\s+)?)?stop\b|"
           # "was slowing to stop for a red light": slowing that ends at a standstill
-          r"\b(?:slow|brak|decelerat)(?:ed|ing|es|e|s)?\s+(?:down\s+)?to\s+stop\b|"
+          # ("slowed, preparing to stop", "braked in preparation to stop": the standstill it was slowing for)
+          r"\b(?:slow|brak|decelerat)(?:ed|ing|es|e|s)?(?:\s+down)?(?:\s*,)?\s+(?:(?:preparing|in\s+preparation|"
+          r"getting\s+ready|in\s+order)\s+)?to\s+stop\b|"
           r"\b(?:made|make|making|makes)\s+(?:a|an)\s+(?:\w+\s+)?stop\b|\bc(?:a|o)me\s+to\s+rest\b|"
           # "experienced an unknown e-stop", "performed an emergency stop": the shuttles' word for a hard stop
           r"\b(?:made|execut(?:ed|es|ing)|perform(?:ed|s|ing)|experienc(?:ed|es|ing))\s+(?:a|an)\s+(?:\w+\s+)?"
