@@ -3675,6 +3675,17 @@ PROBES: tuple[Probe, ...] = (
            "began to pass the Cruise AV", "was passing the Cruise AV", "overtook the Cruise AV",
            "attempted to drive past the Cruise AV"),
           _party, [("R6", "right", "a")]),
+    # Session 20: a party moving off from the curb or a space straight into a U-turn: its way out is the turn, no
+    # lane change before it (extractor).
+    Probe("a parked party pulling out straight into a U-turn ahead of the AV: `ij`, no lane change between",
+          "A Zoox vehicle in autonomy was double parked on northbound Koval Lane. A passenger car which had been "
+          "parallel parked in the adjacent right curb lane {w} ahead of the Zoox vehicle. During the maneuver, the "
+          "rear door of the passenger car made contact with the front left fender of the Zoox vehicle.",
+          ("pulled out of the parking spot and began attempting a multi-point U-turn",
+           "pulled out of its parking space and made a U-turn", "pulled away from the curb and began a U-turn",
+           "left its parking spot and attempted a U-turn", "pulled out from the curb and began to make a U-turn",
+           "pulled out of the parking spot and began a three-point turn"),
+          _npc_actions, [("stopped", "ij")]),
 )
 
 

@@ -2397,6 +2397,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         "t, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo "
         'is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement '
         'or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30610-9963-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-9963, version 1'
+        ', column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle (Vehicle 1) in autonomy was double parked, waiting for the next ride with brake lights and haza'
+        'rd lights activated, on southwest-bound [XXX] in San Francisco. At that time, a passenger car (Vehicle 2) whic'
+        'h had been parallel parked in the adjacent right curb lane, pulled out of the parking spot and began attemptin'
+        "g a multi-point U-turn ahead of the Zoox vehicle. During the maneuver, Vehicle 2's driver's side rear door mad"
+        'e contact with the front left fender of the Zoox vehicle. The Zoox vehicle sustained minor damage to the fende'
+        'r. The driver of Vehicle 2 pulled over after the collision to inspect both vehicles, then left the scene short'
+        'ly after without exchanging information. There were no reported injuries and police were not called.'),
 }
 
 

@@ -186,3 +186,12 @@ def test_a_pass_told_with_went_by_is_a_run_along_the_av() -> None:
     for verb in ("passed", "went by", "drove by"):
         told = QUOTED[rid][1].replace("passenger car passed the Waymo AV", f"passenger car {verb} the Waymo AV")
         assert _party(rid, told).actions == "adh", verb
+
+
+def test_a_parked_party_pulling_out_straight_into_a_u_turn_changes_no_lane_first() -> None:
+    # "a passenger car (Vehicle 2) which had been parallel parked in the adjacent right curb lane, pulled out of the
+    # parking spot and began attempting a multi-point U-turn ahead of the Zoox vehicle": it moved off (`i`) and its
+    # way out of the space was the U-turn itself (`j`), no lane change before it (the gold `ij`; studyable parties
+    # moving off into a turn: `id` 2, `ie` 1, `ij` 1).
+    p = _party("nhtsa-sgo-ads-30610-9963-v1")
+    assert (p.start, p.actions) == ("stopped", "ij")

@@ -285,6 +285,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         if e.category == "pedestrian" and set(acts) & set("fg"):
             # A walker's sideways move into the road ("darted in front of EGO") is its crossing of the AV's path.
             acts = fre.sub(r"m+", "m", acts.replace("f", "m").replace("g", "m"))
+        if start == "stopped" and acts[:1] == "i" and acts[1:2] in ("f", "g") and acts[2:3] in ("d", "e", "j"):
+            # Moving off from the curb or a space straight into a turn or a U-turn ("pulled out of the parking spot
+            # and began attempting a multi-point U-turn"): the turn is its way out, no lane change before it.
+            # Studyable gold, parties moving off into a turn: `id` 2, `ie` 1, `ij` 1; never a change between.
+            acts = "i" + acts[2:]
         if acts.startswith("am"):
             acts = acts[1:]  # crossing the AV's path is the whole interaction, not a turn off a run along its road
         if start == "moving" and not acts:
