@@ -3686,6 +3686,16 @@ PROBES: tuple[Probe, ...] = (
            "left its parking spot and attempted a U-turn", "pulled out from the curb and began to make a U-turn",
            "pulled out of the parking spot and began a three-point turn"),
           _npc_actions, [("stopped", "ij")]),
+    # Session 20: a lane change from one outer lane of a three-lane road to the other is two changes (extractor).
+    Probe("a party changing from the far left lane to the far right lane of three ahead of the AV: two changes",
+          "The Waymo AV was traveling westbound on Winston Drive, a road of three lanes, in the far right lane. An SUV "
+          "also proceeding westbound on Winston Drive {w} in front of the Waymo AV. The Waymo AV then made contact "
+          "with the SUV.",
+          ("made a continuous right lane change from the far left lane, through the middle lane, and entered the far "
+           "right lane", "changed lanes from the leftmost lane to the rightmost lane",
+           "merged from the left lane to the right lane", "made a lane change from the far left lane to the far right "
+           "lane"),
+          _npc_actions, [("moving", "agg")]),
 )
 
 

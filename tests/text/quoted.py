@@ -2407,6 +2407,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'e contact with the front left fender of the Zoox vehicle. The Zoox vehicle sustained minor damage to the fende'
         'r. The driver of Vehicle 2 pulled over after the collision to inspect both vehicles, then left the scene short'
         'ly after without exchanging information. There were no reported injuries and police were not called.'),
+    'dmvca-waymo-20211204-r256': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 256, column "Accident '
+        'Detail Description")',
+        'On December 4, 2021 at 4:10 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, CA was '
+        'in a collision involving an SUV on Winson Drive between 19th and 20th Avenues. While in autonomous mode, the W'
+        'aymo AV turned right from southbound 19th Avenue onto westbound Winston Drive. As the Waymo AV proceeded onto '
+        'Winston Drive in the far right lane, an SUV also proceeding westbound on Winston Drive made a continuous right'
+        ' lane change from the far left lane, through the middle lane, and entered the far right lane in front of the W'
+        'aymo AV. The Waymo AV was decelerating when the test driver transitioned to manual mode. The Waymo AV then mad'
+        'e contact with the SUV. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test drive'
+        'r (in the driver’s seating position) was operating the Waymo AV in manual mode. The Waymo AV sustained damage '
+        'to its front driver side fender and the SUV sustained damage to its front passenger side fender.'),
 }
 
 

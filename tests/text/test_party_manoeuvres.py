@@ -195,3 +195,11 @@ def test_a_parked_party_pulling_out_straight_into_a_u_turn_changes_no_lane_first
     # moving off into a turn: `id` 2, `ie` 1, `ij` 1).
     p = _party("nhtsa-sgo-ads-30610-9963-v1")
     assert (p.start, p.actions) == ("stopped", "ij")
+
+
+def test_a_lane_change_from_one_outer_lane_of_three_to_the_other_is_two_changes() -> None:
+    # "an SUV also proceeding westbound on Winston Drive made a continuous right lane change from the far left lane,
+    # through the middle lane, and entered the far right lane in front of the Waymo AV": two changes to the right
+    # (the official gold's `agg`).
+    p = _party("dmvca-waymo-20211204-r256")
+    assert (p.position, p.lane, p.actions) == ("R5", "left", "agg")

@@ -45,6 +45,34 @@ _AV_TURN_TOLD = compile_gated(r"\bEGO\b(?:(?!\b(?:when|while(?!\s+\w+ing\b)|as|t
 _INTO_EGO_LANE = compile_gated(r"\binto\s+EGO's\s+(?:travel\s+)?lane\b", re.I)
 
 
+# A lane change told from one outer lane to the other ("made a continuous right lane change from the far left lane,
+# through the middle lane, and entered the far right lane", "began to change lanes from the rightmost lane to the
+# leftmost lane"), on a road of three lanes (a middle or centre lane, or "three lanes", named): two changes.
+_OUTER_TO_OUTER = compile_gated(r"\bfrom\s+the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:[\w-]+\s+)?lane\b[^.;]{0,80}?\b(?:in)?to\s+"
+                                r"the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:[\w-]+\s+)?lane\b|"
+                                r"\bfrom\s+the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:[\w-]+\s+)?lane\b[^.;]{0,80}?\bentered\s+"
+                                r"the\s+(?:far\s+)?(left|right)(?:most)?\s+(?:[\w-]+\s+)?lane\b", re.I)
+_THREE_LANES = compile_gated(r"\b(?:three|3)\s+(?:[\w-]+\s+)?lanes\b|\b(?:middle|center|centre)\s+lane\b", re.I)
+
+
+def _across_three_lanes(d: Doc, pacts: list[Act], acts: str) -> str:
+    """A party's single lane change told from one outer lane of a three-lane road to the other is two changes
+    (studyable gold: 2 of 2 such parties, `agg` and `ff`)."""
+    lateral = [c for c in acts if c in "fg"]
+    if len(lateral) != 1:
+        return acts
+    for a in pacts:
+        if a.code not in "fgF":
+            continue
+        span = d.sents[a.sent][max(0, a.pos - 60):a.pos + 200]
+        m = _OUTER_TO_OUTER.search(span)
+        if m and len({g.lower() for g in m.groups() if g}) == 2 and \
+                d.once("three_lanes", lambda: bool(_THREE_LANES.search(d.text))):
+            k = acts.index(lateral[0])
+            return acts[:k + 1] + lateral[0] + acts[k + 1:]
+    return acts
+
+
 def _came_into_lane_from(d: Doc) -> str | None:
     """The side a party moving into the AV's lane from behind came from: the open side of a leftmost or rightmost
     AV lane, else the side of the AV the contact (or the damage told after it) names."""
@@ -262,6 +290,7 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # it touched (the damage told, if the contact names no side).
             lane = _came_into_lane_from(d) or lane
         start, acts = sequence(pacts, stopped=stopped, ego=False, side="oncoming" if pos == "R7" else lane)
+        acts = _across_three_lanes(d, pacts, acts)
         if start == "moving" and acts[:1] in ("b", "c", "h") and not under_way:
             acts = "a" + acts  # speeding up, slowing or stopping is done by a party already on its way
         if start == "moving" and not under_way and (acts[:1] in ("d", "e", "f", "g") and pos == "R5" and
