@@ -3417,6 +3417,16 @@ PROBES: tuple[Probe, ...] = (
            "decelerated in order to stop", "slowed down, getting ready to stop", "slowed to stop",
            "slowed down, preparing to stop", "braked in preparation to stop"),
           _ego, ("moving", "ah")),
+    Probe("a turn the AV was attempting, its driving mode told inside the clause: at the junction (session 20)",
+          "On May 3, 2024 at 2:10 PM PT a Waymo Autonomous Vehicle (\u201cWaymo AV\u201d) operating in Tempe, Arizona "
+          "was in a collision involving a passenger car on Main Street and Elm Street. While {w} from westbound Main "
+          "Street onto northbound Elm Street, the Waymo AV was yielding to traffic approaching from the left. A "
+          "passenger car behind the Waymo AV proceeded forward and made contact with the rear of the Waymo AV.",
+          ("attempting a right turn in autonomous mode", "attempting a right turn in manual mode",
+           "attempting a right turn", "trying to make a right turn", "attempting to turn right in autonomous mode",
+           "attempting a right turn in fully autonomous mode", "attempting a right turn in autonomous driving mode",
+           "attempting to make a right turn in driverless mode"),
+          lambda sk: sk.road.layout, "junction4"),
     Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
           "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
           "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "

@@ -9,6 +9,19 @@ from txt2sce_ros.sketch import Sketch
 from txt2sce_ros.text.extractor import extract
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30531-5336-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30531-5336,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On March [XXX], 2023 at 1:35 PM PST a Waymo Autonomous Vehicle ("Waymo AV") operating in Tempe, Ariz'
+        'ona was in a collision involving a passenger car on [XXX] and [XXX]. While attempting a right turn i'
+        'n autonomous mode from westbound [XXX] onto northbound [XXX], the Waymo AV was yielding to traffic a'
+        'pproaching from the left. As the Waymo AV attempted to proceed, the test driver transitioned to manu'
+        'al mode and brought the Waymo AV to a stop. A passenger car behind the Waymo AV proceeded forward an'
+        "d made contact with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS "
+        'was not engaged and a test driver was operating the Waymo AV in manual mode. The Waymo AV and the pa'
+        'ssenger vehicle sustained damage. Transdev Alternative Services is reporting this crash under Reques'
+        't no. 2 of Standing General Order 2021-01. Transdev may supplement or correct its reporting with add'
+        'itional information as it may become available. This is a duplicate of 30270-5326-1.'),
     'nhtsa-sgo-ads-30270-5591-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5591,'
         ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -98,7 +98,7 @@ HELD_SGO5 = {
     "check5": {"npc_quantity": 0.89, "npc_position": 0.70, "npc_events": 0.64, "layout": 0.94, "ego_actions": 0.65,
                "ego_start": 0.83},
 }
-CONFLICT_HELD_SGO5 = {"study5": 22, "check5": 32}
+CONFLICT_HELD_SGO5 = {"study5": 23, "check5": 32}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()} | {
     name: (SGO4, held, CONFLICT_HELD_SGO4[name]) for name, held in HELD_SGO4.items()} | {

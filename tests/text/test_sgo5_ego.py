@@ -48,3 +48,10 @@ def test_a_slowing_told_with_the_stop_it_prepared_for_is_a_stop() -> None:
     # "The Waymo AV slowed, preparing to stop, and a van traveling directly behind the Waymo AV then made contact
     # with the rear of the Waymo AV": the slowing was to a standstill (sketch.md: slowing to a standstill is `h`).
     assert _ego("nhtsa-sgo-ads-30270-5591-v1") == ("moving", "ah")
+
+
+def test_a_turn_the_av_was_attempting_is_at_the_junction() -> None:
+    # "While attempting a right turn in autonomous mode from westbound [XXX] onto northbound [XXX], the Waymo AV was
+    # yielding to traffic approaching from the left": the turn was under way when the follower struck it (gold
+    # junction4); the driving mode inside the clause does not part the turn from its roads.
+    assert quoted_sketch("nhtsa-sgo-ads-30531-5336-v1").road.layout == "junction4"

@@ -96,6 +96,12 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
     # "autonomous driving mode", "manual driving mode": a mode, not a driving (the rules read "autonomous mode")
     (("driving mode",), False, compile_gated(r"\b(autonomous|manual|conventional)\s+driving(?=\s+mode\b)", re.I),
      lambda m: m.group(1)),
+    # "While attempting a right turn in autonomous mode from westbound X onto northbound Y", "was stopped in
+    # autonomous mode on the off-ramp": the AV's driving mode does not matter (sketch.md), and told inside a clause
+    # it parts the words a reading joins; dropped ("operating in autonomous mode when" reads "operating when")
+    (("autonomous mode", "manual mode", "driverless mode", "driving mode"), False,
+     compile_gated(r"\s+in\s+(?:(?:fully|supervised|driverless|conventional)\s+)?(?:autonomous|manual|driverless|"
+                   r"conventional)\s+mode\b", re.I), lambda m: ""),
     # "in a northerly direction", "in the northbound direction", "heading northward": the "-bound" the rules read
     (("erly direction", "ern direction", "bound direction", "ward"), False,
      compile_gated(r"\bin\s+(?:an?|the)\s+(north|south|east|west|northeast|northwest|southeast|southwest)"

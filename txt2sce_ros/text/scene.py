@@ -218,7 +218,7 @@ _LOT_EXIT = compile_gated(r"\b(?:exit\w*|leaving|left|pull\w*\s+out\s+of|out\s+o
 # (a turn ahead that the AV "approached": the junction it was approaching, sketch.md's R1-R4)
 # (a turn under way told by any of the verbs that make one: "was executing a left turn from ... into lane two")
 _ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|executing|performing|conducting|preparing\s+to|"
-                              r"waiting\s+to|about\s+to|"
+                              r"waiting\s+to|about\s+to|attempting(?:\s+to)?|trying\s+to|"
                               r"approach(?:ed|ing)\s+(?:a|an|the|its)\s+(?:\w+\s+)?(?:left|right)[- ]turn)\b", re.I)
 
 
