@@ -3427,6 +3427,19 @@ PROBES: tuple[Probe, ...] = (
            "attempting a right turn in fully autonomous mode", "attempting a right turn in autonomous driving mode",
            "attempting to make a right turn in driverless mode"),
           lambda sk: sk.road.layout, "junction4"),
+    Probe("a collision placed inside a lot the AV was exiting is in the lot; an exit alone is where it meets the road "
+          "(session 20)",
+          "On March 3, 2025 at 11:52 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Tempe, Arizona was in a "
+          "collision involving a passenger car {w} at Main Street when it slowed to a stop to yield for pedestrians "
+          "entering the crosswalk ahead. As the Waymo AV remained stopped, a passenger car directly behind the Waymo "
+          "AV made contact with the rear of the Waymo AV.",
+          ("in a parking lot at Main Street. The Waymo AV was exiting a parking lot",
+           "inside a parking garage at Main Street. The Waymo AV was leaving the parking garage",
+           "in the parking lot at Main Street. The Waymo AV was exiting the parking lot",
+           "within a parking structure at Main Street. The Waymo AV was exiting the parking structure",
+           "in a shopping center parking lot at Main Street. The Waymo AV was exiting the parking lot",
+           "on Main Street at Elm Street. The Waymo AV was exiting a parking lot"),
+          lambda sk: sk.road.layout, lambda w: "junction4" if w.startswith("on Main") else "parking"),
     Probe("the AV told standing on after its stop, a follower running into its rear: it stood (session 20)",
           "The Waymo AV was traveling westbound on [XXX] when it slowed to a stop to yield to traffic ahead of it in "
           "the same lane. {W}, a passenger car traveling directly behind the Waymo AV made contact with the rear of "

@@ -9,6 +9,21 @@ from txt2sce_ros.sketch import Sketch
 from txt2sce_ros.text.extractor import extract
 
 QUOTED: dict[str, tuple[str, str]] = {
+    'nhtsa-sgo-ads-30270-10184-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10184'
+        ', version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On March [XXX], 2025 at 11:52 PM MT a Waymo Autonomous Vehicle (Waymo AV) operating in Tempe, Arizon'
+        'a was in a collision involving a passenger car in a parking lot at [XXX]. The Waymo AV was exiting a'
+        ' parking lot at [XXX] when it slowed to a stop to yield for pedestrians entering the crosswalk ahead'
+        '. As the Waymo AV remained stopped, a passenger car directly behind the Waymo AV approached the Waym'
+        'o AV from behind, and the front of the passenger car made contact with the rear of the Waymo AV. The'
+        ' passenger car continued to proceed straight, nudging the Waymo AV forward as the front of the passe'
+        'nger car continued to make contact with the rear of the Waymo AV. The passenger car then passed the '
+        'Waymo AV on the left and proceeded to exit the parking lot just after the pedestrians had finished c'
+        'rossing. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both v'
+        'ehicles sustained damage. Waymo is reporting this crash under Request No. 1 of Standing General Orde'
+        'r 2021-01 because a vulnerable road user influenced the driving task of a vehicle involved. Waymo ma'
+        'y supplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30531-5336-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30531-5336,'
         ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

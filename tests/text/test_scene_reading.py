@@ -78,7 +78,7 @@ CONFLICT_HELD_SGO = {"study3": 94, "check3": 42}
 #: was run on them: study4 may be read, check4 is scored only; one annotator's gold each.
 SGO4 = Path(__file__).parent / "sgo4"
 HELD_SGO4 = {
-    "study4": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.78, "npc_events": 0.79, "layout": 0.90,
+    "study4": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.78, "npc_events": 0.79, "layout": 0.91,
                "ego_actions": 0.81, "ego_start": 0.89, "signal_state": 0.85},
     "check4": {"npc_quantity": 0.92, "npc_position": 0.72, "npc_events": 0.68, "layout": 0.93, "ego_actions": 0.70,
                "ego_start": 0.85},
@@ -88,7 +88,7 @@ HELD_SGO4 = {
 # study5's gold reads both W-half reports so told and 6 of the 7 studyable reports with a stop, a follower and the
 # AV standing on; sgo4's three annotators did not all read this convention the same way (sgo4/README.md). Decided
 # on the studyable sets alone, as the session's hygiene rule asks.)
-CONFLICT_HELD_SGO4 = {"study4": 45, "check4": 36}
+CONFLICT_HELD_SGO4 = {"study4": 46, "check4": 36}
 #: And for the 144 NHTSA SGO narratives new at the end of session 19 (tests/text/sgo5/README.md), kept from everyone
 #: who wrote rules that session: study5 may be read from session 20 on, check5 is scored only.
 SGO5 = Path(__file__).parent / "sgo5"

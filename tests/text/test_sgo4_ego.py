@@ -113,3 +113,10 @@ def test_a_yield_kept_up_while_moving_is_no_stop() -> None:
     # traffic ahead when the front of the pickup truck following behind the Waymo AV made contact": it moved off
     # from the red (`i`); the yield it kept up as it moved is no stop (not `ih`).
     assert _ego("nhtsa-sgo-ads-30270-7813-v1") == ("stopped", "i")
+
+
+def test_a_collision_placed_inside_the_lot_the_av_was_exiting_is_in_the_lot() -> None:
+    # "... was in a collision involving a passenger car in a parking lot at [XXX]. The Waymo AV was exiting a parking
+    # lot at [XXX] when it slowed to a stop to yield for pedestrians entering the crosswalk ahead": the summary puts
+    # the collision inside the lot, so the way out is the lot's aisle, not the driveway onto the road (gold parking).
+    assert _layout("nhtsa-sgo-ads-30270-10184-v1") == "parking"

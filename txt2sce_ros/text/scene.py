@@ -223,6 +223,10 @@ _ONGOING_TURN = compile_gated(r"\b(?:turning|completing|making|executing|perform
 
 
 _DISPLAYED = compile_gated(r"\b(?:displaying|showing|with)\s+(?:a|an)\s+(?:red|green|yellow|amber)\s+arrow", re.I)
+#: The collision placed inside a lot ("was in a collision involving a passenger car in a parking lot at [XXX]. The
+#: Waymo AV was exiting a parking lot ... when it slowed to a stop to yield for pedestrians"): a way out of the lot
+#: told beside it is the lot's own aisle, not the driveway where it meets the road.
+_IN_LOT = compile_gated(r"\b(?:in|inside|within)\s+(?:a|an|the)\s+(?:[\w-]+\s+){0,2}parking\s+(?:lot|garage|structure)\b", re.I)
 
 
 def is_junction(sents: list[str], first_sent: int, summary: frozenset[int] = frozenset()) -> bool:
@@ -318,8 +322,8 @@ def _opposite_on_first_road(t: str) -> bool:
 def road(t: str, *, junction: bool) -> RoadInfo:
     if _ROUNDABOUT.search(t):
         layout = "roundabout"
-    elif _PARKING.search(_LOT_EDGE.sub(" ", t)) and not fre.search(r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?"
-                                              r"parking\s+(?:lot|garage|structure)", t, re.I):
+    elif _PARKING.search(_LOT_EDGE.sub(" ", t)) and (_IN_LOT.search(t) or not fre.search(
+            r"\b(?:exit(?:ed|ing)?|leaving|out\s+of)\s+(?:a|an|the)\s+(?:\w+\s+)?parking\s+(?:lot|garage|structure)", t, re.I)):
         layout = "parking"
     elif junction:
         layout = "junction3" if _T_JUNCTION.search(_RAMP_AS_LEG.sub(" ", t)) or _AV_MERGES_ONTO.search(t) else \
