@@ -22,7 +22,7 @@ REPORTS = shared_dir() / "data" / "reports"
 #: What the extractor reaches on each gold set (fractions), held so a change cannot quietly lose it. The check
 #: set's floors are below the issue's targets: see the closing note; raise them as the extractor improves.
 HELD = {
-    "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.91, "npc_events": 0.93,
+    "dev_gold": {"npc_quantity": 0.95, "npc_type": 0.95, "npc_position": 0.91, "npc_events": 0.95,
                  "obstacle_quantity": 0.95, "completeness": 0.95, "ego_start": 1.0, "ego_actions": 0.98,
                  "layout": 0.96, "signal_state": 0.98},
     "dev_gold_study": {"npc_quantity": 0.98, "npc_type": 0.95, "npc_position": 0.88, "npc_events": 0.90,
@@ -32,20 +32,20 @@ HELD = {
     # studyable sets decide - the AV's own door named after a word of its state, and the door of a vehicle that moved
     # and did the touching, are no obstacle; door readings over the 461 studyable gold sketches 455 -> 458 of 461,
     # study4's held half among the gains; the check set was not inspected)
-    "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.63, "npc_events": 0.80,
+    "dev_gold_check": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.66, "npc_events": 0.80,
                        "obstacle_quantity": 0.90, "completeness": 0.97, "ego_start": 1.0, "ego_actions": 0.90},
 }
 #: The user's figure (complete reports whose conflict is reproduced exactly), held as a count per set.
 # (dev_gold_check 16 -> 15 in session 15: one report's layout moved by the spec's own reading, an intersection the AV
 # is approaching is a junction, which 10 of the 11 studyable reports with the words follow; the 11th is a driveway
 # exit, read as such. The same rule raised check2 and check3 layout; the check set was scored only, never read.)
-CONFLICT_HELD = {"dev_gold": 51, "dev_gold_study": 69, "dev_gold_check": 17}
+CONFLICT_HELD = {"dev_gold": 52, "dev_gold_study": 69, "dev_gold_check": 18}
 
 #: The same for the 213 real narratives new in session 13 (tests/text/csvr/README.md): study2 may be read, check2 is
 #: scored only. Both sets' gold is one annotator's.
 CSVR = Path(__file__).parent / "csvr"
 HELD_CSVR = {
-    "study2": {"npc_quantity": 0.99, "npc_position": 0.95, "npc_events": 0.91, "layout": 0.96, "ego_actions": 0.94,
+    "study2": {"npc_quantity": 0.99, "npc_position": 0.97, "npc_events": 0.91, "layout": 0.96, "ego_actions": 0.94,
                "ego_start": 0.97, "signal_state": 0.93},
     # (check2 position 0.80 -> 0.79, conflict 55 -> 54 in session 15: one party moved by a rule its studyable gold
     # holds 7 of 7 - a party parallel parking ahead of or behind the AV is in its lane; check2 was not inspected)
@@ -55,7 +55,7 @@ HELD_CSVR = {
     "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.78, "layout": 0.88, "ego_actions": 0.82,
                "ego_start": 0.92},
 }
-CONFLICT_HELD_CSVR = {"study2": 85, "check2": 59}
+CONFLICT_HELD_CSVR = {"study2": 86, "check2": 59}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is
 #: scored only; one annotator's gold each (check3's first 44 labelled twice and adjudicated).
 SGO = Path(__file__).parent / "sgo"
@@ -67,18 +67,18 @@ HELD_SGO = {
     # (check3 events 0.62 -> 0.61 in session 18, from 0.620 to 0.619: one party's string moved by a wording rule
     # that moved two studyable sketches, one to its gold - a lane entered by any name is a lane change, as "moved
     # into" it is; check3 was not inspected)
-    "check3": {"npc_quantity": 0.89, "npc_position": 0.659, "npc_events": 0.62, "layout": 0.91, "ego_actions": 0.75,
-               "ego_start": 0.93},
+    "check3": {"npc_quantity": 0.89, "npc_position": 0.67, "npc_events": 0.62, "layout": 0.91, "ego_actions": 0.78,
+               "ego_start": 0.95},
 }
 # (study3 91 -> 90 in session 19: the AV met by a party that moved in while it "remained stopped" after a stop is
 # stopped with '' (sketch.md, the official convention study4's three annotators follow); study3's one annotator reads
 # `ah` for 9408, whose test in test_av_run_and_stop now asserts the official reading; 94 at session 19's end)
-CONFLICT_HELD_SGO = {"study3": 94, "check3": 42}
+CONFLICT_HELD_SGO = {"study3": 94, "check3": 44}
 #: And for the 173 NHTSA SGO narratives new in session 19 (tests/text/sgo4/README.md), labelled before the extractor
 #: was run on them: study4 may be read, check4 is scored only; one annotator's gold each.
 SGO4 = Path(__file__).parent / "sgo4"
 HELD_SGO4 = {
-    "study4": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.78, "npc_events": 0.79, "layout": 0.91,
+    "study4": {"npc_quantity": 0.97, "npc_type": 0.97, "npc_position": 0.79, "npc_events": 0.79, "layout": 0.91,
                "ego_actions": 0.81, "ego_start": 0.89, "signal_state": 0.85},
     "check4": {"npc_quantity": 0.92, "npc_position": 0.72, "npc_events": 0.68, "layout": 0.93, "ego_actions": 0.70,
                "ego_start": 0.85},
@@ -93,16 +93,28 @@ CONFLICT_HELD_SGO4 = {"study4": 46, "check4": 36}
 #: who wrote rules that session: study5 may be read from session 20 on, check5 is scored only.
 SGO5 = Path(__file__).parent / "sgo5"
 HELD_SGO5 = {
-    "study5": {"npc_quantity": 0.89, "npc_type": 0.89, "npc_position": 0.65, "npc_events": 0.60, "layout": 0.85,
+    "study5": {"npc_quantity": 0.89, "npc_type": 0.89, "npc_position": 0.71, "npc_events": 0.61, "layout": 0.87,
                "ego_actions": 0.77, "ego_start": 0.94},
-    "check5": {"npc_quantity": 0.89, "npc_position": 0.70, "npc_events": 0.64, "layout": 0.94, "ego_actions": 0.65,
+    "check5": {"npc_quantity": 0.89, "npc_position": 0.70, "npc_events": 0.65, "layout": 0.94, "ego_actions": 0.65,
                "ego_start": 0.83},
 }
-CONFLICT_HELD_SGO5 = {"study5": 23, "check5": 32}
+CONFLICT_HELD_SGO5 = {"study5": 24, "check5": 33}
+#: And for the 167 NHTSA SGO narratives new in session 20 (tests/text/sgo6/README.md), labelled before the extractor
+#: was run on them and kept from everyone who wrote rules that session: study6 may be read from session 21 on,
+#: check6 is scored only.
+SGO6 = Path(__file__).parent / "sgo6"
+HELD_SGO6 = {
+    "study6": {"npc_quantity": 0.88, "npc_type": 0.81, "npc_position": 0.61, "npc_events": 0.51, "layout": 0.84,
+               "ego_actions": 0.66, "ego_start": 0.88},
+    "check6": {"npc_quantity": 0.87, "npc_position": 0.64, "npc_events": 0.63, "layout": 0.90, "ego_actions": 0.68,
+               "ego_start": 0.89},
+}
+CONFLICT_HELD_SGO6 = {"study6": 27, "check6": 29}
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()} | {
     name: (SGO4, held, CONFLICT_HELD_SGO4[name]) for name, held in HELD_SGO4.items()} | {
-    name: (SGO5, held, CONFLICT_HELD_SGO5[name]) for name, held in HELD_SGO5.items()}
+    name: (SGO5, held, CONFLICT_HELD_SGO5[name]) for name, held in HELD_SGO5.items()} | {
+    name: (SGO6, held, CONFLICT_HELD_SGO6[name]) for name, held in HELD_SGO6.items()}
 
 
 @pytest.fixture(scope="module")
