@@ -2453,3 +2453,9 @@ QUOTED: dict[str, tuple[str, str]] = {
 def quoted_sketch(report_id: str, text: str | None = None) -> Sketch:
     """The extractor's sketch of the quoted narrative `report_id`, or of `text` (a rewording of it) under that id."""
     return extract(text if text is not None else QUOTED[report_id][1], report_id)
+
+
+def quoted_ego(report_id: str, text: str | None = None) -> tuple[str, str]:
+    """The AV's (start, action string) in `quoted_sketch(report_id, text)`."""
+    sk = quoted_sketch(report_id, text)
+    return sk.ego.start, sk.ego.actions

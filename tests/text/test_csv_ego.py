@@ -5,16 +5,10 @@ One test per reading mechanism; each asserts the reading sketch.md's rules and t
 
 from __future__ import annotations
 
-from txt2sce_ros.text.extractor import extract
-
 from .quoted import QUOTED
+from .quoted import quoted_ego as _ego
 
 _CSV = QUOTED  # report id -> (source, narrative): tests/text/quoted.py
-
-
-def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
-    sk = extract(text if text is not None else _CSV[report_id][1], report_id)
-    return sk.ego.start, sk.ego.actions
 
 
 def test_brake_lights_are_lamps_not_braking() -> None:

@@ -6,12 +6,8 @@ conventions give, and fails if the rule is removed.
 
 from __future__ import annotations
 
+from .quoted import quoted_ego as _ego
 from .quoted import quoted_sketch
-
-
-def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
-    sk = quoted_sketch(report_id, text)
-    return sk.ego.start, sk.ego.actions
 
 
 def test_approaching_after_a_standing_places_it() -> None:

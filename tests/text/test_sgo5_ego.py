@@ -7,12 +7,8 @@ gold's conventions give (sgo5/README.md: an AV stopped for a light, sign or queu
 
 from __future__ import annotations
 
+from .quoted import quoted_ego as _ego
 from .quoted import quoted_sketch
-
-
-def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
-    sk = quoted_sketch(report_id, text)
-    return sk.ego.start, sk.ego.actions
 
 
 def test_a_standing_told_as_lasting_is_the_start_even_for_a_follower() -> None:

@@ -8,13 +8,9 @@ from __future__ import annotations
 from txt2sce_ros.text.extractor import extract
 
 from .quoted import QUOTED
+from .quoted import quoted_ego as _ego
 
 _SGO = QUOTED  # report id -> (source, narrative): tests/text/quoted.py
-
-
-def _ego(report_id: str, text: str | None = None) -> tuple[str, str]:
-    sk = extract(text if text is not None else _SGO[report_id][1], report_id)
-    return sk.ego.start, sk.ego.actions
 
 
 def test_a_stop_told_under_way_opens_the_string() -> None:
