@@ -121,8 +121,7 @@ class RunWriter:
               network: RoadNetwork | None = None, lights: tuple[TrafficLightState, ...] = ()) -> None:
         """Start a run: its envelope, then (given the network) the road and the goal and `lights` markers, the
         'started' status and the goal, in the order the player node publishes them."""
-        if self._pending or self._recent:
-            self._drain()                         # the previous run's steps, with the previous run's goal
+        self._drain()                             # the previous run's steps (if any), with the previous run's goal
         if envelope is not None:
             self._raw_ordered(c.TOPIC_SCENARIO, cdr.encode_string(envelope.to_json()))
         self._goal, self._shown_lights = goal, None
@@ -179,6 +178,7 @@ class RunWriter:
         self._waiting += len(recent)
 
     def _drain(self) -> None:
+        """Write every waiting step and message, in order (nothing when none waits)."""
         self._take()
         pending, self._pending = self._pending, []
         self._segment, self._waiting = None, 0
@@ -279,8 +279,7 @@ class RunWriter:
             self._raw_ordered(c.TOPIC_VIOLATIONS, verdict_cdr(verdict))
 
     def close(self) -> None:
-        if self._pending or self._recent:
-            self._drain()
+        self._drain()
         self.rec.close()
 
     def __enter__(self) -> "RunWriter":
