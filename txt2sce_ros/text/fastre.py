@@ -1049,3 +1049,8 @@ def sub(pattern: str, repl: str | Callable[[re.Match[str]], str], string: str, c
 
 def split(pattern: str, string: str, maxsplit: int = 0, flags: int = 0) -> list[str]:
     return _cached(pattern, flags).split(string, maxsplit)
+
+
+def blank(rx: re.Pattern[str], string: str) -> str:
+    """`string` with each match of `rx` replaced by as many spaces: the words are gone, every offset stays."""
+    return rx.sub(lambda m: " " * len(m.group(0)), string)

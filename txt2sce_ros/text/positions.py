@@ -82,7 +82,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
         # The side it passed on: said with the pass, else the side of the AV it touched, else a side named just
         # after ("its right mirror struck EGO's left mirror": the AV's side, not the party's own part, decides; nor
         # "As the heavy truck was passing the stopped EGO, the right side of the heavy truck made contact").
-        after = _OWN_FLANK.sub(lambda m: " " * len(m.group(0)), ctx[passing.end():passing.end() + 60])[:30]
+        after = fre.blank(_OWN_FLANK, ctx[passing.end():passing.end() + 60])[:30]
         return "R6", (passing.group(1) or "").lower() or cside or side_named(after) or "same", True
     if fre.search(r"^\s*\S*\s*(?:following|trailing)|(?:^|\s)(?:that\s+had\s+been\s+|that\s+was\s+|was\s+)?"
                  r"(?:traveling\s+|travelling\s+|driving\s+)?(?:directly\s+|immediately\s+)?(?:behind|following|"
@@ -91,7 +91,7 @@ def party_position(d: Doc, e: Entity, ego_heading: int | None, ego_turning: bool
                  r"\bbehind\s+and\s+to\s+the\s+(?:left|right)\s+of\s+EGO",
                  ctx, re.I) or any(fre.search(r"\b(?:following|trailing)\s*$", p, re.I) for p in pres):
         side = None
-        sides = _OWN_FLANK.sub(lambda m: " " * len(m.group(0)), ctx)  # (the party's own flank is no side it passed on)
+        sides = fre.blank(_OWN_FLANK, ctx)  # (the party's own flank is no side it passed on)
         if fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}\b(?:on\s+the\s+)?(left|right)\b", sides, re.I):
             side = side_named(fre.search(r"\bpass(?:ed|ing)\b[^|]{0,40}", sides, re.I).group(0))
         elif fre.search(r"\bbehind\s+and\s+to\s+the\s+(left|right)", ctx, re.I):

@@ -388,7 +388,7 @@ def gather(d: Doc, e: Entity) -> list[Cue]:
     own = d.av_lane
     for sent, a, b in _mention_windows(d, e):
         s = d.sents[sent]
-        win = TURN_WORDS.sub(lambda m: " " * len(m.group(0)), s[a:b])
+        win = fre.blank(TURN_WORDS, s[a:b])
         base = d.offset(sent) + a
         absolute = []
         if own is not None:
