@@ -3719,6 +3719,71 @@ PROBES: tuple[Probe, ...] = (
            "merged from the left lane to the right lane", "made a lane change from the far left lane to the far right "
            "lane"),
           _npc_actions, [("moving", "agg")]),
+    # Session 21: who counts and what the AV struck (extractor: lexicon.CONTACT, mentions.resolve, story).
+    Probe("a party's move that ends in the AV, told by the move's verb and a particle, is the contact",
+          "The Cruise AV was stopped at a pick-up location on Mission Street. A sedan parked ahead of the Cruise AV "
+          "{w} the Cruise AV.",
+          ("backed up into", "slowly backed up into", "reversed back into", "rolled backward into", "rolled back "
+           "into", "backed into", "reversed into", "crept backward into", "rolled backwards into"),
+          lambda sk: (sk.collision.with_, [p.category for p in sk.npcs]), ("npc1", ["car"])),
+    Probe("a party behind the standing AV moving into a part of it is the contact",
+          "The Cruise AV was stopped at a red light on Mission Street. A pickup truck stopped behind the Cruise AV then "
+          "{w} the rear bumper of the Cruise AV.",
+          ("slowly pushed into", "pushed into", "crept forward into", "inched forward into", "rolled forward into",
+           "crept into", "rolled into", "moved forward into", "slid into"),
+          lambda sk: (sk.collision.with_, sk.collision.type), ("npc1", "rear_end")),
+    Probe("the AV crashing or running into an object is its contact with it",
+          "A Zoox vehicle was traveling northbound on Koval Lane when the Zoox vehicle lost control, resulting in the "
+          "Zoox vehicle {w} a light pole.",
+          ("crashing into", "running into", "striking", "hitting", "colliding with", "making contact with",
+           "slamming into", "smashing into", "plowing into"),
+          lambda sk: ([o.category for o in sk.obstacles], sk.collision.with_, sk.collision.type),
+          (["pole"], "obs1", "hit_object")),
+    Probe("a door opened into the AV's path, its owner named between the door and the opening",
+          "A Zoox vehicle was traveling northbound on Koval Lane when {w} and made contact with the Zoox vehicle.",
+          ("the driver's side door of a stopped passenger vehicle in the right adjacent lane opened", "the rear door "
+           "of a taxi stopped in the adjacent lane opened", "the driver side door of a parked car suddenly opened",
+           "the passenger door of a parked SUV was opened", "the rear passenger door of a stopped rideshare vehicle "
+           "opened"),
+          lambda sk: ([o.category for o in sk.obstacles], [p.category for p in sk.npcs], sk.collision.with_),
+          (["door"], [], "obs1")),
+    Probe("a summary's ride and the telling's rider (or the reverse) are one party",
+          "{w}",
+          tuple(f"On May 1, 2024 at 4:12 PM PT a Waymo Autonomous Vehicle operating in San Francisco was in a collision "
+                f"involving {a}. The Waymo AV was stopped in traffic on eastbound Market Street. {b} then approached "
+                f"from behind and made contact with the rear passenger side corner of the Waymo AV."
+                for a, b in (("a motorcycle", "A motorcyclist"), ("a motorcyclist", "A motorcycle"),
+                             ("a bicycle", "A cyclist"), ("a bicyclist", "A bicycle"), ("a cyclist", "A bicyclist"),
+                             ("a scooter", "A scooter rider"), ("a pedestrian", "A man"),
+                             ("a motorbike", "A motorcyclist"), ("a moped", "A motorcyclist"))),
+          lambda sk: (len(sk.npcs), sk.collision.with_), (1, "npc1")),
+    Probe("what 'the other vehicle' struck after the AV is a third vehicle, not the other vehicle",
+          "A Zoox vehicle was proceeding northbound on Koval Lane when a passenger vehicle in the right adjacent lane "
+          "swerved into the Zoox vehicle's lane and made contact with its right side. {W}",
+          ("the other vehicle also made contact with the vehicle in front of them after contacting the Zoox vehicle.",
+           "the other vehicle also struck the car ahead of it.", "the other vehicle collided with the vehicle "
+           "in front of it.", "the other car also hit the sedan ahead of it."),
+          lambda sk: (len(sk.npcs), sk.collision.with_), (2, "npc1")),
+    Probe("a vehicle that struck the object before the story takes no part",
+          "A Waymo AV was traveling eastbound on Mission Street when it made contact with {w} and was lying in the "
+          "roadway.",
+          ("a small dog that had apparently been previously struck by a preceding vehicle", "a deer that had been "
+           "struck by another vehicle", "a cat that had been hit by a passing car", "a dog which had earlier been "
+           "struck by an unknown vehicle"),
+          lambda sk: ([o.category for o in sk.obstacles], len(sk.npcs), sk.collision.with_), (["animal"], 0, "obs1")),
+    Probe("a road-works machine is a truck",
+          "A Waymo AV was stopped in a construction zone on Mission Street. {W} passing the Waymo AV made contact with "
+          "its rear passenger side.",
+          ("an asphalt roller vehicle", "an asphalt roller", "a road roller", "a steamroller", "a front-end loader",
+           "a motor grader", "a construction vehicle", "a skid steer", "a paving machine", "an asphalt paver",
+           "a crane"),
+          lambda sk: [p.category for p in sk.npcs], ["truck"]),
+    Probe("a truck's cab is part of the truck, no taxi",
+          "An Aurora truck was traveling in the rightmost lane on Interstate 45 when a semi-truck in the adjacent left "
+          "lane changed lanes to the right and made contact with {w}.",
+          ("the driver side of the Aurora truck cab", "the Aurora truck's cab", "the left side of the Aurora truck's "
+           "cab", "the driver side of the cab of the Aurora truck"),
+          lambda sk: [p.category for p in sk.npcs], ["truck"]),
 )
 
 

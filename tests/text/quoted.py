@@ -1,7 +1,8 @@
 """Real collision narratives quoted by the extraction tests, one place for all of them: report id -> (source,
 narrative), the narrative as the studyable set gives it (tests/text/csvr/study2.jsonl, tests/text/sgo/study3.jsonl,
-tests/text/sgo4/study4.jsonl, tests/text/sgo5/study5.jsonl, ../shared/data/reports/dev.jsonl with the dev gold)
-and its source beside it; `test_quoted` holds them to the studyable sets, word for word."""
+tests/text/sgo4/study4.jsonl, tests/text/sgo5/study5.jsonl, tests/text/sgo6/study6.jsonl (its W half),
+../shared/data/reports/dev.jsonl with the dev gold) and its source beside it; `test_quoted` holds them to the
+studyable sets, word for word."""
 
 from __future__ import annotations
 
@@ -2447,6 +2448,110 @@ QUOTED: dict[str, tuple[str, str]] = {
         'e contact with the SUV. At the time of the impact, the Waymo AV’s Level 4 ADS was not engaged and a test drive'
         'r (in the driver’s seating position) was operating the Waymo AV in manual mode. The Waymo AV sustained damage '
         'to its front driver side fender and the SUV sustained damage to its front passenger side fender.'),
+    'nhtsa-sgo-ads-30270-7639-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-7639, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2024 at 4:12 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, Califo'
+        'rnia was in a collision involving a motorcycle on [XXX] at [XXX]. The Waymo AV was stopped in traffic in '
+        'the leftmost lane on eastbound [XXX] approaching the intersection with [XXX]. A motorcyclist then approac'
+        'hed from behind the stopped Waymo AV, lane splitting between the Waymo AVs lane and the rightmost lane. A'
+        's the motorcyclist passed, the motorcycle made contact with the rear passenger side corner of the Waymo A'
+        'V. At the time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The Waymo AV sust'
+        'ained damage and the motorcyclist left the scene. Waymo is reporting this crash under Request No. 1 of St'
+        'anding General Order 2021-01 because a vulnerable road user was involved. Waymo may supplement or correct'
+        ' its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30610-4814-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-4814, vers'
+        'ion 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'A Zoox vehicle was proceeding northbound on [XXX]. towards [XXX]. when a passenger vehicle in the right a'
+        'djacent lane swerved into the Zoox vehicles lane and made contact with the right passenger side door. The'
+        ' other vehicle also made contact with the vehicle in front of them after contacting the Zoox vehicle. The'
+        're were no injuries reported at that time and police were not called. Zoox is submitting this updated rep'
+        'ort to include new information of a claim dated [XXX], 2023, including unspecified "personal injury." Thi'
+        's update provides complete information to date for this incident.'),
+    'nhtsa-sgo-ads-30413-9109-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30413-9109, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'The May Mobility vehicle was at a designated pick up location waiting for a passenger to get on board. Be'
+        'cause of an unprotected turn required to get to the stop, the autonomous vehicle operator took over manua'
+        'lly. As the vehicle waited parked at the stop, a car in a parking space in front of the stop backed up in'
+        'to the May vehicle at 2mph. This impact occurs 25 seconds after last being in autonomous mode.'),
+    'nhtsa-sgo-ads-30270-6337-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6337, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2023 at 3:36 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Mesa, Arizona wa'
+        's in a collision involving a pickup truck on [XXX] at [XXX]. The Waymo AV was stationary adjacent to the '
+        'curb on the West side of [XXX]. A pickup truck approached the Waymo from behind and slowed to a stop imme'
+        'diately behind the Waymo. The pickup truck then moved slowly forward until the front of the pickup truck '
+        'was touching the rear of the Waymo AV. The pickup truck then slowly pushed into the rear of the Waymo AV '
+        'for a few seconds before reversing, maneuvering around the Waymo AV, and leaving the scene. At the time o'
+        "f the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. W"
+        'aymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-669-1762-v3': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 669-1762, versio'
+        'n 3, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        "HMA was informed of this incident during a discussion with NHTSA's ODI on November [XXX], 2021. According"
+        ' to the information provided, a 2021 Kona EV was being operated by a non-production SAE Level 4 ADAS in a'
+        'n unknown mode when the Level 4 system experienced a communication error, switched to an auxiliary backup'
+        ' system, resulting in the vehicle crashing into a road sign/ pole. The vehicle was undrivable post-crash.'
+        ' No injuries were reported. Hyundai notes that the subject vehicle was produced and sold with SAE Level 1'
+        ' and below ADAS only. Hyundai also notes that it has not collaborated with Pony.ai since February 2020. 1'
+        '1/[XXX]/2021: No new updates available. 12/[XXX]/2021: No new updates available.'),
+    'nhtsa-sgo-ads-30610-2151-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30610-2151, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        "A Zoox vehicle was traveling through a hotel loading zone, when the driver's side door of a stopped passe"
+        'nger vehicle in the right adjacent lane opened, and made contact with the front right sensor of the Zoox '
+        'vehicle. There were no injuries and the police were not called. Autonomy was engaged in the 30 second per'
+        'iod prior to the collision.'),
+    'nhtsa-sgo-ads-30270-9177-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9177, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On October [XXX], 2024 at 10:12 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco,'
+        ' California was in a collision involving a domestic animal on [XXX] at [XXX]. The Waymo AV was traveling '
+        'eastbound on [XXX]. As it approached the intersection with [XXX], it made contact with a small dog that h'
+        'ad apparently been previously struck by a preceding vehicle and was laying in the roadway. At the time of'
+        " the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Waymo is reporting this crash und"
+        'er Request No. 2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with ad'
+        'ditional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9285-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9285, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On December [XXX], 2024 at 10:29 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco'
+        ', California was in a collision involving an asphalt roller vehicle on [XXX] near [XXX]. This section of '
+        '[XXX], between [XXX] and [XXX] was an active, open construction zone without lane markings where the road'
+        'way was being repaved. The Waymo AV had picked up a passenger on this section of road and was continuing '
+        'northbound on [XXX] when it came to a stop before the construction personnel that were working within the'
+        ' roadway. While the Waymo AV remained stationary, an asphalt roller vehicle passed the Waymo AV multiple '
+        'times. On one such pass while the asphalt roller was reversing, the rear driver side of the asphalt rolle'
+        'r vehicle made contact with the rear passenger side of the stationary Waymo AV. At the time of the impact'
+        ", the Waymo AV's Level 4 ADS was engaged in autonomous mode. The Waymo AV sustained damage. Waymo is repo"
+        'rting this crash under Request No. 1 of Standing General Order 2021-01 because a vulnerable road user inf'
+        'luenced the driving task of a vehicle involved. Waymo may supplement or correct its reporting with additi'
+        'onal information as it may become available.'),
+    'nhtsa-sgo-ads-30531-2902-v2': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30531-2902, vers'
+        'ion 2, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'Other than noting that the vehicle that struck the Waymo AV had encountered tire debris in its lane, the '
+        'content of this report is unchanged from the initial report submitted on May [XXX], 2022 [Report ID # 305'
+        '31-[XXX]-1] On May [XXX], 2022 at 3:11 PM PST a Waymo Autonomous Vehicle (Waymo AV) Peterbilt Class 8 sem'
+        'i-truck and trailer, operating in Ennis, Texas was in a collision involving a Class 8 semi-truck and trai'
+        'ler on northbound [XXX] near [XXX]. The Waymo AV was traveling in autonomous mode in the rightmost lane o'
+        'n Interstate [XXX] when a Class 8 semi-truck and trailer began to pass it in the adjacent left lane. Befo'
+        're the adjacent Class 8 semi-truck and trailer had fully passed the Waymo AV, it executed a right lane ch'
+        'ange and its trailer (the right side, rear section) entered the lane in which the Waymo AV was traveling '
+        'and made contact with the driver side of the Waymo AV cab. The Waymo AV transitioned to manual mode and t'
+        'he test driver took control. The Waymo AV exited the roadway to the right shoulder of the road and came t'
+        "o a stop off of the roadway. At the time of the impact, the Waymo AV's ADS was engaged in autonomous mode"
+        ", and a test driver was present (in the driver's seating position). The Waymo AV sustained moderate damag"
+        'e and the third-party Class 8 semi-truck and trailer did not stop to exchange information. The Waymo AV t'
+        'est driver was transported for medical care and the Waymo AV software operator, seated in the passenger s'
+        'eat, later sought medical attention. Transdev Alternative Services is reporting this crash under Request '
+        'No. 1 of Standing General Order 2021-01 because an individual involved in the crash was transported from '
+        'the scene to a hospital for medical treatment and a vehicle involved was towed away. Transdev may supplem'
+        'ent or correct its reporting with additional information as it may become available. This report is ident'
+        'ical to WaymoLLC-202205[XXX]-0 (rev.202205[XXX]603622)'),
 }
 
 

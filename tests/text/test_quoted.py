@@ -30,6 +30,7 @@ def test_every_quote_is_a_studyable_narrative_word_for_word() -> None:
     studyable.update(_texts(HERE / "sgo" / "study3.jsonl"))
     studyable.update(_texts(HERE / "sgo4" / "study4.jsonl"))
     studyable.update(_texts(HERE / "sgo5" / "study5.jsonl"))
+    studyable.update(_texts(HERE / "sgo6" / "study6.jsonl"))
     assert len(QUOTED) >= 100
     for rid, (source, text) in QUOTED.items():
         assert rid in studyable, rid

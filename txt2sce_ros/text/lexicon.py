@@ -126,6 +126,13 @@ PARTY_HEADS: dict[str, str] = {
     "vespa": "motorcycle", "worker": "pedestrian", "construction worker": "pedestrian", "flagger": "pedestrian",
     "crossing guard": "pedestrian", "teenager": "pedestrian", "teen": "pedestrian", "passerby": "pedestrian",
     "boy": "pedestrian", "girl": "pedestrian",
+    # self-propelled road-works machines, driven in the lane as trucks are ("an asphalt roller vehicle passed the
+    # Waymo AV", "a front-end loader"); not a bare "roller" ("roller skates")
+    "asphalt roller": "truck", "road roller": "truck", "steamroller": "truck", "steam roller": "truck",
+    "paver": "truck", "asphalt paver": "truck", "paving machine": "truck", "grader": "truck", "motor grader": "truck",
+    "loader": "truck", "front loader": "truck", "front-end loader": "truck", "wheel loader": "truck",
+    "skid steer": "truck", "skid-steer": "truck", "crane": "truck", "compactor": "truck",
+    "construction vehicle": "truck",
     # the AV industry's word for another road user ("the agent behind did not come to a stop and made contact")
     "agent": "car",
     # the NHTSA SGO form's role names for the other party, which narratives copy: "the Crash Partner (CP)", "the
@@ -221,12 +228,17 @@ CONTACT = compile_gated(
     r"drove\s+over|run\s+over|rolled\s+into|backed\s+into|reversed\s+into|swiped|tapped|grazed|scratched|nicked|"
     r"dinged|dented|"
     # (into the path, the street or traffic is where one went, not what one struck: "walked into the path of EGO")
-    r"(?:rode|crashed|ran|drove|plowed|ploughed|slammed|smashed|knocked|cycled|walked|coasted)\s+into(?!\s+(?:the\s+|its\s+|"
+    r"(?:rode|crashed|crashing|crashes|ran|running|drove|plowed|ploughed|plowing|slammed|slamming|smashed|smashing|"
+    r"knocked|cycled|walked|coasted)\s+into(?!\s+(?:the\s+|its\s+|"
     r"EGO's\s+)?(?:path|street|road|roadway|crosswalk|intersection|traffic|lane|travel\s+lane)\b)|"
     r"made\s+(?:an\s+)?impact\s+with|rubbed\s+(?:against|along)|"
     # a move that ends in a part of the AV: "reversed at a low speed from an adjacent driveway into the right rear
     # bumper of EGO", "jumped onto the hood of EGO"
-    r"(?:reversed|backed|rolled|drifted|veered|swerved|drove|moved)(?=[^.;]{0,60}?\binto\s+(?:(?:the\s+)?(?:[\w-]+\s+){0,3}"
+    # ("slowly pushed into the rear of EGO", "crept forward into its rear bumper"; not "pulled into the space in front
+    # of EGO", a place)
+    r"(?:reversed|reversing|backed|backing|rolled|rolling|drifted|drifting|veered|swerved|drove|moved|"
+    r"pushed|pushing|crept|creeping|inched|inching|slid|sliding|crashed|crashing)"
+    r"(?=[^.;]{0,60}?\binto\s+(?:(?:the\s+)?(?:[\w-]+\s+){0,3}"
     r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\s+of\s+EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
     r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\b))|"
     r"(?:jumped|climbed|leaped|leapt|landed)\s+(?:up\s+)?onto\s+(?:the\s+)?(?:hood|roof|windshield|bumper|trunk)\s+of\s+EGO|"
@@ -239,7 +251,12 @@ CONTACT = compile_gated(
     r"quarter|panel)\s+){1,4}of\s+EGO|(?:swerved|veered)\s+into\s+EGO(?!'s)|"
     # any move that ends in the AV itself ("The Infiniti Q60 spun after contact and continued into the Cruise AV")
     r"(?:proceeded|continued|spun|skidded|slid|careened|moved|went|came|traveled|travelled|drifted|lurched|"
-    r"accelerated|rolled|backed|reversed)\s+(?:forward\s+|backward\s+|back\s+)?into\s+EGO\b(?!'s)|"
+    # ("backed up into EGO", "slowly pushed into EGO", "rolling back into EGO")
+    r"accelerated|rolled|backed|reversed|backing|reversing|rolling|pushed|pushing|crept|creeping|inched|pulled)\s+"
+    r"(?:\w+ly\s+)?(?:forward\s+|backward\s+|backwards\s+|back\s+|up\s+)?into\s+EGO\b(?!'s)|"
+    # parts touching at the contact ("until the front of the pickup truck was touching the rear of the Waymo AV")
+    r"(?:was|were|is|are)\s+touching(?=\s+(?:the\s+)?(?:[\w-]+\s+){0,3}(?:bumper|side|door|fender|corner|rear|front)"
+    r"\s+of\s+EGO\b|\s+EGO\b)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
     r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs)|"
     # a contact told as an event ("a minor contact with the parked car's mirror occurs")

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from . import fastre as fre
 from .fastre import compile_gated
-from .lexicon import (COMPANY_ALTERNATION, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
+from .lexicon import (COMPANY_ALTERNATION, CONTACT, EGO_DRIVER, EGO_PATTERNS, GROUP_HEADS, MAKES, OBSTACLE_HEADS,
                       PARKED_WORDS, PARTY_HEADS, VAN_MODELS, ego_patterns)
 
 _QUOTE_PAIRS = (("“", '"'), ("”", '"'), ("‘", "'"), ("’", "'"), ("–", "-"), ("—", "-"), ("\u00a0", " "))
@@ -272,6 +272,9 @@ _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled
                               r"\bpick-?up\s+(?:location|zone|spot|point|area|lane)\b|"
                               # "a pick-up and drop-off zone", "passenger drop-off/pick-up"
                               r"\bpick-?ups?\s*(?:and|or|/|&)\s*drop-?offs?\b|\bdrop-?offs?\s*(?:and|or|/|&)\s*pick-?ups?\b",
+                              re.I)
+_CAB_OF = compile_gated(r"(?:\bEGO|\btruck|\btractor|\bsemi|\brig|\btrailer|\blorry)(?:'s)?\s+$", re.I)
+_CAB_OF_AFTER = compile_gated(r"\s+of\s+(?:(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}?)?(?:EGO|truck|tractor|semi|rig|lorry)\b",
                               re.I)
 _CHAIN_OF = compile_gated(r"^\s*(?:reactions?|collisions?|crash(?:es)?|of\s+events)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
@@ -619,6 +622,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 continue
             if head[0].islower() and hl in _WORD_MODELS:
                 continue  # "a truck-mounted light matrix", "in accord with": the word, not the car model
+            if hl == "cab" and (_CAB_OF.search(s, max(0, m.start() - 24), m.start()) or _CAB_OF_AFTER.match(after)):
+                continue  # "the driver side of the Waymo AV cab", "the cab of the truck": a truck's cab, no taxi
             if hl == "chain" and _CHAIN_OF.match(after):
                 continue  # "a chain reaction", "a chain of events": no object
             if hl in ("pickup", "pick-up") and _RIDER_PICKUP.search(s[max(0, m.start() - 30):m.end() + 30]):
@@ -665,8 +670,8 @@ def find_mentions(sent_idx: int, s: str) -> list[Mention]:
                 out[-1].head in MAKES and (fre.fullmatch(r"\s+(?:[A-Za-z]*\d[\w-]*|[A-Z]{1,4})(?:\s+[\w-]+)?\s+", gap)
                                            or fre.fullmatch(r"\s+(?:[A-Z][a-z][\w-]*\s+){1,2}", gap)))):
             prev = out.pop()
-            if prev.category == "van" and cat == "car":
-                cat = "van"
+            if prev.category == "van" and cat == "car" or hl in _GENERIC and cat == "car":
+                cat = prev.category  # "a Toyota Sienna car", "an asphalt roller vehicle": the kind named first
             det, mod_text = prev.det, (prev.mods + " " + prev.head).strip()
             start = prev.start
         elif out and out[-1].kind == "obstacle" and kind == "obstacle" and gap.strip() == "":
@@ -718,6 +723,9 @@ _LEFT_LYING = compile_gated(r"\s*,?\s*(?:(?:that|which)\s+(?:was|had\s+been)\s+)
                             r"resting\s+on|on\s+(?:its|the)\s+(?:side|ground)|knocked\s+over|tipped\s+over)\b", re.I)
 #: A vehicle noun that names a toy or a model ("a remote controlled toy car", "an RC truck").
 _TOY = compile_gated(r"\b(?:toy|remote[- ]controlled|remote[- ]control|rc)\b", re.I)
+#: Kinds of party a summary and the telling name by the rider or the ride ("a collision involving a motorcycle ... A
+#: motorcyclist then approached", "involving a pedestrian ... a man stepped off the curb"): one party, whatever noun.
+_RIDER_KINDS = frozenset({"motorcycle", "bicycle", "scooter", "pedestrian"})
 _RIDES = ("scooter", "bicycle", "bike", "motorcycle", "skateboard", "e-scooter", "e-bike", "moped", "motorbike",
           "motor scooter", "motorscooter", "dirt bike", "tricycle", "trike", "unicycle", "hoverboard", "segway",
           "onewheel", "wheelchair", "mobility scooter")
@@ -767,6 +775,16 @@ def _compatible(e: Entity, m: Mention, *, placed_ahead: bool = False) -> bool:
 _ANOTHER_BEFORE = compile_gated(r"\banother\s*$", re.I)
 
 
+_FIRST_OF_PAIR = compile_gated(r"\bfirst\b", re.I)
+
+
+def _the_other_party(s: str, m: Mention) -> bool:
+    """Is mention `m` of sentence `s` "the other vehicle", the party besides the AV ("The other vehicle also made
+    contact with the vehicle in front of them")? Not the second of a pair the sentence opens with "the first" ("The
+    first Waymo AV was preparing to make a right turn, while yielding to the other car": another AV)."""
+    return m.mods.split()[:1] == ["other"] and not _FIRST_OF_PAIR.search(s, 0, m.start)
+
+
 def _another(s: str, m: Mention) -> bool:
     """Is mention `m` of sentence `s` introduced as a party other than one named before ("another vehicle", "a
     second passenger car", "a third car")?"""
@@ -781,6 +799,22 @@ def _names_part_of(head: str, e: Entity) -> bool:
     """Is `head` one word of a longer name the entity was given ("truck" of "pick-up truck", "pickup" of "pickup
     truck")? Such a noun names the same party, whose category stays the longer name's (a pickup is a car)."""
     return any(head != h and head in h.replace("-", " ").split() for h in e.heads)
+
+
+_MOTOR = frozenset({"car", "van", "truck", "bus"})
+# (a "then" between tells a next event, whose "the vehicle" may be the AV again: "the SUV then struck the vehicle")
+_CLAUSE_GAP = compile_gated(r"[,;()]|\b(?:when|while|as|and|but|then|before|after|until|because|which|that|who)\b", re.I)
+
+
+def _struck_by(e: Entity, m: Mention, sents: list[str]) -> bool:
+    """Is the vehicle named by `m` what vehicle `e`, the subject of the same clause, made contact with ("The other
+    vehicle also made contact with the vehicle in front of them")? A clause's object is not its subject (English
+    would say "itself"), however loosely the noun fits."""
+    if e.category not in _MOTOR or m.category not in _MOTOR:
+        return False
+    s = sents[m.sent]
+    return any(x.sent == m.sent and x.subject and x.end <= m.start and CONTACT.search(s, x.end, m.start) and
+               not _CLAUSE_GAP.search(s, x.end, m.start) for x in e.mentions)
 
 
 def _between(sents: list[str], a: Mention, b: Mention) -> str:
@@ -888,7 +922,9 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 # meant, before any other party a looser noun fits ("its lead vehicle" named in between)
                 recent.sort(key=lambda e: m.head not in e.heads)
             for e in recent:
-                if m.head in _GENERIC and m.sent not in summary_sents and \
+                if _struck_by(e, m, sents):
+                    continue  # "The other vehicle also made contact with the vehicle in front of them": another
+                if m.head in _GENERIC and m.sent not in summary_sents and not _the_other_party(sents[m.sent], m) and \
                         all(x.sent in summary_sents for x in e.mentions) and \
                         (m.head not in e.heads or m.head in _BARE) and \
                         not (m.head in e.heads and m.subject and
@@ -897,7 +933,7 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                     # passenger vehicle" after "a collision involving a passenger vehicle" does, and so does "the
                     # vehicle" after "a collision involving a vehicle" as the subject of a sentence that names the AV
                     # after it ("the vehicle approached the Waymo AV from behind"; not "the test driver transitioned
-                    # the vehicle to manual mode").
+                    # the vehicle to manual mode"). "The other vehicle" names the party told before, not the AV.
                     continue
                 if _compatible(e, m, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
                     target = e
@@ -912,7 +948,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and \
                         not _another(sents[m.sent], m) and (
                         m.head in e.heads or (e.kind == m.kind and e.category == m.category and (
-                            m.head in _GENERIC or all(h in _GENERIC for h in e.heads)))):
+                            m.head in _GENERIC or all(h in _GENERIC for h in e.heads) or
+                            m.category in _RIDER_KINDS))):
                     target = e
                     break
         if target is None and m.det != "a" and m.kind == "party" and m.head in _GENERIC and \

@@ -53,7 +53,10 @@ BOILERPLATE = compile_gated(r"\bis\s+reporting\s+this\s+crash\b|\bmay\s+suppleme
 
 
 _DOOR = compile_gated(r"\bopen(?:ed|ing|s)?\s+(?:[\w'-]+\s+){0,4}?doors?\b|\bdoors?\s+(?:was\s+|were\s+)?(?:opened|open)"
-                   r"\b|\bdooring\b|\bdoors?\b[^.]{0,40}?\b(?:swung|flew|popped|came)\s+open\b", re.I)
+                   r"\b|\bdooring\b|\bdoors?\b[^.]{0,40}?\b(?:swung|flew|popped|came)\s+open\b|"
+                   # the owner named between the door and its opening ("the driver's side door of a stopped passenger
+                   # vehicle in the right adjacent lane opened")
+                   r"\bdoors?\s+of\s+(?:a|an|the)\s+[^.;,]{0,70}?\b(?:was\s+|were\s+)?(?:opened|open)\b", re.I)
 # The AV's own door is no obstacle (sketch.md: "a door opened into the AV's path"): "the Waymo AV passenger opened the
 # driver side rear door", "the open rear door of the Waymo AV", "EGO's open rear door".
 _AV_DOOR_BEFORE = compile_gated(r"(?:\bEGO(?:'s)?\s+(?:(?:rear|front|back)\s+)?(?:passengers?|riders?|occupants?|"
@@ -151,6 +154,24 @@ def summary_sentences(sents: list[str]) -> set[int]:
 # were hit by the vehicle"): no contact.
 _BELIEVED = compile_gated(r"\b(?:believed|believing|thought|thinking|assumed|assuming|suspected|presumed)\s+(?:that\s+)?"
                           r"(?:\w+\s+){0,4}$", re.I)
+# A relative clause in the pluperfect passive tells what had happened to the thing it describes before the story
+# ("made contact with a small dog that had apparently been previously struck by a preceding vehicle"): an earlier
+# event between others, no contact of the AV's.
+_EARLIER_ADV = r"(?:(?:\w+ly|earlier|already|just|once|also)\s+){0,2}"
+_EARLIER_PASSIVE = compile_gated(rf"\b(?:that|which|who)\s+(?:had|has|have)\s+{_EARLIER_ADV}been\s+{_EARLIER_ADV}$", re.I)
+
+
+# ... and its agent ("struck by a preceding vehicle") took part in that earlier event only.
+_EARLIER_AGENT = compile_gated(rf"\b(?:that|which|who)\s+(?:had|has|have)\s+{_EARLIER_ADV}been\s+{_EARLIER_ADV}"
+                               r"\w+\s+by\s+(?:a|an|the|another)?\s*$", re.I)
+
+
+def _antecedent(ments: list[Mention], pos: int) -> str | None:
+    """The kind of the last mention before offset `pos` (what a relative clause there describes)."""
+    before = [x for x in ments if x.end <= pos]
+    return before[-1].kind if before else None
+
+
 _PART_OF_BEFORE = compile_gated(r"\b(?:edge|side|end|corner|front|rear|part|portion|piece|arm|top|bottom)\s+of\s+"
                                 r"(?:the|a|an|its)\s+$", re.I)
 _CLAUSE_END = compile_gated(r"[,;.]|\b(?:and|when|while|as|then|before|after|but)\b", re.I)
@@ -224,6 +245,9 @@ def find_contact(d: Doc) -> None:
                 continue
             if _BELIEVED.search(s, max(0, m.start() - 50), m.start()):
                 continue  # "believed they had run over a rock": what the driver thought, not what happened
+            if _EARLIER_PASSIVE.search(s, max(0, m.start() - 60), m.start()) and \
+                    _antecedent(ments, m.start()) not in ("ego", "egod"):
+                continue  # "a small dog that had apparently been previously struck by a preceding vehicle"
             if _between_others(d, i, m):
                 met_by_others.append((i, m))
                 continue  # "it maneuvered to the left, and the driver side made contact with the median curb"
@@ -541,6 +565,9 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                 not PARKED_WORDS.search(" ".join(m.mods for m in e.mentions)) and \
                 not any(a.who == e.idx for a in d.acts) and _only_travelled_behind(d, e):
             continue  # "EGO was traveling ... behind a box truck": where the AV was, named in passing (sketch.md)
+        if not is_partner and e.idx not in d.struck and first_detail and not moved and all(
+                _EARLIER_AGENT.search(d.sents[m.sent], max(0, m.start - 90), m.start) for m in first_detail):
+            continue  # "a small dog that had apparently been previously struck by a preceding vehicle": before the story
         if not is_partner and e.idx not in d.struck and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
