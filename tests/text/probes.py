@@ -3784,6 +3784,18 @@ PROBES: tuple[Probe, ...] = (
           ("the driver side of the Aurora truck cab", "the Aurora truck's cab", "the left side of the Aurora truck's "
            "cab", "the driver side of the cab of the Aurora truck"),
           lambda sk: [p.category for p in sk.npcs], ["truck"]),
+    Probe("a thing the AV struck that no word list names is an object ('other'), no empty report",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it {w}.",
+          ("made contact with a vending machine", "struck a carport", "made contact with a hedge", "struck an EV "
+           "charger", "made contact with a gas pump", "hit a kiosk", "struck a statue", "collided with a "
+           "scaffold", "made contact with a set of tire spikes at the exit", "struck the awning of a building"),
+          lambda sk: (len(sk.obstacles), sk.npcs, sk.collision.with_, sk.collision.type, sk.missing),
+          (1, (), "obs1", "hit_object", ())),
+    Probe("the ground the AV met is still contact with nothing",
+          "A Zoox vehicle was traveling northbound on Koval Lane when it {w}.",
+          ("struck the pavement", "ran over a pothole", "made contact with the raised pavement", "made contact with "
+           "a speed bump", "scraped the road surface", "made contact with the ground"),
+          lambda sk: (sk.obstacles, sk.npcs, sk.collision.with_, "npcs" in sk.missing), ((), (), None, True)),
 )
 
 

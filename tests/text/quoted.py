@@ -2552,6 +2552,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         'the scene to a hospital for medical treatment and a vehicle involved was towed away. Transdev may supplem'
         'ent or correct its reporting with additional information as it may become available. This report is ident'
         'ical to WaymoLLC-202205[XXX]-0 (rev.202205[XXX]603622)'),
+    'nhtsa-sgo-ads-30270-5611-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5611, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On May [XXX], 2023 at 5:54 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, Arizona made'
+        ' contact with an asphalt speed bump in a parking lot at [XXX]. The Waymo AV entered the parking lot and t'
+        'he Waymo AVs undercarriage then made contact with a speed bump (the AV did not contact any vehicle or oth'
+        'er road user). At the time of the contact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. The '
+        'Waymo AV sustained undercarriage damage. Waymo is reporting this crash under Request No. 1 of the Second '
+        'Amended Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or'
+        ' correct its reporting with additional information as it may become available.'),
 }
 
 

@@ -6,7 +6,7 @@ test per reading; each asserts what the set's gold gives and fails without the r
 
 from __future__ import annotations
 
-from .quoted import quoted_sketch as _read
+from .quoted import QUOTED, quoted_sketch as _read
 
 
 def test_a_summary_s_ride_and_the_telling_s_rider_are_one_party() -> None:
@@ -66,3 +66,16 @@ def test_a_road_works_machine_is_a_truck() -> None:
 def test_a_truck_s_cab_is_no_taxi() -> None:
     # "made contact with the driver side of the Waymo AV cab" (study6 nhtsa-sgo-ads-30531-2902-v2; gold: one truck).
     assert [p.category for p in _read("nhtsa-sgo-ads-30531-2902-v2").npcs] == ["truck"]
+
+
+def test_a_thing_struck_that_no_word_list_names_is_an_object() -> None:
+    # study6 nhtsa-sgo-ads-669-1762-v3 ("resulting in the vehicle crashing into a road sign/ pole") with the thing
+    # struck named by a word no list holds: it is still the thing struck, an object "other", and the report is no
+    # empty one (sketch.md: `npcs` is missing only when no party and no object is described).
+    rid = "nhtsa-sgo-ads-669-1762-v3"
+    sk = _read(rid, QUOTED[rid][1].replace("a road sign/ pole", "a carport"))
+    assert ([o.category for o in sk.obstacles], sk.collision.with_, "npcs" in sk.missing) == (["other"], "obs1", False)
+    # The ground met stays contact with nothing: "the Waymo AVs undercarriage then made contact with a speed bump"
+    # (study5 nhtsa-sgo-ads-30270-5611-v1; gold: no object, `missing` npcs).
+    sk = _read("nhtsa-sgo-ads-30270-5611-v1")
+    assert (sk.obstacles, sk.collision.with_, "npcs" in sk.missing) == ((), None, True)

@@ -325,6 +325,8 @@ def find_contact(d: Doc) -> None:
         # conflict is the first contact; the move told next ("then") begins what came after.
         chosen = first
     d.contact_sent, d.contact_pos, d.partner = chosen
+    if d.partner is None:
+        d.partner = _unnamed_thing(d)
     for i, m in met_by_others:
         _pushed_on(d, i, m)
     while d.partner is not None and d.ents[d.partner].merged_into is not None:
@@ -348,6 +350,52 @@ def find_contact(d: Doc) -> None:
                 d.struck.add(ms[k].entity)
             else:
                 break
+
+
+# The thing the AV struck named by a noun no word list holds ("struck a house", "made contact with a set of tire
+# spikes at the exit of the lot"): the noun phrase right after the AV's contact verb, up to a preposition or a clause
+# word; a noun of a group ("a set of") gives way to the noun after it.
+_STRUCK_NOUN = compile_gated(r"\s*(?:with\s+|into\s+|against\s+|onto\s+|upon\s+)?(?:a|an|the|some|several)\s+"
+                             r"(?:(?:set|row|pair|piece|section|line|strip|series|number|couple)\s+of\s+(?:the\s+)?)?"
+                             r"(?:[a-z][\w-]*\s+){0,3}?([a-z][\w-]*)(?=\s*(?:[,;.()]|$|\b(?:at|on|in|near|that|which|"
+                             r"while|when|as|and|before|after|of|to|from|along|beside|next|by|with|causing|resulting|"
+                             r"located|mounted|installed|placed|positioned)\b))", re.I)
+# ... but not a part of the AV or of a vehicle, the ground it scraped, or a word that names no thing
+_NOT_A_THING = compile_gated(r"(?:rear|front|back|side|sides|corner|bumper|fender|door|mirror|hood|panel|wheel|tire|"
+                             r"tyre|undercarriage|underside|underbody|roof|trunk|sensor|portion|part|area|end|edge|"
+                             r"top|bottom|left|right|way|time|speed|rate|manner|amount|moment|point|distance|impact|"
+                             r"contact|collision|damage|lane|road|roadway|street|intersection|lot|driveway|EGO|EGOD|"
+                             r"it|itself|them|something|nothing|anything|object|thing|one|"
+                             # the ground's own shapes (sketch.md: scraped pavement, a driveway lip, is no obstacle)
+                             r"apron|lip|gutter|grade|slope|incline|hump|bump|dip|crown|seam|joint|crack|asphalt|"
+                             r"concrete|surface|ground|gravel|dirt|pavement|ramp|hill|transition|swale)$|"
+                             r".*ly$", re.I)
+
+
+def _unnamed_thing(d: Doc) -> int | None:
+    """An obstacle ("other") for what the AV's own contact verb met, when no party or object word named it: the
+    thing struck is in the story, so the report is no empty one (sketch.md: `npcs` is missing only when no party and
+    no object is described). Pavement, a pothole, a speed bump stay contact with nothing."""
+    i, pos = d.contact_sent, d.contact_pos
+    if i is None:
+        return None
+    s = d.sents[i]
+    verb = CONTACT.match(s, pos)
+    if verb is None or _CONTACT_NOTHING.search(s):
+        return None
+    near = [x for x in d.ments[i] if x.end <= pos and pos - x.end <= 12]
+    if who_for(pos, d.ments[i], None, s) != -1 and not (near and near[-1].kind in ("ego", "egod")):
+        return None  # (the AV the doer: its clause's subject, or named right before the verb, "resulting in EGO crashing")
+    m = _STRUCK_NOUN.match(s, verb.end())
+    if m is None or _NOT_A_THING.fullmatch(m.group(1)):
+        return None
+    idx = len(d.ents)
+    ment = Mention(sent=i, start=m.start(1), end=m.end(1), kind="obstacle", head=m.group(1).lower(), category="other",
+                   det="a", mods="", subject=False, entity=idx)
+    d.ents.append(Entity(idx=idx, kind="obstacle", category="other", heads={ment.head}, mentions=[ment]))
+    d.ments[i].append(ment)
+    d.ments[i].sort(key=lambda x: x.start)
+    return idx
 
 
 _THEN_BEFORE = compile_gated(r"\bthen\s+$", re.I)
