@@ -434,7 +434,10 @@ _INTENT = compile_gated(r"\b(?:to(?!\s+(?:its|his|her|their|our|my|EGO|a|an|the)
 # collision"), not a party followed.
 _EVENT_AFTER = compile_gated(r"\s+(?:a|an|the|its)\s+(?:[\w-]+\s+)?(?:drop|pick|collision|impact|contact|incident|crash|"
                              r"stop\b|turn\b|disengage)", re.I)
-_TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!to\b)[\w-]+,?\s+){1,3}$", re.I)
+# (from the turn's own article: "to the left made a right turn" strips "a ", not "the left made a ", which would
+# leave the "to" of a place read as an intention)
+_TURN_NOUN_PHRASE = compile_gated(r"\b(?:a|an|the|its|their)\s+(?:(?!(?:to|a|an|the|its|their)\b)[\w-]+,?\s+){0,3}$",
+                                  re.I)
 _TURN_NOUN = compile_gated(r"(?:(?:un)?protected\s+)?(?:turn\b(?!\s+from)|left\b|right\b|u-?\s?turn\b)", re.I)
 _APPROACHED = compile_gated(r"\bapproach(?:ed|ing|es)?\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)
 _FOR_MOVE = compile_gated(r"\bfor\s+(?:a|an|the|its)\s+(?:[\w-]+\s+){0,2}$", re.I)

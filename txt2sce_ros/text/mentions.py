@@ -483,6 +483,9 @@ def normalise(text: str) -> str:
             return "EGO"
         return f"{m.group(1)} {m.group(2)} car" if m.group(2) in others else m.group(0)
     t = _NAMED_BEFORE_EGO.sub(misspelt_or_other, t)
+    # "EGO, operating in autonomous mode, was traveling": the mode dropped (above) leaves an empty aside behind, which
+    # parts the AV's name from its verb; the AV's clause is told without it.
+    t = _EMPTY_AV_ASIDE.sub("EGO", t)
     if first_person:
         # First-person narratives ("our vehicle ... strikes our passenger rear bumper ... behind us"); "we" is the
         # AV where it drives ("we were stopped", "we proceeded"), not the company reporting ("we are reporting").
@@ -825,6 +828,11 @@ def _between(sents: list[str], a: Mention, b: Mention) -> str:
 # (not a verb made of a part: "EGO rear-ended the sedan", "EGO side-swiped the parked vehicle" are what it did)
 _EGO_BARE_POSSESSIVE = compile_gated(r"\bEGO(?=\s+(?:lane|path|front|rear|bumper|hood|door|mirror|sensor|roof|trunk|"
                                      r"fender|tire|wheel|side|direction)\b(?![- ]?(?:end(?:ed|ing|s)?|swip\w*)\b))")
+
+
+# What is left of an aside after the AV's name once its driving mode is dropped: "EGO, operating, was", "EGO,, was",
+# "EGO, which was, was".
+_EMPTY_AV_ASIDE = compile_gated(r"\bEGO\s*,\s*(?:(?:operating|driving|running)|(?:which|that)\s+(?:was|is))?\s*,(?=\s)")
 
 
 _OTHER_EGO = compile_gated(r"\b((?:a|an|the)\s+(?:second|other|third)|another)\s+EGO\b(?!'s)", re.I)
