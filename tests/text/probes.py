@@ -3796,6 +3796,13 @@ PROBES: tuple[Probe, ...] = (
           ("struck the pavement", "ran over a pothole", "made contact with the raised pavement", "made contact with "
            "a speed bump", "scraped the road surface", "made contact with the ground"),
           lambda sk: (sk.obstacles, sk.npcs, sk.collision.with_, "npcs" in sk.missing), ((), (), None, True)),
+    Probe("a thing thrown or flying at the AV: the collision is 'other', not hitting an object",
+          "A Zoox vehicle was traveling northbound on Koval Lane when {w}.",
+          ("its windshield was struck by a rock", "the front windshield was struck by an unknown object",
+           "debris thrown from an overpass struck the Zoox vehicle", "a piece of debris flew into the windshield of "
+           "the Zoox vehicle", "a nearby truck ran over road debris, which was projected onto the Zoox vehicle",
+           "a rock kicked up by a truck ahead struck its windshield"),
+          lambda sk: (sk.collision.with_[:3] if sk.collision.with_ else None, sk.collision.type), ("obs", "other")),
 )
 
 

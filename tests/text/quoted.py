@@ -2562,6 +2562,20 @@ QUOTED: dict[str, tuple[str, str]] = {
         'Waymo AV sustained undercarriage damage. Waymo is reporting this crash under Request No. 1 of the Second '
         'Amended Standing General Order 2021-01 because a vehicle involved was towed away. Waymo may supplement or'
         ' correct its reporting with additional information as it may become available.'),
+    'dmvca-apple-20221220-r411': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 411, column "Acci'
+        'dent Detail Description")',
+        'On December 20th, a test vehicle operating in manual driving mode was traveling Northbound on Highway 101'
+        ' in Belmont when a nearby Subaru Outback ran over road debris, which was projected onto the test vehicle.'
+        ' No injuries were reported and law enforcement was not called to the scene. The test vehicle sustained co'
+        'smetic damage to the right headlamp and hood.'),
+    'nhtsa-sgo-ads-30530-6125-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30530-6125, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At 09:35 AM CDT on July [XXX], 2023, an Aurora Class 8 truck was traveling southbound in autonomy mode on'
+        ' [XXX] near [XXX] when the front windshield was struck by an unknown object. The bottom of the windshield'
+        ' had a hole about 3 inches in diameter. The vehicle operator disengaged autonomy and pulled over. The veh'
+        'icle was able to be driven from the scene, and there were no reported injuries.'),
 }
 
 

@@ -275,7 +275,9 @@ def test_debris_thrown_onto_the_av_is_an_obstacle_it_touched() -> None:
             "a rock onto the AV, chipping its windshield.")
     sk = extract(text, "t")
     assert [o.category for o in sk.obstacles] == ["debris"]
-    assert sk.collision.with_ == "obs1" and sk.collision.type == "hit_object"
+    # (a thing thrown at the AV is no object the AV hit: the form's "other", as the studyable gold of
+    # dmvca-apple-20221220-r411 and nhtsa-sgo-ads-30530-6125-v1 gives it; tests/text/test_who_counts.py)
+    assert sk.collision.with_ == "obs1" and sk.collision.type == "other"
 
 
 @pytest.mark.parametrize(("text", "want"), [

@@ -79,3 +79,12 @@ def test_a_thing_struck_that_no_word_list_names_is_an_object() -> None:
     # (study5 nhtsa-sgo-ads-30270-5611-v1; gold: no object, `missing` npcs).
     sk = _read("nhtsa-sgo-ads-30270-5611-v1")
     assert (sk.obstacles, sk.collision.with_, "npcs" in sk.missing) == ((), None, True)
+
+
+def test_a_thing_thrown_at_the_av_is_no_object_hit() -> None:
+    # "a nearby Subaru Outback ran over road debris, which was projected onto the test vehicle" (dev_gold_study
+    # dmvca-apple-20221220-r411) and "the front windshield was struck by an unknown object" (study3
+    # nhtsa-sgo-ads-30530-6125-v1): the AV did not hit an object, a thing came at it (gold: collision type "other").
+    for rid in ("dmvca-apple-20221220-r411", "nhtsa-sgo-ads-30530-6125-v1"):
+        sk = _read(rid)
+        assert (sk.obstacles[0].category, sk.collision.with_, sk.collision.type) == ("debris", "obs1", "other"), rid

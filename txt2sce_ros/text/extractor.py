@@ -25,8 +25,8 @@ from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
                         prepend_modifier_acts, queued_behind, sequence, standing_party, stood_at_contact, wide_turn)
-from .story import (BOILERPLATE, body_side, context, Doc, add_doors, attach_towed, before_contact, counted,
-                    ego_contact_part, find_contact, heading, summary_sentences, thrower)
+from .story import (BOILERPLATE, body_side, came_at_av, context, Doc, add_doors, attach_towed, before_contact,
+                    counted, ego_contact_part, find_contact, heading, summary_sentences, thrower)
 
 
 #: The longest narrative read (characters). Real section-5 narratives run to ~3,500 characters; the extractor's
@@ -382,6 +382,9 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         partner = None
     party = next((n for n in npcs if n.id == with_id), None)
     ctype = collision_type(d, partner, party, bool(with_id and with_id.startswith("obs")), ego_actions)
+    if partner is not None and partner.kind == "obstacle" and partner.category in ("debris", "other") and \
+            came_at_av(d, partner):
+        ctype = "other"  # struck by a thing thrown or flying at the AV: the form's "other", not hitting an object
     if d.contact_sent is None and not npcs and not obstacles:
         ctype = "none"
     if not npcs and not obs:

@@ -237,10 +237,13 @@ CONTACT = compile_gated(
     # ("slowly pushed into the rear of EGO", "crept forward into its rear bumper"; not "pulled into the space in front
     # of EGO", a place)
     r"(?:reversed|reversing|backed|backing|rolled|rolling|drifted|drifting|veered|swerved|drove|moved|"
-    r"pushed|pushing|crept|creeping|inched|inching|slid|sliding|crashed|crashing)"
+    r"pushed|pushing|crept|creeping|inched|inching|slid|sliding|crashed|crashing|"
+    # (a thing flying at the AV: "a piece of debris flew into the windshield of EGO")
+    r"flew|fell|bounced|blew|landed)"
     r"(?=[^.;]{0,60}?\binto\s+(?:(?:the\s+)?(?:[\w-]+\s+){0,3}"
-    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\s+of\s+EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
-    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front)\b))|"
+    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front|windshield|windscreen|window|roof)\s+of\s+"
+    r"EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
+    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front|windshield|windscreen|window|roof)\b))|"
     r"(?:jumped|climbed|leaped|leapt|landed)\s+(?:up\s+)?onto\s+(?:the\s+)?(?:hood|roof|windshield|bumper|trunk)\s+of\s+EGO|"
     r"broadsid(?:ed|ing|es)|"  # ("broadsided the AV": struck it side-on, as "T-boned")
     r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
@@ -252,7 +255,8 @@ CONTACT = compile_gated(
     # any move that ends in the AV itself ("The Infiniti Q60 spun after contact and continued into the Cruise AV")
     r"(?:proceeded|continued|spun|skidded|slid|careened|moved|went|came|traveled|travelled|drifted|lurched|"
     # ("backed up into EGO", "slowly pushed into EGO", "rolling back into EGO")
-    r"accelerated|rolled|backed|reversed|backing|reversing|rolling|pushed|pushing|crept|creeping|inched|pulled)\s+"
+    r"accelerated|rolled|backed|reversed|backing|reversing|rolling|pushed|pushing|crept|creeping|inched|pulled|"
+    r"flew|fell|bounced|blew)\s+"
     r"(?:\w+ly\s+)?(?:forward\s+|backward\s+|backwards\s+|back\s+|up\s+)?into\s+EGO\b(?!'s)|"
     # parts touching at the contact ("until the front of the pickup truck was touching the rear of the Waymo AV")
     r"(?:was|were|is|are)\s+touching(?=\s+(?:the\s+)?(?:[\w-]+\s+){0,3}(?:bumper|side|door|fender|corner|rear|front)"

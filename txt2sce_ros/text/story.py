@@ -687,6 +687,21 @@ def _thrown(s: str, x: Mention) -> bool:
                 _THROWN_MOD.match(x.mods))
 
 
+# The AV (or its part) struck by a thing: "the front windshield was struck by an unknown object".
+_STRUCK_BY_THING = compile_gated(r"\b(?:was|were)\s+(?:\w+ly\s+)?(?:struck|hit|impacted|contacted|damaged|cracked|"
+                                 r"chipped)\s+by\s+(?:a|an|the|some)\s*$", re.I)
+
+
+def came_at_av(d: Doc, e: Entity) -> bool:
+    """Did object `e` come at the AV rather than lie in its way: thrown onto it ("road debris, which was projected onto
+    the test vehicle") or striking it ("the front windshield was struck by an unknown object")?"""
+    for m in e.mentions:
+        s = d.sents[m.sent]
+        if _thrown(s, m) or m.sent == d.contact_sent and _STRUCK_BY_THING.search(s, max(0, m.start - 40), m.start):
+            return True
+    return False
+
+
 def thrower(d: Doc, e: Entity) -> int | None:
     """The party that threw object `e` at the AV: the last party named before the object in a sentence that tells
     it thrown ("a nearby semi-trailer truck ... generated a draft that projected road debris onto EGO")."""
