@@ -3731,8 +3731,8 @@ PROBES: tuple[Probe, ...] = (
            "into", "backed into", "reversed into", "crept backward into", "rolled backwards into"),
           lambda sk: (sk.collision.with_, [p.category for p in sk.npcs]), ("npc1", ["car"])),
     Probe("a party behind the standing AV moving into a part of it is the contact",
-          "The Cruise AV was stopped at a red light on Mission Street. A pickup truck stopped behind the Cruise AV then "
-          "{w} the rear bumper of the Cruise AV.",
+          "The Cruise AV was stopped at a red light on Mission Street. A pickup truck stopped behind the Cruise AV "
+          "then {w} the rear bumper of the Cruise AV.",
           ("slowly pushed into", "pushed into", "crept forward into", "inched forward into", "rolled forward into",
            "crept into", "rolled into", "moved forward into", "slid into"),
           lambda sk: (sk.collision.with_, sk.collision.type), ("npc1", "rear_end")),
@@ -3753,10 +3753,10 @@ PROBES: tuple[Probe, ...] = (
           (["door"], [], "obs1")),
     Probe("a summary's ride and the telling's rider (or the reverse) are one party",
           "{w}",
-          tuple(f"On May 1, 2024 at 4:12 PM PT a Waymo Autonomous Vehicle operating in San Francisco was in a collision "
-                f"involving a {a}. The Waymo AV was stopped in traffic on eastbound Market Street. A {b} then approached "
-                f"from behind the stopped Waymo AV. As the {b} passed, the {a} made contact with the rear passenger side "
-                f"corner of the Waymo AV."
+          tuple(f"On May 1, 2024 at 4:12 PM PT a Waymo Autonomous Vehicle operating in San Francisco was in a "
+                f"collision involving a {a}. The Waymo AV was stopped in traffic on eastbound Market Street. A {b} "
+                f"then approached from behind the stopped Waymo AV. As the {b} passed, the {a} made contact with the "
+                f"rear passenger side corner of the Waymo AV."
                 for a, b in (("motorcycle", "motorcyclist"), ("motorcyclist", "motorcycle"), ("bicycle", "cyclist"),
                              ("bicyclist", "bicycle"), ("cyclist", "bicyclist"), ("scooter", "scooter rider"),
                              ("pedestrian", "man"), ("motorbike", "motorcyclist"), ("moped", "motorcyclist"))),

@@ -274,8 +274,8 @@ _RIDER_PICKUP = compile_gated(r"\b(?:passenger|rider|customer|curbside|scheduled
                               r"\bpick-?ups?\s*(?:and|or|/|&)\s*drop-?offs?\b|\bdrop-?offs?\s*(?:and|or|/|&)\s*pick-?ups?\b",
                               re.I)
 _CAB_OF = compile_gated(r"(?:\bEGO|\btruck|\btractor|\bsemi|\brig|\btrailer|\blorry)(?:'s)?\s+$", re.I)
-_CAB_OF_AFTER = compile_gated(r"\s+of\s+(?:(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}?)?(?:EGO|truck|tractor|semi|rig|lorry)\b",
-                              re.I)
+_CAB_OF_AFTER = compile_gated(r"\s+of\s+(?:(?:the|a|an|its)\s+(?:[\w-]+\s+){0,3}?)?"
+                              r"(?:EGO|truck|tractor|semi|rig|lorry)\b", re.I)
 _CHAIN_OF = compile_gated(r"^\s*(?:reactions?|collisions?|crash(?:es)?|of\s+events)\b", re.I)
 DETS = {"a": "a", "an": "a", "another": "a", "one": "a", "the": "the", "that": "the", "this": "the",
         "its": "the", "their": "the", "his": "the", "her": "the", "other": "the", "second": "a", "third": "a"}
@@ -806,7 +806,8 @@ def _names_part_of(head: str, e: Entity) -> bool:
 
 _MOTOR = frozenset({"car", "van", "truck", "bus"})
 # (a "then" between tells a next event, whose "the vehicle" may be the AV again: "the SUV then struck the vehicle")
-_CLAUSE_GAP = compile_gated(r"[,;()]|\b(?:when|while|as|and|but|then|before|after|until|because|which|that|who)\b", re.I)
+_CLAUSE_GAP = compile_gated(r"[,;()]|\b(?:when|while|as|and|but|then|before|after|until|because|which|that|who)\b",
+                            re.I)
 
 
 def _struck_by(e: Entity, m: Mention, sents: list[str]) -> bool:

@@ -158,7 +158,8 @@ _BELIEVED = compile_gated(r"\b(?:believed|believing|thought|thinking|assumed|ass
 # ("made contact with a small dog that had apparently been previously struck by a preceding vehicle"): an earlier
 # event between others, no contact of the AV's.
 _EARLIER_ADV = r"(?:(?:\w+ly|earlier|already|just|once|also)\s+){0,2}"
-_EARLIER_PASSIVE = compile_gated(rf"\b(?:that|which|who)\s+(?:had|has|have)\s+{_EARLIER_ADV}been\s+{_EARLIER_ADV}$", re.I)
+_EARLIER_PASSIVE = compile_gated(rf"\b(?:that|which|who)\s+(?:had|has|have)\s+{_EARLIER_ADV}been\s+{_EARLIER_ADV}$",
+                                 re.I)
 
 
 # ... and its agent ("struck by a preceding vehicle") took part in that earlier event only.
@@ -385,7 +386,8 @@ def _unnamed_thing(d: Doc) -> int | None:
         return None
     near = [x for x in d.ments[i] if x.end <= pos and pos - x.end <= 12]
     if who_for(pos, d.ments[i], None, s) != -1 and not (near and near[-1].kind in ("ego", "egod")):
-        return None  # (the AV the doer: its clause's subject, or named right before the verb, "resulting in EGO crashing")
+        return None  # (the AV the doer: its clause's subject, or named right before the verb: "resulting in EGO
+        # crashing")
     m = _STRUCK_NOUN.match(s, verb.end())
     if m is None or _NOT_A_THING.fullmatch(m.group(1)):
         return None
@@ -615,7 +617,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             continue  # "EGO was traveling ... behind a box truck": where the AV was, named in passing (sketch.md)
         if not is_partner and e.idx not in d.struck and first_detail and not moved and all(
                 _EARLIER_AGENT.search(d.sents[m.sent], max(0, m.start - 90), m.start) for m in first_detail):
-            continue  # "a small dog that had apparently been previously struck by a preceding vehicle": before the story
+            continue  # "a small dog that had apparently been previously struck by a preceding vehicle": earlier
         if not is_partner and e.idx not in d.struck and all(fre.search(r"\bof\s+(?:a|an|the)?\s*(?:[\w-]+\s+){0,2}$",
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
