@@ -2576,6 +2576,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         ' [XXX] near [XXX] when the front windshield was struck by an unknown object. The bottom of the windshield'
         ' had a hole about 3 inches in diameter. The vehicle operator disengaged autonomy and pulled over. The veh'
         'icle was able to be driven from the scene, and there were no reported injuries.'),
+    'nhtsa-sgo-ads-30531-10009-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30531-10009, ve'
+        'rsion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 4:41 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Los Angeles, C'
+        'alifornia was in a collision involving an SUV on [XXX]. The Waymo AV was traveling northeast bound on [X'
+        'XX] in the middle of three lanes when a passenger car in the rightmost lane and in front of the Waymo AV'
+        ' began to change lanes to the middle lane. The test driver of the Waymo AV transitioned to manual mode, '
+        'and began to change lanes into the leftmost lane to avoid the passenger car ahead. During this lane chan'
+        'ge manuever, the rear driver side of the Waymo AV made contact with the front passenger side of an SUV t'
+        'hat was traveling in the leftmost lane, positioned slightly behind the Waymo AV. At the time of the impa'
+        "ct, the Waymo AV's Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual mo"
+        'de. The SUV sustained damage. This is a duplicate of NHTSA report ID [XXX]'),
 }
 
 

@@ -13,7 +13,11 @@ a turn, stop words, ", yielding" / "while yielding", "transitioned to manual mod
 lot "turned into" and "parallel-parking"): 4 of their 67 rewritten narratives read differently on 746ca19, now 0;
 and 2 more ("slowed to stop", a stop behind a standing vehicle told two ways): 4 of 9 then, now 0; and 3 more
 ("yielded to" -> "stopped for", "was stopped" -> "was waiting", "started accelerating/moving/proceeding"): 2 of 34
-then (both "started accelerating"), now 0."""
+then (both "started accelerating"), now 0. Session 21 added 16 (NEW_REWRITES: the AV as "V1", "Vehicle 1", "the test
+vehicle", "the SV"; "hit", "struck", "made contact with" for one another; speeds in words; "a car"; "N/B"; a party
+numbered or described in parentheses; a sentence split at ", and"; the mode boilerplate moved to the end; "was
+moving"): over all 602 studyable narratives (`python -m tests.text.invariance --all`) 23 of their 4,645 rewritten
+narratives read differently on the session's start code (dbaa454); here, on the dev sample, the two listed."""
 
 from __future__ import annotations
 
@@ -21,7 +25,7 @@ import pytest
 
 from txt2sce_ros.text.extractor import extract
 
-from .invariance import REWRITES, Rewrite, changed
+from .invariance import NEW_REWRITES, REWRITES, Rewrite, changed
 
 #: Rewritten narratives that still read differently, and why.
 KNOWN: dict[str, set[str]] = {
@@ -87,10 +91,15 @@ KNOWN: dict[str, set[str]] = {
     # the road the AV exits onto (R4) instead of the crossing road to its left (R1; the gold); its actions (`aef`) and
     # the AV's are read the same. A position reading, left to the position work.
     "began to <move> -> began <moving>": {"dmvca-waymo-20210801-r202"},
+    # (session 21) "a passenger car" -> "a car": the same report as above (a second pickup truck, a car entering
+    # from a driveway told again as it enters the lane): the car's retelling is tied to it by its noun.
+    "passenger car -> car": {"dmvca-waymo-20241014-r619"},
+    # (session 21) a held-half report (not read): a party's description in parentheses changes its reading.
+    "a party described in parentheses": {"dmvca-zoox-20220104-r267"},
 }
 
 
-@pytest.mark.parametrize("rw", REWRITES, ids=[r.name for r in REWRITES])
+@pytest.mark.parametrize("rw", REWRITES + NEW_REWRITES, ids=[r.name for r in REWRITES + NEW_REWRITES])
 def test_a_rewrite_leaves_the_sketch_as_it_was(rw: Rewrite) -> None:
     told, ids = changed(rw)
     assert told >= 4, "the rewrite no longer applies to the narratives"

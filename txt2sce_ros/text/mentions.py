@@ -839,6 +839,12 @@ _EMPTY_AV_ASIDE = compile_gated(r"\bEGO\s*,\s*(?:(?:operating|driving|running)|(
 _OTHER_EGO = compile_gated(r"\b((?:a|an|the)\s+(?:second|other|third)|another)\s+EGO\b(?!'s)", re.I)
 
 
+def _introduced_later(mentions: list[Mention], e: Entity, m: Mention, summary_sents: set[int]) -> bool:
+    """Does the telling introduce, after mention `m`, a party by one of summary entity `e`'s own nouns ("an SUV")?"""
+    return any(x.det == "a" and x.head in e.heads and x.sent not in summary_sents and
+               (x.sent, x.start) > (m.sent, m.start) for x in mentions)
+
+
 def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) -> list[Entity]:
     """Group party/obstacle mentions into entities (coreference), in order of first mention."""
     ents: list[Entity] = []
@@ -953,12 +959,14 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             for e in live:
                 # (by its noun, or by its category when one of the two names no more than a vehicle: "a pickup
                 # truck" the AV yielded to is not the summary's SUV; "another vehicle", "a second car" is not the
-                # one named before, whatever the summary named)
+                # one named before, whatever the summary named; nor is a looser noun the summary's party when the
+                # telling introduces that party by the summary's own noun later: "involving an SUV ... when a
+                # passenger car in the rightmost lane ... an SUV that was traveling in the leftmost lane")
                 if all(x.sent in summary_sents for x in e.mentions) and m.sent not in summary_sents and \
                         not _another(sents[m.sent], m) and (
                         m.head in e.heads or (e.kind == m.kind and e.category == m.category and (
                             m.head in _GENERIC or all(h in _GENERIC for h in e.heads) or
-                            m.category in _RIDER_KINDS))):
+                            m.category in _RIDER_KINDS) and not _introduced_later(mentions, e, m, summary_sents))):
                     target = e
                     break
         if target is None and m.det != "a" and m.kind == "party" and m.head in _GENERIC and \
