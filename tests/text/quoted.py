@@ -2588,6 +2588,18 @@ QUOTED: dict[str, tuple[str, str]] = {
         'hat was traveling in the leftmost lane, positioned slightly behind the Waymo AV. At the time of the impa'
         "ct, the Waymo AV's Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual mo"
         'de. The SUV sustained damage. This is a duplicate of NHTSA report ID [XXX]'),
+    'nhtsa-sgo-ads-30270-8844-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-8844, ver'
+        'sion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On September [XXX], 2024 at 11:27 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco'
+        ', California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo AV was traveling '
+        'south westbound in the right turn lane on [XXX] with its right turn signal activated, and came to a stop'
+        ' for a red traffic light at the intersection with [XXX]. As the light turned to a flashing yellow arrow,'
+        ' a passenger car approached the Waymo AV from behind, and the front bumper of the passenger car made con'
+        'tact with the rear bumper of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was enga'
+        'ged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. '
+        '2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional infor'
+        'mation as it may become available.'),
 }
 
 

@@ -28,3 +28,16 @@ def test_a_passenger_car_in_the_telling_is_not_the_summary_s_suv() -> None:
     suv = next(n for n in sk.npcs if (n.position, n.lane) == ("R6", "left"))
     assert sk.collision.with_ == suv.id and suv.id == "npc1"  # the summary's SUV, first named
     _same_reading(rid, re.sub(r"\bpassenger car\b", "sedan", QUOTED[rid][1]))
+
+
+def test_a_standstill_told_as_coming_to_rest_or_slowly_to_a_stop() -> None:
+    # csvr-waymo-20240131-s297 (study2 W): "As the Waymo AV approached the intersection with 22nd Street, it came to
+    # a stop behind its lead vehicle." Told "came to rest behind its lead vehicle" (as police write a standstill),
+    # the stop was not read: the road read straight, no control, instead of the junction it stopped at.
+    rid = "csvr-waymo-20240131-s297"
+    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came to rest"))
+    # nhtsa-sgo-ads-30270-8844-v1 (study4 W): "came to a stop" told "came slowly to a stop": the light read
+    # yellow instead of red.
+    rid = "nhtsa-sgo-ads-30270-8844-v1"
+    assert "came to a stop" in QUOTED[rid][1]
+    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came slowly to a stop"))
