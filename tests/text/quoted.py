@@ -2600,6 +2600,19 @@ QUOTED: dict[str, tuple[str, str]] = {
         'ged in autonomous mode. Both vehicles sustained damage. Waymo is reporting this crash under Request No. '
         '2 of Standing General Order 2021-01. Waymo may supplement or correct its reporting with additional infor'
         'mation as it may become available.'),
+    'nhtsa-sgo-ads-30792-10691-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30792-10691, ve'
+        'rsion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'At 2:23pm: WeRide driverless vehicle (vehicle 1) with a safety operator seated in front passenger seat, '
+        'was travelling 45mph without much traffic ahead when a BMW x3 (vehicle 2) travelling in the adjacent lef'
+        "t lane and in the same direction, merged into vehicle 1's left front quarter panel. Vehicle 1 and Vehicl"
+        "e 2 sustained moderate damages. After discussing the incident with vehicle 2's driver, they admitted the"
+        'y were attempting to make an upcoming right turn off the expressway. They initiated 2 consecutive right '
+        'lane changes abruptly before hitting vehicle 1 on their last attempted lane change. After the initial im'
+        'pact, vehicle 1 was forced out of the initial lane, onto a divide, and ultimately came to a stop on the '
+        'shoulder of the expressway. At this time both occupants of vehicle 1 and vehicle 2 were able to assess r'
+        'espective damages and exchange information. It was determined that there were no injuries. WeRide Vehicl'
+        'e (Vehicle 1) required a tow back to the facility.'),
 }
 
 

@@ -41,3 +41,13 @@ def test_a_standstill_told_as_coming_to_rest_or_slowly_to_a_stop() -> None:
     rid = "nhtsa-sgo-ads-30270-8844-v1"
     assert "came to a stop" in QUOTED[rid][1]
     _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came slowly to a stop"))
+
+
+def test_an_operator_unknown_to_the_lexicon_named_without_an_article() -> None:
+    # nhtsa-sgo-ads-30792-10691-v1 (study3 W): "At 2:23pm: WeRide driverless vehicle (vehicle 1) with a safety
+    # operator seated in front passenger seat, was travelling 45mph ... when a BMW x3 (vehicle 2) ... merged into
+    # vehicle 1's left front quarter panel". Under an operator the lexicon does not know, the AV so introduced (no
+    # article, as a form's field opens) was not found: vehicle 1 was read as a second party beside the BMW.
+    rid = "nhtsa-sgo-ads-30792-10691-v1"
+    _same_reading(rid, QUOTED[rid][1].replace("WeRide", "Acme"))
+    assert len(quoted_sketch(rid).npcs) == 1

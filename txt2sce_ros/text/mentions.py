@@ -28,8 +28,10 @@ _DESCRIPTOR = r"(?:autonomous|automated|driverless|self-driving|test|driver-equi
 # (a dot only inside a name, "Pony.ai": never the end of a sentence)
 _WORD = rf"(?!{_DESCRIPTOR})(?-i:[A-Z])(?:[\w&'-]|\.(?=\w))*"
 _NAME = rf"({_WORD}(?:\s+{_WORD}){{0,3}}?)"
+# (the article may be dropped where a sentence or a form's field opens, as a form-like report writes: "At 2:23pm:
+# WeRide driverless vehicle (vehicle 1) ... was travelling")
 _OPERATOR_DEF = compile_gated(
-    rf"\b(?:an?|the)\s+(?:registered\s+)?{_NAME}\s+(?:(?:driver-equipped|ads|level\s+4)\s+)*"
+    rf"(?:\b(?:an?|the)\s+|(?:^|(?<=[:.;]\s)))(?:registered\s+)?{_NAME}\s+(?:(?:driver-equipped|ads|level\s+4)\s+)*"
     rf"(?:(?:autonomous|automated|driverless|self-driving)\s+(?:test\s+)?(?:vehicle|car|truck|shuttle)|AV)\b|"
     rf"\(\s*[\"']\s*(?:the\s+)?{_NAME}\s+(?:AV|vehicle)\s*[\"']\s*\)", re.I)
 _FIRST_VEHICLE = compile_gated(
