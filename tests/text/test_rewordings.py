@@ -51,3 +51,11 @@ def test_an_operator_unknown_to_the_lexicon_named_without_an_article() -> None:
     rid = "nhtsa-sgo-ads-30792-10691-v1"
     _same_reading(rid, QUOTED[rid][1].replace("WeRide", "Acme"))
     assert len(quoted_sketch(rid).npcs) == 1
+
+
+def test_a_party_that_neared_the_junction_approached_it() -> None:
+    # csvr-waymo-20211018-s101 (study2 W): its "approached" told "neared" (as "nearing" is read "approaching"): the
+    # junction the AV approached was lost (the road read straight, no control).
+    rid = "csvr-waymo-20211018-s101"
+    assert "approached" in QUOTED[rid][1]
+    _same_reading(rid, re.sub(r"\bapproached\b", "neared", QUOTED[rid][1]))

@@ -79,14 +79,15 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
     # ("a pick up truck", spaced: the same noun)
     (("pick-up", "pick up"), False, compile_gated(r"\b(pick)[- ](up)(?=\s+trucks?\b)", re.I),
      lambda m: m.group(1) + m.group(2)),
-    # "turned to the right", "in back of", "nearing the intersection", "came up from the rear", "immediately
-    # behind": the words the rules read
-    (("to the left", "to the right", "in back of", "nearing", " up from", "immediately behind"), False,
+    # "turned to the right", "in back of", "nearing" or "neared the intersection", "came up from the rear",
+    # "immediately behind": the words the rules read
+    (("to the left", "to the right", "in back of", "nearing", "neared", " up from", "immediately behind"), False,
      compile_gated(r"\b(turn(?:ed|ing|s)?)\s+to\s+the\s+(left|right)\b(?!\s+(?:lane|side|of|curb|shoulder)\b)|"
-                   r"\b(in\s+back\s+of)\b|\b(nearing)\b|"
+                   r"\b(in\s+back\s+of)\b|\b(nearing|neared)\b|"
                    r"\b(came|coming|comes|come)\s+up\s+(?=from\s+(?:the\s+)?(?:rear|behind)\b)|"
                    r"\b(immediately)(?=\s+behind\b)", re.I),
-     lambda m: f"{m.group(1)} {m.group(2)}" if m.group(1) else "behind" if m.group(3) else "approaching" if m.group(4)
+     lambda m: f"{m.group(1)} {m.group(2)}" if m.group(1) else "behind" if m.group(3) else
+     {"nearing": "approaching", "neared": "approached"}[m.group(4).lower()] if m.group(4)
      else {"came": "approached ", "coming": "approaching ", "comes": "approaches ", "come": "approach "}[
          m.group(5).lower()] if m.group(5) else "directly"),
     # "the left traffic lane", "the adjacent travel lane", "the lane on the left": the lane the rules know by its side
