@@ -105,6 +105,22 @@ def _later_name(name: str) -> Callable[[str], str]:
 _BODY_PART = (r"(?:(?:front|rear|left|right|driver(?:'s)?|passenger(?:'s)?)[ -]){1,3}(?:side|bumper|door|fender|corner|"
               r"quarter panel|mirror|wheel)")
 
+def _make_model(t: str) -> str:
+    """The party's noun replaced by a make and model everywhere, where the narrative names one kind of party only
+    (two nouns given two makes would be two cars; session 21: the rewrite used to leave "(Vehicle 2)"'s noun and
+    give "a passenger car" and "the passenger vehicle" two makes), "an SUV" -> "a Ford Explorer"."""
+    nouns = {m.group(1) for m in re.finditer(rf"\b({'|'.join(_MAKE_MODEL)})\b", t)}
+    if len(nouns) != 1 or re.search(r"\b(?:pick-?up|pick up)\b", t, re.I):
+        return t
+    noun = nouns.pop()
+    t = re.sub(rf"\b([Aa])n ({noun})\b", r"\1 \2", t)
+    return re.sub(rf"\b{noun}\b", _MAKE_MODEL[noun], t)
+
+
+#: Not a side of the road: "the right side of the street", "of southwestbound [XXX]".
+_NOT_OF_ROAD = (r"(?!\s+of\s+(?:the\s+)?(?:\w+bound\s+)?(?:road|roadway|street|lane|highway|freeway|ramp|"
+                r"intersection|driveway|lot|parking|curb|\[XXX\]|[A-Z]\w*\s+(?:Street|Avenue|Road|Boulevard|Drive)))")
+
 #: Makes and models for the party's usual nouns (a new user's narratives name parties so).
 _MAKE_MODEL = {"passenger car": "Toyota Camry", "passenger vehicle": "Honda Accord", "sedan": "Nissan Altima",
                "SUV": "Ford Explorer", "pickup truck": "Ford F-150"}
@@ -202,8 +218,9 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("made contact with -> contacted", _sub(r"\bmade contact with\b", "contacted")),
     Rewrite("a passenger vehicle -> a motorist", _sub(r"\b([Aa]) passenger (?:vehicle|car)\b", r"\1 motorist")),
     Rewrite("front bumper -> front end", _sub(r"\bfront bumper\b", "front end")),
-    Rewrite("left side -> driver side", _sub(r"\bleft side\b", "driver side")),
-    Rewrite("right side -> passenger side", _sub(r"\bright side\b", "passenger side")),
+    # (a vehicle's side only: "the right side of the road" has no passenger side)
+    Rewrite("left side -> driver side", _sub(rf"\bleft side\b{_NOT_OF_ROAD}", "driver side")),
+    Rewrite("right side -> passenger side", _sub(rf"\bright side\b{_NOT_OF_ROAD}", "passenger side")),
     Rewrite("behind the AV -> to the rear of the AV",
             _sub(r"\bbehind the ((?:Waymo |Cruise |Zoox )?(?:AV|vehicle))\b", r"to the rear of the \1")),
     Rewrite("green/red light -> green/red signal", _sub(r"\b(green|red) light\b", r"\1 signal")),
@@ -222,8 +239,7 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("mph -> MPH", _sub(r"\bmph\b", "MPH")),
     Rewrite("proceeded -> continued", _sub(r"\bproceeded\b", "continued")),
     # Session 12: a party by its make and model, compass words other operators use, other names for the AV.
-    Rewrite("a party named by make and model", _sub(r"\b(passenger car|passenger vehicle|sedan|SUV|pickup truck)\b(?! \()",
-                                                    lambda m: _MAKE_MODEL[m.group(1)])),
+    Rewrite("a party named by make and model", _make_model),
     Rewrite("traveling <dir>bound -> traveling in a <dir>erly direction",
             _sub(r"\btraveling (north|south|east|west)bound\b", r"traveling in a \1erly direction")),
     Rewrite("traveling <dir>bound -> heading in a <dir>erly direction",
