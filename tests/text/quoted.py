@@ -2613,6 +2613,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'shoulder of the expressway. At this time both occupants of vehicle 1 and vehicle 2 were able to assess r'
         'espective damages and exchange information. It was determined that there were no injuries. WeRide Vehicl'
         'e (Vehicle 1) required a tow back to the facility.'),
+    'dmvca-zoox-20230223-r426': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 426, column "Acc'
+        'ident Detail Description")',
+        'A Zoox vehicle in manual mode was proceeding southbound in the turn lane on Sixth Street with a green li'
+        'ght, yielding to a pedestrian before completing a right turn onto eastbound Harrison Street, in San Fran'
+        'cisco, CA with turn signals illuminated. A large truck in the left adjacent lane abruptly turned right a'
+        'nd cut in front of the Zoox vehicle making contact with the left front sensor. There were no injuries, t'
+        'he other vehicle did not stop to exchange information, and police were not called.'),
 }
 
 

@@ -59,3 +59,13 @@ def test_a_party_that_neared_the_junction_approached_it() -> None:
     rid = "csvr-waymo-20211018-s101"
     assert "approached" in QUOTED[rid][1]
     _same_reading(rid, re.sub(r"\bapproached\b", "neared", QUOTED[rid][1]))
+
+
+def test_a_yield_beside_the_av_s_run_told_with_heading() -> None:
+    # dmvca-zoox-20230223-r426 (dev W): "A Zoox vehicle in manual mode was proceeding southbound in the turn lane on
+    # Sixth Street with a green light, yielding to a pedestrian before completing a right turn": a yield beside the
+    # AV's run is why it slowed (`c`). Told "was heading southbound", the run was not seen and the yield read as a
+    # stop (`h`).
+    rid = "dmvca-zoox-20230223-r426"
+    assert "was proceeding southbound" in QUOTED[rid][1]
+    _same_reading(rid, QUOTED[rid][1].replace("was proceeding southbound", "was heading southbound"))

@@ -497,8 +497,10 @@ _WHILE_WAITING = compile_gated(r"(?:[^.;]|\.(?=\s+[a-z]))*?(?:\bwhile\s+|,\s*)(?
 # or a slowing of the AV, with no stop told, is the reason it slowed (`c`), not a stop of its own; told alone as
 # what the AV was doing ("was yielding", "while yielding"), it is the AV standing where it waited (`S`).
 _YIELD_ASIDE = compile_gated(r"(?:,|\bwhen|\bwhile|\bas)\s*$", re.I)
-_AV_MOVING = compile_gated(r"\b(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|driving|drove|moving|mov(?:ed|es)\s+forward|"
-                           r"slow(?:ed|ing)|decelerat(?:ed|ing)|approach(?:ed|ing)|continu(?:ed|ing))\b", re.I)
+# ("was heading southbound ..., yielding to a pedestrian": heading is a run as travelling is)
+_AV_MOVING = compile_gated(r"\b(?:proceed(?:ed|ing)|travel(?:l)?(?:ed|ing)|head(?:ed|ing)|driving|drove|moving|"
+                           r"mov(?:ed|es)\s+forward|slow(?:ed|ing)|decelerat(?:ed|ing)|approach(?:ed|ing)|continu(?:ed|ing))\b",
+                           re.I)
 _STOP_TOLD = compile_gated(r"\bstop|\bstationary\b|\bwaiting\b|\bhalt|\bstandstill\b|\bparked\b", re.I)
 _AT_CONTACT = compile_gated(r"\s+(?:\w+\s+)?(?:just|immediately|moments?|right|a\s+split\s+second)\s+(?:before|prior\s+to)\s+"
                             r"(?:the\s+)?(?:[^.;]{0,60}?\b(?:(?:made|came\s+into)\s+contact|contacted|struck|hit|collided|"
