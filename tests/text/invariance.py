@@ -16,6 +16,15 @@ without a comma 20/66 -> 0/66, headings abbreviated 10/78 -> 0/78, body sides na
 AV called "the robotaxi" 85/104 -> 0/104 and "the ego vehicle" 12/104 -> 0/104, "left-turn" / "lane-change"
 hyphenated 22/39 -> 0/39 and 7/7 -> 0/7, "stop-sign", "red-light", "parking-lot" 26/36 -> 0/36, "on-coming"
 7/20 -> 0/20, "west bound" 5/72 -> 0/72, "manoeuvre" 3/13 -> 0/13; all rewrites 520/2,095 -> 10/2,095.
+
+Session 21, over all 602 studyable narratives (`--all`: dev gold and study, study2 .. study6) with the 16 rewrites
+of NEW_REWRITES added: 218 of 33,372 rewritten narratives read differently on dbaa454; 199 once a looser noun no
+longer took the summary's party the telling names later, 193 with "came to rest" / "came slowly to a stop", 190 with
+an operator named without an article, 181 with "neared"; 165 of 33,276 once two rewrites that changed the meaning
+were corrected (a side of the road told as a passenger side; two makes for one car); 163 with "heading" read as a run
+beside a yield. What remains most: a new operator's name (13 of 583 per name, most from names a rename cannot carry:
+"a Nuro Prius", a make as operator), a clause split at "when" (5), a passenger vehicle told "another vehicle" or "a
+motorist" (8, 7), "stopped completely" (2), "then" dropped (4).
 """
 
 from __future__ import annotations
