@@ -22,9 +22,9 @@ of NEW_REWRITES added: 218 of 33,372 rewritten narratives read differently on db
 longer took the summary's party the telling names later, 193 with "came to rest" / "came slowly to a stop", 190 with
 an operator named without an article, 181 with "neared"; 165 of 33,276 once two rewrites that changed the meaning
 were corrected (a side of the road told as a passenger side; two makes for one car); 163 with "heading" read as a run
-beside a yield. What remains most: a new operator's name (13 of 583 per name, most from names a rename cannot carry:
-"a Nuro Prius", a make as operator), a clause split at "when" (5), a passenger vehicle told "another vehicle" or "a
-motorist" (8, 7), "stopped completely" (2), "then" dropped (4).
+beside a yield; 161 with "stopped completely". What remains most: a new operator's name (13 of 583 per name, most
+from names a rename cannot carry: "a Nuro Prius", a make as operator), a clause split at "when" (5), a passenger
+vehicle told "another vehicle" or "a motorist" (8, 7), "then" dropped (4).
 """
 
 from __future__ import annotations

@@ -41,6 +41,8 @@ def test_a_standstill_told_as_coming_to_rest_or_slowly_to_a_stop() -> None:
     rid = "nhtsa-sgo-ads-30270-8844-v1"
     assert "came to a stop" in QUOTED[rid][1]
     _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came slowly to a stop"))
+    # ... and "stopped completely" (the light read yellow instead of red)
+    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "stopped completely"))
 
 
 def test_an_operator_unknown_to_the_lexicon_named_without_an_article() -> None:

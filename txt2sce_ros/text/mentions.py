@@ -67,11 +67,13 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
     # as police tell it, the "came to a stop" the rules read (3 of 6 studyable sentences so reworded read a queue's
     # stop as a slowing, a red light as green or yellow; the one real use, a motorcycle that "came to rest on its
     # right side", is after the contact). ("came nearly to a stop" is a slowing: not a standstill.)
-    (("to rest", "to a rest", "complete rest", "full rest", "ly to "), False,
+    # ("stopped completely", "stopped fully": the complete stop the rules read)
+    (("to rest", "to a rest", "complete rest", "full rest", "ly to ", "stopped completely", "stopped fully"), False,
      compile_gated(r"\b(came|come|comes|coming)\s+(?:(?!nearly\b|almost\b)\w+ly\s+)?to\s+(?:a\s+)?"
                    r"(complete\s+|full\s+)?rest\b|\b(came|come|comes|coming)\s+(?!nearly\b|almost\b)\w+ly\s+"
-                   r"(?=to\s+(?:a\s+)?(?:complete\s+|full\s+)?stop\b)", re.I),
-     lambda m: f"{m.group(1)} to a {m.group(2) or ''}stop" if m.group(1) else f"{m.group(3)} "),
+                   r"(?=to\s+(?:a\s+)?(?:complete\s+|full\s+)?stop\b)|\bstopped\s+(completely|fully)\b", re.I),
+     lambda m: f"{m.group(1)} to a {m.group(2) or ''}stop" if m.group(1) else f"{m.group(3)} " if m.group(3) else
+     "came to a complete stop"),
     # "came to a stop, at which time a passenger vehicle rear-ended it": the relative "at which time/point" is the
     # "when" the rules read a clause's subject and its time by
     (("at which",), False, compile_gated(r"\bat\s+which\s+(?:time|point)\b", re.I), lambda m: "when"),
