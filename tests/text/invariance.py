@@ -21,10 +21,11 @@ Session 21, over all 602 studyable narratives (`--all`: dev gold and study, stud
 of NEW_REWRITES added: 218 of 33,372 rewritten narratives read differently on dbaa454; 199 once a looser noun no
 longer took the summary's party the telling names later, 193 with "came to rest" / "came slowly to a stop", 190 with
 an operator named without an article, 181 with "neared"; 165 of 33,276 once two rewrites that changed the meaning
-were corrected (a side of the road told as a passenger side; two makes for one car); 163 with "heading" read as a run
-beside a yield; 161 with "stopped completely". What remains most: a new operator's name (13 of 583 per name, most
-from names a rename cannot carry: "a Nuro Prius", a make as operator), a clause split at "when" (5), a passenger
-vehicle told "another vehicle" or "a motorist" (8, 7), "then" dropped (4).
+were corrected (a side of the road told as a passenger side; two makes for one car); 163 with "heading" read as a
+run beside a yield; 161 with "stopped completely"; 157 with "en route" and "heading" behind a vehicle. What remains
+most: a new operator's name (13 of 583 per name, most from names a rename cannot carry: "a Nuro Prius", a make as
+operator), a clause split at "when" (5), a passenger vehicle told "another vehicle" or "a motorist" (8, 7), "then"
+dropped (4).
 """
 
 from __future__ import annotations

@@ -71,3 +71,13 @@ def test_a_yield_beside_the_av_s_run_told_with_heading() -> None:
     rid = "dmvca-zoox-20230223-r426"
     assert "was proceeding southbound" in QUOTED[rid][1]
     _same_reading(rid, QUOTED[rid][1].replace("was proceeding southbound", "was heading southbound"))
+
+
+def test_a_vehicle_the_av_was_en_route_behind_is_named_in_passing() -> None:
+    # csvr-waymo-20240513-s311 (study2 W): "The Waymo AV was traveling with a test driver present behind a box truck
+    # in the number 3 lane": the box truck, named only as what the AV travelled behind, takes no part. Told "was en
+    # route ... behind a box truck", it was counted as a second party.
+    rid = "csvr-waymo-20240513-s311"
+    assert "was traveling with a test driver present behind a box truck" in QUOTED[rid][1]
+    _same_reading(rid, QUOTED[rid][1].replace("was traveling with", "was en route with"))
+    assert len(quoted_sketch(rid).npcs) == 1

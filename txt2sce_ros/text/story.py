@@ -517,7 +517,9 @@ def _in_chain(d: Doc, e: Entity, first: Mention) -> bool:
     return False
 
 
-_TRAVELLED_BEHIND = compile_gated(r"\b(?:travel(?:l)?(?:ed|ing)|driving|drove|proceed(?:ed|ing)|moving|cruising)\b"
+# (any verb of the AV's run: "was en route ... behind a box truck", "was heading east behind")
+_TRAVELLED_BEHIND = compile_gated(r"\b(?:travel(?:l)?(?:ed|ing)|driving|drove|proceed(?:ed|ing)|moving|cruising|"
+                                  r"en\s+route|head(?:ed|ing))\b"
                                   r"[^,;.]{0,60}?\bbehind\s+(?:a|an|another)\s+(?:[\w-]+\s+){0,2}$", re.I)
 
 
