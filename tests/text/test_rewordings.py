@@ -22,7 +22,8 @@ def test_a_passenger_car_in_the_telling_is_not_the_summary_s_suv() -> None:
     # rightmost lane and in front of the Waymo AV began to change lanes ... made contact with the front passenger
     # side of an SUV that was traveling in the leftmost lane". "A passenger car" was linked back to the summary's
     # SUV (a passenger car is no more than a vehicle), "a sedan" was not: the parties' numbering changed with the
-    # noun. A passenger car is a body type of its own, as a sedan is.
+    # noun. The telling introduces the summary's party later by the summary's own noun ("an SUV"), so a looser noun
+    # before it is another party, whichever noun it is.
     rid = "nhtsa-sgo-ads-30531-10009-v1"
     sk = quoted_sketch(rid)
     suv = next(n for n in sk.npcs if (n.position, n.lane) == ("R6", "left"))
