@@ -853,6 +853,12 @@ _EMPTY_AV_ASIDE = compile_gated(r"\bEGO\s*,\s*(?:(?:operating|driving|running)|(
 _OTHER_EGO = compile_gated(r"\b((?:a|an|the)\s+(?:second|other|third)|another)\s+EGO\b(?!'s)", re.I)
 
 
+def _loosely_named(e: Entity) -> bool:
+    """Was party `e` named by no more than a vehicle or its driver ("another vehicle", "a motorist")? Such a party
+    is the one a definite "the passenger vehicle" / "the passenger car" with no antecedent of its own noun means."""
+    return e.kind == "party" and all(h in _BARE or h in _DRIVER_NAMES for h in e.heads)
+
+
 def _introduced_later(mentions: list[Mention], e: Entity, m: Mention, summary_sents: set[int]) -> bool:
     """Does the telling introduce, after mention `m`, a party by one of summary entity `e`'s own nouns ("an SUV")?"""
     return any(x.det == "a" and x.head in e.heads and x.sent not in summary_sents and
@@ -949,13 +955,16 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
             if m.kind == "party" and m.head not in _BARE:
                 # "the passenger vehicle" repeats the noun of "a passenger vehicle": the party named so is the one
                 # meant, before any other party a looser noun fits ("its lead vehicle" named in between)
-                recent.sort(key=lambda e: m.head not in e.heads)
+                # ("involving another vehicle ... The passenger vehicle behind the Waymo AV", "a motorist entered
+                # ... As the passenger car entered": the party named loosely before, not a pickup truck or a lead
+                # vehicle named in between)
+                recent.sort(key=lambda e: (m.head not in e.heads, m.head in _GENERIC and not _loosely_named(e)))
             for e in recent:
                 if _struck_by(e, m, sents):
                     continue  # "The other vehicle also made contact with the vehicle in front of them": another
                 if m.head in _GENERIC and m.sent not in summary_sents and not _the_other_party(sents[m.sent], m) and \
                         all(x.sent in summary_sents for x in e.mentions) and \
-                        (m.head not in e.heads or m.head in _BARE) and \
+                        (m.head in _BARE or (m.head not in e.heads and not _loosely_named(e))) and \
                         not (m.head in e.heads and m.subject and
                              fre.search(r"\bEGO\b", sents[m.sent][m.end:]) is not None):
                     # A bare "the vehicle" in the telling does not reach back to the summary's party; "the
@@ -963,6 +972,8 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                     # vehicle" after "a collision involving a vehicle" as the subject of a sentence that names the AV
                     # after it ("the vehicle approached the Waymo AV from behind"; not "the test driver transitioned
                     # the vehicle to manual mode"). "The other vehicle" names the party told before, not the AV.
+                    # "The passenger vehicle" after "a collision involving another vehicle" reaches back too: a
+                    # more precise noun for a party the summary named loosely.
                     continue
                 if _compatible(e, m, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
                     target = e
