@@ -77,6 +77,14 @@ _SPELLINGS: tuple[tuple[tuple[str, ...], bool, re.Pattern[str], Callable[[re.Mat
     # "came to a stop, at which time a passenger vehicle rear-ended it": the relative "at which time/point" is the
     # "when" the rules read a clause's subject and its time by
     (("at which",), False, compile_gated(r"\bat\s+which\s+(?:time|point)\b", re.I), lambda m: "when"),
+    # "from Market St. onto Haight St. at", "between 11th St. and 10th Street": a street's abbreviation inside a
+    # sentence loses its period (the rules that read a turn's streets or a clause scan up to a period, and know "St"
+    # as a street's suffix; police and DMV reports abbreviate where company narratives spell out; the word itself
+    # is kept, so evidence spans still align with the narrative). Not before a capital: "St. Francis", a sentence's
+    # end.
+    (("St.", "Ave.", "Blvd.", "Rd.", "Hwy.", "Pkwy."), True,
+     compile_gated(r"(?<=[A-Za-z0-9] )(St|Ave|Blvd|Rd|Hwy|Pkwy)\.(?=,|\s+[a-z0-9(])"),
+     lambda m: m.group(1)),
     # "a pick-up truck ... the pickup truck": one noun, spelled one way (the name a party is followed by)
     # ("a pick up truck", spaced: the same noun)
     (("pick-up", "pick up"), False, compile_gated(r"\b(pick)[- ](up)(?=\s+trucks?\b)", re.I),
