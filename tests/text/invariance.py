@@ -25,7 +25,11 @@ were corrected (a side of the road told as a passenger side; two makes for one c
 run beside a yield; 161 with "stopped completely"; 157 with "en route" and "heading" behind a vehicle. What remains
 most: a new operator's name (13 of 583 per name, most from names a rename cannot carry: "a Nuro Prius", a make as
 operator), a clause split at "when" (5), a passenger vehicle told "another vehicle" or "a motorist" (8, 7), "then"
-dropped (4).
+dropped (4). Then (helper C2): 150 once "the passenger vehicle" / "the passenger car" reaches back to a party named
+loosely before ("involving another vehicle", "a motorist entered"; those two rewrites 8 -> 6 and 7 -> 2); 147 once a
+street abbreviated inside a sentence ("Market St. onto") loses its period ("Street -> St." 4 -> 1). Still open: "the
+car" after "a double parked car" taken for the parked one (passenger car -> car, 4), "its lead vehicle" named between
+the summary's "another vehicle" and "the passenger vehicle behind" it.
 """
 
 from __future__ import annotations
