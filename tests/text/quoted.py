@@ -2621,6 +2621,34 @@ QUOTED: dict[str, tuple[str, str]] = {
         'cisco, CA with turn signals illuminated. A large truck in the left adjacent lane abruptly turned right a'
         'nd cut in front of the Zoox vehicle making contact with the left front sensor. There were no injuries, t'
         'he other vehicle did not stop to exchange information, and police were not called.'),
+    'nhtsa-sgo-ads-30531-9244-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30531-9244, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On Thursday, November [XXX], 2024 at 11:04 CST, a Waymo Autonomous Vehicle ("Waymo AV") operating in Aust'
+        'in, Texas was in a collision involving a raised concrete curb in a parking lot on [XXX] near [XXX]. The W'
+        'aymo AV was proceeding through a parking lot on [XXX] near [XXX] in autonomous mode when it encountered a'
+        ' passenger car parked outside the marked parking spaces occupying a portion of the parking lot apparently'
+        ' intended for ingress and egress from the lot rather than parking. The AV came to a stop, and shortly the'
+        'reafter the test driver assumed manual control of the AV. The test driver reversed slightly and then proc'
+        'eeded through a vacant marked parking space to pass around the parked passenger car, and as the AV crosse'
+        'd through the vacant parking space it made contact with a raised concrete curb. At the time of the impact'
+        ", the Waymo AV's Level 4 ADS was not engaged and a test driver was operating the Waymo AV in manual. This"
+        ' is a duplicate of NHTSA Report ID: 30270-9232-1.'),
+    'nhtsa-sgo-ads-30270-9183-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9183, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On October [XXX], 2024 at 8:45 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in San Francisco, Ca'
+        'lifornia was in a collision involving a passenger car on [XXX] near [XXX]. The Waymo AV was traveling nor'
+        'th on [XXX] behind a passenger car that was traveling in the same direction. The passenger car then began'
+        ' to slow and, with its reverse lights illuminated, abruptly began to reverse. The Waymo AV activated its '
+        'horn as it came to a complete stop to yield to the passenger car. As the passenger car was reversing at a'
+        ' high rate of speed, the Waymo AV briefly reversed before coming to another complete stop. The rear of th'
+        'e passenger car then made contact with the front of the stopped Waymo AV. The Waymo AV reversed for a sec'
+        'ond time before the passenger car continued reversing and made contact with the front of the Waymo AV aga'
+        'in. The passenger car then proceeded straight on [XXX]. At the time of the impact, the Waymo AVs Level 4 '
+        'ADS was engaged in autonomous mode. Both vehicles sustained damage and the passenger car left the scene. '
+        'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement'
+        ' or correct its reporting with additional information as it may become available.'),
 }
 
 

@@ -122,7 +122,8 @@ PHRASES: tuple[tuple[str, str], ...] = (
           # "screeched to a halt", "ground to a halt", "skidded to a stop", "rolled to a stop": any verb of a vehicle
           # ending its run, with the standstill it reached
           r"(?:screech|skid|slamm|jerk|lurch|roll|eas|glid|coast|slid|drift|pull|grind)(?:ed|ing|s|e)?\s+(?:\w+ly\s+)?to|"
-          r"(?:ground|grinds|slid|slides)\s+(?:\w+ly\s+)?to)\s+(?:a|an)\s+"
+          # ("before coming to another complete stop": a second stop of the same run)
+          r"(?:ground|grinds|slid|slides)\s+(?:\w+ly\s+)?to)\s+(?:a|an|another)\s+"
           # (one word for the manner of the stop: "a sudden stop", "an unexpected halt", "an emergency stop"; not a
           # stop sign's kind, "a four-way stop", and not a stop short of a standstill, "a near stop", "a rolling stop")
           r"(?:(?![\w-]*way\s|(?:near|almost|nearly|rolling|partial|virtual)\s)[\w-]+\s+)?(?:stop|halt|standstill)|\bstopp(?:ed|ing)\s+(?:suddenly|abruptly|short|quickly|hard)\b|\bstopp(?:ed|ing)\b|"

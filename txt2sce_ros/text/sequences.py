@@ -88,6 +88,8 @@ def sequence(acts: list[Act], *, stopped: bool, ego: bool, side: str | None) -> 
             c = "i"
         if codes and codes[-1] == "h" and c in ("a", "b") and (not ego or _MOVES_OFF.match(a.text)):
             c = "i"  # the AV's "entered the intersection" after a stop moves it off; "approaching" only describes
+        if codes and codes[-1] == "k" and c in ("a", "b") and _MOVES_OFF.match(a.text):
+            c = "i"  # "reversed slightly and then proceeded through a vacant marked parking space": forward again
         if start == "stopped" and not codes and c in "defgm":
             codes.append("i")
         if codes and codes[-1] == "h" and c in "defgjmF":
@@ -524,6 +526,12 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
             # finished in a sentence before the party comes in, the AV met standing, is where it stood when the
             # interaction began (stopped, ''); a contact during the pull-over keeps `l`
             stopped = True
+        elif last.code == "k" and len(pre) > 2 and pre[-2].code == "h" and pre[-3].code in "aA" and \
+                not _waited(d, pre[-2]):
+            # "was proceeding through a parking lot ... came to a stop, and shortly thereafter EGOD assumed manual
+            # control. EGOD reversed slightly": a run, a stop and the backing told before the party comes in are
+            # the story that ends at it (`ahk`), as a stop and a start are (`ahi`, below)
+            prefix = [Act(last.sent, last.pos, "a", -1, ""), pre[-2], last]
         elif last.code in ("d", "e", "f", "g", "j", "k", "l", "F", "O", "c"):
             prefix = [last]
             if last.code in "fgF" and not last.under_way and any(a.code in ("a", "A") for a in pre[:-1]):
