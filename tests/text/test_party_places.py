@@ -572,3 +572,19 @@ def test_a_party_passing_from_behind_on_no_named_side_passed_on_the_side_it_stru
     # AV it struck is the side it passed on (sketch.md: R6 on the side it passed, `a`).
     p = _party("csvr-cruise-20220905-s189", 1)
     assert (p.position, p.lane, p.actions) == ("R6", "right", "a")
+
+
+def test_a_party_that_touched_the_av_backing_up_was_ahead_or_alongside_not_behind() -> None:
+    # sgo6 nhtsa-sgo-ads-30270-9285-v1 (study6 W): "an asphalt roller vehicle passed the Waymo AV multiple times. On
+    # one such pass while the asphalt roller was reversing, the rear driver side of the asphalt roller vehicle made
+    # contact with the rear passenger side of the stationary Waymo AV". A vehicle going the AV's way that backs into
+    # it backs from ahead or alongside: R5, on the side it was read on (gold R5/right, `k`).
+    p = _party("nhtsa-sgo-ads-30270-9285-v1")
+    assert (p.position, p.lane, p.actions) == ("R5", "right", "k")
+    # A party behind that moves forward again before the contact stays behind ("reversed briefly and then drove
+    # around EGO on the left": R6).
+    text = ("The Waymo AV was stopped in a parking lot for a passenger drop off when a passenger car immediately behind "
+            "the Waymo AV reversed briefly and then drove around the Waymo AV on the left. As the passenger car was "
+            "passing the stopped Waymo AV, the passenger side of the passenger car made contact with the rear driver "
+            "side corner of the Waymo AV.")
+    assert extract(text, "t").npcs[0].position == "R6"

@@ -55,7 +55,10 @@ HELD_CSVR = {
     "check2": {"npc_quantity": 0.97, "npc_position": 0.79, "npc_events": 0.78, "layout": 0.88, "ego_actions": 0.82,
                "ego_start": 0.92},
 }
-CONFLICT_HELD_CSVR = {"study2": 86, "check2": 59}
+# (check2 59 -> 58 in session 22: a collision party that touched the AV backing up is read ahead or alongside it, not
+# behind (R5, not R6), by a rule decided on the studyable sets alone - POOLED H +1 position and +1 user's figure,
+# study5 H +1 each, no studyable set lower; check2 was not inspected)
+CONFLICT_HELD_CSVR = {"study2": 86, "check2": 58}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is
 #: scored only; one annotator's gold each (check3's first 44 labelled twice and adjudicated).
 SGO = Path(__file__).parent / "sgo"

@@ -20,7 +20,7 @@ from .actions import Act, find_acts
 from .lexicon import CONTACT
 from .mentions import Entity, find_mentions, mark_parked, normalise, resolve, sentences
 from .positions import MOVING_THINGS, obstacle_position, party_position
-from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, place, thing_origin_lane
+from .relations import AV_AT_CURB, OUT_OF_ROADSIDE, av_lane_rank, backed_out_behind, place, thing_origin_lane
 from .spans import OffsetMap
 from .scene import environment, is_junction, road, scene_spans, signal_state
 from .sequences import (backed_into_object, collision_type, ego_sequence, moved_off_into_object, opens_under_way,
@@ -341,6 +341,15 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
             # (One placed by the side it passed on stays there: sketch.md places a pass by its side; so does one
             # whose first sideways move is toward the AV.)
             lane = "same"
+        if pos == "R6" and acts.endswith("k") and e.idx == d.partner and not backed_out_behind(d, e):
+            # It touched the AV backing up: a vehicle going the AV's way moves away from the AV backing from behind
+            # it, so it backed from ahead or alongside (R5), on the side it was read on. Studyable collision parties
+            # backing at the contact and read behind: gold R5 in 3 of 3 (sgo6 9285 "the asphalt roller was
+            # reversing ... made contact with the rear passenger side"); the two gold R6 backing parties moved
+            # forward again before the contact (`kif`). One backing out of a parking space into the AV's rear end
+            # faced across the road, behind it (the gold's R6 placeholder of study2 s159, whose place it calls
+            # untold).
+            pos = "R5"
         if pos not in ("R5", "R6", "R7"):
             lane = None
         # A party standing still throughout that the AV, moving forward, ran into stood in its path: both its

@@ -648,6 +648,14 @@ _STRADDLING = compile_gated(r"\b(?:partially|partly|half)\s+in\s+[^.;|]{0,80}?\b
 _LEVEL = compile_gated(r"\b(?:ahead|in\s+front|alongside|beside|next\s+to|adjacent(?!\s+(?:[\w-]+\s+){0,2}?lanes?\b))\b", re.I)
 
 
+def backed_out_behind(d: Doc, e: Entity) -> bool:
+    """Did the party come out of a driveway, garage, lot or parking space into the AV's rear end, no side of it
+    ("reversed out of a parking spot into a Pony.ai autonomous testing vehicle's rear bumper")? It came out behind
+    the AV, facing across its road, not along it."""
+    fore, cside = ego_contact_part(d) if e.idx == d.partner else (None, None)
+    return fore == "rear" and not cside and bool(_OUT_OF_CURBSIDE.search(context(d, e)))
+
+
 def place(d: Doc, e: Entity, first: tuple[str, str | None], ego_actions: str,
           ego_turning: bool = False, told: bool = True) -> Placement:
     """Combine the party's cues with the first reading `first` = (position, lane) in the documented order.
