@@ -2476,6 +2476,27 @@ QUOTED: dict[str, tuple[str, str]] = {
         'cause of an unprotected turn required to get to the stop, the autonomous vehicle operator took over manua'
         'lly. As the vehicle waited parked at the stop, a car in a parking space in front of the stop backed up in'
         'to the May vehicle at 2mph. This impact occurs 25 seconds after last being in autonomous mode.'),
+    'nhtsa-sgo-ads-30270-10078-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10078, ver'
+        'sion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On February [XXX], 2025 at 2:36 PM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in San Francisco,'
+        ' California was in a collision involving an SUV on [XXX]. The Waymo AV was traveling southbound on [XXX] '
+        'and came to a stop for a stop sign at the intersection at[XXX]. As the Waymo AV began to proceed straight'
+        ' through the intersection, an SUV approached the Waymo AV from behind, and the front of the SUV made cont'
+        "act with the rear of the Waymo AV. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in a"
+        'utonomous mode. The Waymo AV sustained damage. Waymo is reporting this crash under Request No. 2 of Stand'
+        'ing General Order 2021-01. Waymo may supplement or correct its reporting with additional information as i'
+        't may become available.'),
+    'nhtsa-sgo-ads-30270-9905-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9905, vers'
+        'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On January [XXX], 2025 at 7:24 AM PT a Waymo Autonomous Vehicle ("Waymo AV") operating in Phoenix, Arizon'
+        'a was in a collision involving a passenger car on [XXX]. The Waymo AV was traveling westbound on [XXX], a'
+        'nd pulled over at the curb. As the Waymo AV came to a stop, the passenger car in front of the Waymo AV re'
+        'versed and the rear bumper of the passenger car made contact with the front bumper of the stopped Waymo A'
+        "V. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles su"
+        'stained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waym'
+        'o may supplement or correct its reporting with additional information as it may become available.'),
     'nhtsa-sgo-ads-30270-6337-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6337, vers'
         'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

@@ -451,6 +451,18 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # the party came in, as the same clause told first is ("While EGO remained stopped ..., a passenger car ...").
     pre += [a for a in acts if a.code == "S" and a not in pre and a.sent == fs and a.pos > fp and
             _SAME_MOMENT.search(s, fp, a.pos)]
+    # So is any move of the AV told there ("An SUV approached EGO from behind, and ... made contact with the rear of
+    # EGO as EGO began to proceed straight through the intersection", "the pickup truck ... made contact with the
+    # drivers side of EGO as EGO moved into the left lane"): the clause tells what the AV was doing when the party
+    # came in, as it does told first ("As EGO began to proceed ..., an SUV approached"); its moves come before the
+    # party's in the telling, so they open the interaction, not follow it. (A lane change told again there, "began
+    # a lane change into the right thru lane ... The passenger car ... accelerated as EGO began merging", is the one
+    # told before: `sequence` reads it so after the party's moves.)
+    # A run told there ("as EGO was traveling") only describes the AV on its way: no move of its own.
+    late = [a for a in acts if a not in pre and a.code not in "aA" and a.sent == fs and a.pos > fp and
+            _same_moment_opener(d, a) is not None and _same_moment_opener(d, a).start() > fp and not _retells(a, pre)]
+    if late:
+        pre = [a for a in acts if a in pre or a in late]
     post = [a for a in acts if a not in pre]
     stopped = False
     prefix: list[Act] = []
@@ -577,18 +589,33 @@ _DONE_BEFORE = compile_gated(r"(?:(?:^|[,;])\W*(?:(?:shortly|just|immediately|ri
 _TRAILING_SAME_MOMENT = compile_gated(r"(?:,\s*|\s)(?:just\s+)?(?:as|while)\s+(?:EGO\b|it\b|\w+ing\b)", re.I)
 
 
+def _same_moment_opener(d: Doc, a: Act) -> re.Match[str] | None:
+    """The opener (" as EGO", ", while EGO was", " while completing") of the clause of the same moment, told after
+    a main clause, that act `a` lies in; None when `a` lies in no such clause (or past its end: a comma or a
+    semicolon between the opener and the act)."""
+    s = d.sents[a.sent]
+    opener = None
+    for m in _TRAILING_SAME_MOMENT.finditer(s, 0, a.pos + len(a.text)):
+        if m.start() < a.pos:
+            opener = m  # the last one before the act (or opening it: "while traveling northwest")
+    if opener is None or ("," in s[opener.end():a.pos] or ";" in s[opener.end():a.pos]):
+        return None
+    return opener
+
+
+def _retells(a: Act, told: list[Act]) -> bool:
+    """Is `a` a lane change told without its side ("began merging") after one of the AV's told in `told`?"""
+    return a.code == "F" and any(x.code in "fgF" for x in told)
+
+
 def _background(d: Doc, a: Act, acts: list[Act]) -> bool:
     """Is the AV's run `a` (or a turn or lane change told under way) told in a clause of the same moment after a
     main clause that tells another move of the AV in the same sentence ("It slowed to yield ... as EGO entered the
     intersection", "slowed to a stop ... while completing a right turn")?"""
     if a.code not in "aA" and not (a.under_way and a.code in "defg"):
         return False
-    s = d.sents[a.sent]
-    opener = None
-    for m in _TRAILING_SAME_MOMENT.finditer(s, 0, a.pos + len(a.text)):
-        if m.start() < a.pos:
-            opener = m  # the last one before the run (or opening it: "while traveling northwest")
-    if opener is None or ("," in s[opener.end():a.pos] or ";" in s[opener.end():a.pos]):
+    opener = _same_moment_opener(d, a)
+    if opener is None:
         return False  # no such clause, or the run is past its end
     return any(x.sent == a.sent and x.pos < opener.start() and x.code not in "aAS" for x in acts)
 

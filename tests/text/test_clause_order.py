@@ -1,0 +1,39 @@
+"""Real studyable narratives with a clause of the same moment told after its main clause instead of before it ("As
+the Waymo AV began to proceed, an SUV approached ..." -> "An SUV approached ... as the Waymo AV began to proceed"),
+each read as the original is (session 22, tests/text/invariance.py's CLAUSE_ORDER family). Unseen reports order
+their clauses every way: an extractor that reads "A as B" unlike "As B, A" reads word order, not the scene. Every
+test here failed before the fix its comment names."""
+
+from __future__ import annotations
+
+import json
+
+from .invariance import _clause_after
+from .quoted import QUOTED, quoted_sketch
+
+
+def _same_reading(report_id: str, reworded: str) -> None:
+    assert reworded != QUOTED[report_id][1], "the rewording no longer applies"
+    a, b = quoted_sketch(report_id).to_dict(), quoted_sketch(report_id, reworded).to_dict()
+    for d in (a, b):
+        d.pop("evidence", None)
+    assert json.dumps(b, sort_keys=True) == json.dumps(a, sort_keys=True)
+
+
+def test_the_av_s_move_told_after_the_party_s_clause_opens_the_interaction() -> None:
+    # nhtsa-sgo-ads-30270-10078-v1 (study4 W): "The Waymo AV was traveling southbound ... and came to a stop for a
+    # stop sign ... As the Waymo AV began to proceed straight through the intersection, an SUV approached the Waymo
+    # AV from behind, and the front of the SUV made contact with the rear of the Waymo AV." Told "An SUV approached
+    # ... as the Waymo AV began to proceed straight through the intersection.", the AV's move off came after the
+    # party's first mention, so it followed the interaction instead of opening it: `ahi` moving instead of `i`
+    # from its stop at the sign. (sequences.ego_sequence: the AV's moves told in a clause of the same moment after
+    # the first party's clause are what it was doing when the party came in.)
+    rid = "nhtsa-sgo-ads-30270-10078-v1"
+    _same_reading(rid, _clause_after(QUOTED[rid][1]))
+    assert (quoted_sketch(rid).ego.start, quoted_sketch(rid).ego.actions) == ("stopped", "i")
+    # nhtsa-sgo-ads-30270-9905-v1 (dev gold W): "... and pulled over at the curb. As the Waymo AV came to a stop, the
+    # passenger car in front of the Waymo AV reversed and ... made contact with the front bumper of the stopped
+    # Waymo AV." Told "The passenger car ... reversed and ... made contact ... as the Waymo AV came to a stop.", the
+    # AV's stop fell after the party's clause: stopped '' instead of `ah`.
+    rid = "nhtsa-sgo-ads-30270-9905-v1"
+    _same_reading(rid, _clause_after(QUOTED[rid][1]))
