@@ -489,6 +489,62 @@ NEW_REWRITES: tuple[Rewrite, ...] = (
 )
 
 
+
+#: The party's noun kinds a narrative names (one kind only: a police report's numbering can then be given to it).
+_ONE_PARTY_NOUN = r"(?:passenger car|passenger vehicle|sedan|SUV|pickup truck|box truck|van|motorcycle|bus|truck|car)"
+#: A street's name: capitalised words (an ordinal's digits first), or "[XXX]"; never past a sentence's end.
+_A_STREET = r"(?:\[XXX\]|(?:\d+(?:st|nd|rd|th)|[A-Z]\w*)(?: [A-Z]\w*){0,3})"
+_NUMBERED = r"\b(?:V|Vehicle |vehicle |Veh\.? ?|Unit |Party |#)\d\b|\bV-\d\b"
+
+
+def _party_labelled(label: str, av: str | None = None) -> Callable[[str], str]:
+    """The party numbered as police and DMV forms number it: "a passenger car" -> "a passenger car (V2)" at its
+    first naming and "the passenger car" -> "V2" after it; with `av`, the AV numbered too ("the Waymo AV" -> "V1").
+    Only where the narrative names one kind of party, with no other, second or parked one, and numbers no vehicle
+    (two parties of one noun would be one label for two)."""
+    def apply(t: str) -> str:
+        nouns = {m.group(1) for m in re.finditer(rf"\b(?:[Aa]n?|[Tt]he) ({_ONE_PARTY_NOUN})\b", t)}
+        if len(nouns) != 1 or re.search(r"\b(?:another|second|other|two|both|parked)\b", t) or re.search(_NUMBERED, t):
+            return t
+        noun = nouns.pop()
+        m = re.search(rf"\b[Aa]n? {noun}\b", t)
+        if not m:
+            return t
+        told = t[:m.end()] + f" ({label})" + re.sub(rf"\b[Tt]he {noun}\b", label, t[m.end():])
+        return re.sub(_AV_NAME, av, told) if av else told
+    return apply
+
+
+#: Session 22 (helper C4): how police, insurers, other companies and DMV form-fillers name and describe the same
+#: things (a body part as the "rear end" or "back", headings "in the northbound direction", speeds "at a speed of",
+#: "miles an hour", streets abbreviated without a period, "the A/B intersection", "2-lane", "at approximately" a
+#: time, the AV as "Unit 1" / "Party 1" / "the autonomous test vehicle", the party and the AV numbered "V1"/"V2",
+#: "Vehicle 1"/"Vehicle 2", "Unit 1"/"Unit 2"). Each keeps every slot's meaning.
+C4_REWRITES: tuple[Rewrite, ...] = (
+    Rewrite("rear bumper -> rear end", _sub(r"\brear bumper\b", "rear end")),
+    Rewrite("the rear of -> the back of", _sub(r"\bthe rear of\b", "the back of")),
+    Rewrite("traveling <dir>bound -> traveling in the <dir>bound direction",
+            _sub(r"\b(traveling|driving|proceeding|heading) (north|south|east|west)bound\b", r"\1 in the \2bound direction")),
+    Rewrite("traveling <dir>bound -> traveling <dir>", _sub(r"\btraveling (north|south|east|west)bound\b", r"traveling \1")),
+    Rewrite("at N mph -> at a speed of N mph",
+            _sub(r"\bat (approximately |about )?(\d+) ?(mph|MPH)\b", r"at a speed of \1\2 \3")),
+    Rewrite("N mph -> N miles an hour", _sub(r"\b(\d+) ?(?:mph|MPH)\b", r"\1 miles an hour")),
+    Rewrite("Street/Avenue/Boulevard/Road -> St/Ave/Blvd/Rd (no period)", _sub(
+        r"\b(Street|Avenue|Boulevard|Road)\b",
+        lambda m: {"Street": "St", "Avenue": "Ave", "Boulevard": "Blvd", "Road": "Rd"}[m.group(1)])),
+    Rewrite("two-lane, two lanes -> 2-lane, 2 lanes", _sub(r"\b(two|three|four|five|six)([- ]lanes?)\b", lambda m: {
+        "two": "2", "three": "3", "four": "4", "five": "5", "six": "6"}[m.group(1).lower()] + m.group(2), re.I)),
+    Rewrite("at <time> -> at approximately <time>",
+            _sub(r"\bat (\d{1,2}:\d\d ?[AP]\.?M\.?)", r"at approximately \1"), environment=False),
+    Rewrite("On <date> at <time> -> On <date>, at <time>,", _sub(
+        r"^(On [A-Z][a-z]+ (?:\d{1,2}|\[XXX\])(?:st|nd|rd|th)?, \d{4}) at ([\d:]+ ?[AP]\.?M\.?(?: [A-Z]{2,3})?) ",
+        r"\1, at \2, "), environment=False),
+    Rewrite("the <operator> AV -> Unit 1", _numbered_av("Unit 1")),
+    Rewrite("the <operator> AV -> Party 1", _numbered_av("Party 1")),
+    Rewrite("the <operator> AV -> the autonomous test vehicle", _sub(_AV_NAME, r"\1he autonomous test vehicle")),
+)
+
+
 def _clause_after(t: str) -> str:
     """"While the Waymo AV remained stopped, a car made contact." -> "A car made contact while the Waymo AV remained
     stopped.": an opening clause of the same moment told after its main clause."""
@@ -576,7 +632,7 @@ def main() -> None:
     corpus = every_studyable() if "--all" in sys.argv[1:] else studyable()
     total_told = total_changed = 0
     print(f"{'rewrite':<46}{'rewritten':>10}{'changed':>9}  first changed")
-    for rw in REWRITES + NEW_REWRITES:
+    for rw in REWRITES + NEW_REWRITES + C4_REWRITES:
         told, ids = changed(rw, corpus)
         total_told, total_changed = total_told + told, total_changed + len(ids)
         print(f"{rw.name:<46}{told:>10}{len(ids):>9}  {', '.join(ids[:3])}")

@@ -2670,6 +2670,15 @@ QUOTED: dict[str, tuple[str, str]] = {
         'ADS was engaged in autonomous mode. Both vehicles sustained damage and the passenger car left the scene. '
         'Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement'
         ' or correct its reporting with additional information as it may become available.'),
+    'dmvca-waymo-20211219-r262': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 262, column '
+        '"Accident Detail Description")',
+        'On December 19, 2021 at 10:30 AM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, '
+        'CA was in a collision involving a passenger vehicle at Fulton Street and 5th Avenue. At the time of the '
+        'impact, the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the '
+        'driver’s seating position). The Waymo AV was stopped facing southwest on Fulton Street while yielding to '
+        'pedestrians in a crosswalk when a passenger vehicle reversed at a low speed from an adjacent driveway into '
+        'the right rear bumper of the Waymo AV. Both vehicles sustained minor damage.'),
 }
 
 

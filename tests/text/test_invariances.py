@@ -25,7 +25,7 @@ import pytest
 
 from txt2sce_ros.text.extractor import extract
 
-from .invariance import NEW_REWRITES, REWRITES, Rewrite, changed
+from .invariance import C4_REWRITES, NEW_REWRITES, REWRITES, Rewrite, changed
 
 #: Rewritten narratives that still read differently, and why.
 KNOWN: dict[str, set[str]] = {
@@ -99,7 +99,8 @@ KNOWN: dict[str, set[str]] = {
 }
 
 
-@pytest.mark.parametrize("rw", REWRITES + NEW_REWRITES, ids=[r.name for r in REWRITES + NEW_REWRITES])
+@pytest.mark.parametrize("rw", REWRITES + NEW_REWRITES + C4_REWRITES,
+                         ids=[r.name for r in REWRITES + NEW_REWRITES + C4_REWRITES])
 def test_a_rewrite_leaves_the_sketch_as_it_was(rw: Rewrite) -> None:
     told, ids = changed(rw)
     assert told >= 4, "the rewrite no longer applies to the narratives"

@@ -82,3 +82,29 @@ def test_a_vehicle_the_av_was_en_route_behind_is_named_in_passing() -> None:
     assert "was traveling with a test driver present behind a box truck" in QUOTED[rid][1]
     _same_reading(rid, QUOTED[rid][1].replace("was traveling with", "was en route with"))
     assert len(quoted_sketch(rid).npcs) == 1
+
+
+def test_a_rear_bumper_told_as_the_rear_end_is_a_part_not_the_collision_kind() -> None:
+    # Session 22 (helper C4), "rear bumper" -> "rear end" over all 602 studyable narratives: 16 of 90 read
+    # differently. csvr-cruise-20200129-s50 (study2 W): "another vehicle, changing into the Cruise AV's lane from
+    # the left adjacent lane, made contact with the rear bumper of the Cruise AV" is a side swipe; told "the rear
+    # end of the Cruise AV", any "rear end" in the text made the collision a rear-end (as "rear-ended" does).
+    rid = "csvr-cruise-20200129-s50"
+    assert quoted_sketch(rid).collision.type == "side_swipe"
+    _same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
+    # dmvca-waymo-20211219-r262 (dev gold W): "a passenger vehicle reversed at a low speed from an adjacent driveway
+    # into the right rear bumper of the Waymo AV": told "into the right rear end", the move into a part of the AV
+    # was no contact (the collision lost).
+    rid = "dmvca-waymo-20211219-r262"
+    assert quoted_sketch(rid).collision.with_ == "npc1"
+    _same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
+
+
+def test_the_rear_of_the_av_told_as_its_back() -> None:
+    # nhtsa-sgo-ads-30270-6337-v1 (study6 W): "until the front of the pickup truck was touching the rear of the
+    # Waymo AV. The pickup truck then slowly pushed into the rear of the Waymo AV": told "the back of", neither the
+    # touching nor the push was a contact (the collision lost).
+    rid = "nhtsa-sgo-ads-30270-6337-v1"
+    assert quoted_sketch(rid).collision.with_ == "npc1"
+    _same_reading(rid, QUOTED[rid][1].replace("the rear of the Waymo AV", "the back of the Waymo AV"))
+

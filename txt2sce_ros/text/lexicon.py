@@ -218,6 +218,10 @@ OBSTACLE_HEADS: dict[str, str] = {
 #: Words that make a vehicle mention a parked one (an obstacle unless it later moves).
 PARKED_WORDS = compile_gated(r"\b(?:double[- ]parked|parallel[- ]parked|parked|unoccupied|unattended|abandoned)\b", re.I)
 
+#: A part of the AV a move can end in ("into the right rear bumper of EGO"); "end" and "back" as other reporters name
+#: the rear ("into the right rear end of EGO", "pushed into the back of EGO").
+_AV_PART = r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front|end|back|windshield|windscreen|window|roof)"
+
 #: Contact between two parties.
 CONTACT = compile_gated(
     r"\b(?:made\s+(?:light\s+|minor\s+|slight\s+)?contact|making\s+(?:light\s+)?contact|makes?\s+contact|"
@@ -241,9 +245,9 @@ CONTACT = compile_gated(
     # (a thing flying at the AV: "a piece of debris flew into the windshield of EGO")
     r"flew|fell|bounced|blew|landed)"
     r"(?=[^.;]{0,60}?\binto\s+(?:(?:the\s+)?(?:[\w-]+\s+){0,3}"
-    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front|windshield|windscreen|window|roof)\s+of\s+"
+    rf"{_AV_PART}\s+of\s+"
     r"EGO\b|EGO's\s+(?:[\w-]+\s+){0,3}"
-    r"(?:bumper|side|door|fender|corner|mirror|panel|hood|quarter|rear|front|windshield|windscreen|window|roof)\b))|"
+    rf"{_AV_PART}\b))|"
     r"(?:jumped|climbed|leaped|leapt|landed)\s+(?:up\s+)?onto\s+(?:the\s+)?(?:hood|roof|windshield|bumper|trunk)\s+of\s+EGO|"
     r"broadsid(?:ed|ing|es)|"  # ("broadsided the AV": struck it side-on, as "T-boned")
     r"bottom(?:ed|ing)\s+out|t-?bon(?:ed|ing|es)|"  # the underbody meeting the pavement: a contact (with no party, sketch.md)
@@ -259,7 +263,8 @@ CONTACT = compile_gated(
     r"flew|fell|bounced|blew)\s+"
     r"(?:\w+ly\s+)?(?:forward\s+|backward\s+|backwards\s+|back\s+|up\s+)?into\s+EGO\b(?!'s)|"
     # parts touching at the contact ("until the front of the pickup truck was touching the rear of the Waymo AV")
-    r"(?:was|were|is|are)\s+touching(?=\s+(?:the\s+)?(?:[\w-]+\s+){0,3}(?:bumper|side|door|fender|corner|rear|front)"
+    r"(?:was|were|is|are)\s+touching(?=\s+(?:the\s+)?(?:[\w-]+\s+){0,3}(?:bumper|side|door|fender|corner|rear|front|"
+    r"end|back)"
     r"\s+of\s+EGO\b|\s+EGO\b)|"
     # (passives in the present too: some reports are told in the present tense, "contact is made", "is struck")
     r"(?:was|is|were|are)\s+(?:\w+ly\s+)?(?:hit|struck|impacted)|doors?\s+into|contact\s+(?:(?:was|is)\s+made|occurred|occurs)|"
