@@ -542,8 +542,11 @@ C4_REWRITES: tuple[Rewrite, ...] = (
     Rewrite("the <operator> AV -> Unit 1", _numbered_av("Unit 1")),
     Rewrite("the <operator> AV -> Party 1", _numbered_av("Party 1")),
     Rewrite("the <operator> AV -> the autonomous test vehicle", _sub(_AV_NAME, r"\1he autonomous test vehicle")),
+    Rewrite("the <party> -> V2 (numbered after its first naming)", _party_labelled("V2")),
+    Rewrite("the <party> -> Party 2", _party_labelled("Party 2")),
+    Rewrite("the AV and the party -> Vehicle 1 / Vehicle 2", _party_labelled("Vehicle 2", "Vehicle 1")),
+    Rewrite("the AV and the party -> Unit 1 / Unit 2", _party_labelled("Unit 2", "Unit 1")),
 )
-
 
 def _clause_after(t: str) -> str:
     """"While the Waymo AV remained stopped, a car made contact." -> "A car made contact while the Waymo AV remained

@@ -108,3 +108,24 @@ def test_the_rear_of_the_av_told_as_its_back() -> None:
     assert quoted_sketch(rid).collision.with_ == "npc1"
     _same_reading(rid, QUOTED[rid][1].replace("the rear of the Waymo AV", "the back of the Waymo AV"))
 
+
+def test_a_party_numbered_after_its_first_naming_keeps_its_noun() -> None:
+    # Session 22 (helper C4), the party numbered as police number it ("a passenger car (V2)" at its first naming,
+    # "V2" after it): 11 of 209 studyable narratives so reworded read differently. nhtsa-sgo-ads-30270-9552-v1
+    # (study3 W): "A passenger car traveling directly in front of the Waymo AV started to reverse ... The passenger
+    # car continued to reverse and the rear of the passenger car made contact with the front of the Waymo AV". The
+    # label was read back as "the car" (not "the passenger car"), and a label opening a sentence gave it a
+    # lower-case article: the sentence was not split there, and its reverse was given to the AV too (`khk`).
+    rid = "nhtsa-sgo-ads-30270-9552-v1"
+    text = QUOTED[rid][1]
+    at = text.index("a passenger car") + len("a passenger car")
+    reworded = text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:])
+    assert reworded.count("V2") >= 3
+    _same_reading(rid, reworded)
+    # nhtsa-sgo-ads-30270-8617-v1 (study5 W): "The passenger car that was following closely behind the Waymo AV"
+    # told "V2 that was following": the party was placed in the left lane, a side swipe.
+    rid = "nhtsa-sgo-ads-30270-8617-v1"
+    text = QUOTED[rid][1]
+    at = text.index("a passenger car") + len("a passenger car")
+    _same_reading(rid, text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:]))
+

@@ -458,11 +458,19 @@ def normalise(text: str) -> str:
     # "An SUV (Vehicle 2) ... Vehicle 2 continued": the numbered name becomes the noun it was given to.
     # (The label alone is looked for first: a scan for a word before it tries every position of the text.)
     numbered = fre.search(r"\((?:vehicle|car|v)\s*#?\s*[2-9]\)", t, re.I) is not None
-    for m in fre.finditer(r"\b(?:([A-Za-z][\w-]*)\s+)?([A-Za-z][\w-]*)\s*\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t,
-                          re.I) if numbered else ():
+    for m in fre.finditer(r"\b(?:(?:([A-Za-z][\w-]*)\s+)?([A-Za-z][\w-]*)\s+)?([A-Za-z][\w-]*)\s*"
+                          r"\((?:vehicle|car|v)\s*#?\s*([2-9])\)", t, re.I) if numbered else ():
         # "A Ford Explorer (Vehicle 2)": the make and the model name the party; the model alone is no party noun.
-        head = f"{m.group(1)} {m.group(2)}" if (m.group(1) or "").lower() in MAKES else m.group(2)
-        t = fre.sub(rf"\b(?:vehicle|car|v)\s*#?\s*{m.group(3)}\b(?!\))", f"the {head}", t, flags=re.I)
+        # So does a noun of two or three words ("a passenger vehicle (V2) ... V2 then attempted", "a sport utility
+        # vehicle (Vehicle 2)"): "the vehicle" alone is a looser name the rules may give another party (session 22:
+        # with "V2" for the party's later mentions, 11 of 209 studyable narratives read differently, the party's
+        # moves given to the AV or a second party made).
+        two, three = f"{m.group(2)} {m.group(3)}", f"{m.group(1)} {m.group(2)} {m.group(3)}"
+        head = three if three.lower() in PARTY_HEADS else two if (m.group(2) or "").lower() in MAKES or \
+            two.lower() in PARTY_HEADS else m.group(3)
+        # ("V2 continued to reverse": the name opens a sentence, so does its article, as the splitter expects)
+        t = fre.sub(rf"(^|[.!?]\s+)?\b(?:vehicle|car|v)\s*#?\s*{m.group(4)}\b(?!\))",
+                    lambda x, h=head: f"{x.group(1)}The {h}" if x.group(1) is not None else f"the {h}", t, flags=re.I)
     t = _label_digits(t)
     # "A Zoox vehicle (Vehicle 1) in autonomous mode ... Vehicle 1 applied its brakes": the number names the AV.
     one = fre.search(r"\(\s*(?:vehicle|car|v)\s*#?\s*1\s*\)", t, re.I)
