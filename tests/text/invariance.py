@@ -532,6 +532,9 @@ C4_REWRITES: tuple[Rewrite, ...] = (
     Rewrite("Street/Avenue/Boulevard/Road -> St/Ave/Blvd/Rd (no period)", _sub(
         r"\b(Street|Avenue|Boulevard|Road)\b",
         lambda m: {"Street": "St", "Avenue": "Ave", "Boulevard": "Blvd", "Road": "Rd"}[m.group(1)])),
+    Rewrite("the intersection of A and B / with A -> the A/B intersection / the A intersection", _subs(
+        (rf"\bthe intersection of ({_A_STREET}) and ({_A_STREET})", r"the \1/\2 intersection"),
+        (rf"\bthe intersection with ({_A_STREET})", r"the \1 intersection"))),
     Rewrite("two-lane, two lanes -> 2-lane, 2 lanes", _sub(r"\b(two|three|four|five|six)([- ]lanes?)\b", lambda m: {
         "two": "2", "three": "3", "four": "4", "five": "5", "six": "6"}[m.group(1).lower()] + m.group(2), re.I)),
     Rewrite("at <time> -> at approximately <time>",

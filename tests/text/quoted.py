@@ -2679,6 +2679,14 @@ QUOTED: dict[str, tuple[str, str]] = {
         'driver’s seating position). The Waymo AV was stopped facing southwest on Fulton Street while yielding to '
         'pedestrians in a crosswalk when a passenger vehicle reversed at a low speed from an adjacent driveway into '
         'the right rear bumper of the Waymo AV. Both vehicles sustained minor damage.'),
+    'dmvca-cruise-20230321-r442': (
+        'github:galravid/Autonomous-Vehicle-Accidents@1547d38 CA_AV_Collision_2019-2024.csv (row 442, column '
+        '"Accident Detail Description")',
+        'A Cruise autonomous vehicle ("Cruise AV"), operating in driverless autonomous mode, was traveling ea'
+        'stbound on Clay Street between Hyde Street and Leavenworth Street. Shortly before the intersection w'
+        'ith Leavenworth Street, the Cruise AV made contact with a downed power cable on Clay Street and came'
+        ' to a stop. This caused damage to the Cruise AV’s front driver side radar assembly. There were no in'
+        'juries.'),
 }
 
 

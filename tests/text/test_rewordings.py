@@ -129,3 +129,22 @@ def test_a_party_numbered_after_its_first_naming_keeps_its_noun() -> None:
     at = text.index("a passenger car") + len("a passenger car")
     _same_reading(rid, text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:]))
 
+
+def test_a_junction_named_by_its_streets_before_the_noun() -> None:
+    # Session 22 (helper C4), "the intersection with X" told "the X intersection" as police write it: 10 of 131
+    # studyable narratives so reworded read differently (the junction's words, "before", "near", "crossed", were
+    # read only before "the intersection"). dmvca-cruise-20230321-r442 (dev gold W): "traveling eastbound on Clay
+    # Street between Hyde Street and Leavenworth Street. Shortly before the intersection with Leavenworth Street,
+    # the Cruise AV made contact with a downed power cable": told "Shortly before the Leavenworth Street
+    # intersection", the road read a junction.
+    rid = "dmvca-cruise-20230321-r442"
+    assert quoted_sketch(rid).road.layout == "straight"
+    _same_reading(rid, QUOTED[rid][1].replace("the intersection with Leavenworth Street",
+                                              "the Leavenworth Street intersection"))
+    # dmvca-cruise-20200725-r132 (dev gold W): "on westbound Taraval Street near the intersection with 21st Avenue"
+    rid = "dmvca-cruise-20200725-r132"
+    assert "near the intersection with 21st Avenue" in QUOTED[rid][1]
+    _same_reading(rid, QUOTED[rid][1].replace("the intersection with 21st Avenue", "the 21st Avenue intersection"))
+    # nhtsa-sgo-ads-30270-7012-v1 (study4 W): "After the Waymo AV crossed the intersection with [XXX], an SUV ..."
+    rid = "nhtsa-sgo-ads-30270-7012-v1"
+    _same_reading(rid, QUOTED[rid][1].replace("the intersection with [XXX]", "the [XXX] intersection"))
