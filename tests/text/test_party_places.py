@@ -581,6 +581,12 @@ def test_a_party_that_touched_the_av_backing_up_was_ahead_or_alongside_not_behin
     # it backs from ahead or alongside: R5, on the side it was read on (gold R5/right, `k`).
     p = _party("nhtsa-sgo-ads-30270-9285-v1")
     assert (p.position, p.lane, p.actions) == ("R5", "right", "k")
+    # The backing told by any of its verbs reads the same: the rule reads the string, not the words.
+    for verb in ("began backing up", "reversed", "rolled backward", "was reversing"):
+        text = (f"The Waymo AV was stopped in traffic. A box truck in the adjacent right lane {verb} and made contact "
+                "with the rear passenger side of the Waymo AV.")
+        p = extract(text, "t").npcs[0]
+        assert (p.position, p.lane, p.actions) == ("R5", "right", "k"), verb
     # A party behind that moves forward again before the contact stays behind ("reversed briefly and then drove
     # around EGO on the left": R6).
     text = ("The Waymo AV was stopped in a parking lot for a passenger drop off when a passenger car immediately behind "
