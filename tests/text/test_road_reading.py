@@ -131,3 +131,16 @@ def test_a_queue_at_the_cross_street_the_summary_names_is_at_the_junction() -> N
     assert _layout("dmvca-waymo-20220605-r349") == "junction4"
     # "on W. Jefferson Boulevard near La Brea Avenue ... was stopped in traffic": near a cross street is no junction.
     assert _layout("csvr-waymo-20240801-s325") == "straight"
+
+
+def test_a_junction_told_only_after_the_contact_is_not_the_scene() -> None:
+    # dmvca-cruise-20230321-r442 (official dev gold `straight`): "Shortly before the intersection with Leavenworth
+    # Street, the Cruise AV made contact with a downed power cable on Clay Street and came to a stop." Mid-block.
+    report = "dmvca-cruise-20230321-r442"
+    assert _layout(report) == "straight"
+    # Where the AV went after the contact (moved on through the junction, pulled over at a corner) does not move
+    # the place of the interaction: the layout is read from the story up to the contact, as the road's other facts.
+    after = _TEXTS[report][1].replace(
+        "came to a stop. ", "came to a stop. The Cruise AV was then moved through the intersection with Leavenworth "
+        "Street to the curb. ")
+    assert extract(after, report).road.layout == "straight"

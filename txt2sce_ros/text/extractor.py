@@ -229,7 +229,11 @@ def extract_weighed(text: str, report_id: str) -> tuple[Sketch, tuple[str, ...]]
         ms = [m for m in e.mentions if m.sent not in summary] or e.mentions
         p = (ms[0].sent, ms[0].start)
         first_pos = p if first_pos is None or p < first_pos else first_pos
-    junction = d.junction = is_junction([s if not BOILERPLATE.search(s) else "" for s in sents],
+    # Where the interaction happened is read from the story up to the contact, as the road's other facts are: a
+    # junction told only after it ("then pulled over past the intersection", "the police met them at the corner")
+    # is no part of the scene.
+    told = len(sents) if d.contact_sent is None else d.contact_sent + 1
+    junction = d.junction = is_junction([s if k < told and not BOILERPLATE.search(s) else "" for k, s in enumerate(sents)],
                                         first_pos[0] if first_pos else 0, frozenset(summary))
     first_is_party = bool(parties) and (not obstacles or min(
         (([m for m in e.mentions if m.sent not in summary] or e.mentions)[0].sent,
