@@ -264,7 +264,10 @@ REWRITES: tuple[Rewrite, ...] = (
     Rewrite("the <operator> AV -> the autonomous vehicle",
             _sub(r"\b([Tt])he (?:Waymo|Cruise|Zoox) (?:AV|vehicle)\b", r"\1he autonomous vehicle")),
     Rewrite("the <operator> AV -> the robotaxi", _sub(r"\b([Tt])he (?:Waymo|Cruise|Zoox) (?:AV|vehicle)\b", r"\1he robotaxi")),
-    Rewrite("in the <side> lane -> in the lane on the <side>", _sub(r"\bin the (left|right) lane\b", r"in the lane on the \1")),
+    # (not before "of": "in the left lane of traffic" told "in the lane on the left of traffic" places the lane by
+    # traffic's side; session 22 corrected the measure: 2 of its 4 changed narratives were so rewritten)
+    Rewrite("in the <side> lane -> in the lane on the <side>",
+            _sub(r"\bin the (left|right) lane\b(?! of\b)", r"in the lane on the \1")),
     Rewrite("made contact with -> impacted", _sub(r"\bmade contact with\b", "impacted")),
     Rewrite("lane of travel -> lane", _sub(r"\blane of travel\b", "lane")),
     Rewrite("proceeding -> moving", _sub(r"\bproceeding\b", "moving")),

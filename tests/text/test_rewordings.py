@@ -148,3 +148,16 @@ def test_a_junction_named_by_its_streets_before_the_noun() -> None:
     # nhtsa-sgo-ads-30270-7012-v1 (study4 W): "After the Waymo AV crossed the intersection with [XXX], an SUV ..."
     rid = "nhtsa-sgo-ads-30270-7012-v1"
     _same_reading(rid, QUOTED[rid][1].replace("the intersection with [XXX]", "the [XXX] intersection"))
+
+
+def test_a_run_told_in_the_simple_past_or_by_moving_is_on_a_road() -> None:
+    # Session 22 (helper C4): "was traveling" told "traveled" (4 of 301 studyable narratives read differently, 3 of
+    # them by the road) or "was moving" / "was operating north" (1 + 1 by the road). nhtsa-sgo-ads-30270-9183-v1
+    # (study6 W): "The Waymo AV was traveling north on [XXX] behind a passenger car that was traveling in the same
+    # direction": with the streets redacted, "traveling" was the only word placing the run on a road; told
+    # "traveled", the road read unknown and the sketch was refused for it.
+    rid = "nhtsa-sgo-ads-30270-9183-v1"
+    assert quoted_sketch(rid).road.layout == "straight"
+    _same_reading(rid, QUOTED[rid][1].replace("was traveling", "traveled"))
+    _same_reading(rid, QUOTED[rid][1].replace("was traveling north", "was operating north"))
+    _same_reading(rid, QUOTED[rid][1].replace("was traveling", "was moving"))

@@ -124,6 +124,11 @@ _LOT_EDGE = compile_gated(r"\b(?:(?:entrance|entry|exit|driveway|gate)\s+(?:of|t
 _CURVE = compile_gated(r"\b(?:curve|curved|curves|curving|curvature|curvy|bend|bends|winding)\b", re.I)
 _ROADWAY = compile_gated(r"\b(?:street|st\b|avenue|ave\b|road|rd\b|boulevard|blvd|drive|highway|hwy|freeway|"
                       r"interstate|i-\d+|expressway|parkway|pkwy|lane|roadway|block|way\b|traveling|travelling|"
+                      # (the run told in the simple past, as some reporters tell it: "The Waymo AV traveled north on
+                      # [XXX] behind a passenger car")
+                      # (or by a verb of motion, and a heading: "was moving in autonomous mode on southbound [XXX]",
+                      # "was operating north on [XXX]")
+                      r"traveled|travelled|drove|moving|operating\s+(?:north|south|east|west)|"
                       # (a run told by another verb of going on a road: "was en route north on [XXX]"; a bare "was in
                       # motion" names no place)
                       r"driving|proceeding|heading|headed|cruising|navigating|en\s+route|"
