@@ -2497,6 +2497,22 @@ QUOTED: dict[str, tuple[str, str]] = {
         "V. At the time of the impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. Both vehicles su"
         'stained damage. Waymo is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waym'
         'o may supplement or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-6150-v1': (
+        'github:vanshagg233/Risk_Function SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6150, version 1, c'
+        'olumn "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On August [XXX], 2023 at 6:38 PM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, Arizona w'
+        'as in a collision involving a pickup truck on [XXX] at [XXX]. The Waymo AV was stopped at a red light in '
+        'the middle lane, facing northbound on [XXX] at [XXX]. When the light turned green, the pickup truck in th'
+        'e left turn lane to the left of the Waymo AV did not immediately proceed, and the Waymo AV attempted to m'
+        'erge into the left lane and make a left turn onto westbound [XXX] to pick up a rider that had hailed the '
+        'Waymo AV while the vehicle was waiting at the red light. As the Waymo AV moved into the left lane, the ad'
+        'jacent pickup truck began to proceed forward and made contact with the drivers side of the Waymo AV. At t'
+        'he time of the impact, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained '
+        'damage. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a veh'
+        'icle involved was towed away. Waymo may supplement or correct its reporting with additional information a'
+        's it may become available. This report was originally submitted to NHTSA on August 19, 2023 via emailed .'
+        'pdf because NHTSAs online portal was offline for maintenance. Waymo submitted this report again via the r'
+        'e-opened portal on August 20, 2023.'),
     'nhtsa-sgo-ads-30270-6337-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6337, vers'
         'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

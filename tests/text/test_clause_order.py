@@ -37,3 +37,16 @@ def test_the_av_s_move_told_after_the_party_s_clause_opens_the_interaction() -> 
     # AV's stop fell after the party's clause: stopped '' instead of `ah`.
     rid = "nhtsa-sgo-ads-30270-9905-v1"
     _same_reading(rid, _clause_after(QUOTED[rid][1]))
+
+
+def test_the_av_s_move_retold_after_the_contact_ends_its_string() -> None:
+    # nhtsa-sgo-ads-30270-6150-v1 (dev gold W): "... EGO attempted to merge into the left lane and make a left turn
+    # onto westbound [XXX] ... As the Waymo AV moved into the left lane, the adjacent pickup truck began to proceed
+    # forward and made contact with the drivers side of the Waymo AV." Told "The adjacent pickup truck ... made
+    # contact with the drivers side of the Waymo AV as the Waymo AV moved into the left lane.", the lane change told
+    # again after the contact was not read as the move the contact came in, so the turn it only meant to make next
+    # joined the string: `ifdf` instead of `if`. (sequences._RETOLD: the clause of the same moment about the AV is
+    # read wherever the sentence tells it.)
+    rid = "nhtsa-sgo-ads-30270-6150-v1"
+    _same_reading(rid, _clause_after(QUOTED[rid][1]))
+    assert (quoted_sketch(rid).ego.start, quoted_sketch(rid).ego.actions) == ("stopped", "if")

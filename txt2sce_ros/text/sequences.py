@@ -627,7 +627,10 @@ def _done_before(d: Doc, a: Act) -> bool:
 
 
 _AFTER = compile_gated(r"\bafter\s+(?:having\s+|(?:it|EGO)\s+had\s+)?$", re.I)
-_RETOLD = compile_gated(r"^\W*(?:as|while|when|just\s+as)\s+EGO\s+(?:was\s+)?$", re.I)
+#: A clause of the same moment about the AV, opening the sentence ("As EGO moved into the left lane, the pickup made
+#: contact") or told after the contact's clause ("the pickup ... made contact with the drivers side of EGO as EGO moved
+#: into the left lane"): where it ends at the act, the act is the AV's move when the contact came.
+_RETOLD = compile_gated(r"(?:^\W*|[\s,])(?:as|while|when|just\s+as)\s+EGO\s+(?:was\s+)?$", re.I)
 
 
 def _ended_in_retold_move(d: Doc, acts: list[Act]) -> list[Act]:
@@ -636,7 +639,7 @@ def _ended_in_retold_move(d: Doc, acts: list[Act]) -> list[Act]:
     during that move, so the string ends with it, and what was told between (the turn it meant to make next) had not
     happened (sketch.md: strings end at the contact)."""
     for k, a in enumerate(acts):
-        if a.sent != d.contact_sent or a.code not in "defgjklF" or not _RETOLD.match(d.sents[a.sent][:a.pos]):
+        if a.sent != d.contact_sent or a.code not in "defgjklF" or not _RETOLD.search(d.sents[a.sent][:a.pos]):
             continue
         first = next((j for j in range(k) if acts[j].code == a.code and acts[j].sent < a.sent), None)
         if first is not None and any(x.code not in "aA" for x in acts[first + 1:k]):
