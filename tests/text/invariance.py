@@ -556,9 +556,38 @@ C4_REWRITES: tuple[Rewrite, ...] = (
 
 def _clause_after(t: str) -> str:
     """"While the Waymo AV remained stopped, a car made contact." -> "A car made contact while the Waymo AV remained
-    stopped.": an opening clause of the same moment told after its main clause."""
-    return re.sub(r"(?:(?<=^)|(?<=\. ))(While|As) ([^,.]{5,90}?), ([a-z][^.]{10,300}?)\.",
-                  lambda m: f"{m.group(3)[0].upper()}{m.group(3)[1:]} {m.group(1).lower()} {m.group(2)}.", t)
+    stopped.": an opening clause of the same moment told after its main clause. (Session 22: not where the main
+    clause runs on past a sentence that lacks its period, "... with [XXX] The Waymo AV came to a stop", nor where
+    the opening clause is only the mode aside "While in autonomous mode": moved, those change what they tell.)"""
+    return _opening_clause_after(t, "While|As")
+
+
+def _opening_clause_after(t: str, words: str) -> str:
+    """"<Word> <clause>, <main>." -> "<Main> <word> <clause>." for the opening words `words` ("After|Before"); for
+    words other than While/As only a main clause with no comma (the clause moved after "..., damaging the tire"
+    would tell of the damage) and no opening pronoun (moved before its antecedent, "it" would name another)."""
+    def moved(m: re.Match[str]) -> str:
+        if re.search(r"\] [A-Z]", m.group(3)) or re.fullmatch(r"in (?:\w+ )?(?:autonomous|manual) mode", m.group(2)):
+            return m.group(0)
+        if words != "While|As" and ("," in m.group(3) or re.match(r"(?:it|they|he|she)\b", m.group(3))):
+            return m.group(0)
+        return f"{m.group(3)[0].upper()}{m.group(3)[1:]} {m.group(1).lower()} {m.group(2)}."
+    return re.sub(rf"(?:(?<=^)|(?<=\. ))({words}) ([^,.]{{5,90}}?), ([a-z][^.]{{10,300}}?)\.", moved, t)
+
+
+def _trailing_clause_first(t: str) -> str:
+    """"A car made contact with the Waymo AV as the Waymo AV began to proceed." -> "As the Waymo AV began to
+    proceed, a car made contact with the Waymo AV.": a clause of the same moment with its own subject, told after its
+    main clause, told first (the other way round from `_clause_after`; not "such as", "as well as")."""
+    def moved(m: re.Match[str]) -> str:
+        main = m.group(1)
+        if re.search(r"\b(?:such|well|same|so|known|identified|described)$", main) or re.search(r"\] [A-Z]", main) \
+                or m.group(3).startswith("it "):  # ("it" told before its antecedent would name another)
+            return m.group(0)
+        if re.match(r"(?:The|A|An|It)\b", main):
+            main = main[0].lower() + main[1:]
+        return f"{m.group(2).capitalize()} {m.group(3)}, {main}."
+    return re.sub(r"(?:(?<=^)|(?<=\. ))([A-Z][^.,;]{10,300}?) (as|while) ((?:the|a|an|it)\b[^,.;]{5,150})\.", moved, t)
 
 
 def _when_to_as(t: str) -> str:
@@ -576,6 +605,16 @@ def _when_to_as(t: str) -> str:
 CLAUSE_ORDER: tuple[Rewrite, ...] = (
     Rewrite("While/As <clause>, <main>. -> <Main> while/as <clause>.", _clause_after),
     Rewrite("The AV was <...> when a <party> ... -> A <party> ... as the AV was <...>", _when_to_as),
+)
+
+#: Session 22 (helper C3): more clause orders a new reporter brings, each keeping the order of events ("After X, Y"
+#: and "Y after X"; "When X, Y" and "Y when X"; "Y. Then X" and "Y, after which X"), measured like CLAUSE_ORDER.
+C3_CLAUSE_ORDER: tuple[Rewrite, ...] = (
+    Rewrite("After <clause>, <main>. -> <Main> after <clause>.", lambda t: _opening_clause_after(t, "After")),
+    Rewrite("When <clause>, <main>. -> <Main> when <clause>.", lambda t: _opening_clause_after(t, "When")),
+    Rewrite("Before <clause>, <main>. -> <Main> before <clause>.", lambda t: _opening_clause_after(t, "Before")),
+    Rewrite("<Main> as/while <the X ...>. -> As/While <the X ...>, <main>.", _trailing_clause_first),
+    Rewrite("'. Then a' -> ', after which a'", _sub(r"\. Then (a|an|the) ", r", after which \1 ")),
 )
 
 
@@ -648,7 +687,7 @@ def main() -> None:
     print(f"{'all':<46}{total_told:>10}{total_changed:>9}  ({total_changed / max(1, total_told):.1%} of rewritten "
           f"narratives read differently)")
     print("clause order (measured, not held):")
-    for rw in CLAUSE_ORDER:
+    for rw in CLAUSE_ORDER + C3_CLAUSE_ORDER:
         told, ids = changed(rw, corpus)
         print(f"{rw.name:<46}{told:>10}{len(ids):>9}  {', '.join(ids[:3])}")
 
