@@ -500,19 +500,23 @@ _A_STREET = r"(?:\[XXX\]|(?:\d+(?:st|nd|rd|th)|[A-Z]\w*)(?: [A-Z]\w*){0,3})"
 _NUMBERED = r"\b(?:V|Vehicle |vehicle |Veh\.? ?|Unit |Party |#)\d\b|\bV-\d\b"
 
 
-def _party_labelled(label: str, av: str | None = None) -> Callable[[str], str]:
+def _party_labelled(label: str, av: str | None = None, *, role: bool = False) -> Callable[[str], str]:
     """The party numbered as police and DMV forms number it: "a passenger car" -> "a passenger car (V2)" at its
-    first naming and "the passenger car" -> "V2" after it; with `av`, the AV numbered too ("the Waymo AV" -> "V1").
-    Only where the narrative names one kind of party, with no other, second or parked one, and numbers no vehicle
-    (two parties of one noun would be one label for two)."""
+    first naming and "the passenger car" -> "V2" after it; with `av`, the AV numbered too ("the Waymo AV" -> "V1");
+    with `role`, the party named after its first naming by the role an insurer or a form gives it ("the passenger
+    car" -> "the other party", "the third-party vehicle"). Only where the narrative names one kind of party, with no
+    other, second, lead or parked one, and numbers no vehicle (two parties of one noun would be one label for two)."""
     def apply(t: str) -> str:
         nouns = {m.group(1) for m in re.finditer(rf"\b(?:[Aa]n?|[Tt]he) ({_ONE_PARTY_NOUN})\b", t)}
-        if len(nouns) != 1 or re.search(r"\b(?:another|second|other|two|both|parked)\b", t) or re.search(_NUMBERED, t):
+        if len(nouns) != 1 or re.search(r"\b(?:another|second|other|two|both|parked|lead|motorcyclist)\b", t) or \
+                re.search(_NUMBERED, t):
             return t
         noun = nouns.pop()
         m = re.search(rf"\b[Aa]n? {noun}\b", t)
         if not m:
             return t
+        if role:
+            return t[:m.end()] + re.sub(rf"\b([Tt])he {noun}\b", lambda x: f"{x.group(1)}he {label}", t[m.end():])
         told = t[:m.end()] + f" ({label})" + re.sub(rf"\b[Tt]he {noun}\b", label, t[m.end():])
         return re.sub(_AV_NAME, av, told) if av else told
     return apply
@@ -552,6 +556,11 @@ C4_REWRITES: tuple[Rewrite, ...] = (
     Rewrite("the <party> -> Party 2", _party_labelled("Party 2")),
     Rewrite("the AV and the party -> Vehicle 1 / Vehicle 2", _party_labelled("Vehicle 2", "Vehicle 1")),
     Rewrite("the AV and the party -> Unit 1 / Unit 2", _party_labelled("Unit 2", "Unit 1")),
+    Rewrite("the <party> (after its first naming) -> the other party", _party_labelled("other party", role=True)),
+    Rewrite("the <party> (after its first naming) -> the third-party vehicle",
+            _party_labelled("third-party vehicle", role=True)),
+    Rewrite("the <party> (after its first naming) -> the other vehicle", _party_labelled("other vehicle", role=True)),
+    Rewrite("the <party> (after its first naming) -> the other motorist", _party_labelled("other motorist", role=True)),
 )
 
 def _clause_after(t: str) -> str:

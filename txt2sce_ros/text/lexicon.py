@@ -138,7 +138,8 @@ PARTY_HEADS: dict[str, str] = {
     # the NHTSA SGO form's role names for the other party, which narratives copy: "the Crash Partner (CP)", "the
     # other vehicle (OV)", "a third-party vehicle (TPV)", "a privately owned vehicle (POV)"; a vehicle unless the text
     # says what it was ("the CP, a cyclist": `mentions.ROLE_HEADS`)
-    "crash partner": "car", "cp": "car", "ov": "car", "tpv": "car", "pov": "car",
+    "crash partner": "car", "cp": "car", "ov": "car", "tpv": "car", "pov": "car", "other party": "car",
+    "third-party vehicle": "car", "third party vehicle": "car",
 }
 #: Plural heads: groups ("pedestrians in the crosswalk", "traffic") never count as a party.
 GROUP_HEADS = ("vehicles", "cars", "pedestrians", "cyclists", "bicyclists", "trucks", "people", "traffic",

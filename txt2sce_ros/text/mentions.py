@@ -755,7 +755,8 @@ _GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"
 #: Names of a vehicle by who drives it, as general as "a vehicle" ("a motorist ... the passenger vehicle").
 _DRIVER_NAMES = frozenset({"motorist", "agent"})
 #: Role names for the other party ("the CP", "the OV"): they name whichever party the report is about, of any kind.
-ROLE_HEADS = frozenset({"crash partner", "cp", "ov", "tpv", "pov"})
+ROLE_HEADS = frozenset({"crash partner", "cp", "ov", "tpv", "pov", "other party", "third-party vehicle",
+                        "third party vehicle"})
 _BARE = {"vehicle", "car", "automobile"}  # generic heads the narratives also use for the AV
 _LOCATIVE_AFTER = compile_gated(r"^\s*(?:behind|in\s+front|ahead|next\s+to|beside|to\s+the|directly|immediately|"
                              r"following|traveling|that|which|in\s+the|"

@@ -771,6 +771,19 @@ _REAR_END_TOLD = compile_gated(r"\brear[- ]end(?:ed|ing)\b|\brear-ends\b|"
                                r"\b(?:to|would|could|did|not)\s+rear[- ]end\b", re.I)
 
 
+_SIDE_OF = compile_gated(r"\bside\s+of\s+(?:the\s+|an?\s+)?(?:[\w-]+\s+){0,2}$", re.I)
+
+
+def _side_of_long_partner(d: Doc, partner: Entity) -> bool:
+    """Did the contact meet the side of a truck, a bus or a pickup, however the contact's sentence names it ("the side
+    of the pickup truck", and of the same party called "the pickup", "the other vehicle", "the third-party vehicle"
+    there)? The partner's kind is its first naming's, not the noun the sentence happens to use."""
+    long = any(w in ("truck", "bus", "pickup") for h in partner.heads for w in h.replace("-", " ").split())
+    s = d.sents[d.contact_sent] if d.contact_sent is not None else ""
+    return long and any(m.sent == d.contact_sent and _SIDE_OF.search(s, max(0, m.start - 40), m.start)
+                        for m in partner.mentions)
+
+
 def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle: bool, ego_actions: str) -> str:
     if d.contact_sent is None:
         return "none"
@@ -818,7 +831,7 @@ def collision_type(d: Doc, partner: Entity | None, party: Party | None, obstacle
         # (a party passing the AV as they touch, "passing the Waymo AV on the left, and the cyclist made contact",
         # met it along its side)
         if fre.search(r"\bside\s+of\s+the\s+(?:\w+\s+)?(?:truck|bus)|\bmirror|\bpass(?:ed|ing)\s+(?:the\s+)?EGO\b", s,
-                      re.I):
+                      re.I) or _side_of_long_partner(d, partner):
             return "side_swipe"
         return "broadside"
     return "other"
