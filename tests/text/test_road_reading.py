@@ -140,7 +140,8 @@ def test_a_junction_told_only_after_the_contact_is_not_the_scene() -> None:
     assert _layout(report) == "straight"
     # Where the AV went after the contact (moved on through the junction, pulled over at a corner) does not move
     # the place of the interaction: the layout is read from the story up to the contact, as the road's other facts.
-    after = _TEXTS[report][1].replace(
-        "came to a stop. ", "came to a stop. The Cruise AV was then moved through the intersection with Leavenworth "
-        "Street to the curb. ")
-    assert extract(after, report).road.layout == "straight"
+    for told_after in ("The Cruise AV was then moved through the intersection with Leavenworth Street to the curb.",
+                       "The Cruise AV then pulled over at the corner of Clay Street and Leavenworth Street.",
+                       "Police later met the test driver at the traffic light at Leavenworth Street."):
+        after = _TEXTS[report][1].replace("came to a stop. ", f"came to a stop. {told_after} ")
+        assert extract(after, report).road.layout == "straight", told_after
