@@ -50,3 +50,23 @@ def test_the_av_s_move_retold_after_the_contact_ends_its_string() -> None:
     rid = "nhtsa-sgo-ads-30270-6150-v1"
     _same_reading(rid, _clause_after(QUOTED[rid][1]))
     assert (quoted_sketch(rid).ego.start, quoted_sketch(rid).ego.actions) == ("stopped", "if")
+
+
+def test_what_came_before_the_contact_told_after_it() -> None:
+    # csvr-waymo-20220128-s127 (study2 W): "The Waymo AV was stopped at a red light ... After the traffic light turned
+    # green and the Waymo AV had begun to accelerate, the passenger vehicle behind the Waymo AV struck the rear of the
+    # Waymo AV." Told "The passenger vehicle behind the Waymo AV struck the rear of the Waymo AV after the traffic
+    # light turned green and the Waymo AV had begun to accelerate.", the AV's move off was read as told after the
+    # contact ("after" a word of what came next), so the AV stood throughout (stopped '' instead of `i`).
+    # (story.before_contact: a clause opened by "after" with its own subject, told after the contact, tells what came
+    # before it; "after the impact" still tells what came next.) The party's own reading still differs (it reads
+    # `a` instead of `i` from the light: what moves a party off on the green is read in the opening clause only).
+    rid = "csvr-waymo-20220128-s127"
+    reworded = QUOTED[rid][1].replace(
+        "After the traffic light turned green and the Waymo AV had begun to accelerate, the passenger vehicle behind "
+        "the Waymo AV struck the rear of the Waymo AV.",
+        "The passenger vehicle behind the Waymo AV struck the rear of the Waymo AV after the traffic light turned "
+        "green and the Waymo AV had begun to accelerate.")
+    assert reworded != QUOTED[rid][1]
+    sk, other = quoted_sketch(rid), quoted_sketch(rid, reworded)
+    assert (sk.ego.start, sk.ego.actions) == (other.ego.start, other.ego.actions) == ("stopped", "i")

@@ -444,6 +444,10 @@ _NEXT_IN_LIST = compile_gated(r",\s+(?:\w+ly\s+)?[a-z]+ed\s+(?:the|a|an|its|his|
 _BEFORE_IMPACT = compile_gated(r"\b(?:brak(?:ed|ing)|slow(?:ed|ing)|decelerat(?:ed|ing)|applied\s+(?:the\s+)?brakes)\b"
                                r"[^.;]{0,30}?\b(?:before|prior\s+to)\s+(?:the\s+)?(?:impact|contact|collision)\b", re.I)
 _SAME_TIME = compile_gated(r"\b(?:as|while|just\s+as)\b", re.I)
+#: "after" opening a clause of its own (a subject, or a participle: "after EGO had begun", "after the light turned
+#: green", "after having stopped"), not the contact's own aftermath ("after the impact").
+_TOLD_BEFORE = compile_gated(r"\bafter\s+(?!(?:the|this|that|its|an?)\s+(?:\w+\s+)?(?:impact|contact|collision|"
+                             r"incident|crash|accident)\b)(?:EGO|it|the|a|an|having|\w+ing)\b", re.I)
 _LATER = compile_gated(_LATER_WORDS, re.I)
 
 
@@ -461,6 +465,13 @@ def before_contact(d: Doc, sent: int, pos: int) -> bool:
     if listed and listed.start() < pos:
         return False
     after = d.sents[sent][d.contact_pos:pos]
+    # "the passenger vehicle behind EGO struck the rear of EGO after the traffic light turned green and EGO had begun
+    # to accelerate": a clause of what came before the contact, told after it (as "After the traffic light turned
+    # green and EGO had begun to accelerate, the passenger vehicle ... struck" tells it first); its "and" joins what
+    # happened before, up to the sentence's end or a word of what came next.
+    earlier = _TOLD_BEFORE.search(after)
+    if earlier and not _AFTERWARDS.search(after[:earlier.start()]):
+        return not _LATER.search(after[earlier.end():])
     # "walked into EGO's front bumper as the light turned green and EGO began to move": a clause of the same moment
     # ("as", "while") runs to the sentence's end; its "and" joins what happened then, not what came next.
     same_time = _SAME_TIME.search(after)
