@@ -2703,6 +2703,17 @@ QUOTED: dict[str, tuple[str, str]] = {
         'ith Leavenworth Street, the Cruise AV made contact with a downed power cable on Clay Street and came'
         ' to a stop. This caused damage to the Cruise AV’s front driver side radar assembly. There were no in'
         'juries.'),
+    'nhtsa-sgo-ads-30270-5760-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-5760,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On [XXX], 2023 at 09:42 AM PT a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, Arizona wa'
+        's in a collision involving a heavy truck on [XXX], just west of [XXX]. The Waymo AV was traveling we'
+        'stbound on [XXX] when it came to a stop, yielding to a U-Haul box truck that was attempting to rever'
+        'se into a parking lot to the right of the Waymo AV. The truck exited the lot and re-entered the onco'
+        'ming eastbound lane, making contact with the left front end of the Waymo AV. At the time of the impa'
+        'ct, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo '
+        'is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement '
+        'or correct its reporting with additional information as it may become available.'),
 }
 
 

@@ -193,3 +193,16 @@ def test_the_side_of_a_truck_or_bus_named_by_another_noun() -> None:
     # made contact with ..."
     rid = "nhtsa-sgo-ads-30270-9333-v1"
     _same_reading(rid, QUOTED[rid][1].replace("the passenger side of the bus", "the passenger side of the other vehicle"))
+
+
+def test_a_short_noun_names_the_party_told_last_whose_longer_name_holds_it() -> None:
+    # Session 22 (helper C4), "heavy truck" -> "large truck" (2 of 33 studyable narratives read differently).
+    # nhtsa-sgo-ads-30270-5760-v1 (study5 W): "in a collision involving a heavy truck ... yielding to a U-Haul box
+    # truck that was attempting to reverse into a parking lot ... The truck exited the lot and re-entered the oncoming
+    # eastbound lane, making contact with the left front end of the Waymo AV". Told "a large truck" (head "truck"),
+    # the summary's party took "The truck" by its own noun before the box truck the telling had named since: two
+    # trucks, the box truck's backing and the contact parted. A noun that is one word of a party's longer name now
+    # fits it as well as a party's own, and the one told last is taken.
+    rid = "nhtsa-sgo-ads-30270-5760-v1"
+    assert len(quoted_sketch(rid).npcs) == 1
+    _same_reading(rid, QUOTED[rid][1].replace("heavy truck", "large truck"))

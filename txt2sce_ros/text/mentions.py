@@ -989,7 +989,10 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                 # ("involving another vehicle ... The passenger vehicle behind the Waymo AV", "a motorist entered
                 # ... As the passenger car entered": the party named loosely before, not a pickup truck or a lead
                 # vehicle named in between)
-                recent.sort(key=lambda e: (m.head not in e.heads, m.head in _GENERIC and not _loosely_named(e)))
+                # (a noun that is one word of a party's longer name fits it as well as its own: "involving a large
+                # truck ... a U-Haul box truck ... The truck exited the lot" is the box truck, the one told last)
+                recent.sort(key=lambda e: (m.head not in e.heads and not _names_part_of(m.head, e),
+                                           m.head in _GENERIC and not _loosely_named(e)))
             for e in recent:
                 if _struck_by(e, m, sents):
                     continue  # "The other vehicle also made contact with the vehicle in front of them": another
