@@ -2513,6 +2513,16 @@ QUOTED: dict[str, tuple[str, str]] = {
         's it may become available. This report was originally submitted to NHTSA on August 19, 2023 via emailed .'
         'pdf because NHTSAs online portal was offline for maintenance. Waymo submitted this report again via the r'
         'e-opened portal on August 20, 2023.'),
+    'csvr-waymo-20211112-s108': (
+        "github:galravid/Autonomous-Vehicle-Accidents@9e2ce07 'CA_AV_Collision_2019-2024 Reduced.csv' (serial 108,"
+        " column 'Accident Detail Description'), transcribed",
+        'On November 12, 2021 at 1:23 PM PST a Waymo Autonomous Vehicle (“Waymo AV”) operating in San Francisco, C'
+        'A was in a collision involving a passenger vehicle at Divisadero Street at Turk Street. The Waymo AV was '
+        'stopped at a red light on Divisadero Street at Turk Street. When the traffic light turned green, the pass'
+        'enger vehicle behind the Waymo AV made contact with the rear of the Waymo AV. At the time of the impact, '
+        'the Waymo AV’s Level 4 ADS was engaged in autonomous mode, and a test driver was present (in the driver’s'
+        ' seating position). The Waymo AV sustained minor damage, and the trailing passenger vehicle sustained min'
+        'or damage.'),
     'nhtsa-sgo-ads-30270-6337-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-6337, vers'
         'ion 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',

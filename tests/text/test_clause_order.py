@@ -59,14 +59,28 @@ def test_what_came_before_the_contact_told_after_it() -> None:
     # light turned green and the Waymo AV had begun to accelerate.", the AV's move off was read as told after the
     # contact ("after" a word of what came next), so the AV stood throughout (stopped '' instead of `i`).
     # (story.before_contact: a clause opened by "after" with its own subject, told after the contact, tells what came
-    # before it; "after the impact" still tells what came next.) The party's own reading still differs (it reads
-    # `a` instead of `i` from the light: what moves a party off on the green is read in the opening clause only).
+    # before it; "after the impact" still tells what came next.) The party behind read `a` instead of `i` too: see
+    # the next test.
     rid = "csvr-waymo-20220128-s127"
     reworded = QUOTED[rid][1].replace(
         "After the traffic light turned green and the Waymo AV had begun to accelerate, the passenger vehicle behind "
         "the Waymo AV struck the rear of the Waymo AV.",
         "The passenger vehicle behind the Waymo AV struck the rear of the Waymo AV after the traffic light turned "
         "green and the Waymo AV had begun to accelerate.")
-    assert reworded != QUOTED[rid][1]
-    sk, other = quoted_sketch(rid), quoted_sketch(rid, reworded)
-    assert (sk.ego.start, sk.ego.actions) == (other.ego.start, other.ego.actions) == ("stopped", "i")
+    _same_reading(rid, reworded)
+    assert (quoted_sketch(rid).ego.start, quoted_sketch(rid).ego.actions) == ("stopped", "i")
+
+
+def test_the_queue_behind_moves_off_on_a_green_told_after_the_contact() -> None:
+    # csvr-waymo-20211112-s108 (study2 W): "The Waymo AV was stopped at a red light ... When the traffic light turned
+    # green, the passenger vehicle behind the Waymo AV made contact with the rear of the Waymo AV." Told "The
+    # passenger vehicle behind the Waymo AV made contact with the rear of the Waymo AV when the traffic light turned
+    # green.", the green was looked for before the contact only, so the party behind read travelling (`a`) instead
+    # of moving off with the queue (stopped, `i`). (sequences.queued_behind: the green told in a clause of the
+    # contact's moment after it counts.) So with s127's "after the traffic light turned green".
+    rid = "csvr-waymo-20211112-s108"
+    _same_reading(rid, QUOTED[rid][1].replace(
+        "When the traffic light turned green, the passenger vehicle behind the Waymo AV made contact with the rear of "
+        "the Waymo AV.", "The passenger vehicle behind the Waymo AV made contact with the rear of the Waymo AV when "
+        "the traffic light turned green."))
+    assert [(n.start, n.actions) for n in quoted_sketch(rid).npcs] == [("stopped", "i")]

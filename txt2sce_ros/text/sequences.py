@@ -146,6 +146,10 @@ def standing_party(d: Doc, e: Entity, told: list[Act], start: str, actions: str,
     return start, actions
 
 
+_GREEN_MOMENT = compile_gated(r"\b(?:when|as|after|once|just\s+as)\s+(?:the\s+)?(?:traffic\s+)?(?:stop\s?)?(?:light|signal)s?"
+                              r"\s+(?:then\s+|had\s+)?(?:turned|changed|went|cycled)\s+(?:to\s+)?green\b", re.I)
+
+
 def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | None], start: str,
                   actions: str) -> tuple[str, str]:
     """A party in the queue behind the standing AV that moved off into it ("the vehicle immediately behind EGO
@@ -165,7 +169,10 @@ def queued_behind(d: Doc, e: Entity, told: list[Act], place: tuple[str, str | No
     if told or actions not in ("", "a") or d.partner != e.idx or d.contact_sent is None:
         return start, actions
     s = d.sents[d.contact_sent]
-    green = TURNED_GREEN.search(s, 0, d.contact_pos)
+    # (the green told before the contact, or after it in a clause of its moment: "the passenger vehicle behind EGO
+    # made contact with the rear of EGO when the traffic light turned green", as "When the traffic light turned
+    # green, the passenger vehicle ... made contact")
+    green = TURNED_GREEN.search(s, 0, d.contact_pos) or _GREEN_MOMENT.search(s, d.contact_pos)
     # the party named in that clause as the one already behind the AV ("the passenger vehicle behind EGO")
     behind = any(m.entity == e.idx and m.det == "the" and fre.match(r"\s+(?:\w+ly\s+)?behind\s+EGO\b", s[m.end:])
                  for m in d.ments[d.contact_sent])
