@@ -2724,6 +2724,32 @@ QUOTED: dict[str, tuple[str, str]] = {
         'ct, the Waymo AVs Level 4 ADS was engaged in autonomous mode. Both vehicles sustained damage. Waymo '
         'is reporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement '
         'or correct its reporting with additional information as it may become available.'),
+    'nhtsa-sgo-ads-30270-9214-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-9214,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On Saturday, November [XXX], 2024 at 1:35 AM PST, a Waymo Autonomous Vehicle ("Waymo AV") operating '
+        'in Daly City, California was in a collision involving a passenger car on [XXX] at [XXX]. The Waymo A'
+        'V was parked facing north on the east side of [XXX] when the front passenger side corner of a black '
+        'passenger car traveling north on [XXX] made contact with the rear driver side corner of the Waymo AV'
+        '. The impact caused the front of the Waymo AV to make contact with the rear bumper of the passenger '
+        'car parked in front of the Waymo AV. The black passenger car then left the scene. At the time of the'
+        " impact, the Waymo AV's Level 4 ADS was engaged in autonomous mode. All three vehicles sustained dam"
+        'age. Waymo is reporting this crash under Request No. 1 of Standing General Order 2021-01 because a v'
+        'ehicle involved was towed away. Waymo may supplement or correct its reporting with additional inform'
+        'ation as it may become available.'),
+    'nhtsa-sgo-ads-30270-4484-v1': (
+        'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-4484,'
+        ' version 1, column "Narrative"); original: NHTSA SGO-2021-01 ADS incident report data',
+        'On November [XXX], 2022 at 8:48 AM PST a Waymo Autonomous Vehicle (Waymo AV) operating in Phoenix, A'
+        'rizona was in a collision involving a garbage truck on the 500 block of [XXX]. The Waymo AV was trav'
+        'eling eastbound on [XXX] when it encountered a stopped garbage truck traveling westbound. The Waymo '
+        'AV pulled to the right side of the street and stopped, unable to proceed past the garbage truck and '
+        'an SUV parked parallel to the curb. The garbage truck then attempted to pass between the Waymo AV an'
+        'd a parked passenger vehicle to the right of the garbage truck, and the garbage truck made contact w'
+        'ith the left rear corner of the Waymo AV. At the time of the impact, the Waymo AVs Level 4 ADS was e'
+        'ngaged in autonomous mode and the Waymo AV was stationary. The Waymo AV sustained damage. Waymo is r'
+        'eporting this crash under Request No. 2 of Standing General Order 2021-01. Waymo may supplement or c'
+        'orrect its reporting with additional information as it may become available.'),
 }
 
 

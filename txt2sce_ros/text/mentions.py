@@ -790,9 +790,18 @@ _PLACED_AHEAD = compile_gated(r"\s*(?:(?:stopped|waiting|standing|parked)\s+)?(?
                               r"(?:ahead|in\s+front)\b", re.I)
 
 
-def _compatible(e: Entity, m: Mention, *, placed_ahead: bool = False) -> bool:
-    if e.kind == "party" and PARKED_WORDS.search(m.mods) and not any(PARKED_WORDS.search(x.mods) for x in e.mentions):
-        return False  # "the parked vehicle" is not the moving one named before
+def _told_parked(m: Mention, sents: list[str]) -> bool:
+    """Is the vehicle of mention `m` told parked as it is named ("the parked vehicle", "a passenger car parked outside
+    the marked parking spaces", "an SUV that was parked")?"""
+    return bool(PARKED_WORDS.search(m.mods) or _AFTER_PARKED.match(sents[m.sent][m.end:m.end + 80]))
+
+
+def _compatible(e: Entity, m: Mention, sents: list[str], *, placed_ahead: bool = False) -> bool:
+    if e.kind == "party" and _told_parked(m, sents) and not any(_told_parked(x, sents) for x in e.mentions):
+        # "the parked vehicle", "the passenger car parked in front of the Waymo AV" is not the moving one named
+        # before ("a black passenger car traveling north ... made contact"); "the parked passenger car" is the one
+        # named "a passenger car parked outside the marked parking spaces"
+        return False
     if e.kind == "obstacle" or m.kind == "obstacle":
         return e.kind == m.kind and (m.head in e.heads or e.category == m.category)
     if m.head in e.heads:
@@ -1009,7 +1018,7 @@ def resolve(mentions: list[Mention], summary_sents: set[int], sents: list[str]) 
                     # "The passenger vehicle" after "a collision involving another vehicle" reaches back too: a
                     # more precise noun for a party the summary named loosely.
                     continue
-                if _compatible(e, m, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
+                if _compatible(e, m, sents, placed_ahead=bool(_PLACED_AHEAD.match(sents[m.sent], m.end))):
                     target = e
                     break
         else:

@@ -299,6 +299,12 @@ def find_contact(d: Doc) -> None:
     if aftermath is not None and any(c[0] < aftermath for c in candidates):
         candidates = [c for c in candidates if c[0] < aftermath]
     detailed = [c for c in candidates if c[0] not in d.summary]
+    # "The impact caused the front of EGO to make contact with the rear bumper of the passenger car parked in front
+    # of EGO": a contact the first one caused is no conflict of its own; what the AV was driven into was struck.
+    knock_on = [c for c in detailed[1:] if _KNOCK_ON.match(d.sents[c[0]])]
+    if knock_on:
+        detailed = [c for c in detailed if c not in knock_on]
+        d.struck.update(c[2] for c in knock_on if c[2] is not None)
     chosen = detailed[-1] if detailed else candidates[-1]
     if chosen[2] is None:
         # The detailed sentence may refer to the party by a pronoun ("it struck the AV"): take the summary's party.
@@ -416,6 +422,13 @@ def _new_episode(d: Doc, a: Act, first: tuple[int, int, int | None]) -> bool:
                                               for x in d.acts)
 _AFTER_FIRST_CONTACT = compile_gated(r"\s*(?:after|following)\s+(?:the|this|that)\s+(?:initial|first)\s+"
                                      r"(?:contact|impact|collision)\b", re.I)
+# A sentence that tells a contact as the effect of the one before ("The impact caused the front of EGO to make
+# contact with", "As a result, EGO made contact with", "In a secondary impact, ...").
+_KNOCK_ON = compile_gated(r"\s*(?:as\s+a\s+result(?:\s+of\s+(?:the|this|that)\s+(?:initial\s+|first\s+)?(?:impact|collision|contact))?\b|"
+                          r"(?:the\s+)?(?:force\s+of\s+the\s+)?(?:(?:the|this|that)\s+)?(?:initial\s+|first\s+)?"
+                          r"(?:impact|collision|contact)\s+(?:then\s+|also\s+)?"
+                          r"(?:caused|pushed|propelled|forced|sent|knocked|shoved|moved)\b|"
+                          r"(?:in\s+)?(?:a|the)\s+secondary\s+(?:impact|collision|contact)\b)", re.I)
 _CLAUSE_OPENER = compile_gated(r"[,;]|\b(?:when|while|as|after|before|because|until)\b", re.I)
 
 
@@ -641,7 +654,15 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             # (else the door of a vehicle that moved and did the touching, "as they did so with the door open, the
             # passenger car started to proceed straight and made contact": the vehicle takes part, not its door)
         elif e.kind == "party" and e.parked and not moved:
-            if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e):
+            # A parked vehicle the telling names before the contact stands in the scene: an obstacle (sketch.md: "A
+            # parked, unattended vehicle is an obstacle `parked_vehicle`"), whether the AV went around it, a party
+            # struck it or it only hemmed a manoeuvre in ("unable to proceed past the garbage truck and an SUV parked
+            # parallel to the curb"); one the summary alone names is not told of. (Being named before the contact is
+            # checked above.) A vehicle whose opened door is the obstacle stands for it only through its door
+            # ("a passenger exiting a parked car opened the rear door": sketch.md places the door where it stands).
+            door_owner = any(owner == e.idx for owner in d.doors.values())
+            if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e) or \
+                    (first_detail and not door_owner):
                 obstacles.append(e)
         elif e.kind == "party":
             if any(d.doors.get(k) == e.idx for k in d.doors) and not moved:
