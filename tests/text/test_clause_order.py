@@ -84,3 +84,15 @@ def test_the_queue_behind_moves_off_on_a_green_told_after_the_contact() -> None:
         "the Waymo AV.", "The passenger vehicle behind the Waymo AV made contact with the rear of the Waymo AV when "
         "the traffic light turned green."))
     assert [(n.start, n.actions) for n in quoted_sketch(rid).npcs] == [("stopped", "i")]
+
+
+def test_a_contact_told_without_its_object_in_a_sentence_of_its_own() -> None:
+    # csvr-zoox-20230211-s213 (study2 W): "A Zoox vehicle in autonomous mode was slowing to a stop with brake lights
+    # illuminated behind traffic on northbound 5th Street near Jesse Street when a vehicle behind made contact at
+    # approximately 10mph." Told as two sentences ("... near Jesse Street. Then a vehicle behind made contact at
+    # approximately 10mph."), the contact's sentence names no AV, so no contact was found (collision `none`).
+    # (story.find_contact: a contact that names no object, by a party subject right after a sentence about the AV, is
+    # with the AV, as one told by a pronoun is.)
+    rid = "csvr-zoox-20230211-s213"
+    _same_reading(rid, QUOTED[rid][1].replace(" near Jesse Street when a vehicle", " near Jesse Street. Then a vehicle"))
+    assert quoted_sketch(rid).collision.type == "rear_end"

@@ -219,6 +219,11 @@ def _pushed_on(d: Doc, i: int, m: re.Match[str]) -> None:
             d.struck.add(x.entity)
 
 
+#: A contact told without its object ("made contact at approximately 10mph", "collided"): with the AV the story tells.
+_CONTACT_NO_OBJECT = compile_gated(r"\b(?:made|makes|came\s+in(?:to)?)\s+(?:\w+\s+)?contact\b(?!\s+(?:with|between)\b)|"
+                                   r"\bcollided\b(?!\s+with\b)", re.I)
+
+
 def find_contact(d: Doc) -> None:
     """The AV's contact: the last non-negated contact phrase in a sentence about the AV (summaries aside, unless
     nothing else tells it), and the party or object nearest that phrase."""
@@ -232,7 +237,11 @@ def find_contact(d: Doc) -> None:
             # "EGO was stopped at a light. A sedan traveling behind it struck its rear bumper": the pronoun is the
             # AV, the subject of the sentence before, when a party is this sentence's subject.
             i > 0 and any(m.kind in ("ego", "egod") and m.subject for m in d.ments[i - 1]) and
-            any(m.kind == "party" and m.subject for m in ments) and fre.search(r"\b(?:it|its)\b", s, re.I))
+            any(m.kind == "party" and m.subject for m in ments) and (fre.search(r"\b(?:it|its)\b", s, re.I) or
+                                                                     # "... slowing to a stop behind traffic. Then a
+                                                                     # vehicle behind made contact at approximately
+                                                                     # 10mph": a contact that names no object
+                                                                     _CONTACT_NO_OBJECT.search(s)))
         if not has_ego:
             continue
         for m in CONTACT.finditer(s):
