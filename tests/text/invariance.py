@@ -30,6 +30,28 @@ loosely before ("involving another vehicle", "a motorist entered"; those two rew
 street abbreviated inside a sentence ("Market St. onto") loses its period ("Street -> St." 4 -> 1). Still open: "the
 car" after "a double parked car" taken for the parked one (passenger car -> car, 4), "its lead vehicle" named between
 the summary's "another vehicle" and "the passenger vehicle behind" it.
+
+Session 22, helper C4 (C4_REWRITES: 26 families of how police, insurers, other companies and DMV form-fillers name
+and describe the same things): on d8f8cdd they read 71 of 4,097 rewritten narratives differently, on top of the 147
+of 33,276 above. The fixes, each by its general cause: "rear end" read as a part, not the collision kind, and "end" /
+"back" as parts a move ends in (rear bumper -> rear end 16 -> 0, the rear of -> the back of 1 -> 0); a party's number
+label read back as its whole noun, with a capital at a sentence's start (the party numbered V2 / Party 2 / Vehicle 2
+/ Unit 2: 11 -> 0 each); "the X intersection", "the A/B intersection" read as "the intersection with/of" (10 -> 0);
+a run told "traveled", "was moving", "was operating north" places the AV on a road (4 -> 1, 2 -> 1, 3 -> 2); "the
+other party", "the third-party vehicle" role names for the party (42 -> 0, 5 -> 0), and the side of a truck, bus or
+pickup read from the party's first naming (the other vehicle / motorist 2 -> 0, pickup truck -> pickup 3 -> 1); a
+noun that is one word of a party's longer name ranked with its own (heavy truck -> large truck 2 -> 0); "private
+vehicle" a passenger vehicle (3 -> 0); one rewrite corrected ("in the left lane of X" is not "in the lane on the left
+of X": 4 -> 0). All held families: 147 + 71 -> 130 of 38,043 (with the session's other helpers' work).
+Families with nothing to find yet: headings "in the northbound direction" / "traveling north", "at a speed of", "miles
+an hour", St/Ave/Blvd/Rd without a period, "2-lane", "at approximately <time>", "On <date>, at <time>,", the AV as
+"Unit 1" / "Party 1" / "the autonomous test vehicle". Still open: "a passenger vehicle -> another vehicle" (6: "another"
+keeps the telling's party from the summary's, and "another sedan stopped in the right lane" loses its standing);
+"passenger car -> car" (5: "a car (Vehicle 3)" read back as "the car", which the SUV named before takes); the operator
+renamed (13, most not carried by a rename: "a Nuro Prius", "the May vehicle", a make as operator); "driver side ->
+left side" (2: "the rear left side corner" places the party on the left); "yielded to -> stopped for" (3, H half).
+Tried and dropped: "the car" ranked with the party named "a car" first whatever was named since (passenger car -> car
+5 -> 1, but three other families rose and a held slot fell); "A & B" read as a junction (one studyable narrative).
 """
 
 from __future__ import annotations

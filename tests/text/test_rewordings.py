@@ -206,3 +206,13 @@ def test_a_short_noun_names_the_party_told_last_whose_longer_name_holds_it() -> 
     rid = "nhtsa-sgo-ads-30270-5760-v1"
     assert len(quoted_sketch(rid).npcs) == 1
     _same_reading(rid, QUOTED[rid][1].replace("heavy truck", "large truck"))
+
+
+def test_a_private_vehicle_is_a_passenger_vehicle() -> None:
+    # Session 22 (helper C4), "passenger vehicle" -> "private vehicle" (3 of 78 studyable narratives read
+    # differently). csvr-waymo-20240131-s297 (study2 W): "in a collision involving a passenger vehicle ... it came to
+    # a stop behind its lead vehicle. The passenger vehicle behind the Waymo AV then attempted to ...": "private
+    # vehicle" had no noun of its own ("vehicle", which the lead vehicle has too), and the lead vehicle was lost.
+    rid = "csvr-waymo-20240131-s297"
+    assert len(quoted_sketch(rid).npcs) == 2
+    _same_reading(rid, QUOTED[rid][1].replace("passenger vehicle", "private vehicle"))

@@ -98,7 +98,7 @@ SGO5 = Path(__file__).parent / "sgo5"
 HELD_SGO5 = {
     "study5": {"npc_quantity": 0.89, "npc_type": 0.89, "npc_position": 0.71, "npc_events": 0.61, "layout": 0.87,
                "ego_actions": 0.77, "ego_start": 0.94},
-    "check5": {"npc_quantity": 0.89, "npc_position": 0.68, "npc_events": 0.64, "layout": 0.94, "ego_actions": 0.65,
+    "check5": {"npc_quantity": 0.89, "npc_position": 0.68, "npc_events": 0.63, "layout": 0.94, "ego_actions": 0.65,
                "ego_start": 0.83},
 }
 # (check5 npc_position 0.70 -> 0.68 and npc_events 0.65 -> 0.64 in session 22, helper C4: a party's number label
@@ -107,6 +107,10 @@ HELD_SGO5 = {
 # the change moves no gold-scored slot and makes 9 -> 0 of 209 narratives (each of 4 numberings) read as the
 # original (tests/text/invariance.py); check5's narratives are not read, so which of its readings leaned on the
 # joined sentence is not known. Decided on the studyable sets alone, as the session's hygiene rule asks.)
+# (check5 npc_events 0.64 -> 0.63 in session 22, helper C4, one party: "private vehicle" / "private car" made a
+# passenger vehicle's names, generic as "passenger vehicle" is; over the 602 studyable narratives no gold-scored
+# slot moves and 3 of 78 narratives with "passenger vehicle" told "private vehicle" read as their originals. Decided
+# on the studyable sets alone, as above.)
 CONFLICT_HELD_SGO5 = {"study5": 24, "check5": 33}
 #: And for the 167 NHTSA SGO narratives new in session 20 (tests/text/sgo6/README.md), labelled before the extractor
 #: was run on them and kept from everyone who wrote rules that session: study6 may be read from session 21 on,

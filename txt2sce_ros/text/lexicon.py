@@ -85,6 +85,7 @@ EGO_DRIVER = compile_gated(
 #: Head nouns of other parties -> category (sketch.md's mapping: SUVs/pickups/taxis are cars, ...).
 PARTY_HEADS: dict[str, str] = {
     "pickup truck": "car", "pick-up truck": "car", "pickup": "car", "passenger vehicle": "car",
+    "private vehicle": "car", "private car": "car",  # (an insurer's "passenger vehicle")
     "passenger car": "car", "police car": "car", "police vehicle": "car", "patrol car": "car", "suv": "car",
     "sport utility vehicle": "car", "sports utility vehicle": "car",
     "sedan": "car", "coupe": "car", "hatchback": "car", "taxi": "car", "cab": "car", "car": "car",

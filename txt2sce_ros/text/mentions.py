@@ -751,7 +751,7 @@ _RIDE = compile_gated(r"^\s*(?:who\s+was\s+|that\s+was\s+)?(?:riding|on|operatin
 # (a model's name may follow the make the mention names: "a Ford Explorer that was parked at the curb")
 _AFTER_PARKED = compile_gated(r"^(?:\s+(?-i:[A-Z])[\w-]*)?\s*,?\s*(?:that|which)?\s*(?:was|were|is|are|had\s+been|has\s+been)?\s*"
                               r"(?:(?:\w+ly|also|still|both)\s+)?(?:double[- ])?parked\b", re.I)
-_GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "automobile"}
+_GENERIC = {"vehicle", "car", "passenger vehicle", "passenger car", "private vehicle", "private car", "automobile"}
 #: Names of a vehicle by who drives it, as general as "a vehicle" ("a motorist ... the passenger vehicle").
 _DRIVER_NAMES = frozenset({"motorist", "agent"})
 #: Role names for the other party ("the CP", "the OV"): they name whichever party the report is about, of any kind.
