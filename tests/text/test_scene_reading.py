@@ -57,8 +57,8 @@ HELD_CSVR = {
 }
 # (check2 59 -> 58 in session 22: a collision party that touched the AV backing up is read ahead or alongside it, not
 # behind (R5, not R6), by a rule decided on the studyable sets alone - POOLED H +1 position and +1 user's figure,
-# study5 H +1 each, no studyable set lower; check2 was not inspected)
-CONFLICT_HELD_CSVR = {"study2": 86, "check2": 58}
+# study5 H +1 each, no studyable set lower; check2 was not inspected; back at 59 by the session's end, held there)
+CONFLICT_HELD_CSVR = {"study2": 86, "check2": 59}
 #: And for the 220 NHTSA SGO narratives new in session 14 (tests/text/sgo/README.md): study3 may be read, check3 is
 #: scored only; one annotator's gold each (check3's first 44 labelled twice and adjudicated).
 SGO = Path(__file__).parent / "sgo"
@@ -91,7 +91,7 @@ HELD_SGO4 = {
 # study5's gold reads both W-half reports so told and 6 of the 7 studyable reports with a stop, a follower and the
 # AV standing on; sgo4's three annotators did not all read this convention the same way (sgo4/README.md). Decided
 # on the studyable sets alone, as the session's hygiene rule asks.)
-CONFLICT_HELD_SGO4 = {"study4": 46, "check4": 36}
+CONFLICT_HELD_SGO4 = {"study4": 47, "check4": 39}  # (session 22 end: held where reached)
 #: And for the 144 NHTSA SGO narratives new at the end of session 19 (tests/text/sgo5/README.md), kept from everyone
 #: who wrote rules that session: study5 may be read from session 20 on, check5 is scored only.
 SGO5 = Path(__file__).parent / "sgo5"
@@ -111,7 +111,7 @@ HELD_SGO5 = {
 # passenger vehicle's names, generic as "passenger vehicle" is; over the 602 studyable narratives no gold-scored
 # slot moves and 3 of 78 narratives with "passenger vehicle" told "private vehicle" read as their originals. Decided
 # on the studyable sets alone, as above.)
-CONFLICT_HELD_SGO5 = {"study5": 24, "check5": 33}
+CONFLICT_HELD_SGO5 = {"study5": 25, "check5": 33}
 #: And for the 167 NHTSA SGO narratives new in session 20 (tests/text/sgo6/README.md), labelled before the extractor
 #: was run on them and kept from everyone who wrote rules that session: study6 may be read from session 21 on,
 #: check6 is scored only.
@@ -122,7 +122,7 @@ HELD_SGO6 = {
     "check6": {"npc_quantity": 0.87, "npc_position": 0.64, "npc_events": 0.63, "layout": 0.90, "ego_actions": 0.68,
                "ego_start": 0.89},
 }
-CONFLICT_HELD_SGO6 = {"study6": 27, "check6": 29}
+CONFLICT_HELD_SGO6 = {"study6": 34, "check6": 30}  # (session 22 end: held where reached)
 NEW_SETS = {name: (CSVR, held, CONFLICT_HELD_CSVR[name]) for name, held in HELD_CSVR.items()} | {
     name: (SGO, held, CONFLICT_HELD_SGO[name]) for name, held in HELD_SGO.items()} | {
     name: (SGO4, held, CONFLICT_HELD_SGO4[name]) for name, held in HELD_SGO4.items()} | {
