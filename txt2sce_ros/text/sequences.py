@@ -467,7 +467,7 @@ def _ego_string(d: Doc, first_party_pos: tuple[int, int] | None, party_first: bo
     # told before: `sequence` reads it so after the party's moves.)
     # A run told there ("as EGO was traveling") only describes the AV on its way: no move of its own.
     late = [a for a in acts if a not in pre and a.code not in "aA" and a.sent == fs and a.pos > fp and
-            _same_moment_opener(d, a) is not None and _same_moment_opener(d, a).start() > fp and not _retells(a, pre)]
+            (opener := _same_moment_opener(d, a)) is not None and opener.start() > fp and not _retells(a, pre)]
     if late:
         pre = [a for a in acts if a in pre or a in late]
     post = [a for a in acts if a not in pre]
