@@ -9,6 +9,8 @@ from __future__ import annotations
 from txt2sce_ros.sketch import Sketch
 from txt2sce_ros.text.extractor import extract
 
+from .invariance import content
+
 QUOTED: dict[str, tuple[str, str]] = {
     'nhtsa-sgo-ads-30270-10184-v1': (
         'github:vanshagg233/Risk_Function@1806947 SGO-2021-01_Incident_Reports_ADS.csv (Report ID 30270-10184'
@@ -2756,6 +2758,12 @@ QUOTED: dict[str, tuple[str, str]] = {
 def quoted_sketch(report_id: str, text: str | None = None) -> Sketch:
     """The extractor's sketch of the quoted narrative `report_id`, or of `text` (a rewording of it) under that id."""
     return extract(text if text is not None else QUOTED[report_id][1], report_id)
+
+
+def assert_same_reading(report_id: str, reworded: str) -> None:
+    """The rewording `reworded` of the quoted narrative `report_id` reads as the narrative does: the same sketch,
+    evidence spans aside (`invariance.content`, the comparison the rewording measure makes)."""
+    assert content(reworded, report_id) == content(QUOTED[report_id][1], report_id)
 
 
 def quoted_ego(report_id: str, text: str | None = None) -> tuple[str, str]:

@@ -4,17 +4,9 @@ measure over all 602 studyable narratives)."""
 
 from __future__ import annotations
 
-import json
 import re
 
-from .quoted import QUOTED, quoted_sketch
-
-
-def _same_reading(report_id: str, reworded: str) -> None:
-    a, b = quoted_sketch(report_id).to_dict(), quoted_sketch(report_id, reworded).to_dict()
-    for d in (a, b):
-        d.pop("evidence", None)
-    assert json.dumps(b, sort_keys=True) == json.dumps(a, sort_keys=True)
+from .quoted import QUOTED, assert_same_reading, quoted_sketch
 
 
 def test_a_passenger_car_in_the_telling_is_not_the_summary_s_suv() -> None:
@@ -28,7 +20,7 @@ def test_a_passenger_car_in_the_telling_is_not_the_summary_s_suv() -> None:
     sk = quoted_sketch(rid)
     suv = next(n for n in sk.npcs if (n.position, n.lane) == ("R6", "left"))
     assert sk.collision.with_ == suv.id and suv.id == "npc1"  # the summary's SUV, first named
-    _same_reading(rid, re.sub(r"\bpassenger car\b", "sedan", QUOTED[rid][1]))
+    assert_same_reading(rid, re.sub(r"\bpassenger car\b", "sedan", QUOTED[rid][1]))
 
 
 def test_a_standstill_told_as_coming_to_rest_or_slowly_to_a_stop() -> None:
@@ -36,14 +28,14 @@ def test_a_standstill_told_as_coming_to_rest_or_slowly_to_a_stop() -> None:
     # a stop behind its lead vehicle." Told "came to rest behind its lead vehicle" (as police write a standstill),
     # the stop was not read: the road read straight, no control, instead of the junction it stopped at.
     rid = "csvr-waymo-20240131-s297"
-    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came to rest"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came to rest"))
     # nhtsa-sgo-ads-30270-8844-v1 (study4 W): "came to a stop" told "came slowly to a stop": the light read
     # yellow instead of red.
     rid = "nhtsa-sgo-ads-30270-8844-v1"
     assert "came to a stop" in QUOTED[rid][1]
-    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came slowly to a stop"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("came to a stop", "came slowly to a stop"))
     # ... and "stopped completely" (the light read yellow instead of red)
-    _same_reading(rid, QUOTED[rid][1].replace("came to a stop", "stopped completely"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("came to a stop", "stopped completely"))
 
 
 def test_an_operator_unknown_to_the_lexicon_named_without_an_article() -> None:
@@ -52,7 +44,7 @@ def test_an_operator_unknown_to_the_lexicon_named_without_an_article() -> None:
     # vehicle 1's left front quarter panel". Under an operator the lexicon does not know, the AV so introduced (no
     # article, as a form's field opens) was not found: vehicle 1 was read as a second party beside the BMW.
     rid = "nhtsa-sgo-ads-30792-10691-v1"
-    _same_reading(rid, QUOTED[rid][1].replace("WeRide", "Acme"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("WeRide", "Acme"))
     assert len(quoted_sketch(rid).npcs) == 1
 
 
@@ -61,7 +53,7 @@ def test_a_party_that_neared_the_junction_approached_it() -> None:
     # junction the AV approached was lost (the road read straight, no control).
     rid = "csvr-waymo-20211018-s101"
     assert "approached" in QUOTED[rid][1]
-    _same_reading(rid, re.sub(r"\bapproached\b", "neared", QUOTED[rid][1]))
+    assert_same_reading(rid, re.sub(r"\bapproached\b", "neared", QUOTED[rid][1]))
 
 
 def test_a_yield_beside_the_av_s_run_told_with_heading() -> None:
@@ -71,7 +63,7 @@ def test_a_yield_beside_the_av_s_run_told_with_heading() -> None:
     # stop (`h`).
     rid = "dmvca-zoox-20230223-r426"
     assert "was proceeding southbound" in QUOTED[rid][1]
-    _same_reading(rid, QUOTED[rid][1].replace("was proceeding southbound", "was heading southbound"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("was proceeding southbound", "was heading southbound"))
 
 
 def test_a_vehicle_the_av_was_en_route_behind_is_named_in_passing() -> None:
@@ -80,7 +72,7 @@ def test_a_vehicle_the_av_was_en_route_behind_is_named_in_passing() -> None:
     # route ... behind a box truck", it was counted as a second party.
     rid = "csvr-waymo-20240513-s311"
     assert "was traveling with a test driver present behind a box truck" in QUOTED[rid][1]
-    _same_reading(rid, QUOTED[rid][1].replace("was traveling with", "was en route with"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("was traveling with", "was en route with"))
     assert len(quoted_sketch(rid).npcs) == 1
 
 
@@ -91,13 +83,13 @@ def test_a_rear_bumper_told_as_the_rear_end_is_a_part_not_the_collision_kind() -
     # end of the Cruise AV", any "rear end" in the text made the collision a rear-end (as "rear-ended" does).
     rid = "csvr-cruise-20200129-s50"
     assert quoted_sketch(rid).collision.type == "side_swipe"
-    _same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
     # dmvca-waymo-20211219-r262 (dev gold W): "a passenger vehicle reversed at a low speed from an adjacent driveway
     # into the right rear bumper of the Waymo AV": told "into the right rear end", the move into a part of the AV
     # was no contact (the collision lost).
     rid = "dmvca-waymo-20211219-r262"
     assert quoted_sketch(rid).collision.with_ == "npc1"
-    _same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("rear bumper", "rear end"))
 
 
 def test_the_rear_of_the_av_told_as_its_back() -> None:
@@ -106,7 +98,7 @@ def test_the_rear_of_the_av_told_as_its_back() -> None:
     # touching nor the push was a contact (the collision lost).
     rid = "nhtsa-sgo-ads-30270-6337-v1"
     assert quoted_sketch(rid).collision.with_ == "npc1"
-    _same_reading(rid, QUOTED[rid][1].replace("the rear of the Waymo AV", "the back of the Waymo AV"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("the rear of the Waymo AV", "the back of the Waymo AV"))
 
 
 def test_a_party_numbered_after_its_first_naming_keeps_its_noun() -> None:
@@ -121,13 +113,13 @@ def test_a_party_numbered_after_its_first_naming_keeps_its_noun() -> None:
     at = text.index("a passenger car") + len("a passenger car")
     reworded = text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:])
     assert reworded.count("V2") >= 3
-    _same_reading(rid, reworded)
+    assert_same_reading(rid, reworded)
     # nhtsa-sgo-ads-30270-8617-v1 (study5 W): "The passenger car that was following closely behind the Waymo AV"
     # told "V2 that was following": the party was placed in the left lane, a side swipe.
     rid = "nhtsa-sgo-ads-30270-8617-v1"
     text = QUOTED[rid][1]
     at = text.index("a passenger car") + len("a passenger car")
-    _same_reading(rid, text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:]))
+    assert_same_reading(rid, text[:at] + " (V2)" + re.sub(r"\b[Tt]he passenger car\b", "V2", text[at:]))
 
 
 def test_a_junction_named_by_its_streets_before_the_noun() -> None:
@@ -139,15 +131,15 @@ def test_a_junction_named_by_its_streets_before_the_noun() -> None:
     # intersection", the road read a junction.
     rid = "dmvca-cruise-20230321-r442"
     assert quoted_sketch(rid).road.layout == "straight"
-    _same_reading(rid, QUOTED[rid][1].replace("the intersection with Leavenworth Street",
+    assert_same_reading(rid, QUOTED[rid][1].replace("the intersection with Leavenworth Street",
                                               "the Leavenworth Street intersection"))
     # dmvca-cruise-20200725-r132 (dev gold W): "on westbound Taraval Street near the intersection with 21st Avenue"
     rid = "dmvca-cruise-20200725-r132"
     assert "near the intersection with 21st Avenue" in QUOTED[rid][1]
-    _same_reading(rid, QUOTED[rid][1].replace("the intersection with 21st Avenue", "the 21st Avenue intersection"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("the intersection with 21st Avenue", "the 21st Avenue intersection"))
     # nhtsa-sgo-ads-30270-7012-v1 (study4 W): "After the Waymo AV crossed the intersection with [XXX], an SUV ..."
     rid = "nhtsa-sgo-ads-30270-7012-v1"
-    _same_reading(rid, QUOTED[rid][1].replace("the intersection with [XXX]", "the [XXX] intersection"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("the intersection with [XXX]", "the [XXX] intersection"))
 
 
 def test_a_run_told_in_the_simple_past_or_by_moving_is_on_a_road() -> None:
@@ -158,9 +150,9 @@ def test_a_run_told_in_the_simple_past_or_by_moving_is_on_a_road() -> None:
     # "traveled", the road read unknown and the sketch was refused for it.
     rid = "nhtsa-sgo-ads-30270-9183-v1"
     assert quoted_sketch(rid).road.layout == "straight"
-    _same_reading(rid, QUOTED[rid][1].replace("was traveling", "traveled"))
-    _same_reading(rid, QUOTED[rid][1].replace("was traveling north", "was operating north"))
-    _same_reading(rid, QUOTED[rid][1].replace("was traveling", "was moving"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("was traveling", "traveled"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("was traveling north", "was operating north"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("was traveling", "was moving"))
 
 
 def test_the_party_named_by_its_role_after_its_first_naming() -> None:
@@ -175,7 +167,7 @@ def test_the_party_named_by_its_role_after_its_first_naming() -> None:
     text = QUOTED[rid][1]
     at = text.index("A passenger car") + len("A passenger car")
     for role in ("other party", "third-party vehicle"):
-        _same_reading(rid, text[:at] + re.sub(r"\b([Tt])he passenger car\b", rf"\1he {role}", text[at:]))
+        assert_same_reading(rid, text[:at] + re.sub(r"\b([Tt])he passenger car\b", rf"\1he {role}", text[at:]))
 
 
 def test_the_side_of_a_truck_or_bus_named_by_another_noun() -> None:
@@ -188,11 +180,11 @@ def test_the_side_of_a_truck_or_bus_named_by_another_noun() -> None:
     rid = "nhtsa-sgo-ads-30270-7882-v1"
     assert quoted_sketch(rid).collision.type == "side_swipe"
     for noun in ("other vehicle", "third-party vehicle"):
-        _same_reading(rid, QUOTED[rid][1].replace("the left side of the truck body", f"the left side of the {noun}"))
+        assert_same_reading(rid, QUOTED[rid][1].replace("the left side of the truck body", f"the left side of the {noun}"))
     # nhtsa-sgo-ads-30270-9333-v1 (study3 W): "As the bus passed the stopped Waymo AV, the passenger side of the bus
     # made contact with ..."
     rid = "nhtsa-sgo-ads-30270-9333-v1"
-    _same_reading(rid, QUOTED[rid][1].replace("the passenger side of the bus", "the passenger side of the other vehicle"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("the passenger side of the bus", "the passenger side of the other vehicle"))
 
 
 def test_a_short_noun_names_the_party_told_last_whose_longer_name_holds_it() -> None:
@@ -205,7 +197,7 @@ def test_a_short_noun_names_the_party_told_last_whose_longer_name_holds_it() -> 
     # fits it as well as a party's own, and the one told last is taken.
     rid = "nhtsa-sgo-ads-30270-5760-v1"
     assert len(quoted_sketch(rid).npcs) == 1
-    _same_reading(rid, QUOTED[rid][1].replace("heavy truck", "large truck"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("heavy truck", "large truck"))
 
 
 def test_a_private_vehicle_is_a_passenger_vehicle() -> None:
@@ -215,4 +207,4 @@ def test_a_private_vehicle_is_a_passenger_vehicle() -> None:
     # vehicle" had no noun of its own ("vehicle", which the lead vehicle has too), and the lead vehicle was lost.
     rid = "csvr-waymo-20240131-s297"
     assert len(quoted_sketch(rid).npcs) == 2
-    _same_reading(rid, QUOTED[rid][1].replace("passenger vehicle", "private vehicle"))
+    assert_same_reading(rid, QUOTED[rid][1].replace("passenger vehicle", "private vehicle"))
