@@ -1065,8 +1065,7 @@ def mark_parked(ents: list[Entity], sents: list[str]) -> None:
         if e.kind != "party" or e.category not in ("car", "van", "truck", "bus"):
             continue
         for m in e.mentions:
-            s = sents[m.sent]
-            if PARKED_WORDS.search(m.mods) or _AFTER_PARKED.match(s[m.end:]) or _joined_parked(ents, sents, m):
+            if _told_parked(m, sents) or _joined_parked(ents, sents, m):
                 e.parked = True
 
 
