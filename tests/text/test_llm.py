@@ -311,3 +311,21 @@ def test_cli_without_a_key_for_the_default_server_stops_at_once(tmp_path: Path, 
     assert main(["extract", str(src), "--out", str(tmp_path / "o.jsonl"), "--backend", "hybrid", "--quiet"]) == 2
     assert not (tmp_path / "o.jsonl").exists()       # stopped before any report, not one refusal per report
     assert "no API key for https://api.deepseek.com" in capsys.readouterr().err
+
+
+def test_hybrid_merge_moves_a_party_between_a_junction_leg_and_the_avs_road() -> None:
+    from txt2sce_ros.text.llm import merge_slots
+
+    rules = _gold()  # the scooterist came from the AV's right at the junction: R3, no lane
+    asked = ("npcs[0].position", "npcs[0].lane", "npcs[0].actions")
+    # Onto the AV's road: the position and the lane are only valid together, so they are merged together.
+    out = merge_slots(rules, {"npcs[0].position": "R6", "npcs[0].lane": "left", "npcs[0].actions": "af"}, asked)
+    assert (out.npcs[0].position, out.npcs[0].lane, out.npcs[0].actions) == ("R6", "left", "af")
+    # ... and back to a junction leg, which clears the lane whatever the answer said of it.
+    back = merge_slots(out, {"npcs[0].position": "R1", "npcs[0].lane": "left"}, asked)
+    assert (back.npcs[0].position, back.npcs[0].lane, back.npcs[0].actions) == ("R1", None, "af")
+    # An invalid field is dropped on its own: the valid answers of the same party still count.
+    part = merge_slots(rules, {"npcs[0].position": "R9", "npcs[0].actions": "ad"}, asked)
+    assert (part.npcs[0].position, part.npcs[0].actions) == ("R3", "ad")
+    # A slot not asked for is never taken.
+    assert merge_slots(rules, {"npcs[0].actions": "ad"}, ("npcs[0].position",)) == rules

@@ -344,19 +344,41 @@ class LlmExtractor:
             return offline
         if not isinstance(answer, dict):
             return offline
-        d = offline.to_dict()
-        for slot in slots:
-            m = re.fullmatch(r"npcs\[(\d+)\]\.(position|lane|actions)", slot)
-            if not m or slot not in answer or int(m.group(1)) >= len(d["npcs"]):
-                continue
-            trial = json.loads(json.dumps(d))
-            npc = trial["npcs"][int(m.group(1))]
-            npc[m.group(2)] = answer[slot]
-            if m.group(2) == "position" and npc["position"] not in ("R5", "R6", "R7"):
-                npc["lane"] = None
-            if not validate_sketch_dict(trial):
-                d = trial
-        return Sketch.from_dict(d) if d != offline.to_dict() else offline
+        return merge_slots(offline, answer, slots)
+
+
+#: The slot paths `hybrid` may ask about: one NPC's position, lane or action string.
+SLOT_PATH = re.compile(r"npcs\[(\d+)\]\.(position|lane|actions)")
+
+
+def merge_slots(offline: Sketch, answer: dict[str, Any], slots: tuple[str, ...]) -> Sketch:
+    """The answers for the asked `slots` merged into the rules' sketch, one NPC at a time: its answered fields
+    together first (a party moved between a junction position and the AV's road changes its position and its lane
+    at once, and neither alone is a valid sketch), else field by field; an answer that would make the sketch
+    invalid is dropped, and a position off the AV's road clears the lane."""
+    d = offline.to_dict()
+    fields: dict[int, dict[str, Any]] = {}
+    for slot in slots:
+        m = SLOT_PATH.fullmatch(slot)
+        if m and slot in answer and int(m.group(1)) < len(d["npcs"]):
+            fields.setdefault(int(m.group(1)), {})[m.group(2)] = answer[slot]
+
+    def tried(k: int, update: dict[str, Any]) -> dict[str, Any] | None:
+        trial = json.loads(json.dumps(d))
+        npc = trial["npcs"][k]
+        npc.update(update)
+        if "position" in update and npc["position"] not in ("R5", "R6", "R7"):
+            npc["lane"] = None
+        return None if validate_sketch_dict(trial) else trial
+
+    for k, update in fields.items():
+        whole = tried(k, update)
+        if whole is not None:
+            d = whole
+            continue
+        for name, value in update.items():
+            d = tried(k, {name: value}) or d
+    return Sketch.from_dict(d) if d != offline.to_dict() else offline
 
 
 def merge_answers(report_id: str, answers: dict[str, Any]) -> Sketch:
