@@ -17,6 +17,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     src.add_argument("--input", help="reports to extract now (JSONL {id, text}, .txt, dir, PDF)")
     parser.add_argument("--form-labels", help="company-filed labels (dev_form_labels.jsonl): agreement, separately")
     parser.add_argument("--worst", type=count(ge=0), default=4, help="slots in the confusion listing (default 4)")
+    parser.add_argument("--hybrid-ceiling", action="store_true",
+                        help="with --input: also score `hybrid` with a perfect model answering each question it "
+                             "asks (the most a model can add there; no model is run)")
     parser.add_argument("--check-targets", action="store_true",
                         help="exit 1 when a slot with a target (issue 3) falls below it")
 
@@ -29,6 +32,9 @@ def run(args: argparse.Namespace) -> int:
 
     if not args.gold and not args.form_labels:
         raise InputError("give --gold and/or --form-labels", element="--gold")
+    if args.hybrid_ceiling and not (args.gold and args.input):
+        raise InputError("--hybrid-ceiling needs --gold and --input (the rules' weak flags are read as they "
+                         "extract)", element="--hybrid-ceiling")
     if args.pred:
         results = list(load_sketches(args.pred))
     else:
@@ -54,6 +60,16 @@ def run(args: argparse.Namespace) -> int:
         print(format_table(ev, worst=args.worst))
         print()
         print(format_diagnostics(ev, evaluate_by_source(scored, preds)))
+        if args.hybrid_ceiling:
+            from ..text.ceiling import PerfectModel, format_ceiling
+            from ..text.pipeline import run_batch
+            from ..text.readers import iter_inputs
+
+            model = PerfectModel({g.report_id: g for g in scored})
+            ceiling = {s.report_id: s for s in run_batch(iter_inputs([args.input]), backend="hybrid", llm=model)
+                       if isinstance(s, Sketch)}
+            print()
+            print(format_ceiling(ev, evaluate(scored, ceiling), model))
         if args.check_targets and any(ev.accuracy(k) < v for k, v in TARGETS.items()):
             status = 1
     if args.form_labels:

@@ -107,6 +107,13 @@ def pair(gold: Sequence[Party | Obstacle], pred: Sequence[Party | Obstacle],
     return pairs
 
 
+def paired_npcs(gold: Sketch, pred: Sketch) -> list[tuple[Party | None, Party | None]]:
+    """The NPC pairs a comparison scores: the two collision parties first (when both are NPCs), then the rest."""
+    gw, pw = gold.collision.with_, pred.collision.with_
+    fixed = (gw, pw) if gw and pw and gw[:3] == pw[:3] == "npc" else None
+    return pair(gold.npcs, pred.npcs, fixed)  # type: ignore[return-value]
+
+
 def compare(gold: Sketch, pred: Sketch, ev: Evaluation) -> None:
     """Add one report's slots to `ev`."""
     rid = gold.report_id
@@ -114,8 +121,7 @@ def compare(gold: Sketch, pred: Sketch, ev: Evaluation) -> None:
     s = ev.slots
     s["npc_quantity"].add(len(gold.npcs) == len(pred.npcs), len(gold.npcs), len(pred.npcs), rid)
     gw, pw = gold.collision.with_, pred.collision.with_
-    fixed = (gw, pw) if gw and pw and gw[:3] == pw[:3] == "npc" else None
-    npc_pairs = pair(gold.npcs, pred.npcs, fixed)
+    npc_pairs = paired_npcs(gold, pred)
     mapping: dict[str, str] = {}
     for g, p in npc_pairs:
         if g is not None and p is not None:
