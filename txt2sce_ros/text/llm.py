@@ -31,7 +31,7 @@ from typing import Any
 from ..errors import InputError, SimulationFault
 from .. import signed_cache
 from ..paths import cache_dir
-from ..sketch import Sketch, load_schema, validate_sketch_dict
+from ..sketch import LANED_POSITIONS, Sketch, load_schema, validate_sketch_dict
 
 PROMPTS_DIR = Path(__file__).resolve().parent / "prompts"
 STEPS = ("1_parties", "2_positions", "3_actions", "4_obstacles", "5_conditions")
@@ -363,21 +363,21 @@ def merge_slots(offline: Sketch, answer: dict[str, Any], slots: tuple[str, ...])
         if m and slot in answer and int(m.group(1)) < len(d["npcs"]):
             fields.setdefault(int(m.group(1)), {})[m.group(2)] = answer[slot]
 
-    def tried(k: int, update: dict[str, Any]) -> dict[str, Any] | None:
-        trial = json.loads(json.dumps(d))
+    def tried(base: dict[str, Any], k: int, update: dict[str, Any]) -> dict[str, Any] | None:
+        trial = json.loads(json.dumps(base))
         npc = trial["npcs"][k]
         npc.update(update)
-        if "position" in update and npc["position"] not in ("R5", "R6", "R7"):
+        if "position" in update and npc["position"] not in LANED_POSITIONS:
             npc["lane"] = None
         return None if validate_sketch_dict(trial) else trial
 
     for k, update in fields.items():
-        whole = tried(k, update)
+        whole = tried(d, k, update)
         if whole is not None:
             d = whole
             continue
         for name, value in update.items():
-            d = tried(k, {name: value}) or d
+            d = tried(d, k, {name: value}) or d
     return Sketch.from_dict(d) if d != offline.to_dict() else offline
 
 
@@ -389,7 +389,7 @@ def merge_answers(report_id: str, answers: dict[str, Any]) -> Sketch:
     for p in answers["1_parties"]["parties"]:
         q, a = pos[p["id"]], act[p["id"]]
         npcs.append({"id": p["id"], "category": p["category"], "position": q["position"],
-                     "lane": q["lane"] if q["position"] in ("R5", "R6", "R7") else None,
+                     "lane": q["lane"] if q["position"] in LANED_POSITIONS else None,
                      "start": a["start"], "actions": a["actions"]})
     cond = answers["5_conditions"]
     d = {"schema": "txt2sce.sketch/1", "report_id": report_id, "road": cond["road"],
