@@ -40,15 +40,10 @@ def run(args: argparse.Namespace) -> int:
     backend = args.backend or cfg.get("backend", "offline")
     llm = None
     if backend != "offline":
-        from ..errors import InputError
-        from ..text.llm import DEFAULT_BASE_URL, KEY_ENV, LlmConfig, LlmExtractor, api_key
+        from ..text.llm import configured_llm
 
-        llm = LlmExtractor.from_config(LlmConfig.from_settings(cfg.get("llm"), base_url=args.base_url,
-                                                               model=args.model, timeout_s=args.timeout))
-        if api_key() is None and llm.client.config.base_url.rstrip("/") == DEFAULT_BASE_URL:
-            # Every request would be refused: say so once instead of once per report.
-            raise InputError(f"--backend {backend}: no API key for {DEFAULT_BASE_URL} (set {' or '.join(KEY_ENV)}, "
-                             f"or --base-url a server that needs none, e.g. a local Ollama or vLLM)")
+        llm = configured_llm(backend, cfg.get("llm"), base_url=args.base_url, model=args.model,
+                             timeout_s=args.timeout)
     total = count_inputs(args.inputs)
     inputs = list(iter_inputs(args.inputs))  # kept: the PDFs' form readings are written beside the sketches
     out = Path(args.out)

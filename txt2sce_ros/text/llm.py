@@ -381,6 +381,19 @@ def merge_slots(offline: Sketch, answer: dict[str, Any], slots: tuple[str, ...])
     return Sketch.from_dict(d) if d != offline.to_dict() else offline
 
 
+def configured_llm(backend: str, settings: dict[str, Any] | None, *, base_url: str | None = None,
+                   model: str | None = None, timeout_s: float | None = None) -> LlmExtractor:
+    """The client for `--backend llm|hybrid`: `config/extract.yaml`'s settings with the command line's overrides.
+    Refused up front (InputError) when it would talk to the default server with no key: every request would be
+    refused, so it is said once instead of once per report."""
+    llm = LlmExtractor.from_config(LlmConfig.from_settings(settings, base_url=base_url, model=model,
+                                                           timeout_s=timeout_s))
+    if api_key() is None and llm.client.config.base_url.rstrip("/") == DEFAULT_BASE_URL:
+        raise InputError(f"--backend {backend}: no API key for {DEFAULT_BASE_URL} (set {' or '.join(KEY_ENV)}, "
+                         f"or --base-url a server that needs none, e.g. a local Ollama or vLLM)")
+    return llm
+
+
 def merge_answers(report_id: str, answers: dict[str, Any]) -> Sketch:
     """The five step answers -> one sketch dict -> validated Sketch (InputError naming the field otherwise)."""
     pos = {p["id"]: p for p in answers["2_positions"]["positions"]}
