@@ -73,8 +73,12 @@ def _load_gold(path: Path) -> list[Sketch]:
 
 
 def run_sets(sets: Sequence[GoldSet], *, backend: str = "offline", llm: object = None,
-             hybrid_ceiling: bool = False, progress: bool = False) -> list[Row]:
-    """One evaluation per set (each narratives file extracted once, whatever the number of sets it serves)."""
+             hybrid_ceiling: bool = False, progress: bool = False,
+             errors: list[str] | None = None) -> list[Row]:
+    """One evaluation per set (each narratives file extracted once, whatever the number of sets it serves). A
+    report that got no sketch (an error record: a server that failed, an answer that never formed a valid sketch)
+    scores as wrong in every slot, and its reason is added to `errors`."""
+    errors = [] if errors is None else errors
     from txt2sce_ros.text.pipeline import run_batch
     from txt2sce_ros.text.readers import iter_inputs
 
@@ -84,7 +88,13 @@ def run_sets(sets: Sequence[GoldSet], *, backend: str = "offline", llm: object =
             from tqdm import tqdm
 
             results = tqdm(results, unit="report", file=sys.stderr, desc=path.name, leave=False)
-        return {s.report_id: s for s in results if isinstance(s, Sketch)}
+        preds = {}
+        for s in results:
+            if isinstance(s, Sketch):
+                preds[s.report_id] = s
+            else:
+                errors.append(f"{path.name}: {s.report_id}: {s.error}")
+        return preds
 
     cache: dict[Path, dict[str, Sketch]] = {}
     rows = []
@@ -166,16 +176,20 @@ def main(argv: Sequence[str] | None = None) -> int:
             llm = configured_llm(args.backend, load_config("extract").get("llm"), base_url=args.base_url,
                                  model=args.model)
         t0 = time.perf_counter()
+        errors: list[str] = []
         rows = run_sets(sets, backend=args.backend, llm=llm, hybrid_ceiling=args.hybrid_ceiling,
-                        progress=args.backend != "offline" and sys.stderr.isatty())
+                        progress=args.backend != "offline" and sys.stderr.isatty(), errors=errors)
     except InputError as exc:
         print(f"eval_sets: error: {exc}", file=sys.stderr)
         return 2
     print(f"backend: {args.backend}; {len(rows)} sets in {time.perf_counter() - t0:.1f} s")
     print(format_rows(rows, {s.name for s in sets if s.studyable}))
+    if errors:
+        print(f"warning: {len(errors)} report(s) got no sketch and were scored wrong in every slot; the first: "
+              f"{errors[0]}", file=sys.stderr)
     if llm is not None and getattr(llm, "not_consulted", None):
-        print(f"warning: the server did not answer for {len(llm.not_consulted)} report(s): their rules' sketch (hybrid) "
-              f"or an error (llm) was scored", file=sys.stderr)
+        print(f"warning: the server did not answer for {len(llm.not_consulted)} report(s): the rules' sketch was "
+              f"scored for those", file=sys.stderr)
     return 0
 
 

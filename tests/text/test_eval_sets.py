@@ -67,3 +67,15 @@ def test_a_model_server_is_scored_through_the_same_table(server: ChatServer, tmp
     hits = sum(conflict_exact(g, replace(answered, report_id=g.report_id)) for g in complete)
     assert hits >= 1 and _row(out, "dev_gold")[-1] == f"{hits}/{len(complete)}"
     assert "backend: llm" in out and len(server.log) == 5 * 180  # every dev narrative, each asked once
+
+
+def test_reports_the_server_never_answered_are_counted_wrong_and_said(
+        server: ChatServer, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    # A step-2 answer that is never valid (a position that does not exist): every report becomes an error record.
+    server.answers["STEP 2"] = '{"positions": [{"id": "npc1", "position": "R9", "lane": null}]}'
+    monkeypatch.setenv("TXT2SCE_CACHE", str(tmp_path / "cache"))
+    assert main(["--backend", "llm", "--base-url", server.url, "--model", "recorded-model",
+                 "--sets", "dev_gold_check"]) == 0
+    captured = capsys.readouterr()
+    assert _row(captured.out, "dev_gold_check")[-1].startswith("0/")
+    assert "180 report(s) got no sketch" in captured.err and "R9" in captured.err
