@@ -657,6 +657,7 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
                                             d.sents[m.sent][max(0, m.start - 30):m.start + len(m.mods) + 1])
                                   for m in e.mentions) and not moved:
             continue  # "a skateboard that escaped control of a nearby pedestrian": named only as an owner
+        owns_door = e.idx in d.doors.values()  # a vehicle whose opened door is an obstacle
         if e.idx in d.doors:
             if is_partner or e.idx in d.struck or not _moved(d, d.doors[e.idx]):
                 obstacles.append(e)
@@ -669,12 +670,11 @@ def counted(d: Doc) -> tuple[list[Entity], list[Entity]]:
             # parallel to the curb"); one the summary alone names is not told of. (Being named before the contact is
             # checked above.) A vehicle whose opened door is the obstacle stands for it only through its door
             # ("a passenger exiting a parked car opened the rear door": sketch.md places the door where it stands).
-            door_owner = any(owner == e.idx for owner in d.doors.values())
             if is_partner or e.idx in d.struck or acted_for(d, e) or struck_by_party(d, e) or \
-                    (first_detail and not door_owner):
+                    (first_detail and not owns_door):
                 obstacles.append(e)
         elif e.kind == "party":
-            if any(d.doors.get(k) == e.idx for k in d.doors) and not moved:
+            if owns_door and not moved:
                 continue  # the door's vehicle stood still: only its door takes part
             if not first_detail and not is_partner:
                 continue  # named in the summary only
