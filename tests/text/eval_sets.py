@@ -75,9 +75,9 @@ def _load_gold(path: Path) -> list[Sketch]:
 def run_sets(sets: Sequence[GoldSet], *, backend: str = "offline", llm: object = None,
              hybrid_ceiling: bool = False, progress: bool = False,
              errors: list[str] | None = None) -> list[Row]:
-    """One evaluation per set (each narratives file extracted once, whatever the number of sets it serves). A
-    report that got no sketch (an error record: a server that failed, an answer that never formed a valid sketch)
-    scores as wrong in every slot, and its reason is added to `errors`."""
+    """One evaluation per set: each narratives file is extracted once (and once more for the ceiling), whatever the
+    number of sets it serves. A report that got no sketch (an error record: a server that failed, an answer that
+    never formed a valid sketch) scores as wrong in every slot, and its reason is added to `errors`."""
     errors = [] if errors is None else errors
     from txt2sce_ros.text.pipeline import run_batch
     from txt2sce_ros.text.readers import iter_inputs
@@ -88,26 +88,30 @@ def run_sets(sets: Sequence[GoldSet], *, backend: str = "offline", llm: object =
             from tqdm import tqdm
 
             results = tqdm(results, unit="report", file=sys.stderr, desc=path.name, leave=False)
-        preds = {}
+        out = {}
         for s in results:
             if isinstance(s, Sketch):
-                preds[s.report_id] = s
+                out[s.report_id] = s
             else:
                 errors.append(f"{path.name}: {s.report_id}: {s.error}")
-        return preds
+        return out
 
-    cache: dict[Path, dict[str, Sketch]] = {}
-    rows = []
-    for gs in sets:
-        if gs.narratives not in cache:
-            cache[gs.narratives] = extract(gs.narratives, backend=backend, llm=llm)
-        gold = _load_gold(gs.gold)
-        row = Row(gs.name, evaluate(gold, cache[gs.narratives]))
+    golds = {gs.name: _load_gold(gs.gold) for gs in sets}
+    preds: dict[Path, dict[str, Sketch]] = {}
+    ceilings: dict[Path, dict[str, Sketch]] = {}
+    for path in dict.fromkeys(gs.narratives for gs in sets):
+        preds[path] = extract(path, backend=backend, llm=llm)
         if hybrid_ceiling:
             from txt2sce_ros.text.ceiling import PerfectModel
 
-            model = PerfectModel({g.report_id: g for g in gold})
-            row.ceiling = evaluate(gold, extract(gs.narratives, backend="hybrid", llm=model))
+            # One perfect model for every set these narratives serve (a report is in one set): one pass each.
+            model = PerfectModel({g.report_id: g for gs in sets if gs.narratives == path for g in golds[gs.name]})
+            ceilings[path] = extract(path, backend="hybrid", llm=model)
+    rows = []
+    for gs in sets:
+        row = Row(gs.name, evaluate(golds[gs.name], preds[gs.narratives]))
+        if hybrid_ceiling:
+            row.ceiling = evaluate(golds[gs.name], ceilings[gs.narratives])
         rows.append(row)
     return rows
 
